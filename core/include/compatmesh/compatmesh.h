@@ -1,0 +1,167 @@
+/* compatmesh: compatible triangulations of planar polygons.
+ *
+ * One call takes k >= 2 simple polygons of n vertices each, whose vertices
+ * correspond by index, and returns one triangle list that is a valid
+ * triangulation of every polygon (Surazhsky & Gotsman, "High Quality
+ * Compatible Triangulations", Engineering with Computers 2004).
+ *
+ * Conventions
+ * - Every symbol is prefixed cm_ / CM_. No global state: two result handles
+ *   never share anything, so separate calls may run in separate threads.
+ * - Fallible calls return a cm_status (CM_OK == 0) and leave a one-line
+ *   message on the result handle. Nothing here exits, aborts or longjmps.
+ * - Inputs are (pointer, count) of doubles and are only read during the call.
+ * - Outputs are owned by the result handle and returned as const pointers,
+ *   valid until cm_result_free. cm_result_free(NULL) is a no-op.
+ *
+ * Output order contract
+ * - The n input vertices come first, in input order, with coordinates
+ *   bit-identical to the input; the Steiner vertices follow (indices n..).
+ * - Every geometry shares the one triangle list; every triangle is strictly
+ *   counter-clockwise in every geometry (checked with exact predicates).
+ * - The boundary edges of the triangulation are exactly the input polygon's
+ *   edges (no Steiner vertex on the boundary).
+ * - When the input polygons are all clockwise they are processed as if
+ *   reversed (stats.reversed_input = 1); indices still refer to the input
+ *   order, and triangles are still counter-clockwise.
+ */
+#ifndef COMPATMESH_H
+#define COMPATMESH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define CM_VERSION_MAJOR 0
+#define CM_VERSION_MINOR 1
+#define CM_VERSION_PATCH 0
+
+typedef enum cm_status {
+    CM_OK = 0,
+    CM_ERR_ARGUMENT,             /* NULL pointer, k < 2, bad option value */
+    CM_ERR_TOO_FEW_VERTICES,     /* n < 3 */
+    CM_ERR_COUNT_MISMATCH,       /* polygons with different vertex counts */
+    CM_ERR_NOT_FINITE,           /* NaN or infinite coordinate */
+    CM_ERR_REPEATED_VERTEX,      /* two vertices of one polygon coincide */
+    CM_ERR_SELF_INTERSECTION,    /* edges cross or touch */
+    CM_ERR_ZERO_AREA,            /* signed area is exactly zero */
+    CM_ERR_ORIENTATION_MISMATCH, /* clockwise and counter-clockwise mixed */
+    CM_ERR_NO_MEMORY,
+    CM_ERR_CANCELLED,            /* the progress callback asked to stop */
+    CM_ERR_INTERNAL              /* the construction failed its own exact check */
+} cm_status;
+
+/* A short constant name for a status, e.g. "self-intersection". */
+const char *cm_status_string(cm_status status);
+
+/* How the first compatible triangulation is built. */
+typedef enum cm_method {
+    /* Aronov-Seidel-Souvaine: triangulate each polygon, map every
+     * triangulation onto one convex polygon, overlay, map back. Always
+     * succeeds; O(n^2) Steiner vertices in the worst case. */
+    CM_METHOD_OVERLAY = 0
+} cm_method;
+
+/* Progress: fraction in [0, 1], stage a short constant name. Return
+ * non-zero to cancel; the call then returns CM_ERR_CANCELLED. */
+typedef int (*cm_progress_fn)(void *user, double fraction, const char *stage);
+
+typedef struct cm_options {
+    cm_method method;
+    cm_progress_fn progress; /* may be NULL */
+    void *progress_user;
+} cm_options;
+
+/* Fills *options with the defaults. Always call it first, then change the
+ * fields you need: new fields get sensible defaults in later versions. */
+void cm_options_init(cm_options *options);
+
+typedef struct cm_stats {
+    size_t n;                /* input vertices per polygon */
+    size_t k;                /* number of polygons (geometries) */
+    size_t vertices;         /* n + steiner */
+    size_t steiner;          /* interior Steiner vertices */
+    size_t triangles;        /* = n + 2 * steiner - 2 */
+    int reversed_input;      /* 1 if the input was clockwise */
+    size_t fallback_count;   /* sub-problems where the partition stalled and
+                                the overlay construction took over */
+    double seconds_validate; /* input validation */
+    double seconds_build;    /* building the compatible triangulation */
+    double seconds_check;    /* exact validation of the result */
+} cm_stats;
+
+/* Quality of one geometry of the result. */
+typedef struct cm_quality {
+    double min_angle_deg;
+    double max_angle_deg;
+    double pct_below_10deg; /* share of triangles, in percent, whose  */
+    double pct_below_15deg; /* smallest angle is below 10, 15 and 20 */
+    double pct_below_20deg; /* degrees */
+} cm_quality;
+
+typedef struct cm_result cm_result;
+
+/* Compatibly triangulates k polygons of n vertices each.
+ *   xy:      k * n * 2 doubles, polygon-major: xy[(g * n + i) * 2 + {0,1}]
+ *            is vertex i of polygon g. Polygons are closed implicitly.
+ *   options: NULL for the defaults.
+ *   result:  receives a new handle, also on failure (then it carries only
+ *            the status, the message and the error location); NULL only
+ *            when even the handle could not be allocated (CM_ERR_NO_MEMORY).
+ * Returns CM_OK only if the result passed the exact validity check. */
+cm_status cm_triangulate(const double *xy, size_t k, size_t n,
+                         const cm_options *options, cm_result **result);
+
+/* The same with one array per polygon: polygons[g] holds 2 * counts[g]
+ * doubles. Different counts are reported as CM_ERR_COUNT_MISMATCH. */
+cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *counts,
+                                  size_t k, const cm_options *options,
+                                  cm_result **result);
+
+void cm_result_free(cm_result *result);
+
+cm_status cm_result_status(const cm_result *result);
+/* One line, no trailing newline; "" on success. Never NULL. */
+const char *cm_result_message(const cm_result *result);
+/* Where validation failed: polygon and vertex index (0-based), -1 if the
+ * failure has no location. For an intersection, vertex is the first
+ * vertex of the first offending edge and other_vertex that of the second. */
+void cm_result_error_location(const cm_result *result, long *polygon,
+                              long *vertex, long *other_vertex);
+
+/* Geometry. All of these return 0 / NULL on a failed result. */
+size_t cm_result_num_geometries(const cm_result *result);
+size_t cm_result_num_vertices(const cm_result *result); /* per geometry */
+/* 2 * num_vertices doubles (x, y) of geometry g. */
+const double *cm_result_vertices(const cm_result *result, size_t g);
+size_t cm_result_num_triangles(const cm_result *result);
+/* 3 * num_triangles vertex indices, counter-clockwise. */
+const int32_t *cm_result_triangles(const cm_result *result);
+
+/* Half-edge structure (the layout OpenMesh uses):
+ * - half-edges come in pairs: h and h ^ 1 are opposite; edge e owns 2e, 2e+1;
+ * - halfedge_to_vertex[h]: the vertex h points to;
+ * - halfedge_face[h]: the triangle left of h, -1 on the boundary;
+ * - halfedge_next[h]: the next half-edge around the same face (boundary
+ *   half-edges chain around the outer boundary, clockwise);
+ * - vertex_halfedge[v]: one outgoing half-edge; for boundary vertices the
+ *   outgoing boundary half-edge;
+ * - face_halfedge[f]: the half-edge from triangles[3f] to triangles[3f+1]. */
+size_t cm_result_num_halfedges(const cm_result *result);
+const int32_t *cm_result_halfedge_next(const cm_result *result);
+const int32_t *cm_result_halfedge_to_vertex(const cm_result *result);
+const int32_t *cm_result_halfedge_face(const cm_result *result);
+const int32_t *cm_result_vertex_halfedge(const cm_result *result);
+const int32_t *cm_result_face_halfedge(const cm_result *result);
+
+const cm_stats *cm_result_stats(const cm_result *result);
+/* Returns CM_ERR_ARGUMENT if g is out of range or the result failed. */
+cm_status cm_result_quality(const cm_result *result, size_t g, cm_quality *quality);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

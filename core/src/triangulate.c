@@ -1,0 +1,164 @@
+/* The public entry points: validate, build, check, measure. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "internal.h"
+
+void cm_options_init(cm_options *options)
+{
+    memset(options, 0, sizeof *options);
+    options->method = CM_METHOD_OVERLAY;
+}
+
+static int cancelled(const cm_options *o, double fraction, const char *stage)
+{
+    return o->progress && o->progress(o->progress_user, fraction, stage) != 0;
+}
+
+/* Internal order is counter-clockwise: for clockwise input, internal vertex
+ * j is input vertex (n - j) % n (vertex 0 stays first). */
+static int32_t input_index(int32_t j, size_t n, int clockwise)
+{
+    return clockwise && j > 0 && (size_t)j < n ? (int32_t)(n - (size_t)j) : j;
+}
+
+static cm_status build(cm_result *r, const double *const *polygons, size_t k, size_t n,
+                       int clockwise, const cm_options *o)
+{
+    cm_status s = CM_ERR_NO_MEMORY;
+    double **geoms = calloc(k, sizeof *geoms);
+    int32_t **tris = calloc(k, sizeof *tris), *idx = malloc(n * sizeof *idx);
+    if (!geoms || !tris || !idx) goto done;
+    for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
+    for (size_t g = 0; g < k; g++) {
+        geoms[g] = malloc(2 * n * sizeof *geoms[g]);
+        tris[g] = malloc(3 * (n - 2) * sizeof *tris[g]);
+        if (!geoms[g] || !tris[g]) goto done;
+        for (size_t j = 0; j < n; j++) {
+            size_t i = (size_t)input_index((int32_t)j, n, clockwise);
+            geoms[g][2 * j] = polygons[g][2 * i];
+            geoms[g][2 * j + 1] = polygons[g][2 * i + 1];
+        }
+        int t = cm_polygon_triangulate(geoms[g], idx, (long)n, tris[g]);
+        if (t < 0) goto done;
+        if (t > 0) {
+            s = cm_fail(r, CM_ERR_INTERNAL, "polygon %zu: ear clipping found no ear", g);
+            goto done;
+        }
+        if (cancelled(o, 0.1 + 0.3 * (double)(g + 1) / (double)k, "triangulate polygons")) {
+            s = cm_fail(r, CM_ERR_CANCELLED, "cancelled");
+            goto done;
+        }
+    }
+    size_t centroids = 0;
+    s = cm_overlay((const double *const *)geoms, (const int32_t *const *)tris, k, n, &r->mesh,
+                   &centroids, r);
+done:
+    if (geoms)
+        for (size_t g = 0; g < k; g++) free(geoms[g]);
+    if (tris)
+        for (size_t g = 0; g < k; g++) free(tris[g]);
+    free(geoms), free(tris), free(idx);
+    return s;
+}
+
+/* Renumbers the polygon vertices back into input order (clockwise input). */
+static void restore_input_order(cm_mesh *m, size_t n)
+{
+    for (size_t g = 0; g < m->k; g++) {
+        double *xy = m->xy[g];
+        for (size_t j = 1; j < n - j; j++) {
+            size_t i = n - j;
+            double x = xy[2 * j], y = xy[2 * j + 1];
+            xy[2 * j] = xy[2 * i], xy[2 * j + 1] = xy[2 * i + 1];
+            xy[2 * i] = x, xy[2 * i + 1] = y;
+        }
+    }
+    for (size_t t = 0; t < 3 * m->nt; t++) m->tri[t] = input_index(m->tri[t], n, 1);
+}
+
+static cm_status run(cm_result *r, const double *const *polygons, const size_t *counts,
+                     size_t k, const cm_options *o)
+{
+    double t0 = cm_seconds_now();
+    if (cancelled(o, 0.0, "validate")) return cm_fail(r, CM_ERR_CANCELLED, "cancelled");
+    int clockwise = 0;
+    cm_status s = cm_input_validate(polygons, counts, k, r, &clockwise);
+    if (s != CM_OK) return s;
+    size_t n = counts[0];
+    r->n = n;
+    r->stats.n = n, r->stats.k = k, r->stats.reversed_input = clockwise;
+    double t1 = cm_seconds_now();
+    r->stats.seconds_validate = t1 - t0;
+    if (cancelled(o, 0.1, "triangulate polygons")) return cm_fail(r, CM_ERR_CANCELLED, "cancelled");
+
+    s = build(r, polygons, k, n, clockwise, o);
+    if (s != CM_OK) return s;
+    if (clockwise) restore_input_order(&r->mesh, n);
+    double t2 = cm_seconds_now();
+    r->stats.seconds_build = t2 - t1;
+    if (cancelled(o, 0.8, "check")) return cm_fail(r, CM_ERR_CANCELLED, "cancelled");
+
+    int32_t *boundary = malloc(n * sizeof *boundary);
+    if (!boundary) return cm_fail(r, CM_ERR_NO_MEMORY, "out of memory");
+    for (size_t j = 0; j < n; j++) boundary[j] = input_index((int32_t)j, n, clockwise);
+    s = cm_halfedge_build_and_check(r, boundary);
+    free(boundary);
+    if (s == CM_ERR_NO_MEMORY) return cm_fail(r, s, "out of memory");
+    if (s != CM_OK) return s;
+    r->stats.seconds_check = cm_seconds_now() - t2;
+
+    r->quality = calloc(k, sizeof *r->quality);
+    if (!r->quality) return cm_fail(r, CM_ERR_NO_MEMORY, "out of memory");
+    for (size_t g = 0; g < k; g++) cm_mesh_quality(&r->mesh, g, &r->quality[g]);
+    r->stats.vertices = r->mesh.nv;
+    r->stats.steiner = r->mesh.nv - n;
+    r->stats.triangles = r->mesh.nt;
+    if (cancelled(o, 1.0, "done")) return cm_fail(r, CM_ERR_CANCELLED, "cancelled");
+    return CM_OK;
+}
+
+cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *counts,
+                                  size_t k, const cm_options *options, cm_result **result)
+{
+    if (!result) return CM_ERR_ARGUMENT;
+    cm_result *r = calloc(1, sizeof *r);
+    *result = r;
+    if (!r) return CM_ERR_NO_MEMORY;
+    cm_fail_at(r, -1, -1, -1);
+    cm_options defaults;
+    if (!options) {
+        cm_options_init(&defaults);
+        options = &defaults;
+    }
+    if (options->method != CM_METHOD_OVERLAY) {
+        r->status = cm_fail(r, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
+        return r->status;
+    }
+    cm_status s = run(r, polygons, counts, k, options);
+    if (s != CM_OK) {
+        cm_result_clear_geometry(r);
+        r->status = s;
+        return s;
+    }
+    r->status = CM_OK;
+    r->message[0] = '\0';
+    return CM_OK;
+}
+
+cm_status cm_triangulate(const double *xy, size_t k, size_t n, const cm_options *options,
+                         cm_result **result)
+{
+    if (!xy) return cm_triangulate_polygons(NULL, NULL, k, options, result);
+    const double **polygons = malloc((k + 1) * sizeof *polygons);
+    size_t *counts = malloc((k + 1) * sizeof *counts);
+    cm_status s = CM_ERR_NO_MEMORY;
+    if (polygons && counts) {
+        for (size_t g = 0; g < k; g++) polygons[g] = xy + 2 * n * g, counts[g] = n;
+        s = cm_triangulate_polygons(polygons, counts, k, options, result);
+    } else if (result) {
+        *result = NULL;
+    }
+    free(polygons), free(counts);
+    return s;
+}
