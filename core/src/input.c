@@ -39,6 +39,13 @@ static int find_repeated_vertex(const double *xy, long n, long *first, long *sec
     return found;
 }
 
+static int all_collinear(const double *xy, long n)
+{
+    for (long i = 2; i < n; i++)
+        if (cm_orient2d(xy, xy + 2, xy + 2 * i) != 0) return 0;
+    return 1;
+}
+
 static cm_status check_one_polygon(const double *xy, long n, long g, cm_result *r,
                                    int *orientation)
 {
@@ -58,10 +65,10 @@ static cm_status check_one_polygon(const double *xy, long n, long g, cm_result *
                        "polygon %ld: vertex %ld repeats vertex %ld (%.17g, %.17g)",
                        g, b, a, xy[2 * a], xy[2 * a + 1]);
     }
-    *orientation = cm_polygon_orientation(xy, n);
-    if (*orientation == 0) {
+    /* All vertices on one line: say so, rather than report the overlap. */
+    if (all_collinear(xy, n)) {
         cm_fail_at(r, g, -1, -1);
-        return cm_fail(r, CM_ERR_ZERO_AREA, "polygon %ld has zero area", g);
+        return cm_fail(r, CM_ERR_ZERO_AREA, "polygon %ld has zero area (all vertices on one line)", g);
     }
     int hit = cm_polygon_find_intersection(xy, n, &a, &b);
     if (hit < 0) return cm_fail(r, CM_ERR_NO_MEMORY, "out of memory");
@@ -70,6 +77,12 @@ static cm_status check_one_polygon(const double *xy, long n, long g, cm_result *
         return cm_fail(r, CM_ERR_SELF_INTERSECTION,
                        "polygon %ld: edges %ld-%ld and %ld-%ld cross or touch (not a simple polygon)",
                        g, a, (a + 1) % n, b, (b + 1) % n);
+    }
+    /* A simple polygon has non-zero area; kept as a guard. */
+    *orientation = cm_polygon_orientation(xy, n);
+    if (*orientation == 0) {
+        cm_fail_at(r, g, -1, -1);
+        return cm_fail(r, CM_ERR_ZERO_AREA, "polygon %ld has zero area", g);
     }
     return CM_OK;
 }
