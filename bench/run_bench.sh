@@ -1,0 +1,66 @@
+#!/bin/sh
+# Runs the CLI on every benchmark pair and writes bench/RESULTS.md.
+#   bench/run_bench.sh BUILD_DIR
+# Inputs go to BUILD_DIR/bench_run/input, each run to BUILD_DIR/bench_run/PAIR/
+# (not BUILD_DIR/bench: CMake owns that folder).
+# Every pair must succeed: failures are listed and the exit code is 1.
+# CM_BENCH_TIMEOUT (seconds, default 900) bounds one pair's run.
+set -u
+
+if [ $# -ne 1 ]; then
+    echo "usage: $0 BUILD_DIR" >&2
+    exit 2
+fi
+build=$(cd "$1" 2>/dev/null && pwd) || { echo "bench: no build directory $1" >&2; exit 2; }
+src=$(cd "$(dirname "$0")/.." && pwd)
+cli=$build/bin/compatmesh
+gen=$build/bin/cm_gen_pairs
+python=/usr/bin/python3
+limit=${CM_BENCH_TIMEOUT:-900}
+for tool in "$cli" "$gen"; do
+    if [ ! -x "$tool" ]; then
+        echo "bench: $tool is missing: build first (cmake --build $build)" >&2
+        exit 2
+    fi
+done
+
+bench=$build/bench_run
+input=$bench/input
+rm -rf "$bench"
+mkdir -p "$bench"
+"$gen" --out "$input" --set bench || { echo "bench: cm_gen_pairs failed" >&2; exit 1; }
+
+# status.tsv: pair, exit code, wall seconds; make_results.py reads it.
+status=$bench/status.tsv
+: >"$status"
+failed=""
+count=$(wc -l <"$input/pairs.txt")
+i=0
+while read -r name files; do
+    [ -n "$name" ] || continue
+    i=$((i + 1))
+    set --
+    for f in $files; do set -- "$@" "$input/$f"; done
+    start=$(date +%s.%N)
+    timeout "$limit" "$cli" triangulate "$@" --out-dir "$bench/$name" \
+        </dev/null >"$bench/$name.log" 2>&1
+    code=$?
+    end=$(date +%s.%N)
+    wall=$(echo "$start $end" | awk '{ printf "%.3f", $2 - $1 }')
+    printf '%s\t%s\t%s\n' "$name" "$code" "$wall" >>"$status"
+    if [ "$code" -eq 0 ]; then
+        echo "[$i/$count] $name ok (${wall} s)"
+    else
+        [ "$code" -eq 124 ] && echo "timed out after $limit s" >>"$bench/$name.log"
+        echo "[$i/$count] $name FAILED (exit $code), log: $bench/$name.log" >&2
+        sed 's/^/    /' "$bench/$name.log" | head -n 20 >&2
+        failed="$failed $name"
+    fi
+done <"$input/pairs.txt"
+
+"$python" "$src/bench/make_results.py" "$bench" "$src/bench/RESULTS.md" || exit 1
+echo "bench: wrote $src/bench/RESULTS.md"
+if [ -n "$failed" ]; then
+    echo "bench: FAILED pairs:$failed" >&2
+    exit 1
+fi

@@ -1,0 +1,459 @@
+#define _POSIX_C_SOURCE 200809L /* strtok_r, strcasecmp */
+
+#include "read_polygon.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+enum { MAX_FIELDS = 8 };
+
+/* Growable list of vertices with the line each came from. */
+typedef struct vertex_list {
+    double *xy;
+    long *line;
+    size_t count, capacity;
+} vertex_list;
+
+static int vertex_list_push(vertex_list *list, double x, double y, long line)
+{
+    if (list->count == list->capacity) {
+        size_t capacity = list->capacity ? 2 * list->capacity : 64;
+        double *xy = realloc(list->xy, 2 * capacity * sizeof *xy);
+        if (!xy) return -1;
+        list->xy = xy;
+        long *lines = realloc(list->line, capacity * sizeof *lines);
+        if (!lines) return -1;
+        list->line = lines;
+        list->capacity = capacity;
+    }
+    list->xy[2 * list->count] = x;
+    list->xy[2 * list->count + 1] = y;
+    list->line[list->count] = line;
+    list->count++;
+    return 0;
+}
+
+static void vertex_list_free(vertex_list *list)
+{
+    free(list->xy);
+    free(list->line);
+    memset(list, 0, sizeof *list);
+}
+
+/* Reads the whole file into a NUL-terminated buffer. Files of any kind
+ * (pipes included) work because it reads until end of file. */
+static int read_whole_file(const char *path, char **text, size_t *length,
+                           cli_error *error)
+{
+    FILE *file = fopen(path, "rb");
+    if (!file) {
+        cli_error_set(error, "%s: cannot open: %s", path, strerror(errno));
+        return CLI_EXIT_USAGE;
+    }
+    size_t used = 0, capacity = 1 << 16;
+    char *buffer = malloc(capacity);
+    int code = buffer ? CLI_EXIT_OK : CLI_EXIT_INTERNAL;
+    while (code == CLI_EXIT_OK) {
+        if (capacity - used < 2) {
+            char *bigger = realloc(buffer, 2 * capacity);
+            if (!bigger) { code = CLI_EXIT_INTERNAL; break; }
+            buffer = bigger;
+            capacity *= 2;
+        }
+        size_t got = fread(buffer + used, 1, capacity - used - 1, file);
+        used += got;
+        if (got == 0) break;
+    }
+    if (code == CLI_EXIT_INTERNAL) {
+        cli_error_set(error, "%s: out of memory reading the file", path);
+    } else if (ferror(file)) {
+        cli_error_set(error, "%s: cannot read: %s", path, strerror(errno));
+        code = CLI_EXIT_USAGE;
+    }
+    fclose(file);
+    if (code != CLI_EXIT_OK) {
+        free(buffer);
+        return code;
+    }
+    buffer[used] = '\0';
+    *text = buffer;
+    *length = used;
+    return CLI_EXIT_OK;
+}
+
+/* Copies token into out for an error message: at most ~40 characters, bytes
+ * that are not printable ASCII shown as \xNN so the message stays one line. */
+static const char *quote_token(const char *token, char *out, size_t size)
+{
+    size_t used = 0;
+    for (const unsigned char *p = (const unsigned char *)token; *p; p++) {
+        if (used + 8 >= size || p - (const unsigned char *)token >= 40) {
+            strcpy(out + used, "...");
+            return out;
+        }
+        if (isprint(*p)) out[used++] = (char)*p;
+        else used += (size_t)snprintf(out + used, size - used, "\\x%02X", *p);
+    }
+    out[used] = '\0';
+    return out;
+}
+
+static int is_blank(char c)
+{
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+/* Cuts a '#' comment off the end of a line. */
+static void strip_comment(char *line)
+{
+    char *hash = strchr(line, '#');
+    if (hash) *hash = '\0';
+}
+
+/* Splits a line in place into fields. Blanks separate fields; when
+ * allow_comma is set, one comma (with optional blanks around it) does too.
+ * Returns the number of fields found (at most MAX_FIELDS are stored, more
+ * are counted), or -1 for a leading, trailing or doubled comma. */
+static int split_fields(char *line, int allow_comma, char **fields)
+{
+    int count = 0;
+    int comma_pending = 0; /* a comma since the last field */
+    char *p = line;
+    for (;;) {
+        while (is_blank(*p)) p++;
+        if (*p == '\0') break;
+        if (allow_comma && *p == ',') {
+            if (count == 0 || comma_pending) return -1;
+            comma_pending = 1;
+            p++;
+            continue;
+        }
+        comma_pending = 0;
+        if (count < MAX_FIELDS) fields[count] = p;
+        count++;
+        while (*p && !is_blank(*p) && !(allow_comma && *p == ',')) p++;
+        char separator = *p;
+        *p = '\0';
+        if (separator == '\0') break;
+        p++;
+        if (separator == ',') comma_pending = 1;
+    }
+    return comma_pending ? -1 : count;
+}
+
+/* Parses one coordinate; the whole field must be a finite number. */
+static int parse_coordinate(const char *field, double *value, const char *path,
+                            long line, cli_error *error)
+{
+    char shown[64];
+    char *end;
+    errno = 0;
+    double parsed = strtod(field, &end);
+    if (end == field || *end != '\0') {
+        cli_error_set(error, "%s:%ld: '%s' is not a number", path, line,
+                      quote_token(field, shown, sizeof shown));
+        return -1;
+    }
+    if (!isfinite(parsed)) {
+        cli_error_set(error, "%s:%ld: '%s' is %s", path, line,
+                      quote_token(field, shown, sizeof shown),
+                      errno == ERANGE ? "too large for a double"
+                                      : "not a finite number");
+        return -1;
+    }
+    *value = parsed;
+    return 0;
+}
+
+/* Calls visit(line_text, line_number, state) for every line of text, which
+ * it modifies in place. Stops at the first non-zero return and returns it. */
+static int for_each_line(char *text, int (*visit)(char *, long, void *),
+                         void *state)
+{
+    long number = 0;
+    char *line = text;
+    while (*line) {
+        char *end = strchr(line, '\n');
+        if (end) *end = '\0';
+        int code = visit(line, ++number, state);
+        if (code != CLI_EXIT_OK) return code;
+        if (!end) break;
+        line = end + 1;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* ---- .xy text ---------------------------------------------------------- */
+
+typedef struct xy_state {
+    const char *path;
+    vertex_list vertices;
+    cli_error *error;
+} xy_state;
+
+static int visit_xy_line(char *line, long number, void *opaque)
+{
+    xy_state *state = opaque;
+    strip_comment(line);
+    char *fields[MAX_FIELDS];
+    int count = split_fields(line, 1, fields);
+    if (count == 0) return CLI_EXIT_OK;
+    if (count < 0) {
+        cli_error_set(state->error, "%s:%ld: misplaced ','; expected 'x y' or 'x, y'",
+                      state->path, number);
+        return CLI_EXIT_USAGE;
+    }
+    if (count != 2) {
+        cli_error_set(state->error, "%s:%ld: expected 2 numbers 'x y', found %d field%s",
+                      state->path, number, count, count == 1 ? "" : "s");
+        return CLI_EXIT_USAGE;
+    }
+    double x, y;
+    if (parse_coordinate(fields[0], &x, state->path, number, state->error) ||
+        parse_coordinate(fields[1], &y, state->path, number, state->error))
+        return CLI_EXIT_USAGE;
+    if (vertex_list_push(&state->vertices, x, y, number)) {
+        cli_error_set(state->error, "%s: out of memory", state->path);
+        return CLI_EXIT_INTERNAL;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int parse_xy(const char *path, char *text, polygon_input *polygon,
+                    cli_error *error)
+{
+    xy_state state = {path, {0}, error};
+    int code = for_each_line(text, visit_xy_line, &state);
+    if (code == CLI_EXIT_OK && state.vertices.count == 0) {
+        cli_error_set(error, "%s: no vertices found (expected one 'x y' per line)", path);
+        code = CLI_EXIT_USAGE;
+    }
+    if (code != CLI_EXIT_OK) {
+        vertex_list_free(&state.vertices);
+        return code;
+    }
+    polygon->count = state.vertices.count;
+    polygon->xy = state.vertices.xy;
+    polygon->source_line = state.vertices.line;
+    return CLI_EXIT_OK;
+}
+
+/* ---- OBJ polyline ------------------------------------------------------ */
+
+typedef struct obj_state {
+    const char *path;
+    vertex_list vertices;
+    double first_z;
+    long first_z_line; /* 0 until the first 'v' line */
+    long *loop;        /* 0-based vertex indices of the 'l' line */
+    size_t loop_count;
+    long loop_line;    /* 0 until the 'l' line */
+    cli_error *error;
+} obj_state;
+
+static int obj_vertex(obj_state *state, char **fields, int count, long number)
+{
+    if (count < 3 || count > 4) {
+        cli_error_set(state->error, "%s:%ld: expected 'v x y [z]'", state->path, number);
+        return CLI_EXIT_USAGE;
+    }
+    double x, y, z = 0.0;
+    if (parse_coordinate(fields[1], &x, state->path, number, state->error) ||
+        parse_coordinate(fields[2], &y, state->path, number, state->error) ||
+        (count == 4 && parse_coordinate(fields[3], &z, state->path, number, state->error)))
+        return CLI_EXIT_USAGE;
+    if (state->first_z_line == 0) {
+        state->first_z = z;
+        state->first_z_line = number;
+    } else if (z != state->first_z) {
+        cli_error_set(state->error,
+                      "%s:%ld: z = %.17g differs from z = %.17g on line %ld; "
+                      "the polygon must lie in a plane z = constant",
+                      state->path, number, z, state->first_z, state->first_z_line);
+        return CLI_EXIT_USAGE;
+    }
+    if (vertex_list_push(&state->vertices, x, y, number)) {
+        cli_error_set(state->error, "%s: out of memory", state->path);
+        return CLI_EXIT_INTERNAL;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* Parses an 'l' entry ("i" or "i/t") into a 0-based index. Negative OBJ
+ * indices count back from the vertices read so far. Positive ones may refer
+ * forward; their range is checked once the whole file is read. */
+static int obj_loop_index(obj_state *state, const char *field, long number, long *index)
+{
+    char shown[64];
+    char *end;
+    errno = 0;
+    long value = strtol(field, &end, 10);
+    if (end == field || (*end != '\0' && *end != '/') || errno == ERANGE) {
+        cli_error_set(state->error, "%s:%ld: '%s' is not a vertex index", state->path,
+                      number, quote_token(field, shown, sizeof shown));
+        return -1;
+    }
+    if (value < 0) value += (long)state->vertices.count + 1;
+    if (value <= 0) {
+        cli_error_set(state->error, "%s:%ld: vertex index %s does not name a vertex "
+                      "(indices start at 1)", state->path, number,
+                      quote_token(field, shown, sizeof shown));
+        return -1;
+    }
+    *index = value - 1;
+    return 0;
+}
+
+/* Reads the 'l' line. Tokens past MAX_FIELDS are re-split here because a
+ * polyline lists every vertex on one line. */
+static int obj_polyline(obj_state *state, char *rest, long number)
+{
+    if (state->loop_line) {
+        cli_error_set(state->error, "%s:%ld: a second 'l' line (the first is on line %ld); "
+                      "expected exactly one closed polyline",
+                      state->path, number, state->loop_line);
+        return CLI_EXIT_USAGE;
+    }
+    state->loop_line = number;
+    size_t capacity = 0;
+    char *save = NULL;
+    for (char *field = strtok_r(rest, " \t\r\v\f", &save); field;
+         field = strtok_r(NULL, " \t\r\v\f", &save)) {
+        if (state->loop_count == capacity) {
+            capacity = capacity ? 2 * capacity : 64;
+            long *bigger = realloc(state->loop, capacity * sizeof *bigger);
+            if (!bigger) {
+                cli_error_set(state->error, "%s: out of memory", state->path);
+                return CLI_EXIT_INTERNAL;
+            }
+            state->loop = bigger;
+        }
+        if (obj_loop_index(state, field, number, &state->loop[state->loop_count]))
+            return CLI_EXIT_USAGE;
+        state->loop_count++;
+    }
+    return CLI_EXIT_OK;
+}
+
+static int visit_obj_line(char *line, long number, void *opaque)
+{
+    obj_state *state = opaque;
+    strip_comment(line);
+    while (is_blank(*line)) line++;
+    if (line[0] == 'l' && (line[1] == ' ' || line[1] == '\t'))
+        return obj_polyline(state, line + 2, number);
+    char *fields[MAX_FIELDS];
+    int count = split_fields(line, 0, fields);
+    if (count == 0) return CLI_EXIT_OK;
+    if (strcmp(fields[0], "v") == 0)
+        return obj_vertex(state, fields, count, number);
+    if (strcmp(fields[0], "f") == 0) {
+        cli_error_set(state->error, "%s:%ld: faces are not supported; expected one "
+                      "closed 'l' polyline", state->path, number);
+        return CLI_EXIT_USAGE;
+    }
+    if (strcmp(fields[0], "l") == 0) {
+        cli_error_set(state->error, "%s:%ld: empty 'l' line", state->path, number);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK; /* other statements (o, g, vn, ...) do not matter */
+}
+
+/* Checks the polyline and turns it into the polygon: the 'l' order, without
+ * the closing repetition of the first index. */
+static int obj_make_polygon(obj_state *state, polygon_input *polygon)
+{
+    const char *path = state->path;
+    if (!state->loop_line) {
+        cli_error_set(state->error, "%s: no 'l' line; expected one closed polyline", path);
+        return CLI_EXIT_USAGE;
+    }
+    for (size_t i = 0; i < state->loop_count; i++) {
+        if ((size_t)state->loop[i] >= state->vertices.count) {
+            cli_error_set(state->error, "%s:%ld: vertex index %ld is out of range "
+                          "(the file has %zu vertices)", path, state->loop_line,
+                          state->loop[i] + 1, state->vertices.count);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    if (state->loop_count < 2 || state->loop[0] != state->loop[state->loop_count - 1]) {
+        cli_error_set(state->error, "%s:%ld: the 'l' polyline is not closed: its last "
+                      "index must repeat the first", path, state->loop_line);
+        return CLI_EXIT_USAGE;
+    }
+    size_t count = state->loop_count - 1;
+    polygon->xy = malloc(2 * count * sizeof *polygon->xy);
+    polygon->source_line = malloc(count * sizeof *polygon->source_line);
+    if (!polygon->xy || !polygon->source_line) {
+        cli_error_set(state->error, "%s: out of memory", path);
+        return CLI_EXIT_INTERNAL;
+    }
+    for (size_t i = 0; i < count; i++) {
+        size_t v = (size_t)state->loop[i];
+        polygon->xy[2 * i] = state->vertices.xy[2 * v];
+        polygon->xy[2 * i + 1] = state->vertices.xy[2 * v + 1];
+        polygon->source_line[i] = state->vertices.line[v];
+    }
+    polygon->count = count;
+    return CLI_EXIT_OK;
+}
+
+static int parse_obj(const char *path, char *text, polygon_input *polygon,
+                     cli_error *error)
+{
+    obj_state state = {0};
+    state.path = path;
+    state.error = error;
+    int code = for_each_line(text, visit_obj_line, &state);
+    if (code == CLI_EXIT_OK) code = obj_make_polygon(&state, polygon);
+    vertex_list_free(&state.vertices);
+    free(state.loop);
+    return code;
+}
+
+/* ---- entry point ------------------------------------------------------- */
+
+static int has_obj_extension(const char *path)
+{
+    size_t length = strlen(path);
+    return length >= 4 && strcasecmp(path + length - 4, ".obj") == 0;
+}
+
+int read_polygon(const char *path, polygon_input *polygon, cli_error *error)
+{
+    memset(polygon, 0, sizeof *polygon);
+    char *text;
+    size_t length;
+    int code = read_whole_file(path, &text, &length, error);
+    if (code != CLI_EXIT_OK) return code;
+    const char *nul = memchr(text, '\0', length);
+    if (nul) {
+        long line = 1;
+        for (const char *p = text; p < nul; p++) line += *p == '\n';
+        cli_error_set(error, "%s:%ld: binary data (a NUL byte); expected a text file",
+                      path, line);
+        code = CLI_EXIT_USAGE;
+    } else if (has_obj_extension(path)) {
+        code = parse_obj(path, text, polygon, error);
+    } else {
+        code = parse_xy(path, text, polygon, error);
+    }
+    free(text);
+    if (code != CLI_EXIT_OK) {
+        polygon_input_free(polygon);
+        return code;
+    }
+    polygon->path = path;
+    return CLI_EXIT_OK;
+}
+
+void polygon_input_free(polygon_input *polygon)
+{
+    free(polygon->xy);
+    free(polygon->source_line);
+    memset(polygon, 0, sizeof *polygon);
+}

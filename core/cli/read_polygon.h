@@ -1,0 +1,32 @@
+/* Reading one input polygon from a text file. */
+#ifndef CM_CLI_READ_POLYGON_H
+#define CM_CLI_READ_POLYGON_H
+
+#include <stddef.h>
+
+#include "cli_common.h"
+
+/* One polygon as read from disk. Vertex i is (xy[2i], xy[2i+1]); it was read
+ * from line source_line[i] (1-based) of the file, so errors the core reports
+ * by vertex index can point the user at the line to fix. */
+typedef struct polygon_input {
+    const char *path; /* borrowed from the command line */
+    size_t count;
+    double *xy;
+    long *source_line;
+} polygon_input;
+
+/* Reads `path` into *polygon. Files ending in ".obj" (any case) are read as
+ * an OBJ polyline ("v x y [z]" lines and exactly one closed "l" line, the
+ * polygon following the "l" order, z constant); anything else as ".xy" text
+ * (one "x y" vertex per line, blanks and/or one comma between the numbers,
+ * '#' to end of line is a comment, blank lines ignored).
+ * Returns CLI_EXIT_OK on success. Otherwise leaves *polygon empty, sets
+ * error->message to "PATH:LINE: what is wrong" (or "PATH: ..." when no line
+ * applies) and returns CLI_EXIT_USAGE for an unreadable or malformed file,
+ * CLI_EXIT_INTERNAL when out of memory. */
+int read_polygon(const char *path, polygon_input *polygon, cli_error *error);
+
+void polygon_input_free(polygon_input *polygon);
+
+#endif

@@ -1,0 +1,80 @@
+#include "write_mesh.h"
+
+#include "outdir.h"
+
+#include <inttypes.h>
+#include <string.h>
+
+static const char *const format_names[] = {"off", "obj", "ply"};
+
+int mesh_format_from_name(const char *name, mesh_format *format)
+{
+    for (int i = 0; i < 3; i++) {
+        if (strcmp(name, format_names[i]) == 0) {
+            *format = (mesh_format)i;
+            return 0;
+        }
+    }
+    return -1;
+}
+
+const char *mesh_format_name(mesh_format format)
+{
+    return format_names[format];
+}
+
+static void write_header(FILE *file, mesh_format format, size_t vertices,
+                         size_t triangles)
+{
+    switch (format) {
+    case MESH_FORMAT_OFF:
+        fprintf(file, "OFF\n%zu %zu 0\n", vertices, triangles);
+        break;
+    case MESH_FORMAT_OBJ:
+        fprintf(file, "# compatmesh: %zu vertices, %zu triangles\n", vertices, triangles);
+        break;
+    case MESH_FORMAT_PLY:
+        fprintf(file,
+                "ply\nformat ascii 1.0\ncomment compatmesh\n"
+                "element vertex %zu\n"
+                "property double x\nproperty double y\nproperty double z\n"
+                "element face %zu\n"
+                "property list uchar int vertex_indices\nend_header\n",
+                vertices, triangles);
+        break;
+    }
+}
+
+static void write_vertices(FILE *file, mesh_format format, const double *xy,
+                           size_t count)
+{
+    const char *prefix = format == MESH_FORMAT_OBJ ? "v " : "";
+    for (size_t i = 0; i < count; i++)
+        fprintf(file, "%s%.17g %.17g 0\n", prefix, xy[2 * i], xy[2 * i + 1]);
+}
+
+static void write_triangles(FILE *file, mesh_format format,
+                            const int32_t *triangles, size_t count)
+{
+    /* OBJ counts vertices from 1, OFF and PLY from 0. */
+    const char *prefix = format == MESH_FORMAT_OBJ ? "f" : "3";
+    int32_t base = format == MESH_FORMAT_OBJ ? 1 : 0;
+    for (size_t t = 0; t < count; t++) {
+        const int32_t *v = triangles + 3 * t;
+        fprintf(file, "%s %" PRId32 " %" PRId32 " %" PRId32 "\n", prefix,
+                v[0] + base, v[1] + base, v[2] + base);
+    }
+}
+
+int write_mesh(const char *path, const cm_result *result, size_t g,
+               mesh_format format, cli_error *error)
+{
+    FILE *file = output_open(path, error);
+    if (!file) return CLI_EXIT_INTERNAL;
+    size_t vertices = cm_result_num_vertices(result);
+    size_t triangles = cm_result_num_triangles(result);
+    write_header(file, format, vertices, triangles);
+    write_vertices(file, format, cm_result_vertices(result, g), vertices);
+    write_triangles(file, format, cm_result_triangles(result), triangles);
+    return output_close(file, path, error);
+}

@@ -1,0 +1,29 @@
+/* Writing one geometry of a result as a triangle mesh file. */
+#ifndef CM_CLI_WRITE_MESH_H
+#define CM_CLI_WRITE_MESH_H
+
+#include <stddef.h>
+
+#include <compatmesh/compatmesh.h>
+
+#include "cli_common.h"
+
+typedef enum mesh_format {
+    MESH_FORMAT_OFF,
+    MESH_FORMAT_OBJ,
+    MESH_FORMAT_PLY
+} mesh_format;
+
+/* "off", "obj", "ply" -> *format; returns -1 for any other name. */
+int mesh_format_from_name(const char *name, mesh_format *format);
+/* The file extension without the dot, which is also the format's name. */
+const char *mesh_format_name(mesh_format format);
+
+/* Writes geometry g of result to path: all vertices with z = 0, coordinates
+ * printed with "%.17g" so they read back bit-identical, then the shared
+ * triangles (counter-clockwise). Returns CLI_EXIT_OK or CLI_EXIT_INTERNAL
+ * with error set. */
+int write_mesh(const char *path, const cm_result *result, size_t g,
+               mesh_format format, cli_error *error);
+
+#endif

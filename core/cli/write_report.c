@@ -1,0 +1,99 @@
+#include "write_report.h"
+
+#include <math.h>
+#include <string.h>
+
+#include "outdir.h"
+
+/* A JSON string. Invalid UTF-8 (file names can hold any bytes) becomes
+ * U+FFFD so the file stays valid JSON. */
+static void json_string(FILE *file, const char *text)
+{
+    const unsigned char *p = (const unsigned char *)text;
+    size_t remaining = strlen(text);
+    fputc('"', file);
+    while (remaining > 0) {
+        size_t length = utf8_sequence_length(p, remaining);
+        if (length == 0) {
+            fputs("\\ufffd", file);
+            length = 1;
+        } else if (*p == '"' || *p == '\\') {
+            fprintf(file, "\\%c", *p);
+        } else if (*p < 0x20) {
+            fprintf(file, "\\u%04x", *p);
+        } else {
+            fwrite(p, 1, length, file);
+        }
+        p += length;
+        remaining -= length;
+    }
+    fputc('"', file);
+}
+
+/* JSON has no NaN or infinity; null marks a value that could not be had. */
+static void json_number(FILE *file, double value)
+{
+    if (isfinite(value)) fprintf(file, "%.10g", value);
+    else fputs("null", file);
+}
+
+static void json_field(FILE *file, const char *separator, const char *key,
+                       double value)
+{
+    fprintf(file, "%s\"%s\": ", separator, key);
+    json_number(file, value);
+}
+
+static void write_seconds(FILE *file, const cm_stats *stats, double total)
+{
+    fputs("  \"seconds\": {", file);
+    json_field(file, "", "validate", stats->seconds_validate);
+    json_field(file, ", ", "build", stats->seconds_build);
+    json_field(file, ", ", "check", stats->seconds_check);
+    json_field(file, ", ", "total", total);
+    fputs("},\n", file);
+}
+
+static void write_mesh_entry(FILE *file, const report_info *info, size_t g)
+{
+    cm_quality quality;
+    if (cm_result_quality(info->result, g, &quality) != CM_OK)
+        quality = (cm_quality){NAN, NAN, NAN, NAN, NAN}; /* written as null */
+    fputs("    {\"input\": ", file);
+    json_string(file, info->inputs[g]);
+    fputs(", \"output\": ", file);
+    json_string(file, info->outputs[g]);
+    json_field(file, ",\n     ", "min_angle_deg", quality.min_angle_deg);
+    json_field(file, ", ", "max_angle_deg", quality.max_angle_deg);
+    json_field(file, ",\n     ", "pct_triangles_below_10deg", quality.pct_below_10deg);
+    json_field(file, ", ", "pct_triangles_below_15deg", quality.pct_below_15deg);
+    json_field(file, ", ", "pct_triangles_below_20deg", quality.pct_below_20deg);
+    fputs("}", file);
+}
+
+int write_report(const char *path, const report_info *info, cli_error *error)
+{
+    FILE *file = output_open(path, error);
+    if (!file) return CLI_EXIT_INTERNAL;
+    const cm_stats *stats = cm_result_stats(info->result);
+    fprintf(file, "{\n");
+    fprintf(file, "  \"version\": \"%d.%d.%d\",\n", CM_VERSION_MAJOR, CM_VERSION_MINOR,
+            CM_VERSION_PATCH);
+    fprintf(file, "  \"n\": %zu,\n  \"k\": %zu,\n", stats->n, stats->k);
+    fprintf(file, "  \"vertices\": %zu,\n  \"steiner\": %zu,\n  \"triangles\": %zu,\n",
+            stats->vertices, stats->steiner, stats->triangles);
+    fprintf(file, "  \"valid\": true,\n");
+    fputs("  \"method\": ", file);
+    json_string(file, info->method);
+    fprintf(file, ",\n  \"remesh\": %s,\n", info->remesh ? "true" : "false");
+    fprintf(file, "  \"reversed_input\": %s,\n", stats->reversed_input ? "true" : "false");
+    fprintf(file, "  \"fallback_count\": %zu,\n", stats->fallback_count);
+    write_seconds(file, stats, info->seconds_total);
+    fputs("  \"meshes\": [\n", file);
+    for (size_t g = 0; g < stats->k; g++) {
+        write_mesh_entry(file, info, g);
+        fputs(g + 1 < stats->k ? ",\n" : "\n", file);
+    }
+    fputs("  ]\n}\n", file);
+    return output_close(file, path, error);
+}

@@ -1,0 +1,25 @@
+/* report.json: what was computed, how long it took and how good it is. */
+#ifndef CM_CLI_WRITE_REPORT_H
+#define CM_CLI_WRITE_REPORT_H
+
+#include <stddef.h>
+
+#include <compatmesh/compatmesh.h>
+
+#include "cli_common.h"
+
+typedef struct report_info {
+    const cm_result *result;   /* a successful result */
+    const char *method;        /* e.g. "overlay" */
+    int remesh;                /* 1 if the result was remeshed */
+    double seconds_total;      /* wall time of the whole computation */
+    const char *const *inputs; /* k input paths, as given */
+    const char *const *outputs;/* k mesh paths, as they are after commit */
+} report_info;
+
+/* Writes the report as one JSON object (see the "report.json" section of
+ * `compatmesh triangulate --help`). Returns CLI_EXIT_OK or, with error set,
+ * CLI_EXIT_INTERNAL. */
+int write_report(const char *path, const report_info *info, cli_error *error);
+
+#endif

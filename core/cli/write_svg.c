@@ -1,0 +1,235 @@
+#include "write_svg.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "outdir.h"
+
+/* Layout in SVG pixels. Very wide polygons are limited in width instead of
+ * height so one panel cannot dwarf the others. */
+static const double PANEL_HEIGHT = 360.0;
+static const double PANEL_MAX_WIDTH = 720.0;
+static const double MARGIN = 20.0;
+static const double CAPTION_HEIGHT = 24.0;
+static const double POOR_ANGLE_DEG = 20.0;
+static const double DEGREES_PER_RADIAN = 57.295779513082321;
+
+static const char *const STYLE =
+    "<style>\n"
+    ".poor{fill:#fdae61;stroke:none}\n"
+    ".worst{fill:#d7191c;stroke:none}\n"
+    ".edges{fill:none;stroke:#555;stroke-width:0.4}\n"
+    ".boundary{fill:none;stroke:#000;stroke-width:1.6;stroke-linejoin:round}\n"
+    ".steiner{fill:none;stroke:#2166ac;stroke-width:3;stroke-linecap:round}\n"
+    "text{font-family:sans-serif;font-size:12px;fill:#000}\n"
+    "</style>\n";
+
+/* Maps one geometry into its panel. */
+typedef struct panel {
+    const double *xy;
+    double min_x, max_y, scale;
+    double left, width, height; /* in pixels */
+} panel;
+
+static double pixel_x(const panel *p, size_t v) { return p->left + (p->xy[2 * v] - p->min_x) * p->scale; }
+static double pixel_y(const panel *p, size_t v) { return MARGIN + (p->max_y - p->xy[2 * v + 1]) * p->scale; }
+
+static panel make_panel(const double *xy, size_t count, double left)
+{
+    double min_x = INFINITY, max_x = -INFINITY, min_y = INFINITY, max_y = -INFINITY;
+    for (size_t v = 0; v < count; v++) {
+        min_x = fmin(min_x, xy[2 * v]);
+        max_x = fmax(max_x, xy[2 * v]);
+        min_y = fmin(min_y, xy[2 * v + 1]);
+        max_y = fmax(max_y, xy[2 * v + 1]);
+    }
+    double width = max_x - min_x, height = max_y - min_y;
+    /* A valid polygon has positive area, so both extents are positive; the
+     * guard only keeps a degenerate input from dividing by zero. */
+    double scale = PANEL_HEIGHT / (height > 0 ? height : 1.0);
+    if (width * scale > PANEL_MAX_WIDTH) scale = PANEL_MAX_WIDTH / width;
+    panel p = {xy, min_x, max_y, scale, left, width * scale, height * scale};
+    return p;
+}
+
+/* Angle at a in triangle a b c, in degrees. */
+static double corner_angle_deg(const double *a, const double *b, const double *c)
+{
+    double ux = b[0] - a[0], uy = b[1] - a[1], vx = c[0] - a[0], vy = c[1] - a[1];
+    return atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy) * DEGREES_PER_RADIAN;
+}
+
+/* Smallest angle of every triangle in one geometry; returns the index of the
+ * worst triangle. */
+static size_t smallest_angles(const double *xy, const int32_t *triangles,
+                              size_t count, double *angles)
+{
+    size_t worst = 0;
+    for (size_t t = 0; t < count; t++) {
+        const double *a = xy + 2 * triangles[3 * t], *b = xy + 2 * triangles[3 * t + 1],
+                     *c = xy + 2 * triangles[3 * t + 2];
+        angles[t] = fmin(corner_angle_deg(a, b, c),
+                         fmin(corner_angle_deg(b, c, a), corner_angle_deg(c, a, b)));
+        if (angles[t] < angles[worst]) worst = t;
+    }
+    return worst;
+}
+
+static void move_to(FILE *file, const panel *p, size_t v)
+{
+    fprintf(file, "M%.1f %.1f", pixel_x(p, v), pixel_y(p, v));
+}
+
+static void line_to(FILE *file, const panel *p, size_t v)
+{
+    fprintf(file, "L%.1f %.1f", pixel_x(p, v), pixel_y(p, v));
+}
+
+static void triangle_outline(FILE *file, const panel *p, const int32_t *t)
+{
+    move_to(file, p, (size_t)t[0]);
+    line_to(file, p, (size_t)t[1]);
+    line_to(file, p, (size_t)t[2]);
+    fputc('Z', file);
+}
+
+/* One path of all triangles whose smallest angle is below POOR_ANGLE_DEG,
+ * the worst one excepted (it gets its own colour). */
+static void write_poor_triangles(FILE *file, const panel *p, const int32_t *triangles,
+                                 size_t count, const double *angles, size_t worst)
+{
+    int any = 0;
+    for (size_t t = 0; t < count; t++) {
+        if (t == worst || !(angles[t] < POOR_ANGLE_DEG)) continue;
+        if (!any) fputs("<path class=\"poor\" d=\"", file);
+        any = 1;
+        triangle_outline(file, p, triangles + 3 * t);
+    }
+    if (any) fputs("\"/>\n", file);
+}
+
+/* Every interior edge once: it appears in two triangles, as (a, b) in one
+ * and (b, a) in the other, so draw it where a < b. Boundary edges drawn
+ * here too end under the thick boundary. */
+static void write_edges(FILE *file, const panel *p, const int32_t *triangles, size_t count)
+{
+    fputs("<path class=\"edges\" d=\"", file);
+    for (size_t t = 0; t < count; t++) {
+        for (int i = 0; i < 3; i++) {
+            int32_t a = triangles[3 * t + i], b = triangles[3 * t + (i + 1) % 3];
+            if (a > b) continue;
+            move_to(file, p, (size_t)a);
+            line_to(file, p, (size_t)b);
+        }
+    }
+    fputs("\"/>\n", file);
+}
+
+static void write_boundary(FILE *file, const panel *p, size_t n)
+{
+    fputs("<path class=\"boundary\" d=\"", file);
+    move_to(file, p, 0);
+    for (size_t v = 1; v < n; v++) line_to(file, p, v);
+    fputs("Z\"/>\n", file);
+}
+
+/* Dots as zero-length round-capped segments: one element for all of them. */
+static void write_steiner(FILE *file, const panel *p, size_t n, size_t vertices)
+{
+    if (vertices <= n) return;
+    fputs("<path class=\"steiner\" d=\"", file);
+    for (size_t v = n; v < vertices; v++) {
+        move_to(file, p, v);
+        fputs("h0", file);
+    }
+    fputs("\"/>\n", file);
+}
+
+/* Text content for XML: markup characters escaped; bytes that are not
+ * well-formed UTF-8 or not allowed in XML become U+FFFD. */
+static void xml_text(FILE *file, const char *text)
+{
+    const unsigned char *p = (const unsigned char *)text;
+    size_t remaining = strlen(text);
+    while (remaining > 0) {
+        size_t length = utf8_sequence_length(p, remaining);
+        if (length == 0 || (*p < 0x20 && *p != '\t')) {
+            fputs("&#xFFFD;", file);
+            length = length ? length : 1;
+        } else if (*p == '&') fputs("&amp;", file);
+        else if (*p == '<') fputs("&lt;", file);
+        else if (*p == '>') fputs("&gt;", file);
+        else fwrite(p, 1, length, file);
+        p += length;
+        remaining -= length;
+    }
+}
+
+static void write_caption(FILE *file, const panel *p, const char *name, size_t n,
+                          size_t steiner, double min_angle)
+{
+    fprintf(file, "<text x=\"%.2f\" y=\"%.2f\">", p->left,
+            MARGIN + PANEL_HEIGHT + CAPTION_HEIGHT - 6.0);
+    xml_text(file, name);
+    fprintf(file, ": n=%zu, Steiner %zu, min angle %.1f&#176;</text>\n", n, steiner,
+            min_angle);
+}
+
+static void write_panel(FILE *file, const panel *p, const cm_result *result,
+                        const char *name, double *angles)
+{
+    const cm_stats *stats = cm_result_stats(result);
+    const int32_t *triangles = cm_result_triangles(result);
+    size_t count = cm_result_num_triangles(result);
+    size_t worst = smallest_angles(p->xy, triangles, count, angles);
+    fputs("<g>\n", file);
+    write_poor_triangles(file, p, triangles, count, angles, worst);
+    if (count > 0) {
+        fputs("<path class=\"worst\" d=\"", file);
+        triangle_outline(file, p, triangles + 3 * worst);
+        fputs("\"/>\n", file);
+    }
+    write_edges(file, p, triangles, count);
+    write_boundary(file, p, stats->n);
+    write_steiner(file, p, stats->n, stats->vertices);
+    write_caption(file, p, name, stats->n, stats->steiner, count > 0 ? angles[worst] : 0.0);
+    fputs("</g>\n", file);
+}
+
+int write_svg(const char *path, const cm_result *result, const char *const *names,
+              cli_error *error)
+{
+    size_t k = cm_result_num_geometries(result);
+    size_t vertices = cm_result_num_vertices(result);
+    panel *panels = malloc((k ? k : 1) * sizeof *panels);
+    double *angles = malloc((cm_result_num_triangles(result) + 1) * sizeof *angles);
+    if (!panels || !angles) {
+        free(panels);
+        free(angles);
+        cli_error_set(error, "out of memory");
+        return CLI_EXIT_INTERNAL;
+    }
+    double left = MARGIN;
+    for (size_t g = 0; g < k; g++) {
+        panels[g] = make_panel(cm_result_vertices(result, g), vertices, left);
+        left += panels[g].width + MARGIN;
+    }
+    int code = CLI_EXIT_INTERNAL;
+    FILE *file = output_open(path, error);
+    if (file) {
+        double width = ceil(left), height = MARGIN + PANEL_HEIGHT + CAPTION_HEIGHT + MARGIN;
+        fprintf(file, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" "
+                      "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n",
+                width, height, width, height);
+        fputs(STYLE, file);
+        fputs("<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n", file);
+        for (size_t g = 0; g < k; g++) write_panel(file, &panels[g], result, names[g], angles);
+        fputs("</svg>\n", file);
+        code = output_close(file, path, error);
+    }
+    free(panels);
+    free(angles);
+    return code;
+}

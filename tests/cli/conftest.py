@@ -1,0 +1,34 @@
+"""Fixtures for the compatmesh command-line tests.
+
+Run as `python3 -m pytest tests/cli --compatmesh build/bin/compatmesh`.
+"""
+import os
+import subprocess
+
+import pytest
+
+DEFAULT_BINARY = os.path.join(
+    os.path.dirname(__file__), "..", "..", "build", "bin", "compatmesh")
+
+
+def pytest_addoption(parser):
+    parser.addoption("--compatmesh", default=os.environ.get("COMPATMESH", DEFAULT_BINARY),
+                     help="path of the compatmesh executable under test")
+
+
+@pytest.fixture(scope="session")
+def compatmesh_path(request):
+    path = os.path.abspath(request.config.getoption("--compatmesh"))
+    if not os.access(path, os.X_OK):
+        pytest.fail(f"compatmesh executable not found at {path} (build it, or pass --compatmesh)")
+    return path
+
+
+@pytest.fixture
+def cm(compatmesh_path, tmp_path):
+    """Runs compatmesh with the given arguments in tmp_path."""
+    def run(*args, cwd=None):
+        return subprocess.run([compatmesh_path, *map(str, args)], cwd=cwd or tmp_path,
+                              capture_output=True, timeout=120,
+                              encoding="utf-8", errors="replace")
+    return run

@@ -1,0 +1,53 @@
+"""Help, version and the top-level command line."""
+import re
+
+import pytest
+
+TRIANGULATE_OPTIONS = ["--out-dir", "--format", "--method", "--no-remesh", "--help"]
+
+
+def check_exit_codes_documented(text):
+    for code in ("0", "1", "2"):
+        assert re.search(rf"^\s+{code}\s+\S", text, re.MULTILINE), f"exit code {code}"
+
+
+@pytest.mark.parametrize("flag", ["--help", "-h"])
+def test_main_help(cm, flag):
+    result = cm(flag)
+    assert result.returncode == 0 and result.stderr == ""
+    assert result.stdout.startswith("Usage: compatmesh COMMAND")
+    assert re.search(r"^\s+triangulate\s", result.stdout, re.MULTILINE)
+    check_exit_codes_documented(result.stdout)
+
+
+@pytest.mark.parametrize("flag", ["--help", "-h"])
+def test_triangulate_help(cm, flag):
+    result = cm("triangulate", flag)
+    assert result.returncode == 0 and result.stderr == ""
+    assert result.stdout.startswith("Usage: compatmesh triangulate IN1 IN2")
+    for option in TRIANGULATE_OPTIONS:
+        assert re.search(rf"^\s+(-\w, )?{option}\b", result.stdout, re.MULTILINE), option
+    for word in ("off", "obj", "ply", "overlay", "report.json", "preview.svg"):
+        assert word in result.stdout
+    check_exit_codes_documented(result.stdout)
+
+
+def test_help_wins_over_missing_arguments(cm):
+    assert cm("triangulate", "--help", "--format", "off").returncode == 0
+
+
+def test_version(cm):
+    result = cm("--version")
+    assert result.returncode == 0
+    assert re.fullmatch(r"compatmesh \d+\.\d+\.\d+\n", result.stdout)
+
+
+@pytest.mark.parametrize("args, pattern", [
+    ([], r"compatmesh: missing command"),
+    (["frobnicate"], r"compatmesh: unknown command 'frobnicate'"),
+    (["--frobnicate"], r"compatmesh: unknown option '--frobnicate'"),
+])
+def test_usage_errors(cm, args, pattern):
+    result = cm(*args)
+    assert result.returncode == 2
+    assert re.match(pattern, result.stderr) and result.stderr.count("\n") == 1

@@ -1,0 +1,290 @@
+"""`compatmesh triangulate` on valid input: what it writes and how."""
+import json
+import math
+import os
+import re
+import xml.etree.ElementTree as ET
+from collections import Counter
+
+import meshio
+import numpy as np
+import pytest
+
+from polygons import (KITE, SQUARE, leftovers, orientation, read_vertex_text, signed_area,
+                      snapshot, star, write_xy)
+
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+def strict_json(path):
+    def reject(constant):
+        raise ValueError(f"{path}: non-finite number {constant} in JSON")
+    with open(path) as f:
+        return json.load(f, parse_constant=reject)
+
+
+def smallest_angles(points, triangles):
+    """Smallest angle of every triangle, in degrees."""
+    p = points[triangles]  # (t, 3, 2)
+    angles = []
+    for i in range(3):
+        u = p[:, (i + 1) % 3] - p[:, i]
+        v = p[:, (i + 2) % 3] - p[:, i]
+        cross = np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
+        angles.append(np.degrees(np.arctan2(cross, (u * v).sum(axis=1))))
+    return np.min(angles, axis=0)
+
+
+def check_mesh_geometry(points, triangles, polygon):
+    """The mesh triangulates the polygon: every triangle counter-clockwise,
+    the boundary edges exactly the polygon's, the areas adding up."""
+    n = len(polygon)
+    for a, b, c in triangles:
+        assert orientation(points[a], points[b], points[c]) > 0
+    edges = Counter()
+    for t in triangles:
+        for i in range(3):
+            edges[frozenset((int(t[i]), int(t[(i + 1) % 3])))] += 1
+    assert set(edges.values()) <= {1, 2}
+    boundary = {e for e, count in edges.items() if count == 1}
+    assert boundary == {frozenset((i, (i + 1) % n)) for i in range(n)}
+    area = sum(signed_area([tuple(points[v]) for v in t]) for t in triangles)
+    assert math.isclose(area, abs(signed_area(polygon)), rel_tol=1e-9)
+
+
+def check_success(tmp_path, result, inputs, fmt="off", out="out"):
+    """Checks everything a successful run promises; returns the report."""
+    assert result.returncode == 0, result.stderr
+    assert result.stderr == ""
+    out_dir = tmp_path / out
+    stems = [os.path.splitext(os.path.basename(name))[0] for name in inputs]
+    k, n = len(inputs), len(next(iter(inputs.values())))
+
+    report = strict_json(out_dir / "report.json")
+    assert report["valid"] is True
+    assert (report["n"], report["k"]) == (n, k)
+    steiner = report["steiner"]
+    assert steiner >= 0
+    assert report["vertices"] == n + steiner
+    assert report["triangles"] == n + 2 * steiner - 2
+    assert report["method"] == "overlay"
+    assert isinstance(report["reversed_input"], bool)
+    assert report["fallback_count"] >= 0
+    assert set(report["seconds"]) >= {"validate", "build", "check", "total"}
+    assert all(value >= 0 for value in report["seconds"].values())
+    assert report["seconds"]["total"] >= report["seconds"]["build"]
+    assert re.fullmatch(r"\d+\.\d+\.\d+", report["version"])
+    assert len(report["meshes"]) == k
+
+    faces = None
+    angles_per_mesh = []
+    for (name, polygon), stem, entry in zip(inputs.items(), stems, report["meshes"]):
+        path = out_dir / f"{stem}.{fmt}"
+        assert entry["input"] == name
+        assert entry["output"] == f"{out}/{stem}.{fmt}"
+        mesh = meshio.read(path, file_format=fmt)
+        triangles = mesh.cells_dict["triangle"]
+        if faces is None:
+            faces = triangles
+        assert np.array_equal(triangles, faces), "meshes must share one triangle list"
+        assert len(triangles) == report["triangles"]
+        assert len(mesh.points) == report["vertices"]
+        assert np.all(mesh.points[:, 2] == 0)
+
+        text = read_vertex_text(path, fmt)
+        assert [(x.hex(), y.hex()) for x, y, _ in text[:n]] == \
+               [(x.hex(), y.hex()) for x, y in polygon], "input vertices must be bit-identical"
+        points = np.array([(x, y) for x, y, _ in text])
+        check_mesh_geometry([tuple(p) for p in points], triangles, polygon)
+
+        angles = smallest_angles(points, triangles)
+        angles_per_mesh.append(angles)
+        assert entry["min_angle_deg"] == pytest.approx(angles.min(), abs=1e-6)
+        assert 0 < entry["min_angle_deg"] <= 60 <= entry["max_angle_deg"] < 180
+        shares = [entry[f"pct_triangles_below_{d}deg"] for d in (10, 15, 20)]
+        assert 0 <= shares[0] <= shares[1] <= shares[2] <= 100
+        assert shares[2] == pytest.approx(100 * np.mean(angles < 20), abs=1e-6)
+
+    check_svg(out_dir / "preview.svg", inputs, report, angles_per_mesh)
+    assert leftovers(tmp_path) == []
+    return report
+
+
+def check_svg(path, inputs, report, angles_per_mesh):
+    root = ET.parse(path).getroot()
+    assert root.tag == f"{SVG}svg"
+    panels = root.findall(f"{SVG}g")
+    assert len(panels) == len(inputs)
+    for panel, name, angles in zip(panels, inputs, angles_per_mesh):
+        caption = panel.find(f"{SVG}text").text
+        assert os.path.basename(name) in caption
+        assert f"n={report['n']}" in caption and f"Steiner {report['steiner']}" in caption
+        classes = Counter(p.get("class") for p in panel.findall(f"{SVG}path"))
+        assert classes["boundary"] == 1 and classes["edges"] == 1 and classes["worst"] == 1
+        assert all(count == 1 for count in classes.values()), "one path per style class"
+        boundary = next(p for p in panel.findall(f"{SVG}path") if p.get("class") == "boundary")
+        assert boundary.get("d").count("L") == report["n"] - 1
+        paths = {p.get("class"): p.get("d") for p in panel.findall(f"{SVG}path")}
+        assert paths["worst"].count("Z") == 1
+        # Every triangle below 20 degrees is filled, the worst one in its own colour.
+        assert paths.get("poor", "").count("Z") == np.sum(angles < 20) - (angles.min() < 20)
+        dots = [p for p in panel.findall(f"{SVG}path") if p.get("class") == "steiner"]
+        assert sum(d.get("d").count("h0") for d in dots) == report["steiner"]
+
+
+def test_pair_of_stars_default_off(cm, tmp_path):
+    a, b = star(12, seed=1), star(12, seed=2, scale=3.0)
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
+    report = check_success(tmp_path, result, {"a.xy": a, "b.xy": b})
+    assert report["steiner"] > 0, "this pair needs Steiner vertices"
+    assert sorted(os.listdir(tmp_path / "out")) == \
+        ["a.off", "b.off", "preview.svg", "report.json"]
+
+
+@pytest.mark.parametrize("fmt", ["off", "obj", "ply"])
+def test_each_format(cm, tmp_path, fmt):
+    write_xy(tmp_path / "square.xy", SQUARE)
+    write_xy(tmp_path / "kite.xy", KITE)
+    result = cm("triangulate", "square.xy", "kite.xy", "--out-dir", "out", "--format", fmt)
+    check_success(tmp_path, result, {"square.xy": SQUARE, "kite.xy": KITE}, fmt=fmt)
+    assert (tmp_path / "out" / f"square.{fmt}").exists()
+
+
+def test_three_inputs_short_options(cm, tmp_path):
+    polygons = {f"p{i}.xy": star(9, seed=10 + i, scale=1 + i) for i in range(3)}
+    for name, points in polygons.items():
+        write_xy(tmp_path / name, points)
+    result = cm("triangulate", "-o", "out", "-f", "ply", "-m", "overlay", *polygons)
+    check_success(tmp_path, result, polygons, fmt="ply")
+
+
+def test_stdout_summary(cm, tmp_path):
+    write_xy(tmp_path / "a.xy", SQUARE)
+    write_xy(tmp_path / "b.xy", KITE)
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "res/")
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    assert re.fullmatch(r"wrote res/a\.off \(n=4, steiner=\d+, min angle [\d.]+ deg\)", lines[0])
+    assert re.fullmatch(r"wrote res/b\.off \(n=4, steiner=\d+, min angle [\d.]+ deg\)", lines[1])
+    assert "res/report.json" in lines[2] and "res/preview.svg" in lines[2]
+    assert len(lines) == 3
+
+
+def test_obj_polyline_follows_l_order(cm, tmp_path):
+    # v lines out of polygon order, z constant but not 0, extra statements.
+    order = [2, 0, 3, 1]  # polygon vertex i is v line order[i]
+    v_lines = [None] * 4
+    for i, v in enumerate(order):
+        v_lines[v] = KITE[i]
+    text = "# polyline\no kite\n" + "".join(f"v {x!r} {y!r} 5\n" for x, y in v_lines)
+    text += "l " + " ".join(str(v + 1) for v in order + order[:1]) + "\n"
+    (tmp_path / "kite.obj").write_text(text)
+    write_xy(tmp_path / "square.xy", SQUARE)
+    result = cm("triangulate", "kite.obj", "square.xy", "--out-dir", "out")
+    check_success(tmp_path, result, {"kite.obj": KITE, "square.xy": SQUARE})
+
+
+def test_obj_negative_indices(cm, tmp_path):
+    text = "".join(f"v {x!r} {y!r}\n" for x, y in SQUARE) + "l -4 -3 -2 -1 -4\n"
+    (tmp_path / "sq.obj").write_text(text)
+    write_xy(tmp_path / "kite.xy", KITE)
+    result = cm("triangulate", "sq.obj", "kite.xy", "--out-dir", "out")
+    check_success(tmp_path, result, {"sq.obj": SQUARE, "kite.xy": KITE})
+
+
+def test_commas_comments_blank_lines(cm, tmp_path):
+    (tmp_path / "a.xy").write_text(
+        "# a kite, written every way the format allows\n"
+        "\n"
+        "0, 0\n"
+        "2.5,-0.5   # trailing comment\n"
+        "   \t\n"
+        "3.0 ,1.7\r\n"
+        "  0.2 \t 1.1  \n"
+        "# end\n")
+    write_xy(tmp_path / "b.xy", SQUARE)
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
+    check_success(tmp_path, result, {"a.xy": KITE, "b.xy": SQUARE})
+
+
+def test_clockwise_inputs_are_reversed(cm, tmp_path):
+    a, b = star(10, seed=3, clockwise=True), star(10, seed=4, clockwise=True)
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
+    report = check_success(tmp_path, result, {"a.xy": a, "b.xy": b})
+    assert report["reversed_input"] is True
+
+
+def test_existing_dir_keeps_other_files(cm, tmp_path):
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "notes.txt").write_text("mine")
+    (out / "a.off").write_text("stale")
+    write_xy(tmp_path / "a.xy", SQUARE)
+    write_xy(tmp_path / "b.xy", KITE)
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
+    check_success(tmp_path, result, {"a.xy": SQUARE, "b.xy": KITE})
+    assert (out / "notes.txt").read_text() == "mine"
+    assert (out / "a.off").read_text().startswith("OFF")
+
+
+def test_inputs_in_other_directories(cm, tmp_path):
+    (tmp_path / "x").mkdir()
+    (tmp_path / "y").mkdir()
+    write_xy(tmp_path / "x" / "first.xy", SQUARE)
+    write_xy(tmp_path / "y" / "second.xy", KITE)
+    result = cm("triangulate", "x/first.xy", "y/second.xy", "--out-dir", "out")
+    check_success(tmp_path, result, {"x/first.xy": SQUARE, "y/second.xy": KITE})
+
+
+def test_options_after_double_dash_are_inputs(cm, tmp_path):
+    write_xy(tmp_path / "-a.xy", SQUARE)
+    write_xy(tmp_path / "b.xy", KITE)
+    result = cm("triangulate", "--out-dir", "out", "--", "-a.xy", "b.xy")
+    check_success(tmp_path, result, {"-a.xy": SQUARE, "b.xy": KITE})
+
+
+def test_large_input_svg_stays_compact(cm, tmp_path):
+    a, b = star(2000, seed=5), star(2000, seed=6, scale=2.0)
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
+    assert result.returncode == 0, result.stderr
+    report = strict_json(tmp_path / "out" / "report.json")
+    assert report["n"] == 2000 and report["triangles"] == 2000 + 2 * report["steiner"] - 2
+    svg = tmp_path / "out" / "preview.svg"
+    root = ET.parse(svg).getroot()
+    assert len(root.findall(f".//{SVG}path")) <= 2 * 5
+    size_per_triangle = os.path.getsize(svg) / (2 * report["triangles"])
+    assert size_per_triangle < 200, "SVG should cost a few dozen bytes per triangle"
+    text = read_vertex_text(tmp_path / "out" / "a.off", "off")
+    assert [(x, y) for x, y, _ in text[:2000]] == a
+
+
+def test_success_leaves_nothing_else(cm, tmp_path):
+    write_xy(tmp_path / "a.xy", SQUARE)
+    write_xy(tmp_path / "b.xy", KITE)
+    before = snapshot(tmp_path)
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
+    assert result.returncode == 0
+    after = snapshot(tmp_path)
+    new = sorted(set(after) - set(before))
+    assert new == ["out", "out/a.off", "out/b.off", "out/preview.svg", "out/report.json"]
+
+
+def test_awkward_file_names_keep_report_and_svg_valid(cm, tmp_path):
+    # Markup characters, quotes, a backslash and a byte that is not UTF-8.
+    odd = 'we"ird & <odd>\\ \udcff.xy'  # \udcff: the raw byte 0xff on disk
+    write_xy(tmp_path / odd, SQUARE)
+    write_xy(tmp_path / "plain.xy", KITE)
+    result = cm("triangulate", odd, "plain.xy", "--out-dir", "out")
+    assert result.returncode == 0, result.stderr
+    report = strict_json(tmp_path / "out" / "report.json")
+    assert report["meshes"][0]["input"] == odd.replace("\udcff", "\ufffd")
+    root = ET.parse(tmp_path / "out" / "preview.svg").getroot()
+    captions = [t.text for t in root.iter(f"{SVG}text")]
+    assert captions[0].startswith('we"ird & <odd>\\ \ufffd.xy: n=4')
+    assert (tmp_path / "out" / os.fsdecode(b'we"ird & <odd>\\ \xff.off')).exists()
