@@ -28,6 +28,7 @@
 
 #define DEFAULT_FONT "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf"
 #define MAX_K 3
+#define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
 
 /* ---- flattened glyph outlines ------------------------------------------ */
 
@@ -558,32 +559,32 @@ static void bench_set(writer *w)
     static const int star_n[] = {16, 50, 100, 250, 500, 1000, 2000};
     static const int spiral_n[] = {50, 100, 250, 500, 1000, 2000};
     static const double spiral_turns[] = {2, 3, 4, 5, 6, 8};
-    static const int twist_n[] = {16, 100, 500, 1000};
+    static const int twist_n[] = {16, 100, 500};
     static const int comb_n[] = {50, 100, 250, 500, 1000};
     static const int random_n[] = {16, 50, 100, 250};
     char name[64];
-    for (int g = 0; g < 4; g++)
-        for (int i = 0; i < 4; i++)
+    for (int g = 0; g < COUNT(glyphs); g++)
+        for (int i = 0; i < COUNT(glyph_n); i++)
             glyph_pair(w, glyphs[g], glyph_n[i]);
-    for (int i = 0; i < 7; i++) {
+    for (int i = 0; i < COUNT(star_n); i++) {
         snprintf(name, sizeof name, "star_n%d", star_n[i]);
         star_pair(w, name, star_n[i], (uint64_t)star_n[i]);
     }
-    for (int i = 0; i < 6; i++) {
+    for (int i = 0; i < COUNT(spiral_n); i++) {
         int n = spiral_n[i];
         snprintf(name, sizeof name, "spiral_disc_n%d", n);
         spiral_pair(w, name, n, spiral_turns[i]);
     }
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < COUNT(twist_n); i++) {
         snprintf(name, sizeof name, "twisted_star_n%d", twist_n[i]);
         twist_pair(w, name, twist_n[i], twist_n[i] / 3, 1000 + (uint64_t)twist_n[i]);
     }
-    for (int i = 0; i < 5; i++) {
+    for (int i = 0; i < COUNT(comb_n); i++) {
         snprintf(name, sizeof name, "comb_disc_n%d", comb_n[i]);
         int teeth = comb_n[i] / 10 < 24 ? comb_n[i] / 10 : 24;
         comb_pair(w, name, comb_n[i], teeth);
     }
-    for (int i = 0; i < 4; i++) {
+    for (int i = 0; i < COUNT(random_n); i++) {
         snprintf(name, sizeof name, "random_disc_n%d", random_n[i]);
         random_pair(w, name, random_n[i], 2000 + (uint64_t)random_n[i]);
     }
@@ -655,6 +656,6 @@ int main(int argc, char **argv)
     int closed = fclose(w.list);
     FT_Done_Face(w.face);
     FT_Done_FreeType(lib);
-    printf("cm_gen_pairs: %d %s sets in %s\n", w.pairs, set, out);
+    printf("cm_gen_pairs: wrote %d %s pairs to %s\n", w.pairs, set, out);
     return w.failures || closed != 0 ? 1 : 0;
 }

@@ -10,6 +10,7 @@ import datetime
 import json
 import os
 import platform
+import subprocess
 import sys
 
 
@@ -56,12 +57,31 @@ def cpu_model():
     return platform.processor() or "unknown CPU"
 
 
+def source_revision():
+    """Short commit of the source tree, marked when it has local changes."""
+    src = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    try:
+        rev = subprocess.run(["git", "-C", src, "rev-parse", "--short", "HEAD"],
+                             capture_output=True, text=True, check=True).stdout.strip()
+        dirty = subprocess.run(["git", "-C", src, "status", "--porcelain",
+                                "--untracked-files=no"],
+                               capture_output=True, text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return None
+    return rev + (" with local changes" if dirty else "")
+
+
+def fmt_angle(degrees):
+    # small angles keep two significant digits instead of printing 0.0
+    return "%.1f" % degrees if degrees >= 1 else "%.2g" % degrees
+
+
 def fmt_angles(report):
-    return " / ".join("%.1f" % m["min_angle_deg"] for m in report["meshes"])
+    return " / ".join(fmt_angle(m["min_angle_deg"]) for m in report["meshes"])
 
 
 def result_row(name, report):
-    return "| %s | %d | %d | %d | %d | %s | %.3f | %s |" % (
+    return "| %s | %d | %d | %d | %d | %s | %.3g | %s |" % (
         name, report["k"], report["n"], report["steiner"],
         report["triangles"], fmt_angles(report),
         report["seconds"]["total"], report["method"])
@@ -80,12 +100,24 @@ def failure_row(run_dir, name, files, status):
     why = "not run" if code is None else (
         "timed out" if code == 124 else "exit %d" % code)
     n = count_vertices(os.path.join(run_dir, "input", files[0])) if files else ""
-    return "| %s | %d | %s | | | **FAILED** (%s) | %.3f | |" % (
+    return "| %s | %d | %s | | | **FAILED** (%s) | %.3g | |" % (
         name, len(files), n, why, wall)
 
 
-def header(pairs, failures, version):
-    now = datetime.datetime.now(datetime.timezone.utc)
+def run_date(run_dir):
+    """When the run finished: the time status.tsv was last written."""
+    path = os.path.join(run_dir, "status.tsv")
+    stamp = os.path.getmtime(path) if os.path.exists(path) else None
+    return datetime.datetime.fromtimestamp(
+        stamp if stamp is not None else datetime.datetime.now().timestamp(),
+        datetime.timezone.utc)
+
+
+def header(run_dir, pairs, failures, version):
+    now = run_date(run_dir)
+    revision = source_revision()
+    if revision:
+        version += ", commit " + revision
     lines = [
         "# Benchmark results",
         "",
@@ -128,7 +160,7 @@ def main(argv):
         else:
             failures.append(name)
             rows.append(failure_row(run_dir, name, files, status))
-    lines = header(pairs, failures, version) + rows
+    lines = header(run_dir, pairs, failures, version) + rows
     if failures:
         lines += ["", "**Failed pairs:** " + ", ".join(failures)]
     with open(out, "w") as f:

@@ -25,6 +25,7 @@ done
 demo=$build/demo
 input=$demo/input
 rm -rf "$input"
+mkdir -p "$demo"
 "$gen" --out "$input" --set demo >/dev/null || { echo "demo: cm_gen_pairs failed" >&2; exit 1; }
 
 # One line per pair from its report.json.
@@ -32,7 +33,8 @@ summary() {
     "$python" -c '
 import json, sys
 r = json.load(open(sys.argv[1]))
-angles = ", ".join("%.1f" % m["min_angle_deg"] for m in r["meshes"])
+angles = ", ".join(("%.1f" if m["min_angle_deg"] >= 1 else "%.2g") % m["min_angle_deg"]
+                   for m in r["meshes"])
 print("  n=%d k=%d steiner=%d triangles=%d min angles %s deg, %.3f s" % (
     r["n"], r["k"], r["steiner"], r["triangles"], angles, r["seconds"]["total"]))
 ' "$1"
