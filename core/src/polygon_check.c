@@ -1,11 +1,11 @@
 /* Shamos-Hoey sweep for polygon simplicity.
  *
- * The sweep visits vertices in (x, then y) order, which is a sweep by a line
- * turned infinitesimally clockwise from vertical: vertical edges and equal x
- * need no special case. Each edge runs from its left (smaller) endpoint to
- * its right one. The sweep status holds the edges crossing the sweep line,
- * ordered bottom to top, in a treap; each node also links its in-order
- * neighbours so that removal needs no comparison.
+ * The sweep visits vertices in (x, then y) order, as a line tilted
+ * infinitesimally from vertical would meet them: vertical edges and equal x
+ * need no special case. Each edge runs from its left (smaller in that
+ * order) endpoint to its right one. The sweep status holds the edges that
+ * cross the sweep line, bottom to top, in a treap; each node also links its
+ * in-order neighbours so that removal needs no comparison.
  *
  * Every pair of edges that becomes adjacent in the status is tested
  * exactly, and the sweep stops at the first offending pair. If the polygon

@@ -4,14 +4,16 @@
  * trusts the sign only if it exceeds a static forward error bound
  * (Shewchuk, "Adaptive Precision Floating-Point Arithmetic and Fast Robust
  * Geometric Predicates", 1997, the "A" bounds). Those bounds assume that no
- * operation overflows or underflows, so the filter is used only when every
- * coordinate difference lies in a range that makes both impossible;
- * otherwise, and whenever the bound cannot decide, the determinant is
- * evaluated exactly with GMP integers.
+ * operation overflows or underflows, so the filter is used only when its
+ * inputs (coordinate differences; coordinates for the polygon area) lie in
+ * a range that makes both impossible; otherwise, and whenever the bound
+ * cannot decide, the determinant is evaluated exactly with GMP integers.
  *
  * Exact evaluation: every finite double is m * 2^e with an integer m, so
  * scaling all inputs of one call by 2^-emin (emin the smallest such e)
- * turns them into integers without changing any sign. */
+ * turns them into integers without changing any sign. NaN and infinity
+ * have no such form; for them the predicates return 0 rather than let GMP
+ * trap (callers are expected to reject them first). */
 #include "predicates.h"
 
 #include <float.h>

@@ -6,6 +6,7 @@
 #include "check.h"
 #include "polygon_check.h"
 #include "predicates.h"
+#include "random_polygons.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -365,10 +366,38 @@ static void test_large_star(void)
     free(xy);
 }
 
+/* The shared generators' simple shapes, both ways round: a spiral keeps
+ * many edges in the sweep status at once, a comb many equal x. */
+static void test_shared_generators(void)
+{
+    enum { N = 3000 }; /* the generators check simplicity in O(n^2) */
+    double *xy = malloc(2 * N * sizeof *xy);
+    CHECK(xy != NULL);
+    if (!xy) return;
+    for (int shape = 0; shape < 8; shape++) {
+        int n = shape < 2 ? N : shape < 4 ? 2000 : 200;
+        int made = shape == 0   ? rp_spiral(xy, n, 25)
+                   : shape == 1 ? rp_star(xy, n, 17)
+                   : shape == 2 ? rp_comb(xy, n, 200)
+                   : shape == 3 ? rp_disc(xy, n)
+                                : rp_random_simple(xy, n, (uint64_t)shape);
+        CHECK_MSG(made == 0, "shape %d not generated", shape);
+        if (made != 0) continue;
+        long a, b;
+        CHECK_MSG(cm_polygon_find_intersection(xy, n, &a, &b) == 0,
+                  "shape %d: edges %ld, %ld", shape, a, b);
+        reverse_vertices(xy, 0, n - 1);
+        CHECK_MSG(cm_polygon_find_intersection(xy, n, &a, &b) == 0,
+                  "shape %d reversed: edges %ld, %ld", shape, a, b);
+    }
+    free(xy);
+}
+
 int main(void)
 {
     test_hand_made();
     test_random_against_brute_force();
     test_large_star();
+    test_shared_generators();
     return check_summary("test_polygon_check");
 }
