@@ -11,7 +11,8 @@
 static const double PANEL_HEIGHT = 360.0;
 static const double PANEL_MAX_WIDTH = 720.0;
 static const double MARGIN = 20.0;
-static const double CAPTION_HEIGHT = 24.0;
+static const double CAPTION_HEIGHT = 40.0;
+static const double CAPTION_MIN_WIDTH = 240.0; /* a panel is at least this wide */
 static const double POOR_ANGLE_DEG = 20.0;
 static const double DEGREES_PER_RADIAN = 57.295779513082321;
 
@@ -169,11 +170,12 @@ static void xml_text(FILE *file, const char *text)
 static void write_caption(FILE *file, const panel *p, const char *name, size_t n,
                           size_t steiner, double min_angle)
 {
-    fprintf(file, "<text x=\"%.2f\" y=\"%.2f\">", p->left,
-            MARGIN + PANEL_HEIGHT + CAPTION_HEIGHT - 6.0);
+    double y = MARGIN + PANEL_HEIGHT + 16.0;
+    fprintf(file, "<text x=\"%.2f\" y=\"%.2f\">", p->left, y);
     xml_text(file, name);
-    fprintf(file, ": n=%zu, Steiner %zu, min angle %.1f&#176;</text>\n", n, steiner,
-            min_angle);
+    fprintf(file, "</text>\n<text x=\"%.2f\" y=\"%.2f\">n=%zu, Steiner %zu, "
+                  "min angle %.1f&#176;</text>\n",
+            p->left, y + 16.0, n, steiner, min_angle);
 }
 
 static void write_panel(FILE *file, const panel *p, const cm_result *result,
@@ -213,7 +215,7 @@ int write_svg(const char *path, const cm_result *result, const char *const *name
     double left = MARGIN;
     for (size_t g = 0; g < k; g++) {
         panels[g] = make_panel(cm_result_vertices(result, g), vertices, left);
-        left += panels[g].width + MARGIN;
+        left += fmax(panels[g].width, CAPTION_MIN_WIDTH) + MARGIN;
     }
     int code = CLI_EXIT_INTERNAL;
     FILE *file = output_open(path, error);
