@@ -3,11 +3,12 @@
 #include <string.h>
 
 #include "internal.h"
+#include "partition.h"
 
 void cm_options_init(cm_options *options)
 {
     memset(options, 0, sizeof *options);
-    options->method = CM_METHOD_OVERLAY;
+    options->method = CM_METHOD_PARTITION;
 }
 
 static int cancelled(const cm_options *o, double fraction, const char *stage)
@@ -20,6 +21,20 @@ static int cancelled(const cm_options *o, double fraction, const char *stage)
 static int32_t input_index(int32_t j, size_t n, int clockwise)
 {
     return clockwise && j > 0 && (size_t)j < n ? (int32_t)(n - (size_t)j) : j;
+}
+
+/* The first compatible triangulation, by the chosen method. */
+static cm_status construct(cm_result *r, const double *const *geoms, const int32_t *const *tris,
+                           size_t k, size_t n, const cm_options *o)
+{
+    if (o->method == CM_METHOD_OVERLAY) {
+        size_t centroids = 0;
+        return cm_overlay(geoms, tris, k, n, &r->mesh, &centroids, r);
+    }
+    cm_partition_stats ps;
+    cm_status s = cm_partition(geoms, tris, k, n, o, &r->mesh, &ps, r);
+    r->stats.fallback_count = ps.fallback_count;
+    return s;
 }
 
 static cm_status build(cm_result *r, const double *const *polygons, size_t k, size_t n,
@@ -50,9 +65,7 @@ static cm_status build(cm_result *r, const double *const *polygons, size_t k, si
             goto done;
         }
     }
-    size_t centroids = 0;
-    s = cm_overlay((const double *const *)geoms, (const int32_t *const *)tris, k, n, &r->mesh,
-                   &centroids, r);
+    s = construct(r, (const double *const *)geoms, (const int32_t *const *)tris, k, n, o);
 done:
     if (geoms)
         for (size_t g = 0; g < k; g++) free(geoms[g]);
@@ -131,7 +144,7 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
         cm_options_init(&defaults);
         options = &defaults;
     }
-    if (options->method != CM_METHOD_OVERLAY) {
+    if (options->method != CM_METHOD_OVERLAY && options->method != CM_METHOD_PARTITION) {
         r->status = cm_fail(r, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
         return r->status;
     }

@@ -44,11 +44,21 @@ typedef struct {
     size_t max_steiner; /* what the fixture promises */
 } fixture;
 
+/* This file tests the overlay construction, no longer the default. */
+static cm_options overlay_options(void)
+{
+    cm_options o;
+    cm_options_init(&o);
+    o.method = CM_METHOD_OVERLAY;
+    return o;
+}
+
 static void run_fixture(const fixture *f)
 {
     cm_result *r = NULL;
+    cm_options o = overlay_options();
     cm_status s = cm_triangulate_polygons((const double *const *)f->xy,
-                                          (size_t[]){f->n, f->n, f->n}, f->k, NULL, &r);
+                                          (size_t[]){f->n, f->n, f->n}, f->k, &o, &r);
     CHECK_MSG(s == CM_OK, "%s: %s", f->name, cm_result_message(r));
     CHECK_MSG(result_is_valid(r, (const double *const *)f->xy, f->k, f->n), "%s: invalid", f->name);
     const cm_stats *st = cm_result_stats(r);
@@ -134,7 +144,8 @@ static void test_clockwise_input(void)
         }
     const double *in[2] = {a, b};
     cm_result *r = NULL;
-    CHECK(cm_triangulate_polygons(in, (size_t[]){n, n}, 2, NULL, &r) == CM_OK);
+    cm_options o = overlay_options();
+    CHECK(cm_triangulate_polygons(in, (size_t[]){n, n}, 2, &o, &r) == CM_OK);
     CHECK(cm_result_stats(r)->reversed_input == 1);
     CHECK(result_is_valid(r, in, 2, n));
     /* Boundary half-edges run along the input's (clockwise) order. */
@@ -160,7 +171,8 @@ static void test_property_random_pairs(int count)
         else rp_star(a, n, (uint64_t)seed), rp_star(b, n, (uint64_t)seed + 7), rp_twist(b, n, seed % n);
         const double *in[2] = {a, b};
         cm_result *r = NULL;
-        cm_status s = cm_triangulate_polygons(in, (size_t[]){(size_t)n, (size_t)n}, 2, NULL, &r);
+        cm_options o = overlay_options();
+        cm_status s = cm_triangulate_polygons(in, (size_t[]){(size_t)n, (size_t)n}, 2, &o, &r);
         if (s != CM_OK) {
             failed++;
             fprintf(stderr, "seed %d: %s\n", seed, cm_result_message(r));

@@ -62,7 +62,18 @@ typedef enum cm_method {
     /* Aronov-Seidel-Souvaine: triangulate each polygon, map every
      * triangulation onto one convex polygon, overlay, map back. Always
      * succeeds; O(n^2) Steiner vertices in the worst case. */
-    CM_METHOD_OVERLAY = 0
+    CM_METHOD_OVERLAY = 0,
+    /* The default. Surazhsky-Gotsman section 2: cut along diagonals common
+     * to all polygons and, where none is left, along minimum-link paths
+     * between the vertex pair with the smallest largest link distance,
+     * recursively. A Steiner-free compatible triangulation is found
+     * whenever one exists (exact dynamic program on polygons and
+     * sub-polygons up to 300 vertices, larger ones when they have few
+     * common diagonals), the one maximising the smallest angle; a part
+     * star-shaped in every polygon takes a single Steiner vertex. Where the
+     * recursion stalls, that part gets the overlay construction
+     * (stats.fallback_count). */
+    CM_METHOD_PARTITION = 1
 } cm_method;
 
 /* Progress: fraction in [0, 1], stage a short constant name. Return

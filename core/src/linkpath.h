@@ -1,0 +1,67 @@
+/* Link distance and minimum-link paths in a simple polygon (Suri's window
+ * partition), exact.
+ *
+ * The window partition from a vertex s: the region s sees (level 1); each
+ * window (a chord bounding it, through a reflex vertex) cuts off a pocket;
+ * what is weakly visible in a pocket from its window is level 2; and so on.
+ * The link distance from s to a vertex is its level: the least number of
+ * links of a polyline from s to it whose links lie strictly inside the
+ * polygon (interior bends, each link an open segment in the open interior).
+ *
+ * Built per pocket: the pocket is triangulated by ear clipping, every
+ * vertex's cone of sight lines toward the window is propagated through the
+ * triangulation (O(k) per vertex for a pocket of k vertices), windows are
+ * traced through the triangles. So O(n^2) per source in the worst case,
+ * close to O(n) when the pockets are small. Window end points are exact
+ * constructed points (xpoint.h); every decision is an exact predicate.
+ *
+ * Degenerate configurations (a window through another vertex, collinear
+ * boundary vertices) are handled: a window that passes a vertex continues
+ * past it, a vertex that lies on the boundary of a lit region without
+ * being visible is one link further. */
+#ifndef CM_LINKPATH_H
+#define CM_LINKPATH_H
+
+typedef struct cm_linkpart cm_linkpart;
+
+/* xy: the m vertices of a simple counter-clockwise polygon (copied).
+ * NULL when out of memory. */
+cm_linkpart *cm_linkpart_create(const double *xy, long m);
+void cm_linkpart_free(cm_linkpart *lp);
+
+/* Link distance from vertex s to every vertex: dist[v] (dist[s] = 0,
+ * dist[v] = 1 iff s sees v); -1 where it was not determined (only if a
+ * pocket failed to triangulate, which exact arithmetic rules out for
+ * simple input). Returns 0, or -1 out of memory. */
+int cm_link_distances(cm_linkpart *lp, long s, int *dist);
+/* The same, building the partition only up to level max_level: dist[v] =
+ * -1 for the vertices farther than that (some at max_level + 1 may still
+ * get their distance). */
+int cm_link_distances_upto(cm_linkpart *lp, long s, int max_level, int *dist);
+
+/* A minimum-link path from vertex u to vertex v: the bends (interior
+ * points, two doubles each, from u's end) in *bends (malloc'd, NULL if
+ * none) and their count in *nbends. Built backward from v: each bend sits
+ * just across the window of the pocket the previous point lies in, where
+ * that point's cone of sight lines reaches, inside the parent pocket's lit
+ * region (points on a window itself are only limits of links strictly
+ * inside); among such points the one with the widest cone toward the next
+ * window is taken. Every link is checked exactly to lie strictly inside,
+ * consecutive bends see each other and the path is simple. Returns the
+ * number of links (= the link distance), 0 if no such path could be built
+ * in doubles (a window passing within rounding distance of a vertex),
+ * -1 out of memory. */
+int cm_link_path(cm_linkpart *lp, long u, long v, double **bends, long *nbends);
+
+/* 1 if the polyline u, bends[0..nb-1], v is a valid cut: every link lies
+ * strictly inside the polygon xy[0..m-1] (u, v vertices, bends interior
+ * points) and the polyline is simple. Exact. */
+int cm_path_valid(const double *xy, long m, long u, long v, const double *bends, long nb);
+
+/* Weak visibility from a diagonal: vis[v] = 1 for the vertices v strictly
+ * between a and b (counter-clockwise from a) that see some point of the
+ * open diagonal ab; 0 for the others. Returns 0, -1 out of memory, 1 if
+ * (a, b) is not a diagonal's sub-polygon that can be triangulated. */
+int cm_weak_visibility(const double *xy, long m, long a, long b, unsigned char *vis);
+
+#endif

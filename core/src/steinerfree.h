@@ -1,0 +1,57 @@
+/* Steiner-free compatible triangulation by dynamic programming over the
+ * diagonals common to all geometries.
+ *
+ * A set of pairwise non-crossing common diagonals cuts the polygon into
+ * faces that are simple in every geometry; if every face is a triangle the
+ * result is a compatible triangulation without Steiner vertices, and every
+ * such triangulation arises this way. The program decides exactly whether
+ * one exists (the diagonals' validity is decided exactly by the caller)
+ * and, among all of them, returns one maximising the smallest angle over
+ * all geometries. When none exists it returns the decomposition along
+ * common diagonals whose faces of four or more vertices ("stuck" faces, no
+ * common diagonal inside) have the fewest vertices beyond three in total:
+ * those faces are where Steiner vertices are needed.
+ *
+ * Optionally with fan points (each one point per geometry): a face may
+ * instead be a fan from one of them, costing 1 whatever its size (one
+ * Steiner vertex at that point triangulates it); an edge may bound a fan
+ * face only if the point lies strictly on its inner side in every
+ * geometry, so the face is star-shaped from it and the fan is valid (and
+ * a point lies inside at most one face).
+ *
+ * Cost: O(m * (c + m)) time for m vertices and c common diagonals, so
+ * O(m^3) at worst, O(m + c) memory; each fan point multiplies both. */
+#ifndef CM_STEINERFREE_H
+#define CM_STEINERFREE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct cm_sf_plan {
+    long cost;            /* sum over stuck faces of (vertices - 3), plus 1
+                             for a fan face; 0 iff Steiner-free */
+    double min_angle_deg; /* smallest angle of the triangles, all geometries
+                             (180 when there are none) */
+    int32_t *tri;         /* nt triangles, local indices, counter-clockwise */
+    long nt;
+    int32_t *face;        /* stuck faces: face[face_start[f] .. face_start[f+1]) */
+    long *face_start;     /* nf + 1 entries */
+    long nf;
+    int32_t *face_fan;    /* per face: the fan point it is a fan from, or
+                             -1 for a stuck face */
+} cm_sf_plan;
+
+/* m >= 3 local vertices 0..m-1 forming a polygon that is simple and
+ * counter-clockwise in every geometry; common[i * m + j] != 0 iff (i, j)
+ * is a diagonal in every geometry (entries for polygon edges are ignored);
+ * xy[g] holds the 2m coordinates of geometry g; fans holds nfans fan
+ * points, point x of geometry g at fans[2 (x k + g)] (NULL or 0: none).
+ * Returns 0, or -1 out of memory. */
+int cm_steinerfree_plan(long m, const unsigned char *common, const double *const *xy, size_t k,
+                        const double *fans, size_t nfans, cm_sf_plan *plan);
+void cm_sf_plan_clear(cm_sf_plan *plan);
+
+/* Number of common diagonals in the table (each counted once). */
+long cm_steinerfree_count(long m, const unsigned char *common);
+
+#endif

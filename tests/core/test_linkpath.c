@@ -1,0 +1,342 @@
+/* Visibility, window partition, link distance and minimum-link paths.
+ *
+ * Every fixture states what it expects: a distance derived by hand for the
+ * corridor shapes, and for random polygons the relations every exact
+ * answer satisfies: distance 1 exactly for the diagonals (checked against a
+ * brute-force segment test), symmetry, a returned path with exactly that
+ * many links lying strictly inside, and no overestimate (a breadth-first
+ * search through sampled interior points can only find longer paths). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "internal.h"
+#include "linkpath.h"
+#include "predicates.h"
+#include "random_polygons.h"
+#include "visibility.h"
+#include "xpoint.h"
+
+/* ---- helpers -------------------------------------------------------------- */
+
+static int adjacent(int n, int a, int b) { return b == (a + 1) % n || a == (b + 1) % n; }
+
+/* All-pairs link distances, d[u * n + v]. */
+static int *all_distances(cm_linkpart *lp, int n)
+{
+    int *d = malloc(sizeof(int) * (size_t)n * (size_t)n);
+    for (int u = 0; d && u < n; u++) cm_link_distances(lp, u, d + u * n);
+    return d;
+}
+
+/* Independent check of a path: every link strictly inside, by the exact
+ * segment test, and the links pairwise disjoint except neighbours. */
+static int path_ok(const double *xy, int n, int u, int v, const double *b, long nb)
+{
+    const double *pt[64];
+    if (nb + 2 > 64) return 0;
+    pt[0] = xy + 2 * u, pt[nb + 1] = xy + 2 * v;
+    for (long i = 0; i < nb; i++) pt[i + 1] = b + 2 * i;
+    for (long i = 0; i <= nb; i++)
+        if (!cm_segment_inside(xy, n, i == 0 ? u : -1, pt[i], i == nb ? v : -1, pt[i + 1])) return 0;
+    for (long i = 0; i <= nb; i++)
+        for (long j = i + 2; j <= nb; j++)
+            if (cm_segments_intersect(pt[i], pt[i + 1], pt[j], pt[j + 1]) != 0) return 0;
+    return 1;
+}
+
+/* Upper bounds on the link distance from u: breadth-first search over the
+ * vertices and sampled interior points, joined when one sees the other;
+ * polygon vertices other than u end paths. ub[v] = -1 if none found. */
+static void sampled_bounds(const double *xy, int n, int u, const double *s, int ns, int *ub)
+{
+    int total = n + ns, *d = malloc(sizeof(int) * (size_t)total), *queue = malloc(sizeof(int) * (size_t)total);
+    for (int i = 0; i < total; i++) d[i] = -1;
+    int head = 0, tail = 0;
+    d[u] = 0, queue[tail++] = u;
+    while (head < tail) {
+        int a = queue[head++];
+        if (a < n && a != u) continue;
+        const double *pa = a < n ? xy + 2 * a : s + 2 * (a - n);
+        for (int b = 0; b < total; b++) {
+            if (d[b] >= 0) continue;
+            const double *pb = b < n ? xy + 2 * b : s + 2 * (b - n);
+            if (cm_segment_inside(xy, n, a < n ? a : -1, pa, b < n ? b : -1, pb))
+                d[b] = d[a] + 1, queue[tail++] = b;
+        }
+    }
+    memcpy(ub, d, sizeof(int) * (size_t)n);
+    free(d), free(queue);
+}
+
+/* Random points inside the triangles of the polygon's triangulation. */
+static int sample_points(const double *xy, int n, int per_triangle, uint64_t seed, double *s)
+{
+    int32_t *tri = malloc(sizeof(int32_t) * 3 * (size_t)n), *idx = malloc(sizeof(int32_t) * (size_t)n);
+    for (int i = 0; i < n; i++) idx[i] = i;
+    cm_polygon_triangulate(xy, idx, n, tri);
+    rp_rng rng = {seed};
+    int count = 0;
+    for (int t = 0; t < n - 2; t++)
+        for (int j = 0; j < per_triangle; j++) {
+            double a = rp_uniform(&rng), b = rp_uniform(&rng);
+            if (a + b > 1) a = 1 - a, b = 1 - b;
+            const double *p = xy + 2 * tri[3 * t], *q = xy + 2 * tri[3 * t + 1], *r = xy + 2 * tri[3 * t + 2];
+            s[2 * count] = (1 - a - b) * p[0] + a * q[0] + b * r[0];
+            s[2 * count + 1] = (1 - a - b) * p[1] + a * q[1] + b * r[1];
+            count++;
+        }
+    free(tri), free(idx);
+    return count;
+}
+
+/* ---- exact constructed points --------------------------------------------- */
+
+static void test_xpoint(void)
+{
+    cm_xpool *pool = cm_xpool_create();
+    /* Lines through awkward points: their intersection must lie exactly on
+     * both, though its coordinates are not doubles. */
+    long a = cm_xpool_add(pool, 0.1, 0.3), b = cm_xpool_add(pool, 1.7, 0.9);
+    long c = cm_xpool_add(pool, 0.2, 1.1), d = cm_xpool_add(pool, 1.3, -0.7);
+    long x = cm_xpool_intersect(pool, a, b, c, d);
+    CHECK(x >= 0 && !cm_xpool_is_input(pool, x));
+    CHECK(cm_xorient(pool, a, b, x) == 0);
+    CHECK(cm_xorient(pool, c, d, x) == 0);
+    CHECK(cm_xorient(pool, x, a, b) == 0);
+    long e = cm_xpool_add(pool, 0.5, 0.5);
+    CHECK(cm_xorient(pool, a, b, e) == -cm_xorient(pool, b, a, e));
+    /* A point built from a constructed one stays exact. */
+    long f = cm_xpool_add(pool, -1.0, 2.0), g = cm_xpool_add(pool, 3.0, 0.25);
+    long y = cm_xpool_intersect(pool, x, f, g, c);
+    CHECK(y >= 0 && cm_xorient(pool, x, f, y) == 0 && cm_xorient(pool, g, c, y) == 0);
+    CHECK(cm_xpool_intersect(pool, a, b, a, b) == -2); /* the same line */
+    CHECK(cm_xcompare(pool, x, x, 0) == 0 && cm_xcompare(pool, a, b, 0) < 0);
+    cm_xpool_free(pool);
+}
+
+/* ---- visibility ---------------------------------------------------------- */
+
+/* The cone-propagation table equals the brute-force segment test. */
+static void check_table(const double *xy, int n, const char *what)
+{
+    int32_t *tri = malloc(sizeof(int32_t) * 3 * (size_t)n), *idx = malloc(sizeof(int32_t) * (size_t)n);
+    unsigned char *vis = malloc((size_t)n * (size_t)n);
+    for (int i = 0; i < n; i++) idx[i] = i;
+    CHECK(cm_polygon_triangulate(xy, idx, n, tri) == 0);
+    CHECK(cm_visibility_table(xy, n, tri, vis) == 0);
+    int bad = 0;
+    for (int u = 0; u < n; u++)
+        for (int v = 0; v < n; v++) {
+            int brute = u != v && cm_segment_inside(xy, n, u, xy + 2 * u, v, xy + 2 * v);
+            bad += brute != vis[u * n + v];
+        }
+    CHECK_MSG(bad == 0, "%s: %d visibility mismatches", what, bad);
+    free(tri), free(idx), free(vis);
+}
+
+static void test_visibility_table(void)
+{
+    double xy[2 * 120];
+    for (uint64_t seed = 1; seed <= 20; seed++) {
+        if (rp_random_simple(xy, 40, seed) == 0) check_table(xy, 40, "random");
+        if (rp_star(xy, 60, seed) == 0) check_table(xy, 60, "star");
+    }
+    if (rp_spiral(xy, 120, 3) == 0) check_table(xy, 120, "spiral");
+    if (rp_comb(xy, 100, 8) == 0) check_table(xy, 100, "comb");
+}
+
+static void test_segment_inside(void)
+{
+    /* square with a notch: (0,0) (4,0) (4,4) (2,1) (0,4) */
+    const double xy[] = {0, 0, 4, 0, 4, 4, 2, 1, 0, 4};
+    CHECK(cm_segment_inside(xy, 5, 0, xy + 0, 3, xy + 6));  /* a diagonal */
+    CHECK(!cm_segment_inside(xy, 5, 0, xy + 0, 1, xy + 2)); /* an edge */
+    CHECK(!cm_segment_inside(xy, 5, 2, xy + 4, 4, xy + 8)); /* across the notch */
+    const double in[2] = {2, 0.5}, out[2] = {2, 3}, on[2] = {1, 2.5};
+    CHECK(cm_segment_inside(xy, 5, 0, xy, -1, in));
+    CHECK(!cm_segment_inside(xy, 5, 0, xy, -1, out));
+    CHECK(!cm_segment_inside(xy, 5, -1, in, -1, on)); /* ends on an edge */
+    CHECK(cm_segment_inside(xy, 5, -1, in, 1, xy + 2));
+}
+
+static void test_kernel(void)
+{
+    double xy[2 * 200], k[2];
+    for (uint64_t seed = 1; seed <= 20; seed++) {
+        CHECK(rp_star(xy, 200, seed) == 0);
+        CHECK(cm_kernel_point(xy, 200, k) == 1);
+        for (int i = 0; i < 200; i++) CHECK(cm_orient2d(xy + 2 * i, xy + 2 * ((i + 1) % 200), k) > 0);
+    }
+    CHECK(rp_spiral(xy, 100, 2) == 0);
+    CHECK(cm_kernel_point(xy, 100, k) == 0); /* a spiral is not star-shaped */
+}
+
+/* Weak visibility from a diagonal: a vertex it reports sees the middle of
+ * its cone (checked by sampling the diagonal densely); one it does not
+ * report sees no sampled point. */
+static void test_weak_visibility(void)
+{
+    double xy[2 * 30];
+    int checked = 0;
+    for (uint64_t seed = 1; seed <= 12; seed++) {
+        if (rp_random_simple(xy, 30, seed) != 0) continue;
+        for (int a = 0; a < 30; a += 3)
+            for (int b = 0; b < 30; b++) {
+                if (adjacent(30, a, b) || a == b || !cm_segment_inside(xy, 30, a, xy + 2 * a, b, xy + 2 * b))
+                    continue;
+                unsigned char vis[30];
+                CHECK(cm_weak_visibility(xy, 30, a, b, vis) == 0);
+                for (int v = (a + 1) % 30; v != b; v = (v + 1) % 30) {
+                    int seen = 0;
+                    for (int s = 1; s < 200 && !seen; s++) {
+                        double t = s / 200.0, p[2] = {xy[2 * a] + t * (xy[2 * b] - xy[2 * a]),
+                                                      xy[2 * a + 1] + t * (xy[2 * b + 1] - xy[2 * a + 1])};
+                        seen = cm_segment_inside(xy, 30, v, xy + 2 * v, -1, p);
+                    }
+                    CHECK_MSG(!seen || vis[v], "seed %d: %d sees diagonal %d-%d", (int)seed, v, a, b);
+                    checked++;
+                }
+            }
+    }
+    CHECK(checked > 500);
+}
+
+/* ---- link distance on random polygons ------------------------------------- */
+
+static void check_polygon(const double *xy, int n, int sample, const char *what)
+{
+    cm_linkpart *lp = cm_linkpart_create(xy, n);
+    int *d = all_distances(lp, n);
+    int bad_diag = 0, asym = 0, bad_path = 0, over = 0, undetermined = 0;
+    double *s = malloc(sizeof(double) * 2 * (size_t)n * 40);
+    int ns = sample ? sample_points(xy, n, 10, (uint64_t)n, s) : 0;
+    int *ub = malloc(sizeof(int) * (size_t)n);
+    for (int u = 0; u < n; u++) {
+        if (sample) sampled_bounds(xy, n, u, s, ns, ub);
+        for (int v = 0; v < n; v++) {
+            if (v == u) continue;
+            int duv = d[u * n + v];
+            undetermined += duv < 1;
+            int diagonal = cm_segment_inside(xy, n, u, xy + 2 * u, v, xy + 2 * v);
+            bad_diag += (duv == 1) != diagonal;
+            asym += duv != d[v * n + u];
+            if (sample && ub[v] > 0 && ub[v] < duv) over++;
+            if (adjacent(n, u, v) || (n > 20 && (u + v) % 3 != 0)) continue;
+            double *b = NULL;
+            long nb = 0;
+            int links = cm_link_path(lp, u, v, &b, &nb);
+            if (links != duv || nb != links - 1 || !path_ok(xy, n, u, v, b, nb)) bad_path++;
+            free(b);
+        }
+    }
+    CHECK_MSG(undetermined == 0, "%s: %d undetermined", what, undetermined);
+    CHECK_MSG(bad_diag == 0, "%s: %d pairs where distance 1 is not a diagonal", what, bad_diag);
+    CHECK_MSG(asym == 0, "%s: %d asymmetric pairs", what, asym);
+    CHECK_MSG(bad_path == 0, "%s: %d paths missing or not matching", what, bad_path);
+    CHECK_MSG(over == 0, "%s: %d distances above a sampled path", what, over);
+    free(ub), free(s), free(d);
+    cm_linkpart_free(lp);
+}
+
+static void test_random_polygons(void)
+{
+    double xy[2 * 64];
+    for (uint64_t seed = 1; seed <= 8; seed++) {
+        if (rp_random_simple(xy, 16, seed) == 0) check_polygon(xy, 16, 1, "random 16");
+        if (rp_star(xy, 16, seed) == 0) check_polygon(xy, 16, 1, "star 16");
+    }
+    for (uint64_t seed = 1; seed <= 3; seed++)
+        if (rp_random_simple(xy, 36, 100 + seed) == 0) check_polygon(xy, 36, 0, "random 36");
+    for (int turns = 1; turns <= 2; turns++)
+        if (rp_spiral(xy, 40, turns) == 0) check_polygon(xy, 40, 0, "spiral 40");
+    if (rp_comb(xy, 48, 6) == 0) check_polygon(xy, 48, 0, "comb 48");
+}
+
+/* ---- hand-derived distances ----------------------------------------------- */
+
+static int distance(const double *xy, int n, int u, int v, int *path_links)
+{
+    cm_linkpart *lp = cm_linkpart_create(xy, n);
+    int *d = malloc(sizeof(int) * (size_t)n);
+    cm_link_distances(lp, u, d);
+    int duv = d[v];
+    double *b = NULL;
+    long nb = 0;
+    *path_links = cm_link_path(lp, u, v, &b, &nb);
+    if (*path_links > 0 && !path_ok(xy, n, u, v, b, nb)) *path_links = -1;
+    free(b), free(d);
+    cm_linkpart_free(lp);
+    return duv;
+}
+
+/* A square spiral corridor of width 1 with five legs, walls 1 thick:
+ * bottom (y 0..1), right (x 8..9), top (y 8..9), left (x 0..1, down to
+ * y = 2), inner bottom (y 2..3, x 0..7). A link can run along one leg and
+ * no further (the next-but-one leg lies behind a corner), and from a corner
+ * square both of its legs are visible, so the distance from the start of
+ * the first leg to the end of the last is the number of legs, 5; the
+ * outer corner of legs 2 and 3 is 2 away (one link to the first corner
+ * square, one along leg 2). */
+static void test_spiral_corridor(void)
+{
+    const double xy[] = {0, 0, 9, 0, 9, 9, 0, 9, 0, 2, 7, 2, 7, 3, 1, 3, 1, 8, 8, 8, 8, 1, 0, 1};
+    int n = 12, links;
+    CHECK(rp_is_simple(xy, n) && rp_signed_area2(xy, n) > 0);
+    CHECK(distance(xy, n, 0, 6, &links) == 5 && links == 5);
+    CHECK(distance(xy, n, 6, 0, &links) == 5 && links == 5);
+    CHECK(distance(xy, n, 0, 2, &links) == 2 && links == 2);
+    CHECK(distance(xy, n, 0, 3, &links) == 3 && links == 3); /* outer corner of top and left */
+    CHECK(distance(xy, n, 0, 5, &links) == 5 && links == 5);
+}
+
+/* An orthogonal comb: bar [0,5] x [0,1], three teeth [0,1], [2,3], [4,5]
+ * up to y = 10, a flat vertex at (0,1) on the left wall. From a tooth's tip
+ * the bar is seen only below that tooth (x within 1.12 of it), so two tips
+ * of different teeth see no common point: 3 links. The bottom-left corner
+ * sees the whole bar and a point of the bar below a tooth sees its tip: 2.
+ * The corner (0,0) and the tip (0,10) of the same wall see each other only
+ * along the wall (through the flat vertex): 2. */
+static void test_comb(void)
+{
+    const double xy[] = {0, 0, 5, 0, 5, 10, 4, 10, 4, 1, 3, 1, 3, 10, 2, 10, 2, 1, 1, 1, 1, 10, 0, 10, 0, 1};
+    int n = 13, links;
+    CHECK(rp_is_simple(xy, n) && rp_signed_area2(xy, n) > 0);
+    CHECK(distance(xy, n, 11, 2, &links) == 3 && links == 3); /* tip of tooth 0 to tip of tooth 2 */
+    CHECK(distance(xy, n, 11, 7, &links) == 3 && links == 3); /* to the tip of tooth 1 */
+    CHECK(distance(xy, n, 10, 6, &links) == 3 && links == 3); /* right tips of teeth 0 and 1 */
+    CHECK(distance(xy, n, 0, 2, &links) == 2 && links == 2);
+    CHECK(distance(xy, n, 0, 11, &links) == 2 && links == 2);  /* along the wall */
+    CHECK(distance(xy, n, 11, 1, &links) == 2 && links == 2);  /* tip to the far bottom corner */
+    CHECK(distance(xy, n, 0, 5, &links) == 1 && links == 1);   /* a diagonal */
+}
+
+/* A convex polygon: every non-adjacent pair spans a diagonal, neighbours
+ * are two links apart. */
+static void test_convex(void)
+{
+    double xy[2 * 32];
+    CHECK(rp_disc(xy, 32) == 0);
+    cm_linkpart *lp = cm_linkpart_create(xy, 32);
+    int d[32], bad = 0;
+    for (int u = 0; u < 32; u++) {
+        cm_link_distances(lp, u, d);
+        for (int v = 0; v < 32; v++) bad += v != u && d[v] != (adjacent(32, u, v) ? 2 : 1);
+    }
+    CHECK(bad == 0);
+    cm_linkpart_free(lp);
+}
+
+int main(void)
+{
+    test_xpoint();
+    test_segment_inside();
+    test_visibility_table();
+    test_kernel();
+    test_weak_visibility();
+    test_convex();
+    test_spiral_corridor();
+    test_comb();
+    test_random_polygons();
+    return check_summary("test_linkpath");
+}

@@ -1,0 +1,310 @@
+/* The partition method through the public API: Steiner-free pairs get no
+ * Steiner vertex, the fixtures state their Steiner bounds, and a property
+ * test over more than a thousand random pairs must return only valid
+ * results (cm_triangulate checks exactly; the test checks again from the
+ * public arrays) without needing the overlay fallback. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "compatmesh/compatmesh.h"
+#include "internal.h"
+#include "partition.h"
+#include "predicates.h"
+#include "random_polygons.h"
+#include "visibility.h"
+
+/* Independent check from the public API: contract and validity. */
+static int result_is_valid(const cm_result *r, const double *const *in, size_t k, size_t n)
+{
+    size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
+    const int32_t *tri = cm_result_triangles(r);
+    if (cm_result_status(r) != CM_OK || !tri || nv < n) return 0;
+    if (nt != n + 2 * (nv - n) - 2) return 0;
+    for (size_t g = 0; g < k; g++) {
+        const double *xy = cm_result_vertices(r, g);
+        if (memcmp(xy, in[g], 2 * n * sizeof *xy) != 0) return 0;
+        for (size_t t = 0; t < nt; t++)
+            if (cm_orient2d(xy + 2 * tri[3 * t], xy + 2 * tri[3 * t + 1], xy + 2 * tri[3 * t + 2]) <= 0)
+                return 0;
+    }
+    size_t nh = cm_result_num_halfedges(r), boundary = 0;
+    const int32_t *next = cm_result_halfedge_next(r), *to = cm_result_halfedge_to_vertex(r),
+                  *face = cm_result_halfedge_face(r);
+    for (size_t h = 0; h < nh; h++) {
+        if (to[h] == to[h ^ 1]) return 0;
+        if (face[h] < 0) {
+            boundary++;
+            continue;
+        }
+        if (next[next[next[h]]] != (int32_t)h || face[next[h]] != face[h]) return 0;
+    }
+    return boundary == n && nh == 2 * (nv + nt - 1);
+}
+
+/* Runs the default method without remeshing; returns the Steiner count,
+ * or -1 if the result is not valid. */
+static long run(const double *const *xy, size_t k, size_t n, size_t *fallbacks)
+{
+    cm_options o;
+    cm_options_init(&o);
+    size_t counts[3] = {n, n, n};
+    cm_result *r = NULL;
+    cm_status s = cm_triangulate_polygons(xy, counts, k, &o, &r);
+    long steiner = -1;
+    if (s == CM_OK && result_is_valid(r, xy, k, n)) steiner = (long)cm_result_stats(r)->steiner;
+    if (fallbacks) *fallbacks = s == CM_OK ? cm_result_stats(r)->fallback_count : 0;
+    if (s != CM_OK) fprintf(stderr, "cm_triangulate: %s\n", cm_result_message(r));
+    cm_result_free(r);
+    return steiner;
+}
+
+static void test_default_method(void)
+{
+    cm_options o;
+    cm_options_init(&o);
+    CHECK(o.method == CM_METHOD_PARTITION);
+}
+
+/* ---- Steiner-free pairs ---------------------------------------------------- */
+
+/* An exact affine image (dyadic coefficients, positive determinant) keeps
+ * every diagonal: no Steiner vertex. */
+static void test_affine_pairs(void)
+{
+    double a[2 * 300], b[2 * 300];
+    for (uint64_t seed = 1; seed <= 12; seed++) {
+        int n = 25 * (int)seed;
+        CHECK(rp_random_simple(a, n, seed) == 0);
+        for (int i = 0; i < n; i++) {
+            b[2 * i] = 0.5 * a[2 * i] - a[2 * i + 1] + 1;
+            b[2 * i + 1] = 0.75 * a[2 * i] + 0.5 * a[2 * i + 1];
+        }
+        const double *xy[2] = {a, b};
+        CHECK_MSG(run(xy, 2, (size_t)n, NULL) == 0, "affine pair n=%d", n);
+    }
+}
+
+/* A convex polygon against anything: every diagonal of the other is one
+ * of the convex polygon. */
+static void test_convex_pairs(void)
+{
+    double a[2 * 400], b[2 * 400];
+    for (uint64_t seed = 1; seed <= 8; seed++) {
+        int n = 50 * (int)seed;
+        CHECK(rp_disc(a, n) == 0);
+        int ok = seed % 3 == 0 ? rp_spiral(b, n, 1 + (double)seed / 3) : seed % 3 == 1 ? rp_random_simple(b, n, seed) : rp_comb(b, n, n / 10);
+        if (ok != 0) continue;
+        const double *xy[2] = {b, a};
+        CHECK_MSG(run(xy, 2, (size_t)n, NULL) == 0, "convex pair n=%d", n);
+    }
+}
+
+/* Small random pairs where some triangulation of one is a triangulation of
+ * the other (checked by brute force over all triangulations): 0 Steiner. */
+static int is_diagonal(const double *xy, int n, int a, int b)
+{
+    return cm_segment_inside(xy, n, a, xy + 2 * a, b, xy + 2 * b);
+}
+
+static int common_triangulation(const double *a, const double *b, int n, int lo, int hi)
+{
+    if (hi - lo < 2) return 1;
+    for (int c = lo + 1; c < hi; c++) {
+        int l1 = c == lo + 1 || (is_diagonal(a, n, lo, c) && is_diagonal(b, n, lo, c));
+        int l2 = c == hi - 1 || (is_diagonal(a, n, c, hi) && is_diagonal(b, n, c, hi));
+        if (l1 && l2 && common_triangulation(a, b, n, lo, c) && common_triangulation(a, b, n, c, hi)) return 1;
+    }
+    return 0;
+}
+
+static void test_brute_force_pairs(void)
+{
+    double a[2 * 10], b[2 * 10];
+    int tried = 0, free_pairs = 0;
+    for (uint64_t seed = 1; seed <= 200; seed++) {
+        int n = 6 + (int)(seed % 4);
+        if (rp_random_simple(a, n, seed) != 0 || rp_star(b, n, seed + 500) != 0) continue;
+        const double *xy[2] = {a, b};
+        long steiner = run(xy, 2, (size_t)n, NULL);
+        int exists = common_triangulation(a, b, n, 0, n - 1);
+        CHECK(steiner >= 0);
+        CHECK_MSG(exists ? steiner == 0 : steiner > 0, "seed %d: exists %d, steiner %ld", (int)seed, exists, steiner);
+        tried++;
+        free_pairs += exists;
+    }
+    CHECK(tried > 150 && free_pairs > 20);
+}
+
+/* ---- fixtures with stated bounds ----------------------------------------- */
+
+/* A quadrilateral pair whose only diagonals differ: the dart with its
+ * reflex vertex at 2 has only (0,2), the same dart numbered from another
+ * corner has its reflex vertex at 1 and only (1,3). No Steiner-free
+ * triangulation; one Steiner vertex suffices. */
+static void test_stuck_quad(void)
+{
+    const double p[] = {0, 0, 4, 0, 1, 1, 0, 4}, r[] = {4, 0, 1, 1, 0, 4, 0, 0};
+    const double *xy[2] = {p, r};
+    CHECK(rp_is_simple(p, 4) && rp_is_simple(r, 4));
+    CHECK(is_diagonal(p, 4, 0, 2) && !is_diagonal(p, 4, 1, 3));
+    CHECK(is_diagonal(r, 4, 1, 3) && !is_diagonal(r, 4, 0, 2));
+    CHECK(run(xy, 2, 4, NULL) == 1);
+}
+
+/* Star pairs and twisted stars: star-shaped in both geometries, so at most
+ * one Steiner vertex whatever n; three geometries too. */
+static void test_stars(void)
+{
+    double a[2 * 1000], b[2 * 1000], c[2 * 1000];
+    for (uint64_t seed = 1; seed <= 6; seed++) {
+        int n = (int)(seed * seed) * 25;
+        CHECK(rp_star(a, n, seed) == 0 && rp_star(b, n, seed + 100) == 0);
+        const double *xy[3] = {a, b, c};
+        long s = run(xy, 2, (size_t)n, NULL);
+        CHECK_MSG(s >= 0 && s <= 1, "star pair n=%d: %ld", n, s);
+        memcpy(c, a, sizeof(double) * 2 * (size_t)n);
+        rp_twist(c, n, n / 3);
+        xy[1] = c;
+        s = run(xy, 2, (size_t)n, NULL);
+        CHECK_MSG(s >= 0 && s <= 1, "twisted star n=%d: %ld", n, s);
+        xy[1] = b, xy[2] = c;
+        s = run(xy, 3, (size_t)n, NULL);
+        CHECK_MSG(s >= 0 && s <= 1, "star triple n=%d: %ld", n, s);
+    }
+}
+
+/* Clockwise input is processed reversed and keeps the contract. */
+static void test_clockwise(void)
+{
+    double a[2 * 60], b[2 * 60];
+    CHECK(rp_random_simple(a, 60, 3) == 0 && rp_random_simple(b, 60, 4) == 0);
+    rp_reverse(a, 1, 59), rp_reverse(b, 1, 59);
+    const double *xy[2] = {a, b};
+    CHECK(run(xy, 2, 60, NULL) >= 0);
+}
+
+/* Pairs that need minimum-link cuts (random polygons are not
+ * star-shaped): through the internal entry, the link splits happen and
+ * the result is valid. */
+static void test_link_splits(void)
+{
+    double a[2 * 40], b[2 * 40];
+    size_t splits = 0;
+    for (uint64_t seed = 1; seed <= 20; seed++) {
+        if (rp_random_simple(a, 40, seed) != 0 || rp_random_simple(b, 40, seed + 99) != 0) continue;
+        const double *xy[2] = {a, b};
+        int32_t *tris[2];
+        int32_t idx[40];
+        for (int i = 0; i < 40; i++) idx[i] = i;
+        for (int g = 0; g < 2; g++) {
+            tris[g] = malloc(sizeof(int32_t) * 3 * 38);
+            CHECK(cm_polygon_triangulate(xy[g], idx, 40, tris[g]) == 0);
+        }
+        cm_result *r = calloc(1, sizeof *r);
+        cm_partition_stats st;
+        CHECK(cm_partition(xy, (const int32_t *const *)tris, 2, 40, NULL, &r->mesh, &st, r) == CM_OK);
+        int32_t boundary[40];
+        for (int i = 0; i < 40; i++) boundary[i] = i;
+        r->n = 40;
+        CHECK(cm_halfedge_build_and_check(r, boundary) == CM_OK);
+        CHECK(st.fallback_count == 0);
+        splits += st.link_splits;
+        cm_result_free(r);
+        free(tris[0]), free(tris[1]);
+    }
+    CHECK(splits > 10);
+}
+
+/* ---- the property test ----------------------------------------------------- */
+
+/* A square with n/4 points per side (collinear runs), vertex 0 a corner. */
+static int collinear_square(double *xy, int n)
+{
+    int q = n / 4;
+    if (4 * q != n) return -1;
+    for (int i = 0; i < n; i++) {
+        int side = i / q;
+        double f = (double)(i % q) / q;
+        xy[2 * i] = side == 0 ? -1 + 2 * f : side == 1 ? 1 : side == 2 ? 1 - 2 * f : -1;
+        xy[2 * i + 1] = side == 0 ? -1 : side == 1 ? -1 + 2 * f : side == 2 ? 1 : 1 - 2 * f;
+    }
+    return 0;
+}
+
+static int make_pair(int family, int n, uint64_t seed, double *a, double *b)
+{
+    switch (family) {
+    case 0: return rp_star(a, n, seed) | rp_star(b, n, seed + 7777);
+    case 1: return rp_random_simple(a, n, seed) | rp_random_simple(b, n, seed + 7777);
+    case 2: return rp_random_simple(a, n, seed) | rp_star(b, n, seed + 7777);
+    case 3:
+        if (rp_star(a, n, seed) != 0) return -1;
+        memcpy(b, a, sizeof(double) * 2 * (size_t)n);
+        rp_twist(b, n, 1 + (int)(seed % (uint64_t)(n - 1)));
+        return 0;
+    case 4: return rp_spiral(a, n, 1 + (double)(seed % 3)) | rp_random_simple(b, n, seed);
+    case 5: return rp_comb(a, n, 2 + (int)(seed % 3)) | rp_random_simple(b, n, seed);
+    default:
+        if (collinear_square(a, n) != 0 || rp_comb(b, n, 2) != 0) return -1;
+        rp_twist(a, n, (int)(seed % (uint64_t)n));
+        return 0;
+    }
+}
+
+static void test_property(void)
+{
+    double a[2 * 40], b[2 * 40];
+    long pairs = 0, invalid = 0, steiner = 0;
+    size_t fallbacks = 0;
+    for (uint64_t seed = 1; pairs < 1200; seed++) {
+        int family = (int)(seed % 7), n = 6 + (int)(seed % 23);
+        if (family == 6) n = 8 * (1 + (int)(seed % 4));
+        if (make_pair(family, n, seed, a, b) != 0) continue;
+        const double *xy[2] = {a, b};
+        size_t fb = 0;
+        long s = run(xy, 2, (size_t)n, &fb);
+        if (s < 0) {
+            invalid++;
+            fprintf(stderr, "family %d n %d seed %llu: invalid\n", family, n, (unsigned long long)seed);
+        } else {
+            steiner += s;
+        }
+        fallbacks += fb;
+        pairs++;
+    }
+    CHECK(invalid == 0);
+    printf("property test: %ld pairs, %ld invalid, %ld Steiner vertices, %zu fallbacks\n", pairs, invalid,
+           steiner, fallbacks);
+}
+
+/* The overlay construction stays available. */
+static void test_overlay_method(void)
+{
+    double a[2 * 50], b[2 * 50];
+    CHECK(rp_random_simple(a, 50, 8) == 0 && rp_star(b, 50, 9) == 0);
+    cm_options o;
+    cm_options_init(&o);
+    o.method = CM_METHOD_OVERLAY;
+    const double *xy[2] = {a, b};
+    size_t counts[2] = {50, 50};
+    cm_result *r = NULL;
+    CHECK(cm_triangulate_polygons(xy, counts, 2, &o, &r) == CM_OK);
+    CHECK(result_is_valid(r, xy, 2, 50));
+    cm_result_free(r);
+}
+
+int main(void)
+{
+    test_default_method();
+    test_affine_pairs();
+    test_convex_pairs();
+    test_brute_force_pairs();
+    test_stuck_quad();
+    test_stars();
+    test_clockwise();
+    test_link_splits();
+    test_overlay_method();
+    test_property();
+    return check_summary("test_partition");
+}

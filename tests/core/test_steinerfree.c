@@ -1,0 +1,205 @@
+/* The Steiner-free dynamic program against brute force: on small polygon
+ * pairs every triangulation along common diagonals is enumerated; the
+ * program must report cost 0 exactly when one exists, reach the best
+ * smallest angle among them, and otherwise leave only stuck faces (no
+ * common diagonal inside). With a fan point, star pairs cost at most 1. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "internal.h"
+#include "predicates.h"
+#include "random_polygons.h"
+#include "steinerfree.h"
+#include "visibility.h"
+
+#define MAXN 11
+
+/* common[i][j]: a diagonal of both polygons, by the brute-force test. */
+static void common_diagonals(const double *a, const double *b, int n, unsigned char *common)
+{
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++)
+            common[i * n + j] = i != j && cm_segment_inside(a, n, i, a + 2 * i, j, a + 2 * j) &&
+                                cm_segment_inside(b, n, i, b + 2 * i, j, b + 2 * j);
+}
+
+static double min_angle(const double *p, const double *q, const double *r)
+{
+    return cm_triangle_min_angle(p, q, r) * 180.0 / CM_PI;
+}
+
+/* Enumerates the triangulations of 0..n-1 along links (common diagonals
+ * and edges): counts them and records the best smallest angle. */
+typedef struct {
+    int n;
+    const unsigned char *common;
+    const double *xy[2];
+    long count;
+    double best;
+} enumeration;
+
+static int is_link(const enumeration *e, int a, int b)
+{
+    return b == a + 1 || (!(a == 0 && b == e->n - 1) && e->common[a * e->n + b]);
+}
+
+/* open[0..nopen-1]: the sub-polygons (a, b) still to triangulate; each
+ * branch works on its own copy. */
+static void enumerate(enumeration *e, const int (*open)[2], int nopen, double worst)
+{
+    if (nopen == 0) {
+        e->count++;
+        if (worst > e->best) e->best = worst;
+        return;
+    }
+    int a = open[nopen - 1][0], b = open[nopen - 1][1], next[2 * MAXN][2];
+    memcpy(next, open, sizeof(int[2]) * (size_t)(nopen - 1));
+    if (b - a < 2) {
+        enumerate(e, (const int(*)[2])next, nopen - 1, worst);
+        return;
+    }
+    for (int c = a + 1; c < b; c++) {
+        if (!is_link(e, a, c) || !is_link(e, c, b)) continue;
+        double w = worst;
+        for (int g = 0; g < 2; g++)
+            w = fmin(w, min_angle(e->xy[g] + 2 * a, e->xy[g] + 2 * c, e->xy[g] + 2 * b));
+        next[nopen - 1][0] = a, next[nopen - 1][1] = c;
+        next[nopen][0] = c, next[nopen][1] = b;
+        enumerate(e, (const int(*)[2])next, nopen + 1, w);
+    }
+}
+
+/* Checks the plan against the enumeration and against its own promises. */
+static void check_pair(const double *a, const double *b, int n, int *free_pairs)
+{
+    unsigned char common[MAXN * MAXN];
+    common_diagonals(a, b, n, common);
+    const double *xy[2] = {a, b};
+    cm_sf_plan plan;
+    CHECK(cm_steinerfree_plan(n, common, xy, 2, NULL, 0, &plan) == 0);
+    enumeration e = {n, common, {a, b}, 0, -1.0};
+    const int open[1][2] = {{0, n - 1}};
+    enumerate(&e, open, 1, 180.0);
+    CHECK_MSG((plan.cost == 0) == (e.count > 0), "n=%d cost %ld, %ld triangulations", n, plan.cost, e.count);
+    if (e.count > 0) {
+        (*free_pairs)++;
+        CHECK_MSG(fabs(plan.min_angle_deg - e.best) < 1e-9, "angle %.12f, best %.12f", plan.min_angle_deg, e.best);
+    }
+    /* the triangles are counter-clockwise in both polygons */
+    long corners = 0;
+    for (long t = 0; t < plan.nt; t++)
+        for (int g = 0; g < 2; g++)
+            CHECK(cm_orient2d(xy[g] + 2 * plan.tri[3 * t], xy[g] + 2 * plan.tri[3 * t + 1],
+                              xy[g] + 2 * plan.tri[3 * t + 2]) > 0);
+    /* faces: stuck (no common diagonal inside), and the cost adds up */
+    long cost = 0;
+    for (long f = 0; f < plan.nf; f++) {
+        const int32_t *v = plan.face + plan.face_start[f];
+        long m = plan.face_start[f + 1] - plan.face_start[f];
+        CHECK(m >= 4);
+        cost += m - 3;
+        corners += m - 2;
+        for (long i = 0; i < m; i++)
+            for (long j = i + 2; j < m; j++)
+                if (!(i == 0 && j == m - 1)) CHECK(!common[v[i] * n + v[j]]);
+    }
+    CHECK(cost == plan.cost);
+    CHECK(plan.nt + corners == n - 2); /* faces and triangles tile the polygon */
+    cm_sf_plan_clear(&plan);
+}
+
+static void test_against_enumeration(void)
+{
+    double a[2 * MAXN], b[2 * MAXN];
+    int pairs = 0, free_pairs = 0;
+    for (uint64_t seed = 1; seed <= 300; seed++) {
+        int n = 5 + (int)(seed % 6);
+        int ok = seed % 3 == 0   ? rp_random_simple(a, n, seed) | rp_random_simple(b, n, seed + 1000)
+                 : seed % 3 == 1 ? rp_star(a, n, seed) | rp_random_simple(b, n, seed + 2000)
+                                 : rp_star(a, n, seed) | rp_star(b, n, seed + 3000);
+        if (ok != 0) continue;
+        check_pair(a, b, n, &free_pairs);
+        pairs++;
+    }
+    CHECK(pairs > 250);
+    CHECK(free_pairs > 20 && free_pairs < pairs); /* both outcomes exercised */
+    printf("enumeration: %d pairs, %d Steiner-free\n", pairs, free_pairs);
+}
+
+/* A polygon and an exact affine image of it (dyadic coefficients keep the
+ * image exact, a positive determinant keeps every orientation): every
+ * triangulation of one is one of the other. */
+static void test_affine_image(void)
+{
+    double a[2 * 200], b[2 * 200];
+    for (uint64_t seed = 1; seed <= 10; seed++) {
+        int n = 20 * (int)seed;
+        CHECK(rp_random_simple(a, n, seed) == 0);
+        for (int i = 0; i < n; i++) {
+            b[2 * i] = 2 * a[2 * i] + 0.5 * a[2 * i + 1] + 3;
+            b[2 * i + 1] = 0.25 * a[2 * i] + a[2 * i + 1] - 1;
+        }
+        unsigned char *common = malloc((size_t)n * (size_t)n);
+        int32_t *tri = malloc(sizeof(int32_t) * 3 * (size_t)n), *idx = malloc(sizeof(int32_t) * (size_t)n);
+        for (int i = 0; i < n; i++) idx[i] = i;
+        CHECK(cm_polygon_triangulate(a, idx, n, tri) == 0);
+        unsigned char *vb = malloc((size_t)n * (size_t)n);
+        cm_visibility_table(a, n, tri, common);
+        CHECK(cm_polygon_triangulate(b, idx, n, tri) == 0);
+        cm_visibility_table(b, n, tri, vb);
+        for (int i = 0; i < n * n; i++) CHECK(common[i] == vb[i]);
+        const double *xy[2] = {a, b};
+        cm_sf_plan plan;
+        CHECK(cm_steinerfree_plan(n, common, xy, 2, NULL, 0, &plan) == 0);
+        CHECK(plan.cost == 0 && plan.nt == n - 2 && plan.nf == 0);
+        cm_sf_plan_clear(&plan);
+        free(common), free(vb), free(tri), free(idx);
+    }
+}
+
+/* Two stars: star-shaped in both, so a fan from kernel points merges all
+ * stuck faces into one: cost at most 1, and the fan face is valid. */
+static void test_fan(void)
+{
+    double a[2 * 120], b[2 * 120], ka[2], kb[2];
+    int merged = 0;
+    for (uint64_t seed = 1; seed <= 20; seed++) {
+        int n = 30 + 4 * (int)seed;
+        CHECK(rp_star(a, n, seed) == 0 && rp_star(b, n, seed + 77) == 0);
+        CHECK(cm_kernel_point(a, n, ka) == 1 && cm_kernel_point(b, n, kb) == 1);
+        unsigned char *common = malloc((size_t)n * (size_t)n);
+        int32_t *tri = malloc(sizeof(int32_t) * 3 * (size_t)n), *idx = malloc(sizeof(int32_t) * (size_t)n);
+        unsigned char *vb = malloc((size_t)n * (size_t)n);
+        for (int i = 0; i < n; i++) idx[i] = i;
+        cm_polygon_triangulate(a, idx, n, tri), cm_visibility_table(a, n, tri, common);
+        cm_polygon_triangulate(b, idx, n, tri), cm_visibility_table(b, n, tri, vb);
+        for (int i = 0; i < n * n; i++) common[i] &= vb[i];
+        const double *xy[2] = {a, b}, fan[4] = {ka[0], ka[1], kb[0], kb[1]};
+        cm_sf_plan plain, fanned;
+        CHECK(cm_steinerfree_plan(n, common, xy, 2, NULL, 0, &plain) == 0);
+        CHECK(cm_steinerfree_plan(n, common, xy, 2, fan, 1, &fanned) == 0);
+        CHECK(fanned.cost <= 1 && fanned.cost <= plain.cost);
+        if (plain.cost >= 2) {
+            merged++;
+            CHECK(fanned.nf == 1 && fanned.face_fan[0] == 0);
+            const int32_t *f = fanned.face;
+            long m = fanned.face_start[1];
+            for (long i = 0; i < m; i++)
+                for (int g = 0; g < 2; g++)
+                    CHECK(cm_orient2d(xy[g] + 2 * f[i], xy[g] + 2 * f[(i + 1) % m], fan + 2 * g) > 0);
+        }
+        cm_sf_plan_clear(&plain), cm_sf_plan_clear(&fanned);
+        free(common), free(vb), free(tri), free(idx);
+    }
+    CHECK(merged > 5);
+}
+
+int main(void)
+{
+    test_against_enumeration();
+    test_affine_image();
+    test_fan();
+    return check_summary("test_steinerfree");
+}
