@@ -30,6 +30,7 @@ struct cm_result {
 
     cm_stats stats;
     cm_quality *quality; /* k entries */
+    cm_quality *quality_before; /* k entries: before remeshing */
 };
 
 /* Sets status and a printf-style message on the result; returns status. */

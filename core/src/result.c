@@ -57,9 +57,9 @@ void cm_result_clear_geometry(cm_result *r)
 {
     cm_mesh_clear(&r->mesh);
     free(r->he_next), free(r->he_to), free(r->he_face), free(r->vertex_he), free(r->face_he);
-    free(r->quality);
+    free(r->quality), free(r->quality_before);
     r->he_next = r->he_to = r->he_face = r->vertex_he = r->face_he = NULL;
-    r->quality = NULL;
+    r->quality = r->quality_before = NULL;
     r->nh = 0;
 }
 
@@ -102,5 +102,12 @@ cm_status cm_result_quality(const cm_result *r, size_t g, cm_quality *quality)
 {
     if (!ok(r) || !quality || g >= r->mesh.k) return CM_ERR_ARGUMENT;
     *quality = r->quality[g];
+    return CM_OK;
+}
+
+cm_status cm_result_quality_before(const cm_result *r, size_t g, cm_quality *quality)
+{
+    if (!ok(r) || !quality || g >= r->mesh.k || !r->quality_before) return CM_ERR_ARGUMENT;
+    *quality = r->quality_before[g];
     return CM_OK;
 }

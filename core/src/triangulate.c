@@ -4,11 +4,37 @@
 
 #include "internal.h"
 #include "partition.h"
+#include "remesh.h"
 
 void cm_options_init(cm_options *options)
 {
     memset(options, 0, sizeof *options);
     options->method = CM_METHOD_PARTITION;
+    options->remesh = 1;
+    options->min_angle_deg = 25.0;
+    options->max_steiner = -1;
+    options->k_split = 0;
+    options->area_every = 0;
+    options->smoothing = CM_SMOOTH_COMBINED;
+    options->max_iterations = 0;
+}
+
+/* The remeshing options; a message on r when one is out of range. */
+static cm_status check_remesh_options(cm_result *r, const cm_options *o)
+{
+    if (!(o->min_angle_deg > 0 && o->min_angle_deg < 60))
+        return cm_fail(r, CM_ERR_ARGUMENT, "min_angle_deg must be in (0, 60), got %g", o->min_angle_deg);
+    if (o->max_steiner < -1)
+        return cm_fail(r, CM_ERR_ARGUMENT, "max_steiner must be >= -1, got %ld", o->max_steiner);
+    if (o->k_split < 0)
+        return cm_fail(r, CM_ERR_ARGUMENT, "k_split must be >= 0, got %d", o->k_split);
+    if (o->area_every < 0)
+        return cm_fail(r, CM_ERR_ARGUMENT, "area_every must be >= 0, got %d", o->area_every);
+    if (o->max_iterations < 0)
+        return cm_fail(r, CM_ERR_ARGUMENT, "max_iterations must be >= 0, got %d", o->max_iterations);
+    if ((unsigned)o->smoothing > (unsigned)CM_SMOOTH_COMBINED)
+        return cm_fail(r, CM_ERR_ARGUMENT, "unknown smoothing %d", (int)o->smoothing);
+    return CM_OK;
 }
 
 static int cancelled(const cm_options *o, double fraction, const char *stage)
@@ -75,6 +101,25 @@ done:
     return s;
 }
 
+/* Records the construction's quality, then runs Algorithm 1 on r->mesh
+ * (internal counter-clockwise order) when asked. */
+static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o)
+{
+    size_t k = r->mesh.k;
+    r->quality_before = calloc(k, sizeof *r->quality_before);
+    if (!r->quality_before) return cm_fail(r, CM_ERR_NO_MEMORY, "out of memory");
+    for (size_t g = 0; g < k; g++) cm_mesh_quality(&r->mesh, g, &r->quality_before[g]);
+    r->stats.steiner_before_remesh = r->mesh.nv - n;
+    if (!o->remesh) return CM_OK;
+    if (cancelled(o, 0.4, "remesh")) return cm_fail(r, CM_ERR_CANCELLED, "cancelled");
+    double t = cm_seconds_now();
+    cm_remesh_report report = {0};
+    cm_status s = cm_remesh(&r->mesh, n, o, &report, r);
+    r->stats.seconds_remesh = cm_seconds_now() - t;
+    r->stats.remesh_iterations = report.iterations;
+    return s;
+}
+
 /* Renumbers the polygon vertices back into input order (clockwise input). */
 static void restore_input_order(cm_mesh *m, size_t n)
 {
@@ -107,9 +152,11 @@ static cm_status run(cm_result *r, const double *const *polygons, const size_t *
 
     s = build(r, polygons, k, n, clockwise, o);
     if (s != CM_OK) return s;
+    r->stats.seconds_build = cm_seconds_now() - t1;
+    s = remesh_stage(r, n, o);
+    if (s != CM_OK) return s;
     if (clockwise) restore_input_order(&r->mesh, n);
     double t2 = cm_seconds_now();
-    r->stats.seconds_build = t2 - t1;
     if (cancelled(o, 0.8, "check")) return cm_fail(r, CM_ERR_CANCELLED, "cancelled");
 
     int32_t *boundary = malloc(n * sizeof *boundary);
@@ -148,6 +195,7 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
         r->status = cm_fail(r, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
         return r->status;
     }
+    if (check_remesh_options(r, options) != CM_OK) return r->status;
     cm_status s = run(r, polygons, counts, k, options);
     if (s != CM_OK) {
         cm_result_clear_geometry(r);

@@ -48,6 +48,7 @@ static long run(const double *const *xy, size_t k, size_t n, size_t *fallbacks)
 {
     cm_options o;
     cm_options_init(&o);
+    o.remesh = 0;
     size_t counts[3] = {n, n, n};
     cm_result *r = NULL;
     cm_status s = cm_triangulate_polygons(xy, counts, k, &o, &r);
@@ -285,7 +286,7 @@ static void test_overlay_method(void)
     CHECK(rp_random_simple(a, 50, 8) == 0 && rp_star(b, 50, 9) == 0);
     cm_options o;
     cm_options_init(&o);
-    o.method = CM_METHOD_OVERLAY;
+    o.method = CM_METHOD_OVERLAY, o.remesh = 0;
     const double *xy[2] = {a, b};
     size_t counts[2] = {50, 50};
     cm_result *r = NULL;

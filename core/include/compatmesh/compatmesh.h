@@ -70,7 +70,8 @@ typedef enum cm_method {
      * whenever one exists (exact dynamic program on polygons and
      * sub-polygons up to 300 vertices, larger ones when they have few
      * common diagonals), the one maximising the smallest angle; a part
-     * star-shaped in every polygon takes a single Steiner vertex. Where the
+     * star-shaped in every polygon takes a single Steiner vertex. Few
+     * Steiner vertices, poor angles: meant to be remeshed. Where the
      * recursion stalls, that part gets the overlay construction
      * (stats.fallback_count). */
     CM_METHOD_PARTITION = 1
@@ -80,10 +81,55 @@ typedef enum cm_method {
  * non-zero to cancel; the call then returns CM_ERR_CANCELLED. */
 typedef int (*cm_progress_fn)(void *user, double fraction, const char *stage);
 
+/* Vertex smoothing in the remesher (paper section 3.1). Every variant moves
+ * interior Steiner vertices only, each geometry on its own, and never makes
+ * a triangle invalid. The remesher applies them in the "smart" manner: a
+ * vertex moves only if the smallest angle of its triangles improves. */
+typedef enum cm_smoothing {
+    CM_SMOOTH_LAPLACIAN = 0, /* to the average of the neighbours */
+    CM_SMOOTH_ANGLE,         /* angle-based (Zhou and Shimada) */
+    CM_SMOOTH_WEIGHTED,      /* weighted angle-based, weights 1/alpha^2 (eq. 2) */
+    CM_SMOOTH_COMBINED       /* weighted angle-based; Laplacian where it fails */
+} cm_smoothing;
+
 typedef struct cm_options {
     cm_method method;
     cm_progress_fn progress; /* may be NULL */
     void *progress_user;
+
+    /* Remeshing (paper section 4, Algorithm 1): edge flips, smoothing,
+     * area equalisation and edge splits, applied to every geometry at once
+     * so the triangulations stay compatible. It first removes the
+     * construction's surplus Steiner vertices (edge collapses valid in
+     * every geometry) and at the end those the result does not need
+     * (collapses that keep every angle at or above the target). Every step
+     * keeps every geometry valid; a split is kept only if the smallest
+     * angle around it did not drop. The boundary is never touched. */
+    int remesh;             /* 1 (default): remesh; 0: return the construction */
+    /* Target smallest angle in degrees, in (0, 60); default 25. A triangle
+     * at input corner i aims at min(target, c_i / 2), c_i the corner angle
+     * (a corner split in two cannot promise more), and one on a boundary
+     * edge at no more than the best isosceles triangle on that edge fitting
+     * inside the polygon allows (boundary edges are never split).
+     * Refinement stops when every triangle of every geometry reaches its
+     * aim, the budget is spent, or the smallest angle stops rising. */
+    double min_angle_deg;
+    /* Most Steiner vertices the refinement may add (edge splits). -1
+     * (default): automatic, 2 n + 100; 0: no refinement, only flips,
+     * smoothing and Steiner vertex removal. */
+    long max_steiner;
+    /* Edges split per refinement round (pairwise non-adjacent, best
+     * eq. (5) scores first), >= 0; 0 (default): automatic, about 1 % of
+     * the triangles, at least 1. */
+    int k_split;
+    /* Area equalisation (eq. 4) every this many refinement rounds, >= 0;
+     * 0: never. Default 0: on the benchmark pairs it did not pay for
+     * itself (the sweep is kept only if no angle drops). */
+    int area_every;
+    cm_smoothing smoothing; /* default CM_SMOOTH_COMBINED */
+    /* Cap on refinement rounds, >= 0; 0 (default): no cap beyond the
+     * other stopping rules. */
+    int max_iterations;
 } cm_options;
 
 /* Fills *options with the defaults. Always call it first, then change the
@@ -102,6 +148,9 @@ typedef struct cm_stats {
     double seconds_validate; /* input validation */
     double seconds_build;    /* building the compatible triangulation */
     double seconds_check;    /* exact validation of the result */
+    size_t steiner_before_remesh; /* Steiner vertices of the construction */
+    double seconds_remesh;   /* remeshing (0 when options.remesh is 0) */
+    size_t remesh_iterations; /* refinement rounds of Algorithm 1 */
 } cm_stats;
 
 /* Quality of one geometry of the result. */
@@ -171,6 +220,9 @@ const int32_t *cm_result_face_halfedge(const cm_result *result);
 const cm_stats *cm_result_stats(const cm_result *result);
 /* Returns CM_ERR_ARGUMENT if g is out of range or the result failed. */
 cm_status cm_result_quality(const cm_result *result, size_t g, cm_quality *quality);
+/* Quality of geometry g as the construction built it, before remeshing
+ * (equal to cm_result_quality when options.remesh was 0). */
+cm_status cm_result_quality_before(const cm_result *result, size_t g, cm_quality *quality);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,74 @@
+// Planar polygons in 3D: the plane they lie in, and the map to 2D and back.
+// Shared by the OpenMesh adapter and the Python module so that both read a
+// 3D polygon the same way.
+#ifndef COMPATMESH_PLANE_HH
+#define COMPATMESH_PLANE_HH
+
+#include <array>
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace compatmesh {
+
+// Default for fit_plane's relative_tolerance: loose enough for float
+// coordinates, tight enough to reject a visibly bent polygon.
+constexpr double kDefaultPlanarityTolerance = 1e-5;
+
+// An orthonormal frame of a plane: the plane point (x, y) is the 3D point
+// origin + x * u + y * v, and normal = u x v.
+struct PlaneFrame {
+  std::array<double, 3> origin{{0.0, 0.0, 0.0}};
+  std::array<double, 3> u{{1.0, 0.0, 0.0}};
+  std::array<double, 3> v{{0.0, 1.0, 0.0}};
+  std::array<double, 3> normal{{0.0, 0.0, 1.0}};
+  // 0, 1 or 2 when every point has exactly the same coordinate on that
+  // axis: the frame is then that coordinate plane, and the 2D coordinates
+  // are copies of the other two coordinates (no rounding). -1 otherwise.
+  int fixed_axis = 2;
+
+  std::array<double, 2> to_plane(const double *point) const;
+  std::array<double, 3> to_space(double x, double y) const;
+};
+
+// How fit_plane picks the side the normal points to.
+enum class NormalSign {
+  // A fixed rule independent of the vertex order (the normal's largest
+  // component is positive; +x, +y or +z for a coordinate plane), so a
+  // clockwise polygon stays clockwise in 2D.
+  Canonical,
+  // The closed polygon through the points, in order, turns
+  // counter-clockwise about the normal (right-hand rule), as a face does.
+  FollowWinding,
+};
+
+// What fit_plane throws; vertex is the offending point's index.
+class PlaneError : public std::invalid_argument {
+ public:
+  PlaneError(const std::string &message, std::size_t vertex)
+      : std::invalid_argument(message), vertex_(vertex) {}
+  std::size_t vertex() const { return vertex_; }
+
+ private:
+  std::size_t vertex_;
+};
+
+// Fits the plane through a closed polygon by least squares.
+//   xyz:   n * 3 doubles, point i at xyz[3i], xyz[3i+1], xyz[3i+2]
+//   relative_tolerance: largest distance allowed between a point and the
+//          plane, as a fraction of the bounding-box diagonal
+//   sign:  which way the normal points
+// Returns the frame. Throws PlaneError, naming the farthest point, when the
+// points are not planar within the tolerance, or a non-finite point. Fewer than
+// three points or collinear points give some plane through them (the
+// polygon check reports them later).
+PlaneFrame fit_plane(const double *xyz, std::size_t n, double relative_tolerance,
+                     NormalSign sign);
+
+// The plane coordinates of n points: 2n doubles.
+std::vector<double> to_plane(const PlaneFrame &frame, const double *xyz, std::size_t n);
+
+}  // namespace compatmesh
+
+#endif

@@ -1,0 +1,200 @@
+// OpenMesh adapter for compatmesh: polygons read from OpenMesh meshes, results
+// returned as OpenMesh meshes whose handles are the core's indices.
+//
+// One call:
+//
+//   std::vector<compatmesh::TriMesh> inputs(2);   // read with OpenMesh::IO
+//   std::vector<compatmesh::TriMesh> outputs = compatmesh::compatible_triangulation(inputs);
+//
+// or the tool object, configured by setters and run by one call:
+//
+//   compatmesh::CompatibleTriangulationT<compatmesh::TriMesh> tool;
+//   tool.add_mesh(a); tool.add_mesh(b);
+//   tool.set_progress(...);
+//   tool.run();                                   // throws compatmesh::Error
+//   tool.meshes()[0] ...
+//
+// Input meshes (any OpenMesh TriMesh or PolyMesh type; only read, nothing is
+// added to them) give one planar polygon each:
+// - a mesh with faces must be a disk (connected, manifold, one boundary
+//   loop, Euler characteristic 1); its boundary loop is the polygon, in the
+//   direction of the faces, starting at the boundary vertex with the lowest
+//   index. A single polygonal face (an OFF or OBJ file with one face read
+//   into a PolyMesh, or into a TriMesh, which fans it) is such a disk.
+// - a mesh with edges but no faces must be one closed polyline: each edge's
+//   first half-edge (OpenMesh's halfedge_handle(e, 0)) points along it.
+// - a mesh with vertices only is the closed polygon through its vertices in
+//   index order. OpenMesh's OBJ reader drops `l` (polyline) elements and
+//   keeps the vertices in file order, so an OBJ polyline whose `l` line
+//   lists the vertices in order, or an OFF file with 0 faces, reads as this.
+// Isolated vertices are ignored when the mesh has edges or faces. The
+// polygon may lie in any plane; see PlaneFrame and NormalSign in plane.hh:
+// meshes with faces keep their face orientation, face-less ones use the
+// canonical normal so their winding reaches the core unchanged.
+//
+// Output meshes: one triangle mesh per input, all with the same
+// connectivity. Vertex v, half-edge h and face f of the core's result are
+// OpenMesh's VertexHandle(v), HalfedgeHandle(h) and FaceHandle(f), with the
+// same next, opposite, to-vertex and face relations. The input vertices come
+// first with their original 3D coordinates; Steiner vertices are mapped
+// from the plane back to 3D. Two int vertex properties, persistent (kept by
+// the OM format), say where each vertex came from:
+//   kInputIndexProperty   the polygon vertex index, -1 for a Steiner vertex
+//   kSourceVertexProperty the input mesh's vertex index, -1 for a Steiner
+//                         vertex
+//
+// Files: OpenMesh 9 reads and writes OFF, OBJ, PLY and STL coordinates as
+// float, also for double meshes, and writes ASCII with 6 digits unless
+// write_mesh is given a precision (17 keeps every digit it has); OM keeps
+// doubles and the two vertex properties.
+#ifndef COMPATMESH_OPENMESH_HH
+#define COMPATMESH_OPENMESH_HH
+
+// OpenMesh wants its IO header before the mesh kernels.
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/Utils/Noncopyable.hh>
+
+#include <compatmesh/compatmesh.h>
+#include <compatmesh/plane.hh>
+
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace compatmesh {
+
+// Double coordinates, so the input vertices come back bit-identical.
+using TriMesh = OpenMesh::TriMesh_ArrayKernelT<OpenMesh::DefaultTraitsDouble>;
+using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<OpenMesh::DefaultTraitsDouble>;
+
+constexpr const char *kInputIndexProperty = "compatmesh:input_index";
+constexpr const char *kSourceVertexProperty = "compatmesh:source_vertex";
+
+// Everything the adapter reports goes through this exception: bad meshes
+// (status CM_ERR_ARGUMENT), failures of the core (its status and message).
+class Error : public std::runtime_error {
+ public:
+  // mesh: index of the input mesh concerned, or -1. vertex, other_vertex:
+  // polygon vertex indices (the core's error location), or -1.
+  Error(cm_status status, const std::string &message, long mesh = -1, long vertex = -1,
+        long other_vertex = -1);
+  cm_status status() const { return status_; }
+  long mesh() const { return mesh_; }
+  long vertex() const { return vertex_; }
+  long other_vertex() const { return other_vertex_; }
+
+ private:
+  cm_status status_;
+  long mesh_, vertex_, other_vertex_;
+};
+
+// One input polygon, read from a mesh.
+struct Boundary {
+  std::vector<double> xyz;         // 3n: the original coordinates, in polygon order
+  std::vector<int> source_vertex;  // n: the mesh's vertex index of each polygon vertex
+  PlaneFrame frame;                // the polygon's plane
+  std::vector<double> xy;          // 2n: the coordinates in that plane
+
+  std::size_t size() const { return source_vertex.size(); }
+};
+
+// Builds a Boundary from 3D points in polygon order (fits the plane; throws
+// Error when they are not planar within relative_tolerance).
+Boundary make_boundary(std::vector<double> xyz, std::vector<int> source_vertex,
+                       double relative_tolerance, NormalSign sign);
+
+// Reads the polygon of a mesh (the three forms listed at the top). Throws
+// Error with a message saying what is wrong: several boundary loops (holes),
+// a closed mesh, several parts, a non-manifold vertex, handles, a polyline
+// that branches or is not closed, non-planar points.
+template <class Mesh>
+Boundary read_boundary(const Mesh &mesh, double relative_tolerance = kDefaultPlanarityTolerance);
+
+struct ResultDeleter {
+  void operator()(cm_result *result) const { cm_result_free(result); }
+};
+using ResultPtr = std::unique_ptr<cm_result, ResultDeleter>;
+
+// Progress: fraction in [0, 1] and a short stage name; return true to cancel.
+using ProgressFn = std::function<bool(double fraction, const char *stage)>;
+
+// Runs the core on the polygons. Throws Error with the core's status and
+// message (the location translated to the input mesh's vertex) on failure;
+// rethrows what the progress function threw.
+ResultPtr triangulate(const std::vector<Boundary> &polygons, const cm_options &options,
+                      const ProgressFn &progress = ProgressFn());
+
+// Geometry g of a result as an OpenMesh mesh with the core's numbering.
+//   boundary: where the polygon came from (3D coordinates, plane, source
+//             vertices); NULL for a polygon given in the xy plane.
+// Throws Error(CM_ERR_INTERNAL) if OpenMesh's traversal disagrees with the
+// core's half-edge structure.
+template <class Mesh>
+Mesh result_to_mesh(const cm_result *result, std::size_t g, const Boundary *boundary = nullptr);
+
+// Checks, with OpenMesh's own traversal, that mesh has exactly the core's
+// connectivity and numbering. Throws Error(CM_ERR_INTERNAL) naming the
+// first difference.
+template <class Mesh>
+void check_same_connectivity(const cm_result *result, const Mesh &mesh);
+
+// The tool: compatible triangulation of k >= 2 meshes' polygons.
+template <class InMesh, class OutMesh = TriMesh>
+class CompatibleTriangulationT : private OpenMesh::Utils::Noncopyable {
+ public:
+  CompatibleTriangulationT() { cm_options_init(&options_); }
+
+  // The mesh is only read, during run(); it must live until then.
+  void add_mesh(const InMesh &mesh) { inputs_.push_back(&mesh); }
+  void clear_meshes() { inputs_.clear(); }
+
+  // The core's options, as filled by cm_options_init and then changed. Its
+  // progress fields are replaced by set_progress when that is given.
+  void set_options(const cm_options &options) { options_ = options; }
+  const cm_options &options() const { return options_; }
+  void set_method(cm_method method) { options_.method = method; }
+  void set_remesh(bool remesh) { options_.remesh = remesh ? 1 : 0; }
+  void set_min_angle_deg(double degrees) { options_.min_angle_deg = degrees; }
+  void set_max_steiner(long count) { options_.max_steiner = count; }
+  void set_smoothing(cm_smoothing smoothing) { options_.smoothing = smoothing; }
+  void set_planarity_tolerance(double relative) { planarity_tolerance_ = relative; }
+  void set_progress(ProgressFn progress) { progress_ = std::move(progress); }
+
+  // Reads the polygons, triangulates them, builds the output meshes.
+  // Throws Error; on failure the previous results are cleared.
+  void run();
+
+  // One mesh per input, in input order (empty before run()).
+  std::vector<OutMesh> &meshes() { return meshes_; }
+  const std::vector<OutMesh> &meshes() const { return meshes_; }
+  const std::vector<Boundary> &boundaries() const { return boundaries_; }
+  const cm_stats &stats() const;
+  cm_quality quality(std::size_t g) const;
+  cm_quality quality_before_remesh(std::size_t g) const;
+
+ private:
+  std::vector<const InMesh *> inputs_;
+  cm_options options_;
+  double planarity_tolerance_ = kDefaultPlanarityTolerance;
+  ProgressFn progress_;
+  std::vector<Boundary> boundaries_;
+  ResultPtr result_;
+  std::vector<OutMesh> meshes_;
+};
+
+// One call: the compatible triangulation of the meshes' polygons, one
+// output mesh per input. options: NULL for the defaults.
+template <class OutMesh = TriMesh, class InMesh>
+std::vector<OutMesh> compatible_triangulation(const std::vector<InMesh> &meshes,
+                                              const cm_options *options = nullptr);
+
+}  // namespace compatmesh
+
+#include <compatmesh/openmesh_impl.hh>
+
+#endif

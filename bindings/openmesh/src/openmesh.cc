@@ -1,0 +1,94 @@
+#include "compatmesh/openmesh.hh"
+
+#include <exception>
+
+namespace compatmesh {
+
+Error::Error(cm_status status, const std::string &message, long mesh, long vertex, long other_vertex)
+    : std::runtime_error(message), status_(status), mesh_(mesh), vertex_(vertex),
+      other_vertex_(other_vertex)
+{
+}
+
+Boundary make_boundary(std::vector<double> xyz, std::vector<int> source_vertex,
+                       double relative_tolerance, NormalSign sign)
+{
+  const std::size_t n = source_vertex.size();
+  if (xyz.size() != 3 * n)
+    throw Error(CM_ERR_ARGUMENT, "make_boundary: " + std::to_string(xyz.size()) +
+                                     " coordinates for " + std::to_string(n) + " vertices");
+  Boundary boundary;
+  try {
+    boundary.frame = fit_plane(xyz.data(), n, relative_tolerance, sign);
+  } catch (const PlaneError &e) {
+    long vertex = long(e.vertex());
+    throw Error(CM_ERR_ARGUMENT,
+                std::string(e.what()) + " (mesh vertex " + std::to_string(source_vertex[vertex]) + ")",
+                -1, vertex);
+  }
+  boundary.xy = to_plane(boundary.frame, xyz.data(), n);
+  boundary.xyz = std::move(xyz);
+  boundary.source_vertex = std::move(source_vertex);
+  return boundary;
+}
+
+namespace {
+
+struct ProgressContext {
+  const ProgressFn *progress;
+  std::exception_ptr error;  // what the callback threw: it must not cross the C code
+};
+
+int call_progress(void *user, double fraction, const char *stage)
+{
+  auto *context = static_cast<ProgressContext *>(user);
+  try {
+    return (*context->progress)(fraction, stage) ? 1 : 0;
+  } catch (...) {
+    context->error = std::current_exception();
+    return 1;
+  }
+}
+
+}  // namespace
+
+ResultPtr triangulate(const std::vector<Boundary> &polygons, const cm_options &options,
+                      const ProgressFn &progress)
+{
+  std::vector<const double *> coordinates;
+  std::vector<std::size_t> counts;
+  for (const Boundary &polygon : polygons) {
+    coordinates.push_back(polygon.xy.data());
+    counts.push_back(polygon.size());
+  }
+  cm_options core_options = options;
+  ProgressContext context{&progress, nullptr};
+  if (progress) {
+    core_options.progress = call_progress;
+    core_options.progress_user = &context;
+  }
+  cm_result *raw = nullptr;
+  cm_status status = cm_triangulate_polygons(coordinates.data(), counts.data(), polygons.size(),
+                                             &core_options, &raw);
+  ResultPtr result(raw);
+  if (context.error) std::rethrow_exception(context.error);
+  if (!result) throw Error(CM_ERR_NO_MEMORY, "out of memory");
+  if (status == CM_OK) return result;
+
+  long polygon = -1, vertex = -1, other = -1;
+  cm_result_error_location(raw, &polygon, &vertex, &other);
+  std::string message = cm_result_message(raw);
+  // Name the vertices as the input meshes number them.
+  if (polygon >= 0 && std::size_t(polygon) < polygons.size()) {
+    const std::vector<int> &source = polygons[polygon].source_vertex;
+    auto in_range = [&](long v) { return v >= 0 && std::size_t(v) < source.size(); };
+    if (in_range(vertex)) {
+      message += " (mesh " + std::to_string(polygon) + ", mesh vertex " + std::to_string(source[vertex]);
+      if (in_range(other)) message += " and " + std::to_string(source[other]);
+      message += ")";
+    }
+  }
+  throw Error(status, message, polygon, vertex, other);
+}
+
+}  // namespace compatmesh

@@ -1,0 +1,412 @@
+// Python module compatmesh: numpy arrays in, numpy arrays out, the core in
+// between. Only translation lives here.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <compatmesh/compatmesh.h>
+#include <compatmesh/plane.hh>
+
+#include <array>
+#include <cstring>
+#include <exception>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+
+namespace {
+
+struct ResultDeleter {
+  void operator()(cm_result *result) const { cm_result_free(result); }
+};
+using ResultPtr = std::unique_ptr<cm_result, ResultDeleter>;
+
+// One input polygon as the core sees it (xy), and how to map vertices back.
+struct Polygon {
+  std::vector<double> xy;   // 2n
+  bool spatial = false;     // given as n x 3
+  std::vector<double> xyz;  // 3n, the input, when spatial
+  compatmesh::PlaneFrame frame;
+  std::size_t size() const { return xy.size() / 2; }
+};
+
+using FloatArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::string shape_of(const py::array &a)
+{
+  std::string s = "(";
+  for (py::ssize_t d = 0; d < a.ndim(); d++) s += (d ? ", " : "") + std::to_string(a.shape(d));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+Polygon read_polygon(py::handle object, std::size_t index, double tolerance)
+{
+  std::string name = "polygon " + std::to_string(index);
+  FloatArray a = FloatArray::ensure(object);
+  if (!a) {
+    PyErr_Clear();
+    throw py::type_error(name + ": not convertible to an array of floats");
+  }
+  if (a.ndim() != 2 || (a.shape(1) != 2 && a.shape(1) != 3))
+    throw py::value_error(name + ": expected an n x 2 or n x 3 array, got shape " + shape_of(a));
+  Polygon polygon;
+  std::size_t n = std::size_t(a.shape(0));
+  const double *data = a.data();
+  if (a.shape(1) == 2) {
+    polygon.xy.assign(data, data + 2 * n);
+    return polygon;
+  }
+  polygon.spatial = true;
+  polygon.xyz.assign(data, data + 3 * n);
+  try {
+    // Canonical sign: the winding reaches the core as given, as for n x 2.
+    polygon.frame = compatmesh::fit_plane(data, n, tolerance, compatmesh::NormalSign::Canonical);
+  } catch (const compatmesh::PlaneError &e) {
+    throw py::value_error(name + ": " + e.what());
+  }
+  polygon.xy = compatmesh::to_plane(polygon.frame, data, n);
+  return polygon;
+}
+
+// --- options -------------------------------------------------------------
+// Keyword arguments map by name to the fields of cm_options; defaults come
+// from cm_options_init. A new field needs one line in option_setters().
+
+struct Callbacks {
+  py::object progress;  // None or a callable
+};
+
+using Setter = void (*)(cm_options &, py::handle, Callbacks &);
+
+// An enum option: a name, or an int / compatmesh enum value (the core
+// checks the range).
+template <class Enum>
+Enum enum_from(py::handle value, const char *option,
+               const std::vector<std::pair<const char *, Enum>> &names)
+{
+  if (py::isinstance<py::str>(value)) {
+    std::string name = value.cast<std::string>();
+    for (const auto &entry : names)
+      if (name == entry.first) return entry.second;
+    std::string known;
+    for (const auto &entry : names) known += std::string(known.empty() ? "" : ", ") + "'" + entry.first + "'";
+    throw py::value_error("unknown " + std::string(option) + " '" + name + "' (known: " + known + ")");
+  }
+  try {
+    return Enum(value.cast<int>());
+  } catch (const py::cast_error &) {
+    throw py::type_error(std::string(option) + " must be a name, an int or a compatmesh enum value");
+  }
+}
+
+const std::vector<std::pair<const char *, cm_method>> method_names = {
+    {"overlay", CM_METHOD_OVERLAY}, {"partition", CM_METHOD_PARTITION}};
+const std::vector<std::pair<const char *, cm_smoothing>> smoothing_names = {
+    {"laplacian", CM_SMOOTH_LAPLACIAN},
+    {"angle", CM_SMOOTH_ANGLE},
+    {"weighted", CM_SMOOTH_WEIGHTED},
+    {"combined", CM_SMOOTH_COMBINED}};
+
+// A numeric option; the core checks the range.
+template <class T>
+T number_from(py::handle value, const char *option)
+{
+  bool is_number = py::isinstance<py::int_>(value) || (std::is_floating_point<T>::value && py::isinstance<py::float_>(value));
+  if (!is_number)
+    throw py::type_error(std::string(option) + " must be " +
+                         (std::is_floating_point<T>::value ? "a number" : "an int") + ", not " +
+                         std::string(py::str(value.get_type().attr("__name__"))));
+  return value.cast<T>();
+}
+
+struct OptionSetter {
+  const char *name;
+  Setter set;
+};
+
+#define CM_NUMBER_OPTION(field)                                                 \
+  {                                                                             \
+    #field, [](cm_options &o, py::handle v, Callbacks &) {                      \
+      o.field = number_from<decltype(o.field)>(v, #field);                      \
+    }                                                                           \
+  }
+
+const std::vector<OptionSetter> &option_setters()
+{
+  static const std::vector<OptionSetter> setters = {
+      {"method", [](cm_options &o, py::handle v, Callbacks &) { o.method = enum_from(v, "method", method_names); }},
+      {"progress",
+       [](cm_options &, py::handle v, Callbacks &c) {
+         if (!v.is_none() && !PyCallable_Check(v.ptr()))
+           throw py::type_error("progress must be callable(fraction, stage) or None");
+         c.progress = py::reinterpret_borrow<py::object>(v);
+       }},
+      {"progress_user",
+       [](cm_options &, py::handle, Callbacks &) {
+         throw py::type_error("progress_user is not used from Python: give progress a closure");
+       }},
+      CM_NUMBER_OPTION(remesh),
+      CM_NUMBER_OPTION(min_angle_deg),
+      CM_NUMBER_OPTION(max_steiner),
+      CM_NUMBER_OPTION(k_split),
+      CM_NUMBER_OPTION(area_every),
+      {"smoothing",
+       [](cm_options &o, py::handle v, Callbacks &) { o.smoothing = enum_from(v, "smoothing", smoothing_names); }},
+      CM_NUMBER_OPTION(max_iterations),
+  };
+  return setters;
+}
+
+// --- the call --------------------------------------------------------------
+
+struct ProgressContext {
+  py::object *progress;
+  std::exception_ptr error;  // what the callback raised: it must not cross the C code
+};
+
+int call_progress(void *user, double fraction, const char *stage)
+{
+  auto *context = static_cast<ProgressContext *>(user);
+  py::gil_scoped_acquire gil;
+  try {
+    return py::bool_((*context->progress)(fraction, stage)) ? 1 : 0;
+  } catch (...) {
+    context->error = std::current_exception();
+    return 1;
+  }
+}
+
+// Exception types made at import; kept for the process's life (a handle,
+// so nothing is released after the interpreter is gone).
+py::handle input_error_type;  // compatmesh.InputError
+py::handle cancelled_type;    // compatmesh.Cancelled
+struct InputErrorTag {};
+struct CancelledTag {};
+
+[[noreturn]] void raise_failure(const cm_result *result, cm_status status)
+{
+  std::string message = result ? cm_result_message(result) : "out of memory";
+  if (status == CM_ERR_NO_MEMORY) throw std::bad_alloc();
+  if (status == CM_ERR_CANCELLED) {
+    PyErr_SetString(cancelled_type.ptr(), message.c_str());
+    throw py::error_already_set();
+  }
+  if (status == CM_ERR_INTERNAL) throw std::runtime_error(message);
+  long polygon = -1, vertex = -1, other = -1;
+  cm_result_error_location(result, &polygon, &vertex, &other);
+  py::object error = input_error_type(message);
+  error.attr("status") = cm_status_string(status);
+  error.attr("polygon") = polygon;
+  error.attr("vertex") = vertex;
+  error.attr("other_vertex") = other;
+  PyErr_SetObject(input_error_type.ptr(), error.ptr());
+  throw py::error_already_set();
+}
+
+template <class T>
+py::array_t<T> copy_array(const T *data, std::size_t rows, std::size_t columns)
+{
+  py::array_t<T> a(columns == 1 ? std::vector<py::ssize_t>{py::ssize_t(rows)}
+                                : std::vector<py::ssize_t>{py::ssize_t(rows), py::ssize_t(columns)});
+  if (rows > 0 && columns > 0) std::memcpy(a.mutable_data(), data, rows * columns * sizeof(T));
+  return a;
+}
+
+// The vertices of geometry g in the input's dimension: input vertices
+// as given, Steiner vertices mapped from the plane.
+py::array_t<double> vertices_of(const cm_result *result, std::size_t g, const Polygon &polygon)
+{
+  std::size_t nv = cm_result_num_vertices(result), n = polygon.size();
+  const double *xy = cm_result_vertices(result, g);
+  if (!polygon.spatial) return copy_array(xy, nv, 2);
+  py::array_t<double> a({py::ssize_t(nv), py::ssize_t(3)});
+  double *out = a.mutable_data();
+  std::memcpy(out, polygon.xyz.data(), 3 * n * sizeof(double));
+  for (std::size_t v = n; v < nv; v++) {
+    std::array<double, 3> p = polygon.frame.to_space(xy[2 * v], xy[2 * v + 1]);
+    std::memcpy(out + 3 * v, p.data(), sizeof p);
+  }
+  return a;
+}
+
+py::dict quality_dict(const cm_quality &q)
+{
+  py::dict d;
+  d["min_angle_deg"] = q.min_angle_deg;
+  d["max_angle_deg"] = q.max_angle_deg;
+  d["pct_below_10deg"] = q.pct_below_10deg;
+  d["pct_below_15deg"] = q.pct_below_15deg;
+  d["pct_below_20deg"] = q.pct_below_20deg;
+  return d;
+}
+
+py::dict stats_of(const cm_result *result)
+{
+  const cm_stats *s = cm_result_stats(result);
+  py::dict stats;
+  stats["n"] = s->n;
+  stats["k"] = s->k;
+  stats["vertices"] = s->vertices;
+  stats["steiner"] = s->steiner;
+  stats["triangles"] = s->triangles;
+  stats["reversed_input"] = bool(s->reversed_input);
+  stats["fallback_count"] = s->fallback_count;
+  stats["steiner_before_remesh"] = s->steiner_before_remesh;
+  stats["remesh_iterations"] = s->remesh_iterations;
+  stats["seconds_validate"] = s->seconds_validate;
+  stats["seconds_build"] = s->seconds_build;
+  stats["seconds_remesh"] = s->seconds_remesh;
+  stats["seconds_check"] = s->seconds_check;
+  py::list quality, quality_before;
+  for (std::size_t g = 0; g < s->k; g++) {
+    cm_quality q;
+    cm_result_quality(result, g, &q);
+    quality.append(quality_dict(q));
+    cm_result_quality_before(result, g, &q);
+    quality_before.append(quality_dict(q));
+  }
+  stats["quality"] = quality;
+  stats["quality_before_remesh"] = quality_before;
+  return stats;
+}
+
+struct Result {
+  py::array_t<int32_t> faces;
+  py::list vertices;
+  py::dict halfedges;
+  py::dict stats;
+};
+
+Result make_result(const cm_result *r, const std::vector<Polygon> &polygons)
+{
+  Result result;
+  std::size_t nv = cm_result_num_vertices(r), nh = cm_result_num_halfedges(r),
+              nt = cm_result_num_triangles(r);
+  result.faces = copy_array(cm_result_triangles(r), nt, 3);
+  for (std::size_t g = 0; g < polygons.size(); g++) result.vertices.append(vertices_of(r, g, polygons[g]));
+  result.halfedges["next"] = copy_array(cm_result_halfedge_next(r), nh, 1);
+  result.halfedges["to_vertex"] = copy_array(cm_result_halfedge_to_vertex(r), nh, 1);
+  result.halfedges["face"] = copy_array(cm_result_halfedge_face(r), nh, 1);
+  result.halfedges["vertex_halfedge"] = copy_array(cm_result_vertex_halfedge(r), nv, 1);
+  result.halfedges["face_halfedge"] = copy_array(cm_result_face_halfedge(r), nt, 1);
+  result.stats = stats_of(r);
+  return result;
+}
+
+Result triangulate(py::object polygons_in, py::kwargs kwargs)
+{
+  double tolerance = compatmesh::kDefaultPlanarityTolerance;
+  cm_options options;
+  cm_options_init(&options);
+  Callbacks callbacks;
+  for (auto item : kwargs) {
+    std::string name = item.first.cast<std::string>();
+    if (name == "planarity_tolerance") {
+      tolerance = number_from<double>(item.second, "planarity_tolerance");
+      continue;
+    }
+    const OptionSetter *setter = nullptr;
+    for (const OptionSetter &s : option_setters())
+      if (name == s.name) setter = &s;
+    if (!setter) throw py::type_error("triangulate() got an unexpected keyword argument '" + name + "'");
+    setter->set(options, item.second, callbacks);
+  }
+
+  std::vector<Polygon> polygons;
+  for (py::handle item : polygons_in) polygons.push_back(read_polygon(item, polygons.size(), tolerance));
+  std::vector<const double *> data;
+  std::vector<std::size_t> counts;
+  for (const Polygon &p : polygons) {
+    data.push_back(p.xy.data());
+    counts.push_back(p.size());
+  }
+
+  ProgressContext context{&callbacks.progress, nullptr};
+  if (callbacks.progress && !callbacks.progress.is_none()) {
+    options.progress = call_progress;
+    options.progress_user = &context;
+  }
+  cm_result *raw = nullptr;
+  cm_status status;
+  {
+    py::gil_scoped_release no_gil;
+    status = cm_triangulate_polygons(data.data(), counts.data(), polygons.size(), &options, &raw);
+  }
+  ResultPtr result(raw);
+  if (context.error) std::rethrow_exception(context.error);
+  if (status != CM_OK) raise_failure(raw, status);
+  return make_result(raw, polygons);
+}
+
+}  // namespace
+
+PYBIND11_MODULE(compatmesh, m)
+{
+  m.doc() = "Compatible triangulations of planar polygons whose vertices correspond by index\n"
+            "(Surazhsky & Gotsman, High Quality Compatible Triangulations).";
+  m.attr("__version__") = std::to_string(CM_VERSION_MAJOR) + "." + std::to_string(CM_VERSION_MINOR) +
+                          "." + std::to_string(CM_VERSION_PATCH);
+
+  py::enum_<cm_method>(m, "Method", "How the first compatible triangulation is built.")
+      .value("OVERLAY", CM_METHOD_OVERLAY)
+      .value("PARTITION", CM_METHOD_PARTITION);
+  py::enum_<cm_smoothing>(m, "Smoothing", "Vertex smoothing in the remesher.")
+      .value("LAPLACIAN", CM_SMOOTH_LAPLACIAN)
+      .value("ANGLE", CM_SMOOTH_ANGLE)
+      .value("WEIGHTED", CM_SMOOTH_WEIGHTED)
+      .value("COMBINED", CM_SMOOTH_COMBINED);
+
+  input_error_type = py::exception<InputErrorTag>(m, "InputError", PyExc_ValueError).inc_ref();
+  input_error_type.attr("__doc__") =
+      "The input polygons were rejected. str(e) is the core's message; e.status names the\n"
+      "reason, e.polygon, e.vertex and e.other_vertex locate it (-1 when not applicable).";
+  cancelled_type = py::exception<CancelledTag>(m, "Cancelled", PyExc_Exception).inc_ref();
+  cancelled_type.attr("__doc__") = "The progress callback asked to stop.";
+
+  py::class_<Result>(m, "Result", "A compatible triangulation: one connectivity, k geometries.")
+      .def_readonly("faces", &Result::faces, "m x 3 int32 array, counter-clockwise in every geometry")
+      .def_readonly("vertices", &Result::vertices,
+                    "list of k float arrays (n input vertices first, then Steiner vertices), "
+                    "each n x 2 or n x 3 like its input")
+      .def_readonly("halfedges", &Result::halfedges,
+                    "dict of int32 arrays: next, to_vertex, face (-1 on the boundary), "
+                    "vertex_halfedge, face_halfedge; h ^ 1 is the opposite of h")
+      .def_readonly("stats", &Result::stats,
+                    "dict: the fields of cm_stats (n, k, vertices, steiner, triangles, "
+                    "reversed_input, fallback_count, steiner_before_remesh, remesh_iterations, "
+                    "seconds_*), quality and quality_before_remesh (one dict per geometry)")
+      .def("__repr__", [](const Result &r) {
+        return "<compatmesh.Result: " + py::str(r.stats["k"]).cast<std::string>() + " geometries, " +
+               py::str(r.stats["vertices"]).cast<std::string>() + " vertices, " +
+               py::str(r.stats["triangles"]).cast<std::string>() + " triangles>";
+      });
+
+  m.def("triangulate", &triangulate, py::arg("polygons"),
+        R"doc(triangulate(polygons, **options) -> Result
+
+Compatibly triangulates k >= 2 simple polygons whose vertices correspond by
+index: one triangle list that is a valid triangulation of every polygon.
+
+polygons: a sequence of k arrays, each n x 2, or n x 3 for a polygon in any
+    plane of 3D (fitted by least squares and mapped to 2D and back; the
+    normal points to +x, +y or +z, whichever it is closest to, so the winding
+    is kept).
+options: keyword arguments named like the fields of the C struct cm_options,
+    defaults from cm_options_init (see compatmesh.h for their meaning):
+    method          compatmesh.Method, its int value, or "overlay" / "partition"
+    remesh          bool: improve the triangles (default True)
+    min_angle_deg   target smallest angle in degrees
+    max_steiner     most Steiner vertices the refinement may add (-1: automatic)
+    k_split, area_every, max_iterations   ints, see compatmesh.h
+    smoothing       compatmesh.Smoothing, its int value, or "laplacian" /
+                    "angle" / "weighted" / "combined"
+    progress        callable(fraction, stage); return True to cancel
+  and planarity_tolerance: how far a 3D point may lie from the plane, as a
+    fraction of the polygon's bounding-box diagonal (default 1e-5).
+Raises InputError (a ValueError) with the core's message for bad input,
+TypeError for an unknown keyword, Cancelled when progress asked to stop,
+RuntimeError if the construction failed its own check.)doc");
+}

@@ -1,0 +1,449 @@
+/* Algorithm 1 (compatible remeshing), preceded by a cleanup that removes
+ * the construction's surplus Steiner vertices and followed by a coarsening
+ * that removes those the result does not need:
+ *
+ *   collapse Steiner vertices wherever valid; flips + smoothing
+ *   while a triangle falls short of its target and the budget lasts:
+ *       split up to k_split edges (eq. 5), each followed by flips +
+ *       smoothing around it
+ *       every area_every rounds: area equalisation; flips + smoothing
+ *   flips + smoothing everywhere
+ *   collapse Steiner vertices where no angle drops below the target
+ *   flips + smoothing everywhere
+ *
+ * "flips + smoothing" alternates compatible flips with smart smoothing of
+ * each geometry until nothing improves, driven by work lists, so a split
+ * costs work near it only. Where the smoothing formulas are stuck beside a
+ * triangle short of its target, a small search for the best position
+ * takes over (cm_smooth_optimize).
+ *
+ * Each split (with its repair) and each area equalisation is a
+ * transaction: it is undone when the smallest angle of the triangles it
+ * changed went down, so refinement never makes the mesh worse; an edge
+ * whose split was undone twice is not tried again. Refinement stops at the
+ * target, the Steiner budget, the round cap, or when the smallest angle
+ * has stopped rising: what is left then is beyond local repair (typically
+ * a correspondence that forces a strong distortion somewhere). */
+#include <math.h>
+#include <stdlib.h>
+
+#include "remesh.h"
+
+/* Sweeps of flips + smoothing after one split; the polish sweeps over the
+ * whole mesh at the end. */
+#define CM_IMPROVE_SWEEPS 4
+#define CM_POLISH_SWEEPS 16
+/* Undone splits of one edge before it is given up. */
+#define CM_SPLIT_TRIES 2
+/* Boundary edge caps carry a margin: the isosceles estimate is what an
+ * ideal apex gets, the mesh around it rarely quite does. */
+#define CM_EDGE_CAP_MARGIN 0.9
+/* Refinement stops when the smallest angle has not risen by CM_PROGRESS
+ * (radians, about 0.06 degrees) over stall_limit() splits. */
+#define CM_PROGRESS 1e-3
+
+typedef struct tabu_set { /* vertex pairs -> undone splits */
+    uint64_t *keys;       /* 0: empty slot */
+    unsigned char *count;
+    size_t cap, used;
+} tabu_set;
+
+typedef struct remesher {
+    cm_kmesh km;
+    cm_work verts, edges;
+    cm_ibuf star, batch;
+    tabu_set tabu;
+    const cm_options *o;
+    double target; /* radians */
+    long flips;
+} remesher;
+
+/* ---- edges not to split again --------------------------------------------- */
+
+static uint64_t pair_key(int32_t a, int32_t b)
+{
+    uint64_t lo = (uint32_t)(a < b ? a : b), hi = (uint32_t)(a < b ? b : a);
+    return (hi << 32 | lo) + 1;
+}
+
+static size_t tabu_slot(const tabu_set *t, uint64_t key)
+{
+    size_t i = (size_t)((key * 0x9E3779B97F4A7C15ull) >> 17) & (t->cap - 1);
+    while (t->keys[i] && t->keys[i] != key) i = (i + 1) & (t->cap - 1);
+    return i;
+}
+
+static int tabu_count(const tabu_set *t, int32_t a, int32_t b)
+{
+    if (!t->cap) return 0;
+    size_t i = tabu_slot(t, pair_key(a, b));
+    return t->keys[i] ? t->count[i] : 0;
+}
+
+static int tabu_grow(tabu_set *t)
+{
+    size_t cap = t->cap ? 2 * t->cap : 256;
+    uint64_t *keys = calloc(cap, sizeof *keys);
+    unsigned char *count = calloc(cap, 1);
+    if (!keys || !count) {
+        free(keys), free(count);
+        return -1;
+    }
+    tabu_set bigger = {keys, count, cap, t->used};
+    for (size_t i = 0; i < t->cap; i++)
+        if (t->keys[i]) {
+            size_t j = tabu_slot(&bigger, t->keys[i]);
+            keys[j] = t->keys[i], count[j] = t->count[i];
+        }
+    free(t->keys), free(t->count);
+    *t = bigger;
+    return 0;
+}
+
+static int tabu_add(tabu_set *t, int32_t a, int32_t b, int times)
+{
+    if (2 * (t->used + 1) > t->cap && tabu_grow(t)) return -1;
+    uint64_t key = pair_key(a, b);
+    size_t i = tabu_slot(t, key);
+    if (!t->keys[i]) t->keys[i] = key, t->count[i] = 0, t->used++;
+    t->count[i] = (unsigned char)(t->count[i] + times > 200 ? 200 : t->count[i] + times);
+    return 0;
+}
+
+/* ---- flips and smoothing -------------------------------------------------- */
+
+/* Queues v's neighbours for smoothing and the edges around v for flips. */
+static int queue_around(remesher *x, int32_t v)
+{
+    cm_kmesh *km = &x->km;
+    long m = cm_kmesh_star(km, v, &x->star);
+    if (m < 0) return -1;
+    for (long i = 0; i < m; i++) {
+        int32_t c = x->star.a[i];
+        if (cm_work_push(&x->verts, km->tri[cm_next(c)]) || cm_work_push(&x->edges, c) ||
+            cm_work_push(&x->edges, cm_next(c)) || cm_work_push(&x->edges, cm_prev(c)))
+            return -1;
+    }
+    return cm_kmesh_is_boundary(km, v) ? 0 : cm_work_push(&x->verts, v);
+}
+
+/* Is a triangle around v among the furthest from its target, short of
+ * it by at least half the worst shortfall? (uses x->star) The position
+ * search is worth its cost there. */
+static int near_short(remesher *x, int32_t v)
+{
+    double gate = fmin(0.0, 0.5 * cm_kmesh_min_slack(&x->km));
+    long m = cm_kmesh_star(&x->km, v, &x->star);
+    for (long i = 0; i < m; i++)
+        if (x->km.slack[x->star.a[i] / 3] < gate) return 1;
+    return 0;
+}
+
+/* Smooths v in every geometry. Returns 1 if it moved, -1 out of memory. */
+static int smooth_one(remesher *x, int32_t v)
+{
+    cm_kmesh *km = &x->km;
+    int moved = 0;
+    for (size_t g = 0; g < km->k; g++) {
+        int s = cm_smooth_vertex(km, g, v, x->o->smoothing, 1, &x->star);
+        if (s == 0 && near_short(x, v)) s = cm_smooth_optimize(km, g, v, &x->star);
+        if (s < 0) return -1;
+        moved |= s;
+    }
+    return moved;
+}
+
+/* Smooths every queued vertex once; a vertex that moved queues its
+ * surroundings for the next sweep. Returns moves or -1. */
+static long smooth_queued(remesher *x)
+{
+    cm_kmesh *km = &x->km;
+    x->batch.n = 0;
+    for (int32_t v; (v = cm_work_pop(&x->verts)) >= 0;)
+        if (!cm_kmesh_is_boundary(km, v) && km->vc[v] >= 0 && cm_ibuf_push(&x->batch, v)) return -1;
+    long moves = 0;
+    for (size_t i = 0; i < x->batch.n; i++) {
+        int32_t v = x->batch.a[i];
+        int moved = smooth_one(x, v);
+        if (moved < 0 || (moved && queue_around(x, v))) return -1;
+        moves += moved;
+    }
+    return moves;
+}
+
+/* Flips and smoothing, alternated until neither changes anything or the
+ * sweeps run out: both only ever raise local smallest angles. */
+static int improve(remesher *x, int sweeps)
+{
+    for (int sweep = 0; sweep < sweeps; sweep++) {
+        long f = cm_flip_queue(&x->km, &x->edges, &x->verts);
+        if (f < 0) return -1;
+        x->flips += f;
+        long moves = smooth_queued(x);
+        if (moves < 0) return -1;
+        if (moves == 0 && x->edges.items.n == 0) break;
+    }
+    while (cm_work_pop(&x->verts) >= 0) {} /* past the last sweep: drop the rest */
+    while (cm_work_pop(&x->edges) >= 0) {}
+    return 0;
+}
+
+static int improve_everywhere(remesher *x)
+{
+    if (cm_flip_queue_all(&x->km, &x->edges)) return -1;
+    for (int32_t v = x->km.n; v < x->km.nv; v++)
+        if (x->km.vc[v] >= 0 && cm_work_push(&x->verts, v)) return -1;
+    return improve(x, CM_POLISH_SWEEPS);
+}
+
+/* Moves the touched vertices' surroundings into the work lists. */
+static int queue_touched(remesher *x, cm_work *touched)
+{
+    for (int32_t v; (v = cm_work_pop(touched)) >= 0;)
+        if (x->km.vc[v] >= 0 && queue_around(x, v)) return -1;
+    return 0;
+}
+
+/* ---- transactions ----------------------------------------------------------- */
+
+/* Keeps the open transaction if the smallest angle of the triangles it
+ * changed did not drop, else undoes it. Returns 1 kept, 0 undone, -1 out
+ * of memory. */
+static int settle(remesher *x)
+{
+    double before, after;
+    if (cm_kmesh_tx_region(&x->km, &before, &after)) {
+        cm_kmesh_tx_commit(&x->km);
+        return -1;
+    }
+    if (after >= before) {
+        cm_kmesh_tx_commit(&x->km);
+        return 1;
+    }
+    return cm_kmesh_tx_rollback(&x->km) ? -1 : 0;
+}
+
+static void forget_edge(cm_kmesh *km, int32_t c)
+{
+    cm_heap_remove(&km->eq, c < km->opp[c] ? c : km->opp[c]);
+}
+
+/* Splits the edge opposite c and repairs around the new vertex, as one
+ * transaction. Returns 1 kept, 0 undone or impossible, -1 out of memory. */
+static int try_split(remesher *x, int32_t c)
+{
+    cm_kmesh *km = &x->km;
+    int32_t a = km->tri[cm_next(c)], b = km->tri[cm_prev(c)];
+    if (cm_kmesh_tx_begin(km)) return -1;
+    int32_t m = cm_refine_split(km, c);
+    if (m == -1) return cm_kmesh_tx_commit(km), -1;
+    if (m == -2) { /* the midpoint does not fit in some geometry */
+        cm_kmesh_tx_commit(km);
+        forget_edge(km, c);
+        return tabu_add(&x->tabu, a, b, CM_SPLIT_TRIES) ? -1 : 0;
+    }
+    if (queue_around(x, m) || improve(x, CM_IMPROVE_SWEEPS)) return cm_kmesh_tx_commit(km), -1;
+    int kept = settle(x);
+    if (kept != 0) return kept;
+    forget_edge(km, c); /* restored: c is that edge again */
+    return tabu_add(&x->tabu, a, b, 1) ? -1 : 0;
+}
+
+/* One area equalisation sweep and its repair, as a transaction. */
+static int try_area_equalisation(remesher *x)
+{
+    cm_work touched = {0};
+    int s = cm_kmesh_tx_begin(&x->km) ? -1 : 0;
+    if (s == 0 && (cm_areaeq_sweep(&x->km, &touched) < 0 || queue_touched(x, &touched) ||
+                   improve(x, CM_IMPROVE_SWEEPS)))
+        s = -1;
+    cm_work_free(&touched);
+    if (s < 0) {
+        cm_kmesh_tx_commit(&x->km);
+        return -1;
+    }
+    return settle(x) < 0 ? -1 : 0;
+}
+
+/* ---- the refinement loop ---------------------------------------------------- */
+
+static int cancelled(const cm_options *o, double fraction)
+{
+    return o->progress && o->progress(o->progress_user, fraction, "remesh") != 0;
+}
+
+/* Marks the quad around the edge opposite c; 0 if a vertex was taken. */
+static int take_quad(cm_kmesh *km, int32_t c, uint32_t stamp)
+{
+    int32_t q[4] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)], km->tri[km->opp[c]]};
+    for (int i = 0; i < 4; i++)
+        if (km->mark[q[i]] == stamp) return 0;
+    for (int i = 0; i < 4; i++) km->mark[q[i]] = stamp;
+    return 1;
+}
+
+/* Is the edge opposite c still a candidate worth a try? */
+static int worth_trying(remesher *x, int32_t c)
+{
+    cm_kmesh *km = &x->km;
+    if (km->tri[c] < 0 || km->opp[c] < 0) return 0;
+    int32_t rep = c < km->opp[c] ? c : km->opp[c];
+    if (!cm_heap_contains(&km->eq, rep)) return 0;
+    if (tabu_count(&x->tabu, km->tri[cm_next(c)], km->tri[cm_prev(c)]) < CM_SPLIT_TRIES) return 1;
+    cm_heap_remove(&km->eq, rep);
+    return 0;
+}
+
+static long budget_of(const cm_options *o, size_t n)
+{
+    return o->max_steiner >= 0 ? o->max_steiner : 2 * (long)n + 100;
+}
+
+static long stall_limit(const remesher *x)
+{
+    return 30 + x->km.n / 4;
+}
+
+/* Splits per round: the option, or about 1 % of the triangles. */
+static long round_size(const remesher *x)
+{
+    return x->o->k_split > 0 ? x->o->k_split : (long)fmax(1, x->km.live_t / 100);
+}
+
+/* One round: up to ks splits among the best candidates, no two sharing a
+ * vertex. Returns the splits kept, -1 out of memory. *tried counts the
+ * attempts. */
+static long split_round(remesher *x, long ks, int32_t *cand, long want, long *tried)
+{
+    cm_kmesh *km = &x->km;
+    long nc = cm_refine_candidates(km, want, cand), kept = 0;
+    uint32_t stamp = cm_kmesh_new_stamp(km);
+    for (long i = 0; i < nc && kept < ks; i++) {
+        int32_t c = cand[i];
+        if (!worth_trying(x, c) || !take_quad(km, c, stamp)) continue;
+        int s = try_split(x, c);
+        if (s < 0) return -1;
+        kept += s, ++*tried;
+    }
+    return nc == 0 ? -2 : kept;
+}
+
+/* Returns 0, -1 out of memory, -2 cancelled. */
+static int refine(remesher *x, size_t n, cm_remesh_report *rep)
+{
+    cm_kmesh *km = &x->km;
+    long budget = budget_of(x->o, n), added = 0, attempts = 0, since_best = 0;
+    double best = cm_kmesh_min_angle(km), last_report = cm_seconds_now();
+    int32_t *cand = NULL;
+    while (cm_kmesh_min_slack(km) < 0 && added < budget && since_best < stall_limit(x) &&
+           attempts < 4 * budget + 100 &&
+           (x->o->max_iterations <= 0 || rep->iterations < (size_t)x->o->max_iterations)) {
+        long ks = round_size(x), want = 4 * ks + 8;
+        if (ks > budget - added) ks = budget - added;
+        int32_t *more = realloc(cand, (size_t)want * 3 * sizeof *cand);
+        if (!more) goto oom;
+        cand = more;
+        long kept = split_round(x, ks, cand, want, &attempts);
+        if (kept == -1) goto oom;
+        if (kept == -2) break; /* no candidates left */
+        added += kept, rep->splits += kept, rep->iterations++;
+        double now = cm_kmesh_min_angle(km);
+        if (now > best + CM_PROGRESS) best = now, since_best = 0;
+        else since_best += kept > 0 ? kept : 1;
+        if (x->o->area_every > 0 && rep->iterations % (size_t)x->o->area_every == 0 &&
+            try_area_equalisation(x))
+            goto oom;
+        if (cm_seconds_now() - last_report > 0.2) {
+            last_report = cm_seconds_now();
+            double done = fmin(1.0, fmax(1 + cm_kmesh_min_slack(km) / x->target, (double)added / budget));
+            if (cancelled(x->o, 0.4 + 0.4 * done)) {
+                free(cand);
+                return -2;
+            }
+        }
+    }
+    rep->split_attempts = attempts;
+    free(cand);
+    return 0;
+oom:
+    free(cand);
+    return -1;
+}
+
+/* ---- cleanup and coarsening ------------------------------------------------- */
+
+/* Removes Steiner vertices with collapses that pass `threshold`, then
+ * repairs around them. Returns collapses or -1. */
+static long coarsen(remesher *x, double threshold)
+{
+    cm_work touched = {0};
+    long total = 0;
+    for (int pass = 0; pass < 4; pass++) {
+        long c = cm_collapse_pass(&x->km, threshold, -1, &touched);
+        if (c < 0 || queue_touched(x, &touched) || improve(x, CM_IMPROVE_SWEEPS)) {
+            cm_work_free(&touched);
+            return -1;
+        }
+        total += c;
+        if (c == 0) break;
+    }
+    cm_work_free(&touched);
+    return total;
+}
+
+static int set_caps(remesher *x, const cm_mesh *mesh, size_t n, cm_remesh_report *rep)
+{
+    double *bcap = malloc(2 * n * sizeof *bcap), *vcap = bcap + n;
+    if (!bcap) return -1;
+    cm_boundary_caps(mesh, n, bcap, vcap);
+    double lo = x->target;
+    for (size_t i = 0; i < n; i++) {
+        bcap[i] *= CM_EDGE_CAP_MARGIN;
+        lo = fmin(lo, fmin(bcap[i], vcap[i]));
+    }
+    cm_kmesh_set_caps(&x->km, x->target, bcap, vcap);
+    rep->target_deg = lo * 180.0 / CM_PI;
+    free(bcap);
+    return 0;
+}
+
+static void remesher_free(remesher *x)
+{
+    cm_kmesh_free(&x->km);
+    cm_work_free(&x->verts), cm_work_free(&x->edges);
+    cm_ibuf_free(&x->star), cm_ibuf_free(&x->batch);
+    free(x->tabu.keys), free(x->tabu.count);
+}
+
+cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, cm_remesh_report *rep,
+                    cm_result *r)
+{
+    remesher x = {0};
+    x.o = o;
+    x.target = o->min_angle_deg * CM_PI / 180.0;
+    cm_status s = cm_kmesh_build(&x.km, mesh, n);
+    if (s == CM_ERR_INTERNAL) return cm_fail(r, s, "remesh: the construction is not a triangulated disk");
+    if (s != CM_OK) return cm_fail(r, s, "out of memory");
+    long removed = set_caps(&x, mesh, n, rep) ? -1 : coarsen(&x, 0.0);
+    if (removed < 0 || improve_everywhere(&x)) goto oom;
+    rep->collapses += removed;
+    if (cancelled(o, 0.45)) goto cancel;
+    int rs = refine(&x, n, rep);
+    if (rs == -1) goto oom;
+    if (rs == -2) goto cancel;
+    if (improve_everywhere(&x)) goto oom;
+    long late = coarsen(&x, x.target);
+    if (late < 0 || improve_everywhere(&x)) goto oom;
+    rep->collapses += late;
+    rep->flips = x.flips;
+    rep->min_angle_deg = cm_kmesh_min_angle(&x.km) * 180.0 / CM_PI;
+    s = cm_kmesh_write(&x.km, mesh);
+    remesher_free(&x);
+    return s == CM_OK ? CM_OK : cm_fail(r, s, "out of memory");
+oom:
+    remesher_free(&x);
+    return cm_fail(r, CM_ERR_NO_MEMORY, "out of memory");
+cancel:
+    remesher_free(&x);
+    return cm_fail(r, CM_ERR_CANCELLED, "cancelled");
+}

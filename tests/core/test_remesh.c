@@ -1,0 +1,542 @@
+/* Compatible remeshing: every local operation keeps every geometry valid
+ * (a property test over random meshes), the smoothing variants on fixed
+ * meshes, transactions restore exactly, and Algorithm 1 reaches stated
+ * angle and Steiner bounds on fixtures. Every fixture states what it
+ * expects, so a quality regression fails here. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "compatmesh/compatmesh.h"
+#include "kmesh.h"
+#include "predicates.h"
+#include "random_mesh.h"
+#include "random_polygons.h"
+#include "remesh.h"
+
+#define DEG (180.0 / CM_PI)
+
+/* ---- helpers ------------------------------------------------------------ */
+
+static double *polygon(size_t n) { return calloc(2 * n, sizeof(double)); }
+
+/* The result's mesh as a cm_mesh (counter-clockwise input: same order). */
+static int mesh_from_result(const cm_result *r, cm_mesh *m)
+{
+    size_t k = cm_result_num_geometries(r), nv = cm_result_num_vertices(r);
+    size_t nt = cm_result_num_triangles(r);
+    m->k = k, m->nv = nv, m->nt = nt;
+    m->xy = calloc(k, sizeof *m->xy);
+    m->tri = malloc(3 * nt * sizeof *m->tri);
+    if (!m->xy || !m->tri) return -1;
+    memcpy(m->tri, cm_result_triangles(r), 3 * nt * sizeof *m->tri);
+    for (size_t g = 0; g < k; g++) {
+        if (!(m->xy[g] = malloc(2 * nv * sizeof *m->xy[g]))) return -1;
+        memcpy(m->xy[g], cm_result_vertices(r, g), 2 * nv * sizeof *m->xy[g]);
+    }
+    return 0;
+}
+
+/* The construction alone, as a cm_mesh. */
+static int construct(const double *const *in, size_t k, size_t n, cm_mesh *m)
+{
+    cm_options o;
+    cm_options_init(&o);
+    o.remesh = 0;
+    cm_result *r = NULL;
+    size_t counts[3] = {n, n, n};
+    int ok = cm_triangulate_polygons(in, counts, k, &o, &r) == CM_OK && mesh_from_result(r, m) == 0;
+    cm_result_free(r);
+    return ok ? 0 : -1;
+}
+
+/* The cached keys and candidate heaps agree with the geometry. */
+static int keys_fresh(const cm_kmesh *km)
+{
+    for (int32_t t = 0; t < km->nt; t++) {
+        if (!cm_kmesh_tri_live(km, t)) {
+            if (cm_heap_contains(&km->tq, t)) return 0;
+            continue;
+        }
+        double key = CM_PI;
+        for (size_t g = 0; g < km->k; g++) key = fmin(key, cm_kmesh_tri_angle(km, g, t));
+        if (key != km->tkey[t] || !cm_heap_contains(&km->tq, t)) return 0;
+        for (int32_t c = 3 * t; c < 3 * t + 3; c++) {
+            int32_t o = km->opp[c];
+            if (o < 0 || o < c) continue;
+            int want = km->slack[t] < 0 || km->slack[o / 3] < 0;
+            if (want != cm_heap_contains(&km->eq, c) || cm_heap_contains(&km->eq, o)) return 0;
+        }
+    }
+    return 1;
+}
+
+static int boundary_intact(const cm_kmesh *km, const double *const *in)
+{
+    for (size_t g = 0; g < km->k; g++)
+        if (memcmp(km->xy[g], in[g], 2 * (size_t)km->n * sizeof(double)) != 0) return 0;
+    return 1;
+}
+
+static int same_mesh(const cm_mesh *a, const cm_mesh *b)
+{
+    if (a->nv != b->nv || a->nt != b->nt || memcmp(a->tri, b->tri, 3 * a->nt * sizeof *a->tri)) return 0;
+    for (size_t g = 0; g < a->k; g++)
+        if (memcmp(a->xy[g], b->xy[g], 2 * a->nv * sizeof(double))) return 0;
+    return 1;
+}
+
+static void random_pair(int seed, int n, double *a, double *b)
+{
+    switch (seed % 4) {
+    case 0: rp_star(a, n, (uint64_t)seed), rp_star(b, n, (uint64_t)seed + 1000); break;
+    case 1: rp_random_simple(a, n, (uint64_t)seed), rp_disc(b, n); break;
+    case 2: rp_star(a, n, (uint64_t)seed), memcpy(b, a, 2 * (size_t)n * sizeof *b), rp_twist(b, n, n / 3); break;
+    default: rp_random_simple(a, n, (uint64_t)seed), rp_random_simple(b, n, (uint64_t)seed + 77); break;
+    }
+}
+
+/* ---- the property test ------------------------------------------------------ */
+
+/* One random operation; returns 0, -1 out of memory. */
+static int random_operation(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *work)
+{
+    int32_t c = (int32_t)rp_below(rng, 3 * (uint64_t)km->nt);
+    int32_t v = (int32_t)rp_below(rng, (uint64_t)km->nv);
+    size_t g = (size_t)rp_below(rng, km->k);
+    if (km->tri[c] < 0) return 0;
+    switch (rp_below(rng, 9)) {
+    case 0: cm_flip_try(km, c); return 0;
+    case 1: cm_flip_if_valid(km, c); return 0;
+    case 2: return cm_smooth_vertex(km, g, v, (cm_smoothing)rp_below(rng, 4), (int)rp_below(rng, 2), star) < 0 ? -1 : 0;
+    case 3: return cm_smooth_optimize(km, g, v, star) < 0 ? -1 : 0;
+    case 4: return cm_areaeq_vertex(km, g, v, star) < 0 ? -1 : 0;
+    case 5: return cm_refine_step(km, 1 + (long)rp_below(rng, 4), work) < 0 ? -1 : 0;
+    case 6: return cm_collapse_try(km, c, star) < 0 ? -1 : 0;
+    case 7: return cm_collapse_pass(km, rp_below(rng, 2) ? 0.0 : CM_PI, 2, work) < 0 ? -1 : 0;
+    default: return cm_kmesh_star(km, km->vc[v] >= 0 ? v : 0, star) == -1 ? -1 : 0;
+    }
+}
+
+/* After begin, random operations, rollback: the mesh must be as before. */
+static int rollback_restores(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *work)
+{
+    cm_mesh before = {km->k, 0, 0, calloc(km->k, sizeof(double *)), NULL};
+    cm_mesh after = {km->k, 0, 0, calloc(km->k, sizeof(double *)), NULL};
+    int ok = before.xy && after.xy && cm_kmesh_write(km, &before) == CM_OK && cm_kmesh_tx_begin(km) == 0;
+    for (int i = 0; ok && i < 8; i++) ok = random_operation(km, rng, star, work) == 0;
+    ok = ok && cm_kmesh_tx_rollback(km) == 0 && cm_kmesh_write(km, &after) == CM_OK;
+    ok = ok && same_mesh(&before, &after) && keys_fresh(km);
+    cm_mesh_clear(&before), cm_mesh_clear(&after);
+    return ok;
+}
+
+static void test_property_operations(int pairs, int operations)
+{
+    int invalid = 0, stale = 0, moved = 0, restore = 0, built = 0;
+    for (int seed = 0; seed < pairs; seed++) {
+        int n = 8 + seed % 30;
+        double *a = polygon((size_t)n), *b = polygon((size_t)n);
+        random_pair(seed, n, a, b);
+        const double *in[2] = {a, b};
+        cm_mesh m = {0};
+        cm_kmesh km;
+        if (construct(in, 2, (size_t)n, &m) || cm_kmesh_build(&km, &m, (size_t)n) != CM_OK) {
+            cm_mesh_clear(&m), free(a), free(b);
+            continue;
+        }
+        built++;
+        cm_kmesh_set_caps(&km, 25 / DEG, NULL, NULL);
+        rp_rng rng = {(uint64_t)seed * 7919};
+        cm_ibuf star = {0};
+        cm_work work = {0};
+        for (int i = 0; i < operations; i++) {
+            if (random_operation(&km, &rng, &star, &work)) break;
+            while (cm_work_pop(&work) >= 0) {}
+            invalid += !cm_kmesh_check(&km);
+            moved += !boundary_intact(&km, in);
+            if (i % 16 == 0) stale += !keys_fresh(&km);
+            if (i % 64 == 0) restore += !rollback_restores(&km, &rng, &star, &work);
+        }
+        cm_ibuf_free(&star), cm_work_free(&work);
+        cm_kmesh_free(&km), cm_mesh_clear(&m);
+        free(a), free(b);
+    }
+    CHECK_MSG(built == pairs, "%d of %d constructions", built, pairs);
+    CHECK_MSG(invalid == 0, "%d operations left an invalid mesh", invalid);
+    CHECK_MSG(moved == 0, "%d operations moved a boundary vertex", moved);
+    CHECK_MSG(stale == 0, "%d stale key checks", stale);
+    CHECK_MSG(restore == 0, "%d rollbacks did not restore", restore);
+    printf("property: %d random meshes x %d operations\n", pairs, operations);
+}
+
+/* ---- smoothing and area equalisation ----------------------------------------- */
+
+/* A polygon with random interior vertices, as in the paper's Fig. 7(e). */
+static int fixture_mesh(int convex, cm_kmesh *km)
+{
+    size_t n = 40;
+    double *poly = polygon(n);
+    int s = convex ? rp_disc(poly, (int)n) : rp_star(poly, (int)n, 5);
+    cm_mesh m = {0};
+    s = s || rm_build(poly, n, 150, 42, 2, &m) || cm_kmesh_build(km, &m, n) != CM_OK;
+    cm_mesh_clear(&m);
+    free(poly);
+    return s ? -1 : 0;
+}
+
+static const char *method_name[] = {"Laplacian", "angle-based", "weighted angle-based", "combined"};
+
+static void test_smoothing_variants(void)
+{
+    for (int convex = 1; convex >= 0; convex--)
+        for (int method = 0; method < 4; method++)
+            for (int smart = 0; smart <= 1; smart++) {
+                cm_kmesh km;
+                if (fixture_mesh(convex, &km)) {
+                    CHECK_MSG(0, "fixture mesh");
+                    continue;
+                }
+                double start = cm_kmesh_min_angle(&km), last = start;
+                int monotone = 1, valid = 1;
+                for (int sweep = 0; sweep < 20; sweep++) {
+                    CHECK(cm_smooth_sweep(&km, (cm_smoothing)method, smart) >= 0);
+                    double now = cm_kmesh_min_angle(&km);
+                    monotone &= now >= last;
+                    valid &= cm_kmesh_check(&km);
+                    last = now;
+                }
+                CHECK_MSG(valid, "%s %s: invalid", smart ? "smart" : "plain", method_name[method]);
+                /* Smart variants never decrease the smallest angle; on the
+                 * convex fixture every variant improves it. */
+                if (smart) CHECK_MSG(monotone, "smart %s decreased the smallest angle", method_name[method]);
+                if (convex || smart)
+                    CHECK_MSG(last >= start, "%s %s: %.2f -> %.2f", smart ? "smart" : "plain",
+                              method_name[method], start * DEG, last * DEG);
+                printf("%-10s %-6s %-21s min angle %5.2f -> %5.2f\n", convex ? "disc" : "star",
+                       smart ? "smart" : "plain", method_name[method], start * DEG, last * DEG);
+                cm_kmesh_free(&km);
+            }
+}
+
+static double area_spread(const cm_kmesh *km, size_t g)
+{
+    double sum = 0, sum2 = 0;
+    long count = 0;
+    for (int32_t t = 0; t < km->nt; t++) {
+        if (!cm_kmesh_tri_live(km, t)) continue;
+        const int32_t *v = km->tri + 3 * t;
+        double a = rm_area2(cm_kmesh_pos(km, g, v[0]), cm_kmesh_pos(km, g, v[1]), cm_kmesh_pos(km, g, v[2]));
+        sum += a, sum2 += a * a, count++;
+    }
+    double mean = sum / (double)count;
+    return sqrt(fmax(0, sum2 / (double)count - mean * mean)) / mean;
+}
+
+static void test_area_equalisation(void)
+{
+    cm_kmesh km;
+    if (fixture_mesh(0, &km)) {
+        CHECK_MSG(0, "fixture mesh");
+        return;
+    }
+    double before = area_spread(&km, 0);
+    int valid = 1;
+    for (int i = 0; i < 10; i++) {
+        CHECK(cm_areaeq_sweep(&km, NULL) >= 0);
+        valid &= cm_kmesh_check(&km);
+    }
+    double after = area_spread(&km, 0);
+    CHECK_MSG(valid, "area equalisation left an invalid mesh");
+    CHECK_MSG(after < 0.8 * before, "area spread %.3f -> %.3f", before, after);
+    printf("area equalisation: relative spread of triangle areas %.3f -> %.3f\n", before, after);
+    cm_kmesh_free(&km);
+}
+
+static void test_refine_keeps_boundary(void)
+{
+    size_t n = 30;
+    double *a = polygon(n), *b = polygon(n);
+    rp_star(a, (int)n, 3), rp_star(b, (int)n, 4);
+    const double *in[2] = {a, b};
+    cm_mesh m = {0};
+    cm_kmesh km;
+    if (construct(in, 2, n, &m) || cm_kmesh_build(&km, &m, n) != CM_OK) {
+        CHECK_MSG(0, "construction");
+        cm_mesh_clear(&m), free(a), free(b);
+        return;
+    }
+    cm_kmesh_set_caps(&km, 59 / DEG, NULL, NULL); /* everything is a candidate */
+    cm_work touched = {0};
+    long total = 0;
+    for (int round = 0; round < 20; round++) {
+        long s = cm_refine_step(&km, 5, &touched);
+        CHECK(s >= 0);
+        total += s;
+    }
+    /* cm_kmesh_check also checks the boundary edges are exactly i -> i+1 */
+    CHECK(cm_kmesh_check(&km) && boundary_intact(&km, in) && keys_fresh(&km));
+    CHECK_MSG(total > 50 && km.live_v == (int32_t)m.nv + total, "%ld splits", total);
+    cm_work_free(&touched), cm_kmesh_free(&km), cm_mesh_clear(&m);
+    free(a), free(b);
+}
+
+/* ---- Algorithm 1 on fixtures ---------------------------------------------------- */
+
+/* DejaVu Sans "U" and "S" outlines resampled to 40 points (bench/gen_pairs),
+ * the S re-indexed so the strokes' ends correspond (the paper's Fig. 8). */
+static const double glyph_u[80] = {
+    0.1481542587, 0.06862878799, 0.2249205112, 0.01191866398, 0.3178288341, -0.01171135902,
+    0.4139226079, -0.01176172495, 0.5068225265, 0.01187700033, 0.5834668279, 0.06876212358,
+    0.6286566257, 0.1530073285, 0.6443853378, 0.2477124929, 0.6450195312, 0.3439624906,
+    0.6450195312, 0.4402228594, 0.6450195312, 0.5364832282, 0.6450195312, 0.6327435374,
+    0.6450195312, 0.7290039062, 0.5954589844, 0.7290039062, 0.5458984375, 0.7290039062,
+    0.5458984375, 0.638181746, 0.5458984375, 0.5473595858, 0.5458984375, 0.4565374255,
+    0.5458984375, 0.3657152653, 0.5457929373, 0.2748937607, 0.5351647139, 0.1848937869,
+    0.4928273559, 0.1059654355, 0.4112155437, 0.06927990913, 0.3207430243, 0.06931966543,
+    0.2391095161, 0.1059686542, 0.1967688799, 0.1848937869, 0.1861406565, 0.2748937607,
+    0.1860351562, 0.3657152653, 0.1860351562, 0.4565374255, 0.1860351562, 0.5473595858,
+    0.1860351562, 0.638181746, 0.1860351562, 0.7290039062, 0.1364746094, 0.7290039062,
+    0.0869140625, 0.7290039062, 0.0869140625, 0.6327435374, 0.0869140625, 0.5364832282,
+    0.0869140625, 0.4402228594, 0.0869140625, 0.3439624906, 0.08754390478, 0.2477123141,
+    0.1031703949, 0.1529870033,
+};
+static const double glyph_s[80] = {
+    0.5787082911, 0.2161140442, 0.5546479225, 0.3054177165, 0.4902101159, 0.3715337515,
+    0.4045072198, 0.407595098, 0.3133260608, 0.4273289442, 0.2234179378, 0.4516196847,
+    0.1667770743, 0.5198052526, 0.1855356693, 0.6086692214, 0.264395237, 0.654974103,
+    0.3571612239, 0.6612282395, 0.4485359788, 0.6433608532, 0.53515625, 0.6088867188,
+    0.53515625, 0.6569824219, 0.53515625, 0.705078125, 0.4455113411, 0.72926718,
+    0.3534716964, 0.7413079739, 0.2607685328, 0.7381004095, 0.1722177863, 0.7114021182,
+    0.101424098, 0.6525586843, 0.06803101301, 0.5669199228, 0.07338601351, 0.4747544527,
+    0.1223192215, 0.3974818587, 0.2037768364, 0.3538687825, 0.2937985063, 0.3312738538,
+    0.3841862679, 0.3101732731, 0.4592226148, 0.258446455, 0.473949492, 0.1687481403,
+    0.4231504202, 0.09438425303, 0.3350829482, 0.06753313541, 0.2424556613, 0.07037836313,
+    0.1528631449, 0.09433573484, 0.06884765625, 0.1337890625, 0.06884765625, 0.0830078125,
+    0.06884765625, 0.0322265625, 0.1579453349, 0.004658639431, 0.2497505546, -0.01157879829,
+    0.3429397345, -0.01268815994, 0.4346039295, 0.003600776196, 0.5162452459, 0.04740804434,
+    0.5674923658, 0.1240240932,
+};
+
+static void fill_us(double *u, double *s)
+{
+    memcpy(u, glyph_u, sizeof glyph_u);
+    memcpy(s, glyph_s, sizeof glyph_s);
+}
+
+typedef struct fixture {
+    const char *name;
+    size_t n;
+    double *xy[2];
+    double min_angle_deg; /* promised in both geometries */
+    size_t max_steiner;
+} fixture;
+
+static int result_contract(const cm_result *r, const double *const *in, size_t n)
+{
+    size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
+    const int32_t *tri = cm_result_triangles(r);
+    if (cm_result_status(r) != CM_OK || !tri || nv < n || nt != n + 2 * (nv - n) - 2) return 0;
+    for (size_t g = 0; g < 2; g++) {
+        const double *xy = cm_result_vertices(r, g);
+        if (memcmp(xy, in[g], 2 * n * sizeof *xy) != 0) return 0;
+        for (size_t t = 0; t < nt; t++)
+            if (cm_orient2d(xy + 2 * tri[3 * t], xy + 2 * tri[3 * t + 1], xy + 2 * tri[3 * t + 2]) <= 0) return 0;
+    }
+    return 1;
+}
+
+/* Smallest interior corner angle of the two polygons, degrees. */
+static double smallest_corner(const double *const *in, size_t n)
+{
+    double lo = 360;
+    for (size_t g = 0; g < 2; g++)
+        for (size_t i = 0; i < n; i++) {
+            const double *a = in[g] + 2 * ((i + n - 1) % n), *b = in[g] + 2 * i, *c = in[g] + 2 * ((i + 1) % n);
+            double t = atan2((c[0] - b[0]) * (a[1] - b[1]) - (c[1] - b[1]) * (a[0] - b[0]),
+                             (c[0] - b[0]) * (a[0] - b[0]) + (c[1] - b[1]) * (a[1] - b[1]));
+            lo = fmin(lo, (t < 0 ? t + 2 * CM_PI : t) * DEG);
+        }
+    return lo;
+}
+
+static void run_fixture(const fixture *f)
+{
+    const double *in[2] = {f->xy[0], f->xy[1]};
+    cm_result *r = NULL;
+    cm_status s = cm_triangulate_polygons(in, (size_t[]){f->n, f->n}, 2, NULL, &r);
+    CHECK_MSG(s == CM_OK, "%s: %s", f->name, cm_result_message(r));
+    if (s != CM_OK) {
+        cm_result_free(r);
+        return;
+    }
+    CHECK_MSG(result_contract(r, in, f->n), "%s: output contract", f->name);
+    cm_quality q[2], q0[2];
+    for (size_t g = 0; g < 2; g++) {
+        cm_result_quality(r, g, &q[g]);
+        CHECK(cm_result_quality_before(r, g, &q0[g]) == CM_OK);
+        CHECK_MSG(q[g].min_angle_deg >= f->min_angle_deg, "%s: geometry %zu min angle %.2f < %.2f",
+                  f->name, g, q[g].min_angle_deg, f->min_angle_deg);
+    }
+    const cm_stats *st = cm_result_stats(r);
+    CHECK_MSG(st->steiner <= f->max_steiner, "%s: %zu Steiner > %zu", f->name, st->steiner, f->max_steiner);
+    printf("%-26s n=%-3zu corner %5.1f  min angle %5.2f %5.2f (before %5.2f %5.2f)  Steiner %zu "
+           "(before %zu)\n", f->name, f->n, smallest_corner(in, f->n), q[0].min_angle_deg,
+           q[1].min_angle_deg, q0[0].min_angle_deg, q0[1].min_angle_deg, st->steiner,
+           st->steiner_before_remesh);
+    cm_result_free(r);
+}
+
+/* The polygon against an affine image of it. */
+static void affine_copy(const double *a, double *b, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        b[2 * i] = 1.5 * a[2 * i] + 0.4 * a[2 * i + 1] + 3, b[2 * i + 1] = -0.2 * a[2 * i] + 0.8 * a[2 * i + 1];
+}
+
+static void test_algorithm1_fixtures(void)
+{
+    size_t n = 40;
+    fixture f = {"U / S glyphs", n, {polygon(n), polygon(n)}, 0, 0};
+
+    fill_us(f.xy[0], f.xy[1]);
+    f.min_angle_deg = 19.0, f.max_steiner = 30; /* the paper: 17.1 and 17.6 with 7 */
+    run_fixture(&f);
+
+    f.name = "star vs its affine image";
+    rp_star(f.xy[0], (int)n, 9), affine_copy(f.xy[0], f.xy[1], n);
+    f.min_angle_deg = 10.5, f.max_steiner = 40; /* corner 11.9: c / 2 = 6 */
+    run_fixture(&f);
+
+    f.name = "comb vs its affine image";
+    rp_comb(f.xy[0], (int)n, 4), affine_copy(f.xy[0], f.xy[1], n);
+    f.min_angle_deg = 10.0, f.max_steiner = 50;
+    run_fixture(&f);
+
+    f.name = "spiral vs its affine image";
+    rp_spiral(f.xy[0], (int)n, 1.5), affine_copy(f.xy[0], f.xy[1], n);
+    f.min_angle_deg = 16.5, f.max_steiner = 20;
+    run_fixture(&f);
+
+    n = 16, f.n = n;
+    f.name = "star pair n=16";
+    rp_star(f.xy[0], (int)n, 32), rp_star(f.xy[1], (int)n, 33);
+    f.min_angle_deg = 15.0, f.max_steiner = 60;
+    run_fixture(&f);
+
+    f.name = "twisted star n=16";
+    rp_star(f.xy[0], (int)n, 1016), memcpy(f.xy[1], f.xy[0], 2 * n * sizeof(double));
+    rp_twist(f.xy[1], (int)n, 5);
+    f.min_angle_deg = 20.0, f.max_steiner = 45;
+    run_fixture(&f);
+    free(f.xy[0]), free(f.xy[1]);
+}
+
+/* ---- options and the result ------------------------------------------------------ */
+
+static void test_options(void)
+{
+    size_t n = 20;
+    double *a = polygon(n), *b = polygon(n);
+    rp_star(a, (int)n, 1), rp_star(b, (int)n, 2);
+    const double *in[2] = {a, b};
+    struct { const char *what; void (*set)(cm_options *); } bad[] = {
+        {"k_split", NULL}, {"min_angle_deg", NULL}, {"min_angle_deg", NULL}, {"max_steiner", NULL},
+        {"area_every", NULL}, {"max_iterations", NULL}, {"smoothing", NULL}};
+    for (int i = 0; i < 7; i++) {
+        cm_options o;
+        cm_options_init(&o);
+        switch (i) {
+        case 0: o.k_split = -1; break;
+        case 1: o.min_angle_deg = 0; break;
+        case 2: o.min_angle_deg = 60; break;
+        case 3: o.max_steiner = -2; break;
+        case 4: o.area_every = -3; break;
+        case 5: o.max_iterations = -1; break;
+        default: o.smoothing = (cm_smoothing)9; break;
+        }
+        cm_result *r = NULL;
+        cm_status s = cm_triangulate_polygons(in, (size_t[]){n, n}, 2, &o, &r);
+        CHECK_MSG(s == CM_ERR_ARGUMENT && strstr(cm_result_message(r), bad[i].what),
+                  "bad %s: status %d, message \"%s\"", bad[i].what, (int)s, cm_result_message(r));
+        cm_result_free(r);
+    }
+
+    cm_options o;
+    cm_options_init(&o);
+    CHECK(o.remesh == 1 && o.min_angle_deg == 25 && o.max_steiner == -1 && o.k_split == 0 &&
+          o.area_every == 0 && o.smoothing == CM_SMOOTH_COMBINED && o.max_iterations == 0);
+
+    /* remesh off: the construction itself, quality before == after */
+    o.remesh = 0;
+    cm_result *r = NULL;
+    CHECK(cm_triangulate_polygons(in, (size_t[]){n, n}, 2, &o, &r) == CM_OK);
+    const cm_stats *st = cm_result_stats(r);
+    cm_quality q, q0;
+    CHECK(cm_result_quality(r, 0, &q) == CM_OK && cm_result_quality_before(r, 0, &q0) == CM_OK);
+    CHECK(st->steiner == st->steiner_before_remesh && st->remesh_iterations == 0 &&
+          q.min_angle_deg == q0.min_angle_deg);
+    CHECK(cm_result_quality_before(r, 2, &q0) == CM_ERR_ARGUMENT);
+    cm_result_free(r);
+
+    /* every smoothing scheme, area equalisation, fixed k_split, budget 0 */
+    for (int i = 0; i < 4; i++) {
+        cm_options_init(&o);
+        o.smoothing = (cm_smoothing)i, o.area_every = i, o.k_split = 1 + i;
+        if (i == 3) o.max_steiner = 0;
+        CHECK(cm_triangulate_polygons(in, (size_t[]){n, n}, 2, &o, &r) == CM_OK);
+        CHECK(result_contract(r, in, n));
+        CHECK(cm_result_quality(r, 0, &q) == CM_OK && cm_result_quality_before(r, 0, &q0) == CM_OK);
+        CHECK_MSG(q.min_angle_deg >= q0.min_angle_deg, "smoothing %d: %.2f < %.2f", i,
+                  q.min_angle_deg, q0.min_angle_deg);
+        cm_result_free(r);
+    }
+    free(a), free(b);
+}
+
+static int stop_at_remesh(void *user, double fraction, const char *stage)
+{
+    (void)fraction;
+    ++*(int *)user;
+    return strcmp(stage, "remesh") == 0;
+}
+
+static void test_cancel_and_clockwise(void)
+{
+    size_t n = 30;
+    double *a = polygon(n), *b = polygon(n);
+    rp_star(a, (int)n, 21), rp_star(b, (int)n, 22);
+    const double *in[2] = {a, b};
+    cm_options o;
+    cm_options_init(&o);
+    int calls = 0;
+    o.progress = stop_at_remesh, o.progress_user = &calls;
+    cm_result *r = NULL;
+    CHECK(cm_triangulate_polygons(in, (size_t[]){n, n}, 2, &o, &r) == CM_ERR_CANCELLED);
+    CHECK(calls > 0 && cm_result_num_vertices(r) == 0);
+    cm_result_free(r);
+
+    /* clockwise input: remeshed in internal order, returned in input order */
+    for (size_t i = 0; i < n / 2; i++)
+        for (int c = 0; c < 2; c++) {
+            double t = a[2 * i + c]; a[2 * i + c] = a[2 * (n - 1 - i) + c]; a[2 * (n - 1 - i) + c] = t;
+            t = b[2 * i + c]; b[2 * i + c] = b[2 * (n - 1 - i) + c]; b[2 * (n - 1 - i) + c] = t;
+        }
+    CHECK(cm_triangulate_polygons(in, (size_t[]){n, n}, 2, NULL, &r) == CM_OK);
+    CHECK(cm_result_stats(r)->reversed_input == 1 && result_contract(r, in, n));
+    cm_result_free(r);
+    free(a), free(b);
+}
+
+int main(void)
+{
+    test_property_operations(60, 400);
+    test_smoothing_variants();
+    test_area_equalisation();
+    test_refine_keeps_boundary();
+    test_algorithm1_fixtures();
+    test_options();
+    test_cancel_and_clockwise();
+    return check_summary("test_remesh");
+}

@@ -1,0 +1,112 @@
+"""Keyword options map by name to the C options; progress and cancelling."""
+import numpy as np
+import pytest
+
+import compatmesh
+
+
+def test_unknown_keyword_is_a_type_error(octagon, star):
+    with pytest.raises(TypeError, match="unexpected keyword argument 'min_angel'"):
+        compatmesh.triangulate([octagon, star], min_angel=30)
+
+
+@pytest.mark.parametrize("name", ["overlay", "partition"])
+def test_method_by_enum_int_and_name(octagon, star, name):
+    enum = getattr(compatmesh.Method, name.upper())
+    faces = [
+        compatmesh.triangulate([octagon, star], method=m, remesh=False).faces.tolist()
+        for m in (enum, int(enum), name)
+    ]
+    assert faces[0] == faces[1] == faces[2]
+
+
+def test_remesh_off_returns_the_construction(octagon, star):
+    result = compatmesh.triangulate([octagon, star], remesh=False)
+    s = result.stats
+    assert s["remesh_iterations"] == 0 and s["seconds_remesh"] == 0
+    assert s["steiner"] == s["steiner_before_remesh"]
+    assert s["quality"] == s["quality_before_remesh"]
+
+
+def test_remesh_raises_the_smallest_angle_over_all_geometries(octagon, star):
+    s = compatmesh.triangulate([octagon, star]).stats
+    after = min(q["min_angle_deg"] for q in s["quality"])
+    before = min(q["min_angle_deg"] for q in s["quality_before_remesh"])
+    assert after > before
+
+
+def test_max_steiner_zero_adds_no_vertices(octagon, star):
+    s = compatmesh.triangulate([octagon, star], max_steiner=0).stats
+    assert s["steiner"] <= s["steiner_before_remesh"]
+
+
+@pytest.mark.parametrize("smoothing", ["laplacian", "angle", "weighted", "combined"])
+def test_smoothing_by_name_and_enum(octagon, star, smoothing):
+    by_name = compatmesh.triangulate([octagon, star], smoothing=smoothing)
+    by_enum = compatmesh.triangulate([octagon, star], smoothing=getattr(compatmesh.Smoothing, smoothing.upper()))
+    assert np.array_equal(by_name.faces, by_enum.faces)
+
+
+def test_numeric_options_reach_the_core(octagon, star):
+    compatmesh.triangulate([octagon, star], min_angle_deg=20, k_split=1, area_every=2, max_iterations=5)
+    for name, value in [("min_angle_deg", 70), ("k_split", -1), ("max_steiner", -5), ("area_every", -1),
+                        ("max_iterations", -1), ("smoothing", 9), ("method", 99)]:
+        with pytest.raises(ValueError, match=name) as info:
+            compatmesh.triangulate([octagon, star], **{name: value})
+        assert info.value.status == "invalid argument"
+
+
+def test_numeric_options_check_types(octagon, star):
+    with pytest.raises(TypeError, match="k_split must be an int"):
+        compatmesh.triangulate([octagon, star], k_split=1.5)
+    with pytest.raises(TypeError, match="min_angle_deg must be a number"):
+        compatmesh.triangulate([octagon, star], min_angle_deg="25")
+    compatmesh.triangulate([octagon, star], min_angle_deg=25)  # an int is a number
+
+
+def test_bad_names(octagon, star):
+    with pytest.raises(ValueError, match="unknown method 'magic'"):
+        compatmesh.triangulate([octagon, star], method="magic")
+    with pytest.raises(ValueError, match="unknown smoothing 'gentle'"):
+        compatmesh.triangulate([octagon, star], smoothing="gentle")
+
+
+def test_progress_is_called_in_order(octagon, star):
+    calls = []
+    compatmesh.triangulate([octagon, star], progress=lambda f, stage: calls.append((f, stage)))
+    fractions = [f for f, _ in calls]
+    assert calls and fractions == sorted(fractions)
+    assert all(0.0 <= f <= 1.0 and isinstance(s, str) and s for f, s in calls)
+
+
+def test_progress_returning_true_cancels(octagon, star):
+    with pytest.raises(compatmesh.Cancelled):
+        compatmesh.triangulate([octagon, star], progress=lambda f, stage: f >= 0.5)
+
+
+def test_progress_exception_propagates(octagon, star):
+    def fails(fraction, stage):
+        raise ZeroDivisionError("from the callback")
+
+    with pytest.raises(ZeroDivisionError, match="from the callback"):
+        compatmesh.triangulate([octagon, star], progress=fails)
+
+
+def test_progress_must_be_callable(octagon, star):
+    with pytest.raises(TypeError, match="callable"):
+        compatmesh.triangulate([octagon, star], progress=3)
+    compatmesh.triangulate([octagon, star], progress=None)
+
+
+def test_progress_user_is_not_for_python(octagon, star):
+    with pytest.raises(TypeError, match="closure"):
+        compatmesh.triangulate([octagon, star], progress_user=object())
+
+
+def test_planarity_tolerance_keyword(octagon, star):
+    bent = np.c_[octagon, np.zeros(8)]
+    bent[3, 2] = 1e-3  # off the plane by 1e-3 of a polygon about 4 across
+    flat = np.c_[star, np.zeros(8)]
+    with pytest.raises(ValueError, match="not planar"):
+        compatmesh.triangulate([bent, flat])
+    compatmesh.triangulate([bent, flat], planarity_tolerance=1e-3)
