@@ -1,6 +1,8 @@
 #define _POSIX_C_SOURCE 200809L /* sigaction, clock_gettime */
 
+#include <errno.h>
 #include <getopt.h>
+#include <limits.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -173,7 +175,15 @@ static double seconds_now(void)
 
 /* ---- triangulate ------------------------------------------------------- */
 
-enum { OPTION_NO_REMESH = 256 };
+enum {
+    OPTION_NO_REMESH = 256,
+    OPTION_MIN_ANGLE,
+    OPTION_MAX_STEINER,
+    OPTION_K_SPLIT,
+    OPTION_AREA_EVERY,
+    OPTION_SMOOTHING,
+    OPTION_MAX_ITERATIONS
+};
 
 static const option_spec triangulate_options[] = {
     {"out-dir", 'o', "DIR",
@@ -183,13 +193,30 @@ static const option_spec triangulate_options[] = {
     {"format", 'f', "FMT", "mesh file format: off (default), obj or ply (ASCII)"},
     {"method", 'm', "NAME",
      "how the first compatible triangulation is built:\n"
-     "overlay (default): the Aronov-Seidel-Souvaine\n"
-     "overlay, which always succeeds"},
+     "partition (default): minimum-link paths, few or no\n"
+     "Steiner vertices (paper section 2); overlay: the\n"
+     "Aronov-Seidel-Souvaine overlay, many Steiner vertices"},
     {"no-remesh", OPTION_NO_REMESH, NULL,
-     "keep the first compatible triangulation as built;\n"
-     "remeshing is not in this version yet, so for now\n"
-     "the result is never remeshed and this flag changes\n"
-     "nothing"},
+     "keep the first compatible triangulation as built\n"
+     "(remeshing is on by default)"},
+    {"min-angle", OPTION_MIN_ANGLE, "DEG",
+     "remeshing target smallest angle in (0, 60), default\n"
+     "25; near a sharp input corner of angle c the aim is\n"
+     "c/2"},
+    {"max-steiner", OPTION_MAX_STEINER, "N",
+     "most Steiner vertices refinement may add; default\n"
+     "2n + 100; 0: no refinement"},
+    {"k-split", OPTION_K_SPLIT, "N",
+     "edges split per refinement round; default 0: about\n"
+     "1% of the triangles"},
+    {"area-every", OPTION_AREA_EVERY, "N",
+     "area equalisation (eq. 4) every N refinement\n"
+     "rounds; default 0: never"},
+    {"smoothing", OPTION_SMOOTHING, "NAME",
+     "laplacian, angle, weighted or combined (default):\n"
+     "weighted angle-based, Laplacian where it fails"},
+    {"max-iterations", OPTION_MAX_ITERATIONS, "N",
+     "cap on refinement rounds; default 0: none"},
     {"help", 'h', NULL, "show this help and exit"},
 };
 static const size_t triangulate_option_count =
@@ -198,7 +225,9 @@ static const size_t triangulate_option_count =
 static const struct {
     const char *name;
     cm_method method;
-} methods[] = {{"overlay", CM_METHOD_OVERLAY}};
+} methods[] = {{"partition", CM_METHOD_PARTITION}, {"overlay", CM_METHOD_OVERLAY}};
+
+static const char *const smoothing_names[] = {"laplacian", "angle", "weighted", "combined"};
 
 typedef struct triangulate_args {
     const char **inputs;
@@ -206,8 +235,7 @@ typedef struct triangulate_args {
     const char *out_dir;
     mesh_format format;
     const char *method_name;
-    cm_method method;
-    int remesh;
+    cm_options options; /* method, remeshing; the progress hook is set later */
     int help;
 } triangulate_args;
 
@@ -216,12 +244,63 @@ static int set_method(triangulate_args *args, const char *name, cli_error *error
     for (size_t i = 0; i < sizeof methods / sizeof methods[0]; i++) {
         if (strcmp(name, methods[i].name) == 0) {
             args->method_name = methods[i].name;
-            args->method = methods[i].method;
+            args->options.method = methods[i].method;
             return CLI_EXIT_OK;
         }
     }
-    cli_error_set(error, "triangulate: unknown --method '%s' (known: overlay)", name);
+    cli_error_set(error, "triangulate: unknown --method '%s' (known: partition, overlay)",
+                  name);
     return CLI_EXIT_USAGE;
+}
+
+static int set_smoothing(triangulate_args *args, const char *name, cli_error *error)
+{
+    for (size_t i = 0; i < sizeof smoothing_names / sizeof smoothing_names[0]; i++) {
+        if (strcmp(name, smoothing_names[i]) == 0) {
+            args->options.smoothing = (cm_smoothing)i;
+            return CLI_EXIT_OK;
+        }
+    }
+    cli_error_set(error, "triangulate: unknown --smoothing '%s' "
+                  "(known: laplacian, angle, weighted, combined)", name);
+    return CLI_EXIT_USAGE;
+}
+
+/* A whole decimal number in [low, high]; the message names the option. */
+static int parse_long(const char *option, const char *text, long low, long high,
+                      long *value, cli_error *error)
+{
+    char *end;
+    errno = 0;
+    long parsed = strtol(text, &end, 10);
+    if (end == text || *end != '\0' || errno == ERANGE || parsed < low || parsed > high) {
+        cli_error_set(error, "triangulate: --%s needs a whole number in [%ld, %ld], got '%s'",
+                      option, low, high, text);
+        return CLI_EXIT_USAGE;
+    }
+    *value = parsed;
+    return CLI_EXIT_OK;
+}
+
+static int parse_int(const char *option, const char *text, int *value, cli_error *error)
+{
+    long parsed;
+    int code = parse_long(option, text, 0, INT_MAX, &parsed, error);
+    if (code == CLI_EXIT_OK) *value = (int)parsed;
+    return code;
+}
+
+static int parse_min_angle(const char *text, double *value, cli_error *error)
+{
+    char *end;
+    double parsed = strtod(text, &end);
+    if (end == text || *end != '\0' || !(parsed > 0 && parsed < 60)) {
+        cli_error_set(error, "triangulate: --min-angle needs degrees in (0, 60), got '%s'",
+                      text);
+        return CLI_EXIT_USAGE;
+    }
+    *value = parsed;
+    return CLI_EXIT_OK;
 }
 
 static int handle_triangulate_option(void *context, int key, const char *value,
@@ -242,8 +321,20 @@ static int handle_triangulate_option(void *context, int key, const char *value,
     case 'm':
         return set_method(args, value, error);
     case OPTION_NO_REMESH:
-        args->remesh = 0;
+        args->options.remesh = 0;
         return CLI_EXIT_OK;
+    case OPTION_MIN_ANGLE:
+        return parse_min_angle(value, &args->options.min_angle_deg, error);
+    case OPTION_MAX_STEINER:
+        return parse_long("max-steiner", value, 0, LONG_MAX, &args->options.max_steiner, error);
+    case OPTION_K_SPLIT:
+        return parse_int("k-split", value, &args->options.k_split, error);
+    case OPTION_AREA_EVERY:
+        return parse_int("area-every", value, &args->options.area_every, error);
+    case OPTION_SMOOTHING:
+        return set_smoothing(args, value, error);
+    case OPTION_MAX_ITERATIONS:
+        return parse_int("max-iterations", value, &args->options.max_iterations, error);
     case 'h':
         args->help = 1;
         return CLI_EXIT_OK;
@@ -283,10 +374,12 @@ static void print_triangulate_help(FILE *out)
           "                   digits, so input vertices read back bit-identical\n"
           "  DIR/report.json  version, n, k, vertices, steiner, triangles, valid,\n"
           "                   method, remesh, reversed_input, fallback_count,\n"
-          "                   seconds (validate, build, check, and total: the\n"
+          "                   steiner_before_remesh, remesh_iterations, seconds\n"
+          "                   (validate, build, remesh, check, and total: the\n"
           "                   whole computation) and per mesh the input, output,\n"
           "                   min/max angle and the share of triangles whose\n"
-          "                   smallest angle is below 10, 15 and 20 degrees\n"
+          "                   smallest angle is below 10, 15 and 20 degrees, after\n"
+          "                   and (before_remesh) before remeshing\n"
           "  DIR/preview.svg  the meshes side by side: boundary thick, Steiner\n"
           "                   vertices as dots, triangles whose smallest angle is\n"
           "                   below 20 degrees orange, each mesh's worst one red\n"
@@ -299,9 +392,8 @@ static int parse_triangulate_args(int argc, char **argv, triangulate_args *args,
 {
     memset(args, 0, sizeof *args);
     args->format = MESH_FORMAT_OFF;
-    args->method_name = "overlay";
-    args->method = CM_METHOD_OVERLAY;
-    args->remesh = 0; /* nothing to remesh with yet, see --no-remesh */
+    cm_options_init(&args->options);
+    args->method_name = "partition";
     args->inputs = malloc((size_t)argc * sizeof *args->inputs);
     if (!args->inputs) {
         cli_error_set(error, "out of memory");
@@ -479,9 +571,7 @@ static int compute(triangulate_run *run, cli_error *error)
     }
     for (size_t g = 0; g < k; g++)
         memcpy(xy + 2 * g * n, run->polygons[g].xy, 2 * n * sizeof *xy);
-    cm_options options;
-    cm_options_init(&options);
-    options.method = run->args->method;
+    cm_options options = run->args->options;
     options.progress = cancel_if_interrupted;
     double start = seconds_now();
     cm_status status = cm_triangulate(xy, k, n, &options, &run->result);
@@ -522,7 +612,7 @@ static int write_meshes(triangulate_run *run, cli_error *error)
 static int write_extras(triangulate_run *run, cli_error *error)
 {
     const char *path;
-    report_info info = {run->result, run->args->method_name, run->args->remesh,
+    report_info info = {run->result, run->args->method_name, run->args->options.remesh,
                         run->seconds_total, run->args->inputs,
                         (const char *const *)run->final_paths};
     int code = stage_file(run, "report.json", &path, error);

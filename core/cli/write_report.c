@@ -49,26 +49,37 @@ static void write_seconds(FILE *file, const cm_stats *stats, double total)
     fputs("  \"seconds\": {", file);
     json_field(file, "", "validate", stats->seconds_validate);
     json_field(file, ", ", "build", stats->seconds_build);
+    json_field(file, ", ", "remesh", stats->seconds_remesh);
     json_field(file, ", ", "check", stats->seconds_check);
     json_field(file, ", ", "total", total);
     fputs("},\n", file);
 }
 
+/* The quality fields of one mesh; NaN (null) when it could not be had. */
+static void write_quality(FILE *file, const char *first, const char *line,
+                          cm_status status, cm_quality quality)
+{
+    if (status != CM_OK) quality = (cm_quality){NAN, NAN, NAN, NAN, NAN};
+    json_field(file, first, "min_angle_deg", quality.min_angle_deg);
+    json_field(file, ", ", "max_angle_deg", quality.max_angle_deg);
+    json_field(file, line, "pct_triangles_below_10deg", quality.pct_below_10deg);
+    json_field(file, ", ", "pct_triangles_below_15deg", quality.pct_below_15deg);
+    json_field(file, ", ", "pct_triangles_below_20deg", quality.pct_below_20deg);
+}
+
 static void write_mesh_entry(FILE *file, const report_info *info, size_t g)
 {
     cm_quality quality;
-    if (cm_result_quality(info->result, g, &quality) != CM_OK)
-        quality = (cm_quality){NAN, NAN, NAN, NAN, NAN}; /* written as null */
     fputs("    {\"input\": ", file);
     json_string(file, info->inputs[g]);
     fputs(", \"output\": ", file);
     json_string(file, info->outputs[g]);
-    json_field(file, ",\n     ", "min_angle_deg", quality.min_angle_deg);
-    json_field(file, ", ", "max_angle_deg", quality.max_angle_deg);
-    json_field(file, ",\n     ", "pct_triangles_below_10deg", quality.pct_below_10deg);
-    json_field(file, ", ", "pct_triangles_below_15deg", quality.pct_below_15deg);
-    json_field(file, ", ", "pct_triangles_below_20deg", quality.pct_below_20deg);
-    fputs("}", file);
+    write_quality(file, ",\n     ", ",\n     ", cm_result_quality(info->result, g, &quality),
+                  quality);
+    fputs(",\n     \"before_remesh\": {", file);
+    write_quality(file, "", ",\n      ", cm_result_quality_before(info->result, g, &quality),
+                  quality);
+    fputs("}}", file);
 }
 
 int write_report(const char *path, const report_info *info, cli_error *error)
@@ -88,6 +99,8 @@ int write_report(const char *path, const report_info *info, cli_error *error)
     fprintf(file, ",\n  \"remesh\": %s,\n", info->remesh ? "true" : "false");
     fprintf(file, "  \"reversed_input\": %s,\n", stats->reversed_input ? "true" : "false");
     fprintf(file, "  \"fallback_count\": %zu,\n", stats->fallback_count);
+    fprintf(file, "  \"steiner_before_remesh\": %zu,\n", stats->steiner_before_remesh);
+    fprintf(file, "  \"remesh_iterations\": %zu,\n", stats->remesh_iterations);
     write_seconds(file, stats, info->seconds_total);
     fputs("  \"meshes\": [\n", file);
     for (size_t g = 0; g < stats->k; g++) {

@@ -3,7 +3,9 @@ import re
 
 import pytest
 
-TRIANGULATE_OPTIONS = ["--out-dir", "--format", "--method", "--no-remesh", "--help"]
+TRIANGULATE_OPTIONS = ["--out-dir", "--format", "--method", "--no-remesh", "--min-angle",
+                       "--max-steiner", "--k-split", "--area-every", "--smoothing",
+                       "--max-iterations", "--help"]
 
 
 def check_exit_codes_documented(text):
@@ -27,7 +29,7 @@ def test_triangulate_help(cm, flag):
     assert result.stdout.startswith("Usage: compatmesh triangulate IN1 IN2")
     for option in TRIANGULATE_OPTIONS:
         assert re.search(rf"^\s+(-\w, )?{option}\b", result.stdout, re.MULTILINE), option
-    for word in ("off", "obj", "ply", "overlay", "report.json", "preview.svg"):
+    for word in ("off", "obj", "ply", "partition", "overlay", "report.json", "preview.svg"):
         assert word in result.stdout
     check_exit_codes_documented(result.stdout)
 

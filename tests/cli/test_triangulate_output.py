@@ -67,10 +67,12 @@ def check_success(tmp_path, result, inputs, fmt="off", out="out"):
     assert steiner >= 0
     assert report["vertices"] == n + steiner
     assert report["triangles"] == n + 2 * steiner - 2
-    assert report["method"] == "overlay"
+    assert report["method"] in ("partition", "overlay")
+    assert report["remesh"] in (True, False)
+    assert report["steiner_before_remesh"] >= 0 and report["remesh_iterations"] >= 0
     assert isinstance(report["reversed_input"], bool)
     assert report["fallback_count"] >= 0
-    assert set(report["seconds"]) >= {"validate", "build", "check", "total"}
+    assert set(report["seconds"]) >= {"validate", "build", "remesh", "check", "total"}
     assert all(value >= 0 for value in report["seconds"].values())
     assert report["seconds"]["total"] >= report["seconds"]["build"]
     assert re.fullmatch(r"\d+\.\d+\.\d+", report["version"])
@@ -104,6 +106,10 @@ def check_success(tmp_path, result, inputs, fmt="off", out="out"):
         shares = [entry[f"pct_triangles_below_{d}deg"] for d in (10, 15, 20)]
         assert 0 <= shares[0] <= shares[1] <= shares[2] <= 100
         assert shares[2] == pytest.approx(100 * np.mean(angles < 20), abs=1e-6)
+        before = entry["before_remesh"]
+        assert 0 < before["min_angle_deg"] <= 60 <= before["max_angle_deg"] < 180
+        if not report["remesh"]:
+            assert before == {key: entry[key] for key in before}
 
     check_svg(out_dir / "preview.svg", inputs, report, angles_per_mesh)
     assert leftovers(tmp_path) == []
