@@ -376,6 +376,175 @@ static int resample(const outline *o, int n, double *xy)
     return -1;
 }
 
+/* ---- feature-matched correspondence ----------------------------------- */
+
+/* A user pairing two glyphs pairs their features: the corners of the glyph
+ * with the fewest are matched, in order, to as many corners of each other
+ * glyph (an order-preserving choice that puts corners at similar places of
+ * their bounding boxes), and the points between two matched corners are
+ * shared by arc length, the same count in every glyph. Without this, the
+ * ends of a U's arms would meet the middle of an S's strokes and no mesh
+ * could be good in both. */
+
+enum { MAX_CORNERS = 64 };
+
+typedef struct corner_list {
+    int at[MAX_CORNERS]; /* outline point indices, in outline order */
+    int count;
+    double box[4];       /* x0 y0 x1 y1 of the outline */
+} corner_list;
+
+static int list_corners(const outline *o, corner_list *c)
+{
+    c->count = 0;
+    c->box[0] = c->box[2] = o->xy[0];
+    c->box[1] = c->box[3] = o->xy[1];
+    for (int i = 0; i < o->count; i++) {
+        for (int d = 0; d < 2; d++) {
+            c->box[d] = fmin(c->box[d], o->xy[2 * i + d]);
+            c->box[2 + d] = fmax(c->box[2 + d], o->xy[2 * i + d]);
+        }
+        if (o->corner[i]) {
+            if (c->count == MAX_CORNERS)
+                return -1;
+            c->at[c->count++] = i;
+        }
+    }
+    return 0;
+}
+
+/* Squared distance of two corners in units of their boxes. */
+static double corner_cost(const outline *a, const corner_list *ca, int i,
+                          const outline *b, const corner_list *cb, int j)
+{
+    double d = 0;
+    for (int k = 0; k < 2; k++) {
+        double u = (a->xy[2 * ca->at[i] + k] - ca->box[k]) / (ca->box[2 + k] - ca->box[k]);
+        double v = (b->xy[2 * cb->at[j] + k] - cb->box[k]) / (cb->box[2 + k] - cb->box[k]);
+        d += (u - v) * (u - v);
+    }
+    return d;
+}
+
+/* Picks, for each of the m corners of `a`, a corner of `b` (m <= its
+ * count), in cyclic order, at the least total cost: a dynamic program over
+ * every rotation. match[i] is the index into cb->at. */
+static void match_corners(const outline *a, const corner_list *ca, const outline *b,
+                          const corner_list *cb, int *match)
+{
+    int m = ca->count, M = cb->count;
+    static double cost[MAX_CORNERS][MAX_CORNERS];
+    static int from[MAX_CORNERS][MAX_CORNERS];
+    double best = INFINITY;
+    for (int r = 0; r < M; r++) {
+        /* cost[i][j]: corners 0..i of a matched, i to b's (r + j) % M. */
+        for (int i = 0; i < m; i++)
+            for (int j = 0; j < M; j++) {
+                cost[i][j] = INFINITY;
+                if (j < i || j > M - m + i)
+                    continue;
+                double here = corner_cost(a, ca, i, b, cb, (r + j) % M);
+                if (i == 0) {
+                    if (j == 0)
+                        cost[i][j] = here;
+                    continue;
+                }
+                for (int q = i - 1; q < j; q++)
+                    if (cost[i - 1][q] + here < cost[i][j]) {
+                        cost[i][j] = cost[i - 1][q] + here;
+                        from[i][j] = q;
+                    }
+            }
+        for (int j = m - 1; j < M; j++) {
+            if (!(cost[m - 1][j] < best))
+                continue;
+            best = cost[m - 1][j];
+            for (int i = m - 1, q = j; i >= 0; i--) {
+                match[i] = (r + q) % M;
+                if (i > 0)
+                    q = from[i][q];
+            }
+        }
+    }
+}
+
+/* Samples the piece of `o` from point `from` to point `to` with `count`
+ * points (the first at `from`), each corner inside the piece kept as a
+ * point: the sub-pieces between corners share the count by length. */
+static int sample_piece(const outline *o, int from, int to, int count, double *xy)
+{
+    int cut[MAX_CORNERS + 1], nc = 0;
+    for (int i = from; nc <= MAX_CORNERS; i = (i + 1) % o->count) {
+        if (i == from || o->corner[i])
+            cut[nc++] = i;
+        if ((i + 1) % o->count == to)
+            break;
+    }
+    if (nc > count)
+        return -1;
+    double len[MAX_CORNERS + 1];
+    int share[MAX_CORNERS + 1];
+    for (int k = 0; k < nc; k++)
+        len[k] = piece_len(o, cut[k], k + 1 < nc ? cut[k + 1] : to);
+    share_points(len, nc, count, share);
+    for (int k = 0, out = 0; k < nc; k++)
+        for (int j = 0; j < share[k]; j++, out++)
+            point_along(o, cut[k], len[k] * j / share[k], xy + 2 * out);
+    return 0;
+}
+
+/* Resamples k outlines to n points each, in feature-matched
+ * correspondence, checking each result simple. Returns -1 when the glyph
+ * with the fewest corners has none (nothing to match) or a result is not
+ * simple. */
+static int resample_matched(const outline *o, int k, int n, double *const *xy)
+{
+    corner_list c[MAX_K];
+    memset(c, 0, sizeof c);
+    int fewest = 0;
+    for (int g = 0; g < k; g++) {
+        if (list_corners(&o[g], &c[g]) != 0)
+            return -1;
+        if (c[g].count < c[fewest].count)
+            fewest = g;
+    }
+    int m = c[fewest].count;
+    if (m == 0)
+        return -1;
+    int anchor[MAX_K][MAX_CORNERS]; /* point index of matched corner i */
+    for (int g = 0; g < k; g++) {
+        int match[MAX_CORNERS];
+        if (g == fewest)
+            for (int i = 0; i < m; i++)
+                match[i] = i;
+        else
+            match_corners(&o[fewest], &c[fewest], &o[g], &c[g], match);
+        for (int i = 0; i < m; i++)
+            anchor[g][i] = c[g].at[match[i]];
+    }
+    /* Points per piece: by the mean share of the outline's length. */
+    double len[MAX_CORNERS] = {0};
+    int count[MAX_CORNERS];
+    for (int g = 0; g < k; g++) {
+        double total = piece_len(&o[g], 0, 0);
+        for (int i = 0; i < m; i++)
+            len[i] += piece_len(&o[g], anchor[g][i], anchor[g][(i + 1) % m]) / total;
+    }
+    if (m > n)
+        return -1;
+    share_points(len, m, n, count);
+    for (int g = 0; g < k; g++) {
+        for (int i = 0, out = 0; i < m; out += count[i], i++)
+            if (sample_piece(&o[g], anchor[g][i], anchor[g][(i + 1) % m], count[i],
+                             xy[g] + 2 * out) != 0)
+                return -1;
+        rp_snap_all(xy[g], n);
+        if (!rp_is_simple(xy[g], n) || rp_signed_area2(xy[g], n) <= 0)
+            return -1;
+    }
+    return 0;
+}
+
 /* ---- writing ----------------------------------------------------------- */
 
 typedef struct writer {
@@ -446,17 +615,21 @@ static void report_failure(writer *w, const char *name, const char *why)
 
 /* ---- the pairs --------------------------------------------------------- */
 
-/* Glyphs given as a string, one character per polygon. */
+/* Glyphs given as a string, one character per polygon, in feature-matched
+ * correspondence (each resampled on its own, from its bottom-left, when
+ * that fails). */
 static void glyph_set(writer *w, const char *name, const char *chars, int n)
 {
-    polys p;
-    int k = (int)strlen(chars), ok = polys_alloc(&p, n) == 0;
-    for (int g = 0; ok && g < k; g++) {
-        outline o = {0};
-        ok = glyph_outline(w->face, (unsigned char)chars[g], &o) == 0 &&
-             resample(&o, n, p.xy[g]) == 0;
-        outline_free(&o);
-    }
+    polys p = {{0}};
+    outline o[MAX_K] = {{0}};
+    int k = (int)strlen(chars), ok = k <= MAX_K && polys_alloc(&p, n) == 0;
+    for (int g = 0; ok && g < k; g++)
+        ok = glyph_outline(w->face, (unsigned char)chars[g], &o[g]) == 0;
+    if (ok && resample_matched(o, k, n, p.xy) != 0)
+        for (int g = 0; ok && g < k; g++)
+            ok = resample(&o[g], n, p.xy[g]) == 0;
+    for (int g = 0; g < k; g++)
+        outline_free(&o[g]);
     if (ok)
         emit(w, name, p.xy, k, n);
     else
