@@ -256,6 +256,7 @@ py::dict stats_of(const cm_result *result)
   stats["fallback_count"] = s->fallback_count;
   stats["steiner_before_remesh"] = s->steiner_before_remesh;
   stats["remesh_iterations"] = s->remesh_iterations;
+  stats["remesh_aim_deg"] = s->remesh_aim_deg;
   stats["seconds_validate"] = s->seconds_validate;
   stats["seconds_build"] = s->seconds_build;
   stats["seconds_remesh"] = s->seconds_remesh;
@@ -376,7 +377,7 @@ PYBIND11_MODULE(compatmesh, m)
                     "vertex_halfedge, face_halfedge; h ^ 1 is the opposite of h")
       .def_readonly("stats", &Result::stats,
                     "dict: the fields of cm_stats (n, k, vertices, steiner, triangles, "
-                    "reversed_input, fallback_count, steiner_before_remesh, remesh_iterations, "
+                    "reversed_input, fallback_count, steiner_before_remesh, remesh_iterations, remesh_aim_deg, "
                     "seconds_*), quality and quality_before_remesh (one dict per geometry)")
       .def("__repr__", [](const Result &r) {
         return "<compatmesh.Result: " + py::str(r.stats["k"]).cast<std::string>() + " geometries, " +

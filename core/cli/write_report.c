@@ -101,6 +101,8 @@ int write_report(const char *path, const report_info *info, cli_error *error)
     fprintf(file, "  \"fallback_count\": %zu,\n", stats->fallback_count);
     fprintf(file, "  \"steiner_before_remesh\": %zu,\n", stats->steiner_before_remesh);
     fprintf(file, "  \"remesh_iterations\": %zu,\n", stats->remesh_iterations);
+    json_field(file, "  ", "remesh_aim_deg", stats->remesh_aim_deg);
+    fputs(",\n", file);
     write_seconds(file, stats, info->seconds_total);
     fputs("  \"meshes\": [\n", file);
     for (size_t g = 0; g < stats->k; g++) {

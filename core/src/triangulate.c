@@ -117,6 +117,7 @@ static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o)
     cm_status s = cm_remesh(&r->mesh, n, o, &report, r);
     r->stats.seconds_remesh = cm_seconds_now() - t;
     r->stats.remesh_iterations = report.iterations;
+    r->stats.remesh_aim_deg = report.target_deg;
     return s;
 }
 

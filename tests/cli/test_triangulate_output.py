@@ -70,6 +70,10 @@ def check_success(tmp_path, result, inputs, fmt="off", out="out"):
     assert report["method"] in ("partition", "overlay")
     assert report["remesh"] in (True, False)
     assert report["steiner_before_remesh"] >= 0 and report["remesh_iterations"] >= 0
+    if report["remesh"]:
+        assert 0 < report["remesh_aim_deg"] <= 25
+    else:
+        assert report["remesh_aim_deg"] == 0
     assert isinstance(report["reversed_input"], bool)
     assert report["fallback_count"] >= 0
     assert set(report["seconds"]) >= {"validate", "build", "remesh", "check", "total"}

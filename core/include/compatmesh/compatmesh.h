@@ -151,6 +151,10 @@ typedef struct cm_stats {
     size_t steiner_before_remesh; /* Steiner vertices of the construction */
     double seconds_remesh;   /* remeshing (0 when options.remesh is 0) */
     size_t remesh_iterations; /* refinement rounds of Algorithm 1 */
+    /* The smallest angle the remesher aimed at anywhere, in degrees: the
+     * target lowered where an input corner (c/2) or a short boundary edge
+     * beside a close opposite side allows less; 0 when not remeshed. */
+    double remesh_aim_deg;
 } cm_stats;
 
 /* Quality of one geometry of the result. */
