@@ -8,7 +8,10 @@ DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
   fonts-dejavu-core python3 python3-numpy python3-pytest python3-meshio \
   libopenmesh-dev libeigen3-dev pybind11-dev python3-dev
 
-.PHONY: all deps build demo test bench clean
+# Only `make bench` needs these: CGAL meshes each polygon alone, to compare.
+BENCH_PACKAGES = libcgal-dev
+
+.PHONY: all deps bench-deps build demo test bench clean
 
 all: build
 
@@ -33,7 +36,10 @@ test: build
 demo: build
 	bash examples/demo.sh $(BUILD)
 
-bench: build
+bench-deps:
+	@$(MAKE) --no-print-directory deps DEBIAN_PACKAGES="$(BENCH_PACKAGES)"
+
+bench: bench-deps build
 	bash bench/run_bench.sh $(BUILD)
 
 clean:

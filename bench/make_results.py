@@ -47,6 +47,30 @@ def read_report(run_dir, name):
         return None
 
 
+def read_cgal(run_dir):
+    """{pair: [(steiner, boundary steiner, min angle) per polygon]} from
+    cgal.tsv, when the bench could run CGAL."""
+    cgal = {}
+    path = os.path.join(run_dir, "cgal.tsv")
+    if os.path.exists(path):
+        with open(path) as f:
+            for line in f:
+                name, _, result = line.rstrip("\n").split("\t")
+                words = result.split()
+                value = None
+                if len(words) == 8:
+                    value = (int(words[1]), int(words[3]), float(words[7]))
+                cgal.setdefault(name, []).append(value)
+    return cgal
+
+
+def fmt_cgal(entries):
+    """"S (B on the boundary) / ..." per polygon, "-" when CGAL failed."""
+    if not entries:
+        return ""
+    return " / ".join("%d (%d)" % (e[0], e[1]) if e else "failed" for e in entries)
+
+
 def cpu_model():
     try:
         with open("/proc/cpuinfo") as f:
@@ -114,14 +138,14 @@ def fmt_angles(report):
     return " / ".join(fmt_angle(m["min_angle_deg"]) for m in report["meshes"])
 
 
-def result_row(name, report, c):
+def result_row(name, report, c, cgal):
     aim, floor = quality_aims(c)
     worst = min(m["min_angle_deg"] for m in report["meshes"])
     verdict = "aim" if worst >= aim else ("floor" if worst >= floor else "**below**")
-    return "| %s | %d | %d | %s | %d | %d | %d | %s | %s | %.3g | %s |" % (
+    return "| %s | %d | %d | %s | %d | %d | %d | %s | %s | %s | %.3g | %s |" % (
         name, report["k"], report["n"], fmt_angle(c), report.get("steiner_before_remesh", 0),
         report["steiner"], report["triangles"], fmt_angles(report), verdict,
-        report["seconds"]["total"], report["method"])
+        fmt_cgal(cgal.get(name)), report["seconds"]["total"], report["method"])
 
 
 def count_vertices(path):
@@ -137,7 +161,7 @@ def failure_row(run_dir, name, files, status):
     why = "not run" if code is None else (
         "timed out" if code == 124 else "exit %d" % code)
     n = count_vertices(os.path.join(run_dir, "input", files[0])) if files else ""
-    return "| %s | %d | %s | | | | | **FAILED** (%s) | | %.3g | |" % (
+    return "| %s | %d | %s | | | | | **FAILED** (%s) | | | %.3g | |" % (
         name, len(files), n, why, wall)
 
 
@@ -178,13 +202,16 @@ def header(run_dir, pairs, failures, version, verdicts):
         "c: smallest input corner angle over the pair's polygons (degrees); "
         "Steiner before: the first compatible triangulation's; minimum angles "
         "are per mesh, in the order of the inputs; reaches: the best of aim, "
-        "floor, below that the smallest angle reaches; time is "
+        "floor, below that the smallest angle reaches; CGAL alone: the "
+        "Steiner vertices CGAL's Delaunay mesher adds to each polygon meshed "
+        "on its own at 25 degrees (in brackets those on the boundary, which "
+        "compatmesh never splits), the price of compatibility; time is "
         "`seconds.total` of report.json (validation, construction, "
         "remeshing and the exact check).",
         "",
         "| pair | k | n | c | Steiner before | Steiner | triangles "
-        "| min angle per mesh (deg) | reaches | time (s) | method |",
-        "|---|---:|---:|---:|---:|---:|---:|---|---|---:|---|",
+        "| min angle per mesh (deg) | reaches | CGAL alone | time (s) | method |",
+        "|---|---:|---:|---:|---:|---:|---:|---|---|---|---:|---|",
     ]
     return lines
 
@@ -196,6 +223,7 @@ def main(argv):
     run_dir, out = argv[1], argv[2]
     pairs = read_pairs(run_dir)
     status = read_status(run_dir)
+    cgal = read_cgal(run_dir)
     rows, failures, version, verdicts = [], [], "?", []
     for name, files in pairs:
         report = read_report(run_dir, name)
@@ -204,7 +232,7 @@ def main(argv):
             version = report.get("version", version)
             c = min(smallest_corner(read_xy(os.path.join(run_dir, "input", f)))
                     for f in files)
-            rows.append(result_row(name, report, c))
+            rows.append(result_row(name, report, c, cgal))
             verdicts.append(rows[-1].split(" | ")[8])
         else:
             failures.append(name)

@@ -58,6 +58,21 @@ while read -r name files; do
     fi
 done <"$input/pairs.txt"
 
+# The price of compatibility: every polygon meshed alone by CGAL at the
+# same angle bound (cgal.tsv: pair, file, CGAL's output line).
+cgal=$build/bin/cm_cgal_single
+if [ -x "$cgal" ]; then
+    while read -r name files; do
+        [ -n "$name" ] || continue
+        for f in $files; do
+            line=$(timeout "$limit" "$cgal" "$input/$f" 25 </dev/null 2>/dev/null) || line="failed"
+            printf '%s\t%s\t%s\n' "$name" "$f" "$line" >>"$bench/cgal.tsv"
+        done
+    done <"$input/pairs.txt"
+else
+    echo "bench: $cgal not built (CGAL missing): no comparison with single-polygon meshing" >&2
+fi
+
 "$python" "$src/bench/make_results.py" "$bench" "$src/bench/RESULTS.md" || exit 1
 echo "bench: wrote $src/bench/RESULTS.md"
 if [ -n "$failed" ]; then
