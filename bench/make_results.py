@@ -3,8 +3,9 @@
 usage: make_results.py RUN_DIR OUT.md
 
 RUN_DIR is what bench/run_bench.sh leaves: input/pairs.txt (the pairs, in
-order), status.tsv (pair, exit code, wall seconds) and PAIR/report.json for
-every pair that succeeded.
+order), status.tsv (pair, exit code, wall seconds), PAIR/report.json for
+every pair that succeeded, cgal.tsv (single-polygon meshing by CGAL, when
+built) and table1.md (the paper's Table 1, appended as it is).
 """
 import datetime
 import json
@@ -240,6 +241,10 @@ def main(argv):
     lines = header(run_dir, pairs, failures, version, verdicts) + rows
     if failures:
         lines += ["", "**Failed pairs:** " + ", ".join(failures)]
+    table1 = os.path.join(run_dir, "table1.md")
+    if os.path.exists(table1):
+        with open(table1) as f:
+            lines += ["", f.read().rstrip("\n")]
     with open(out, "w") as f:
         f.write("\n".join(lines) + "\n")
     return 0

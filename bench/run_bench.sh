@@ -73,6 +73,9 @@ else
     echo "bench: $cgal not built (CGAL missing): no comparison with single-polygon meshing" >&2
 fi
 
+# The paper's Table 1 (smoothing methods), appended by make_results.py.
+"$build/bin/cm_table1" "$bench/table1.md" >/dev/null || { echo "bench: cm_table1 failed" >&2; exit 1; }
+
 "$python" "$src/bench/make_results.py" "$bench" "$src/bench/RESULTS.md" || exit 1
 echo "bench: wrote $src/bench/RESULTS.md"
 if [ -n "$failed" ]; then
