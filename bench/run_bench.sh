@@ -73,6 +73,24 @@ else
     echo "bench: $cgal not built (CGAL missing): no comparison with single-polygon meshing" >&2
 fi
 
+# Each polygon alone (paired with itself): what remeshing reaches without
+# the correspondence to honour (alone.tsv: pair, file, smallest angle).
+while read -r name files; do
+    [ -n "$name" ] || continue
+    for f in $files; do
+        out=$bench/alone/$name/${f%.*}
+        mkdir -p "$out"
+        cp "$input/$f" "$out/a.xy" && cp "$input/$f" "$out/b.xy"
+        if timeout "$limit" "$cli" triangulate "$out/a.xy" "$out/b.xy" --out-dir "$out/result" \
+            </dev/null >/dev/null 2>&1; then
+            angle=$("$python" -c 'import json, sys; print(json.load(open(sys.argv[1]))["meshes"][0]["min_angle_deg"])' "$out/result/report.json")
+        else
+            angle=failed
+        fi
+        printf '%s\t%s\t%s\n' "$name" "$f" "$angle" >>"$bench/alone.tsv"
+    done
+done <"$input/pairs.txt"
+
 # The paper's Table 1 (smoothing methods), appended by make_results.py.
 "$build/bin/cm_table1" "$bench/table1.md" >/dev/null || { echo "bench: cm_table1 failed" >&2; exit 1; }
 
