@@ -41,8 +41,7 @@ int32_t cm_refine_split(cm_kmesh *km, int32_t c)
     return m;
 }
 
-/* Marks the quad around the edge opposite c; 0 if a vertex was taken. */
-static int take_quad(cm_kmesh *km, int32_t c, uint32_t stamp)
+int cm_refine_take_quad(cm_kmesh *km, int32_t c, uint32_t stamp)
 {
     int32_t q[4] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)], km->tri[km->opp[c]]};
     for (int i = 0; i < 4; i++)
@@ -61,7 +60,7 @@ long cm_refine_step(cm_kmesh *km, long k_split, cm_work *touched)
     uint32_t stamp = cm_kmesh_new_stamp(km);
     for (long i = 0; i < nc && splits < k_split; i++) {
         int32_t c = cand[i];
-        if (km->tri[c] < 0 || km->opp[c] < 0 || !take_quad(km, c, stamp)) continue;
+        if (km->tri[c] < 0 || km->opp[c] < 0 || !cm_refine_take_quad(km, c, stamp)) continue;
         int32_t m = cm_refine_split(km, c);
         if (m == -2) continue;
         if (m < 0 || cm_work_push(touched, m)) {

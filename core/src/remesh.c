@@ -272,16 +272,6 @@ static int cancelled(const cm_options *o, double fraction)
     return o->progress && o->progress(o->progress_user, fraction, "remesh") != 0;
 }
 
-/* Marks the quad around the edge opposite c; 0 if a vertex was taken. */
-static int take_quad(cm_kmesh *km, int32_t c, uint32_t stamp)
-{
-    int32_t q[4] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)], km->tri[km->opp[c]]};
-    for (int i = 0; i < 4; i++)
-        if (km->mark[q[i]] == stamp) return 0;
-    for (int i = 0; i < 4; i++) km->mark[q[i]] = stamp;
-    return 1;
-}
-
 /* Is the edge opposite c still a candidate worth a try? */
 static int worth_trying(remesher *x, int32_t c)
 {
@@ -320,7 +310,7 @@ static long split_round(remesher *x, long ks, int32_t *cand, long want, long *tr
     uint32_t stamp = cm_kmesh_new_stamp(km);
     for (long i = 0; i < nc && kept < ks; i++) {
         int32_t c = cand[i];
-        if (!worth_trying(x, c) || !take_quad(km, c, stamp)) continue;
+        if (!worth_trying(x, c) || !cm_refine_take_quad(km, c, stamp)) continue;
         int s = try_split(x, c);
         if (s < 0) return -1;
         kept += s, ++*tried;

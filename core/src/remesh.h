@@ -65,6 +65,10 @@ long cm_areaeq_sweep(cm_kmesh *km, cm_work *touched);
  * geometries, over the smallest angle beside e squared). The new vertices
  * go to `touched`. Returns the number of splits, -1 out of memory. */
 long cm_refine_step(cm_kmesh *km, long k_split, cm_work *touched);
+/* Marks the four vertices of the quad around the edge opposite c with
+ * stamp, so that splits of one round share no vertex; 0 (nothing marked)
+ * if one was marked already. */
+int cm_refine_take_quad(cm_kmesh *km, int32_t c, uint32_t stamp);
 /* The up to max best candidate edges (corners), best first, into out
  * (room for 3 * max). Returns how many. */
 long cm_refine_candidates(const cm_kmesh *km, long max, int32_t *out);
