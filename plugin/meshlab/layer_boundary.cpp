@@ -1,0 +1,91 @@
+#include "layer_boundary.h"
+
+#include <algorithm>
+
+namespace compatmesh_plugin {
+
+namespace {
+
+using OpenMesh::VertexHandle;
+
+// Edges of a face-less layer, directed so that each closed loop is
+// traversed one way. Where a vertex does not have exactly two edges the
+// edges are kept as they are and the adapter reports that vertex.
+std::vector<std::pair<int, int>> directed_edges(const std::vector<std::pair<int, int>> &edges,
+                                                std::size_t n_vertices)
+{
+  std::vector<std::vector<int>> incident(n_vertices);
+  for (std::size_t e = 0; e < edges.size(); e++) {
+    incident[edges[e].first].push_back(int(e));
+    incident[edges[e].second].push_back(int(e));
+  }
+  for (const auto &list : incident)
+    if (!list.empty() && list.size() != 2) return edges;
+
+  std::vector<std::pair<int, int>> directed;
+  std::vector<char> used(edges.size(), 0);
+  for (std::size_t start = 0; start < edges.size(); start++) {
+    if (used[start]) continue;
+    int from = edges[start].first, e = int(start);
+    while (!used[e]) {
+      used[e] = 1;
+      int to = edges[e].first == from ? edges[e].second : edges[e].first;
+      directed.emplace_back(from, to);
+      const std::vector<int> &next = incident[to];
+      e = next[0] == e ? next[1] : next[0];
+      from = to;
+    }
+  }
+  return directed;
+}
+
+}  // namespace
+
+compatmesh::PolyMesh layer_to_openmesh(const CMeshO &layer, std::vector<int> &source_index)
+{
+  compatmesh::PolyMesh mesh;
+  std::vector<int> compact(layer.vert.size(), -1);
+  source_index.clear();
+  for (std::size_t i = 0; i < layer.vert.size(); i++) {
+    const CVertexO &v = layer.vert[i];
+    if (v.IsD()) continue;
+    compact[i] = int(source_index.size());
+    source_index.push_back(int(i));
+    mesh.add_vertex(compatmesh::PolyMesh::Point(v.cP()[0], v.cP()[1], v.cP()[2]));
+  }
+  auto index_of = [&](const CVertexO *v) { return compact[v - &layer.vert[0]]; };
+
+  for (std::size_t f = 0; f < layer.face.size(); f++) {
+    const CFaceO &face = layer.face[f];
+    if (face.IsD()) continue;
+    std::vector<VertexHandle> corners;
+    for (int k = 0; k < 3; k++) corners.push_back(VertexHandle(index_of(face.cV(k))));
+    if (!mesh.add_face(corners).is_valid())
+      throw compatmesh::Error(CM_ERR_ARGUMENT,
+                              "face " + std::to_string(f) +
+                                  " makes the mesh non-manifold or flips its orientation; need a disk");
+  }
+  if (mesh.n_faces() > 0) return mesh;
+
+  std::vector<std::pair<int, int>> edges;
+  for (const CEdgeO &edge : layer.edge)
+    if (!edge.IsD()) edges.emplace_back(index_of(edge.cV(0)), index_of(edge.cV(1)));
+  for (const auto &e : directed_edges(edges, mesh.n_vertices()))
+    mesh.new_edge(VertexHandle(e.first), VertexHandle(e.second));
+  return mesh;
+}
+
+compatmesh::Boundary layer_boundary(const CMeshO &layer, bool &is_disk)
+{
+  std::vector<int> source_index;
+  compatmesh::PolyMesh mesh = layer_to_openmesh(layer, source_index);
+  is_disk = mesh.n_faces() > 0;
+  if (!is_disk && mesh.n_edges() == 0)
+    throw compatmesh::Error(CM_ERR_ARGUMENT,
+                            "the layer has neither faces nor edges; need a closed polyline or a disk");
+  compatmesh::Boundary boundary = compatmesh::read_boundary(mesh);
+  for (int &v : boundary.source_vertex) v = source_index[v];
+  return boundary;
+}
+
+}  // namespace compatmesh_plugin
