@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace compatmesh {
@@ -16,15 +15,17 @@ double edge_length(const double *xyz, std::size_t n, std::size_t i)
                    (q[2] - p[2]) * (q[2] - p[2]));
 }
 
-double shortest_normalised_edge(const double *xyz, std::size_t n)
+// For each vertex, the shorter of its two edges, in parameter units.
+std::vector<double> local_edge(const std::vector<double> &params)
 {
-  double total = 0, shortest = std::numeric_limits<double>::infinity();
+  const std::size_t n = params.size();
+  std::vector<double> local(n);
   for (std::size_t i = 0; i < n; i++) {
-    double l = edge_length(xyz, n, i);
-    total += l;
-    shortest = std::min(shortest, l);
+    double after = (i + 1 < n ? params[i + 1] : 1.0) - params[i];
+    double before = params[i] - (i > 0 ? params[i - 1] : params[n - 1] - 1.0);
+    local[i] = std::min(before, after);
   }
-  return shortest / total;
+  return local;
 }
 
 // The point at parameter t of the loop, on the edge starting at vertex i
@@ -66,7 +67,7 @@ void resample_common_count(const double *a, std::size_t na, const double *b, std
                            ResampledLoop &out_a, ResampledLoop &out_b)
 {
   const std::vector<double> ta = arc_length_parameters(a, na), tb = arc_length_parameters(b, nb);
-  const double merge = 0.25 * std::min(shortest_normalised_edge(a, na), shortest_normalised_edge(b, nb));
+  const std::vector<double> la = local_edge(ta), lb = local_edge(tb);
   out_a = ResampledLoop();
   out_b = ResampledLoop();
 
@@ -76,6 +77,7 @@ void resample_common_count(const double *a, std::size_t na, const double *b, std
   std::size_t i = 0, j = 0;
   while (i < na || j < nb) {
     double next_a = i < na ? ta[i] : 2.0, next_b = j < nb ? tb[j] : 2.0;
+    double merge = i < na && j < nb ? 0.5 * std::min(la[i], lb[j]) : 0.0;
     if (std::fabs(next_a - next_b) <= merge) {
       take_vertex(a, i++, out_a);
       take_vertex(b, j++, out_b);

@@ -21,9 +21,10 @@ struct ResampledLoop {
 // length from its first vertex; both get one point per parameter in the
 // union of the two parameter sets, so every input vertex is kept (its shape
 // is unchanged) and the other loop's vertices appear as points inserted on
-// its edges. A vertex of a and one of b closer in parameter than a quarter
-// of the shortest normalised edge share one parameter, so no edge shorter
-// than that is created.
+// its edges. A vertex of a and one of b closer in parameter than half the
+// shorter edge at either of them are paired instead (both kept, no point
+// inserted), which keeps inserted points away from the vertices next to
+// them.
 //   a, b: 3 * na and 3 * nb doubles, point i at [3i, 3i+2]
 // Returns the two loops, with equal sizes (at most na + nb). Throws
 // std::invalid_argument for fewer than 3 points or a loop of zero length.
