@@ -6,9 +6,11 @@ JOBS ?= $(shell nproc)
 # Debian packages the build, the tests, the demo and the bench need.
 DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
   fonts-dejavu-core python3 python3-numpy python3-pytest python3-meshio \
-  libopenmesh-dev libeigen3-dev pybind11-dev python3-dev
+  libopenmesh-dev libeigen3-dev pybind11-dev python3-dev \
+  meshlab dpkg-dev qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev \
+  libglew-dev xvfb xauth
 
-.PHONY: all deps build demo test bench clean
+.PHONY: all deps build demo test bench clean install-meshlab-plugin
 
 all: build
 
@@ -35,6 +37,10 @@ demo: build
 
 bench: build
 	bash bench/run_bench.sh $(BUILD)
+
+# Puts the MeshLab plugin where the MeshLab GUI loads plugins from.
+install-meshlab-plugin: build
+	cmake --install $(BUILD) --component meshlab_plugin
 
 clean:
 	rm -rf $(BUILD)
