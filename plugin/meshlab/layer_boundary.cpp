@@ -46,12 +46,16 @@ compatmesh::PolyMesh layer_to_openmesh(const CMeshO &layer, std::vector<int> &so
   compatmesh::PolyMesh mesh;
   std::vector<int> compact(layer.vert.size(), -1);
   source_index.clear();
+  const bool identity = layer.Tr == Matrix44m::Identity();
   for (std::size_t i = 0; i < layer.vert.size(); i++) {
     const CVertexO &v = layer.vert[i];
     if (v.IsD()) continue;
     compact[i] = int(source_index.size());
     source_index.push_back(int(i));
-    mesh.add_vertex(compatmesh::PolyMesh::Point(v.cP()[0], v.cP()[1], v.cP()[2]));
+    // Layers may carry a placement matrix; results are written in world
+    // coordinates with none.
+    const Point3m p = identity ? v.cP() : layer.Tr * v.cP();
+    mesh.add_vertex(compatmesh::PolyMesh::Point(p[0], p[1], p[2]));
   }
   auto index_of = [&](const CVertexO *v) { return compact[v - &layer.vert[0]]; };
 

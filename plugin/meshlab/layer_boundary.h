@@ -14,8 +14,8 @@
 
 namespace compatmesh_plugin {
 
-// The layer as an OpenMesh mesh: vertices (deleted ones skipped, so
-// indices are compacted), faces, and for a mesh without faces its edges,
+// The layer as an OpenMesh mesh: vertices in world coordinates (the
+// layer's matrix applied; deleted ones skipped, so indices are compacted), faces, and for a mesh without faces its edges,
 // each directed along the polyline it belongs to (MeshLab's planar sections
 // do not direct them). source_index[i] is the layer's vertex index of
 // OpenMesh vertex i. Throws compatmesh::Error for faces OpenMesh cannot

@@ -367,6 +367,37 @@ def case_bad_counts_without_resampling(w):
              [('value="true" name="Resample"', 'value="false" name="Resample"')])
 
 
+def case_bad_sweep_twisted(w):
+    # Regular 12-gons paired half a turn apart: the pair is valid, but the
+    # straight-line section at t = 1/2 collapses every boundary vertex onto
+    # the centre, so the sweep must refuse (and add no layer).
+    a = star(12, 1.0, 1.0)
+    b = [(x, y, 1.0) for x, y, _ in a]
+    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(12))
+    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(12))
+    script = script_with(w, "pair_and_sweep.mlx", [('value="0" name="StartOffset"', 'value="6" name="StartOffset"')])
+    outs = {2: "pair_a.ply", 4: "s1.ply", 7: "lateral.ply"}
+    code, log = run(w, ["a.ply", "b.ply"], script, outs)
+    expect_error(code, log, "is invalid", w, outs.values())
+    assert "compatible triangulation: 12 boundary vertices" in log, "the pairing step did not succeed"
+    print("rejected with: " + [l for l in log.splitlines() if "Error: " in l][0])
+
+
+def case_bad_sweep_not_a_pair(w):
+    good_polyline(w, "a.ply")
+    good_polyline(w, "b.ply")
+    text = open(os.path.join(DOCS, "pair_and_sweep.mlx")).read()
+    sweep_only = text[:text.index(" <filter name=\"Compatible Triangulation")] + \
+        text[text.index(" <filter name=\"Compatible Sweep"):]
+    sweep_only = sweep_only.replace('value="2" name="FirstMesh"', 'value="0" name="FirstMesh"') \
+                           .replace('value="3" name="SecondMesh"', 'value="1" name="SecondMesh"')
+    path = os.path.join(w, "sweep.mlx")
+    open(path, "w").write(sweep_only)
+    code, log = run(w, ["a.ply", "b.ply"], path, {2: "s1.ply"})
+    expect_error(code, log, "both layers need faces", w, ["s1.ply"])
+    print("rejected with: " + [l for l in log.splitlines() if "Error: " in l][0])
+
+
 if __name__ == "__main__":
     with tempfile.TemporaryDirectory() as workdir:
         globals()["case_" + CASE](workdir)
