@@ -9,18 +9,28 @@ namespace {
 using OpenMesh::VertexHandle;
 
 // Edges of a face-less layer, directed so that each closed loop is
-// traversed one way. Where a vertex does not have exactly two edges the
-// edges are kept as they are and the adapter reports that vertex.
+// traversed one way (MeshLab's edges have no direction). The adapter then
+// reports several loops. source_index names vertices in messages.
 std::vector<std::pair<int, int>> directed_edges(const std::vector<std::pair<int, int>> &edges,
-                                                std::size_t n_vertices)
+                                                std::size_t n_vertices,
+                                                const std::vector<int> &source_index)
 {
   std::vector<std::vector<int>> incident(n_vertices);
   for (std::size_t e = 0; e < edges.size(); e++) {
+    if (edges[e].first == edges[e].second)
+      throw compatmesh::Error(CM_ERR_ARGUMENT, "edge " + std::to_string(e) + " is a loop at vertex " +
+                                                   std::to_string(source_index[edges[e].first]));
     incident[edges[e].first].push_back(int(e));
     incident[edges[e].second].push_back(int(e));
   }
-  for (const auto &list : incident)
-    if (!list.empty() && list.size() != 2) return edges;
+  for (std::size_t v = 0; v < n_vertices; v++)
+    if (!incident[v].empty() && incident[v].size() != 2)
+      throw compatmesh::Error(
+          CM_ERR_ARGUMENT, "the edges are not one closed polyline: vertex " +
+                               std::to_string(source_index[v]) + " has " +
+                               (incident[v].size() == 1
+                                    ? std::string("one edge (an open end)")
+                                    : std::to_string(incident[v].size()) + " edges (a branch)"));
 
   std::vector<std::pair<int, int>> directed;
   std::vector<char> used(edges.size(), 0);
@@ -74,7 +84,7 @@ compatmesh::PolyMesh layer_to_openmesh(const CMeshO &layer, std::vector<int> &so
   std::vector<std::pair<int, int>> edges;
   for (const CEdgeO &edge : layer.edge)
     if (!edge.IsD()) edges.emplace_back(index_of(edge.cV(0)), index_of(edge.cV(1)));
-  for (const auto &e : directed_edges(edges, mesh.n_vertices()))
+  for (const auto &e : directed_edges(edges, mesh.n_vertices(), source_index))
     mesh.new_edge(VertexHandle(e.first), VertexHandle(e.second));
   return mesh;
 }

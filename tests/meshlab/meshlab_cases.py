@@ -326,7 +326,7 @@ def good_polyline(w, name="good.ply"):
 def case_bad_open_polyline(w):
     pts = star(10, 1.0, 0.6)
     write_ply(os.path.join(w, "bad.ply"), pts, edges=loop_edges(10)[:-1])
-    bad_case(w, [good_polyline(w), "bad.ply"], "layer 'bad.ply': the edges are not one closed polyline")
+    bad_case(w, [good_polyline(w), "bad.ply"], "layer 'bad.ply': the edges are not one closed polyline: vertex 0 has one edge (an open end)")
 
 
 def case_bad_two_loops(w):
