@@ -17,7 +17,7 @@ compatmesh::Boundary read_layer(const CMeshO &layer, const std::string &name, bo
   try {
     return layer_boundary(layer, is_disk);
   } catch (const compatmesh::Error &e) {
-    throw PairError("layer '" + name + "': " + e.what());
+    throw FilterError("layer '" + name + "': " + e.what());
   }
 }
 
@@ -33,7 +33,7 @@ compatmesh::Boundary rebuild(std::vector<double> xyz, std::vector<int> source, b
                                      is_disk ? compatmesh::NormalSign::FollowWinding
                                              : compatmesh::NormalSign::Canonical);
   } catch (const compatmesh::Error &e) {
-    throw PairError("layer '" + name + "': " + e.what());
+    throw FilterError("layer '" + name + "': " + e.what());
   }
 }
 
@@ -75,7 +75,7 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   const std::string names[2] = {first_name, second_name};
   for (int g = 0; g < 2; g++)
     if (polygons[g].size() < 3)
-      throw PairError("layer '" + names[g] + "': its boundary has " +
+      throw FilterError("layer '" + names[g] + "': its boundary has " +
                       std::to_string(polygons[g].size()) + " vertices; need at least 3");
   if (settings.start_offset != 0 || settings.reverse_second)
     polygons[1] = reorder(polygons[1], settings.start_offset, settings.reverse_second, disk[1],
@@ -84,7 +84,7 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   const std::size_t n0 = polygons[0].size(), n1 = polygons[1].size();
   if (n0 != n1) {
     if (!settings.resample)
-      throw PairError("the boundaries have " + std::to_string(n0) + " and " + std::to_string(n1) +
+      throw FilterError("the boundaries have " + std::to_string(n0) + " and " + std::to_string(n1) +
                       " vertices; tick 'Resample to a common count' or give equal counts");
     compatmesh::ResampledLoop a, b;
     compatmesh::resample_common_count(polygons[0].xyz.data(), n0, polygons[1].xyz.data(), n1, a, b);
@@ -109,7 +109,7 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
     std::string message = e.what();
     if (e.status() == CM_ERR_ORIENTATION_MISMATCH)
       message += "; tick 'Reverse second boundary'";
-    throw PairError(message);
+    throw FilterError(message);
   }
 
   const cm_result *r = result.get();
@@ -133,7 +133,7 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
     std::fill(layer.quality.begin() + n, layer.quality.end(), 1.0f);  // 1 marks Steiner vertices
     std::string problem = check_float_geometry(layer.xyz, n, b.frame, triangles);
     if (!problem.empty())
-      throw PairError("the compatible triangulation is valid in double precision but not after "
+      throw FilterError("the compatible triangulation is valid in double precision but not after "
                       "rounding to MeshLab's float coordinates (layer '" + names[g] + "': " +
                       problem + "); nothing was added");
     outcome.layers.push_back(std::move(layer));

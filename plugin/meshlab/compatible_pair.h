@@ -5,12 +5,12 @@
 #ifndef FILTER_COMPATMESH_COMPATIBLE_PAIR_H
 #define FILTER_COMPATMESH_COMPATIBLE_PAIR_H
 
+#include "filter_error.h"
 #include "layers.h"
 #include "progress.h"
 
 #include <common/ml_mesh_type.h>
 
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -30,14 +30,9 @@ struct PairOutcome {
   std::vector<std::string> log;   // lines for MeshLab's log
 };
 
-// What the filter reports as its error message.
-class PairError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // first, second: the layers; names: their labels (for messages and the new
-// layers' labels). Throws PairError with a one-line message.
+// layers' labels). Throws FilterError with a one-line message.
 PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
                             const std::string &first_name, const std::string &second_name,
                             const PairSettings &settings, ThrottledProgress &progress);

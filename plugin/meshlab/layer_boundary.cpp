@@ -82,8 +82,14 @@ compatmesh::PolyMesh layer_to_openmesh(const CMeshO &layer, std::vector<int> &so
   if (mesh.n_faces() > 0) return mesh;
 
   std::vector<std::pair<int, int>> edges;
-  for (const CEdgeO &edge : layer.edge)
-    if (!edge.IsD()) edges.emplace_back(index_of(edge.cV(0)), index_of(edge.cV(1)));
+  for (std::size_t e = 0; e < layer.edge.size(); e++) {
+    const CEdgeO &edge = layer.edge[e];
+    if (edge.IsD()) continue;
+    int a = index_of(edge.cV(0)), b = index_of(edge.cV(1));
+    if (a < 0 || b < 0)
+      throw compatmesh::Error(CM_ERR_ARGUMENT, "edge " + std::to_string(e) + " uses a deleted vertex");
+    edges.emplace_back(a, b);
+  }
   for (const auto &e : directed_edges(edges, mesh.n_vertices(), source_index))
     mesh.new_edge(VertexHandle(e.first), VertexHandle(e.second));
   return mesh;

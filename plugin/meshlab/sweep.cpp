@@ -48,27 +48,27 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
                               const std::string &first_name, const std::string &second_name,
                               int sections, ThrottledProgress &progress)
 {
-  if (sections < 1) throw PairError("Sections must be at least 1");
+  if (sections < 1) throw FilterError("Sections must be at least 1");
   std::vector<int> index0, index1;
   compatmesh::PolyMesh mesh0, mesh1;
   try {
     mesh0 = layer_to_openmesh(first, index0);
     mesh1 = layer_to_openmesh(second, index1);
   } catch (const compatmesh::Error &e) {
-    throw PairError(std::string("reading the layers: ") + e.what());
+    throw FilterError(std::string("reading the layers: ") + e.what());
   }
   if (mesh0.n_faces() == 0 || mesh1.n_faces() == 0)
-    throw PairError("both layers need faces: run 'Compatible Triangulation of Two Boundaries' first");
+    throw FilterError("both layers need faces: run 'Compatible Triangulation of Two Boundaries' first");
   Geometry g0 = geometry_of(mesh0), g1 = geometry_of(mesh1);
   if (g0.xyz.size() != g1.xyz.size() || g0.triangles != g1.triangles)
-    throw PairError("layers '" + first_name + "' and '" + second_name +
+    throw FilterError("layers '" + first_name + "' and '" + second_name +
                     "' do not have the same vertices and faces (not a compatible pair)");
 
   compatmesh::Boundary loop;
   try {
     loop = compatmesh::read_boundary(mesh0);
   } catch (const compatmesh::Error &e) {
-    throw PairError("layer '" + first_name + "': " + e.what());
+    throw FilterError("layer '" + first_name + "': " + e.what());
   }
   const std::size_t n = loop.size(), nv = g0.xyz.size() / 3;
   std::vector<int> order, position;
@@ -101,7 +101,7 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
                 "); linear sections need the two boundaries in parallel planes";
     }
     if (!problem.empty())
-      throw PairError("section " + std::to_string(s) + " of " + std::to_string(sections) +
+      throw FilterError("section " + std::to_string(s) + " of " + std::to_string(sections) +
                       " (t = " + std::to_string(t) + ") is invalid: " + problem + "; nothing was added");
     LayerData layer;
     layer.label = "section " + std::to_string(s);

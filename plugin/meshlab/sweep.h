@@ -5,7 +5,7 @@
 #ifndef FILTER_COMPATMESH_SWEEP_H
 #define FILTER_COMPATMESH_SWEEP_H
 
-#include "compatible_pair.h"
+#include "filter_error.h"
 #include "layers.h"
 #include "progress.h"
 
@@ -27,7 +27,7 @@ struct SweepOutcome {
   std::vector<std::string> log;
 };
 
-// sections: intermediate sections, >= 1. Throws PairError.
+// sections: intermediate sections, >= 1. Throws FilterError.
 SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
                               const std::string &first_name, const std::string &second_name,
                               int sections, ThrottledProgress &progress);
