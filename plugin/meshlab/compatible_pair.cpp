@@ -108,7 +108,7 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   } catch (const compatmesh::Error &e) {
     std::string message = e.what();
     if (e.status() == CM_ERR_ORIENTATION_MISMATCH)
-      message += "; tick 'Reverse second boundary'";
+      message += " (toggle 'Reverse second boundary')";
     throw FilterError(message);
   }
 

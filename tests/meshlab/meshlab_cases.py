@@ -41,6 +41,16 @@ def write_ply(path, points, edges=(), faces=()):
             f.write("%d %s\n" % (len(t), " ".join(map(str, t))))
 
 
+def write_obj_polyline(path, points):
+    """One `l` element per edge: MeshLab 2020.09 reads only the first edge
+    of a longer `l` line."""
+    with open(path, "w") as f:
+        for p in points:
+            f.write("v %.9g %.9g %.9g\n" % as_float32(p))
+        for a, b in loop_edges(len(points)):
+            f.write("l %d %d\n" % (a + 1, b + 1))
+
+
 def write_off(path, points, faces):
     with open(path, "w") as f:
         f.write("OFF\n%d %d 0\n" % (len(points), len(faces)))
@@ -246,6 +256,28 @@ def case_ply_polylines(w):
     print("PLY polylines: %d vertices, %d triangles" % (len(pa), len(ta)))
 
 
+def case_obj_polylines(w):
+    # OBJ polylines with 18 and 15 vertices, the second in a tilted plane
+    # and stored clockwise: walked the other way round (ReverseSecond) from
+    # its 4th vertex.
+    a = star(18, 1.0, 0.7)
+    b = tilt([(x, y, 0.0) for x, y, _ in star(15, 1.1, 0.8, phase=0.3)], 0.5)[::-1]
+    write_obj_polyline(os.path.join(w, "a.obj"), a)
+    write_obj_polyline(os.path.join(w, "b.obj"), b)
+    script = script_with(w, "pair.mlx", [('value="0" name="StartOffset"', 'value="3" name="StartOffset"'),
+                                         ('value="false" name="ReverseSecond"', 'value="true" name="ReverseSecond"')])
+    code, log = run(w, ["a.obj", "b.obj"], script, {2: "out_a.ply", 3: "out_b.ply"})
+    expect_ok(code, log)
+    assert "resampled 18 and 15 boundary vertices" in log, log
+    pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, 10.0)
+    # Vertex 0 of the first is paired with vertex 3 of the second.
+    a32 = np.array(a, dtype=np.float32).astype(np.float64)
+    b32 = np.array(b, dtype=np.float32).astype(np.float64)
+    i0 = [i for i in range(len(pa)) if np.array_equal(pa[i], a32[0])][0]
+    assert np.array_equal(pb[i0], b32[3]), "StartOffset not applied"
+    print("OBJ polylines: %d vertices, %d triangles" % (len(pa), len(ta)))
+
+
 def case_off_disks(w):
     # Disk meshes (OFF faces), equal counts; the second lies in a tilted
     # plane and is paired from its 3rd vertex on. (Not OBJ: Debian's meshlab
@@ -354,6 +386,11 @@ def case_bad_not_planar(w):
 def case_bad_too_few(w):
     write_ply(os.path.join(w, "bad.ply"), [(0, 0, 0), (1, 0, 0)], edges=[(0, 1), (1, 0)])
     bad_case(w, [good_polyline(w), "bad.ply"], "vertices; need at least 3")
+
+
+def case_bad_opposite_directions(w):
+    write_ply(os.path.join(w, "cw.ply"), star(10, 1.2, 0.5)[::-1], edges=loop_edges(10))
+    bad_case(w, [good_polyline(w), "cw.ply"], "(toggle 'Reverse second boundary')")
 
 
 def case_bad_same_layer(w):
