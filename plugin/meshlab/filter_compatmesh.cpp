@@ -56,7 +56,9 @@ QString FilterCompatMesh::filterInfo(FilterIDType filter) const
       return QString("Builds intermediate sections between two compatible layers (the output of "
                      "<i>Compatible Triangulation of Two Boundaries</i>) and the lateral surface "
                      "through their boundaries, as new layers. Every section is checked with exact "
-                     "predicates; an invalid section is reported and nothing is added.") + kCitation;
+                     "predicates after rounding to float (projected onto its best-fitting plane, no "
+                     "triangle may flip and the boundary must stay simple); an invalid section is "
+                     "reported and nothing is added.") + kCitation;
   }
   return "unknown";
 }

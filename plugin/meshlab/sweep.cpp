@@ -7,6 +7,10 @@ namespace compatmesh_plugin {
 
 namespace {
 
+// fit_plane's tolerance is a fraction of the bounding-box diagonal, which
+// no point of the box can exceed.
+constexpr double kAnyBend = 1.0;
+
 struct Geometry {
   std::vector<double> xyz;
   std::vector<int32_t> triangles;
@@ -91,14 +95,16 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
     std::vector<float> ordered;
     for (int v : order) ordered.insert(ordered.end(), &xyz[3 * v], &xyz[3 * v + 3]);
     for (std::size_t i = 0; i < 3 * n; i++) ring.push_back(ordered[i]);
+    // Between non-parallel planes a section is slightly bent: it is valid
+    // when it is a graph over its best-fitting plane, so any bend is
+    // accepted by the fit and the exact check decides.
     std::string problem;
     try {
-      compatmesh::PlaneFrame frame = compatmesh::fit_plane(
-          ring.data(), n, compatmesh::kDefaultPlanarityTolerance, compatmesh::NormalSign::FollowWinding);
+      compatmesh::PlaneFrame frame =
+          compatmesh::fit_plane(ring.data(), n, kAnyBend, compatmesh::NormalSign::FollowWinding);
       problem = check_float_geometry(ordered, n, frame, reindexed);
     } catch (const compatmesh::PlaneError &e) {
-      problem = std::string("not planar (") + e.what() +
-                "); linear sections need the two boundaries in parallel planes";
+      problem = e.what();
     }
     if (!problem.empty())
       throw FilterError("section " + std::to_string(s) + " of " + std::to_string(sections) +

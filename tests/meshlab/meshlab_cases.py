@@ -178,7 +178,7 @@ def on_polyline(p, poly, tol):
     return False
 
 
-def check_layer(path, input_points, min_angle_bound=None):
+def check_layer(path, input_points, min_angle_bound=None, steiner_flags=True):
     """A saved output layer: one boundary loop equal to the input polygon
     (every input vertex present bit for bit as float, every other boundary
     vertex on it), every triangle strictly positive about the boundary's
@@ -187,7 +187,7 @@ def check_layer(path, input_points, min_angle_bound=None):
     mesh = meshio.read(path)
     pts = mesh.points.astype(np.float64)
     tris = mesh.cells_dict["triangle"]
-    q = mesh.point_data["quality"]
+    q = mesh.point_data.get("quality")
     loop = boundary_loop(tris)
     inp = np.array(input_points, dtype=np.float32).astype(np.float64)
     have = {tuple(p) for p in pts[loop]}
@@ -206,7 +206,8 @@ def check_layer(path, input_points, min_angle_bound=None):
     assert all(s == signs[0] for s in signs) and signs[0] != 0, \
         "%s: %d triangles are flat or inverted" % (path, sum(1 for s in signs if s != signs[0]))
     interior = set(range(len(pts))) - set(loop)
-    assert {i for i in range(len(pts)) if q[i] == 1.0} == interior, "%s: Steiner flags wrong" % path
+    if steiner_flags:
+        assert {i for i in range(len(pts)) if q[i] == 1.0} == interior, "%s: Steiner flags wrong" % path
     if min_angle_bound is not None:
         worst = min(min_angle(pts[t]) for t in tris)
         assert worst >= min_angle_bound, "%s: smallest angle %.2f < %.2f" % (path, worst, min_angle_bound)
@@ -316,7 +317,7 @@ def case_sweep(w):
         assert np.allclose(mesh.points, expected, atol=1e-6), "section %d: not at t = %g" % (k, t)
         assert np.allclose(mesh.points[:, 2], 2.0 * t, atol=1e-6), "section %d: not planar" % k
         ring = [tuple(p) for p in mesh.points[boundary_loop(ta)]]
-        check_layer(os.path.join(w, "s%d.ply" % k), ring)
+        check_layer(os.path.join(w, "s%d.ply" % k), ring, steiner_flags=False)
     lateral = meshio.read(os.path.join(w, "lateral.ply"))
     assert len(lateral.cells_dict["triangle"]) == 2 * 12 * 4, len(lateral.cells_dict["triangle"])
     print("sweep: 3 sections valid, lateral surface of %d triangles" % len(lateral.cells_dict["triangle"]))
@@ -327,7 +328,7 @@ def case_planar_sections(w):
     # Compute Planar Section (one tilted), paired by the plugin.
     pts, faces = twisted_solid()
     write_ply(os.path.join(w, "solid.ply"), pts, faces=faces)
-    outs = {1: "sect_a.ply", 2: "sect_b.ply", 3: "out_a.ply", 4: "out_b.ply"}
+    outs = {1: "sect_a.ply", 2: "sect_b.ply", 3: "out_a.ply", 4: "out_b.ply", 6: "mid.ply", 8: "lateral.ply"}
     code, log = run(w, ["solid.ply"], os.path.join(DOCS, "sections_and_pair.mlx"), outs)
     expect_ok(code, log)
     sections = []
@@ -338,8 +339,17 @@ def case_planar_sections(w):
         order = np.argsort(np.arctan2(pts[:, 1], pts[:, 0]))
         sections.append([tuple(p) for p in pts[order]])
     assert len(sections[0]) != len(sections[1]), "the sections happen to have equal counts"
-    pa, _, ta = check_pair(w, "out_a.ply", "out_b.ply", sections[0], sections[1], 10.0)
-    print("planar sections of %d and %d vertices paired: %d vertices, %d triangles"
+    pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", sections[0], sections[1], 10.0)
+    # The sweep between the two (non-parallel) sections: the middle one is
+    # the average and a valid disk over its plane.
+    mid = meshio.read(os.path.join(w, "mid.ply"))
+    assert np.array_equal(mid.cells_dict["triangle"], ta)
+    assert np.allclose(mid.points, ((pa + pb) / 2).astype(np.float32), atol=1e-6)
+    check_layer(os.path.join(w, "mid.ply"), [tuple(p) for p in mid.points[boundary_loop(ta)]],
+                steiner_flags=False)
+    n_lateral = len(meshio.read(os.path.join(w, "lateral.ply")).cells_dict["triangle"])
+    assert n_lateral == 2 * len(boundary_loop(ta)) * 4, n_lateral
+    print("planar sections of %d and %d vertices paired: %d vertices, %d triangles; swept"
           % (len(sections[0]), len(sections[1]), len(pa), len(ta)))
 
 
