@@ -414,6 +414,20 @@ def case_bad_counts_without_resampling(w):
              [('value="true" name="Resample"', 'value="false" name="Resample"')])
 
 
+def case_bad_float_rounding(w):
+    # Spiky stars 10^7 away from the origin, where floats are 1 apart: the
+    # core's triangulation (paired a quarter turn off, target angle 33) is
+    # valid in double, but its Steiner vertices rounded to MeshLab's floats
+    # are not, so the filter must refuse and add nothing.
+    a = [(x + 1e7, y + 1e7, 0.0) for x, y, _ in star(24, 8, 2.4)]
+    b = [(x + 1e7, y + 1e7, 1.0) for x, y, _ in star(24, 9.6, 4, phase=0.2)]
+    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(24))
+    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(24))
+    bad_case(w, ["a.ply", "b.ply"], "valid in double precision but not after rounding to MeshLab's float",
+             [('value="0" name="StartOffset"', 'value="5" name="StartOffset"'),
+              ('value="25" name="MinAngle"', 'value="33" name="MinAngle"')])
+
+
 def case_bad_sweep_twisted(w):
     # Regular 12-gons paired half a turn apart: the pair is valid, but the
     # straight-line section at t = 1/2 collapses every boundary vertex onto
