@@ -80,6 +80,11 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
   std::vector<int32_t> reindexed(g0.triangles.size());
   for (std::size_t i = 0; i < reindexed.size(); i++) reindexed[i] = position[g0.triangles[i]];
 
+  // Sections keep the first layer's vertex quality (the Steiner flags).
+  std::vector<float> quality;
+  if (vcg::tri::HasPerVertexQuality(first))
+    for (int v : index0) quality.push_back(float(first.vert[v].cQ()));
+
   SweepOutcome outcome;
   std::vector<std::vector<float>> levels;  // boundary loops of every level, for the lateral surface
   auto add_level = [&](const std::vector<float> &xyz) {
@@ -113,6 +118,7 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
     layer.label = "section " + std::to_string(s);
     layer.xyz = xyz;
     layer.triangles = g0.triangles;
+    layer.quality = quality;
     outcome.layers.push_back(std::move(layer));
     add_level(xyz);
     progress.report(double(s) / sections, "sections", 0, 0.9);

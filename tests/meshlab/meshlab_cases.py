@@ -178,7 +178,7 @@ def on_polyline(p, poly, tol):
     return False
 
 
-def check_layer(path, input_points, min_angle_bound=None, steiner_flags=True):
+def check_layer(path, input_points, min_angle_bound=None):
     """A saved output layer: one boundary loop equal to the input polygon
     (every input vertex present bit for bit as float, every other boundary
     vertex on it), every triangle strictly positive about the boundary's
@@ -206,8 +206,8 @@ def check_layer(path, input_points, min_angle_bound=None, steiner_flags=True):
     assert all(s == signs[0] for s in signs) and signs[0] != 0, \
         "%s: %d triangles are flat or inverted" % (path, sum(1 for s in signs if s != signs[0]))
     interior = set(range(len(pts))) - set(loop)
-    if steiner_flags:
-        assert {i for i in range(len(pts)) if q[i] == 1.0} == interior, "%s: Steiner flags wrong" % path
+    assert q is not None and {i for i in range(len(pts)) if q[i] == 1.0} == interior, \
+        "%s: Steiner flags wrong" % path
     if min_angle_bound is not None:
         worst = min(min_angle(pts[t]) for t in tris)
         assert worst >= min_angle_bound, "%s: smallest angle %.2f < %.2f" % (path, worst, min_angle_bound)
@@ -317,7 +317,7 @@ def case_sweep(w):
         assert np.allclose(mesh.points, expected, atol=1e-6), "section %d: not at t = %g" % (k, t)
         assert np.allclose(mesh.points[:, 2], 2.0 * t, atol=1e-6), "section %d: not planar" % k
         ring = [tuple(p) for p in mesh.points[boundary_loop(ta)]]
-        check_layer(os.path.join(w, "s%d.ply" % k), ring, steiner_flags=False)
+        check_layer(os.path.join(w, "s%d.ply" % k), ring)  # Steiner flags carried over
     lateral = meshio.read(os.path.join(w, "lateral.ply"))
     assert len(lateral.cells_dict["triangle"]) == 2 * 12 * 4, len(lateral.cells_dict["triangle"])
     print("sweep: 3 sections valid, lateral surface of %d triangles" % len(lateral.cells_dict["triangle"]))
@@ -345,8 +345,7 @@ def case_planar_sections(w):
     mid = meshio.read(os.path.join(w, "mid.ply"))
     assert np.array_equal(mid.cells_dict["triangle"], ta)
     assert np.allclose(mid.points, ((pa + pb) / 2).astype(np.float32), atol=1e-6)
-    check_layer(os.path.join(w, "mid.ply"), [tuple(p) for p in mid.points[boundary_loop(ta)]],
-                steiner_flags=False)
+    check_layer(os.path.join(w, "mid.ply"), [tuple(p) for p in mid.points[boundary_loop(ta)]])
     n_lateral = len(meshio.read(os.path.join(w, "lateral.ply")).cells_dict["triangle"])
     assert n_lateral == 2 * len(boundary_loop(ta)) * 4, n_lateral
     print("planar sections of %d and %d vertices paired: %d vertices, %d triangles; swept"
