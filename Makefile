@@ -6,12 +6,14 @@ JOBS ?= $(shell nproc)
 # Debian packages the build, the tests, the demo and the bench need.
 DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
   fonts-dejavu-core python3 python3-numpy python3-pytest python3-meshio \
-  libopenmesh-dev libeigen3-dev pybind11-dev python3-dev
+  libopenmesh-dev libeigen3-dev pybind11-dev python3-dev \
+  meshlab dpkg-dev qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev \
+  libglew-dev xvfb xauth
 
 # Only `make bench` needs these: CGAL meshes each polygon alone, to compare.
 BENCH_PACKAGES = libcgal-dev
 
-.PHONY: all deps bench-deps build demo test bench clean
+.PHONY: all deps bench-deps build demo test bench clean install-meshlab-plugin
 
 all: build
 
@@ -41,6 +43,10 @@ bench-deps:
 
 bench: bench-deps build
 	bash bench/run_bench.sh $(BUILD)
+
+# Puts the MeshLab plugin where the MeshLab GUI loads plugins from.
+install-meshlab-plugin: build
+	cmake --install $(BUILD) --component meshlab_plugin
 
 clean:
 	rm -rf $(BUILD)

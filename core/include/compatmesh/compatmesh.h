@@ -228,6 +228,26 @@ cm_status cm_result_quality(const cm_result *result, size_t g, cm_quality *quali
  * (equal to cm_result_quality when options.remesh was 0). */
 cm_status cm_result_quality_before(const cm_result *result, size_t g, cm_quality *quality);
 
+
+/* Exact validity of one geometry whose coordinates changed after
+ * cm_triangulate (rounded to float by a file format or a host program,
+ * interpolated by a morph), keeping the result's triangle list.
+ *   xy:         2 * num_vertices doubles; vertices 0..n-1 are the boundary
+ *               polygon in order (the output order contract)
+ *   triangles:  3 * num_triangles indices
+ *   where, other: may be NULL; receive the location of the failure, -1 when
+ *               there is none
+ * Returns CM_OK when every triangle is strictly counter-clockwise and the
+ * boundary is simple (then the triangles tile the polygon); otherwise
+ * CM_ERR_ZERO_AREA (triangle *where is flat or clockwise),
+ * CM_ERR_REPEATED_VERTEX or CM_ERR_SELF_INTERSECTION (boundary vertices or
+ * edges *where and *other), CM_ERR_NOT_FINITE (vertex *where),
+ * CM_ERR_ARGUMENT (bad pointers, n < 3, index out of range: triangle *where),
+ * CM_ERR_NO_MEMORY. */
+cm_status cm_check_geometry(const double *xy, size_t n, size_t num_vertices,
+                            const int32_t *triangles, size_t num_triangles,
+                            long *where, long *other);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,32 @@
+// MeshLab keeps float coordinates: a result computed in doubles is only
+// handed over after its float-rounded coordinates pass the core's exact
+// validity check.
+#ifndef FILTER_COMPATMESH_FLOAT_CHECK_H
+#define FILTER_COMPATMESH_FLOAT_CHECK_H
+
+#include <compatmesh/plane.hh>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace compatmesh_plugin {
+
+// Rounds 3D points to float (what the layer will store).
+std::vector<float> round_to_float(const std::vector<double> &xyz);
+
+// Checks one geometry as MeshLab will store it.
+//   xyz:       3 * num_vertices floats, the boundary polygon first (n
+//              vertices, in order), as in the core's output
+//   frame:     the plane the triangles are counter-clockwise in
+//   triangles: 3 * num_triangles indices
+// Projects the float points into the plane (in double) and runs
+// cm_check_geometry. Returns "" when valid, else a one-line reason naming
+// the triangle, vertices or edges.
+std::string check_float_geometry(const std::vector<float> &xyz, std::size_t n,
+                                 const compatmesh::PlaneFrame &frame,
+                                 const std::vector<int32_t> &triangles);
+
+}  // namespace compatmesh_plugin
+
+#endif

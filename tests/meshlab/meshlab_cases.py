@@ -1,0 +1,463 @@
+"""MeshLab plugin tests: meshlabserver (through build/bin/meshlabserver-compatmesh)
+runs the .mlx scripts of docs/meshlab on PLY and OBJ inputs made here; the
+saved layers are checked with exact arithmetic.
+
+Usage: meshlab_cases.py WRAPPER DOCS_DIR CASE
+"""
+import math
+import os
+import subprocess
+import sys
+import tempfile
+from fractions import Fraction
+
+import meshio
+import numpy as np
+
+WRAPPER, DOCS, CASE = sys.argv[1], sys.argv[2], sys.argv[3]
+
+
+# ---- inputs -------------------------------------------------------------
+
+def as_float32(p):
+    """The point as MeshLab stores it; 9 digits print a float exactly."""
+    return tuple(float(np.float32(v)) for v in p)
+
+
+def write_ply(path, points, edges=(), faces=()):
+    with open(path, "w") as f:
+        f.write("ply\nformat ascii 1.0\nelement vertex %d\n" % len(points))
+        f.write("property float x\nproperty float y\nproperty float z\n")
+        if edges:
+            f.write("element edge %d\nproperty int vertex1\nproperty int vertex2\n" % len(edges))
+        if faces:
+            f.write("element face %d\nproperty list uchar int vertex_indices\n" % len(faces))
+        f.write("end_header\n")
+        for p in points:
+            f.write("%.9g %.9g %.9g\n" % as_float32(p))
+        for e in edges:
+            f.write("%d %d\n" % tuple(e))
+        for t in faces:
+            f.write("%d %s\n" % (len(t), " ".join(map(str, t))))
+
+
+def write_obj_polyline(path, points):
+    """One `l` element per edge: MeshLab 2020.09 reads only the first edge
+    of a longer `l` line."""
+    with open(path, "w") as f:
+        for p in points:
+            f.write("v %.9g %.9g %.9g\n" % as_float32(p))
+        for a, b in loop_edges(len(points)):
+            f.write("l %d %d\n" % (a + 1, b + 1))
+
+
+def write_off(path, points, faces):
+    with open(path, "w") as f:
+        f.write("OFF\n%d %d 0\n" % (len(points), len(faces)))
+        for p in points:
+            f.write("%.9g %.9g %.9g\n" % as_float32(p))
+        for t in faces:
+            f.write("%d %s\n" % (len(t), " ".join(map(str, t))))
+
+
+def loop_edges(n, start=0):
+    return [(start + i, start + (i + 1) % n) for i in range(n)]
+
+
+def star(n, r0, r1, z=0.0, phase=0.0, scale=(1.0, 1.0)):
+    """A star-shaped polygon with n vertices (r alternates r0, r1)."""
+    return [(scale[0] * (r0 if i % 2 == 0 else r1) * math.cos(phase + 2 * math.pi * i / n),
+             scale[1] * (r0 if i % 2 == 0 else r1) * math.sin(phase + 2 * math.pi * i / n), z)
+            for i in range(n)]
+
+
+def fan_disk(points):
+    """A disk mesh: centre vertex plus a fan (the polygon is star-shaped about its centroid)."""
+    c = np.mean(np.array(points), axis=0)
+    n = len(points)
+    return list(points) + [tuple(c)], [(i, (i + 1) % n, n) for i in range(n)]
+
+
+def tilt(points, angle):
+    """Rotate about the x axis: a plane that is not a coordinate plane."""
+    ca, sa = math.cos(angle), math.sin(angle)
+    return [(x, ca * y - sa * z, sa * y + ca * z + 1.0) for x, y, z in points]
+
+
+def twisted_solid(m=24, levels=12, height=1.2, twist=math.pi / 3):
+    """A closed solid: an ellipse-like star section swept up and twisted, capped."""
+    pts, faces = [], []
+    for k in range(levels + 1):
+        z = height * k / levels
+        for p in star(m, 1.0, 0.8, z, twist * z / height, (1.0, 0.7)):
+            pts.append(p)
+    for k in range(levels):
+        for i in range(m):
+            a, b = k * m + i, k * m + (i + 1) % m
+            faces += [(a, b, b + m), (a, b + m, a + m)]
+    bottom, top = len(pts), len(pts) + 1
+    pts += [(0.0, 0.0, 0.0), (0.0, 0.0, height)]
+    for i in range(m):
+        faces.append((bottom, (i + 1) % m, i))
+        faces.append((top, levels * m + i, levels * m + (i + 1) % m))
+    return pts, faces
+
+
+# ---- running meshlabserver ------------------------------------------------
+
+def run(workdir, inputs, script, outputs):
+    """outputs: {layer: filename}. Returns (exit code, log text)."""
+    log = os.path.join(workdir, "log.txt")
+    args = [WRAPPER, "-l", log, "-i"] + inputs + ["-s", script]
+    for layer, name in outputs.items():
+        args += ["-o", os.path.join(workdir, name), "-l", str(layer), "-m", "vq"]
+    proc = subprocess.run(args, cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          timeout=300)
+    text = open(log).read() if os.path.exists(log) else ""
+    return proc.returncode, text + proc.stdout.decode(errors="replace")
+
+
+def script_with(workdir, name, replacements):
+    text = open(os.path.join(DOCS, name)).read()
+    for old, new in replacements:
+        assert old in text, old
+        text = text.replace(old, new, 1)
+    path = os.path.join(workdir, "script.mlx")
+    open(path, "w").write(text)
+    return path
+
+
+# ---- checks ---------------------------------------------------------------
+
+def exact_cross_dot(a, b, c, normal):
+    """Sign of ((b - a) x (c - a)) . normal, exactly (floats are rationals)."""
+    A, B, C = ([Fraction(float(v)) for v in p] for p in (a, b, c))
+    N = [Fraction(float(v)) for v in normal]
+    u = [B[i] - A[i] for i in range(3)]
+    v = [C[i] - A[i] for i in range(3)]
+    w = [u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]]
+    s = sum(w[i] * N[i] for i in range(3))
+    return (s > 0) - (s < 0)
+
+
+def boundary_loop(triangles):
+    """The boundary edges (used by one triangle) chained into loops."""
+    count = {}
+    for t in triangles:
+        for i in range(3):
+            a, b = int(t[i]), int(t[(i + 1) % 3])
+            count[(a, b)] = count.get((a, b), 0) + 1
+    boundary = [(a, b) for (a, b) in count if (b, a) not in count]
+    assert all(count[e] == 1 for e in count), "an edge is used twice in one direction"
+    nxt = dict(boundary)
+    assert len(nxt) == len(boundary), "boundary vertex with two outgoing edges"
+    start = boundary[0][0]
+    loop, v = [start], nxt[start]
+    while v != start:
+        loop.append(v)
+        v = nxt[v]
+    assert len(loop) == len(boundary), "the boundary has %d loops" % (1 + len(boundary) - len(loop))
+    return loop
+
+
+def newell_normal(points):
+    n = np.zeros(3)
+    for i in range(len(points)):
+        p, q = points[i], points[(i + 1) % len(points)]
+        n += np.cross(p, q)
+    return n
+
+
+def on_polyline(p, poly, tol):
+    for i in range(len(poly)):
+        a, b = poly[i], poly[(i + 1) % len(poly)]
+        d = b - a
+        t = np.clip(np.dot(p - a, d) / np.dot(d, d), 0, 1)
+        if np.linalg.norm(a + t * d - p) <= tol:
+            return True
+    return False
+
+
+def check_layer(path, input_points, min_angle_bound=None):
+    """A saved output layer: one boundary loop equal to the input polygon
+    (every input vertex present bit for bit as float, every other boundary
+    vertex on it), every triangle strictly positive about the boundary's
+    normal (exact), Steiner flags (quality 1) exactly on interior vertices.
+    Returns (points, triangles, quality)."""
+    mesh = meshio.read(path)
+    pts = mesh.points.astype(np.float64)
+    tris = mesh.cells_dict["triangle"]
+    q = mesh.point_data.get("quality")
+    loop = boundary_loop(tris)
+    inp = np.array(input_points, dtype=np.float32).astype(np.float64)
+    have = {tuple(p) for p in pts[loop]}
+    missing = [i for i, p in enumerate(inp) if tuple(p) not in have]
+    assert not missing, "%s: input vertices %s are not on the boundary" % (path, missing[:5])
+    tol = 1e-5 * np.linalg.norm(inp.max(0) - inp.min(0))
+    for v in loop:
+        assert on_polyline(pts[v], inp, tol), "%s: boundary vertex %d is off the input" % (path, v)
+    normal = newell_normal(pts[loop])
+    if np.dot(newell_normal(pts[loop]), normal) < 0:
+        normal = -normal
+    signs = [exact_cross_dot(pts[a], pts[b], pts[c], normal) for a, b, c in tris]
+    # Boundary loops chain against the faces (half-edges of boundary edges
+    # run the other way round), so the positive side is -normal if the
+    # loop turns clockwise about it: all triangles must share one sign.
+    assert all(s == signs[0] for s in signs) and signs[0] != 0, \
+        "%s: %d triangles are flat or inverted" % (path, sum(1 for s in signs if s != signs[0]))
+    interior = set(range(len(pts))) - set(loop)
+    assert q is not None and {i for i in range(len(pts)) if q[i] == 1.0} == interior, \
+        "%s: Steiner flags wrong" % path
+    if min_angle_bound is not None:
+        worst = min(min_angle(pts[t]) for t in tris)
+        assert worst >= min_angle_bound, "%s: smallest angle %.2f < %.2f" % (path, worst, min_angle_bound)
+    return pts, tris, q
+
+
+def min_angle(tri):
+    angles = []
+    for i in range(3):
+        a, b, c = tri[i], tri[(i + 1) % 3], tri[(i + 2) % 3]
+        u, v = b - a, c - a
+        angles.append(math.degrees(math.acos(np.clip(np.dot(u, v) / np.linalg.norm(u) / np.linalg.norm(v), -1, 1))))
+    return min(angles)
+
+
+def check_pair(workdir, out_a, out_b, in_a, in_b, min_angle_bound):
+    pa, ta, _ = check_layer(os.path.join(workdir, out_a), in_a, min_angle_bound)
+    pb, tb, _ = check_layer(os.path.join(workdir, out_b), in_b, min_angle_bound)
+    assert len(pa) == len(pb) and np.array_equal(ta, tb), "the two layers' faces differ"
+    return pa, pb, ta
+
+
+def expect_ok(code, log):
+    assert code == 0 and "Problem with filter" not in log, "meshlabserver failed:\n" + log[-3000:]
+
+
+def expect_error(code, log, message, workdir, outputs):
+    assert code != 0 or "Problem with filter" in log, "the filter did not fail:\n" + log[-2000:]
+    assert "Error: " in log and message in log, "message %r not in the log:\n%s" % (message, log[-2000:])
+    for name in outputs:
+        assert not os.path.exists(os.path.join(workdir, name)), "output %s was written" % name
+
+
+# ---- cases ------------------------------------------------------------------
+
+def case_ply_polylines(w):
+    # Closed polylines (PLY edge elements) with 16 and 22 vertices, in
+    # parallel planes: resampled to a common count, every input vertex kept.
+    a = star(16, 1.0, 0.6)
+    b = [(x + 0.3, y, 1.5) for x, y, _ in star(22, 1.2, 0.9, phase=0.2, scale=(1.0, 0.6))]
+    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
+    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
+    code, log = run(w, ["a.ply", "b.ply"], os.path.join(DOCS, "pair.mlx"), {2: "out_a.ply", 3: "out_b.ply"})
+    expect_ok(code, log)
+    assert "resampled 16 and 22 boundary vertices" in log, log
+    pa, _, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, 10.0)
+    print("PLY polylines: %d vertices, %d triangles" % (len(pa), len(ta)))
+
+
+def case_obj_polylines(w):
+    # OBJ polylines with 18 and 15 vertices, the second in a tilted plane
+    # and stored clockwise: walked the other way round (ReverseSecond) from
+    # its 4th vertex.
+    a = star(18, 1.0, 0.7)
+    b = tilt([(x, y, 0.0) for x, y, _ in star(15, 1.1, 0.8, phase=0.3)], 0.5)[::-1]
+    write_obj_polyline(os.path.join(w, "a.obj"), a)
+    write_obj_polyline(os.path.join(w, "b.obj"), b)
+    script = script_with(w, "pair.mlx", [('value="0" name="StartOffset"', 'value="3" name="StartOffset"'),
+                                         ('value="false" name="ReverseSecond"', 'value="true" name="ReverseSecond"')])
+    code, log = run(w, ["a.obj", "b.obj"], script, {2: "out_a.ply", 3: "out_b.ply"})
+    expect_ok(code, log)
+    assert "resampled 18 and 15 boundary vertices" in log, log
+    pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, 10.0)
+    # Vertex 0 of the first is paired with vertex 3 of the second.
+    a32 = np.array(a, dtype=np.float32).astype(np.float64)
+    b32 = np.array(b, dtype=np.float32).astype(np.float64)
+    i0 = [i for i in range(len(pa)) if np.array_equal(pa[i], a32[0])][0]
+    assert np.array_equal(pb[i0], b32[3]), "StartOffset not applied"
+    print("OBJ polylines: %d vertices, %d triangles" % (len(pa), len(ta)))
+
+
+def case_off_disks(w):
+    # Disk meshes (OFF faces), equal counts; the second lies in a tilted
+    # plane and is paired from its 3rd vertex on. (Not OBJ: Debian's meshlab
+    # 2020.09 aborts on reading any OBJ with faces, Debian bug #1054006, and
+    # writes OBJ coordinates with 6 decimals.)
+    a, fa = fan_disk(star(14, 1.0, 0.55))
+    b, fb = fan_disk(tilt(star(14, 0.9, 0.6, phase=0.1, scale=(1.3, 0.8)), 0.6))
+    write_off(os.path.join(w, "a.off"), a, fa)
+    write_off(os.path.join(w, "b.off"), b, fb)
+    script = script_with(w, "pair.mlx", [('value="0" name="StartOffset"', 'value="2" name="StartOffset"')])
+    code, log = run(w, ["a.off", "b.off"], script, {2: "out_a.ply", 3: "out_b.ply"})
+    expect_ok(code, log)
+    pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", a[:-1], b[:-1], 10.0)
+    # The start offset pairs vertex 0 of the first with vertex 2 of the second.
+    b32 = np.array(b, dtype=np.float32).astype(np.float64)
+    a32 = np.array(a, dtype=np.float32).astype(np.float64)
+    i0 = [i for i in range(len(pa)) if np.array_equal(pa[i], a32[0])][0]
+    assert np.array_equal(pb[i0], b32[2]), "StartOffset not applied"
+    print("OFF disks: %d vertices, %d triangles" % (len(pa), len(ta)))
+
+
+def case_sweep(w):
+    a = star(12, 1.0, 0.7)
+    b = [(x, y, 2.0) for x, y, _ in star(12, 0.8, 0.5, phase=0.5, scale=(1.4, 0.7))]
+    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
+    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
+    outs = {2: "pair_a.ply", 3: "pair_b.ply", 4: "s1.ply", 5: "s2.ply", 6: "s3.ply", 7: "lateral.ply"}
+    code, log = run(w, ["a.ply", "b.ply"], os.path.join(DOCS, "pair_and_sweep.mlx"), outs)
+    expect_ok(code, log)
+    pa, pb, ta = check_pair(w, "pair_a.ply", "pair_b.ply", a, b, 10.0)
+    for k in (1, 2, 3):
+        t = k / 4
+        mesh = meshio.read(os.path.join(w, "s%d.ply" % k))
+        assert np.array_equal(mesh.cells_dict["triangle"], ta), "section %d: faces differ" % k
+        expected = ((1 - t) * pa + t * pb).astype(np.float32)
+        assert np.allclose(mesh.points, expected, atol=1e-6), "section %d: not at t = %g" % (k, t)
+        assert np.allclose(mesh.points[:, 2], 2.0 * t, atol=1e-6), "section %d: not planar" % k
+        ring = [tuple(p) for p in mesh.points[boundary_loop(ta)]]
+        check_layer(os.path.join(w, "s%d.ply" % k), ring)  # Steiner flags carried over
+    lateral = meshio.read(os.path.join(w, "lateral.ply"))
+    assert len(lateral.cells_dict["triangle"]) == 2 * 12 * 4, len(lateral.cells_dict["triangle"])
+    print("sweep: 3 sections valid, lateral surface of %d triangles" % len(lateral.cells_dict["triangle"]))
+
+
+def case_planar_sections(w):
+    # The real workflow: a closed solid, two sections cut by MeshLab's own
+    # Compute Planar Section (one tilted), paired by the plugin.
+    pts, faces = twisted_solid()
+    write_ply(os.path.join(w, "solid.ply"), pts, faces=faces)
+    outs = {1: "sect_a.ply", 2: "sect_b.ply", 3: "out_a.ply", 4: "out_b.ply", 6: "mid.ply", 8: "lateral.ply"}
+    code, log = run(w, ["solid.ply"], os.path.join(DOCS, "sections_and_pair.mlx"), outs)
+    expect_ok(code, log)
+    sections = []
+    for name in ("sect_a.ply", "sect_b.ply"):
+        # MeshLab's PLY writer drops the section's edges; the solid's
+        # sections are star-shaped about the z axis, so the angle orders them.
+        pts = meshio.read(os.path.join(w, name)).points
+        order = np.argsort(np.arctan2(pts[:, 1], pts[:, 0]))
+        sections.append([tuple(p) for p in pts[order]])
+    assert len(sections[0]) != len(sections[1]), "the sections happen to have equal counts"
+    pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", sections[0], sections[1], 10.0)
+    # The sweep between the two (non-parallel) sections: the middle one is
+    # the average and a valid disk over its plane.
+    mid = meshio.read(os.path.join(w, "mid.ply"))
+    assert np.array_equal(mid.cells_dict["triangle"], ta)
+    assert np.allclose(mid.points, ((pa + pb) / 2).astype(np.float32), atol=1e-6)
+    check_layer(os.path.join(w, "mid.ply"), [tuple(p) for p in mid.points[boundary_loop(ta)]])
+    n_lateral = len(meshio.read(os.path.join(w, "lateral.ply")).cells_dict["triangle"])
+    assert n_lateral == 2 * len(boundary_loop(ta)) * 4, n_lateral
+    print("planar sections of %d and %d vertices paired: %d vertices, %d triangles; swept"
+          % (len(sections[0]), len(sections[1]), len(pa), len(ta)))
+
+
+def bad_case(w, inputs, message, replacements=()):
+    script = script_with(w, "pair.mlx", replacements) if replacements else os.path.join(DOCS, "pair.mlx")
+    code, log = run(w, inputs, script, {2: "out_a.ply", 3: "out_b.ply"})
+    expect_error(code, log, message, w, ["out_a.ply", "out_b.ply"])
+    print("rejected with: " + [l for l in log.splitlines() if "Error: " in l][0])
+
+
+def good_polyline(w, name="good.ply"):
+    write_ply(os.path.join(w, name), star(10, 1.0, 0.6), edges=loop_edges(10))
+    return name
+
+
+def case_bad_open_polyline(w):
+    pts = star(10, 1.0, 0.6)
+    write_ply(os.path.join(w, "bad.ply"), pts, edges=loop_edges(10)[:-1])
+    bad_case(w, [good_polyline(w), "bad.ply"], "layer 'bad.ply': the edges are not one closed polyline: vertex 0 has one edge (an open end)")
+
+
+def case_bad_two_loops(w):
+    pts = star(8, 1.0, 0.6) + [(x + 5, y, z) for x, y, z in star(8, 1.0, 0.6)]
+    write_ply(os.path.join(w, "bad.ply"), pts, edges=loop_edges(8) + loop_edges(8, 8))
+    bad_case(w, [good_polyline(w), "bad.ply"], "several closed polylines")
+
+
+def case_bad_hole(w):
+    outer, inner = star(8, 2.0, 2.0), star(8, 0.5, 0.5)
+    faces = []
+    for i in range(8):
+        j = (i + 1) % 8
+        faces += [(i, j, 8 + j), (i, 8 + j, 8 + i)]
+    write_ply(os.path.join(w, "bad.ply"), outer + inner, faces=faces)
+    bad_case(w, ["bad.ply", good_polyline(w)], "boundary loops (holes)")
+
+
+def case_bad_not_planar(w):
+    pts = [(x, y, 0.3 * (i % 2)) for i, (x, y, _) in enumerate(star(10, 1.0, 0.6))]
+    write_ply(os.path.join(w, "bad.ply"), pts, edges=loop_edges(10))
+    bad_case(w, [good_polyline(w), "bad.ply"], "not planar")
+
+
+def case_bad_too_few(w):
+    write_ply(os.path.join(w, "bad.ply"), [(0, 0, 0), (1, 0, 0)], edges=[(0, 1), (1, 0)])
+    bad_case(w, [good_polyline(w), "bad.ply"], "vertices; need at least 3")
+
+
+def case_bad_opposite_directions(w):
+    write_ply(os.path.join(w, "cw.ply"), star(10, 1.2, 0.5)[::-1], edges=loop_edges(10))
+    bad_case(w, [good_polyline(w), "cw.ply"], "(toggle 'Reverse second boundary')")
+
+
+def case_bad_same_layer(w):
+    bad_case(w, [good_polyline(w), good_polyline(w, "other.ply")], "the same layer",
+             [('value="1" name="SecondMesh"', 'value="0" name="SecondMesh"')])
+
+
+def case_bad_counts_without_resampling(w):
+    write_ply(os.path.join(w, "b.ply"), star(12, 1.0, 0.6), edges=loop_edges(12))
+    bad_case(w, [good_polyline(w), "b.ply"], "the boundaries have 10 and 12 vertices",
+             [('value="true" name="Resample"', 'value="false" name="Resample"')])
+
+
+def case_bad_float_rounding(w):
+    # Spiky stars 10^7 away from the origin, where floats are 1 apart: the
+    # core's triangulation (paired a quarter turn off, target angle 33) is
+    # valid in double, but its Steiner vertices rounded to MeshLab's floats
+    # are not, so the filter must refuse and add nothing.
+    a = [(x + 1e7, y + 1e7, 0.0) for x, y, _ in star(24, 8, 2.4)]
+    b = [(x + 1e7, y + 1e7, 1.0) for x, y, _ in star(24, 9.6, 4, phase=0.2)]
+    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(24))
+    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(24))
+    bad_case(w, ["a.ply", "b.ply"], "valid in double precision but not after rounding to MeshLab's float",
+             [('value="0" name="StartOffset"', 'value="5" name="StartOffset"'),
+              ('value="25" name="MinAngle"', 'value="33" name="MinAngle"')])
+
+
+def case_bad_sweep_twisted(w):
+    # Regular 12-gons paired half a turn apart: the pair is valid, but the
+    # straight-line section at t = 1/2 collapses every boundary vertex onto
+    # the centre, so the sweep must refuse (and add no layer).
+    a = star(12, 1.0, 1.0)
+    b = [(x, y, 1.0) for x, y, _ in a]
+    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(12))
+    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(12))
+    script = script_with(w, "pair_and_sweep.mlx", [('value="0" name="StartOffset"', 'value="6" name="StartOffset"')])
+    outs = {2: "pair_a.ply", 4: "s1.ply", 7: "lateral.ply"}
+    code, log = run(w, ["a.ply", "b.ply"], script, outs)
+    expect_error(code, log, "is invalid", w, outs.values())
+    assert "compatible triangulation: 12 boundary vertices" in log, "the pairing step did not succeed"
+    print("rejected with: " + [l for l in log.splitlines() if "Error: " in l][0])
+
+
+def case_bad_sweep_not_a_pair(w):
+    good_polyline(w, "a.ply")
+    good_polyline(w, "b.ply")
+    text = open(os.path.join(DOCS, "pair_and_sweep.mlx")).read()
+    sweep_only = text[:text.index(" <filter name=\"Compatible Triangulation")] + \
+        text[text.index(" <filter name=\"Compatible Sweep"):]
+    sweep_only = sweep_only.replace('value="2" name="FirstMesh"', 'value="0" name="FirstMesh"') \
+                           .replace('value="3" name="SecondMesh"', 'value="1" name="SecondMesh"')
+    path = os.path.join(w, "sweep.mlx")
+    open(path, "w").write(sweep_only)
+    code, log = run(w, ["a.ply", "b.ply"], path, {2: "s1.ply"})
+    expect_error(code, log, "both layers need faces", w, ["s1.ply"])
+    print("rejected with: " + [l for l in log.splitlines() if "Error: " in l][0])
+
+
+if __name__ == "__main__":
+    with tempfile.TemporaryDirectory() as workdir:
+        globals()["case_" + CASE](workdir)
