@@ -6,7 +6,8 @@ JOBS ?= $(shell nproc)
 # Debian packages the build, the tests, the demo and the bench need.
 DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
   fonts-dejavu-core python3 python3-numpy python3-pytest python3-meshio \
-  libopenmesh-dev libeigen3-dev pybind11-dev python3-dev
+  libopenmesh-dev libeigen3-dev pybind11-dev python3-dev \
+  libsuitesparse-dev
 
 .PHONY: all deps build demo test bench clean
 
