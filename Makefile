@@ -7,7 +7,7 @@ JOBS ?= $(shell nproc)
 DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
   fonts-dejavu-core python3 python3-numpy python3-pytest python3-meshio \
   libopenmesh-dev libeigen3-dev pybind11-dev python3-dev \
-  libsuitesparse-dev
+  libsuitesparse-dev libgmsh-dev gmsh python3-gmsh
 
 .PHONY: all deps build demo test bench clean
 
