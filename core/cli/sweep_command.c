@@ -308,7 +308,7 @@ static int sweep(const sweep_args *args, cli_error *error)
                             args->tets};
         code = write_volume(args->output, &mesh, args->msh_version, error);
         if (code == CLI_EXIT_OK)
-            printf("wrote %s (%zu sections, %zu nodes, %zu %s, volume %.10g)\n", args->output,
+            printf("wrote %s (%zu sections, %zu nodes, %zu %s, volume %.17g)\n", args->output,
                    cm_sweep_num_sections(sweep), mesh.num_nodes, mesh.num_cells,
                    args->tets ? "tetrahedra" : "prisms", cm_sweep_volume(sweep));
     }
