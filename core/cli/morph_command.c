@@ -108,9 +108,12 @@ static void print_morph_help(FILE *out)
           "                         min_angle_deg, inverted (triangles not strictly\n"
           "                         counter-clockwise, by exact predicates)\n"
           "\n"
-          "Exit status: 0 success; 1 internal failure (also a convex morph whose\n"
-          "section failed its exact check) or unwritable output; 2 bad input or\n"
-          "usage; 130 interrupted. On failure DIR is left as it was.\n", out);
+          "Exit status (on failure DIR is left as it was):\n"
+          "  0    success\n"
+          "  1    internal failure (also a convex morph whose section failed its\n"
+          "       exact check), or DIR or its parent not writable\n"
+          "  2    bad input or usage, as for 'compatmesh triangulate'\n"
+          "  130  interrupted\n", out);
 }
 
 static int parse_morph_args(int argc, char **argv, morph_args *args, cli_error *error)

@@ -162,8 +162,12 @@ static void print_sweep_help(FILE *out)
           "when complete; on failure nothing is written. One physical group, 'sweep',\n"
           "holds every element.\n"
           "\n"
-          "Exit status: 0 success; 1 internal failure or unwritable output; 2 bad\n"
-          "input or usage (also an unknown extension); 130 interrupted.\n", out);
+          "Exit status (on failure no file is written):\n"
+          "  0    success\n"
+          "  1    internal failure, or FILE's directory missing or not writable\n"
+          "  2    bad input or usage, as for 'compatmesh triangulate', also an\n"
+          "       unknown extension or heights that do not increase\n"
+          "  130  interrupted\n", out);
 }
 
 static int parse_sweep_args(int argc, char **argv, sweep_args *args, cli_error *error)
