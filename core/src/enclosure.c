@@ -70,8 +70,8 @@ static void boundary_order(enclosure *e)
 }
 
 /* Segment from polygon vertex bnd[i] to the far point p leaves the polygon
- * into its exterior and meets it nowhere else (exact). */
-static int bridge_valid(const enclosure *e, size_t g, size_t i, const double p[2])
+ * into its exterior (exact, O(1)). */
+static int bridge_leaves(const enclosure *e, size_t g, size_t i, const double p[2])
 {
     size_t n = e->n;
     const double *a = vertex(e, g, e->bnd[i]);
@@ -83,7 +83,15 @@ static int bridge_valid(const enclosure *e, size_t g, size_t i, const double p[2
     /* Interior cone at a is left of both edges (convex corner) or of
      * either (reflex corner); p must be strictly outside its closure. */
     int outside = convex ? (right_of_next || right_of_prev) : (right_of_next && right_of_prev);
-    if (!outside || cm_orient2d(a, next, p) == 0 || cm_orient2d(prev, a, p) == 0) return 0;
+    return outside && cm_orient2d(a, next, p) != 0 && cm_orient2d(prev, a, p) != 0;
+}
+
+/* ... and meets the polygon nowhere else (exact, O(n)). */
+static int bridge_valid(const enclosure *e, size_t g, size_t i, const double p[2])
+{
+    size_t n = e->n;
+    const double *a = vertex(e, g, e->bnd[i]);
+    if (!bridge_leaves(e, g, i, p)) return 0;
     for (size_t j = 0; j < n; j++) {
         if (j == i || (j + 1) % n == i) continue; /* the two edges at a */
         if (cm_segments_intersect(a, p, vertex(e, g, e->bnd[j]), vertex(e, g, e->bnd[(j + 1) % n])))
@@ -141,6 +149,8 @@ static int find_direction(const enclosure *e, size_t pos, const bridge *other, d
         circle_point(e, cand[c], p);
         if (other) circle_point(e, other->angle, q);
         int ok = 1;
+        for (size_t g = 0; g < e->k && ok; g++) /* the cheap test everywhere first */
+            ok = bridge_leaves(e, g, pos, p);
         for (size_t g = 0; g < e->k && ok; g++) {
             ok = bridge_valid(e, g, pos, p);
             if (ok && other)
