@@ -189,10 +189,8 @@ static int compute_frames(morph_run *run, cli_error *error)
         if (status == CM_OK && interrupted) status = CM_ERR_CANCELLED;
     }
     if (status == CM_OK) return CLI_EXIT_OK;
-    const char *message = run->morph ? cm_morph_message(run->morph) : "";
-    if (status == CM_ERR_CANCELLED) cli_error_set(error, "interrupted; nothing written");
-    else cli_error_set(error, "morph: %s", message[0] ? message : cm_status_string(status));
-    return exit_code_for(status);
+    return core_failure("morph", run->morph ? cm_morph_message(run->morph) : "", status,
+                        error);
 }
 
 static int write_frames(morph_run *run, cli_error *error)

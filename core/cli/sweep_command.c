@@ -288,9 +288,7 @@ static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morp
     }
     free(own);
     if (status == CM_OK) return CLI_EXIT_OK;
-    if (status == CM_ERR_CANCELLED) cli_error_set(error, "interrupted; nothing written");
-    else cli_error_set(error, "sweep: %s", message[0] ? message : cm_status_string(status));
-    return exit_code_for(status);
+    return core_failure("sweep", message, status, error);
 }
 
 static int sweep(const sweep_args *args, cli_error *error)

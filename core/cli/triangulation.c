@@ -112,6 +112,20 @@ int exit_code_for(cm_status status)
     }
 }
 
+int core_failure(const char *command, const char *message, cm_status status,
+                 cli_error *error)
+{
+    size_t length = strlen(command);
+    if (message[0] == '\0') message = cm_status_string(status);
+    if (status == CM_ERR_CANCELLED)
+        cli_error_set(error, "interrupted; nothing written");
+    else if (strncmp(message, command, length) == 0 && message[length] == ':')
+        cli_error_set(error, "%s", message); /* the core named the step already */
+    else
+        cli_error_set(error, "%s: %s", command, message);
+    return exit_code_for(status);
+}
+
 /* The core's message without its "polygon N: " prefix (the file name says
  * which polygon), or the message unchanged if it has no such prefix. */
 static const char *without_polygon_prefix(const char *message, long polygon)

@@ -63,6 +63,12 @@ typedef struct triangulation {
 int triangulation_run(triangulation *t, const triangulation_args *args, cli_error *error);
 void triangulation_free(triangulation *t);
 
+/* The error of a failed morph or sweep call: "COMMAND: message" (the
+ * core's message, or the status's name if it left none), "interrupted;
+ * nothing written" when cancelled. Returns the exit code for status. */
+int core_failure(const char *command, const char *message, cm_status status,
+                 cli_error *error);
+
 /* CLI exit code for a core status. */
 int exit_code_for(cm_status status);
 
