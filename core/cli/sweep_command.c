@@ -34,7 +34,8 @@ static const option_spec sweep_options[] = {
     {"height", OPTION_HEIGHT, "H", "total height, inputs evenly spaced (default 1)"},
     {"heights", OPTION_HEIGHTS, "Z1,Z2,...",
      "the z of every input, strictly increasing; default:\n"
-     "the inputs' own z if they are all OBJ files with z"},
+     "the inputs' own z if they are all OBJ files with z\n"
+     "(unless all z are equal)"},
     {"tets", OPTION_TETS, NULL, "write tetrahedra (each prism split in 3, faces\n"
                                 "conforming) instead of prisms"},
     {"msh-version", OPTION_MSH_VERSION, "V", ".msh format version: 4.1 (default) or 2.2"},
@@ -235,6 +236,10 @@ static int heights_from_inputs(const triangulation *tri, double *heights, cli_er
     size_t k = tri->args->input_count, with_z = 0;
     for (size_t g = 0; g < k; g++) with_z += tri->polygons[g].has_z ? 1 : 0;
     if (with_z == 0) return 0;
+    int all_equal = 1;
+    for (size_t g = 1; g < k; g++)
+        if (tri->polygons[g].z != tri->polygons[0].z) all_equal = 0;
+    if (with_z == k && all_equal) return 0; /* flat drawings: z says nothing */
     if (with_z < k) {
         cli_error_set(error, "sweep: some inputs give z and some do not; give all of them z "
                       "or use --height / --heights");

@@ -2,6 +2,7 @@
 
 #include "write_volume.h"
 
+#include <ctype.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -98,7 +99,7 @@ done:
     return code;
 }
 
-/* "dir/name.ext" -> "dir/.name.compatmesh-XXXXXX.ext", created empty (so
+/* "dir/name.EXT" -> "dir/.name.compatmesh-XXXXXX.ext", created empty (so
  * the name is ours) in the target's directory, so rename is atomic. */
 static char *make_temporary(const char *path, cli_error *error)
 {
@@ -113,8 +114,11 @@ static char *make_temporary(const char *path, cli_error *error)
         cli_error_set(error, "out of memory");
         return NULL;
     }
-    snprintf(temporary, size, "%.*s.%.*s.compatmesh-XXXXXX.%s", (int)dir_length, path,
-             (int)stem_length, name, extension);
+    int length = snprintf(temporary, size, "%.*s.%.*s.compatmesh-XXXXXX.%s",
+                          (int)dir_length, path, (int)stem_length, name, extension);
+    /* Gmsh knows the extensions in lower case only; the final name keeps
+     * the user's spelling. */
+    for (char *c = temporary + length - strlen(extension); *c; c++) *c = (char)tolower(*c);
     int fd = mkstemps(temporary, (int)strlen(extension) + 1);
     if (fd < 0) {
         cli_error_set(error, "cannot write %s: %s", path, strerror(errno));

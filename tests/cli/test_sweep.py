@@ -250,3 +250,26 @@ def test_inputs_with_and_without_z(cm, tmp_path):
     assert result.returncode == 2
     assert result.stderr.count("\n") == 1 and "some inputs give z" in result.stderr
     assert not (tmp_path / "out.msh").exists()
+
+
+def test_flat_obj_inputs_use_the_height(cm, tmp_path):
+    a, b = twisted_pair()
+    write_obj(tmp_path / "a.obj", a, 0.0)
+    write_obj(tmp_path / "b.obj", b, 0.0)
+    result = cm("sweep", "a.obj", "b.obj", "--height", "2", "-o", "out.msh")
+    assert result.returncode == 0, result.stderr
+    z = meshio.read(tmp_path / "out.msh").points[:, 2]
+    assert z.min() == 0 and z.max() == 2
+    result = cm("sweep", "a.obj", "b.obj", "-o", "default.msh")
+    assert result.returncode == 0, result.stderr
+    assert meshio.read(tmp_path / "default.msh").points[:, 2].max() == 1
+
+
+def test_extension_in_capitals(cm, tmp_path):
+    a, b = twisted_pair()
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    result = cm("sweep", "a.xy", "b.xy", "-o", "OUT.VTK")
+    assert result.returncode == 0, result.stderr
+    assert sorted(os.listdir(tmp_path)) == ["OUT.VTK", "a.xy", "b.xy"]
+    assert len(meshio.read(tmp_path / "OUT.VTK", file_format="vtk").cells[0].data) > 0
