@@ -108,7 +108,10 @@ static void mean_value_weights(cm_morph *m, size_t g)
             const double *p = xy + 2 * (size_t)v, *pa = xy + 2 * (size_t)a, *pb = xy + 2 * (size_t)b;
             double ux = pa[0] - p[0], uy = pa[1] - p[1], wx = pb[0] - p[0], wy = pb[1] - p[1];
             double lu = hypot(ux, uy), lw = hypot(wx, wy);
-            double half_tan = (ux * wy - uy * wx) / (lu * lw + ux * wx + uy * wy);
+            double cross = ux * wy - uy * wx, dot = ux * wx + uy * wy;
+            /* tan(a / 2) = sin a / (1 + cos a) = (1 - cos a) / sin a: the
+             * second near a = pi, where 1 + cos a cancels. */
+            double half_tan = dot >= 0 ? cross / (lu * lw + dot) : (lu * lw - dot) / cross;
             lam[find_neighbour(m, row, a)] += half_tan / lu;
             lam[find_neighbour(m, row, b)] += half_tan / lw;
         }
@@ -117,6 +120,22 @@ static void mean_value_weights(cm_morph *m, size_t g)
         for (size_t x = m->start[row]; x < m->start[row + 1]; x++) sum += lam[x];
         for (size_t x = m->start[row]; x < m->start[row + 1]; x++) lam[x] /= sum;
     }
+}
+
+/* Every weight positive and finite (else the system may be singular). */
+static cm_status check_weights(cm_morph *m, size_t g)
+{
+    for (int32_t row = 0; row < m->nu; row++)
+        for (size_t x = m->start[row]; x < m->start[row + 1]; x++)
+            if (!(m->lambda[g][x] > 0 && isfinite(m->lambda[g][x]))) {
+                size_t v = 0;
+                while (m->unknown[v] != row) v++;
+                return fail(m, CM_ERR_INTERNAL,
+                            "morph: mean value weight of vertex %ld towards %d in geometry %zu is %g "
+                            "(a triangle too flat for double precision)",
+                            (long)v, m->nbr[x], g, m->lambda[g][x]);
+            }
+    return CM_OK;
 }
 
 /* The triplets of I - Lambda (diagonal first), their compressed-column
@@ -187,6 +206,7 @@ cm_status cm_morph_create(const cm_result *result, const cm_morph_options *optio
         if (!(m->lambda[g] = malloc(m->start[m->nu] * sizeof *m->lambda[g])))
             return fail(m, CM_ERR_NO_MEMORY, "out of memory");
         mean_value_weights(m, g);
+        if ((s = check_weights(m, g)) != CM_OK) return s;
     }
     if ((s = build_system(m)) != CM_OK) return s;
     if (cancelled(options, 1.0, "morph system")) return fail(m, CM_ERR_CANCELLED, "cancelled");

@@ -160,6 +160,72 @@ static void test_linear(void)
     cm_result_free(r);
 }
 
+/* Property test: random pairs (random simple polygons, twisted stars,
+ * a spiral against a star, a comb against a random polygon), with and
+ * without remeshing: the morph builds, interior frames are valid, and the
+ * blend-only sweep succeeds. Trial 42 (spiral against star, no remeshing)
+ * has an annulus angle within rounding of pi, where the textbook
+ * tan(a / 2) = sin a / (1 + cos a) cancels to a negative weight. */
+static int random_pair(int trial, double **xy, int *n)
+{
+    int kind = trial % 4;
+    *n = kind == 2 ? rp_spiral_min_n(2.5) + trial : 20 + (trial * 37) % 180;
+    if (!(*xy = calloc(4 * (size_t)*n, sizeof **xy))) return -1;
+    double *a = *xy, *b = *xy + 2 * *n;
+    switch (kind) {
+    case 0: return rp_random_simple(a, *n, (uint64_t)trial) || rp_random_simple(b, *n, (uint64_t)trial + 100) ? -1 : 0;
+    case 1:
+        if (rp_star(a, *n, (uint64_t)trial)) return -1;
+        memcpy(b, a, 2 * (size_t)*n * sizeof *a);
+        rp_twist(b, *n, *n / 2);
+        return 0;
+    case 2: return rp_spiral(a, *n, 2.5) || rp_star(b, *n, (uint64_t)trial) ? -1 : 0;
+    default: return rp_comb(a, *n, *n / 10) || rp_random_simple(b, *n, (uint64_t)trial) ? -1 : 0;
+    }
+}
+
+static void test_random_pairs(void)
+{
+    static const int trials[] = {0, 1, 2, 3, 5, 6, 8, 11, 13, 18, 22, 27, 40, 42, 50, 54};
+    size_t built = 0, count = sizeof trials / sizeof *trials;
+    for (size_t i = 0; i < count; i++) {
+        int trial = trials[i], n = 0;
+        double *xy = NULL;
+        if (random_pair(trial, &xy, &n)) {
+            CHECK_MSG(0, "trial %d: no polygons", trial);
+            free(xy);
+            continue;
+        }
+        cm_options o;
+        cm_options_init(&o);
+        o.remesh = trial % 2;
+        cm_result *r = NULL;
+        cm_morph *m = NULL;
+        cm_sweep *w = NULL;
+        CHECK_MSG(cm_triangulate(xy, 2, (size_t)n, &o, &r) == CM_OK, "trial %d: %s", trial, cm_result_message(r));
+        cm_status s = cm_morph_create(r, NULL, &m);
+        CHECK_MSG(s == CM_OK, "trial %d (n = %d): %s", trial, n, cm_morph_message(m));
+        if (s == CM_OK) {
+            size_t nv = cm_result_num_vertices(r), good = 0;
+            double *p = malloc(2 * nv * sizeof *p);
+            for (int f = 1; f < 10; f++) {
+                size_t inverted = 1;
+                good += cm_morph_section(m, f / 10.0, p, &inverted, NULL) == CM_OK && inverted == 0 &&
+                        exact_inverted(r, p) == 0;
+            }
+            CHECK_MSG(good == 9, "trial %d: %zu of 9 frames valid", trial, good);
+            CHECK_MSG(cm_sweep_create(m, NULL, &w) == CM_OK, "trial %d: %s", trial, cm_sweep_message(w));
+            built += good == 9;
+            free(p);
+        }
+        cm_sweep_free(w);
+        cm_morph_free(m);
+        cm_result_free(r);
+        free(xy);
+    }
+    printf("random pairs: %zu of %zu morphs valid in every frame\n", built, count);
+}
+
 static int cancel_now(void *user, double fraction, const char *stage)
 {
     (void)user, (void)fraction, (void)stage;
@@ -213,6 +279,7 @@ int main(void)
     test_enclosure(FIX_SPIRAL);
     test_enclosure(FIX_THREE);
     test_linear();
+    test_random_pairs();
     test_bad_arguments();
     return check_summary("test_morph");
 }
