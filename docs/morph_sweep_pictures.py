@@ -1,9 +1,10 @@
-"""Draws docs/sweep.png: the sweep between a U and an S stroke (the glyph-like
-pair of the CLI tests): its lateral surface shaded, the top section's
-triangles drawn. The tool writes the mesh (Gmsh .msh), meshio
-reads it, rsvg-convert (librsvg2-bin) turns the SVG into the PNG.
+"""Draws the README's pictures of a U and an S stroke (the glyph-like pair of
+the CLI tests): docs/morph_frames.png, six frames of their morph (the tool's
+frames.svg), and docs/sweep.png, their sweep with its lateral surface shaded
+and the top section's triangles drawn. The tool writes the mesh (Gmsh .msh),
+meshio reads it, rsvg-convert (librsvg2-bin) turns SVG into PNG.
 
-    /usr/bin/python3 docs/sweep_picture.py build/bin/compatmesh docs/sweep.png
+    /usr/bin/python3 docs/morph_sweep_pictures.py build/bin/compatmesh docs
 """
 import os
 import subprocess
@@ -33,12 +34,17 @@ def project(points):
     return np.c_[u, -screen_y], depth
 
 
-def main(binary, out_png):
-    binary, out_png = os.path.abspath(binary), os.path.abspath(out_png)
+def main(binary, docs):
+    binary, docs = os.path.abspath(binary), os.path.abspath(docs)
     with tempfile.TemporaryDirectory() as work:
         a, b = glyph_pair(28)
         write_xy(os.path.join(work, "u.xy"), a)
         write_xy(os.path.join(work, "s.xy"), b)
+        subprocess.run([binary, "morph", "u.xy", "s.xy", "--frames", "6", "-o", "frames"],
+                       cwd=work, check=True, stdout=subprocess.DEVNULL)
+        subprocess.run(["rsvg-convert", "-w", "1400", "-o",
+                        os.path.join(docs, "morph_frames.png"),
+                        os.path.join(work, "frames", "frames.svg")], check=True)
         subprocess.run([binary, "sweep", "u.xy", "s.xy", "--sections", "13", "--height", "3",
                         "-o", "sweep.msh"], cwd=work, check=True, stdout=subprocess.DEVNULL)
         mesh = meshio.read(os.path.join(work, "sweep.msh"))
@@ -84,7 +90,8 @@ def main(binary, out_png):
         svg_path = os.path.join(work, "sweep.svg")
         with open(svg_path, "w") as f:
             f.write("\n".join(svg) + "\n")
-        subprocess.run(["rsvg-convert", "-o", out_png, svg_path], check=True)
+        subprocess.run(["rsvg-convert", "-o", os.path.join(docs, "sweep.png"), svg_path],
+                       check=True)
 
 
 if __name__ == "__main__":
