@@ -261,7 +261,12 @@ typedef struct cm_morph cm_morph;
  *   options: NULL for the defaults.
  *   morph:   receives a new handle, also on failure (then it carries the
  *            message, cm_morph_message); NULL only when even the handle
- *            could not be allocated. Always cm_morph_free it. */
+ *            could not be allocated. Always cm_morph_free it.
+ * Returns CM_ERR_ARGUMENT (NULL or failed result, unknown method),
+ * CM_ERR_CANCELLED, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL when no enclosure
+ * could be built (no bridge from the polygon to the enclosure valid in
+ * every geometry) or a mean value weight is not positive in doubles. The
+ * linear method builds nothing and always succeeds on a valid result. */
 cm_status cm_morph_create(const cm_result *result, const cm_morph_options *options,
                           cm_morph **morph);
 void cm_morph_free(cm_morph *morph);
@@ -271,8 +276,9 @@ const char *cm_morph_message(const cm_morph *morph);
 /* The section at time t in [0, 1].
  *   xy:            receives cm_result_num_vertices(result) * 2 doubles, in
  *                  the result's vertex order (its triangles are
- *                  cm_result_triangles). At t = g / (k - 1) the polygon
- *                  vertices are bit-identical to geometry g.
+ *                  cm_result_triangles). At t = g / (k - 1) (to within
+ *                  a few units of rounding) every vertex is bit-identical
+ *                  to geometry g.
  *   inverted:      may be NULL; receives the number of triangles that are
  *                  not strictly counter-clockwise (exact predicates). For
  *                  CM_MORPH_CONVEX a non-zero count is a failure
@@ -306,7 +312,10 @@ typedef struct cm_sweep cm_sweep;
  * stays counter-clockwise along the straight blend between its bottom and
  * top sections; this is checked exactly, and where it fails an
  * intermediate section is inserted (bisecting morph time) up to
- * max_refine times. Same handle and message conventions as the morph. */
+ * max_refine times; with options.tets, also where a tetrahedron of the
+ * split is not positive. Every section must be valid (a linear morph that
+ * inverts fails). Same handle and message conventions as the morph; a
+ * failed sweep holds no mesh. */
 cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_sweep **sweep);
 void cm_sweep_free(cm_sweep *sweep);
 const char *cm_sweep_message(const cm_sweep *sweep);
