@@ -226,6 +226,27 @@ static void test_random_pairs(void)
     printf("random pairs: %zu of %zu morphs valid in every frame\n", built, count);
 }
 
+/* Clockwise input: the result keeps the input's vertex order, the
+ * enclosure walks the boundary the other way round. */
+static void test_clockwise(void)
+{
+    double xy[6 * N];
+    size_t k;
+    cm_result *r = NULL;
+    cm_morph *m = NULL;
+    CHECK(fixture_polygons(FIX_GLYPH, N, xy, &k) == 0);
+    for (size_t g = 0; g < k; g++) rp_reverse(xy + 2 * N * g, 1, N - 1);
+    CHECK(cm_triangulate(xy, k, N, NULL, &r) == CM_OK && cm_result_stats(r)->reversed_input == 1);
+    CHECK_MSG(cm_morph_create(r, NULL, &m) == CM_OK, "clockwise: %s", cm_morph_message(m));
+    size_t nv = cm_result_num_vertices(r), inverted = 1;
+    double *p = malloc(2 * nv * sizeof *p);
+    CHECK(cm_morph_section(m, 0.5, p, &inverted, NULL) == CM_OK && inverted == 0 && exact_inverted(r, p) == 0);
+    CHECK(cm_morph_section(m, 0.0, p, NULL, NULL) == CM_OK && memcmp(p, xy, 2 * N * sizeof *p) == 0);
+    free(p);
+    cm_morph_free(m);
+    cm_result_free(r);
+}
+
 static int cancel_now(void *user, double fraction, const char *stage)
 {
     (void)user, (void)fraction, (void)stage;
@@ -280,6 +301,7 @@ int main(void)
     test_enclosure(FIX_THREE);
     test_linear();
     test_random_pairs();
+    test_clockwise();
     test_bad_arguments();
     return check_summary("test_morph");
 }
