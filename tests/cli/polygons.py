@@ -117,11 +117,11 @@ def _stroke(centreline, width):
 
 
 def spiral_pair(m=24):
-    """A thick spiral of 1.6 turns and a thick straight bar, both strokes of
+    """A thick spiral of 2 turns and a thick straight bar, both strokes of
     m centreline points (2 m vertices)."""
     spiral = []
     for i in range(m):
-        angle = 2.0 * math.pi * 1.6 * i / (m - 1)
+        angle = 2.0 * math.pi * 2.0 * i / (m - 1)
         radius = 1.0 + 0.45 * angle
         spiral.append((radius * math.cos(angle), radius * math.sin(angle)))
     bar = [(-4.0 + 8.0 * i / (m - 1), -0.5) for i in range(m)]
