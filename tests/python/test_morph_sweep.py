@@ -118,3 +118,25 @@ def test_sweep_heights(twisted):
 def test_bad_arguments(twisted, call, error, message):
     with pytest.raises(error, match=message):
         call(twisted)
+
+
+@pytest.mark.parametrize("function, stage", [(compatmesh.morph, "morph system"),
+                                             (compatmesh.sweep, "sweep")])
+def test_progress_reaches_and_cancels_the_morph_and_sweep(twisted, function, stage):
+    stages = []
+    def progress(fraction, name):
+        stages.append(name)
+        return name == stage  # stop there
+    kwargs = {"t": 0.5} if function is compatmesh.morph else {}
+    with pytest.raises(compatmesh.Cancelled):
+        function(twisted, progress=progress, **kwargs)
+    assert stages[-1] == stage
+    assert "enclosure" in stages  # the morph reported before
+
+
+def test_progress_errors_propagate(twisted):
+    def progress(fraction, name):
+        if name == "morph system":
+            raise KeyError("from the callback")
+    with pytest.raises(KeyError, match="from the callback"):
+        compatmesh.morph(twisted, t=0.5, progress=progress)
