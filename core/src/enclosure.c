@@ -461,9 +461,24 @@ static cm_status check_mesh(enclosure *e, const cm_mesh *m, size_t first_enclosu
     return s;
 }
 
+/* The caller's progress callback seen through one piece: fractions of the
+ * piece's triangulation mapped into that piece's share of [0, 0.9]. */
+typedef struct piece_progress {
+    cm_progress_fn fn;
+    void *user;
+    int piece;
+} piece_progress;
+
+static int report_piece(void *user, double fraction, const char *stage)
+{
+    (void)stage;
+    const piece_progress *pp = user;
+    return pp->fn(pp->user, 0.45 * (pp->piece + fraction), "enclosure");
+}
+
 static cm_status triangulate_piece(enclosure *e, const int32_t *ids, size_t count, size_t m,
-                                   const double *enc_xy, const bridge br[2], cm_progress_fn progress,
-                                   void *user, cm_result **out)
+                                   const double *enc_xy, const bridge br[2], int piece_index,
+                                   cm_progress_fn progress, void *user, cm_result **out)
 {
     size_t k = e->k;
     double **poly = calloc(k, sizeof *poly);
@@ -482,7 +497,8 @@ static cm_status triangulate_piece(enclosure *e, const int32_t *ids, size_t coun
     cm_options_init(&o);
     o.method = CM_METHOD_PARTITION;
     o.remesh = 0; /* annulus quality does not reach the sections */
-    o.progress = progress, o.progress_user = user;
+    piece_progress pp = {progress, user, piece_index};
+    if (progress) o.progress = report_piece, o.progress_user = &pp;
     s = cm_triangulate_polygons((const double *const *)poly, counts, k, &o, out);
     if (s == CM_ERR_CANCELLED) fail(e, s, "cancelled");
     else if (s != CM_OK)
@@ -560,7 +576,7 @@ cm_status cm_enclosure_build(const cm_result *r, cm_progress_fn progress, void *
     count[0] = piece_ids(&e, m, ia, ib, br, 1, ids[0]);
     count[1] = piece_ids(&e, m, ib, ia, br, 0, ids[1]);
     for (int p = 0; p < 2; p++) {
-        s = triangulate_piece(&e, ids[p], count[p], m, enc_xy, br, progress, progress_user, &piece[p]);
+        s = triangulate_piece(&e, ids[p], count[p], m, enc_xy, br, p, progress, progress_user, &piece[p]);
         if (s != CM_OK) goto done;
     }
 

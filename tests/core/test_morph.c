@@ -247,6 +247,44 @@ static void test_clockwise(void)
     cm_result_free(r);
 }
 
+/* Progress: fractions rise within [0, 1]; cancelling half-way leaves a
+ * handle that refuses sections. */
+typedef struct progress_log {
+    double last;
+    int calls, backwards, cancel_above_half;
+} progress_log;
+
+static int log_progress(void *user, double fraction, const char *stage)
+{
+    progress_log *log = user;
+    log->backwards += fraction < log->last || fraction > 1.0 || !stage;
+    log->last = fraction;
+    log->calls++;
+    return log->cancel_above_half && fraction > 0.5;
+}
+
+static void test_progress(void)
+{
+    cm_result *r = fixture_result(FIX_TWISTED, N);
+    cm_morph_options o;
+    cm_morph_options_init(&o);
+    progress_log log = {0};
+    o.progress = log_progress, o.progress_user = &log;
+    cm_morph *m = NULL;
+    CHECK(cm_morph_create(r, &o, &m) == CM_OK);
+    CHECK_MSG(log.calls >= 3 && log.backwards == 0 && log.last == 1.0, "%d calls, %d out of order", log.calls,
+              log.backwards);
+    cm_morph_free(m);
+    progress_log stop = {.cancel_above_half = 1};
+    o.progress_user = &stop;
+    CHECK(cm_morph_create(r, &o, &m) == CM_ERR_CANCELLED);
+    double *p = malloc(2 * cm_result_num_vertices(r) * sizeof *p);
+    CHECK(cm_morph_section(m, 0.5, p, NULL, NULL) == CM_ERR_ARGUMENT);
+    free(p);
+    cm_morph_free(m);
+    cm_result_free(r);
+}
+
 static int cancel_now(void *user, double fraction, const char *stage)
 {
     (void)user, (void)fraction, (void)stage;
@@ -302,6 +340,7 @@ int main(void)
     test_linear();
     test_random_pairs();
     test_clockwise();
+    test_progress();
     test_bad_arguments();
     return check_summary("test_morph");
 }
