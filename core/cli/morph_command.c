@@ -264,8 +264,11 @@ static int write_outputs(morph_run *run, cli_error *error)
 {
     int code = staged_output_begin(&run->output, run->args->out_dir, error);
     if (code == CLI_EXIT_OK) code = write_frames(run, error);
-    const char *report = staged_output_path(&run->output, "report.json");
-    const char *picture = staged_output_path(&run->output, "frames.svg");
+    const char *report = NULL, *picture = NULL;
+    if (code == CLI_EXIT_OK) {
+        report = staged_output_path(&run->output, "report.json");
+        picture = staged_output_path(&run->output, "frames.svg");
+    }
     if (code == CLI_EXIT_OK && (!report || !picture)) {
         cli_error_set(error, "out of memory");
         code = CLI_EXIT_INTERNAL;
