@@ -230,16 +230,19 @@ static int check_output(const char *path, cli_error *error)
     return code;
 }
 
-/* The inputs' own z as heights, when every input is an OBJ file with z. */
+/* The inputs' own z as heights, when every input is an OBJ file with z and
+ * the z differ; flat drawings (all z equal, or none given) say nothing. */
 static int heights_from_inputs(const triangulation *tri, double *heights, cli_error *error)
 {
     size_t k = tri->args->input_count, with_z = 0;
-    for (size_t g = 0; g < k; g++) with_z += tri->polygons[g].has_z ? 1 : 0;
-    if (with_z == 0) return 0;
-    int all_equal = 1;
-    for (size_t g = 1; g < k; g++)
-        if (tri->polygons[g].z != tri->polygons[0].z) all_equal = 0;
-    if (with_z == k && all_equal) return 0; /* flat drawings: z says nothing */
+    int distinct = 0;
+    for (size_t g = 0; g < k; g++) {
+        if (!tri->polygons[g].has_z) continue;
+        if (with_z > 0 && tri->polygons[g].z != heights[0]) distinct = 1;
+        if (with_z == 0) heights[0] = tri->polygons[g].z;
+        with_z++;
+    }
+    if (!distinct) return 0;
     if (with_z < k) {
         cli_error_set(error, "sweep: some inputs give z and some do not; give all of them z "
                       "or use --height / --heights");

@@ -241,32 +241,26 @@ def test_mismatched_counts(cm, tmp_path):
 
 def test_inputs_with_and_without_z(cm, tmp_path):
     a, b = twisted_pair()
+    c, _ = glyph_pair(8)
     write_obj(tmp_path / "a.obj", a, 0.0)
     write_xy(tmp_path / "b.xy", b)
-    result = cm("sweep", "a.obj", "b.xy", "-o", "out.msh")
+    write_obj(tmp_path / "c.obj", c, 2.0)
+    result = cm("sweep", "a.obj", "b.xy", "c.obj", "-o", "out.msh")
     assert result.returncode == 2
-    assert result.stderr.count("\n") == 1 and "some inputs give z" in result.stderr
+    assert result.stderr == ("compatmesh: sweep: some inputs give z and some do not; give all "
+                             "of them z or use --height / --heights\n")
     assert not (tmp_path / "out.msh").exists()
+    # A flat drawing (z = 0) beside a .xy file is fine.
+    assert cm("sweep", "a.obj", "b.xy", "-o", "out.msh").returncode == 0
 
 
-def test_flat_obj_inputs_use_the_height(cm, tmp_path):
+def test_inputs_z_must_increase(cm, tmp_path):
     a, b = twisted_pair()
-    write_obj(tmp_path / "a.obj", a, 0.0)
-    write_obj(tmp_path / "b.obj", b, 0.0)
-    result = cm("sweep", "a.obj", "b.obj", "--height", "2", "-o", "out.msh")
-    assert result.returncode == 0, result.stderr
-    z = meshio.read(tmp_path / "out.msh").points[:, 2]
-    assert z.min() == 0 and z.max() == 2
-    result = cm("sweep", "a.obj", "b.obj", "-o", "default.msh")
-    assert result.returncode == 0, result.stderr
-    assert meshio.read(tmp_path / "default.msh").points[:, 2].max() == 1
-
-
-def test_extension_in_capitals(cm, tmp_path):
-    a, b = twisted_pair()
-    write_xy(tmp_path / "a.xy", a)
-    write_xy(tmp_path / "b.xy", b)
-    result = cm("sweep", "a.xy", "b.xy", "-o", "OUT.VTK")
-    assert result.returncode == 0, result.stderr
-    assert sorted(os.listdir(tmp_path)) == ["OUT.VTK", "a.xy", "b.xy"]
-    assert len(meshio.read(tmp_path / "OUT.VTK", file_format="vtk").cells[0].data) > 0
+    write_obj(tmp_path / "a.obj", a, 2.0)
+    write_obj(tmp_path / "b.obj", b, 1.0)
+    result = cm("sweep", "a.obj", "b.obj", "-o", "out.msh")
+    assert result.returncode == 2
+    assert result.stderr == ("compatmesh: sweep: b.obj lies at z = 1, not above a.obj at z = 2; "
+                             "the inputs' z must increase (or use --height / --heights)\n")
+    assert not (tmp_path / "out.msh").exists()
+    assert cm("sweep", "a.obj", "b.obj", "--heights", "0,1", "-o", "out.msh").returncode == 0
