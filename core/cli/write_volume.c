@@ -13,6 +13,8 @@
 
 #ifdef CM_HAVE_GMSH
 #include <gmshc.h>
+
+#include "interrupt.h"
 #endif
 
 static const char *const extensions[] = {"msh", "vtk", "inp", "bdf", "unv"};
@@ -146,6 +148,7 @@ int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
         free(temporary);
         return CLI_EXIT_INTERNAL;
     }
+    catch_interrupts(); /* Gmsh may install its own handlers; ours leave no file */
     gmshOptionSetNumber("General.Terminal", 0, &ierr);
     gmshOptionSetNumber("Mesh.MshFileVersion", msh_version, &ierr);
     gmshOptionSetNumber("Mesh.Binary", 0, &ierr);
@@ -160,6 +163,11 @@ int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
         }
     }
     gmshFinalize(&ierr);
+    catch_interrupts();
+    if (code == CLI_EXIT_OK && interrupted) {
+        cli_error_set(error, "interrupted; nothing written");
+        code = CLI_EXIT_INTERRUPTED;
+    }
     if (code == CLI_EXIT_OK && rename(temporary, path) != 0) {
         cli_error_set(error, "cannot write %s: %s", path, strerror(errno));
         code = CLI_EXIT_INTERNAL;

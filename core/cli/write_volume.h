@@ -32,7 +32,8 @@ typedef struct volume_mesh {
 
 /* Writes mesh to path, first to a temporary file beside it, renamed into
  * place once complete. msh_version (4.1 or 2.2) applies to .msh only.
- * Returns CLI_EXIT_OK or CLI_EXIT_INTERNAL with error set. */
+ * Returns CLI_EXIT_OK, or with error set CLI_EXIT_INTERNAL, or
+ * CLI_EXIT_INTERRUPTED when interrupted meanwhile (then nothing is left). */
 int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
                  cli_error *error);
 
