@@ -4,6 +4,8 @@ import json
 import os
 import xml.etree.ElementTree as ET
 
+import meshio
+import numpy as np
 import pytest
 
 from polygons import (glyph_pair, leftovers, orientation, read_vertex_text, snapshot,
@@ -150,3 +152,17 @@ def test_failure_while_writing_leaves_the_directory_as_it_was(cm, tmp_path):
     assert result.stderr == "compatmesh: cannot replace out/frame_004.off: it is a directory\n"
     assert snapshot(tmp_path / "out") == before
     assert leftovers(tmp_path) == []
+
+
+@pytest.mark.parametrize("fmt", ["obj", "ply"])
+def test_frames_in_other_formats(cm, tmp_path, fmt):
+    write_pair(tmp_path, glyph_pair())
+    result = cm("morph", "a.xy", "b.xy", "--frames", 3, "--format", fmt, "-o", "out")
+    assert result.returncode == 0, result.stderr
+    off = cm("morph", "a.xy", "b.xy", "--frames", 3, "-o", "off")
+    assert off.returncode == 0, off.stderr
+    for f in range(3):
+        mesh = meshio.read(tmp_path / "out" / f"frame_{f:03d}.{fmt}")
+        reference = meshio.read(tmp_path / "off" / f"frame_{f:03d}.off")
+        assert np.array_equal(mesh.cells_dict["triangle"], reference.cells_dict["triangle"])
+        assert np.array_equal(mesh.points, reference.points)
