@@ -8,7 +8,8 @@
  * and without remeshing; for each, the morph's set-up time, the frame rate
  * of the convex-combination morph (UMFPACK numeric factorization and two
  * solves per frame, exact validation of every triangle of the enclosed
- * mesh), that of the linear mode, and a sweep. Prints a markdown table.
+ * mesh), the same with intrinsic weights, that of the linear mode, and a
+ * sweep. Prints a markdown table.
  * Timing only; the tests check correctness. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -51,9 +52,10 @@ int main(int argc, char **argv)
     }
     rp_twist(xy + 2 * n, n, n / 3);
     printf("| N = %d twisted star pair | vertices | triangles | morph set-up (s) | convex fps | invalid frames "
-           "| min angle | linear fps | linear frames with inversions | sweep (s) | sections |\n",
+           "| min angle | intrinsic fps | invalid | min angle | linear fps | linear frames with inversions | sweep (s) "
+           "| sections |\n",
            n);
-    printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+    printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (int remesh = 1; remesh >= 0; remesh--) {
         cm_options o;
         cm_options_init(&o);
@@ -74,6 +76,15 @@ int main(int argc, char **argv)
         }
         double setup = now() - t0;
         double fps = frame_rate(m, nv, frames, &invalid, &angle);
+        cm_morph *intr = NULL;
+        size_t intr_invalid = 0;
+        double intr_angle = 0, intr_fps = 0;
+        mo.method = CM_MORPH_INTRINSIC;
+        if (cm_morph_create(r, &mo, &intr) == CM_OK)
+            intr_fps = frame_rate(intr, nv, frames, &intr_invalid, &intr_angle);
+        else
+            intr_invalid = (size_t)frames;
+        cm_morph_free(intr);
         mo.method = CM_MORPH_LINEAR;
         cm_morph_create(r, &mo, &lin);
         double lin_fps = frame_rate(lin, nv, frames, &lin_invalid, &lin_angle);
@@ -83,9 +94,9 @@ int main(int argc, char **argv)
         t0 = now();
         cm_status s = cm_sweep_create(m, &so, &w);
         double sweep = now() - t0;
-        printf("| %s | %zu | %zu | %.3f | %.1f | %zu/%d | %.2f | %.0f | %zu/%d | %.2f%s | %zu |\n",
+        printf("| %s | %zu | %zu | %.3f | %.1f | %zu/%d | %.3g | %.1f | %zu/%d | %.3g | %.0f | %zu/%d | %.2f%s | %zu |\n",
                remesh ? "defaults (remeshed)" : "no remeshing", nv, cm_result_num_triangles(r), setup, fps, invalid,
-               frames, angle, lin_fps, lin_invalid, frames, sweep, s == CM_OK ? "" : " (failed)",
+               frames, angle, intr_fps, intr_invalid, frames, intr_angle, lin_fps, lin_invalid, frames, sweep, s == CM_OK ? "" : " (failed)",
                cm_sweep_num_sections(w));
         cm_sweep_free(w);
         cm_morph_free(lin);

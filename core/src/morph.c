@@ -8,7 +8,13 @@
  * Tutte's theorem the solution of the linear system is a valid
  * triangulation at every time. UMFPACK solves the system; its pattern is
  * fixed, so the symbolic analysis is done once. Every section is still
- * checked with exact predicates. */
+ * checked with exact predicates.
+ *
+ * CM_MORPH_INTRINSIC interpolates the stars instead of the weights: each
+ * corner angle linearly, each edge length geometrically, and takes the
+ * mean value coordinates of the interpolated star (the intrinsic
+ * interpolation of Surazhsky and Gotsman, 2003). The angles stay in
+ * (0, pi), so the weights stay positive and Tutte's theorem still holds. */
 #include <float.h>
 #include <math.h>
 #include <stdarg.h>
@@ -138,6 +144,64 @@ static cm_status check_weights(cm_morph *m, size_t g)
     return CM_OK;
 }
 
+/* The star shapes for intrinsic weights: per corner at an interior
+ * vertex, its angle (in (0, pi) in a valid triangulation) and the log
+ * lengths of its two edges, in every geometry. */
+static cm_status build_corners(cm_morph *m)
+{
+    const cm_mesh *f = &m->full;
+    size_t nc = 0;
+    for (size_t j = 0; j < 3 * f->nt; j++) nc += m->unknown[f->tri[j]] >= 0;
+    m->ncorner = nc;
+    m->corner_slot = malloc(2 * nc * sizeof *m->corner_slot);
+    m->corner_shape = calloc(m->k, sizeof *m->corner_shape);
+    m->weights = malloc(m->start[m->nu] * sizeof *m->weights);
+    if (!m->corner_slot || !m->corner_shape || !m->weights)
+        return fail(m, CM_ERR_NO_MEMORY, "out of memory");
+    for (size_t g = 0; g < m->k; g++)
+        if (!(m->corner_shape[g] = malloc(3 * nc * sizeof *m->corner_shape[g])))
+            return fail(m, CM_ERR_NO_MEMORY, "out of memory");
+    size_t c = 0;
+    for (size_t t = 0; t < f->nt; t++)
+        for (int q = 0; q < 3; q++) {
+            int32_t v = f->tri[3 * t + q], a = f->tri[3 * t + (q + 1) % 3], b = f->tri[3 * t + (q + 2) % 3];
+            int32_t row = m->unknown[v];
+            if (row < 0) continue;
+            m->corner_slot[2 * c] = find_neighbour(m, row, a);
+            m->corner_slot[2 * c + 1] = find_neighbour(m, row, b);
+            for (size_t g = 0; g < m->k; g++) {
+                const double *xy = f->xy[g], *p = xy + 2 * (size_t)v, *pa = xy + 2 * (size_t)a,
+                             *pb = xy + 2 * (size_t)b;
+                double ux = pa[0] - p[0], uy = pa[1] - p[1], wx = pb[0] - p[0], wy = pb[1] - p[1];
+                double *shape = m->corner_shape[g] + 3 * c;
+                shape[0] = atan2(ux * wy - uy * wx, ux * wx + uy * wy);
+                shape[1] = log(hypot(ux, uy)), shape[2] = log(hypot(wx, wy));
+            }
+            c++;
+        }
+    return CM_OK;
+}
+
+/* Intrinsic weights at local time s between geometries g and g + 1: mean
+ * value coordinates of the interpolated stars. Corner angles stay in
+ * (0, pi), so every weight is positive. */
+static void intrinsic_weights(cm_morph *m, size_t g, double s)
+{
+    const double *s0 = m->corner_shape[g], *s1 = m->corner_shape[g + 1];
+    double *w = m->weights;
+    memset(w, 0, m->start[m->nu] * sizeof *w);
+    for (size_t c = 0; c < m->ncorner; c++) {
+        double angle = (1 - s) * s0[3 * c] + s * s1[3 * c], half_tan = tan(0.5 * angle);
+        w[m->corner_slot[2 * c]] += half_tan * exp(-((1 - s) * s0[3 * c + 1] + s * s1[3 * c + 1]));
+        w[m->corner_slot[2 * c + 1]] += half_tan * exp(-((1 - s) * s0[3 * c + 2] + s * s1[3 * c + 2]));
+    }
+    for (int32_t row = 0; row < m->nu; row++) {
+        double sum = 0;
+        for (size_t x = m->start[row]; x < m->start[row + 1]; x++) sum += w[x];
+        for (size_t x = m->start[row]; x < m->start[row + 1]; x++) w[x] /= sum;
+    }
+}
+
 /* The triplets of I - Lambda (diagonal first), their compressed-column
  * form and the symbolic factorization. */
 static cm_status build_system(cm_morph *m)
@@ -183,7 +247,7 @@ cm_status cm_morph_create(const cm_result *result, const cm_morph_options *optio
     if (!result) return fail(m, CM_ERR_ARGUMENT, "morph: result is NULL");
     if (cm_result_status(result) != CM_OK)
         return fail(m, CM_ERR_ARGUMENT, "morph: the result failed (%s)", cm_result_message(result));
-    if ((unsigned)options->method > (unsigned)CM_MORPH_LINEAR)
+    if ((unsigned)options->method > (unsigned)CM_MORPH_INTRINSIC)
         return fail(m, CM_ERR_ARGUMENT, "morph: unknown method %d", (int)options->method);
     m->method = options->method;
     m->k = result->mesh.k, m->nv = result->mesh.nv, m->nt = result->mesh.nt;
@@ -208,6 +272,7 @@ cm_status cm_morph_create(const cm_result *result, const cm_morph_options *optio
         mean_value_weights(m, g);
         if ((s = check_weights(m, g)) != CM_OK) return s;
     }
+    if (m->method == CM_MORPH_INTRINSIC && (s = build_corners(m)) != CM_OK) return s;
     if ((s = build_system(m)) != CM_OK) return s;
     if (cancelled(options, 1.0, "morph system")) return fail(m, CM_ERR_CANCELLED, "cancelled");
     m->message[0] = '\0';
@@ -226,6 +291,9 @@ void cm_morph_free(cm_morph *m)
     free(m->boundary), free(m->unknown), free(m->start), free(m->nbr), free(m->entry);
     free(m->ti), free(m->tj), free(m->map), free(m->tx), free(m->ap), free(m->ai), free(m->ax);
     free(m->rhs), free(m->sol), free(m->pos);
+    if (m->corner_shape)
+        for (size_t g = 0; g < m->k; g++) free(m->corner_shape[g]);
+    free(m->corner_shape), free(m->corner_slot), free(m->weights);
     free(m);
 }
 
@@ -237,10 +305,12 @@ static cm_status solve_positions(cm_morph *m, size_t g, double s)
 {
     const double *l0 = m->lambda[g], *l1 = m->lambda[g + 1], *fixed = m->full.xy[0];
     double *rx = m->rhs, *ry = m->rhs + m->nu;
+    int intrinsic = m->method == CM_MORPH_INTRINSIC;
+    if (intrinsic) intrinsic_weights(m, g, s);
     for (int32_t row = 0; row < m->nu; row++) {
         rx[row] = ry[row] = 0;
         for (size_t x = m->start[row]; x < m->start[row + 1]; x++) {
-            double lam = (1 - s) * l0[x] + s * l1[x];
+            double lam = intrinsic ? m->weights[x] : (1 - s) * l0[x] + s * l1[x];
             if (m->entry[x] >= 0) {
                 m->tx[m->entry[x]] = -lam;
             } else { /* enclosure vertex: the same point in every geometry */
@@ -324,7 +394,7 @@ cm_status cm_morph_section_at(cm_morph *m, size_t g, double s, double *xy, size_
                                                 xy + 2 * (size_t)r->tri[3 * j + 2]));
         *min_angle_deg = lo * 180.0 / CM_PI;
     }
-    if (bad && m->method == CM_MORPH_CONVEX)
+    if (bad && m->method != CM_MORPH_LINEAR)
         return fail(m, CM_ERR_INTERNAL, "morph: %zu triangles invert at t = %.17g", bad, t);
     m->message[0] = '\0';
     return CM_OK;

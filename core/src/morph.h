@@ -22,6 +22,13 @@ struct cm_morph {
     size_t *start;
     int32_t *nbr, *entry;
     double **lambda;
+    /* CM_MORPH_INTRINSIC: every triangle corner at an interior vertex
+     * (slots of its two neighbours), its angle and the logarithms of its
+     * two edge lengths per geometry; scratch weights per frame. */
+    size_t ncorner;
+    size_t *corner_slot;     /* 2 per corner */
+    double **corner_shape;   /* k arrays of 3 per corner: angle, log|a|, log|b| */
+    double *weights;         /* start[nu] */
     /* UMFPACK: the pattern of I - Lambda (fixed), its symbolic analysis. */
     int nz;                  /* triplets: diagonal first, then entries */
     int *ti, *tj, *map, *ap, *ai;

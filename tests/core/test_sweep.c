@@ -71,7 +71,7 @@ static void check_conforming(const cm_sweep *w, size_t nt, size_t n)
     free(faces);
 }
 
-static void test_sweep(fixture_kind kind, const double *heights, int tets)
+static void test_sweep(fixture_kind kind, const double *heights, int tets, cm_morph_method method)
 {
     const char *name = fixture_name(kind);
     cm_result *r = fixture_result(kind, N);
@@ -81,7 +81,10 @@ static void test_sweep(fixture_kind kind, const double *heights, int tets)
     }
     size_t k = cm_result_num_geometries(r), nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
     cm_morph *m = NULL;
-    CHECK(cm_morph_create(r, NULL, &m) == CM_OK);
+    cm_morph_options mo;
+    cm_morph_options_init(&mo);
+    mo.method = method;
+    CHECK(cm_morph_create(r, &mo, &m) == CM_OK);
     cm_sweep_options o;
     cm_sweep_options_init(&o);
     o.tets = tets;
@@ -129,8 +132,8 @@ static void test_sweep(fixture_kind kind, const double *heights, int tets)
     }
     double rel = fabs(cm_sweep_volume(w) - integral) / integral;
     CHECK_MSG(rel < 1e-9, "%s: volume %.15g, integral of areas %.15g", name, cm_sweep_volume(w), integral);
-    printf("%s%s: %zu sections (%zu inserted), %zu prisms, %zu tets, volume %.12g (relative difference %.1e)\n", name,
-           tets ? " with tets" : "", ns,
+    printf("%s%s%s: %zu sections (%zu inserted), %zu prisms, %zu tets, volume %.12g (relative difference %.1e)\n", name,
+           method == CM_MORPH_INTRINSIC ? ", intrinsic" : "", tets ? " with tets" : "", ns,
            ns - ((k - 1) * (o.sections - 1) + 1), np, cm_sweep_num_tets(w), cm_sweep_volume(w), rel);
 done:
     cm_sweep_free(w);
@@ -200,11 +203,13 @@ static void test_failures(void)
 int main(void)
 {
     static const double three_heights[3] = {0.0, 0.25, 2.0};
-    test_sweep(FIX_TWISTED, NULL, 1);
-    test_sweep(FIX_SPIRAL, NULL, 0); /* the blends alone need one more section */
-    test_sweep(FIX_SPIRAL, NULL, 1);
-    test_sweep(FIX_GLYPH, NULL, 1);
-    test_sweep(FIX_THREE, three_heights, 1);
+    test_sweep(FIX_TWISTED, NULL, 1, CM_MORPH_CONVEX);
+    test_sweep(FIX_SPIRAL, NULL, 0, CM_MORPH_CONVEX); /* the blends alone need one more section */
+    test_sweep(FIX_SPIRAL, NULL, 1, CM_MORPH_CONVEX);
+    test_sweep(FIX_GLYPH, NULL, 1, CM_MORPH_CONVEX);
+    test_sweep(FIX_THREE, three_heights, 1, CM_MORPH_CONVEX);
+    test_sweep(FIX_SPIRAL, NULL, 1, CM_MORPH_INTRINSIC);
+    test_sweep(FIX_THREE, three_heights, 1, CM_MORPH_INTRINSIC);
     test_failures();
     return check_summary("test_sweep");
 }

@@ -240,8 +240,17 @@ cm_status cm_result_quality_before(const cm_result *result, size_t g, cm_quality
 
 typedef enum cm_morph_method {
     CM_MORPH_CONVEX = 0, /* convex-combination morph: every section valid */
-    CM_MORPH_LINEAR = 1  /* straight-line vertex paths, for comparison:
+    CM_MORPH_LINEAR = 1, /* straight-line vertex paths, for comparison:
                             sections may invert (counted, not an error) */
+    /* Convex combinations with intrinsic weights (after Surazhsky and
+     * Gotsman, "Intrinsic morphing of compatible triangulations"): each
+     * interior vertex's star is interpolated by its corner angles
+     * (linearly) and edge lengths (geometrically), and the weights at time
+     * t are the mean value coordinates of that star. Rotation-aware: a
+     * turning star keeps its shape instead of shrinking. Every section
+     * valid, as for CM_MORPH_CONVEX; on the test fixtures the smallest
+     * angles of the sections are mostly higher. */
+    CM_MORPH_INTRINSIC = 2
 } cm_morph_method;
 
 typedef struct cm_morph_options {
@@ -281,7 +290,7 @@ const char *cm_morph_message(const cm_morph *morph);
  *                  to geometry g.
  *   inverted:      may be NULL; receives the number of triangles that are
  *                  not strictly counter-clockwise (exact predicates). For
- *                  CM_MORPH_CONVEX a non-zero count is a failure
+ *                  the convex methods a non-zero count is a failure
  *                  (CM_ERR_INTERNAL); for CM_MORPH_LINEAR it is reported
  *                  and the call returns CM_OK.
  *   min_angle_deg: may be NULL; receives the section's smallest angle. */
