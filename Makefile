@@ -8,7 +8,8 @@ DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
   fonts-dejavu-core python3 python3-numpy python3-pytest python3-meshio \
   libopenmesh-dev libeigen3-dev pybind11-dev python3-dev \
   meshlab dpkg-dev qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev \
-  libglew-dev xvfb xauth
+  libglew-dev xvfb xauth \
+  libsuitesparse-dev libgmsh-dev gmsh python3-gmsh
 
 # Only `make bench` needs these: CGAL meshes each polygon alone, to compare.
 BENCH_PACKAGES = libcgal-dev

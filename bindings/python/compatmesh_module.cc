@@ -297,12 +297,15 @@ Result make_result(const cm_result *r, const std::vector<Polygon> &polygons)
   return result;
 }
 
-Result triangulate(py::object polygons_in, py::kwargs kwargs)
+// Reads the polygons and runs the core with the keyword options of
+// triangulate(); `function` names the caller in messages. On success the
+// result is returned and the polygons are left in *polygons.
+ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, const char *function,
+                            std::vector<Polygon> *polygons, Callbacks *callbacks)
 {
   double tolerance = compatmesh::kDefaultPlanarityTolerance;
   cm_options options;
   cm_options_init(&options);
-  Callbacks callbacks;
   for (auto item : kwargs) {
     std::string name = item.first.cast<std::string>();
     if (name == "planarity_tolerance") {
@@ -312,21 +315,21 @@ Result triangulate(py::object polygons_in, py::kwargs kwargs)
     const OptionSetter *setter = nullptr;
     for (const OptionSetter &s : option_setters())
       if (name == s.name) setter = &s;
-    if (!setter) throw py::type_error("triangulate() got an unexpected keyword argument '" + name + "'");
-    setter->set(options, item.second, callbacks);
+    if (!setter)
+      throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + name + "'");
+    setter->set(options, item.second, *callbacks);
   }
 
-  std::vector<Polygon> polygons;
-  for (py::handle item : polygons_in) polygons.push_back(read_polygon(item, polygons.size(), tolerance));
+  for (py::handle item : polygons_in) polygons->push_back(read_polygon(item, polygons->size(), tolerance));
   std::vector<const double *> data;
   std::vector<std::size_t> counts;
-  for (const Polygon &p : polygons) {
+  for (const Polygon &p : *polygons) {
     data.push_back(p.xy.data());
     counts.push_back(p.size());
   }
 
-  ProgressContext context{&callbacks.progress, nullptr};
-  if (callbacks.progress && !callbacks.progress.is_none()) {
+  ProgressContext context{&callbacks->progress, nullptr};
+  if (callbacks->progress && !callbacks->progress.is_none()) {
     options.progress = call_progress;
     options.progress_user = &context;
   }
@@ -334,12 +337,194 @@ Result triangulate(py::object polygons_in, py::kwargs kwargs)
   cm_status status;
   {
     py::gil_scoped_release no_gil;
-    status = cm_triangulate_polygons(data.data(), counts.data(), polygons.size(), &options, &raw);
+    status = cm_triangulate_polygons(data.data(), counts.data(), polygons->size(), &options, &raw);
   }
   ResultPtr result(raw);
   if (context.error) std::rethrow_exception(context.error);
   if (status != CM_OK) raise_failure(raw, status);
-  return make_result(raw, polygons);
+  return result;
+}
+
+Result triangulate(py::object polygons_in, py::kwargs kwargs)
+{
+  std::vector<Polygon> polygons;
+  Callbacks callbacks;
+  ResultPtr result = run_triangulation(polygons_in, kwargs, "triangulate", &polygons, &callbacks);
+  return make_result(result.get(), polygons);
+}
+
+// --- morph and sweep ---------------------------------------------------------
+
+struct MorphDeleter {
+  void operator()(cm_morph *morph) const { cm_morph_free(morph); }
+};
+using MorphPtr = std::unique_ptr<cm_morph, MorphDeleter>;
+struct SweepDeleter {
+  void operator()(cm_sweep *sweep) const { cm_sweep_free(sweep); }
+};
+using SweepPtr = std::unique_ptr<cm_sweep, SweepDeleter>;
+
+// A failed morph or sweep call: the core's message as a ValueError when the
+// arguments were at fault, RuntimeError when its own check failed.
+[[noreturn]] void raise_step_failure(cm_status status, const char *message)
+{
+  std::string text = message && message[0] ? message : cm_status_string(status);
+  if (status == CM_ERR_NO_MEMORY) throw std::bad_alloc();
+  if (status == CM_ERR_CANCELLED) {
+    PyErr_SetString(cancelled_type.ptr(), text.c_str());
+    throw py::error_already_set();
+  }
+  if (status == CM_ERR_INTERNAL) throw std::runtime_error(text);
+  throw py::value_error(text);
+}
+
+// Morph and sweep work in the plane: their sections are n x 2.
+void require_planar(const std::vector<Polygon> &polygons, const char *function)
+{
+  for (std::size_t g = 0; g < polygons.size(); g++)
+    if (polygons[g].spatial)
+      throw py::value_error(std::string(function) + ": polygon " + std::to_string(g) +
+                            ": expected an n x 2 array (sections are planar; give heights to sweep)");
+}
+
+// The morph of the triangulated polygons, progress reported like the
+// triangulation's.
+MorphPtr make_morph(const cm_result *result, cm_morph_method method, Callbacks &callbacks,
+                    ProgressContext &context)
+{
+  cm_morph_options options;
+  cm_morph_options_init(&options);
+  options.method = method;
+  if (callbacks.progress && !callbacks.progress.is_none()) {
+    options.progress = call_progress;
+    options.progress_user = &context;
+  }
+  cm_morph *raw = nullptr;
+  cm_status status;
+  {
+    py::gil_scoped_release no_gil;
+    status = cm_morph_create(result, &options, &raw);
+  }
+  MorphPtr morph(raw);
+  if (context.error) std::rethrow_exception(context.error);
+  if (status != CM_OK) raise_step_failure(status, raw ? cm_morph_message(raw) : nullptr);
+  return morph;
+}
+
+const std::vector<std::pair<const char *, cm_morph_method>> morph_method_names = {
+    {"convex", CM_MORPH_CONVEX}, {"linear", CM_MORPH_LINEAR}};
+
+// The times asked for: t (a number or a sequence) or frames (evenly spaced,
+// both ends included), exactly one of them.
+std::vector<double> morph_times(py::object t, py::object frames)
+{
+  if (t.is_none() == frames.is_none()) throw py::type_error("morph() takes exactly one of t and frames");
+  std::vector<double> times;
+  if (!frames.is_none()) {
+    long count = number_from<long>(frames, "frames");
+    if (count < 2) throw py::value_error("morph: frames must be at least 2, got " + std::to_string(count));
+    for (long f = 0; f < count; f++) times.push_back(f + 1 == count ? 1.0 : double(f) / double(count - 1));
+    return times;
+  }
+  if (py::isinstance<py::float_>(t) || py::isinstance<py::int_>(t)) return {t.cast<double>()};
+  FloatArray a = FloatArray::ensure(t);
+  if (!a || a.ndim() != 1) {
+    PyErr_Clear();
+    throw py::type_error("morph: t must be a number or a 1-D sequence of numbers");
+  }
+  times.assign(a.data(), a.data() + a.shape(0));
+  return times;
+}
+
+py::dict morph(py::object polygons_in, py::object t, py::object frames, py::object morph_method,
+               py::kwargs kwargs)
+{
+  std::vector<double> times = morph_times(t, frames);
+  cm_morph_method method = enum_from(morph_method, "morph_method", morph_method_names);
+  std::vector<Polygon> polygons;
+  Callbacks callbacks;
+  ResultPtr result = run_triangulation(polygons_in, kwargs, "morph", &polygons, &callbacks);
+  require_planar(polygons, "morph");
+  ProgressContext context{&callbacks.progress, nullptr};
+  MorphPtr m = make_morph(result.get(), method, callbacks, context);
+
+  std::size_t nv = cm_result_num_vertices(result.get()), frame_count = times.size();
+  py::array_t<double> sections({py::ssize_t(frame_count), py::ssize_t(nv), py::ssize_t(2)});
+  py::array_t<std::int64_t> inverted{py::ssize_t(frame_count)};
+  py::array_t<double> min_angle{py::ssize_t(frame_count)};
+  for (std::size_t f = 0; f < frame_count; f++) {
+    std::size_t bad = 0;
+    double angle = 0;
+    cm_status status;
+    {
+      py::gil_scoped_release no_gil;
+      status = cm_morph_section(m.get(), times[f], sections.mutable_data() + 2 * nv * f, &bad, &angle);
+    }
+    if (status != CM_OK) raise_step_failure(status, cm_morph_message(m.get()));
+    inverted.mutable_at(f) = std::int64_t(bad);
+    min_angle.mutable_at(f) = angle;
+  }
+  py::dict out;
+  out["faces"] = copy_array(cm_result_triangles(result.get()), cm_result_num_triangles(result.get()), 3);
+  out["t"] = copy_array(times.data(), frame_count, 1);
+  out["sections"] = sections;
+  out["inverted"] = inverted;
+  out["min_angle_deg"] = min_angle;
+  out["n"] = polygons.empty() ? 0 : polygons[0].size();
+  return out;
+}
+
+py::dict sweep(py::object polygons_in, py::object sections, py::object height, py::object heights,
+               bool tets, py::kwargs kwargs)
+{
+  cm_sweep_options options;
+  cm_sweep_options_init(&options);
+  options.sections = number_from<std::size_t>(sections, "sections");
+  options.tets = tets ? 1 : 0;
+  if (!height.is_none()) options.height = number_from<double>(height, "height");
+  std::vector<double> z;
+  if (!heights.is_none()) {
+    if (!height.is_none()) throw py::type_error("sweep() takes height or heights, not both");
+    FloatArray a = FloatArray::ensure(heights);
+    if (!a || a.ndim() != 1) {
+      PyErr_Clear();
+      throw py::type_error("sweep: heights must be a 1-D sequence of numbers");
+    }
+    z.assign(a.data(), a.data() + a.shape(0));
+  }
+  std::vector<Polygon> polygons;
+  Callbacks callbacks;
+  ResultPtr result = run_triangulation(polygons_in, kwargs, "sweep", &polygons, &callbacks);
+  require_planar(polygons, "sweep");
+  if (!heights.is_none()) {
+    if (z.size() != polygons.size())
+      throw py::value_error("sweep: heights has " + std::to_string(z.size()) + " values for " +
+                            std::to_string(polygons.size()) + " polygons");
+    options.heights = z.data();
+  }
+  ProgressContext context{&callbacks.progress, nullptr};
+  MorphPtr m = make_morph(result.get(), CM_MORPH_CONVEX, callbacks, context);
+  if (callbacks.progress && !callbacks.progress.is_none()) {
+    options.progress = call_progress;
+    options.progress_user = &context;
+  }
+  cm_sweep *raw = nullptr;
+  cm_status status;
+  {
+    py::gil_scoped_release no_gil;
+    status = cm_sweep_create(m.get(), &options, &raw);
+  }
+  SweepPtr w(raw);
+  if (context.error) std::rethrow_exception(context.error);
+  if (status != CM_OK) raise_step_failure(status, raw ? cm_sweep_message(raw) : nullptr);
+
+  py::dict out;
+  out["nodes"] = copy_array(cm_sweep_nodes(w.get()), cm_sweep_num_nodes(w.get()), 3);
+  out["prisms"] = copy_array(cm_sweep_prisms(w.get()), cm_sweep_num_prisms(w.get()), 6);
+  out["tets"] = copy_array(cm_sweep_tets(w.get()), cm_sweep_num_tets(w.get()), 4);
+  out["section_z"] = copy_array(cm_sweep_section_z(w.get()), cm_sweep_num_sections(w.get()), 1);
+  out["volume"] = cm_sweep_volume(w.get());
+  return out;
 }
 
 }  // namespace
@@ -410,4 +595,42 @@ options: keyword arguments named like the fields of the C struct cm_options,
 Raises InputError (a ValueError) with the core's message for bad input,
 TypeError for an unknown keyword, Cancelled when progress asked to stop,
 RuntimeError if the construction failed its own check.)doc");
+
+  m.def("morph", &morph, py::arg("polygons"), py::arg("t") = py::none(), py::arg("frames") = py::none(),
+        py::arg("morph_method") = "convex",
+        R"doc(morph(polygons, t=None, frames=None, morph_method="convex", **options) -> dict
+
+Triangulates the n x 2 polygons as triangulate() does (same keyword options)
+and returns sections of the morph through them: the polygons are surrounded
+by a common convex enclosure and every interior vertex is a convex
+combination of its neighbours (Floater-Gotsman), so every section of the
+"convex" morph is a valid triangulation; "linear" moves the vertices on
+straight lines, for comparison (its inverted triangles are counted). With
+k > 2 polygons the morph passes through polygon g at t = g / (k - 1).
+
+t: a time in [0, 1] or a sequence of them; or frames: a count >= 2 of evenly
+    spaced times from 0 to 1 (give exactly one).
+Returns a dict: faces (m x 3 int32, the same in every section), t (F),
+sections (F x nv x 2 floats, the n polygon vertices first), inverted (F ints:
+triangles not strictly counter-clockwise, by exact predicates), min_angle_deg
+(F), n. Raises InputError (a ValueError) for bad polygons, ValueError with
+the core's message for a bad t, RuntimeError if a convex section failed its
+exact check.)doc");
+
+  m.def("sweep", &sweep, py::arg("polygons"), py::arg("sections") = 11, py::arg("height") = py::none(),
+        py::arg("heights") = py::none(), py::arg("tets") = false,
+        R"doc(sweep(polygons, sections=11, height=None, heights=None, tets=False, **options) -> dict
+
+The volume between the n x 2 polygons: sections of their convex morph
+stacked at increasing z and joined into 6-node prisms, each checked exactly
+to stay valid through its height (sections are inserted where needed).
+Polygon g lies at heights[g] (strictly increasing), or the polygons are
+evenly spaced over height (default 1). sections: per pair of consecutive
+polygons, both ends included, >= 2. tets: also split every prism into 3
+tetrahedra with conforming faces. Keyword options as for triangulate().
+Returns a dict: nodes (N x 3; node s * nv + v is vertex v of section s),
+prisms (P x 6 int32, Gmsh wedge order: bottom counter-clockwise seen from +z,
+then top), tets (T x 4 int32, positive volume; 0 x 4 unless tets),
+section_z, volume (the prisms' total). Bad arguments raise ValueError with
+the core's message.)doc");
 }

@@ -20,6 +20,12 @@ typedef struct cli_error {
     char message[1024];
 } cli_error;
 
+/* Prints the message as the tool's one line on stderr. */
+static inline void cli_print_error(const cli_error *error)
+{
+    fprintf(stderr, "compatmesh: %s\n", error->message);
+}
+
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif

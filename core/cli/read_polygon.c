@@ -249,6 +249,7 @@ typedef struct obj_state {
     vertex_list vertices;
     double first_z;
     long first_z_line; /* 0 until the first 'v' line */
+    int has_z;         /* some 'v' line gave z */
     long *loop;        /* 0-based vertex indices of the 'l' line */
     size_t loop_count;
     long loop_line;    /* 0 until the 'l' line */
@@ -266,6 +267,7 @@ static int obj_vertex(obj_state *state, char **fields, int count, long number)
         parse_coordinate(fields[2], &y, state->path, number, state->error) ||
         (count == 4 && parse_coordinate(fields[3], &z, state->path, number, state->error)))
         return CLI_EXIT_USAGE;
+    if (count == 4) state->has_z = 1;
     if (state->first_z_line == 0) {
         state->first_z = z;
         state->first_z_line = number;
@@ -399,6 +401,8 @@ static int obj_make_polygon(obj_state *state, polygon_input *polygon)
         polygon->source_line[i] = state->vertices.line[v];
     }
     polygon->count = count;
+    polygon->has_z = state->has_z;
+    polygon->z = state->first_z;
     return CLI_EXIT_OK;
 }
 

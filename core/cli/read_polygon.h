@@ -14,6 +14,8 @@ typedef struct polygon_input {
     size_t count;
     double *xy;
     long *source_line;
+    int has_z;        /* an OBJ file gave z (the same for every vertex) */
+    double z;         /* that z, else 0 */
 } polygon_input;
 
 /* Reads `path` into *polygon. Files ending in ".obj" (any case) are read as

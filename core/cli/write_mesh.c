@@ -66,15 +66,22 @@ static void write_triangles(FILE *file, mesh_format format,
     }
 }
 
-int write_mesh(const char *path, const cm_result *result, size_t g,
-               mesh_format format, cli_error *error)
+int write_triangle_mesh(const char *path, const double *xy, size_t vertices,
+                        const int32_t *triangles, size_t count, mesh_format format,
+                        cli_error *error)
 {
     FILE *file = output_open(path, error);
     if (!file) return CLI_EXIT_INTERNAL;
-    size_t vertices = cm_result_num_vertices(result);
-    size_t triangles = cm_result_num_triangles(result);
-    write_header(file, format, vertices, triangles);
-    write_vertices(file, format, cm_result_vertices(result, g), vertices);
-    write_triangles(file, format, cm_result_triangles(result), triangles);
+    write_header(file, format, vertices, count);
+    write_vertices(file, format, xy, vertices);
+    write_triangles(file, format, triangles, count);
     return output_close(file, path, error);
+}
+
+int write_mesh(const char *path, const cm_result *result, size_t g,
+               mesh_format format, cli_error *error)
+{
+    return write_triangle_mesh(path, cm_result_vertices(result, g),
+                               cm_result_num_vertices(result), cm_result_triangles(result),
+                               cm_result_num_triangles(result), format, error);
 }

@@ -1,4 +1,5 @@
-/* Writing one geometry of a result as a triangle mesh file. */
+/* Writing one geometry of a result (or a morph section) as a triangle mesh
+ * file. */
 #ifndef CM_CLI_WRITE_MESH_H
 #define CM_CLI_WRITE_MESH_H
 
@@ -25,5 +26,11 @@ const char *mesh_format_name(mesh_format format);
  * with error set. */
 int write_mesh(const char *path, const cm_result *result, size_t g,
                mesh_format format, cli_error *error);
+
+/* The same for any geometry of the triangles: xy holds 2 * vertices
+ * doubles, triangles 3 * count indices. */
+int write_triangle_mesh(const char *path, const double *xy, size_t vertices,
+                        const int32_t *triangles, size_t count, mesh_format format,
+                        cli_error *error);
 
 #endif

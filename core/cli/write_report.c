@@ -112,3 +112,39 @@ int write_report(const char *path, const report_info *info, cli_error *error)
     fputs("  ]\n}\n", file);
     return output_close(file, path, error);
 }
+
+int write_morph_report(const char *path, const morph_report_info *info, cli_error *error)
+{
+    FILE *file = output_open(path, error);
+    if (!file) return CLI_EXIT_INTERNAL;
+    const cm_stats *stats = cm_result_stats(info->result);
+    fprintf(file, "{\n");
+    fprintf(file, "  \"version\": \"%d.%d.%d\",\n", CM_VERSION_MAJOR, CM_VERSION_MINOR,
+            CM_VERSION_PATCH);
+    fprintf(file, "  \"n\": %zu,\n  \"k\": %zu,\n", stats->n, stats->k);
+    fprintf(file, "  \"vertices\": %zu,\n  \"steiner\": %zu,\n  \"triangles\": %zu,\n",
+            stats->vertices, stats->steiner, stats->triangles);
+    fputs("  \"method\": ", file);
+    json_string(file, info->method);
+    fputs(",\n  \"morph\": ", file);
+    json_string(file, info->morph);
+    fputs(",\n  \"inputs\": [", file);
+    for (size_t g = 0; g < stats->k; g++) {
+        json_string(file, info->inputs[g]);
+        fputs(g + 1 < stats->k ? ", " : "],\n", file);
+    }
+    size_t total = 0;
+    for (size_t f = 0; f < info->frame_count; f++) total += info->inverted[f];
+    fprintf(file, "  \"inverted_total\": %zu,\n", total);
+    fputs("  \"frames\": [\n", file);
+    for (size_t f = 0; f < info->frame_count; f++) {
+        fputs("    {\"file\": ", file);
+        json_string(file, info->outputs[f]);
+        json_field(file, ", ", "t", info->t[f]);
+        json_field(file, ", ", "min_angle_deg", info->min_angle_deg[f]);
+        fprintf(file, ", \"inverted\": %zu}%s\n", info->inverted[f],
+                f + 1 < info->frame_count ? "," : "");
+    }
+    fputs("  ]\n}\n", file);
+    return output_close(file, path, error);
+}

@@ -22,4 +22,20 @@ typedef struct report_info {
  * CLI_EXIT_INTERNAL. */
 int write_report(const char *path, const report_info *info, cli_error *error);
 
+/* The morph's report.json: the triangulation's counts, then per frame its
+ * file, time t, smallest angle and number of inverted triangles. */
+typedef struct morph_report_info {
+    const cm_result *result;
+    const char *method;         /* triangulation method */
+    const char *morph;          /* "convex" or "linear" */
+    const char *const *inputs;  /* k input paths */
+    size_t frame_count;
+    const char *const *outputs; /* frame paths, as they are after commit */
+    const double *t;
+    const double *min_angle_deg;
+    const size_t *inverted;
+} morph_report_info;
+
+int write_morph_report(const char *path, const morph_report_info *info, cli_error *error);
+
 #endif

@@ -178,12 +178,11 @@ static void write_caption(FILE *file, const panel *p, const char *name, size_t n
             p->left, y + 16.0, n, steiner, min_angle);
 }
 
-static void write_panel(FILE *file, const panel *p, const cm_result *result,
+static void write_panel(FILE *file, const panel *p, const svg_meshes *meshes,
                         const char *name, double *angles)
 {
-    const cm_stats *stats = cm_result_stats(result);
-    const int32_t *triangles = cm_result_triangles(result);
-    size_t count = cm_result_num_triangles(result);
+    const int32_t *triangles = meshes->triangles;
+    size_t count = meshes->count;
     size_t worst = smallest_angles(p->xy, triangles, count, angles);
     fputs("<g>\n", file);
     write_poor_triangles(file, p, triangles, count, angles, worst);
@@ -193,19 +192,18 @@ static void write_panel(FILE *file, const panel *p, const cm_result *result,
         fputs("\"/>\n", file);
     }
     write_edges(file, p, triangles, count);
-    write_boundary(file, p, stats->n);
-    write_steiner(file, p, stats->n, stats->vertices);
-    write_caption(file, p, name, stats->n, stats->steiner, count > 0 ? angles[worst] : 0.0);
+    write_boundary(file, p, meshes->n);
+    write_steiner(file, p, meshes->n, meshes->vertices);
+    write_caption(file, p, name, meshes->n, meshes->vertices - meshes->n,
+                  count > 0 ? angles[worst] : 0.0);
     fputs("</g>\n", file);
 }
 
-int write_svg(const char *path, const cm_result *result, const char *const *names,
-              cli_error *error)
+int write_svg_meshes(const char *path, const svg_meshes *meshes, cli_error *error)
 {
-    size_t k = cm_result_num_geometries(result);
-    size_t vertices = cm_result_num_vertices(result);
+    size_t k = meshes->k;
     panel *panels = malloc((k ? k : 1) * sizeof *panels);
-    double *angles = malloc((cm_result_num_triangles(result) + 1) * sizeof *angles);
+    double *angles = malloc((meshes->count + 1) * sizeof *angles);
     if (!panels || !angles) {
         free(panels);
         free(angles);
@@ -214,7 +212,7 @@ int write_svg(const char *path, const cm_result *result, const char *const *name
     }
     double left = MARGIN;
     for (size_t g = 0; g < k; g++) {
-        panels[g] = make_panel(cm_result_vertices(result, g), vertices, left);
+        panels[g] = make_panel(meshes->xy[g], meshes->vertices, left);
         left += fmax(panels[g].width, CAPTION_MIN_WIDTH) + MARGIN;
     }
     int code = CLI_EXIT_INTERNAL;
@@ -227,11 +225,30 @@ int write_svg(const char *path, const cm_result *result, const char *const *name
                 width, height, width, height);
         fputs(STYLE, file);
         fputs("<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n", file);
-        for (size_t g = 0; g < k; g++) write_panel(file, &panels[g], result, names[g], angles);
+        for (size_t g = 0; g < k; g++)
+            write_panel(file, &panels[g], meshes, meshes->names[g], angles);
         fputs("</svg>\n", file);
         code = output_close(file, path, error);
     }
     free(panels);
     free(angles);
+    return code;
+}
+
+int write_svg(const char *path, const cm_result *result, const char *const *names,
+              cli_error *error)
+{
+    size_t k = cm_result_num_geometries(result);
+    const double **xy = malloc((k ? k : 1) * sizeof *xy);
+    if (!xy) {
+        cli_error_set(error, "out of memory");
+        return CLI_EXIT_INTERNAL;
+    }
+    for (size_t g = 0; g < k; g++) xy[g] = cm_result_vertices(result, g);
+    svg_meshes meshes = {cm_result_triangles(result), cm_result_num_triangles(result),
+                         cm_result_stats(result)->n, cm_result_num_vertices(result),
+                         xy, names, k};
+    int code = write_svg_meshes(path, &meshes, error);
+    free(xy);
     return code;
 }

@@ -298,3 +298,119 @@ int cm_polygon_orientation(const double *xy, long n)
     }
     return polygon_orientation_exact(xy, n);
 }
+
+/* ---- 3D orientation and blended triangles ---------------------------- */
+
+static const double orient3d_errbound = (7.0 + 56.0 * EPS) * EPS;
+#define ORIENT3D_MIN 0x1p-300
+#define ORIENT3D_MAX 0x1p+300
+
+static int orient3d_exact(const double a[3], const double b[3], const double c[3],
+                          const double d[3])
+{
+    double in[12] = {a[0], a[1], a[2], b[0], b[1], b[2], c[0], c[1], c[2], d[0], d[1], d[2]};
+    if (!all_finite(in, 12)) return 0;
+    long emin = common_exponent(in, 12);
+    mpz_t p[12], u[9], det, t;
+    for (int i = 0; i < 12; i++) {
+        mpz_init(p[i]);
+        set_scaled(p[i], in[i], emin);
+    }
+    for (int i = 0; i < 9; i++) { /* rows b - a, c - a, d - a */
+        mpz_init(u[i]);
+        mpz_sub(u[i], p[3 + i], p[i % 3]);
+    }
+    mpz_inits(det, t, NULL);
+    mpz_mul(t, u[4], u[8]), mpz_submul(t, u[5], u[7]), mpz_mul(det, u[0], t);
+    mpz_mul(t, u[3], u[8]), mpz_submul(t, u[5], u[6]), mpz_submul(det, u[1], t);
+    mpz_mul(t, u[3], u[7]), mpz_submul(t, u[4], u[6]), mpz_addmul(det, u[2], t);
+    int s = mpz_sgn(det);
+    mpz_clears(det, t, NULL);
+    for (int i = 0; i < 9; i++) mpz_clear(u[i]);
+    for (int i = 0; i < 12; i++) mpz_clear(p[i]);
+    return s;
+}
+
+int cm_orient3d(const double a[3], const double b[3], const double c[3], const double d[3])
+{
+    double u[9];
+    for (int i = 0; i < 3; i++)
+        u[i] = b[i] - a[i], u[3 + i] = c[i] - a[i], u[6 + i] = d[i] - a[i];
+    if (all_within(u, 9, ORIENT3D_MIN, ORIENT3D_MAX)) {
+        double m0 = u[4] * u[8] - u[5] * u[7], m1 = u[3] * u[8] - u[5] * u[6];
+        double m2 = u[3] * u[7] - u[4] * u[6];
+        double det = u[0] * m0 - u[1] * m1 + u[2] * m2;
+        double perm = fabs(u[0]) * (fabs(u[4] * u[8]) + fabs(u[5] * u[7])) +
+                      fabs(u[1]) * (fabs(u[3] * u[8]) + fabs(u[5] * u[6])) +
+                      fabs(u[2]) * (fabs(u[3] * u[7]) + fabs(u[4] * u[6]));
+        if (fabs(det) > orient3d_errbound * perm) return sign_of(det);
+    }
+    return orient3d_exact(a, b, c, d);
+}
+
+/* The blend's doubled area is the Bernstein quadratic
+ * A0 (1-s)^2 + 2 M s (1-s) + A1 s^2, with A0, A1 the end areas and
+ * 2M = cross(b0 - a0, c1 - a1) + cross(b1 - a1, c0 - a0). With A0, A1 > 0
+ * it is positive on [0, 1] iff M >= 0 or M^2 < A0 A1 (divide by (1-s)^2:
+ * A0 + 2 M u + A1 u^2 > 0 for all u >= 0). */
+static int blend_positive_exact(const double *const pts[6])
+{
+    double in[12];
+    for (int i = 0; i < 6; i++) in[2 * i] = pts[i][0], in[2 * i + 1] = pts[i][1];
+    if (!all_finite(in, 12)) return 0;
+    long emin = common_exponent(in, 12);
+    mpz_t p[12], d[8], a0, a1, m, t;
+    for (int i = 0; i < 12; i++) {
+        mpz_init(p[i]);
+        set_scaled(p[i], in[i], emin);
+    }
+    /* d: b0-a0, c0-a0, b1-a1, c1-a1 (x, y each) */
+    for (int e = 0; e < 2; e++)
+        for (int j = 0; j < 2; j++)
+            for (int c = 0; c < 2; c++) {
+                mpz_init(d[4 * e + 2 * j + c]);
+                mpz_sub(d[4 * e + 2 * j + c], p[6 * e + 2 * (j + 1) + c], p[6 * e + c]);
+            }
+    mpz_inits(a0, a1, m, t, NULL);
+    mpz_mul(a0, d[0], d[3]), mpz_submul(a0, d[1], d[2]);
+    mpz_mul(a1, d[4], d[7]), mpz_submul(a1, d[5], d[6]);
+    mpz_mul(m, d[0], d[7]), mpz_submul(m, d[1], d[6]); /* cross(b0-a0, c1-a1) */
+    mpz_addmul(m, d[4], d[3]), mpz_submul(m, d[5], d[2]); /* + cross(b1-a1, c0-a0) */
+    int ok = mpz_sgn(a0) > 0 && mpz_sgn(a1) > 0;
+    if (ok && mpz_sgn(m) < 0) {
+        /* (2M)^2 < 4 A0 A1 */
+        mpz_mul(t, a0, a1);
+        mpz_mul_2exp(t, t, 2);
+        mpz_mul(m, m, m);
+        ok = mpz_cmp(m, t) < 0;
+    }
+    mpz_clears(a0, a1, m, t, NULL);
+    for (int i = 0; i < 8; i++) mpz_clear(d[i]);
+    for (int i = 0; i < 12; i++) mpz_clear(p[i]);
+    return ok;
+}
+
+int cm_blend_positive(const double a0[2], const double b0[2], const double c0[2],
+                      const double a1[2], const double b1[2], const double c1[2])
+{
+    const double *pts[6] = {a0, b0, c0, a1, b1, c1};
+    double d[8] = {b0[0] - a0[0], b0[1] - a0[1], c0[0] - a0[0], c0[1] - a0[1],
+                   b1[0] - a1[0], b1[1] - a1[1], c1[0] - a1[0], c1[1] - a1[1]};
+    if (all_within(d, 8, ORIENT_MIN, ORIENT_MAX)) {
+        /* Filter: each cross product has relative error below 4 EPS of
+         * its permanent (two roundings of the differences, products, sum);
+         * decide only with a wide margin, else go exact. */
+        double a0f = d[0] * d[3] - d[1] * d[2], a0p = fabs(d[0] * d[3]) + fabs(d[1] * d[2]);
+        double a1f = d[4] * d[7] - d[5] * d[6], a1p = fabs(d[4] * d[7]) + fabs(d[5] * d[6]);
+        double mf = d[0] * d[7] - d[1] * d[6] + d[4] * d[3] - d[5] * d[2];
+        double mp = fabs(d[0] * d[7]) + fabs(d[1] * d[6]) + fabs(d[4] * d[3]) + fabs(d[5] * d[2]);
+        const double rel = 16.0 * EPS;
+        if (a0f > rel * a0p && a1f > rel * a1p) {
+            if (mf > rel * mp) return 1;
+            double a0lo = a0f - rel * a0p, a1lo = a1f - rel * a1p;
+            double mhi = fabs(mf) + rel * mp;
+            if (mhi * mhi * (1.0 + rel) < 4.0 * a0lo * a1lo * (1.0 - rel)) return 1;
+        }
+    }
+    return blend_positive_exact(pts);
+}

@@ -22,4 +22,14 @@ int cm_segments_intersect(const double a[2], const double b[2],
 /* Sign of the signed area of the closed polygon xy[0..n-1] (exact). */
 int cm_polygon_orientation(const double *xy, long n);
 
+/* +1 if d lies above the plane through a, b, c (a, b, c counter-clockwise
+ * seen from above, i.e. det[b - a, c - a, d - a] > 0), -1 below, 0 on it. */
+int cm_orient3d(const double a[3], const double b[3], const double c[3], const double d[3]);
+
+/* 1 if triangle (a(s), b(s), c(s)), p(s) = (1 - s) p0 + s p1, is strictly
+ * counter-clockwise for every s in [0, 1] (its doubled area is a quadratic
+ * in s; decided exactly), else 0. */
+int cm_blend_positive(const double a0[2], const double b0[2], const double c0[2],
+                      const double a1[2], const double b1[2], const double c1[2]);
+
 #endif

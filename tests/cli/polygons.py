@@ -84,3 +84,88 @@ def snapshot(directory):
 def leftovers(parent):
     """Temporary directories a run may have left beside its output."""
     return [name for name in os.listdir(parent) if ".compatmesh-" in name]
+
+
+def rotated(points, degrees):
+    """The polygon turned about the origin; vertex i stays vertex i, so a
+    morph to it has to twist."""
+    c, s = math.cos(math.radians(degrees)), math.sin(math.radians(degrees))
+    return [(c * x - s * y, s * x + c * y) for x, y in points]
+
+
+def twisted_pair(n=16, degrees=160.0):
+    """A star and another star turned by `degrees`: straight vertex paths
+    pass near the centre and fold triangles over (the second is not an
+    affine image of the first, else straight paths would stay valid)."""
+    return star(n, seed=5), rotated(star(n, seed=6), degrees)
+
+
+def _stroke(centreline, width):
+    """A polygon around a polyline: its left offset forward, its right offset
+    back, counter-clockwise. Corners of the offsets use the bisector."""
+    left, right = [], []
+    for i, (x, y) in enumerate(centreline):
+        x0, y0 = centreline[max(i - 1, 0)]
+        x1, y1 = centreline[min(i + 1, len(centreline) - 1)]
+        dx, dy = x1 - x0, y1 - y0
+        length = math.hypot(dx, dy)
+        nx, ny = -dy / length * width / 2, dx / length * width / 2
+        left.append((x + nx, y + ny))
+        right.append((x - nx, y - ny))
+    outline = right + left[::-1]
+    return outline if signed_area(outline) > 0 else outline[::-1]
+
+
+def spiral_pair(m=24):
+    """A thick spiral of 2 turns and a thick straight bar, both strokes of
+    m centreline points (2 m vertices)."""
+    spiral = []
+    for i in range(m):
+        angle = 2.0 * math.pi * 2.0 * i / (m - 1)
+        radius = 1.0 + 0.45 * angle
+        spiral.append((radius * math.cos(angle), radius * math.sin(angle)))
+    bar = [(-4.0 + 8.0 * i / (m - 1), -0.5) for i in range(m)]
+    return _stroke(spiral, 0.6), _stroke(bar, 0.9)
+
+
+def glyph_pair(m=20):
+    """Two letter-like strokes of m centreline points each: a U and an S."""
+    u, s = [], []
+    for i in range(m):
+        f = i / (m - 1)
+        # U: down the left side, round the bottom, up the right side.
+        if f < 0.3:
+            u.append((-1.0, 2.0 - 2.0 * f / 0.3))
+        elif f < 0.7:
+            a = math.pi + math.pi * (f - 0.3) / 0.4
+            u.append((math.cos(a), math.sin(a)))
+        else:
+            u.append((1.0, 2.0 * (f - 0.7) / 0.3))
+        # S: over the top of the upper circle to the middle, then round the
+        # lower circle the other way.
+        if f < 0.5:
+            a = math.pi / 6 + 4 * math.pi / 3 * f / 0.5
+            s.append((math.cos(a), 1.0 + math.sin(a)))
+        else:
+            a = math.pi / 2 - 4 * math.pi / 3 * (f - 0.5) / 0.5
+            s.append((math.cos(a), -1.0 + math.sin(a)))
+    return _stroke(u, 0.5), _stroke(s, 0.5)
+
+
+def is_simple(points):
+    """No two non-adjacent edges meet (exact), for checking generators."""
+    n = len(points)
+    def cross(a, b, c, d):
+        o1, o2 = orientation(a, b, c), orientation(a, b, d)
+        o3, o4 = orientation(c, d, a), orientation(c, d, b)
+        if o1 == o2 == o3 == o4 == 0:  # on one line: do the spans overlap?
+            return all(max(min(a[k], b[k]), min(c[k], d[k])) <=
+                       min(max(a[k], b[k]), max(c[k], d[k])) for k in (0, 1))
+        return o1 * o2 <= 0 and o3 * o4 <= 0
+    for i in range(n):
+        for j in range(i + 1, n):
+            if j == i + 1 or (i == 0 and j == n - 1):
+                continue
+            if cross(points[i], points[(i + 1) % n], points[j], points[(j + 1) % n]):
+                return False
+    return True

@@ -53,3 +53,23 @@ def test_usage_errors(cm, args, pattern):
     result = cm(*args)
     assert result.returncode == 2
     assert re.match(pattern, result.stderr) and result.stderr.count("\n") == 1
+
+
+@pytest.mark.parametrize("command, options, words", [
+    ("morph", ["--out-dir", "--frames", "--morph", "--format", "--method", "--no-remesh",
+               "--help"], ["convex", "linear", "frame_000", "frames.svg", "report.json"]),
+    ("sweep", ["--output", "--sections", "--height", "--heights", "--tets", "--msh-version",
+               "--method", "--no-remesh", "--help"],
+     [".msh", ".vtk", ".inp", ".bdf", ".unv", "2.2", "4.1"]),
+])
+def test_morph_and_sweep_help(cm, command, options, words):
+    result = cm(command, "--help")
+    assert result.returncode == 0 and result.stderr == ""
+    assert result.stdout.startswith(f"Usage: compatmesh {command} IN1 IN2")
+    for option in options:
+        assert re.search(rf"^\s+(-\w, )?{option}\b", result.stdout, re.MULTILINE), option
+    for word in words:
+        assert word in result.stdout
+    check_exit_codes_documented(result.stdout)
+    main = cm("--help").stdout
+    assert re.search(rf"^\s+{command}\s", main, re.MULTILINE)

@@ -1,0 +1,342 @@
+#define _POSIX_C_SOURCE 200809L /* strndup */
+
+/* compatmesh sweep: the volume between the compatibly triangulated inputs,
+ * stacked sections of their morph joined into prisms (or tetrahedra),
+ * written as a finite-element mesh through Gmsh. */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <compatmesh/compatmesh.h>
+
+#include "commands.h"
+#include "interrupt.h"
+#include "options.h"
+#include "triangulation.h"
+#include "write_volume.h"
+
+enum { OPTION_HEIGHT = OPTION_TRIANGULATION_END, OPTION_HEIGHTS, OPTION_TETS, OPTION_MSH_VERSION,
+       MAX_SECTIONS = 10000 };
+
+static const option_spec sweep_options[] = {
+    {"output", 'o', "FILE",
+     "the volume mesh (required); the format follows the\n"
+     "extension: .msh (Gmsh), .vtk, .inp (Abaqus), .bdf\n"
+     "(Nastran) or .unv (I-deas universal)"},
+    {"sections", 'n', "N",
+     "sections per pair of consecutive inputs, both ends\n"
+     "included, 2 to 10000 (default 11); more may be\n"
+     "inserted where a prism would not stay valid"},
+    {"height", OPTION_HEIGHT, "H", "total height, inputs evenly spaced (default 1)"},
+    {"heights", OPTION_HEIGHTS, "Z1,Z2,...",
+     "the z of every input, strictly increasing; default:\n"
+     "the inputs' own z if they are all OBJ files with z\n"
+     "(unless all z are equal)"},
+    {"tets", OPTION_TETS, NULL, "write tetrahedra (each prism split in 3, faces\n"
+                                "conforming) instead of prisms"},
+    {"msh-version", OPTION_MSH_VERSION, "V", ".msh format version: 4.1 (default) or 2.2"},
+    TRIANGULATION_OPTION_SPECS,
+    {"help", 'h', NULL, "show this help and exit"},
+};
+static const size_t sweep_option_count = sizeof sweep_options / sizeof sweep_options[0];
+
+typedef struct sweep_args {
+    triangulation_args tri;
+    const char *output;
+    size_t sections;
+    double height;          /* 0: not given */
+    double *heights;        /* NULL: not given */
+    size_t heights_count;
+    int tets;
+    double msh_version;
+    int help;
+} sweep_args;
+
+/* A finite number, or NAN. */
+static double parse_number(const char *text, const char **end)
+{
+    char *stop;
+    errno = 0;
+    double value = strtod(text, &stop);
+    *end = stop;
+    return stop == text || errno == ERANGE || !isfinite(value) ? NAN : value;
+}
+
+static int parse_heights(sweep_args *args, const char *text, cli_error *error)
+{
+    free(args->heights);
+    args->heights = malloc((strlen(text) / 2 + 1) * sizeof *args->heights);
+    args->heights_count = 0;
+    if (!args->heights) {
+        cli_error_set(error, "out of memory");
+        return CLI_EXIT_INTERNAL;
+    }
+    const char *p = text;
+    for (;;) {
+        const char *end;
+        double z = parse_number(p, &end);
+        if (isnan(z) || (*end != ',' && *end != '\0')) {
+            cli_error_set(error, "sweep: --heights '%s': item %zu is not a finite number "
+                          "(expected z1,z2,...)", text, args->heights_count + 1);
+            return CLI_EXIT_USAGE;
+        }
+        if (args->heights_count > 0 && !(z > args->heights[args->heights_count - 1])) {
+            cli_error_set(error, "sweep: --heights '%s': the heights must increase strictly "
+                          "(item %zu is not above item %zu)", text, args->heights_count + 1,
+                          args->heights_count);
+            return CLI_EXIT_USAGE;
+        }
+        args->heights[args->heights_count++] = z;
+        if (*end == '\0') return CLI_EXIT_OK;
+        p = end + 1;
+    }
+}
+
+static int handle_sweep_option(void *context, int key, const char *value, cli_error *error)
+{
+    sweep_args *args = context;
+    int code = triangulation_option(&args->tri, "sweep", key, value, error);
+    if (code >= 0) return code;
+    const char *end;
+    long count;
+    switch (key) {
+    case 'o':
+        args->output = value;
+        return CLI_EXIT_OK;
+    case 'n':
+        count = parse_whole_number(value, 2, MAX_SECTIONS);
+        if (count < 0) {
+            cli_error_set(error, "sweep: --sections '%s' is not a whole number from 2 to %d",
+                          value, MAX_SECTIONS);
+            return CLI_EXIT_USAGE;
+        }
+        args->sections = (size_t)count;
+        return CLI_EXIT_OK;
+    case OPTION_HEIGHT:
+        args->height = parse_number(value, &end);
+        if (!(args->height > 0) || *end != '\0') {
+            cli_error_set(error, "sweep: --height '%s' is not a positive number", value);
+            return CLI_EXIT_USAGE;
+        }
+        return CLI_EXIT_OK;
+    case OPTION_HEIGHTS:
+        return parse_heights(args, value, error);
+    case OPTION_TETS:
+        args->tets = 1;
+        return CLI_EXIT_OK;
+    case OPTION_MSH_VERSION:
+        if (strcmp(value, "4.1") == 0) args->msh_version = 4.1;
+        else if (strcmp(value, "2.2") == 0) args->msh_version = 2.2;
+        else {
+            cli_error_set(error, "sweep: unknown --msh-version '%s' (known: 4.1, 2.2)", value);
+            return CLI_EXIT_USAGE;
+        }
+        return CLI_EXIT_OK;
+    case 'h':
+        args->help = 1;
+        return CLI_EXIT_OK;
+    default:
+        cli_error_set(error, "sweep: unhandled option %d", key);
+        return CLI_EXIT_INTERNAL;
+    }
+}
+
+static void print_sweep_help(FILE *out)
+{
+    fputs("Usage: compatmesh sweep IN1 IN2 [IN3 ...] -o FILE [OPTIONS]\n"
+          "\n"
+          "Compatibly triangulates the inputs (as 'compatmesh triangulate' does, same\n"
+          "input formats), morphs between them with valid sections (see 'compatmesh\n"
+          "morph --help'), stacks the sections at increasing z and joins consecutive\n"
+          "sections into 6-node prisms, each checked exactly to keep a positive\n"
+          "volume, and writes the volume mesh with Gmsh. Input g lies at height\n"
+          "z_g; the sections between two inputs are evenly spaced.\n"
+          "\n"
+          "Options:\n", out);
+    print_options(out, sweep_options, sweep_option_count);
+    fputs("\n"
+          "The file is written to a temporary file beside FILE and renamed into place\n"
+          "when complete; on failure nothing is written. One physical group, 'sweep',\n"
+          "holds every element.\n"
+          "\n"
+          "Exit status (on failure no file is written):\n"
+          "  0    success\n"
+          "  1    internal failure, or FILE's directory missing or not writable\n"
+          "  2    bad input or usage, as for 'compatmesh triangulate', also an\n"
+          "       unknown extension or heights that do not increase\n"
+          "  130  interrupted\n", out);
+}
+
+static int parse_sweep_args(int argc, char **argv, sweep_args *args, cli_error *error)
+{
+    memset(args, 0, sizeof *args);
+    args->sections = 11;
+    args->msh_version = 4.1;
+    int code = triangulation_args_init(&args->tri, argc, error);
+    if (code != CLI_EXIT_OK) return code;
+    code = parse_options(argc, argv, "sweep", sweep_options, sweep_option_count,
+                         handle_sweep_option, args, error);
+    if (code != CLI_EXIT_OK || args->help) return code;
+    code = triangulation_args_check(&args->tri, "sweep", error);
+    if (code != CLI_EXIT_OK) return code;
+    if (!args->output) {
+        cli_error_set(error, "sweep: -o FILE is required (see 'compatmesh sweep --help')");
+        return CLI_EXIT_USAGE;
+    }
+    if (volume_extension_known(args->output) != 0) {
+        cli_error_set(error, "sweep: %s: unknown extension; the format follows it, one of "
+                      VOLUME_EXTENSIONS, args->output);
+        return CLI_EXIT_USAGE;
+    }
+    if (args->height > 0 && args->heights) {
+        cli_error_set(error, "sweep: give --height or --heights, not both");
+        return CLI_EXIT_USAGE;
+    }
+    if (args->heights && args->heights_count != args->tri.input_count) {
+        cli_error_set(error, "sweep: --heights gives %zu heights for %zu inputs",
+                      args->heights_count, args->tri.input_count);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
+/* Before any work: the output's directory must exist and be writable, and
+ * the output must not be a directory. */
+static int check_output(const char *path, cli_error *error)
+{
+    const char *slash = strrchr(path, '/');
+    char *dir = slash ? strndup(path, slash == path ? 1 : (size_t)(slash - path)) : strdup(".");
+    if (!dir) {
+        cli_error_set(error, "out of memory");
+        return CLI_EXIT_INTERNAL;
+    }
+    struct stat info;
+    int code = CLI_EXIT_OK;
+    if (stat(dir, &info) != 0 || !S_ISDIR(info.st_mode)) {
+        cli_error_set(error, "cannot write %s: %s is not a directory", path, dir);
+        code = CLI_EXIT_INTERNAL;
+    } else if (access(dir, W_OK | X_OK) != 0) {
+        cli_error_set(error, "cannot write %s: %s: %s", path, dir, strerror(errno));
+        code = CLI_EXIT_INTERNAL;
+    } else if (stat(path, &info) == 0 && S_ISDIR(info.st_mode)) {
+        cli_error_set(error, "cannot write %s: it is a directory", path);
+        code = CLI_EXIT_USAGE;
+    }
+    free(dir);
+    return code;
+}
+
+/* The inputs' own z as heights, when every input is an OBJ file with z and
+ * the z differ; flat drawings (all z equal, or none given) say nothing. */
+static int heights_from_inputs(const triangulation *tri, double *heights, cli_error *error)
+{
+    size_t k = tri->args->input_count, with_z = 0;
+    int distinct = 0;
+    for (size_t g = 0; g < k; g++) {
+        if (!tri->polygons[g].has_z) continue;
+        if (with_z > 0 && tri->polygons[g].z != heights[0]) distinct = 1;
+        if (with_z == 0) heights[0] = tri->polygons[g].z;
+        with_z++;
+    }
+    if (!distinct) return 0;
+    if (with_z < k) {
+        cli_error_set(error, "sweep: some inputs give z and some do not; give all of them z "
+                      "or use --height / --heights");
+        return -1;
+    }
+    for (size_t g = 0; g < k; g++) {
+        heights[g] = tri->polygons[g].z;
+        if (g > 0 && !(heights[g] > heights[g - 1])) {
+            cli_error_set(error, "sweep: %s lies at z = %.17g, not above %s at z = %.17g; "
+                          "the inputs' z must increase (or use --height / --heights)",
+                          tri->polygons[g].path, heights[g], tri->polygons[g - 1].path,
+                          heights[g - 1]);
+            return -1;
+        }
+    }
+    return 1;
+}
+
+static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morph **morph,
+                       cm_sweep **sweep, cli_error *error)
+{
+    size_t k = args->tri.input_count;
+    double *own = malloc(k * sizeof *own);
+    if (!own) {
+        cli_error_set(error, "out of memory");
+        return CLI_EXIT_INTERNAL;
+    }
+    cm_sweep_options options;
+    cm_sweep_options_init(&options);
+    options.sections = args->sections;
+    options.tets = args->tets;
+    options.progress = cancel_if_interrupted;
+    if (args->height > 0) options.height = args->height;
+    if (args->heights) options.heights = args->heights;
+    else if (args->height <= 0) {
+        int found = heights_from_inputs(tri, own, error);
+        if (found < 0) {
+            free(own);
+            return CLI_EXIT_USAGE;
+        }
+        if (found) options.heights = own;
+    }
+    cm_morph_options morph_options;
+    cm_morph_options_init(&morph_options);
+    morph_options.progress = cancel_if_interrupted;
+    cm_status status = cm_morph_create(tri->result, &morph_options, morph);
+    const char *message = *morph ? cm_morph_message(*morph) : "";
+    if (status == CM_OK) {
+        status = cm_sweep_create(*morph, &options, sweep);
+        message = *sweep ? cm_sweep_message(*sweep) : "";
+    }
+    free(own);
+    if (status == CM_OK) return CLI_EXIT_OK;
+    return core_failure("sweep", message, status, error);
+}
+
+static int sweep(const sweep_args *args, cli_error *error)
+{
+    triangulation tri = {0};
+    cm_morph *morph = NULL;
+    cm_sweep *sweep = NULL;
+    int code = check_output(args->output, error);
+    if (code == CLI_EXIT_OK) code = triangulation_run(&tri, &args->tri, error);
+    if (code == CLI_EXIT_OK) code = build_sweep(args, &tri, &morph, &sweep, error);
+    if (code == CLI_EXIT_OK && interrupted) {
+        cli_error_set(error, "interrupted; nothing written");
+        code = CLI_EXIT_INTERRUPTED;
+    }
+    if (code == CLI_EXIT_OK) {
+        volume_mesh mesh = {cm_sweep_nodes(sweep), cm_sweep_num_nodes(sweep),
+                            args->tets ? cm_sweep_tets(sweep) : cm_sweep_prisms(sweep),
+                            args->tets ? cm_sweep_num_tets(sweep) : cm_sweep_num_prisms(sweep),
+                            args->tets};
+        code = write_volume(args->output, &mesh, args->msh_version, error);
+        if (code == CLI_EXIT_OK)
+            printf("wrote %s (%zu sections, %zu nodes, %zu %s, volume %.17g)\n", args->output,
+                   cm_sweep_num_sections(sweep), mesh.num_nodes, mesh.num_cells,
+                   args->tets ? "tetrahedra" : "prisms", cm_sweep_volume(sweep));
+    }
+    cm_sweep_free(sweep);
+    cm_morph_free(morph);
+    if (tri.args) triangulation_free(&tri);
+    return code;
+}
+
+int run_sweep(int argc, char **argv)
+{
+    sweep_args args;
+    cli_error error = {{0}};
+    int code = parse_sweep_args(argc, argv, &args, &error);
+    if (code == CLI_EXIT_OK && args.help) print_sweep_help(stdout);
+    else if (code == CLI_EXIT_OK) code = sweep(&args, &error);
+    if (code != CLI_EXIT_OK) cli_print_error(&error);
+    triangulation_args_free(&args.tri);
+    free(args.heights);
+    return code;
+}

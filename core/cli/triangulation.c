@@ -1,0 +1,275 @@
+#define _POSIX_C_SOURCE 200809L /* clock_gettime */
+
+#include "triangulation.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "interrupt.h"
+
+static const struct {
+    const char *name;
+    cm_method method;
+} methods[] = {{"partition", CM_METHOD_PARTITION}, {"overlay", CM_METHOD_OVERLAY}};
+
+static const char *const smoothing_names[] = {"laplacian", "angle", "weighted", "combined"};
+
+int triangulation_args_init(triangulation_args *args, int argc, cli_error *error)
+{
+    memset(args, 0, sizeof *args);
+    cm_options_init(&args->options);
+    args->method_name = "partition";
+    args->inputs = malloc((size_t)(argc > 0 ? argc : 1) * sizeof *args->inputs);
+    if (args->inputs) return CLI_EXIT_OK;
+    cli_error_set(error, "out of memory");
+    return CLI_EXIT_INTERNAL;
+}
+
+void triangulation_args_free(triangulation_args *args)
+{
+    free(args->inputs);
+    args->inputs = NULL;
+}
+
+static int set_method(triangulation_args *args, const char *command, const char *name,
+                      cli_error *error)
+{
+    for (size_t i = 0; i < sizeof methods / sizeof methods[0]; i++) {
+        if (strcmp(name, methods[i].name) == 0) {
+            args->method_name = methods[i].name;
+            args->options.method = methods[i].method;
+            return CLI_EXIT_OK;
+        }
+    }
+    cli_error_set(error, "%s: unknown --method '%s' (known: partition, overlay)", command,
+                  name);
+    return CLI_EXIT_USAGE;
+}
+
+static int set_smoothing(triangulation_args *args, const char *command, const char *name,
+                         cli_error *error)
+{
+    for (size_t i = 0; i < sizeof smoothing_names / sizeof smoothing_names[0]; i++) {
+        if (strcmp(name, smoothing_names[i]) == 0) {
+            args->options.smoothing = (cm_smoothing)i;
+            return CLI_EXIT_OK;
+        }
+    }
+    cli_error_set(error, "%s: unknown --smoothing '%s' "
+                  "(known: laplacian, angle, weighted, combined)", command, name);
+    return CLI_EXIT_USAGE;
+}
+
+/* A whole decimal number in [low, high]; the message names the option. */
+static int parse_long(const char *command, const char *option, const char *text, long low,
+                      long high, long *value, cli_error *error)
+{
+    char *end;
+    errno = 0;
+    long parsed = strtol(text, &end, 10);
+    if (end == text || *end != '\0' || errno == ERANGE || parsed < low || parsed > high) {
+        cli_error_set(error, "%s: --%s needs a whole number in [%ld, %ld], got '%s'",
+                      command, option, low, high, text);
+        return CLI_EXIT_USAGE;
+    }
+    *value = parsed;
+    return CLI_EXIT_OK;
+}
+
+static int parse_int(const char *command, const char *option, const char *text, int *value,
+                     cli_error *error)
+{
+    long parsed;
+    int code = parse_long(command, option, text, 0, INT_MAX, &parsed, error);
+    if (code == CLI_EXIT_OK) *value = (int)parsed;
+    return code;
+}
+
+static int parse_min_angle(const char *command, const char *text, double *value,
+                           cli_error *error)
+{
+    char *end;
+    double parsed = strtod(text, &end);
+    if (end == text || *end != '\0' || !(parsed > 0 && parsed < 60)) {
+        cli_error_set(error, "%s: --min-angle needs degrees in (0, 60), got '%s'", command,
+                      text);
+        return CLI_EXIT_USAGE;
+    }
+    *value = parsed;
+    return CLI_EXIT_OK;
+}
+
+int triangulation_option(triangulation_args *args, const char *command, int key,
+                         const char *value, cli_error *error)
+{
+    switch (key) {
+    case 0:
+        args->inputs[args->input_count++] = value;
+        return CLI_EXIT_OK;
+    case 'm':
+        return set_method(args, command, value, error);
+    case OPTION_NO_REMESH:
+        args->options.remesh = 0;
+        return CLI_EXIT_OK;
+    case OPTION_MIN_ANGLE:
+        return parse_min_angle(command, value, &args->options.min_angle_deg, error);
+    case OPTION_MAX_STEINER:
+        return parse_long(command, "max-steiner", value, 0, LONG_MAX, &args->options.max_steiner,
+                          error);
+    case OPTION_K_SPLIT:
+        return parse_int(command, "k-split", value, &args->options.k_split, error);
+    case OPTION_AREA_EVERY:
+        return parse_int(command, "area-every", value, &args->options.area_every, error);
+    case OPTION_SMOOTHING:
+        return set_smoothing(args, command, value, error);
+    case OPTION_MAX_ITERATIONS:
+        return parse_int(command, "max-iterations", value, &args->options.max_iterations, error);
+    default:
+        return -1;
+    }
+}
+
+int triangulation_args_check(const triangulation_args *args, const char *command,
+                             cli_error *error)
+{
+    if (args->input_count >= 2) return CLI_EXIT_OK;
+    cli_error_set(error, "%s: needs at least two input polygons, got %zu "
+                  "(see 'compatmesh %s --help')", command, args->input_count, command);
+    return CLI_EXIT_USAGE;
+}
+
+const char *file_name(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    return slash ? slash + 1 : path;
+}
+
+static double seconds_now(void)
+{
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)now.tv_sec + 1e-9 * (double)now.tv_nsec;
+}
+
+static int read_inputs(triangulation *t, cli_error *error)
+{
+    const triangulation_args *args = t->args;
+    for (size_t i = 0; i < args->input_count; i++) {
+        int code = read_polygon(args->inputs[i], &t->polygons[i], error);
+        if (code != CLI_EXIT_OK) return code;
+        if (t->polygons[i].count != t->polygons[0].count) {
+            cli_error_set(error, "%s has %zu vertices but %s has %zu; the polygons' "
+                          "vertices correspond by index, so the counts must be equal",
+                          args->inputs[i], t->polygons[i].count, args->inputs[0],
+                          t->polygons[0].count);
+            return CLI_EXIT_USAGE;
+        }
+    }
+    return CLI_EXIT_OK;
+}
+
+int exit_code_for(cm_status status)
+{
+    switch (status) {
+    case CM_OK: return CLI_EXIT_OK;
+    case CM_ERR_NO_MEMORY:
+    case CM_ERR_INTERNAL: return CLI_EXIT_INTERNAL;
+    case CM_ERR_CANCELLED: return CLI_EXIT_INTERRUPTED;
+    default: return CLI_EXIT_USAGE; /* the input was at fault */
+    }
+}
+
+int core_failure(const char *command, const char *message, cm_status status,
+                 cli_error *error)
+{
+    size_t length = strlen(command);
+    if (message[0] == '\0') message = cm_status_string(status);
+    if (status == CM_ERR_CANCELLED)
+        cli_error_set(error, "interrupted; nothing written");
+    else if (strncmp(message, command, length) == 0 && message[length] == ':')
+        cli_error_set(error, "%s", message); /* the core named the step already */
+    else
+        cli_error_set(error, "%s: %s", command, message);
+    return exit_code_for(status);
+}
+
+/* The core's message without its "polygon N: " prefix (the file name says
+ * which polygon), or the message unchanged if it has no such prefix. */
+static const char *without_polygon_prefix(const char *message, long polygon)
+{
+    char prefix[48];
+    int length = snprintf(prefix, sizeof prefix, "polygon %ld: ", polygon);
+    return strncmp(message, prefix, (size_t)length) == 0 ? message + length : message;
+}
+
+/* The core's message, prefixed with the file and line of the vertex it
+ * blames, so the user can go straight to the line to fix. */
+static void describe_failure(const triangulation *t, cm_status status, cli_error *error)
+{
+    const char *message = t->result ? cm_result_message(t->result) : "";
+    if (message[0] == '\0') message = cm_status_string(status);
+    long polygon = -1, vertex = -1, other = -1;
+    if (t->result) cm_result_error_location(t->result, &polygon, &vertex, &other);
+    if (polygon < 0 || (size_t)polygon >= t->args->input_count) {
+        cli_error_set(error, "%s", message);
+        return;
+    }
+    const polygon_input *p = &t->polygons[polygon];
+    message = without_polygon_prefix(message, polygon);
+    if (vertex < 0 || (size_t)vertex >= p->count) {
+        cli_error_set(error, "%s: %s", p->path, message);
+    } else if (other < 0 || (size_t)other >= p->count) {
+        cli_error_set(error, "%s:%ld: %s", p->path, p->source_line[vertex], message);
+    } else {
+        cli_error_set(error, "%s:%ld: %s; vertex %ld is on line %ld", p->path,
+                      p->source_line[vertex], message, other, p->source_line[other]);
+    }
+}
+
+static int compute(triangulation *t, cli_error *error)
+{
+    size_t k = t->args->input_count, n = t->polygons[0].count;
+    double *xy = malloc(2 * k * n * sizeof *xy + 1);
+    if (!xy) {
+        cli_error_set(error, "out of memory");
+        return CLI_EXIT_INTERNAL;
+    }
+    for (size_t g = 0; g < k; g++)
+        memcpy(xy + 2 * g * n, t->polygons[g].xy, 2 * n * sizeof *xy);
+    cm_options options = t->args->options;
+    options.progress = cancel_if_interrupted;
+    double start = seconds_now();
+    cm_status status = cm_triangulate(xy, k, n, &options, &t->result);
+    t->seconds_total = seconds_now() - start;
+    free(xy);
+    if (status == CM_OK) return CLI_EXIT_OK;
+    if (status == CM_ERR_CANCELLED) cli_error_set(error, "interrupted; nothing written");
+    else describe_failure(t, status, error);
+    return exit_code_for(status);
+}
+
+int triangulation_run(triangulation *t, const triangulation_args *args, cli_error *error)
+{
+    memset(t, 0, sizeof *t);
+    t->args = args;
+    t->polygons = calloc(args->input_count ? args->input_count : 1, sizeof *t->polygons);
+    if (!t->polygons) {
+        cli_error_set(error, "out of memory");
+        return CLI_EXIT_INTERNAL;
+    }
+    int code = read_inputs(t, error);
+    if (code == CLI_EXIT_OK) code = compute(t, error);
+    return code;
+}
+
+void triangulation_free(triangulation *t)
+{
+    if (t->polygons)
+        for (size_t i = 0; i < t->args->input_count; i++) polygon_input_free(&t->polygons[i]);
+    free(t->polygons);
+    cm_result_free(t->result);
+    memset(t, 0, sizeof *t);
+}

@@ -1,0 +1,103 @@
+/* What every command that starts from input polygons shares: the input
+ * files and the triangulation options on the command line, reading the
+ * polygons, and running the core with errors pointing at file and line. */
+#ifndef CM_CLI_TRIANGULATION_H
+#define CM_CLI_TRIANGULATION_H
+
+#include <stddef.h>
+
+#include <compatmesh/compatmesh.h>
+
+#include "cli_common.h"
+#include "options.h"
+#include "read_polygon.h"
+
+enum {
+    OPTION_NO_REMESH = 256,
+    OPTION_MIN_ANGLE,
+    OPTION_MAX_STEINER,
+    OPTION_K_SPLIT,
+    OPTION_AREA_EVERY,
+    OPTION_SMOOTHING,
+    OPTION_MAX_ITERATIONS,
+    OPTION_TRIANGULATION_END /* a command's own long options start here */
+};
+
+/* The option_spec entries of the triangulation options, for a command's
+ * table (keys 'm' and OPTION_NO_REMESH .. OPTION_MAX_ITERATIONS). */
+#define TRIANGULATION_OPTION_SPECS                                            \
+    {"method", 'm', "NAME",                                                   \
+     "how the first compatible triangulation is built:\n"                     \
+     "partition (default): minimum-link paths, few or no\n"                   \
+     "Steiner vertices (paper section 2); overlay: the\n"                     \
+     "Aronov-Seidel-Souvaine overlay, many Steiner vertices"},                \
+    {"no-remesh", OPTION_NO_REMESH, NULL,                                     \
+     "keep the first compatible triangulation as built\n"                     \
+     "(remeshing is on by default)"},                                         \
+    {"min-angle", OPTION_MIN_ANGLE, "DEG",                                    \
+     "remeshing target smallest angle in (0, 60), default\n"                  \
+     "25; near a sharp input corner of angle c the aim is\n"                  \
+     "c/2"},                                                                  \
+    {"max-steiner", OPTION_MAX_STEINER, "N",                                  \
+     "most Steiner vertices refinement may add; default\n"                    \
+     "2n + 100; 0: no refinement"},                                           \
+    {"k-split", OPTION_K_SPLIT, "N",                                          \
+     "edges split per refinement round; default 0: about\n"                   \
+     "1% of the triangles"},                                                  \
+    {"area-every", OPTION_AREA_EVERY, "N",                                    \
+     "area equalisation (eq. 4) every N refinement\n"                         \
+     "rounds; default 0: never"},                                             \
+    {"smoothing", OPTION_SMOOTHING, "NAME",                                   \
+     "laplacian, angle, weighted or combined (default):\n"                    \
+     "weighted angle-based, Laplacian where it fails"},                       \
+    {"max-iterations", OPTION_MAX_ITERATIONS, "N",                            \
+     "cap on refinement rounds; default 0: none"}
+
+typedef struct triangulation_args {
+    const char **inputs; /* argc entries allocated, input_count used */
+    size_t input_count;
+    const char *method_name;
+    cm_options options; /* method and remeshing; the progress hook is set later */
+} triangulation_args;
+
+/* Defaults, and room for every argument of argv to be an input. Returns
+ * CLI_EXIT_OK or CLI_EXIT_INTERNAL (out of memory). */
+int triangulation_args_init(triangulation_args *args, int argc, cli_error *error);
+void triangulation_args_free(triangulation_args *args);
+
+/* Takes a positional argument (key 0) or a triangulation option. Returns
+ * -1 if key is none of these (the caller handles it), else an exit code. */
+int triangulation_option(triangulation_args *args, const char *command, int key,
+                         const char *value, cli_error *error);
+
+/* Checks there are at least two inputs. */
+int triangulation_args_check(const triangulation_args *args, const char *command,
+                             cli_error *error);
+
+/* The polygons as read and the core's result for them. */
+typedef struct triangulation {
+    const triangulation_args *args;
+    polygon_input *polygons; /* args->input_count */
+    cm_result *result;
+    double seconds_total;    /* the core's whole computation */
+} triangulation;
+
+/* Reads every input (same vertex counts) and triangulates them. Errors name
+ * the file and line the core blames; the exit code says whose fault it was
+ * (CLI_EXIT_USAGE for the input, CLI_EXIT_INTERNAL, CLI_EXIT_INTERRUPTED). */
+int triangulation_run(triangulation *t, const triangulation_args *args, cli_error *error);
+void triangulation_free(triangulation *t);
+
+/* The error of a failed morph or sweep call: "COMMAND: message" (the
+ * core's message, or the status's name if it left none), "interrupted;
+ * nothing written" when cancelled. Returns the exit code for status. */
+int core_failure(const char *command, const char *message, cm_status status,
+                 cli_error *error);
+
+/* CLI exit code for a core status. */
+int exit_code_for(cm_status status);
+
+/* "dir/a.xy" -> "a.xy" (borrowed). */
+const char *file_name(const char *path);
+
+#endif

@@ -1,0 +1,266 @@
+"""`compatmesh sweep`: the exported volume meshes read back by Gmsh (every
+element's Jacobian positive across its volume) and by meshio (counts and
+connectivity), the volume equal to the integral of the section areas, bad
+input refused without leaving a file."""
+import os
+import re
+
+import gmsh
+import meshio
+import numpy as np
+import pytest
+
+from polygons import glyph_pair, leftovers, spiral_pair, twisted_pair, write_xy
+
+PAIRS = {"twisted": twisted_pair, "spiral": spiral_pair, "glyph": glyph_pair}
+# Which reader checks which format: Gmsh reads all but Abaqus; meshio reads
+# .msh, .vtk and .inp (not Gmsh's .bdf, which has no BEGIN BULK, nor .unv).
+# Gmsh 4.8 writes VTK wedges in VTK's order but reads them back as if in its
+# own, turning them inside out; test_vtk_file_uses_vtk_wedge_order and meshio
+# check the .vtk prisms instead.
+GMSH_CHECKS = [(fmt, kind) for fmt in ["msh", "msh22", "vtk", "bdf", "unv"]
+               for kind in ["prism", "tet"] if (fmt, kind) != ("vtk", "prism")]
+MESHIO_READS = ["msh", "msh22", "vtk", "inp"]
+GMSH_TYPE = {"prism": 6, "tet": 4}
+CORNERS = {"prism": [0, 0, -1, 1, 0, -1, 0, 1, -1, 0, 0, 1, 1, 0, 1, 0, 1, 1],
+           "tet": [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]}
+
+
+def sweep(cm, tmp_path, pair, fmt, *extra):
+    """Runs the sweep of pair into out.<ext>; returns (path, stdout)."""
+    a, b = pair
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    extension = "msh" if fmt == "msh22" else fmt
+    args = ["--msh-version", "2.2"] if fmt == "msh22" else []
+    result = cm("sweep", "a.xy", "b.xy", "--sections", 6, "--height", 2.5, "-o",
+                f"out.{extension}", *args, *extra, cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert result.stderr == ""
+    assert leftovers(tmp_path) == []
+    return tmp_path / f"out.{extension}", result.stdout
+
+
+def reported(stdout):
+    m = re.search(r"\((\d+) sections, (\d+) nodes, (\d+) (prisms|tetrahedra), "
+                  r"volume ([-+0-9.e]+)\)", stdout)
+    assert m, stdout
+    return int(m[1]), int(m[2]), int(m[3]), float(m[5])
+
+
+@pytest.fixture
+def gmsh_session():
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    yield gmsh
+    gmsh.finalize()
+
+
+@pytest.mark.parametrize("fmt, kind", GMSH_CHECKS)
+@pytest.mark.parametrize("name", sorted(PAIRS))
+def test_gmsh_reads_back_positive_elements(cm, tmp_path, gmsh_session, name, fmt, kind):
+    extra = ["--tets"] if kind == "tet" else []
+    path, stdout = sweep(cm, tmp_path, PAIRS[name](), fmt, *extra)
+    sections, nodes, cells, volume = reported(stdout)
+    gmsh.open(str(path))
+    node_tags, coords, _ = gmsh.model.mesh.getNodes()
+    assert len(node_tags) == nodes
+    types, tags, element_nodes = gmsh.model.mesh.getElements(3)
+    assert list(types) == [GMSH_TYPE[kind]] and len(tags[0]) == cells
+    # Every element's Jacobian determinant positive at its Gauss points and
+    # its corners: positive volume everywhere, not only on average.
+    gauss, _ = gmsh.model.mesh.getIntegrationPoints(GMSH_TYPE[kind], "Gauss4")
+    for points in (gauss, CORNERS[kind]):
+        _, determinants, _ = gmsh.model.mesh.getJacobians(GMSH_TYPE[kind], points)
+        assert len(determinants) == cells * (len(points) // 3)
+        assert min(determinants) > 0
+    weights = gmsh.model.mesh.getIntegrationPoints(GMSH_TYPE[kind], "Gauss4")[1]
+    _, determinants, _ = gmsh.model.mesh.getJacobians(GMSH_TYPE[kind], gauss)
+    integrated = float(np.sum(np.reshape(determinants, (cells, -1)) @ np.asarray(weights)))
+    if kind == "prism":
+        # The volume Gmsh integrates is the one the tool reported.
+        assert integrated == pytest.approx(volume, rel=1e-6)  # .bdf keeps 9 digits
+    else:
+        # Tetrahedra have flat faces where the prisms' sides are ruled, so
+        # their total is their own; it must be what their corners give.
+        position = dict(zip(node_tags, np.reshape(coords, (-1, 3))))
+        p = np.array([position[t] for t in element_nodes[0]]).reshape(-1, 4, 3)
+        six = np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]),
+                        p[:, 3] - p[:, 0])
+        assert integrated == pytest.approx(six.sum() / 6, rel=1e-9)
+
+
+def section_area_integral(points, n, nv):
+    """Integral over z of the area of the section polygons: the prisms blend
+    their triangles linearly between two sections, so the area is quadratic
+    in z in each slab and Simpson's rule is exact there."""
+    sections = points.reshape(-1, nv, 3)
+    def area(xy):
+        x, y = xy[:, 0], xy[:, 1]
+        return 0.5 * np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)
+    total = 0.0
+    for low, high in zip(sections[:-1], sections[1:]):
+        z0, z1 = low[0, 2], high[0, 2]
+        assert np.all(low[:, 2] == z0) and np.all(high[:, 2] == z1) and z1 > z0
+        b, t = low[:n, :2], high[:n, :2]
+        total += (z1 - z0) / 6 * (area(b) + 4 * area((b + t) / 2) + area(t))
+    return total
+
+
+@pytest.mark.parametrize("name", sorted(PAIRS))
+def test_volume_is_the_integral_of_section_areas(cm, tmp_path, name):
+    pair = PAIRS[name]()
+    path, stdout = sweep(cm, tmp_path, pair, "msh")
+    sections, nodes, cells, volume = reported(stdout)
+    mesh = meshio.read(path)
+    assert len(mesh.points) == nodes and nodes % sections == 0
+    expected = section_area_integral(mesh.points, len(pair[0]), nodes // sections)
+    assert volume == pytest.approx(expected, rel=1e-9)
+    # The two ends are the inputs, at z = 0 and z = 2.5.
+    assert mesh.points[:, 2].min() == 0 and mesh.points[:, 2].max() == 2.5
+    # Gmsh prints 16 significant digits: close, not bit-identical.
+    assert np.allclose(mesh.points[:len(pair[0]), :2], pair[0], rtol=0, atol=1e-14)
+
+
+@pytest.mark.parametrize("kind", ["prism", "tet"])
+def test_meshio_reads_every_format_alike(cm, tmp_path, kind):
+    extra = ["--tets"] if kind == "tet" else []
+    meshes = {}
+    for fmt in MESHIO_READS:
+        directory = tmp_path / fmt
+        directory.mkdir()
+        path, stdout = sweep(cm, directory, glyph_pair(), fmt, *extra)
+        meshes[fmt] = meshio.read(path)
+        _, nodes, cells, _ = reported(stdout)
+        cell_type = "wedge" if kind == "prism" else "tetra"
+        assert [(c.type, len(c.data)) for c in meshes[fmt].cells] == [(cell_type, cells)]
+        assert len(meshes[fmt].points) == nodes
+    reference = meshes["msh"]
+    for fmt, mesh in meshes.items():
+        # meshio gives wedges in Gmsh's order whatever the file's convention,
+        # so equal connectivity means each writer kept the orientation.
+        assert np.array_equal(mesh.cells[0].data, reference.cells[0].data), fmt
+        assert np.allclose(mesh.points, reference.points, rtol=0, atol=1e-12), fmt
+
+
+def test_vtk_file_uses_vtk_wedge_order(cm, tmp_path):
+    """VTK wants the first triangle's normal pointing away from the second
+    (Gmsh: towards it); read the legacy file's own numbers."""
+    path, _ = sweep(cm, tmp_path, twisted_pair(), "vtk")
+    lines = path.read_text().splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith("POINTS"))
+    count = int(lines[start].split()[1])
+    numbers = " ".join(lines[start + 1:]).split()
+    points = np.array(numbers[:3 * count], dtype=float).reshape(-1, 3)
+    cells_at = next(i for i, line in enumerate(lines) if line.startswith("CELLS"))
+    wedges = np.array([line.split() for line in
+                       lines[cells_at + 1:cells_at + 1 + int(lines[cells_at].split()[1])]],
+                      dtype=int)
+    assert np.all(wedges[:, 0] == 6)
+    p = points[wedges[:, 1:]]
+    normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    towards_top = np.einsum("ij,ij->i", normal, p[:, 3:].mean(axis=1) - p[:, :3].mean(axis=1))
+    assert np.all(towards_top < 0)
+
+
+def write_obj(path, points, z):
+    lines = [f"v {x!r} {y!r} {z!r}" for x, y in points]
+    lines.append("l " + " ".join(str(i + 1) for i in range(len(points))) + " 1")
+    path.write_text("\n".join(lines) + "\n")
+
+
+def test_heights_default_to_the_inputs_z(cm, tmp_path):
+    a, b = twisted_pair()
+    write_obj(tmp_path / "a.obj", a, -1.5)
+    write_obj(tmp_path / "b.obj", b, 4.0)
+    result = cm("sweep", "a.obj", "b.obj", "-o", "out.msh")
+    assert result.returncode == 0, result.stderr
+    z = meshio.read(tmp_path / "out.msh").points[:, 2]
+    assert z.min() == -1.5 and z.max() == 4.0
+    assert len(np.unique(z)) == reported(result.stdout)[0] >= 11
+
+
+def test_heights_of_three_inputs(cm, tmp_path):
+    a, b = twisted_pair()
+    c, _ = glyph_pair(8)
+    for name, points in (("a", a), ("b", b), ("c", c)):
+        write_xy(tmp_path / f"{name}.xy", points)
+    result = cm("sweep", "a.xy", "b.xy", "c.xy", "--sections", 3, "--heights", "0,1,3",
+                "-o", "out.vtk")
+    assert result.returncode == 0, result.stderr
+    mesh = meshio.read(tmp_path / "out.vtk")
+    levels = np.unique(mesh.points[:, 2])
+    assert {0.0, 1.0, 3.0} <= set(levels.tolist())
+    middle = mesh.points[mesh.points[:, 2] == 1.0][:len(b), :2]
+    assert np.allclose(middle, b, rtol=0, atol=1e-14)
+
+
+@pytest.mark.parametrize("args, code, message", [
+    (("-o", "out.stl"), 2, "compatmesh: sweep: out.stl: unknown extension; the format follows "
+                           "it, one of msh, vtk, inp (Abaqus), bdf (Nastran), unv\n"),
+    (("-o", "out"), 2, "compatmesh: sweep: out: unknown extension; the format follows it, "
+                       "one of msh, vtk, inp (Abaqus), bdf (Nastran), unv\n"),
+    (("-o", "blocker/out.msh"), 1, "compatmesh: cannot write blocker/out.msh: blocker is not "
+                                   "a directory\n"),
+    (("-o", "out.msh", "--heights", "0,1,2"), 2,
+     "compatmesh: sweep: --heights gives 3 heights for 2 inputs\n"),
+    (("-o", "out.msh", "--heights", "1,1"), 2,
+     "compatmesh: sweep: --heights '1,1': the heights must increase strictly (item 2 is "
+     "not above item 1)\n"),
+    (("-o", "out.msh", "--height", "2", "--heights", "0,1"), 2,
+     "compatmesh: sweep: give --height or --heights, not both\n"),
+    (("-o", "out.msh", "--height", "-1"), 2,
+     "compatmesh: sweep: --height '-1' is not a positive number\n"),
+    (("-o", "out.msh", "--msh-version", "3"), 2,
+     "compatmesh: sweep: unknown --msh-version '3' (known: 4.1, 2.2)\n"),
+    (("-o", "out.msh", "--sections", "1"), 2,
+     "compatmesh: sweep: --sections '1' is not a whole number from 2 to 10000\n"),
+])
+def test_bad_arguments(cm, tmp_path, args, code, message):
+    a, b = twisted_pair()
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    (tmp_path / "blocker").write_text("a file")
+    before = sorted(os.listdir(tmp_path))
+    result = cm("sweep", "a.xy", "b.xy", *args)
+    assert (result.returncode, result.stderr) == (code, message)
+    assert sorted(os.listdir(tmp_path)) == before
+
+
+def test_mismatched_counts(cm, tmp_path):
+    a, _ = twisted_pair(16)
+    _, b = twisted_pair(12)
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    result = cm("sweep", "a.xy", "b.xy", "-o", "out.msh")
+    assert result.returncode == 2
+    assert result.stderr == ("compatmesh: b.xy has 12 vertices but a.xy has 16; the polygons' "
+                             "vertices correspond by index, so the counts must be equal\n")
+    assert sorted(os.listdir(tmp_path)) == ["a.xy", "b.xy"]
+
+
+def test_inputs_with_and_without_z(cm, tmp_path):
+    a, b = twisted_pair()
+    c, _ = glyph_pair(8)
+    write_obj(tmp_path / "a.obj", a, 0.0)
+    write_xy(tmp_path / "b.xy", b)
+    write_obj(tmp_path / "c.obj", c, 2.0)
+    result = cm("sweep", "a.obj", "b.xy", "c.obj", "-o", "out.msh")
+    assert result.returncode == 2
+    assert result.stderr == ("compatmesh: sweep: some inputs give z and some do not; give all "
+                             "of them z or use --height / --heights\n")
+    assert not (tmp_path / "out.msh").exists()
+    # A flat drawing (z = 0) beside a .xy file is fine.
+    assert cm("sweep", "a.obj", "b.xy", "-o", "out.msh").returncode == 0
+
+
+def test_inputs_z_must_increase(cm, tmp_path):
+    a, b = twisted_pair()
+    write_obj(tmp_path / "a.obj", a, 2.0)
+    write_obj(tmp_path / "b.obj", b, 1.0)
+    result = cm("sweep", "a.obj", "b.obj", "-o", "out.msh")
+    assert result.returncode == 2
+    assert result.stderr == ("compatmesh: sweep: b.obj lies at z = 1, not above a.obj at z = 2; "
+                             "the inputs' z must increase (or use --height / --heights)\n")
+    assert not (tmp_path / "out.msh").exists()
+    assert cm("sweep", "a.obj", "b.obj", "--heights", "0,1", "-o", "out.msh").returncode == 0

@@ -1,0 +1,215 @@
+/* The sweep: prisms valid along their blends (re-checked here with the
+ * exact blend predicate on the node coordinates), tetrahedra positive and
+ * conforming, the ends equal to the inputs, the volume equal to the
+ * integral of the section areas (Simpson's rule per slab is exact: the
+ * area of a blended polygon is quadratic), and clear failures: the linear
+ * morph, a refinement budget too small, bad options. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "morph_fixtures.h"
+#include "predicates.h"
+
+#define N 60
+
+/* Area of the polygon (vertices 0..n-1) blended at s between two sections. */
+static double blended_area(const double *nodes, size_t lo, size_t hi, size_t n, double s)
+{
+    double a = 0;
+    for (size_t i = 0; i < n; i++) {
+        size_t j = (i + 1) % n;
+        double xi = (1 - s) * nodes[3 * (lo + i)] + s * nodes[3 * (hi + i)];
+        double yi = (1 - s) * nodes[3 * (lo + i) + 1] + s * nodes[3 * (hi + i) + 1];
+        double xj = (1 - s) * nodes[3 * (lo + j)] + s * nodes[3 * (hi + j)];
+        double yj = (1 - s) * nodes[3 * (lo + j) + 1] + s * nodes[3 * (hi + j) + 1];
+        a += xi * yj - xj * yi;
+    }
+    return 0.5 * fabs(a);
+}
+
+static int key_less(const void *pa, const void *pb)
+{
+    const int32_t *a = pa, *b = pb;
+    for (int i = 0; i < 3; i++)
+        if (a[i] != b[i]) return (a[i] > b[i]) - (a[i] < b[i]);
+    return 0;
+}
+
+static int int_less(const void *pa, const void *pb)
+{
+    int32_t a = *(const int32_t *)pa, b = *(const int32_t *)pb;
+    return (a > b) - (a < b);
+}
+
+/* Tet faces: each shared by at most two tets, and the unshared ones are
+ * exactly the sweep's boundary (bottom, top, two per side quad). */
+static void check_conforming(const cm_sweep *w, size_t nt, size_t n)
+{
+    size_t nf = 4 * cm_sweep_num_tets(w);
+    int32_t *faces = malloc(3 * nf * sizeof *faces);
+    const int32_t *tet = cm_sweep_tets(w);
+    for (size_t t = 0; t < cm_sweep_num_tets(w); t++)
+        for (int f = 0; f < 4; f++) {
+            int32_t *face = faces + 3 * (4 * t + (size_t)f);
+            for (int c = 0, j = 0; c < 4; c++)
+                if (c != f) face[j++] = tet[4 * t + (size_t)c];
+            qsort(face, 3, sizeof *face, int_less);
+        }
+    qsort(faces, nf, 3 * sizeof *faces, key_less);
+    size_t open = 0, over = 0;
+    for (size_t i = 0; i < nf;) {
+        size_t j = i + 1;
+        while (j < nf && key_less(faces + 3 * i, faces + 3 * j) == 0) j++;
+        open += j - i == 1, over += j - i > 2;
+        i = j;
+    }
+    size_t ns = cm_sweep_num_sections(w);
+    CHECK_MSG(over == 0 && open == 2 * nt + 2 * n * (ns - 1), "%zu faces over-shared, %zu open (expected %zu)", over,
+              open, 2 * nt + 2 * n * (ns - 1));
+    free(faces);
+}
+
+static void test_sweep(fixture_kind kind, const double *heights, int tets, cm_morph_method method)
+{
+    const char *name = fixture_name(kind);
+    cm_result *r = fixture_result(kind, N);
+    if (!r) {
+        CHECK(0);
+        return;
+    }
+    size_t k = cm_result_num_geometries(r), nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
+    cm_morph *m = NULL;
+    cm_morph_options mo;
+    cm_morph_options_init(&mo);
+    mo.method = method;
+    CHECK(cm_morph_create(r, &mo, &m) == CM_OK);
+    cm_sweep_options o;
+    cm_sweep_options_init(&o);
+    o.tets = tets;
+    o.height = 2.0;
+    o.heights = heights;
+    cm_sweep *w = NULL;
+    cm_status s = cm_sweep_create(m, &o, &w);
+    CHECK_MSG(s == CM_OK, "%s: %s", name, cm_sweep_message(w));
+    if (s != CM_OK) goto done;
+    size_t ns = cm_sweep_num_sections(w), np = cm_sweep_num_prisms(w);
+    const double *z = cm_sweep_section_z(w), *nodes = cm_sweep_nodes(w);
+    CHECK(ns >= (k - 1) * (o.sections - 1) + 1);
+    CHECK(cm_sweep_num_nodes(w) == ns * nv && np == (ns - 1) * nt && cm_sweep_num_tets(w) == (tets ? 3 * np : 0));
+    CHECK(z[0] == (heights ? heights[0] : 0.0) && z[ns - 1] == (heights ? heights[k - 1] : 2.0));
+    for (size_t i = 0; i + 1 < ns; i++) CHECK(z[i + 1] > z[i]);
+    /* Ends: the input geometries, bit for bit. */
+    for (size_t v = 0; v < nv; v++) {
+        CHECK(nodes[3 * v] == cm_result_vertices(r, 0)[2 * v]);
+        CHECK(nodes[3 * ((ns - 1) * nv + v) + 1] == cm_result_vertices(r, k - 1)[2 * v + 1]);
+    }
+    /* Every prism valid along its blend; every tet positive. */
+    size_t bad_prisms = 0, bad_tets = 0;
+    const int32_t *pr = cm_sweep_prisms(w), *tet = cm_sweep_tets(w);
+    for (size_t p = 0; p < np; p++) {
+        const int32_t *q = pr + 6 * p;
+        int ok = 1;
+        for (int c = 0; c < 3; c++)
+            ok &= q[3 + c] - q[c] == (int32_t)nv && nodes[3 * (size_t)q[3 + c] + 2] > nodes[3 * (size_t)q[c] + 2];
+        double p2[6][2];
+        for (int c = 0; c < 6; c++) p2[c][0] = nodes[3 * (size_t)q[c]], p2[c][1] = nodes[3 * (size_t)q[c] + 1];
+        bad_prisms += !ok || !cm_blend_positive(p2[0], p2[1], p2[2], p2[3], p2[4], p2[5]);
+    }
+    for (size_t t = 0; t < cm_sweep_num_tets(w); t++)
+        bad_tets += cm_orient3d(nodes + 3 * (size_t)tet[4 * t], nodes + 3 * (size_t)tet[4 * t + 1],
+                                nodes + 3 * (size_t)tet[4 * t + 2], nodes + 3 * (size_t)tet[4 * t + 3]) <= 0;
+    CHECK_MSG(bad_prisms == 0 && bad_tets == 0, "%s: %zu prisms, %zu tets invalid", name, bad_prisms, bad_tets);
+    if (tets) check_conforming(w, nt, (size_t)N);
+    /* Volume = integral of the polygon's section area. */
+    double integral = 0;
+    for (size_t i = 0; i + 1 < ns; i++) {
+        size_t lo = i * nv, hi = (i + 1) * nv;
+        integral += (z[i + 1] - z[i]) / 6 *
+                    (blended_area(nodes, lo, hi, N, 0) + 4 * blended_area(nodes, lo, hi, N, 0.5) +
+                     blended_area(nodes, lo, hi, N, 1));
+    }
+    double rel = fabs(cm_sweep_volume(w) - integral) / integral;
+    CHECK_MSG(rel < 1e-9, "%s: volume %.15g, integral of areas %.15g", name, cm_sweep_volume(w), integral);
+    printf("%s%s%s: %zu sections (%zu inserted), %zu prisms, %zu tets, volume %.12g (relative difference %.1e)\n", name,
+           method == CM_MORPH_INTRINSIC ? ", intrinsic" : "", tets ? " with tets" : "", ns,
+           ns - ((k - 1) * (o.sections - 1) + 1), np, cm_sweep_num_tets(w), cm_sweep_volume(w), rel);
+done:
+    cm_sweep_free(w);
+    cm_morph_free(m);
+    cm_result_free(r);
+}
+
+static int cancel_now(void *user, double fraction, const char *stage)
+{
+    (void)user, (void)fraction, (void)stage;
+    return 1;
+}
+
+static void test_failures(void)
+{
+    cm_result *r = fixture_result(FIX_TWISTED, N);
+    if (!r) {
+        CHECK(0);
+        return;
+    }
+    cm_morph *m = NULL, *lin = NULL;
+    cm_morph_options mo;
+    cm_morph_options_init(&mo);
+    mo.method = CM_MORPH_LINEAR;
+    CHECK(cm_morph_create(r, NULL, &m) == CM_OK && cm_morph_create(r, &mo, &lin) == CM_OK);
+    cm_sweep_options o;
+    cm_sweep *w = NULL;
+
+    cm_sweep_options_init(&o);
+    CHECK(cm_sweep_create(lin, &o, &w) == CM_ERR_INTERNAL && strstr(cm_sweep_message(w), "inverted"));
+    CHECK(cm_sweep_num_prisms(w) == 0 && cm_sweep_prisms(w) == NULL);
+    cm_sweep_free(w);
+
+    o.max_refine = 0; /* the twisted pair with tets needs inserted sections */
+    o.tets = 1;
+    cm_status s = cm_sweep_create(m, &o, &w);
+    CHECK_MSG(s == CM_ERR_INTERNAL && strstr(cm_sweep_message(w), "max_refine"), "%s", cm_sweep_message(w));
+    cm_sweep_free(w);
+
+    cm_sweep_options_init(&o);
+    o.sections = 1;
+    CHECK(cm_sweep_create(m, &o, &w) == CM_ERR_ARGUMENT && strstr(cm_sweep_message(w), "sections"));
+    cm_sweep_free(w);
+    cm_sweep_options_init(&o);
+    o.height = -1;
+    CHECK(cm_sweep_create(m, &o, &w) == CM_ERR_ARGUMENT && strstr(cm_sweep_message(w), "height"));
+    cm_sweep_free(w);
+    double flat[2] = {1.0, 1.0};
+    cm_sweep_options_init(&o);
+    o.heights = flat;
+    CHECK(cm_sweep_create(m, &o, &w) == CM_ERR_ARGUMENT && strstr(cm_sweep_message(w), "increase"));
+    cm_sweep_free(w);
+    cm_sweep_options_init(&o);
+    o.progress = cancel_now;
+    CHECK(cm_sweep_create(m, &o, &w) == CM_ERR_CANCELLED);
+    cm_sweep_free(w);
+    CHECK(cm_sweep_create(NULL, NULL, &w) == CM_ERR_ARGUMENT && strstr(cm_sweep_message(w), "morph"));
+    cm_sweep_free(w);
+    CHECK(cm_sweep_create(m, NULL, NULL) == CM_ERR_ARGUMENT);
+    cm_sweep_free(NULL);
+    CHECK(cm_sweep_message(NULL) != NULL && cm_sweep_num_nodes(NULL) == 0);
+    cm_morph_free(lin);
+    cm_morph_free(m);
+    cm_result_free(r);
+}
+
+int main(void)
+{
+    static const double three_heights[3] = {0.0, 0.25, 2.0};
+    test_sweep(FIX_TWISTED, NULL, 1, CM_MORPH_CONVEX);
+    test_sweep(FIX_SPIRAL, NULL, 0, CM_MORPH_CONVEX); /* the blends alone need one more section */
+    test_sweep(FIX_SPIRAL, NULL, 1, CM_MORPH_CONVEX);
+    test_sweep(FIX_GLYPH, NULL, 1, CM_MORPH_CONVEX);
+    test_sweep(FIX_THREE, three_heights, 1, CM_MORPH_CONVEX);
+    test_sweep(FIX_SPIRAL, NULL, 1, CM_MORPH_INTRINSIC);
+    test_sweep(FIX_THREE, three_heights, 1, CM_MORPH_INTRINSIC);
+    test_failures();
+    return check_summary("test_sweep");
+}

@@ -1,0 +1,142 @@
+"""compatmesh.morph and compatmesh.sweep: valid sections, the volume, errors."""
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import compatmesh
+from conftest import ring
+
+
+def turned(points, degrees):
+    c, s = np.cos(np.radians(degrees)), np.sin(np.radians(degrees))
+    return points @ np.array([[c, s], [-s, c]])
+
+
+@pytest.fixture
+def twisted():
+    """A star and a differently shaped star turned by 160 degrees: straight
+    vertex paths fold triangles over on the way."""
+    return ring(12, inner=0.5), turned(ring(12, inner=0.7, jitter=False) * 1.3, 160)
+
+
+def orientation(a, b, c):
+    ax, ay, bx, by, cx, cy = map(Fraction, (*a, *b, *c))
+    value = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+    return (value > 0) - (value < 0)
+
+
+def count_inverted(xy, faces):
+    return sum(orientation(xy[a], xy[b], xy[c]) <= 0 for a, b, c in faces.tolist())
+
+
+def test_convex_morph_sections_are_valid(twisted):
+    a, b = twisted
+    m = compatmesh.morph([a, b], frames=11)
+    assert m["sections"].shape == (11, m["sections"].shape[1], 2)
+    assert m["t"][0] == 0 and m["t"][-1] == 1
+    assert np.array_equal(m["sections"][0][:len(a)], a)
+    assert np.array_equal(m["sections"][-1][:len(b)], b)
+    for xy, inverted, angle in zip(m["sections"], m["inverted"], m["min_angle_deg"]):
+        assert inverted == 0 and count_inverted(xy.tolist(), m["faces"]) == 0
+        assert 0 < angle < 60
+
+
+def test_linear_morph_counts_inversions(twisted):
+    m = compatmesh.morph(twisted, t=np.linspace(0, 1, 11), morph_method="linear")
+    assert m["inverted"].sum() > 0
+    for xy, inverted in zip(m["sections"], m["inverted"]):
+        assert count_inverted(xy.tolist(), m["faces"]) == inverted
+
+
+def test_morph_takes_triangulate_options(twisted):
+    plain = compatmesh.morph(twisted, t=0.5, remesh=False)
+    remeshed = compatmesh.morph(twisted, t=0.5)
+    assert plain["sections"].shape[1] <= remeshed["sections"].shape[1]
+    with pytest.raises(TypeError, match="morph\\(\\) got an unexpected keyword argument 'colour'"):
+        compatmesh.morph(twisted, t=0.5, colour=1)
+
+
+def section_area_integral(nodes, z, n):
+    sections = nodes.reshape(len(z), -1, 3)
+    def area(p):
+        return 0.5 * np.sum(p[:, 0] * np.roll(p[:, 1], -1) - np.roll(p[:, 0], -1) * p[:, 1])
+    total = 0.0
+    for i in range(len(z) - 1):
+        low, high = sections[i, :n, :2], sections[i + 1, :n, :2]
+        total += (z[i + 1] - z[i]) / 6 * (area(low) + 4 * area((low + high) / 2) + area(high))
+    return total
+
+
+@pytest.mark.parametrize("tets", [False, True])
+def test_sweep(twisted, tets):
+    a, _ = twisted
+    s = compatmesh.sweep(twisted, sections=6, height=2.0, tets=tets)
+    z = s["section_z"]
+    assert z[0] == 0 and z[-1] == 2.0 and np.all(np.diff(z) > 0) and len(z) >= 6
+    nodes, prisms = s["nodes"], s["prisms"]
+    nv = len(nodes) // len(z)
+    assert nodes.shape == (len(z) * nv, 3) and prisms.shape[1] == 6
+    assert np.array_equal(nodes[:len(a), :2], a)
+    assert s["volume"] == pytest.approx(section_area_integral(nodes, z, len(a)), rel=1e-9)
+    p = nodes[prisms]
+    assert np.all(p[:, 3:, 2] > p[:, :3, 2])  # the top above the bottom
+    normal = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    assert np.all(normal[:, 2] > 0)  # bottom counter-clockwise seen from +z
+    if tets:
+        assert s["tets"].shape == (3 * len(prisms), 4)
+        q = nodes[s["tets"]]
+        volumes = np.einsum("ij,ij->i", np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0]),
+                            q[:, 3] - q[:, 0])
+        assert np.all(volumes > 0)
+    else:
+        assert s["tets"].shape == (0, 4)
+
+
+def test_sweep_heights(twisted):
+    s = compatmesh.sweep(twisted, sections=3, heights=[-1.0, 0.5])
+    assert s["section_z"][0] == -1.0 and s["section_z"][-1] == 0.5
+
+
+@pytest.mark.parametrize("call, error, message", [
+    (lambda p: compatmesh.morph(p, t=1.5), ValueError, "morph: t = 1.5 is outside \\[0, 1\\]"),
+    (lambda p: compatmesh.morph(p, frames=1), ValueError, "frames must be at least 2"),
+    (lambda p: compatmesh.morph(p, t=0.5, frames=3), TypeError, "exactly one of t and frames"),
+    (lambda p: compatmesh.morph(p, t=0.5, morph_method="bezier"), ValueError,
+     "unknown morph_method 'bezier'"),
+    (lambda p: compatmesh.sweep(p, heights=[1.0, 0.0]), ValueError,
+     "sweep: heights must increase strictly"),
+    (lambda p: compatmesh.sweep(p, heights=[0.0, 1.0, 2.0]), ValueError,
+     "heights has 3 values for 2 polygons"),
+    (lambda p: compatmesh.sweep(p, sections=1), ValueError, "sweep: sections must be >= 2"),
+    (lambda p: compatmesh.sweep(p, height=-1.0), ValueError, "height must be positive"),
+    (lambda p: compatmesh.sweep([p[0], p[1][:-1]]), compatmesh.InputError,
+     "polygon 1 has 11 vertices but polygon 0 has 12"),
+    (lambda p: compatmesh.sweep([np.c_[p[0], np.zeros(12)], np.c_[p[1], np.ones(12)]]),
+     ValueError, "polygon 0: expected an n x 2 array"),
+])
+def test_bad_arguments(twisted, call, error, message):
+    with pytest.raises(error, match=message):
+        call(twisted)
+
+
+@pytest.mark.parametrize("function, stage", [(compatmesh.morph, "morph system"),
+                                             (compatmesh.sweep, "sweep")])
+def test_progress_reaches_and_cancels_the_morph_and_sweep(twisted, function, stage):
+    stages = []
+    def progress(fraction, name):
+        stages.append(name)
+        return name == stage  # stop there
+    kwargs = {"t": 0.5} if function is compatmesh.morph else {}
+    with pytest.raises(compatmesh.Cancelled):
+        function(twisted, progress=progress, **kwargs)
+    assert stages[-1] == stage
+    assert "enclosure" in stages  # the morph reported before
+
+
+def test_progress_errors_propagate(twisted):
+    def progress(fraction, name):
+        if name == "morph system":
+            raise KeyError("from the callback")
+    with pytest.raises(KeyError, match="from the callback"):
+        compatmesh.morph(twisted, t=0.5, progress=progress)
