@@ -1,6 +1,7 @@
 #!/bin/sh
 # Compatible triangulations of the demo pairs (the letters U and S of the
-# paper's Figure 8, a U/S/C triple, stars, a spiral, a comb).
+# paper's Figure 8, a U/S/C triple, stars, a spiral, a comb), then the morph
+# and the sweep from U to S.
 #   examples/demo.sh BUILD_DIR
 # Writes BUILD_DIR/demo/input/*.xy and one folder BUILD_DIR/demo/PAIR/ per
 # pair with the meshes, report.json and preview.svg. Exits non-zero if any
@@ -57,6 +58,23 @@ while read -r name files; do
         failed="$failed $name"
     fi
 done <"$input/pairs.txt"
+
+# The U of the paper's Figure 8 morphed into its S, and the swept volume
+# between them as a finite-element mesh (Gmsh .msh, read by Gmsh and meshio).
+us="$input/U_S_a.xy $input/U_S_b.xy"
+if "$cli" morph $us --frames 11 --out-dir "$demo/morph_U_S" </dev/null >"$demo/morph.log" 2>&1; then
+    echo "morph U -> S: 11 sections in $demo/morph_U_S (frame_000.off ... frame_010.off)"
+    echo "  picture $demo/morph_U_S/frames.svg"
+else
+    echo "morph: FAILED, see $demo/morph.log" >&2
+    failed="$failed morph"
+fi
+if "$cli" sweep $us --sections 11 --height 1 -o "$demo/sweep_U_S.msh" </dev/null >"$demo/sweep.log" 2>&1; then
+    echo "sweep U -> S: 6-node prisms in $demo/sweep_U_S.msh"
+else
+    echo "sweep: FAILED, see $demo/sweep.log" >&2
+    failed="$failed sweep"
+fi
 
 if [ -n "$failed" ]; then
     echo "demo: failed:$failed" >&2
