@@ -6,9 +6,10 @@ JOBS ?= $(shell nproc)
 # Debian packages the build, the tests, the demo and the bench need.
 DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
   fonts-dejavu-core python3 python3-numpy python3-pytest python3-meshio \
-  libopenmesh-dev libeigen3-dev pybind11-dev python3-dev
+  libopenmesh-dev libeigen3-dev pybind11-dev python3-dev \
+  clang libclang-rt-14-dev valgrind
 
-.PHONY: all deps build demo test bench clean
+.PHONY: all deps build demo test bench fuzz soak clean
 
 all: build
 
@@ -35,6 +36,20 @@ demo: build
 
 bench: build
 	bash bench/run_bench.sh $(BUILD)
+
+# Longer fuzzing: every harness FUZZ_SECONDS, in the clang sanitizer tree.
+FUZZ_SECONDS ?= 600
+fuzz: build
+	sh tests/sanitize/sanitizer_tree.sh . $(BUILD)/sanitize $(JOBS)
+	for h in read_xy read_obj pipeline; do \
+	  sh tests/fuzz/run_fuzzer.sh $(BUILD)/sanitize/bin/fuzz_$$h tests/fuzz/corpus/$$h \
+	    $(BUILD)/fuzz-long/$$h $(FUZZ_SECONDS) || exit 1; \
+	done
+
+# 100,000 random pairs through the default pipeline, checked exactly.
+SOAK_PAIRS ?= 100000
+soak: build
+	$(BUILD)/bin/soak $(SOAK_PAIRS)
 
 clean:
 	rm -rf $(BUILD)
