@@ -163,8 +163,16 @@ def main(argv):
     lines = header(run_dir, pairs, failures, version) + rows
     if failures:
         lines += ["", "**Failed pairs:** " + ", ".join(failures)]
+    # Sections recorded by other runs (`make soak`) are kept.
+    kept = ""
+    if os.path.exists(out):
+        with open(out) as f:
+            previous = f.read()
+        start = previous.find("\n## Soak")
+        if start >= 0:
+            kept = previous[start:]
     with open(out, "w") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write("\n".join(lines) + "\n" + kept)
     return 0
 
 
