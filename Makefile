@@ -9,12 +9,13 @@ DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
   libopenmesh-dev libeigen3-dev pybind11-dev python3-dev \
   meshlab dpkg-dev qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev \
   libglew-dev xvfb xauth \
-  libsuitesparse-dev libgmsh-dev gmsh python3-gmsh
+  libsuitesparse-dev libgmsh-dev gmsh python3-gmsh \
+  clang libclang-rt-14-dev valgrind
 
 # Only `make bench` needs these: CGAL meshes each polygon alone, to compare.
 BENCH_PACKAGES = libcgal-dev
 
-.PHONY: all deps bench-deps build demo test bench clean install-meshlab-plugin
+.PHONY: all deps bench-deps build demo test bench fuzz soak clean install-meshlab-plugin
 
 all: build
 
@@ -48,6 +49,20 @@ bench: bench-deps build
 # Puts the MeshLab plugin where the MeshLab GUI loads plugins from.
 install-meshlab-plugin: build
 	cmake --install $(BUILD) --component meshlab_plugin
+
+# Longer fuzzing: every harness FUZZ_SECONDS, in the clang sanitizer tree.
+FUZZ_SECONDS ?= 600
+fuzz: build
+	sh tests/sanitize/sanitizer_tree.sh . $(BUILD)/sanitize $(JOBS)
+	for h in read_xy read_obj pipeline; do \
+	  sh tests/fuzz/run_fuzzer.sh $(BUILD)/sanitize/bin/fuzz_$$h tests/fuzz/corpus/$$h \
+	    $(BUILD)/fuzz-long/$$h $(FUZZ_SECONDS) || exit 1; \
+	done
+
+# 100,000 random pairs through the default pipeline, checked exactly.
+SOAK_PAIRS ?= 100000
+soak: build
+	$(BUILD)/bin/soak $(SOAK_PAIRS)
 
 clean:
 	rm -rf $(BUILD)

@@ -276,8 +276,16 @@ def main(argv):
     if os.path.exists(table1):
         with open(table1) as f:
             lines += ["", f.read().rstrip("\n")]
+    # Sections recorded by other runs (`make soak`) are kept.
+    kept = ""
+    if os.path.exists(out):
+        with open(out) as f:
+            previous = f.read()
+        start = previous.find("\n## Soak")
+        if start >= 0:
+            kept = previous[start:]
     with open(out, "w") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write("\n".join(lines) + "\n" + kept)
     return 0
 
 

@@ -42,6 +42,9 @@ std::string shape_of(const py::array &a)
   return s + (a.ndim() == 1 ? ",)" : ")");
 }
 
+[[noreturn]] void raise_input_error(const std::string &message, cm_status status, long polygon,
+                                   long vertex, long other);
+
 Polygon read_polygon(py::handle object, std::size_t index, double tolerance)
 {
   std::string name = "polygon " + std::to_string(index);
@@ -65,7 +68,10 @@ Polygon read_polygon(py::handle object, std::size_t index, double tolerance)
     // Canonical sign: the winding reaches the core as given, as for n x 2.
     polygon.frame = compatmesh::fit_plane(data, n, tolerance, compatmesh::NormalSign::Canonical);
   } catch (const compatmesh::PlaneError &e) {
-    throw py::value_error(name + ": " + e.what());
+    // The same InputError the core's own checks give, located.
+    raise_input_error(name + ": " + e.what(),
+                      e.not_finite() ? CM_ERR_NOT_FINITE : CM_ERR_ARGUMENT, long(index),
+                      long(e.vertex()), -1);
   }
   polygon.xy = compatmesh::to_plane(polygon.frame, data, n);
   return polygon;
@@ -197,6 +203,12 @@ struct CancelledTag {};
   if (status == CM_ERR_INTERNAL) throw std::runtime_error(message);
   long polygon = -1, vertex = -1, other = -1;
   cm_result_error_location(result, &polygon, &vertex, &other);
+  raise_input_error(message, status, polygon, vertex, other);
+}
+
+[[noreturn]] void raise_input_error(const std::string &message, cm_status status, long polygon,
+                                   long vertex, long other)
+{
   py::object error = input_error_type(message);
   error.attr("status") = cm_status_string(status);
   error.attr("polygon") = polygon;

@@ -101,7 +101,16 @@ int staged_output_begin(staged_output *out, const char *target, cli_error *error
     size_t base_offset = 0;
     char *parent = trimmed ? parent_directory(trimmed, &base_offset) : NULL;
     char *staging = NULL;
-    if (parent) {
+    struct stat info;
+    if (trimmed && stat(trimmed, &info) == 0 && S_ISDIR(info.st_mode)) {
+        /* An existing target may be a mount point, on another file system
+         * than its parent: stage inside it so the renames stay local. */
+        free(parent);
+        parent = NULL;
+        size_t size = strlen(trimmed) + 32;
+        staging = malloc(size);
+        if (staging) snprintf(staging, size, "%s/.compatmesh-XXXXXX", trimmed);
+    } else if (parent) {
         /* Hidden, and named after the target so a leftover is recognisable. */
         const char *base = trimmed + base_offset;
         size_t size = strlen(parent) + strlen(base) + 32;
@@ -115,7 +124,7 @@ int staged_output_begin(staged_output *out, const char *target, cli_error *error
         return CLI_EXIT_INTERNAL;
     }
     if (!mkdtemp(staging)) {
-        cli_error_set(error, "cannot create a temporary directory beside %s: %s",
+        cli_error_set(error, "cannot create a temporary directory in or beside %s: %s",
                       target, strerror(errno));
         free(staging);
         free(trimmed);

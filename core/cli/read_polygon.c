@@ -427,13 +427,11 @@ static int has_obj_extension(const char *path)
     return length >= 4 && strcasecmp(path + length - 4, ".obj") == 0;
 }
 
-int read_polygon(const char *path, polygon_input *polygon, cli_error *error)
+int parse_polygon_text(const char *path, char *text, size_t length,
+                       polygon_input *polygon, cli_error *error)
 {
     memset(polygon, 0, sizeof *polygon);
-    char *text;
-    size_t length;
-    int code = read_whole_file(path, &text, &length, error);
-    if (code != CLI_EXIT_OK) return code;
+    int code;
     const char *nul = memchr(text, '\0', length);
     if (nul) {
         long line = 1;
@@ -446,13 +444,24 @@ int read_polygon(const char *path, polygon_input *polygon, cli_error *error)
     } else {
         code = parse_xy(path, text, polygon, error);
     }
-    free(text);
     if (code != CLI_EXIT_OK) {
         polygon_input_free(polygon);
         return code;
     }
     polygon->path = path;
     return CLI_EXIT_OK;
+}
+
+int read_polygon(const char *path, polygon_input *polygon, cli_error *error)
+{
+    memset(polygon, 0, sizeof *polygon);
+    char *text;
+    size_t length;
+    int code = read_whole_file(path, &text, &length, error);
+    if (code != CLI_EXIT_OK) return code;
+    code = parse_polygon_text(path, text, length, polygon, error);
+    free(text);
+    return code;
 }
 
 void polygon_input_free(polygon_input *polygon)

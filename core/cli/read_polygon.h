@@ -29,6 +29,12 @@ typedef struct polygon_input {
  * CLI_EXIT_INTERNAL when out of memory. */
 int read_polygon(const char *path, polygon_input *polygon, cli_error *error);
 
+/* The same for a file's contents already in memory: text[0..length) followed
+ * by a NUL at text[length]; `path` names the file in messages and chooses
+ * the format. Modifies text. Used by read_polygon and the parser fuzzer. */
+int parse_polygon_text(const char *path, char *text, size_t length,
+                       polygon_input *polygon, cli_error *error);
+
 void polygon_input_free(polygon_input *polygon);
 
 #endif

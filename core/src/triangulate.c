@@ -1,4 +1,6 @@
 /* The public entry points: validate, build, check, measure. */
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -136,6 +138,30 @@ static void restore_input_order(cm_mesh *m, size_t n)
     for (size_t t = 0; t < 3 * m->nt; t++) m->tri[t] = input_index(m->tri[t], n, 1);
 }
 
+/* The constructions compute points in floating point: on input spanning
+ * magnitudes beyond about 1e+-150, their products overflow or underflow and
+ * the exact check rejects the result. Say so in an internal failure's
+ * message, so that the user knows to rescale. */
+static cm_status hint_at_range(cm_result *r, cm_status s, const double *const *polygons,
+                               size_t k, size_t n)
+{
+    if (s != CM_ERR_INTERNAL) return s;
+    double lo = INFINITY, hi = 0;
+    for (size_t g = 0; g < k; g++)
+        for (size_t i = 0; i < 2 * n; i++) {
+            double a = fabs(polygons[g][i]);
+            if (a > 0 && a < lo) lo = a;
+            if (a > hi) hi = a;
+        }
+    if (hi > 1e150 || lo < 1e-150) {
+        size_t used = strlen(r->message);
+        snprintf(r->message + used, sizeof r->message - used,
+                 " (the coordinates span magnitudes %.0e to %.0e; scale the input nearer to 1)",
+                 lo, hi);
+    }
+    return s;
+}
+
 static cm_status run(cm_result *r, const double *const *polygons, const size_t *counts,
                      size_t k, const cm_options *o)
 {
@@ -152,10 +178,10 @@ static cm_status run(cm_result *r, const double *const *polygons, const size_t *
     if (cancelled(o, 0.1, "triangulate polygons")) return cm_fail(r, CM_ERR_CANCELLED, "cancelled");
 
     s = build(r, polygons, k, n, clockwise, o);
-    if (s != CM_OK) return s;
+    if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     r->stats.seconds_build = cm_seconds_now() - t1;
     s = remesh_stage(r, n, o);
-    if (s != CM_OK) return s;
+    if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     if (clockwise) restore_input_order(&r->mesh, n);
     double t2 = cm_seconds_now();
     if (cancelled(o, 0.8, "check")) return cm_fail(r, CM_ERR_CANCELLED, "cancelled");
@@ -166,7 +192,7 @@ static cm_status run(cm_result *r, const double *const *polygons, const size_t *
     s = cm_halfedge_build_and_check(r, boundary);
     free(boundary);
     if (s == CM_ERR_NO_MEMORY) return cm_fail(r, s, "out of memory");
-    if (s != CM_OK) return s;
+    if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     r->stats.seconds_check = cm_seconds_now() - t2;
 
     r->quality = calloc(k, sizeof *r->quality);

@@ -77,5 +77,5 @@ def test_not_planar(octagon, star):
 def test_not_finite_3d(octagon, star):
     bad = lift(octagon)
     bad[2, 2] = np.inf
-    with pytest.raises(ValueError, match="vertex 2 has a non-finite coordinate"):
+    with pytest.raises(ValueError, match="vertex 2 has a coordinate that is not finite"):
         compatmesh.triangulate([bad, lift(star)])

@@ -90,7 +90,7 @@ PlaneFrame fit_plane(const double *xyz, std::size_t n, double relative_tolerance
   if (n == 0) return PlaneFrame();
   for (std::size_t i = 0; i < 3 * n; i++)
     if (!std::isfinite(xyz[i]))
-      throw PlaneError("vertex " + std::to_string(i / 3) + " has a non-finite coordinate", i / 3);
+      throw PlaneError("vertex " + std::to_string(i / 3) + " has a coordinate that is not finite", i / 3, true);
   int axis = shared_axis(xyz, n);
   if (axis >= 0) return coordinate_plane(xyz, n, axis, sign);
 

@@ -22,7 +22,7 @@ Boundary make_boundary(std::vector<double> xyz, std::vector<int> source_vertex,
     boundary.frame = fit_plane(xyz.data(), n, relative_tolerance, sign);
   } catch (const PlaneError &e) {
     long vertex = long(e.vertex());
-    throw Error(CM_ERR_ARGUMENT,
+    throw Error(e.not_finite() ? CM_ERR_NOT_FINITE : CM_ERR_ARGUMENT,
                 std::string(e.what()) + " (mesh vertex " + std::to_string(source_vertex[vertex]) + ")",
                 -1, vertex);
   }

@@ -46,12 +46,16 @@ enum class NormalSign {
 // What fit_plane throws; vertex is the offending point's index.
 class PlaneError : public std::invalid_argument {
  public:
-  PlaneError(const std::string &message, std::size_t vertex)
-      : std::invalid_argument(message), vertex_(vertex) {}
+  PlaneError(const std::string &message, std::size_t vertex, bool not_finite = false)
+      : std::invalid_argument(message), vertex_(vertex), not_finite_(not_finite) {}
   std::size_t vertex() const { return vertex_; }
+  // A NaN or infinite coordinate (the core's CM_ERR_NOT_FINITE), rather
+  // than points off the plane.
+  bool not_finite() const { return not_finite_; }
 
  private:
   std::size_t vertex_;
+  bool not_finite_;
 };
 
 // Fits the plane through a closed polygon by least squares.

@@ -1,0 +1,151 @@
+/* An exact check of a result from its public arrays only, independent of
+ * the core's own check: the fuzz harness, the soak test and the
+ * near-degenerate tests use it to catch a wrong answer reported as CM_OK.
+ *
+ *   rc_check(r, polygons, k, n, why, size) returns 1 when r is a valid
+ *   compatible triangulation of the k polygons of n vertices, else 0 with
+ *   the first violation written to why.
+ *
+ * What it checks, for every geometry: the n input vertices come back
+ * bit-identical and every vertex is finite; every triangle is strictly
+ * counter-clockwise (exact orientation, core/src/predicates.h); every
+ * directed edge is used once at most; the edges used by one triangle only
+ * are exactly the polygon's edges, counter-clockwise around it (the input's
+ * order, or its reverse for clockwise input); V - E + F = 1; and the
+ * triangle areas add up exactly (GMP rationals) to the polygon's area.
+ * A triangulated disk whose triangles are all positive and whose boundary
+ * runs once around a simple polygon covers it exactly once, so together
+ * these mean a valid triangulation of every polygon. */
+#ifndef CM_TEST_RESULT_CHECK_H
+#define CM_TEST_RESULT_CHECK_H
+
+#include <gmp.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "compatmesh/compatmesh.h"
+#include "predicates.h"
+
+static inline int rc_fail(char *why, size_t size, const char *format, ...)
+{
+    if (why && size) {
+        va_list args;
+        va_start(args, format);
+        vsnprintf(why, size, format, args);
+        va_end(args);
+    }
+    return 0;
+}
+
+/* Twice the signed area of triangle abc, added to sum exactly. */
+static inline void rc_add_area2(mpq_t sum, const double *a, const double *b, const double *c,
+                                mpq_t t0, mpq_t t1, mpq_t t2, mpq_t t3)
+{
+    mpq_set_d(t0, b[0]); mpq_set_d(t1, a[0]); mpq_sub(t0, t0, t1);     /* bx - ax */
+    mpq_set_d(t2, c[1]); mpq_set_d(t1, a[1]); mpq_sub(t2, t2, t1);     /* cy - ay */
+    mpq_mul(t0, t0, t2);
+    mpq_set_d(t2, b[1]); mpq_set_d(t1, a[1]); mpq_sub(t2, t2, t1);     /* by - ay */
+    mpq_set_d(t3, c[0]); mpq_set_d(t1, a[0]); mpq_sub(t3, t3, t1);     /* cx - ax */
+    mpq_mul(t2, t2, t3);
+    mpq_sub(t0, t0, t2);
+    mpq_add(sum, sum, t0);
+}
+
+/* Directed edge key for sorting: (from, to). */
+static inline int rc_edge_cmp(const void *a, const void *b)
+{
+    const int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+static inline int rc_area_matches(const double *xy, const int32_t *tri, size_t nt,
+                                  const double *poly, size_t n, int reversed)
+{
+    mpq_t tris, ring, t0, t1, t2, t3;
+    mpq_inits(tris, ring, t0, t1, t2, t3, NULL);
+    for (size_t t = 0; t < nt; t++)
+        rc_add_area2(tris, xy + 2 * tri[3 * t], xy + 2 * tri[3 * t + 1], xy + 2 * tri[3 * t + 2],
+                     t0, t1, t2, t3);
+    /* Fan from vertex 0: the shoelace sum of the polygon, exactly. */
+    for (size_t i = 1; i + 1 < n; i++)
+        rc_add_area2(ring, poly, poly + 2 * i, poly + 2 * (i + 1), t0, t1, t2, t3);
+    if (reversed) mpq_neg(ring, ring);
+    int equal = mpq_equal(tris, ring) != 0;
+    mpq_clears(tris, ring, t0, t1, t2, t3, NULL);
+    return equal;
+}
+
+static inline int rc_check(const cm_result *r, const double *const *polygons, size_t k, size_t n,
+                           char *why, size_t size)
+{
+    if (!r || cm_result_status(r) != CM_OK) return rc_fail(why, size, "not a successful result");
+    size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
+    const int32_t *tri = cm_result_triangles(r);
+    const cm_stats *stats = cm_result_stats(r);
+    if (cm_result_num_geometries(r) != k) return rc_fail(why, size, "%zu geometries", cm_result_num_geometries(r));
+    if (nv < n || !tri || nt == 0) return rc_fail(why, size, "%zu vertices, %zu triangles", nv, nt);
+    int reversed = stats->reversed_input;
+
+    /* Topology: directed edges once each, boundary = polygon edges. */
+    int64_t *edges = malloc(3 * nt * sizeof *edges);
+    if (!edges) return rc_fail(why, size, "out of memory");
+    for (size_t t = 0; t < nt; t++)
+        for (int j = 0; j < 3; j++) {
+            int32_t a = tri[3 * t + j], b = tri[3 * t + (j + 1) % 3];
+            if (a < 0 || b < 0 || (size_t)a >= nv || (size_t)b >= nv || a == b) {
+                free(edges);
+                return rc_fail(why, size, "triangle %zu has bad indices", t);
+            }
+            edges[3 * t + j] = (int64_t)a * (int64_t)nv + b;
+        }
+    qsort(edges, 3 * nt, sizeof *edges, rc_edge_cmp);
+    size_t undirected = 0, boundary = 0;
+    for (size_t i = 0; i < 3 * nt; i++) {
+        if (i > 0 && edges[i] == edges[i - 1]) {
+            free(edges);
+            return rc_fail(why, size, "a directed edge is used twice");
+        }
+        int64_t a = edges[i] / (int64_t)nv, b = edges[i] % (int64_t)nv;
+        int64_t twin = b * (int64_t)nv + a;
+        int paired = bsearch(&twin, edges, 3 * nt, sizeof *edges, rc_edge_cmp) != NULL;
+        if (paired) {
+            undirected += a < b;
+            continue;
+        }
+        undirected++;
+        boundary++;
+        /* A boundary edge must be a polygon edge, running counter-clockwise. */
+        int64_t from = reversed ? b : a, to = reversed ? a : b;
+        if (from >= (int64_t)n || to != (from + 1) % (int64_t)n) {
+            free(edges);
+            return rc_fail(why, size, "boundary edge %lld-%lld is not a polygon edge",
+                           (long long)a, (long long)b);
+        }
+    }
+    free(edges);
+    if (boundary != n) return rc_fail(why, size, "%zu boundary edges for %zu polygon edges", boundary, n);
+    if ((long)nv - (long)undirected + (long)nt != 1)
+        return rc_fail(why, size, "Euler characteristic %ld", (long)nv - (long)undirected + (long)nt);
+
+    /* Geometry, every polygon. */
+    for (size_t g = 0; g < k; g++) {
+        const double *xy = cm_result_vertices(r, g);
+        if (!xy) return rc_fail(why, size, "geometry %zu missing", g);
+        if (memcmp(xy, polygons[g], 2 * n * sizeof *xy) != 0)
+            return rc_fail(why, size, "geometry %zu: input vertices changed", g);
+        for (size_t v = 0; v < 2 * nv; v++)
+            if (!isfinite(xy[v])) return rc_fail(why, size, "geometry %zu: vertex %zu not finite", g, v / 2);
+        for (size_t t = 0; t < nt; t++)
+            if (cm_orient2d(xy + 2 * tri[3 * t], xy + 2 * tri[3 * t + 1], xy + 2 * tri[3 * t + 2]) <= 0)
+                return rc_fail(why, size, "geometry %zu: triangle %zu is not counter-clockwise", g, t);
+        if (!rc_area_matches(xy, tri, nt, polygons[g], n, reversed))
+            return rc_fail(why, size, "geometry %zu: triangle areas do not add up to the polygon's", g);
+    }
+    return 1;
+}
+
+#endif
