@@ -71,7 +71,11 @@ static long pair_edges(cm_result *r, const int32_t *boundary, int32_t *he_of_slo
         while (j < ns && e[j].lo == e[i].lo && e[j].hi == e[i].hi) j++;
         if (j - i == 2 && slot_from(m->tri, e[i].slot) == slot_to(m->tri, e[i + 1].slot)) interior++;
         else if (j - i == 1) on_boundary++;
-        else { free(e); return -2; } /* three triangles on an edge, or a fold */
+        else { /* three triangles on an edge, or a fold */
+            cm_fail_at(r, -1, e[i].lo, e[i].hi);
+            free(e);
+            return -2;
+        }
         i = j;
     }
     if (on_boundary != n || alloc_halfedges(r, 2 * (interior + on_boundary))) {
@@ -104,7 +108,10 @@ static long pair_edges(cm_result *r, const int32_t *boundary, int32_t *he_of_slo
     /* Boundary half-edges must run boundary[i+1] -> boundary[i]. */
     for (size_t i = 0; i < n; i++) {
         int32_t h = boundary_he[boundary[(i + 1) % n]];
-        if (h < 0 || r->he_to[h] != boundary[i]) return -2;
+        if (h < 0 || r->he_to[h] != boundary[i]) {
+            cm_fail_at(r, -1, boundary[i], boundary[(i + 1) % n]);
+            return -2;
+        }
     }
     return edge;
 }
@@ -125,7 +132,11 @@ cm_status cm_halfedge_build_and_check(cm_result *r, const int32_t *boundary)
     if (ne == -1) goto done;
     s = CM_ERR_INTERNAL;
     if (ne < 0) {
-        cm_fail(r, s, "check: the triangles do not form a disk bounded by the input polygon");
+        if (r->error_vertex >= 0)
+            cm_fail(r, s, "check: at edge %ld-%ld the triangles do not form a disk bounded by the input polygon",
+                    r->error_vertex, r->error_other);
+        else
+            cm_fail(r, s, "check: the triangles do not form a disk bounded by the input polygon");
         goto done;
     }
     size_t nh = r->nh;

@@ -41,6 +41,8 @@ cm_status cm_fail(cm_result *r, cm_status status, const char *fmt, ...)
     ;
 void cm_fail_at(cm_result *r, long polygon, long vertex, long other);
 void cm_result_clear_geometry(cm_result *r);
+/* Fills r->quality and the size stats of a checked result. */
+cm_status cm_result_measure(cm_result *r);
 
 /* input.c: checks the k polygons; sets *clockwise when all are clockwise. */
 cm_status cm_input_validate(const double *const *polygons, const size_t *counts,

@@ -63,6 +63,18 @@ void cm_result_clear_geometry(cm_result *r)
     r->nh = 0;
 }
 
+cm_status cm_result_measure(cm_result *r)
+{
+    size_t k = r->mesh.k;
+    r->quality = calloc(k, sizeof *r->quality);
+    if (!r->quality) return cm_fail(r, CM_ERR_NO_MEMORY, "out of memory");
+    for (size_t g = 0; g < k; g++) cm_mesh_quality(&r->mesh, g, &r->quality[g]);
+    r->stats.vertices = r->mesh.nv;
+    r->stats.steiner = r->mesh.nv - r->n;
+    r->stats.triangles = r->mesh.nt;
+    return CM_OK;
+}
+
 void cm_result_free(cm_result *r)
 {
     if (!r) return;

@@ -195,12 +195,8 @@ static cm_status run(cm_result *r, const double *const *polygons, const size_t *
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     r->stats.seconds_check = cm_seconds_now() - t2;
 
-    r->quality = calloc(k, sizeof *r->quality);
-    if (!r->quality) return cm_fail(r, CM_ERR_NO_MEMORY, "out of memory");
-    for (size_t g = 0; g < k; g++) cm_mesh_quality(&r->mesh, g, &r->quality[g]);
-    r->stats.vertices = r->mesh.nv;
-    r->stats.steiner = r->mesh.nv - n;
-    r->stats.triangles = r->mesh.nt;
+    s = cm_result_measure(r);
+    if (s != CM_OK) return s;
     if (cancelled(o, 1.0, "done")) return cm_fail(r, CM_ERR_CANCELLED, "cancelled");
     return CM_OK;
 }

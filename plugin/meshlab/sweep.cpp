@@ -3,6 +3,9 @@
 #include "float_check.h"
 #include "layer_boundary.h"
 
+#include <algorithm>
+#include <cstdio>
+
 namespace compatmesh_plugin {
 
 namespace {
@@ -40,11 +43,79 @@ void boundary_first(const std::vector<int> &loop, std::size_t nv, std::vector<in
 
 }  // namespace
 
-std::vector<double> section_at(const std::vector<double> &start, const std::vector<double> &end,
-                               double t)
+SectionMorph::SectionMorph(const std::vector<double> &xyz0, const std::vector<double> &xyz1,
+                           const std::vector<int32_t> &triangles, const std::vector<int> &boundary,
+                           const std::string &first_name, const std::string &second_name)
 {
-  std::vector<double> xyz(start.size());
-  for (std::size_t i = 0; i < start.size(); i++) xyz[i] = (1 - t) * start[i] + t * end[i];
+  const std::size_t nv = xyz0.size() / 3, n = boundary.size();
+  std::vector<int> position;
+  boundary_first(boundary, nv, order_, position);
+  std::vector<int32_t> reindexed(triangles.size());
+  for (std::size_t i = 0; i < triangles.size(); i++) reindexed[i] = position[triangles[i]];
+  // Each layer in 2D in its own plane; the normal follows the boundary loop
+  // so both layers' triangles get the same orientation in 2D.
+  std::vector<double> xy[2];
+  compatmesh::PlaneFrame *frames[2] = {&frame0_, &frame1_};
+  const std::vector<double> *layers[2] = {&xyz0, &xyz1};
+  const std::string *names[2] = {&first_name, &second_name};
+  for (int g = 0; g < 2; g++) {
+    std::vector<double> ordered;
+    for (int v : order_) ordered.insert(ordered.end(), &(*layers[g])[3 * v], &(*layers[g])[3 * v + 3]);
+    try {
+      *frames[g] = compatmesh::fit_plane(ordered.data(), n, compatmesh::kDefaultPlanarityTolerance,
+                                         compatmesh::NormalSign::FollowWinding);
+    } catch (const compatmesh::PlaneError &e) {
+      throw FilterError("layer '" + *names[g] + "': " + e.what());
+    }
+    xy[g] = compatmesh::to_plane(*frames[g], ordered.data(), nv);
+  }
+  const double *geometries[2] = {xy[0].data(), xy[1].data()};
+  cm_status s = cm_result_from_meshes(geometries, 2, n, nv, reindexed.data(), reindexed.size() / 3, &result_);
+  if (s != CM_OK) {
+    long g = -1;
+    cm_result_error_location(result_, &g, nullptr, nullptr);
+    std::string which = g == 0 ? " (layer '" + first_name + "')" : g == 1 ? " (layer '" + second_name + "')" : "";
+    std::string message = "layers '" + first_name + "' and '" + second_name +
+                          "' are not a compatible pair" + which + ": " + cm_result_message(result_) +
+                          " (vertex and triangle numbers count the boundary loop first)";
+    cm_result_free(result_);
+    throw FilterError(message);
+  }
+  // Intrinsic weights: still convex combinations (every section valid),
+  // but rotation-aware. On the regular 12-gon pair half a turn apart the
+  // smallest section angle is 21.4 degrees against 4.7 with interpolated
+  // mean value weights, whose stars shrink as they turn.
+  cm_morph_options options;
+  cm_morph_options_init(&options);
+  options.method = CM_MORPH_INTRINSIC;
+  s = cm_morph_create(result_, &options, &morph_);
+  if (s != CM_OK) {
+    std::string message = std::string("the morph between the layers failed: ") + cm_morph_message(morph_);
+    cm_morph_free(morph_);
+    cm_result_free(result_);
+    throw FilterError(message);
+  }
+}
+
+SectionMorph::~SectionMorph()
+{
+  cm_morph_free(morph_);
+  cm_result_free(result_);
+}
+
+std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_deg)
+{
+  const std::size_t nv = morph.order_.size();
+  std::vector<double> xy(2 * nv);
+  if (cm_morph_section(morph.morph_, t, xy.data(), nullptr, min_angle_deg) != CM_OK)
+    throw FilterError("the morph's section at t = " + std::to_string(t) +
+                      " is invalid: " + cm_morph_message(morph.morph_));
+  std::vector<double> xyz(3 * nv);
+  for (std::size_t j = 0; j < nv; j++) {
+    const std::array<double, 3> p = morph.frame0_.to_space(xy[2 * j], xy[2 * j + 1]);
+    const std::array<double, 3> q = morph.frame1_.to_space(xy[2 * j], xy[2 * j + 1]);
+    for (int c = 0; c < 3; c++) xyz[3 * morph.order_[j] + c] = (1 - t) * p[c] + t * q[c];
+  }
   return xyz;
 }
 
@@ -79,6 +150,8 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
   boundary_first(loop.source_vertex, nv, order, position);
   std::vector<int32_t> reindexed(g0.triangles.size());
   for (std::size_t i = 0; i < reindexed.size(); i++) reindexed[i] = position[g0.triangles[i]];
+  SectionMorph morph(g0.xyz, g1.xyz, g0.triangles, loop.source_vertex, first_name, second_name);
+  progress.report(0.1, "morph");
 
   // Sections keep the first layer's vertex quality (the Steiner flags).
   std::vector<float> quality;
@@ -93,9 +166,12 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
     levels.push_back(std::move(ring));
   };
   add_level(std::vector<float>(g0.xyz.begin(), g0.xyz.end()));
+  double smallest_angle = 180;
   for (int s = 1; s <= sections; s++) {
     const double t = double(s) / (sections + 1);
-    const std::vector<float> xyz = round_to_float(section_at(g0.xyz, g1.xyz, t));
+    double angle = 0;
+    const std::vector<float> xyz = round_to_float(section_at(morph, t, &angle));
+    smallest_angle = std::min(smallest_angle, angle);
     std::vector<double> ring;  // the boundary, for the plane of the section
     std::vector<float> ordered;
     for (int v : order) ordered.insert(ordered.end(), &xyz[3 * v], &xyz[3 * v + 3]);
@@ -121,7 +197,7 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
     layer.quality = quality;
     outcome.layers.push_back(std::move(layer));
     add_level(xyz);
-    progress.report(double(s) / sections, "sections", 0, 0.9);
+    progress.report(0.1 + 0.8 * double(s) / sections, "sections");
   }
   add_level(std::vector<float>(g1.xyz.begin(), g1.xyz.end()));
 
@@ -138,7 +214,10 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
     }
   outcome.layers.push_back(std::move(lateral));
   progress.report(1.0, "done");
-  outcome.log.push_back(std::to_string(sections) + " intermediate sections, each checked valid after "
+  char angle_text[32];
+  std::snprintf(angle_text, sizeof angle_text, "%.2f", smallest_angle);
+  outcome.log.push_back(std::to_string(sections) + " intermediate sections by convex-combination morph "
+                        "(smallest angle " + angle_text + " degrees in the plane), each checked valid after "
                         "float rounding; lateral surface of " +
                         std::to_string(2 * n * (levels.size() - 1)) + " triangles");
   return outcome;

@@ -1,7 +1,7 @@
 // "Compatible Sweep Between Two Boundaries": the worker behind the filter.
 // Takes two layers with one connectivity (the output of the pairing
-// filter), builds intermediate sections and the lateral surface through
-// their boundaries, and checks every section exactly after float rounding:
+// filter), builds intermediate sections by the core's convex-combination
+// morph and the lateral surface through their boundaries, and checks every section exactly after float rounding:
 // projected onto its best-fitting plane, every triangle keeps its
 // orientation and the boundary stays simple (so the section is an embedded
 // disk, also when the end planes are not parallel and sections bend).
@@ -12,6 +12,9 @@
 #include "layers.h"
 #include "progress.h"
 
+#include <compatmesh/compatmesh.h>
+#include <compatmesh/plane.hh>
+
 #include <common/ml_mesh_type.h>
 
 #include <string>
@@ -19,11 +22,42 @@
 
 namespace compatmesh_plugin {
 
-// The section at time t in [0, 1] between the two compatible geometries
-// (3 * vertices doubles each): the one place that decides how sections are
-// made. Linear interpolation of the vertices.
-std::vector<double> section_at(const std::vector<double> &start, const std::vector<double> &end,
-                               double t);
+// The morph between two compatible layers: each layer mapped to 2D in its
+// own plane frame (fit_plane), the pair made a core result
+// (cm_result_from_meshes, checked exactly) and morphed by convex
+// combinations with intrinsic weights (cm_morph_create, CM_MORPH_INTRINSIC),
+// so every 2D section is valid by construction, also for layers turned half
+// a turn against each other.
+class SectionMorph {
+ public:
+  // xyz0, xyz1: 3 * vertices doubles of the two layers; triangles: their
+  // common faces; boundary: the boundary loop (vertex indices, in order).
+  // Throws FilterError naming the layer, vertex or triangle at fault.
+  SectionMorph(const std::vector<double> &xyz0, const std::vector<double> &xyz1,
+               const std::vector<int32_t> &triangles, const std::vector<int> &boundary,
+               const std::string &first_name, const std::string &second_name);
+  ~SectionMorph();
+  SectionMorph(const SectionMorph &) = delete;
+  SectionMorph &operator=(const SectionMorph &) = delete;
+
+  friend std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_deg);
+
+ private:
+  cm_result *result_ = nullptr;
+  cm_morph *morph_ = nullptr;
+  compatmesh::PlaneFrame frame0_, frame1_;
+  std::vector<int> order_;  // morph vertex j is layer vertex order_[j]
+};
+
+// The section at time t in [0, 1] (3 * vertices doubles, layer vertex
+// order): the one place that decides how sections are made. The morph's 2D
+// section is lifted into both planes' frames and the two 3D points blended,
+// (1 - t) * frame0(p) + t * frame1(p): an affine image of the 2D section,
+// so the section is planar, in the first layer's plane at t = 0 and the
+// second's at t = 1 (for parallel planes: the plane at the blended height).
+// min_angle_deg (may be null) receives the 2D section's smallest angle.
+// Throws FilterError if the core reports an invalid section.
+std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_deg);
 
 struct SweepOutcome {
   std::vector<LayerData> layers;  // the sections, then the lateral surface

@@ -248,6 +248,28 @@ cm_status cm_check_geometry(const double *xy, size_t n, size_t num_vertices,
                             const int32_t *triangles, size_t num_triangles,
                             long *where, long *other);
 
+/* A result from a compatible triangulation built elsewhere (another
+ * program, a file), so that it can be morphed and swept. The input is
+ * validated exactly, as cm_triangulate validates its own output, and the
+ * result has the same half-edge arrays, stats and quality.
+ *   xy:            k >= 2 arrays of 2 * num_vertices doubles; in every
+ *                  geometry vertices 0..n-1 are the boundary polygon in
+ *                  order (the output order contract), the rest interior
+ *   triangles:     3 * num_triangles indices, one list for all geometries,
+ *                  counter-clockwise in every geometry, or clockwise in
+ *                  every geometry (then stored counter-clockwise, the
+ *                  vertex numbering unchanged, stats.reversed_input set)
+ *   result:        receives a new handle, also on failure (status and a
+ *                  message naming the geometry, triangle or vertex).
+ * Returns CM_ERR_ARGUMENT (NULL pointers, k < 2, n < 3, n > num_vertices,
+ * an index out of range, a mesh that is not a manifold disk bounded by
+ * vertices 0..n-1), CM_ERR_NOT_FINITE, CM_ERR_ZERO_AREA (a triangle flat
+ * or wrongly oriented in some geometry), CM_ERR_REPEATED_VERTEX,
+ * CM_ERR_SELF_INTERSECTION (boundary), CM_ERR_NO_MEMORY. */
+cm_status cm_result_from_meshes(const double *const *xy, size_t k, size_t n,
+                                size_t num_vertices, const int32_t *triangles,
+                                size_t num_triangles, cm_result **result);
+
 /* ---- Morphing and sweeping (paper sections 1 and 5) --------------------
  *
  * A morph carries the polygons of a result through valid intermediate
