@@ -106,13 +106,22 @@ static void mean_value_weights(cm_morph *m, size_t g)
     const double *xy = f->xy[g];
     double *lam = m->lambda[g];
     memset(lam, 0, m->start[m->nu] * sizeof *lam);
+    /* The weights do not change with scale, but their products overflow at
+     * 1e300 and underflow at 1e-300: edge vectors are scaled by the power
+     * of two (exact) that brings the largest coordinate near 1. */
+    double largest = 0;
+    for (size_t v = 0; v < 2 * f->nv; v++) largest = fmax(largest, fabs(xy[v]));
+    int exponent = 0;
+    frexp(largest, &exponent);
+    double scale = ldexp(1.0, -exponent);
     for (size_t t = 0; t < f->nt; t++)
         for (int c = 0; c < 3; c++) {
             int32_t v = f->tri[3 * t + c], a = f->tri[3 * t + (c + 1) % 3], b = f->tri[3 * t + (c + 2) % 3];
             int32_t row = m->unknown[v];
             if (row < 0) continue;
             const double *p = xy + 2 * (size_t)v, *pa = xy + 2 * (size_t)a, *pb = xy + 2 * (size_t)b;
-            double ux = pa[0] - p[0], uy = pa[1] - p[1], wx = pb[0] - p[0], wy = pb[1] - p[1];
+            double ux = scale * (pa[0] - p[0]), uy = scale * (pa[1] - p[1]);
+            double wx = scale * (pb[0] - p[0]), wy = scale * (pb[1] - p[1]);
             double lu = hypot(ux, uy), lw = hypot(wx, wy);
             double cross = ux * wy - uy * wx, dot = ux * wx + uy * wy;
             /* tan(a / 2) = sin a / (1 + cos a) = (1 - cos a) / sin a: the

@@ -1,5 +1,5 @@
 """The bad-input matrix (tests/bad_input/cases.txt) through
-`compatmesh triangulate`, each polygon an .xy file: exit 2 with one line
+`compatmesh triangulate`, `morph` and `sweep`, each polygon an .xy file: exit 2 with one line
 naming the file (and the line of the vertex the core located) and no output
 for the bad cases, exit 0 with every output file for the legal ones. Then
 what only the command line meets: truncated and unreadable inputs, and
@@ -22,17 +22,46 @@ def one_line(result):
     return result.stdout == "" and result.stderr.endswith("\n") and result.stderr.count("\n") == 1
 
 
+# Every command that starts from polygons, with what it writes on success.
+COMMANDS = {
+    "triangulate": (["--out-dir", "out"],
+                    lambda k: [f"p{g}.off" for g in range(k)] + ["report.json", "preview.svg"]),
+    "morph": (["--out-dir", "out", "--frames", "3"],
+              lambda k: [f"frame_{f:03d}.off" for f in range(3)] + ["report.json", "frames.svg"]),
+    "sweep": (["-o", "out/sweep.msh", "--sections", "3"], lambda k: ["sweep.msh"]),
+}
+
+
+# Legal input a command cannot take, with the one-line error (exit 1) it
+# gives: the morph's common enclosure is the same in every geometry, so a
+# polygon 1e600 times smaller than another sits in an annulus too thin for
+# double precision.
+LIMITS = {
+    ("huge and tiny in one call", "morph"): r"compatmesh: morph: mean value weight .* too flat",
+    ("huge and tiny in one call", "sweep"): r"compatmesh: sweep: morph: mean value weight .* too flat",
+}
+
+
+@pytest.mark.parametrize("command", sorted(COMMANDS))
 @pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
-def test_case(cm, tmp_path, case):
+def test_case(cm, tmp_path, case, command):
     names = []
     for g, polygon in enumerate(case.polygons):
         write_xy(tmp_path / f"p{g}.xy", polygon)
         names.append(f"p{g}.xy")
-    result = cm("triangulate", *names, "--out-dir", "out")
+    arguments, outputs = COMMANDS[command]
+    if command == "sweep":
+        (tmp_path / "out").mkdir()
+    result = cm(command, *names, *arguments)
+    if (case.name, command) in LIMITS:
+        assert result.returncode == 1 and one_line(result), result.stderr
+        assert re.match(LIMITS[case.name, command], result.stderr), result.stderr
+        assert leftovers(tmp_path) == [] and not os.listdir(tmp_path / "out") \
+            if command == "sweep" else not (tmp_path / "out").exists()
+        return
     if case.status == "ok":
         assert result.returncode == 0, result.stderr
-        assert sorted(os.listdir(tmp_path / "out")) == sorted(
-            [f"p{g}.off" for g in range(len(names))] + ["report.json", "preview.svg"])
+        assert sorted(os.listdir(tmp_path / "out")) == sorted(outputs(len(names)))
         return
     assert result.returncode == 2, (result.stdout, result.stderr)
     assert one_line(result), result.stderr
@@ -42,7 +71,10 @@ def test_case(cm, tmp_path, case):
         if case.vertex is not None and case.vertex >= 0:
             where += f":{case.vertex + 1}:"  # one vertex per line
         assert re.search(where, result.stderr), result.stderr
-    assert not (tmp_path / "out").exists()
+    if command == "sweep":
+        assert os.listdir(tmp_path / "out") == []
+    else:
+        assert not (tmp_path / "out").exists()
     assert leftovers(tmp_path) == []
 
 
