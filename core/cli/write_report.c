@@ -82,17 +82,23 @@ static void write_mesh_entry(FILE *file, const report_info *info, size_t g)
     fputs("}}", file);
 }
 
-int write_report(const char *path, const report_info *info, cli_error *error)
+/* The opening brace and the counts every report starts with. */
+static void write_head(FILE *file, const cm_stats *stats)
 {
-    FILE *file = output_open(path, error);
-    if (!file) return CLI_EXIT_INTERNAL;
-    const cm_stats *stats = cm_result_stats(info->result);
     fprintf(file, "{\n");
     fprintf(file, "  \"version\": \"%d.%d.%d\",\n", CM_VERSION_MAJOR, CM_VERSION_MINOR,
             CM_VERSION_PATCH);
     fprintf(file, "  \"n\": %zu,\n  \"k\": %zu,\n", stats->n, stats->k);
     fprintf(file, "  \"vertices\": %zu,\n  \"steiner\": %zu,\n  \"triangles\": %zu,\n",
             stats->vertices, stats->steiner, stats->triangles);
+}
+
+int write_report(const char *path, const report_info *info, cli_error *error)
+{
+    FILE *file = output_open(path, error);
+    if (!file) return CLI_EXIT_INTERNAL;
+    const cm_stats *stats = cm_result_stats(info->result);
+    write_head(file, stats);
     fprintf(file, "  \"valid\": true,\n");
     fputs("  \"method\": ", file);
     json_string(file, info->method);
@@ -118,12 +124,7 @@ int write_morph_report(const char *path, const morph_report_info *info, cli_erro
     FILE *file = output_open(path, error);
     if (!file) return CLI_EXIT_INTERNAL;
     const cm_stats *stats = cm_result_stats(info->result);
-    fprintf(file, "{\n");
-    fprintf(file, "  \"version\": \"%d.%d.%d\",\n", CM_VERSION_MAJOR, CM_VERSION_MINOR,
-            CM_VERSION_PATCH);
-    fprintf(file, "  \"n\": %zu,\n  \"k\": %zu,\n", stats->n, stats->k);
-    fprintf(file, "  \"vertices\": %zu,\n  \"steiner\": %zu,\n  \"triangles\": %zu,\n",
-            stats->vertices, stats->steiner, stats->triangles);
+    write_head(file, stats);
     fputs("  \"method\": ", file);
     json_string(file, info->method);
     fputs(",\n  \"morph\": ", file);
