@@ -5,7 +5,7 @@ usage: make_results.py RUN_DIR OUT.md
 RUN_DIR is what bench/run_bench.sh leaves: input/pairs.txt (the pairs, in
 order), status.tsv (pair, exit code, wall seconds), PAIR/report.json for
 every pair that succeeded, cgal.tsv (single-polygon meshing by CGAL, when
-built) and table1.md (the paper's Table 1, appended as it is).
+built), bound.tsv (correspondence_bound.py per pair) and table1.md (the paper's Table 1, appended as it is).
 """
 import datetime
 import json
@@ -75,6 +75,23 @@ def read_alone(run_dir):
                 name, _, angle = line.rstrip("\n").split("\t")
                 alone.setdefault(name, []).append(None if angle == "failed" else float(angle))
     return alone
+
+
+def read_bound(run_dir):
+    """{pair: (bound degrees, K)} from bound.tsv (correspondence_bound.py)."""
+    bound = {}
+    path = os.path.join(run_dir, "bound.tsv")
+    if os.path.exists(path):
+        with open(path) as f:
+            for line in f:
+                name, result = line.rstrip("\n").split("\t")
+                words = result.split()
+                bound[name] = (float(words[0]), float(words[1])) if len(words) == 3 else None
+    return bound
+
+
+def fmt_bound(entry):
+    return "%.1f (K %.3g)" % entry if entry else "not run"
 
 
 def fmt_cgal(entries):
@@ -156,13 +173,14 @@ def verdict(angle, c):
     return "aim" if angle >= aim else ("floor" if angle >= floor else "**below**")
 
 
-def result_row(name, report, c, cgal, alone):
+def result_row(name, report, c, cgal, alone, bound):
     worst = min(m["min_angle_deg"] for m in report["meshes"])
     alone_text = " / ".join(fmt_angle(a) if a is not None else "failed" for a in alone)
-    return "| %s | %d | %d | %s | %d | %d | %d | %s | %s | %s | %s | %.3g | %s |" % (
-        name, report["k"], report["n"], fmt_angle(c), report.get("steiner_before_remesh", 0),
-        report["steiner"], report["triangles"], fmt_angles(report), verdict(worst, c),
-        alone_text, fmt_cgal(cgal.get(name)), report["seconds"]["total"], report["method"])
+    return "| %s | %d | %d | %s | %s | %d | %d | %d | %s | %s | %s | %s | %.3g | %s |" % (
+        name, report["k"], report["n"], fmt_angle(c), fmt_bound(bound),
+        report.get("steiner_before_remesh", 0), report["steiner"], report["triangles"],
+        fmt_angles(report), verdict(worst, c), alone_text, fmt_cgal(cgal.get(name)),
+        report["seconds"]["total"], report["method"])
 
 
 def count_vertices(path):
@@ -178,7 +196,7 @@ def failure_row(run_dir, name, files, status):
     why = "not run" if code is None else (
         "timed out" if code == 124 else "exit %d" % code)
     n = count_vertices(os.path.join(run_dir, "input", files[0])) if files else ""
-    return "| %s | %d | %s | | | | | **FAILED** (%s) | | | | %.3g | |" % (
+    return "| %s | %d | %s | | | | | | **FAILED** (%s) | | | | %.3g | |" % (
         name, len(files), n, why, wall)
 
 
@@ -191,7 +209,7 @@ def run_date(run_dir):
         datetime.timezone.utc)
 
 
-def header(run_dir, pairs, failures, version, verdicts, alone_aim):
+def header(run_dir, pairs, failures, version, verdicts, alone_aim, beyond):
     now = run_date(run_dir)
     revision = source_revision()
     if revision:
@@ -222,8 +240,19 @@ def header(run_dir, pairs, failures, version, verdicts, alone_aim):
         "of an L), every compatible mesh is stretched there, however fine; on "
         "pairs of similar shape (U and S, 2 and Z) the pair comes within a few "
         "degrees of the polygons alone." % alone_aim,
+        "- No compatible triangulation of the pair, with any number of Steiner "
+        "vertices, can have a smallest angle above its bound "
+        "(`bench/correspondence_bound.py`: the correspondence forces a modulus "
+        "distortion K somewhere, and triangles with angles of at least alpha in "
+        "both polygons allow at most D(alpha)^2). The bound is below the aim on "
+        "%d of %d pairs: %s. On those the aim cannot be reached; on the other "
+        "%d pairs compatmesh reaches it on %d." % (
+            len(beyond[0]), len(verdicts), ", ".join(beyond[0]) or "none",
+            len(verdicts) - len(beyond[0]), beyond[1]),
         "",
         "c: smallest input corner angle over the pair's polygons (degrees); "
+        "bound: the correspondence bound (degrees) and the modulus distortion K "
+        "it comes from; "
         "Steiner before: the first compatible triangulation's; minimum angles "
         "are per mesh, in the order of the inputs; reaches: the best of aim, "
         "floor, below that the smallest angle reaches; alone: the smallest "
@@ -235,9 +264,9 @@ def header(run_dir, pairs, failures, version, verdicts, alone_aim):
         "`seconds.total` of report.json (validation, construction, "
         "remeshing and the exact check).",
         "",
-        "| pair | k | n | c | Steiner before | Steiner | triangles "
+        "| pair | k | n | c | bound | Steiner before | Steiner | triangles "
         "| min angle per mesh (deg) | reaches | alone (deg) | CGAL alone | time (s) | method |",
-        "|---|---:|---:|---:|---:|---:|---:|---|---|---|---|---:|---|",
+        "|---|---:|---:|---:|---:|---:|---:|---:|---|---|---|---|---:|---|",
     ]
     return lines
 
@@ -249,8 +278,9 @@ def main(argv):
     run_dir, out = argv[1], argv[2]
     pairs = read_pairs(run_dir)
     status = read_status(run_dir)
-    cgal, alone = read_cgal(run_dir), read_alone(run_dir)
+    cgal, alone, bound = read_cgal(run_dir), read_alone(run_dir), read_bound(run_dir)
     rows, failures, version, verdicts = [], [], "?", []
+    beyond = [[], 0]  # pairs whose bound is below the aim; aims reached elsewhere
     alone_aim = [0, 0]
     for name, files in pairs:
         report = read_report(run_dir, name)
@@ -259,9 +289,13 @@ def main(argv):
             version = report.get("version", version)
             c = min(smallest_corner(read_xy(os.path.join(run_dir, "input", f)))
                     for f in files)
-            rows.append(result_row(name, report, c, cgal, alone.get(name, [])))
+            rows.append(result_row(name, report, c, cgal, alone.get(name, []), bound.get(name)))
             worst = min(m["min_angle_deg"] for m in report["meshes"])
             verdicts.append(verdict(worst, c))
+            if bound.get(name) and bound[name][0] < quality_aims(c)[0]:
+                beyond[0].append(name)
+            else:
+                beyond[1] += verdicts[-1] == "aim"
             angles = alone.get(name, [])
             if angles and all(a is not None and verdict(a, c) == "aim" for a in angles):
                 alone_aim[0] += 1
@@ -269,7 +303,7 @@ def main(argv):
         else:
             failures.append(name)
             rows.append(failure_row(run_dir, name, files, status))
-    lines = header(run_dir, pairs, failures, version, verdicts, tuple(alone_aim)) + rows
+    lines = header(run_dir, pairs, failures, version, verdicts, tuple(alone_aim), beyond) + rows
     if failures:
         lines += ["", "**Failed pairs:** " + ", ".join(failures)]
     table1 = os.path.join(run_dir, "table1.md")

@@ -73,6 +73,17 @@ else
     echo "bench: $cgal not built (CGAL missing): no comparison with single-polygon meshing" >&2
 fi
 
+# The correspondence bound: the largest smallest angle any compatible
+# triangulation of the pair can have (bound.tsv: pair, bound line).
+while read -r name files; do
+    [ -n "$name" ] || continue
+    set --
+    for f in $files; do set -- "$@" "$input/$f"; done
+    line=$(timeout "$limit" "$python" "$src/bench/correspondence_bound.py" "$cli" "$@" </dev/null 2>/dev/null) ||
+        line="failed"
+    printf '%s\t%s\n' "$name" "$line" >>"$bench/bound.tsv"
+done <"$input/pairs.txt"
+
 # Each polygon alone (paired with itself): what remeshing reaches without
 # the correspondence to honour (alone.tsv: pair, file, smallest angle).
 while read -r name files; do
