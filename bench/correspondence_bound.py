@@ -44,20 +44,12 @@ import numpy as np
 import scipy.sparse
 import scipy.sparse.linalg
 
+from make_results import read_xy
+
 # compatmesh's mesh of each polygon is split into four until it has at
 # least this many triangles.
 MIN_TRIANGLES = 4000
 COARSE_MARKS = 10
-
-
-def read_xy(path):
-    pts = []
-    with open(path) as f:
-        for line in f:
-            line = line.split("#")[0].replace(",", " ").split()
-            if line:
-                pts.append((float(line[0]), float(line[1])))
-    return np.array(pts)
 
 
 class Polygon:

@@ -27,16 +27,19 @@ def read_pairs(run_dir):
     return pairs
 
 
+def tsv_rows(run_dir, name):
+    """The tab-separated fields of each line of RUN_DIR/name (none if the
+    file is missing: that part of the bench did not run)."""
+    path = os.path.join(run_dir, name)
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return [line.rstrip("\n").split("\t") for line in f]
+
+
 def read_status(run_dir):
     """{name: (exit code, wall seconds)}."""
-    status = {}
-    path = os.path.join(run_dir, "status.tsv")
-    if os.path.exists(path):
-        with open(path) as f:
-            for line in f:
-                name, code, wall = line.rstrip("\n").split("\t")
-                status[name] = (int(code), float(wall))
-    return status
+    return {name: (int(code), float(wall)) for name, code, wall in tsv_rows(run_dir, "status.tsv")}
 
 
 def read_report(run_dir, name):
@@ -52,41 +55,29 @@ def read_cgal(run_dir):
     """{pair: [(steiner, boundary steiner, min angle) per polygon]} from
     cgal.tsv, when the bench could run CGAL."""
     cgal = {}
-    path = os.path.join(run_dir, "cgal.tsv")
-    if os.path.exists(path):
-        with open(path) as f:
-            for line in f:
-                name, _, result = line.rstrip("\n").split("\t")
-                words = result.split()
-                value = None
-                if len(words) == 8:
-                    value = (int(words[1]), int(words[3]), float(words[7]))
-                cgal.setdefault(name, []).append(value)
+    for name, _, result in tsv_rows(run_dir, "cgal.tsv"):
+        words = result.split()
+        value = None
+        if len(words) == 8:
+            value = (int(words[1]), int(words[3]), float(words[7]))
+        cgal.setdefault(name, []).append(value)
     return cgal
 
 
 def read_alone(run_dir):
     """{pair: [smallest angle of each polygon remeshed alone, or None]}."""
     alone = {}
-    path = os.path.join(run_dir, "alone.tsv")
-    if os.path.exists(path):
-        with open(path) as f:
-            for line in f:
-                name, _, angle = line.rstrip("\n").split("\t")
-                alone.setdefault(name, []).append(None if angle == "failed" else float(angle))
+    for name, _, angle in tsv_rows(run_dir, "alone.tsv"):
+        alone.setdefault(name, []).append(None if angle == "failed" else float(angle))
     return alone
 
 
 def read_bound(run_dir):
     """{pair: (bound degrees, K)} from bound.tsv (correspondence_bound.py)."""
     bound = {}
-    path = os.path.join(run_dir, "bound.tsv")
-    if os.path.exists(path):
-        with open(path) as f:
-            for line in f:
-                name, result = line.rstrip("\n").split("\t")
-                words = result.split()
-                bound[name] = (float(words[0]), float(words[1])) if len(words) == 3 else None
+    for name, result in tsv_rows(run_dir, "bound.tsv"):
+        words = result.split()
+        bound[name] = (float(words[0]), float(words[1])) if len(words) == 3 else None
     return bound
 
 
