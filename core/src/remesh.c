@@ -8,6 +8,7 @@
  *       smoothing around it
  *       every area_every rounds: area equalisation; flips + smoothing
  *   flips + smoothing everywhere
+ *   while a move gains: forced moves around the worst triangles
  *   collapse Steiner vertices where no angle drops below the target
  *   flips + smoothing everywhere
  *
@@ -22,8 +23,12 @@
  * changed went down, so refinement never makes the mesh worse; an edge
  * whose split was undone twice is not tried again. Refinement stops at the
  * target, the Steiner budget, the round cap, or when the smallest angle
- * has stopped rising: what is left then is beyond local repair (typically
- * a correspondence that forces a strong distortion somewhere). */
+ * has stopped rising. The greedy operations then sit in a local optimum;
+ * forced moves step back from it (a flip the angle rule refuses, the
+ * removal of a Steiner vertex, a split, each followed by the repair) and
+ * are kept only when the triangles they changed end up better. What is
+ * left after that is beyond local repair (typically a correspondence that
+ * forces a strong distortion: bench/correspondence_bound.py measures it). */
 #include <math.h>
 #include <stdlib.h>
 
@@ -41,6 +46,8 @@
 /* Refinement stops when the smallest angle has not risen by CM_PROGRESS
  * (radians, about 0.06 degrees) over stall_limit() splits. */
 #define CM_PROGRESS 1e-3
+/* The short triangles a round of forced moves looks at. */
+#define CM_STEP_OUT_WORST 8
 
 typedef struct tabu_set { /* vertex pairs -> undone splits */
     uint64_t *keys;       /* 0: empty slot */
@@ -207,21 +214,23 @@ static int queue_touched(remesher *x, cm_work *touched)
 /* ---- transactions ----------------------------------------------------------- */
 
 /* Keeps the open transaction if the smallest angle of the triangles it
- * changed did not drop, else undoes it. Returns 1 kept, 0 undone, -1 out
- * of memory. */
-static int settle(remesher *x)
+ * changed rose by at least `gain` (radians; 0: did not drop), else undoes
+ * it. Returns 1 kept, 0 undone, -1 out of memory. */
+static int settle_by(remesher *x, double gain)
 {
     double before, after;
     if (cm_kmesh_tx_region(&x->km, &before, &after)) {
         cm_kmesh_tx_commit(&x->km);
         return -1;
     }
-    if (after >= before) {
+    if (after >= before + gain) {
         cm_kmesh_tx_commit(&x->km);
         return 1;
     }
     return cm_kmesh_tx_rollback(&x->km) ? -1 : 0;
 }
+
+static int settle(remesher *x) { return settle_by(x, 0.0); }
 
 static void forget_edge(cm_kmesh *km, int32_t c)
 {
@@ -360,6 +369,84 @@ oom:
     return -1;
 }
 
+/* ---- stepping out of local optima ------------------------------------------ */
+
+enum forced_move { FORCED_FLIP, FORCED_COLLAPSE, FORCED_SPLIT, FORCED_MOVES };
+
+/* A move the greedy rules refuse, on the edge opposite c (flip, split) or
+ * on its corner vertex (collapse onto the next), then the repair, as one
+ * transaction kept only if the smallest angle of the triangles it
+ * changed rose. Returns 1 kept, 0 undone or impossible, -1 out of memory. */
+static int try_forced(remesher *x, enum forced_move kind, int32_t c)
+{
+    cm_kmesh *km = &x->km;
+    if (km->tri[c] < 0 || (kind != FORCED_COLLAPSE && km->opp[c] < 0)) return 0;
+    if (kind == FORCED_COLLAPSE && cm_kmesh_is_boundary(km, km->tri[c])) return 0;
+    int32_t around[5] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)],
+                         km->opp[c] >= 0 ? km->tri[km->opp[c]] : -1, -1};
+    if (cm_kmesh_tx_begin(km)) return -1;
+    int done = 0;
+    if (kind == FORCED_FLIP) {
+        done = cm_flip_if_valid(km, c);
+    } else if (kind == FORCED_COLLAPSE) {
+        done = cm_collapse_try(km, c, &x->star);
+    } else {
+        int32_t m = cm_refine_split(km, c);
+        done = m >= 0 ? 1 : m;
+        around[4] = m;
+    }
+    if (done <= 0) {
+        cm_kmesh_tx_commit(km); /* nothing changed */
+        return done;
+    }
+    for (int i = 0; i < 5; i++)
+        if (around[i] >= 0 && km->vc[around[i]] >= 0 && queue_around(x, around[i]))
+            return cm_kmesh_tx_commit(km), -1;
+    if (improve(x, CM_IMPROVE_SWEEPS)) return cm_kmesh_tx_commit(km), -1;
+    return settle_by(x, CM_PROGRESS);
+}
+
+/* The corners of triangle t and of its neighbours (up to 12). */
+static int corners_near(const cm_kmesh *km, int32_t t, int32_t *out)
+{
+    int m = 0;
+    for (int32_t c = 3 * t; c < 3 * t + 3; c++) out[m++] = c;
+    for (int32_t c = 3 * t; c < 3 * t + 3; c++) {
+        int32_t o = km->opp[c];
+        if (o < 0) continue;
+        for (int32_t d = 3 * (o / 3); d < 3 * (o / 3) + 3; d++) out[m++] = d;
+    }
+    return m;
+}
+
+/* Forced moves around the worst short triangles, the first that gains
+ * kept, until none gains, the rounds run out or (splits) the budget does.
+ * Returns 0 or -1 out of memory. */
+static int step_out(remesher *x, size_t n)
+{
+    cm_kmesh *km = &x->km;
+    int32_t worst[CM_STEP_OUT_WORST], work[2 * CM_STEP_OUT_WORST], near[12];
+    long budget = budget_of(x->o, n);
+    for (long round = 0; round < stall_limit(x) && cm_kmesh_min_slack(km) < 0; round++) {
+        int32_t nw = cm_heap_smallest(&km->tq, CM_STEP_OUT_WORST, 0.0, worst, work);
+        int gained = 0;
+        for (int32_t i = 0; i < nw && !gained; i++) {
+            if (!cm_kmesh_tri_live(km, worst[i])) continue;
+            int m = corners_near(km, worst[i], near);
+            for (int kind = 0; kind < FORCED_MOVES && !gained; kind++) {
+                if (kind == FORCED_SPLIT && km->live_v - km->n >= budget) continue;
+                for (int j = 0; j < m && !gained; j++) {
+                    int s = try_forced(x, (enum forced_move)kind, near[j]);
+                    if (s < 0) return -1;
+                    gained = s;
+                }
+            }
+        }
+        if (!gained) break;
+    }
+    return 0;
+}
+
 /* ---- cleanup and coarsening ------------------------------------------------- */
 
 /* Removes Steiner vertices with collapses that pass `threshold`, then
@@ -421,7 +508,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, cm_remesh_repo
     int rs = refine(&x, n, rep);
     if (rs == -1) goto oom;
     if (rs == -2) goto cancel;
-    if (improve_everywhere(&x)) goto oom;
+    if (improve_everywhere(&x) || step_out(&x, n)) goto oom;
     long late = coarsen(&x, x.target);
     if (late < 0 || improve_everywhere(&x)) goto oom;
     rep->collapses += late;

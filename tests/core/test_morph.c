@@ -3,9 +3,9 @@
  * exact predicates), the ends are the inputs bit for bit, the enclosed mesh
  * is a valid compatible triangulation with a common convex boundary, the
  * linear mode reports the inversions of a twisted pair, and bad arguments
- * give messages. Each fixture states the smallest angle it expects per
- * frame: the smaller of the two end geometries' minimum angles minus a
- * measured slack (convex-combination morphs do not optimise angles). */
+ * give messages. Each fixture states the smallest angle it expects in
+ * every frame, a measured floor (convex-combination morphs do not
+ * optimise angles). */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -22,19 +22,22 @@
 typedef struct expectation {
     fixture_kind kind;
     cm_morph_method method;
-    double slack_deg; /* frame min angle >= min(end min angles) - slack */
+    double floor_deg; /* every frame's smallest angle at least this */
 } expectation;
 
-/* Measured at N = 60 (smallest frame angle; end angles twisted 7.73 and
- * 4.96, spiral 8.59 and 8.47, glyph 6.62 and 7.32, three 11.39 and 6.41):
- * weights interpolated: twisted 4.02, spiral 0.92, glyph 3.25, three
- * 1.01; intrinsic: twisted 4.96 (the end itself; 5.91 inside), spiral
- * 3.79, glyph 3.03, three 3.42. Slack rounded up by about half a degree. */
+/* Measured at N = 60, smallest angle over the frames, ends included
+ * (twisted 7.73 and 4.96, spiral 9.19 and 9.44, glyph 7.39 and 7.85, three
+ * 11.39 and 6.41): weights interpolated: twisted 4.96, spiral 0.91, glyph
+ * 3.18, three 1.01; intrinsic: twisted 4.96, spiral 3.80, glyph 2.99,
+ * three 3.42. The floors sit 0.1 to 0.3 degrees below, and below what the
+ * ends' remeshing gave before it stepped out of local optima (twisted
+ * 4.02 interpolated). The frames' angles depend on the ends' meshes only
+ * loosely: a better end does not make a better spiral frame. */
 static const expectation fixtures[] = {
-    {FIX_TWISTED, CM_MORPH_CONVEX, 1.5},    {FIX_SPIRAL, CM_MORPH_CONVEX, 8.0},
-    {FIX_GLYPH, CM_MORPH_CONVEX, 4.0},      {FIX_THREE, CM_MORPH_CONVEX, 6.0},
-    {FIX_TWISTED, CM_MORPH_INTRINSIC, 0.5}, {FIX_SPIRAL, CM_MORPH_INTRINSIC, 5.2},
-    {FIX_GLYPH, CM_MORPH_INTRINSIC, 4.1},   {FIX_THREE, CM_MORPH_INTRINSIC, 3.5},
+    {FIX_TWISTED, CM_MORPH_CONVEX, 3.8},    {FIX_SPIRAL, CM_MORPH_CONVEX, 0.85},
+    {FIX_GLYPH, CM_MORPH_CONVEX, 3.0},      {FIX_THREE, CM_MORPH_CONVEX, 0.9},
+    {FIX_TWISTED, CM_MORPH_INTRINSIC, 4.7}, {FIX_SPIRAL, CM_MORPH_INTRINSIC, 3.5},
+    {FIX_GLYPH, CM_MORPH_INTRINSIC, 2.8},   {FIX_THREE, CM_MORPH_INTRINSIC, 3.2},
 };
 
 static size_t exact_inverted(const cm_result *r, const double *xy)
@@ -54,10 +57,7 @@ static void test_frames(const expectation *x)
     CHECK_MSG(r != NULL, "%s: triangulation", name);
     if (!r) return;
     size_t k = cm_result_num_geometries(r), nv = cm_result_num_vertices(r);
-    cm_quality q0, q1;
-    cm_result_quality(r, 0, &q0);
-    cm_result_quality(r, k - 1, &q1);
-    double bound = fmin(q0.min_angle_deg, q1.min_angle_deg) - x->slack_deg;
+    double bound = x->floor_deg;
     cm_morph *m = NULL;
     cm_morph_options o;
     cm_morph_options_init(&o);
