@@ -391,8 +391,8 @@ static int try_forced(remesher *x, enum forced_move kind, int32_t c)
     } else if (kind == FORCED_COLLAPSE) {
         done = cm_collapse_try(km, c, &x->star);
     } else {
-        int32_t m = cm_refine_split(km, c);
-        done = m >= 0 ? 1 : m;
+        int32_t m = cm_refine_split(km, c); /* -2: the midpoint does not fit */
+        done = m >= 0 ? 1 : m == -2 ? 0 : -1;
         around[4] = m;
     }
     if (done <= 0) {
