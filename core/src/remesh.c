@@ -420,14 +420,19 @@ static int corners_near(const cm_kmesh *km, int32_t t, int32_t *out)
 }
 
 /* Forced moves around the worst short triangles, the first that gains
- * kept, until none gains, the rounds run out or (splits) the budget does.
- * Returns 0 or -1 out of memory. */
+ * kept, until none gains, stall_limit() rounds have run or (splits) the
+ * budget is spent. Returns 0, -1 out of memory, -2 cancelled. */
 static int step_out(remesher *x, size_t n)
 {
     cm_kmesh *km = &x->km;
     int32_t worst[CM_STEP_OUT_WORST], work[2 * CM_STEP_OUT_WORST], near[12];
     long budget = budget_of(x->o, n);
+    double last_report = cm_seconds_now();
     for (long round = 0; round < stall_limit(x) && cm_kmesh_min_slack(km) < 0; round++) {
+        if (cm_seconds_now() - last_report > 0.2) {
+            last_report = cm_seconds_now();
+            if (cancelled(x->o, 0.8)) return -2; /* refinement ended at 0.8 */
+        }
         int32_t nw = cm_heap_smallest(&km->tq, CM_STEP_OUT_WORST, 0.0, worst, work);
         int gained = 0;
         for (int32_t i = 0; i < nw && !gained; i++) {
@@ -508,7 +513,10 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, cm_remesh_repo
     int rs = refine(&x, n, rep);
     if (rs == -1) goto oom;
     if (rs == -2) goto cancel;
-    if (improve_everywhere(&x) || step_out(&x, n)) goto oom;
+    if (improve_everywhere(&x)) goto oom;
+    rs = step_out(&x, n);
+    if (rs == -1) goto oom;
+    if (rs == -2) goto cancel;
     long late = coarsen(&x, x.target);
     if (late < 0 || improve_everywhere(&x)) goto oom;
     rep->collapses += late;
