@@ -49,6 +49,7 @@ from make_results import read_xy
 # compatmesh's mesh of each polygon is split into four until it has at
 # least this many triangles.
 MIN_TRIANGLES = 4000
+# The coarse search tries every quadruple of this many evenly spaced vertices.
 COARSE_MARKS = 10
 
 
@@ -174,6 +175,9 @@ def distortion(polys, q):
 
 
 def best_quadruple(polys):
+    """The marked vertices (a < b < c < d) whose modulus differs most
+    between the polygons: the best of a coarse grid, then moved one mark at
+    a time by halving steps while the ratio grows."""
     n = polys[0].n
     marks = sorted({round(i * n / COARSE_MARKS) % n for i in range(COARSE_MARKS)})
     best, best_q = 0.0, None
