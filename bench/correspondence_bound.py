@@ -21,8 +21,9 @@ M(Q) <= K M(f(Q)). Any marked quadruple whose moduli in A and B differ by
 a factor r > D(alpha)^2 thus rules out alpha.
 
 The moduli are computed by linear finite elements (on compatmesh's mesh
-of each polygon alone, refined; scipy solves): M(Q) is the Dirichlet energy of the function equal
-to 0 on the boundary arc a..b, 1 on c..d, free elsewhere. The finite
+of each polygon alone, refined; scipy solves): M(Q) is the Dirichlet
+energy of the function equal to 0 on the boundary arc a..b, 1 on c..d,
+free elsewhere. The finite
 element energy is at least the true one, and the energy of the conjugate
 problem (0 on b..c, 1 on d..a) is 1/M(Q), so 1/(its finite element
 energy) is at most M(Q): the ratio reported uses a lower bound over an
