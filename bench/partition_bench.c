@@ -21,11 +21,12 @@
 #include <string.h>
 
 #include "compatmesh/compatmesh.h"
-#include "internal.h"
-#include "partition.h"
+#include "api/result.h"
+#include "geom/polytri.h"
+#include "construct/partition.h"
 #include "random_polygons.h"
-#include "steinerfree.h"
-#include "visibility.h"
+#include "construct/steinerfree.h"
+#include "geom/visibility.h"
 
 #define MAX_K 3
 #define TARGET_N 160
@@ -231,7 +232,7 @@ static void inner_stages(const pair *p, cm_partition_stats *st)
         ok = tris[g] && cm_polygon_triangulate(p->xy[g], idx, p->n, tris[g]) == 0;
     }
     if (ok) cm_partition((const double *const *)p->xy, (const int32_t *const *)tris, (size_t)p->k, (size_t)p->n, NULL,
-                         &r->mesh, st, r);
+                         &r->mesh, st, &r->error);
     for (int g = 0; g < p->k; g++) free(tris[g]);
     free(idx);
     cm_result_free(r);

@@ -13,7 +13,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "api/quality.h"
 #include "random_mesh.h"
+#include "remesh/areaeq.h"
+#include "remesh/smooth.h"
 
 #define SWEEPS 100
 
@@ -51,8 +54,8 @@ static int measure(const cm_mesh *fixture, size_t n, const method *m, cm_quality
     if (cm_kmesh_build(&km, fixture, n) != CM_OK) return -1;
     int status = 0;
     for (int sweep = 0; sweep < SWEEPS && m->kind != -1 && status == 0; sweep++) {
-        long moves = m->kind == -2 ? cm_areaeq_sweep(&km, NULL)
-                                   : cm_smooth_sweep(&km, (cm_smoothing)m->kind, m->smart);
+        long moves = m->kind == -2 ? cm_areaeq_pass(&km, NULL)
+                                   : cm_smooth_pass(&km, (cm_smoothing)m->kind, m->smart);
         if (moves < 0) status = -1;
         if (moves == 0) break;
     }

@@ -15,11 +15,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "internal.h"
-#include "kmesh.h"
-#include "predicates.h"
+#include "base/mesh.h"
+#include "geom/polytri.h"
+#include "remesh/kmesh.h"
+#include "geom/predicates.h"
 #include "random_polygons.h"
-#include "remesh.h"
+#include "remesh/flip.h"
+#include "remesh/remesh.h"
 
 static inline double rm_area2(const double *a, const double *b, const double *c)
 {

@@ -28,7 +28,7 @@
 #include <string.h>
 
 #include "compatmesh/compatmesh.h"
-#include "predicates.h"
+#include "geom/predicates.h"
 
 static inline int rc_fail(char *why, size_t size, const char *format, ...)
 {

@@ -10,12 +10,12 @@
 #include <string.h>
 
 #include "check.h"
-#include "internal.h"
-#include "linkpath.h"
-#include "predicates.h"
+#include "geom/polytri.h"
+#include "geom/linkpath.h"
+#include "geom/predicates.h"
 #include "random_polygons.h"
-#include "visibility.h"
-#include "xpoint.h"
+#include "geom/visibility.h"
+#include "geom/xpoint.h"
 
 /* ---- helpers -------------------------------------------------------------- */
 

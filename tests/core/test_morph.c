@@ -12,9 +12,9 @@
 #include <string.h>
 
 #include "check.h"
-#include "enclosure.h"
+#include "morph/enclosure.h"
 #include "morph_fixtures.h"
-#include "predicates.h"
+#include "geom/predicates.h"
 
 #define N 60
 #define FRAMES 11
@@ -114,9 +114,10 @@ static void test_enclosure(fixture_kind kind)
     }
     cm_mesh full;
     unsigned char *boundary = NULL;
-    char msg[512] = "";
-    cm_status s = cm_enclosure_build(r, NULL, NULL, &full, &boundary, msg, sizeof msg);
-    CHECK_MSG(s == CM_OK, "%s: %s", fixture_name(kind), msg);
+    cm_error err;
+    cm_error_init(&err);
+    cm_status s = cm_enclosure_build(r, NULL, &full, &boundary, &err);
+    CHECK_MSG(s == CM_OK, "%s: %s", fixture_name(kind), err.message);
     if (s == CM_OK) {
         size_t nv = cm_result_num_vertices(r), bad = 0, ne = 0;
         for (size_t g = 0; g < full.k; g++) {

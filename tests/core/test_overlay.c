@@ -7,7 +7,7 @@
 
 #include "check.h"
 #include "compatmesh/compatmesh.h"
-#include "predicates.h"
+#include "geom/predicates.h"
 #include "random_polygons.h"
 
 /* Independent check from the public API: contract and validity. */

@@ -8,11 +8,13 @@
 
 #include "check.h"
 #include "compatmesh/compatmesh.h"
-#include "internal.h"
-#include "partition.h"
-#include "predicates.h"
+#include "api/halfedge.h"
+#include "api/result.h"
+#include "geom/polytri.h"
+#include "construct/partition.h"
+#include "geom/predicates.h"
 #include "random_polygons.h"
-#include "visibility.h"
+#include "geom/visibility.h"
 
 /* Independent check from the public API: contract and validity. */
 static int result_is_valid(const cm_result *r, const double *const *in, size_t k, size_t n)
@@ -204,7 +206,7 @@ static void test_link_splits(void)
         }
         cm_result *r = calloc(1, sizeof *r);
         cm_partition_stats st;
-        CHECK(cm_partition(xy, (const int32_t *const *)tris, 2, 40, NULL, &r->mesh, &st, r) == CM_OK);
+        CHECK(cm_partition(xy, (const int32_t *const *)tris, 2, 40, NULL, &r->mesh, &st, &r->error) == CM_OK);
         int32_t boundary[40];
         for (int i = 0; i < 40; i++) boundary[i] = i;
         r->n = 40;

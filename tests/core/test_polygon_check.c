@@ -4,8 +4,8 @@
  * x everywhere), star-shaped polygons, and 2-opt untangled ones that are
  * simple or just barely not. */
 #include "check.h"
-#include "polygon_check.h"
-#include "predicates.h"
+#include "geom/polygon_check.h"
+#include "geom/predicates.h"
 #include "random_polygons.h"
 
 #include <math.h>

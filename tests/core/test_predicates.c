@@ -2,7 +2,7 @@
  * elimination of the textbook determinants), on inputs where plain double
  * evaluation gets the sign wrong, at ordinary, huge and tiny scales. */
 #include "check.h"
-#include "predicates.h"
+#include "geom/predicates.h"
 
 #include <float.h>
 #include <gmp.h>

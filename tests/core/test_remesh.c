@@ -9,11 +9,17 @@
 
 #include "check.h"
 #include "compatmesh/compatmesh.h"
-#include "kmesh.h"
-#include "predicates.h"
+#include "remesh/kmesh.h"
+#include "geom/predicates.h"
 #include "random_mesh.h"
 #include "random_polygons.h"
-#include "remesh.h"
+#include "remesh/areaeq.h"
+#include "remesh/collapse.h"
+#include "remesh/criteria.h"
+#include "remesh/flip.h"
+#include "remesh/refine.h"
+#include "remesh/remesh.h"
+#include "remesh/smooth.h"
 
 #define DEG (180.0 / CM_PI)
 
@@ -201,7 +207,7 @@ static void test_smoothing_variants(void)
                 double start = cm_kmesh_min_angle(&km), last = start;
                 int monotone = 1, valid = 1;
                 for (int sweep = 0; sweep < 20; sweep++) {
-                    CHECK(cm_smooth_sweep(&km, (cm_smoothing)method, smart) >= 0);
+                    CHECK(cm_smooth_pass(&km, (cm_smoothing)method, smart) >= 0);
                     double now = cm_kmesh_min_angle(&km);
                     monotone &= now >= last;
                     valid &= cm_kmesh_check(&km);
@@ -244,7 +250,7 @@ static void test_area_equalisation(void)
     double before = area_spread(&km, 0);
     int valid = 1;
     for (int i = 0; i < 10; i++) {
-        CHECK(cm_areaeq_sweep(&km, NULL) >= 0);
+        CHECK(cm_areaeq_pass(&km, NULL) >= 0);
         valid &= cm_kmesh_check(&km);
     }
     double after = area_spread(&km, 0);

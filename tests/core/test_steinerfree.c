@@ -8,11 +8,12 @@
 #include <string.h>
 
 #include "check.h"
-#include "internal.h"
-#include "predicates.h"
+#include "geom/polytri.h"
+#include "geom/angle.h"
+#include "geom/predicates.h"
 #include "random_polygons.h"
-#include "steinerfree.h"
-#include "visibility.h"
+#include "construct/steinerfree.h"
+#include "geom/visibility.h"
 
 #define MAXN 11
 

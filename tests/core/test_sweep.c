@@ -10,7 +10,7 @@
 
 #include "check.h"
 #include "morph_fixtures.h"
-#include "predicates.h"
+#include "geom/predicates.h"
 
 #define N 60
 

@@ -1,0 +1,27 @@
+/* The result handle behind the public accessors. */
+#ifndef CM_API_RESULT_H
+#define CM_API_RESULT_H
+
+#include "base/error.h"
+#include "base/mesh.h"
+
+struct cm_result {
+    cm_error error;   /* status; message and location of a failure */
+
+    size_t n;
+    cm_mesh mesh;
+
+    size_t nh;
+    int32_t *he_next, *he_to, *he_face, *vertex_he, *face_he;
+
+    cm_stats stats;
+    cm_quality *quality; /* k entries */
+    cm_quality *quality_before; /* k entries: before remeshing */
+};
+
+/* Drops all geometry, keeping status and message (a failed result). */
+void cm_result_clear_geometry(cm_result *r);
+/* Fills r->quality and the size stats of a checked result. */
+cm_status cm_result_measure(cm_result *r);
+
+#endif

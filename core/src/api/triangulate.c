@@ -1,0 +1,251 @@
+/* The public entry points: validate, build, check, measure. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "api/halfedge.h"
+#include "api/input.h"
+#include "api/quality.h"
+#include "api/result.h"
+#include "base/clock.h"
+#include "base/progress.h"
+#include "construct/overlay.h"
+#include "construct/partition.h"
+#include "geom/polytri.h"
+#include "remesh/remesh.h"
+
+void cm_options_init(cm_options *options)
+{
+    memset(options, 0, sizeof *options);
+    options->method = CM_METHOD_PARTITION;
+    options->remesh = 1;
+    options->min_angle_deg = 25.0;
+    options->max_steiner = -1;
+    options->k_split = 0;
+    options->area_every = 0;
+    options->smoothing = CM_SMOOTH_COMBINED;
+    options->max_iterations = 0;
+}
+
+/* The remeshing options; a message on r when one is out of range. */
+static cm_status check_remesh_options(cm_result *r, const cm_options *o)
+{
+    if (!(o->min_angle_deg > 0 && o->min_angle_deg < 60))
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "min_angle_deg must be in (0, 60), got %g", o->min_angle_deg);
+    if (o->max_steiner < -1)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "max_steiner must be >= -1, got %ld", o->max_steiner);
+    if (o->k_split < 0)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "k_split must be >= 0, got %d", o->k_split);
+    if (o->area_every < 0)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "area_every must be >= 0, got %d", o->area_every);
+    if (o->max_iterations < 0)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "max_iterations must be >= 0, got %d", o->max_iterations);
+    if ((unsigned)o->smoothing > (unsigned)CM_SMOOTH_COMBINED)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown smoothing %d", (int)o->smoothing);
+    return CM_OK;
+}
+
+/* Internal order is counter-clockwise: for clockwise input, internal vertex
+ * j is input vertex (n - j) % n (vertex 0 stays first). */
+static int32_t input_index(int32_t j, size_t n, int clockwise)
+{
+    return clockwise && j > 0 && (size_t)j < n ? (int32_t)(n - (size_t)j) : j;
+}
+
+/* The first compatible triangulation, by the chosen method. */
+static cm_status construct(cm_result *r, const double *const *geoms, const int32_t *const *tris,
+                           size_t k, size_t n, const cm_options *o, cm_progress *progress)
+{
+    if (o->method == CM_METHOD_OVERLAY) {
+        size_t centroids = 0;
+        return cm_overlay(geoms, tris, k, n, &r->mesh, &centroids, &r->error);
+    }
+    cm_partition_stats ps;
+    cm_status s = cm_partition(geoms, tris, k, n, progress, &r->mesh, &ps, &r->error);
+    r->stats.fallback_count = ps.fallback_count;
+    return s;
+}
+
+static cm_status build_first(cm_result *r, const double *const *polygons, size_t k, size_t n,
+                             int clockwise, const cm_options *o, cm_progress *progress)
+{
+    cm_status s = CM_ERR_NO_MEMORY;
+    double **geoms = calloc(k, sizeof *geoms);
+    int32_t **tris = calloc(k, sizeof *tris), *idx = malloc(n * sizeof *idx);
+    if (!geoms || !tris || !idx) goto done;
+    for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
+    for (size_t g = 0; g < k; g++) {
+        geoms[g] = malloc(2 * n * sizeof *geoms[g]);
+        tris[g] = malloc(3 * (n - 2) * sizeof *tris[g]);
+        if (!geoms[g] || !tris[g]) goto done;
+        for (size_t j = 0; j < n; j++) {
+            size_t i = (size_t)input_index((int32_t)j, n, clockwise);
+            geoms[g][2 * j] = polygons[g][2 * i];
+            geoms[g][2 * j + 1] = polygons[g][2 * i + 1];
+        }
+        int t = cm_polygon_triangulate(geoms[g], idx, (long)n, tris[g]);
+        if (t < 0) goto done;
+        if (t > 0) {
+            s = cm_fail(&r->error, CM_ERR_INTERNAL, "polygon %zu: ear clipping found no ear", g);
+            goto done;
+        }
+        if (cm_progress_report(progress, CM_STAGE_TRIANGULATE, (double)(g + 1) / (double)k)) {
+            s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
+            goto done;
+        }
+    }
+    s = construct(r, (const double *const *)geoms, (const int32_t *const *)tris, k, n, o, progress);
+done:
+    if (geoms)
+        for (size_t g = 0; g < k; g++) free(geoms[g]);
+    if (tris)
+        for (size_t g = 0; g < k; g++) free(tris[g]);
+    free(geoms), free(tris), free(idx);
+    return s;
+}
+
+/* Records the construction's quality, then runs Algorithm 1 on r->mesh
+ * (internal counter-clockwise order) when asked. */
+static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o, cm_progress *progress)
+{
+    size_t k = r->mesh.k;
+    r->quality_before = calloc(k, sizeof *r->quality_before);
+    if (!r->quality_before) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    for (size_t g = 0; g < k; g++) cm_mesh_quality(&r->mesh, g, &r->quality_before[g]);
+    r->stats.steiner_before_remesh = r->mesh.nv - n;
+    if (!o->remesh) return CM_OK;
+    if (cm_progress_report(progress, CM_STAGE_REMESH, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
+    double t = cm_seconds_now();
+    cm_remesh_report report = {0};
+    cm_status s = cm_remesh(&r->mesh, n, o, progress, &report, &r->error);
+    r->stats.seconds_remesh = cm_seconds_now() - t;
+    r->stats.remesh_iterations = report.iterations;
+    r->stats.remesh_aim_deg = report.target_deg;
+    return s;
+}
+
+/* Renumbers the polygon vertices back into input order (clockwise input). */
+static void restore_input_order(cm_mesh *m, size_t n)
+{
+    for (size_t g = 0; g < m->k; g++) {
+        double *xy = m->xy[g];
+        for (size_t j = 1; j < n - j; j++) {
+            size_t i = n - j;
+            double x = xy[2 * j], y = xy[2 * j + 1];
+            xy[2 * j] = xy[2 * i], xy[2 * j + 1] = xy[2 * i + 1];
+            xy[2 * i] = x, xy[2 * i + 1] = y;
+        }
+    }
+    for (size_t t = 0; t < 3 * m->nt; t++) m->tri[t] = input_index(m->tri[t], n, 1);
+}
+
+/* The constructions compute points in floating point: on input spanning
+ * magnitudes beyond about 1e+-150, their products overflow or underflow and
+ * the exact check rejects the result. Say so in an internal failure's
+ * message, so that the user knows to rescale. */
+static cm_status hint_at_range(cm_result *r, cm_status s, const double *const *polygons,
+                               size_t k, size_t n)
+{
+    if (s != CM_ERR_INTERNAL) return s;
+    double lo = INFINITY, hi = 0;
+    for (size_t g = 0; g < k; g++)
+        for (size_t i = 0; i < 2 * n; i++) {
+            double a = fabs(polygons[g][i]);
+            if (a > 0 && a < lo) lo = a;
+            if (a > hi) hi = a;
+        }
+    if (hi > 1e150 || lo < 1e-150) {
+        char *msg = r->error.message;
+        size_t used = strlen(msg);
+        snprintf(msg + used, sizeof r->error.message - used,
+                 " (the coordinates span magnitudes %.0e to %.0e; scale the input nearer to 1)",
+                 lo, hi);
+    }
+    return s;
+}
+
+static cm_status run(cm_result *r, const double *const *polygons, const size_t *counts,
+                     size_t k, const cm_options *o)
+{
+    cm_progress progress;
+    cm_progress_init(&progress, o->progress, o->progress_user);
+    double t0 = cm_seconds_now();
+    if (cm_progress_report(&progress, CM_STAGE_VALIDATE, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
+    int clockwise = 0;
+    cm_status s = cm_input_validate(polygons, counts, k, &r->error, &clockwise);
+    if (s != CM_OK) return s;
+    size_t n = counts[0];
+    r->n = n;
+    r->stats.n = n, r->stats.k = k, r->stats.reversed_input = clockwise;
+    double t1 = cm_seconds_now();
+    r->stats.seconds_validate = t1 - t0;
+    if (cm_progress_report(&progress, CM_STAGE_TRIANGULATE, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
+
+    s = build_first(r, polygons, k, n, clockwise, o, &progress);
+    if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
+    r->stats.seconds_build = cm_seconds_now() - t1;
+    s = remesh_stage(r, n, o, &progress);
+    if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
+    if (clockwise) restore_input_order(&r->mesh, n);
+    double t2 = cm_seconds_now();
+    if (cm_progress_report(&progress, CM_STAGE_CHECK, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
+
+    int32_t *boundary = malloc(n * sizeof *boundary);
+    if (!boundary) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    for (size_t j = 0; j < n; j++) boundary[j] = input_index((int32_t)j, n, clockwise);
+    s = cm_halfedge_build_and_check(r, boundary);
+    free(boundary);
+    if (s == CM_ERR_NO_MEMORY) return cm_fail_status(&r->error, s);
+    if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
+    r->stats.seconds_check = cm_seconds_now() - t2;
+
+    s = cm_result_measure(r);
+    if (s != CM_OK) return s;
+    if (cm_progress_report(&progress, CM_STAGE_DONE, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
+    return CM_OK;
+}
+
+cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *counts,
+                                  size_t k, const cm_options *options, cm_result **result)
+{
+    if (!result) return CM_ERR_ARGUMENT;
+    cm_result *r = calloc(1, sizeof *r);
+    *result = r;
+    if (!r) return CM_ERR_NO_MEMORY;
+    cm_error_init(&r->error);
+    cm_options defaults;
+    if (!options) {
+        cm_options_init(&defaults);
+        options = &defaults;
+    }
+    if (options->method != CM_METHOD_OVERLAY && options->method != CM_METHOD_PARTITION) {
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
+    }
+    cm_status s = check_remesh_options(r, options);
+    if (s == CM_OK) s = run(r, polygons, counts, k, options);
+    if (s != CM_OK) {
+        cm_result_clear_geometry(r);
+        r->error.status = s;
+        return s;
+    }
+    cm_error_init(&r->error);
+    return CM_OK;
+}
+
+cm_status cm_triangulate(const double *xy, size_t k, size_t n, const cm_options *options,
+                         cm_result **result)
+{
+    if (!xy) return cm_triangulate_polygons(NULL, NULL, k, options, result);
+    const double **polygons = malloc((k + 1) * sizeof *polygons);
+    size_t *counts = malloc((k + 1) * sizeof *counts);
+    cm_status s = CM_ERR_NO_MEMORY;
+    if (polygons && counts) {
+        for (size_t g = 0; g < k; g++) polygons[g] = xy + 2 * n * g, counts[g] = n;
+        s = cm_triangulate_polygons(polygons, counts, k, options, result);
+    } else if (result) {
+        *result = NULL;
+    }
+    free(polygons), free(counts);
+    return s;
+}

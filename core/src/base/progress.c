@@ -1,0 +1,42 @@
+/* The stage table (progress.h). Stages whose work is not known in advance
+ * (the partition) report one fraction throughout. */
+#include "base/progress.h"
+#include "base/clock.h"
+
+static const struct {
+    const char *name;
+    double from, to;
+} stages[] = {
+    [CM_STAGE_VALIDATE] = {"validate", 0.0, 0.1},
+    [CM_STAGE_TRIANGULATE] = {"triangulate polygons", 0.1, 0.4},
+    [CM_STAGE_PARTITION] = {"partition", 0.4, 0.4},
+    [CM_STAGE_REMESH] = {"remesh", 0.4, 0.8},
+    [CM_STAGE_CHECK] = {"check", 0.8, 1.0},
+    [CM_STAGE_DONE] = {"done", 1.0, 1.0},
+    [CM_STAGE_ENCLOSURE] = {"enclosure", 0.0, 0.9},
+    [CM_STAGE_MORPH_SYSTEM] = {"morph system", 0.9, 1.0},
+    [CM_STAGE_SWEEP] = {"sweep", 0.0, 1.0},
+};
+
+void cm_progress_init(cm_progress *p, cm_progress_fn fn, void *user)
+{
+    p->fn = fn;
+    p->user = user;
+    p->last = fn ? cm_seconds_now() : 0.0;
+}
+
+int cm_progress_report(cm_progress *p, cm_stage s, double within)
+{
+    if (!p || !p->fn) return 0;
+    double f = stages[s].from + (stages[s].to - stages[s].from) * within;
+    return p->fn(p->user, f, stages[s].name) != 0;
+}
+
+int cm_progress_poll(cm_progress *p, cm_stage s, double within)
+{
+    if (!p || !p->fn) return 0;
+    double now = cm_seconds_now();
+    if (now - p->last < 0.2) return 0;
+    p->last = now;
+    return cm_progress_report(p, s, within);
+}

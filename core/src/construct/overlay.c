@@ -1,0 +1,644 @@
+/* The Aronov-Seidel-Souvaine construction: map every polygon's triangulation
+ * onto one convex polygon C (vertex i to the i-th corner of a regular n-gon;
+ * any triangulation of a polygon is a triangulation of a convex polygon
+ * with the same vertex order), overlay the images there, triangulate the
+ * overlay's convex faces and map everything back. A point of C lies in one
+ * triangle of every image, and each image maps back affinely per triangle,
+ * so the overlay is compatible with every polygon.
+ *
+ * The overlay's combinatorics are exact: chords cross iff their endpoints
+ * interleave (C is strictly convex, checked), and the order of crossings
+ * along a chord, where floating point cannot separate them, is decided with
+ * exact rational arithmetic. Only Steiner positions are rounded, and the
+ * final mesh is checked exactly by the caller. */
+#include <gmp.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "construct/overlay.h"
+#include "base/buf.h"
+#include "geom/angle.h"
+#include "geom/polytri.h"
+#include "geom/predicates.h"
+
+typedef struct { int32_t a, b; } chord;           /* a < b, a diagonal of C */
+typedef struct { long l, m; double tl, tm, x, y; } crossing;
+
+typedef struct {
+    size_t n, k;
+    double *cxy;                  /* C's corners, 2n doubles */
+    chord *chords; long nc;
+    unsigned char *owner;         /* nc * k: chord is a diagonal of T_j */
+    crossing *cross; long nx;
+    long *vertex_of_cross;        /* crossing -> overlay vertex id */
+    long nv;                      /* n + number of crossing vertices */
+    long *chord_seq_start, *chord_seq; /* per chord: vertex ids from a to b */
+    mpq_t q[8];                   /* scratch for exact comparisons */
+} overlay;
+
+/* ---- C and its chords ---------------------------------------------------- */
+
+/* A fixed pseudo-random offset in [0, 1) per corner. */
+static double corner_jitter(size_t i)
+{
+    uint64_t z = (uint64_t)i * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return (double)((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+}
+
+/* C: corners on the unit circle at jittered angles. A regular polygon has
+ * many concurrent diagonals; with k >= 3 triangulations they would make
+ * crossings nearly coincide, so the jitter breaks that symmetry. */
+static int make_convex_polygon(overlay *o)
+{
+    size_t n = o->n;
+    o->cxy = malloc(2 * n * sizeof *o->cxy);
+    if (!o->cxy) return -1;
+    for (size_t i = 0; i < n; i++) {
+        double angle = 2.0 * CM_PI * ((double)i + 0.5 * corner_jitter(i)) / (double)n;
+        o->cxy[2 * i] = cos(angle);
+        o->cxy[2 * i + 1] = sin(angle);
+    }
+    for (size_t i = 0; i < n; i++) {
+        if (cm_orient2d(o->cxy + 2 * ((i + n - 1) % n), o->cxy + 2 * i,
+                        o->cxy + 2 * ((i + 1) % n)) <= 0)
+            return 1;
+    }
+    return 0;
+}
+
+static int compare_chords(const void *pa, const void *pb)
+{
+    const chord *x = pa, *y = pb;
+    if (x->a != y->a) return x->a < y->a ? -1 : 1;
+    return (x->b > y->b) - (x->b < y->b);
+}
+
+static int is_boundary_edge(int32_t a, int32_t b, size_t n)
+{
+    return b == a + 1 || (a == 0 && (size_t)b == n - 1);
+}
+
+/* Collects the diagonals of all triangulations, once each, with owners. */
+static int collect_chords(overlay *o, const int32_t *const *tris)
+{
+    size_t n = o->n, k = o->k, cap = k * (n - 3) + 1;
+    chord *all = malloc(cap * sizeof *all);
+    if (!all) return -1;
+    long count = 0;
+    for (size_t j = 0; j < k; j++) {
+        for (size_t e = 0; e < 3 * (n - 2); e++) {
+            int32_t u = tris[j][e], v = tris[j][e - e % 3 + (e + 1) % 3];
+            if (u > v) { int32_t t = u; u = v; v = t; }
+            /* Each diagonal appears twice, once per direction: keep one. */
+            if (is_boundary_edge(u, v, n) || tris[j][e] != u) continue;
+            all[count++] = (chord){u, v};
+        }
+    }
+    qsort(all, (size_t)count, sizeof *all, compare_chords);
+    long nc = 0;
+    for (long i = 0; i < count; i++)
+        if (nc == 0 || compare_chords(&all[nc - 1], &all[i]) != 0) all[nc++] = all[i];
+    o->chords = all;
+    o->nc = nc;
+    o->owner = calloc((size_t)nc * k + 1, 1);
+    if (!o->owner) return -1;
+    for (size_t j = 0; j < k; j++) {
+        for (size_t e = 0; e < 3 * (n - 2); e++) {
+            int32_t u = tris[j][e], v = tris[j][e - e % 3 + (e + 1) % 3];
+            if (u > v) { int32_t t = u; u = v; v = t; }
+            if (is_boundary_edge(u, v, n)) continue;
+            chord key = {u, v};
+            chord *hit = bsearch(&key, all, (size_t)nc, sizeof *all, compare_chords);
+            if (hit) o->owner[(size_t)(hit - all) * k + j] = 1;
+        }
+    }
+    return 0;
+}
+
+/* ---- crossings ------------------------------------------------------------ */
+
+static int interleave(chord p, chord q)
+{
+    if (p.a == q.a || p.a == q.b || p.b == q.a || p.b == q.b) return 0;
+    return (p.a < q.a && q.a < p.b) != (p.a < q.b && q.b < p.b);
+}
+
+static const double *corner(const overlay *o, int32_t i) { return o->cxy + 2 * (size_t)i; }
+
+static int find_crossings(overlay *o)
+{
+    size_t cap = 0;
+    o->cross = NULL;
+    o->nx = 0;
+    for (long i = 0; i < o->nc; i++) {
+        for (long j = i + 1; j < o->nc && o->chords[j].a < o->chords[i].b; j++) {
+            if (!interleave(o->chords[i], o->chords[j])) continue;
+            const double *la = corner(o, o->chords[i].a), *lb = corner(o, o->chords[i].b);
+            const double *ma = corner(o, o->chords[j].a), *mb = corner(o, o->chords[j].b);
+            double dlx = lb[0] - la[0], dly = lb[1] - la[1];
+            double dmx = mb[0] - ma[0], dmy = mb[1] - ma[1];
+            double ex = ma[0] - la[0], ey = ma[1] - la[1];
+            double den = dlx * dmy - dly * dmx;
+            double tl = (ex * dmy - ey * dmx) / den, tm = (ex * dly - ey * dlx) / den;
+            if (cm_grow((void **)&o->cross, &cap, (size_t)o->nx + 1, sizeof *o->cross)) return -1;
+            o->cross[o->nx++] = (crossing){i, j, tl, tm, la[0] + tl * dlx, la[1] + tl * dly};
+        }
+    }
+    return 0;
+}
+
+/* Chords j > i with chords[j].a >= chords[i].b cannot interleave with i
+ * (sorted by a), which is what bounds the inner loop above. */
+
+static long other_chord(const crossing *x, long c) { return x->l == c ? x->m : x->l; }
+static double param_on(const crossing *x, long c) { return x->l == c ? x->tl : x->tm; }
+
+/* Exact parameter where chord m crosses chord c, along c:
+ * t = cross(M.a - C.a, dM) / cross(dC, dM), into out (uses q[0..5]). */
+static void exact_param(overlay *o, long c, long m, mpq_ptr out)
+{
+    mpq_t *q = o->q;
+    const double *p[4] = {corner(o, o->chords[c].a), corner(o, o->chords[c].b),
+                          corner(o, o->chords[m].a), corner(o, o->chords[m].b)};
+    for (int axis = 0; axis < 2; axis++) {
+        mpq_set_d(q[4], p[0][axis]);
+        mpq_set_d(q[0 + axis], p[3][axis]);        /* dM */
+        mpq_set_d(q[5], p[2][axis]);
+        mpq_sub(q[0 + axis], q[0 + axis], q[5]);
+        mpq_sub(q[2 + axis], q[5], q[4]);          /* M.a - C.a */
+    }
+    mpq_mul(q[4], q[2], q[1]);
+    mpq_mul(q[5], q[3], q[0]);
+    mpq_sub(out, q[4], q[5]);                      /* cross(M.a - C.a, dM) */
+    for (int axis = 0; axis < 2; axis++) {         /* q[2..3] = dC */
+        mpq_set_d(q[2 + axis], p[1][axis]);
+        mpq_set_d(q[4], p[0][axis]);
+        mpq_sub(q[2 + axis], q[2 + axis], q[4]);
+    }
+    mpq_mul(q[4], q[2], q[1]);
+    mpq_mul(q[5], q[3], q[0]);
+    mpq_sub(q[4], q[4], q[5]);                     /* cross(dC, dM) */
+    mpq_div(out, out, q[4]);
+}
+
+static int exact_param_compare(overlay *o, long c, long m1, long m2)
+{
+    exact_param(o, c, m1, o->q[6]);
+    exact_param(o, c, m2, o->q[7]);
+    return mpq_cmp(o->q[6], o->q[7]);
+}
+
+/* Union-find over crossings: crossings at the same point (three or more
+ * chords through it, possible for k >= 3) become one vertex. */
+static long find_root(long *parent, long x)
+{
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+}
+
+typedef struct { double t; long x; } param_entry;
+
+static int compare_params(const void *pa, const void *pb)
+{
+    const param_entry *a = pa, *b = pb;
+    return (a->t > b->t) - (a->t < b->t);
+}
+
+/* Where doubles cannot order two crossings safely, ask exact arithmetic.
+ * Parameters differ from the exact ones by far less than this. */
+#define PARAM_TOLERANCE 1e-9
+
+static void order_along_chord(overlay *o, long c, param_entry *e, long count, long *parent)
+{
+    qsort(e, (size_t)count, sizeof *e, compare_params);
+    for (long i = 1; i < count; i++) {
+        for (long j = i; j > 0 && e[j].t - e[j - 1].t < PARAM_TOLERANCE; j--) {
+            long m1 = other_chord(&o->cross[e[j - 1].x], c);
+            long m2 = other_chord(&o->cross[e[j].x], c);
+            int cmp = exact_param_compare(o, c, m1, m2);
+            if (cmp == 0) {
+                long r1 = find_root(parent, e[j - 1].x), r2 = find_root(parent, e[j].x);
+                if (r1 != r2) parent[r2] = r1;
+            }
+            if (cmp <= 0) break;
+            param_entry t = e[j]; e[j] = e[j - 1]; e[j - 1] = t;
+        }
+    }
+}
+
+/* Builds, for every chord, the sequence of overlay vertices from a to b. */
+static int build_chord_sequences(overlay *o)
+{
+    long nc = o->nc, nx = o->nx, status = -1;
+    long *count = calloc((size_t)nc + 1, sizeof *count);
+    long *start = malloc(((size_t)nc + 1) * sizeof *start);
+    param_entry *entries = malloc((2 * (size_t)nx + 1) * sizeof *entries);
+    long *parent = malloc(((size_t)nx + 1) * sizeof *parent);
+    long *root_vertex = malloc(((size_t)nx + 1) * sizeof *root_vertex);
+    o->vertex_of_cross = malloc(((size_t)nx + 1) * sizeof *o->vertex_of_cross);
+    o->chord_seq_start = malloc(((size_t)nc + 1) * sizeof *o->chord_seq_start);
+    o->chord_seq = malloc((2 * (size_t)nx + 2 * (size_t)nc + 1) * sizeof *o->chord_seq);
+    if (!count || !start || !entries || !parent || !root_vertex || !o->vertex_of_cross ||
+        !o->chord_seq_start || !o->chord_seq)
+        goto done;
+    for (long x = 0; x < nx; x++) {
+        count[o->cross[x].l]++, count[o->cross[x].m]++;
+        parent[x] = x;
+    }
+    start[0] = 0;
+    for (long c = 0; c < nc; c++) start[c + 1] = start[c] + count[c];
+    memset(count, 0, (size_t)nc * sizeof *count);
+    for (long x = 0; x < nx; x++) {
+        long l = o->cross[x].l, m = o->cross[x].m;
+        entries[start[l] + count[l]++] = (param_entry){o->cross[x].tl, x};
+        entries[start[m] + count[m]++] = (param_entry){o->cross[x].tm, x};
+    }
+    for (long c = 0; c < nc; c++)
+        order_along_chord(o, c, entries + start[c], start[c + 1] - start[c], parent);
+
+    o->nv = (long)o->n;
+    for (long x = 0; x < nx; x++) root_vertex[x] = -1;
+    for (long x = 0; x < nx; x++) {
+        long r = find_root(parent, x);
+        if (root_vertex[r] < 0) root_vertex[r] = o->nv++;
+        o->vertex_of_cross[x] = root_vertex[r];
+    }
+    long len = 0;
+    for (long c = 0; c < nc; c++) {
+        o->chord_seq_start[c] = len;
+        o->chord_seq[len++] = o->chords[c].a;
+        for (long i = start[c]; i < start[c + 1]; i++) {
+            long v = o->vertex_of_cross[entries[i].x];
+            if (o->chord_seq[len - 1] != v) o->chord_seq[len++] = v;
+        }
+        o->chord_seq[len++] = o->chords[c].b;
+    }
+    o->chord_seq_start[nc] = len;
+    status = 0;
+done:
+    free(count), free(start), free(entries), free(parent), free(root_vertex);
+    return (int)status;
+}
+
+/* ---- the planar overlay as half-edges ------------------------------------ */
+
+typedef struct {
+    long nh;
+    long *from, *to, *chord_of; /* chord_of: -1 on the boundary */
+    signed char *forward;       /* +1 along the chord from a to b, -1 back */
+    long *out_start, *out;      /* outgoing half-edges per vertex, CCW */
+    long *pos;                  /* index of h in its origin's out list */
+} graph;
+
+static void graph_free(graph *g)
+{
+    free(g->from), free(g->to), free(g->chord_of), free(g->forward);
+    free(g->out_start), free(g->out), free(g->pos);
+}
+
+/* Sign of cross(d1, d2) for directions along chords through one interior
+ * point. Such chords cross, so c2.b lies strictly on one side of c1. */
+static int direction_cross(const overlay *o, long c1, int s1, long c2, int s2)
+{
+    if (c1 == c2) return 0;
+    return s1 * s2 * cm_orient2d(corner(o, o->chords[c1].a), corner(o, o->chords[c1].b),
+                                 corner(o, o->chords[c2].b));
+}
+
+/* Angular order around a crossing vertex: the half-plane left of the first
+ * direction (including it) comes first, then the rest; within a half-plane
+ * counter-clockwise. */
+static int angular_half(const overlay *o, const graph *g, long ref, long h)
+{
+    int c = direction_cross(o, g->chord_of[ref], g->forward[ref], g->chord_of[h], g->forward[h]);
+    if (c == 0) return g->forward[ref] == g->forward[h] ? 0 : 1;
+    return c > 0 ? 0 : 1;
+}
+
+static int angular_less(const overlay *o, const graph *g, long ref, long h1, long h2)
+{
+    int a = angular_half(o, g, ref, h1), b = angular_half(o, g, ref, h2);
+    if (a != b) return a < b;
+    return direction_cross(o, g->chord_of[h1], g->forward[h1], g->chord_of[h2], g->forward[h2]) > 0;
+}
+
+static long corner_key(const overlay *o, const graph *g, long h)
+{
+    long n = (long)o->n, i = g->from[h];
+    if (g->chord_of[h] < 0) return ((g->to[h] - i) % n + n) % n;
+    const chord *c = &o->chords[g->chord_of[h]];
+    long other = c->a == i ? c->b : c->a;
+    return ((other - i) % n + n) % n;
+}
+
+static void sort_outgoing(const overlay *o, graph *g, long v)
+{
+    long *list = g->out + g->out_start[v], deg = g->out_start[v + 1] - g->out_start[v];
+    long ref = list[0]; /* angles are measured from a fixed direction */
+    for (long i = 1; i < deg; i++) {
+        long h = list[i], j = i;
+        if (v < (long)o->n) {
+            long key = corner_key(o, g, h);
+            while (j > 0 && corner_key(o, g, list[j - 1]) > key) list[j] = list[j - 1], j--;
+        } else {
+            while (j > 0 && angular_less(o, g, ref, h, list[j - 1]))
+                list[j] = list[j - 1], j--;
+        }
+        list[j] = h;
+    }
+}
+
+static void add_edge(graph *g, long u, long v, long c)
+{
+    long h = g->nh;
+    g->from[h] = u, g->to[h] = v, g->chord_of[h] = c, g->forward[h] = 1;
+    g->from[h + 1] = v, g->to[h + 1] = u, g->chord_of[h + 1] = c, g->forward[h + 1] = -1;
+    g->nh += 2;
+}
+
+static int build_graph(const overlay *o, graph *g)
+{
+    long n = (long)o->n, nv = o->nv;
+    size_t nh = 2 * ((size_t)n + (size_t)(o->chord_seq_start[o->nc] - o->nc));
+    memset(g, 0, sizeof *g);
+    g->from = malloc(nh * sizeof *g->from);
+    g->to = malloc(nh * sizeof *g->to);
+    g->chord_of = malloc(nh * sizeof *g->chord_of);
+    g->forward = malloc(nh);
+    g->out_start = calloc((size_t)nv + 1, sizeof *g->out_start);
+    g->out = malloc(nh * sizeof *g->out);
+    g->pos = malloc(nh * sizeof *g->pos);
+    long *fill = calloc((size_t)nv + 1, sizeof *fill);
+    if (!g->from || !g->to || !g->chord_of || !g->forward || !g->out_start || !g->out ||
+        !g->pos || !fill) {
+        free(fill);
+        return -1;
+    }
+    for (long i = 0; i < n; i++) add_edge(g, i, (i + 1) % n, -1);
+    for (long c = 0; c < o->nc; c++)
+        for (long i = o->chord_seq_start[c]; i + 1 < o->chord_seq_start[c + 1]; i++)
+            add_edge(g, o->chord_seq[i], o->chord_seq[i + 1], c);
+
+    for (long h = 0; h < g->nh; h++) g->out_start[g->from[h] + 1]++;
+    for (long v = 0; v < nv; v++) g->out_start[v + 1] += g->out_start[v];
+    for (long h = 0; h < g->nh; h++) g->out[g->out_start[g->from[h]] + fill[g->from[h]]++] = h;
+    free(fill);
+    for (long v = 0; v < nv; v++) {
+        sort_outgoing(o, g, v);
+        for (long i = g->out_start[v]; i < g->out_start[v + 1]; i++)
+            g->pos[g->out[i]] = i - g->out_start[v];
+    }
+    return 0;
+}
+
+/* The face left of h continues with the clockwise neighbour of h's twin. */
+static long next_in_face(const graph *g, long h)
+{
+    long t = h ^ 1, v = g->from[t];
+    long deg = g->out_start[v + 1] - g->out_start[v];
+    return g->out[g->out_start[v] + (g->pos[t] + deg - 1) % deg];
+}
+
+/* ---- mapping back into every polygon ------------------------------------- */
+
+/* The triangle of T_j (as a triangulation of C) with the largest smallest
+ * barycentric coordinate at p, and p's coordinates in it. Only needed for
+ * k >= 3, where a crossing may lie on no diagonal of T_j. */
+static void locate_in_triangulation(const overlay *o, const int32_t *tri, const double *p,
+                                    long *best_t, double bary[3])
+{
+    double best = -INFINITY;
+    for (long t = 0; t < (long)o->n - 2; t++) {
+        const double *a = corner(o, tri[3 * t]), *b = corner(o, tri[3 * t + 1]),
+                     *c = corner(o, tri[3 * t + 2]);
+        double det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        double l1 = ((p[0] - a[0]) * (c[1] - a[1]) - (p[1] - a[1]) * (c[0] - a[0])) / det;
+        double l2 = ((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])) / det;
+        double l0 = 1.0 - l1 - l2, lo = fmin(l0, fmin(l1, l2));
+        if (lo > best) best = lo, *best_t = t, bary[0] = l0, bary[1] = l1, bary[2] = l2;
+    }
+}
+
+static void lerp(const double *p, const double *q, double t, double *out)
+{
+    out[0] = p[0] + t * (q[0] - p[0]);
+    out[1] = p[1] + t * (q[1] - p[1]);
+}
+
+/* Positions of the overlay's vertices in geometry j: polygon vertices as
+ * given (bit-identical), crossings on a diagonal of T_j at the same
+ * parameter along it as in C (the map C -> P_j is affine along a diagonal). */
+static void map_back(const overlay *o, const double *geom, const int32_t *tri, size_t j,
+                     double *xy, unsigned char *placed)
+{
+    memcpy(xy, geom, 2 * o->n * sizeof *xy);
+    memset(placed + o->n, 0, (size_t)o->nv - o->n);
+    for (long x = 0; x < o->nx; x++) {
+        const crossing *c = &o->cross[x];
+        long v = o->vertex_of_cross[x];
+        if (placed[v]) continue;
+        long on = o->owner[(size_t)c->l * o->k + j] ? c->l : o->owner[(size_t)c->m * o->k + j] ? c->m : -1;
+        if (on < 0) continue;
+        const chord *d = &o->chords[on];
+        lerp(geom + 2 * (size_t)d->a, geom + 2 * (size_t)d->b, param_on(c, on), xy + 2 * v);
+        placed[v] = 1;
+    }
+    for (long x = 0; x < o->nx; x++) {
+        long v = o->vertex_of_cross[x];
+        if (placed[v]) continue;
+        long t = 0;
+        double bary[3] = {1, 0, 0}, p[2] = {o->cross[x].x, o->cross[x].y};
+        locate_in_triangulation(o, tri, p, &t, bary);
+        for (int axis = 0; axis < 2; axis++) {
+            xy[2 * v + axis] = bary[0] * geom[2 * tri[3 * t] + axis] +
+                               bary[1] * geom[2 * tri[3 * t + 1] + axis] +
+                               bary[2] * geom[2 * tri[3 * t + 2] + axis];
+        }
+        placed[v] = 1;
+    }
+}
+
+/* ---- triangulating the overlay's faces ----------------------------------- */
+
+typedef struct {
+    size_t k;
+    double **xy;        /* k position arrays */
+    int32_t *tri;
+    size_t nt, cap_t;
+    size_t nv, cap_v;   /* vertices used / allocated per geometry */
+    size_t centroids;
+} face_output;
+
+static double ear_quality(const face_output *f, long a, long b, long c, const long *face,
+                          long m)
+{
+    double worst = INFINITY;
+    for (size_t j = 0; j < f->k; j++) {
+        const double *xy = f->xy[j];
+        const double *pa = xy + 2 * a, *pb = xy + 2 * b, *pc = xy + 2 * c;
+        if (cm_orient2d(pa, pb, pc) <= 0) return -1;
+        for (long i = 0; i < m; i++) {
+            long v = face[i];
+            if (v == a || v == b || v == c) continue;
+            const double *p = xy + 2 * v;
+            if (cm_orient2d(pa, pb, p) >= 0 && cm_orient2d(pb, pc, p) >= 0 &&
+                cm_orient2d(pc, pa, p) >= 0)
+                return -1;
+        }
+        worst = fmin(worst, cm_triangle_min_angle(pa, pb, pc));
+    }
+    return worst;
+}
+
+static int emit_triangle(face_output *f, long a, long b, long c)
+{
+    if (cm_grow((void **)&f->tri, &f->cap_t, 3 * (f->nt + 1), sizeof *f->tri)) return -1;
+    f->tri[3 * f->nt] = (int32_t)a, f->tri[3 * f->nt + 1] = (int32_t)b,
+    f->tri[3 * f->nt + 2] = (int32_t)c;
+    f->nt++;
+    return 0;
+}
+
+/* A face no ear can cut in every geometry (rounding made it slightly
+ * non-convex somewhere): fan it from a new vertex at its vertex centroid. */
+static int fan_from_centroid(face_output *f, const long *face, long m)
+{
+    if (f->nv >= f->cap_v) return 1;
+    long c = (long)f->nv++;
+    for (size_t j = 0; j < f->k; j++) {
+        double sx = 0, sy = 0;
+        for (long i = 0; i < m; i++) sx += f->xy[j][2 * face[i]], sy += f->xy[j][2 * face[i] + 1];
+        f->xy[j][2 * c] = sx / (double)m, f->xy[j][2 * c + 1] = sy / (double)m;
+    }
+    for (long i = 0; i < m; i++) {
+        long a = face[i], b = face[(i + 1) % m];
+        for (size_t j = 0; j < f->k; j++)
+            if (cm_orient2d(f->xy[j] + 2 * a, f->xy[j] + 2 * b, f->xy[j] + 2 * c) <= 0) return 1;
+        if (emit_triangle(f, a, b, c)) return -1;
+    }
+    f->centroids++;
+    return 0;
+}
+
+/* Cuts the best ear (largest smallest angle over all geometries) until a
+ * triangle remains. Returns 0, -1 out of memory, 1 impossible. */
+static int triangulate_face(face_output *f, long *face, long m)
+{
+    while (m > 3) {
+        long best = -1;
+        double best_q = -1;
+        for (long i = 0; i < m; i++) {
+            double q = ear_quality(f, face[(i + m - 1) % m], face[i], face[(i + 1) % m], face, m);
+            if (q > best_q) best_q = q, best = i;
+        }
+        if (best < 0) return fan_from_centroid(f, face, m);
+        if (emit_triangle(f, face[(best + m - 1) % m], face[best], face[(best + 1) % m])) return -1;
+        memmove(face + best, face + best + 1, (size_t)(m - best - 1) * sizeof *face);
+        m--;
+    }
+    if (ear_quality(f, face[0], face[1], face[2], face, 3) < 0) return 1;
+    return emit_triangle(f, face[0], face[1], face[2]);
+}
+
+static int triangulate_faces(const graph *g, size_t n, face_output *f)
+{
+    char *seen = calloc((size_t)g->nh, 1);
+    long *face = malloc((size_t)g->nh * sizeof *face);
+    int status = -1;
+    if (!seen || !face) goto done;
+    /* The outer face is the one left of the boundary's reversed half-edges
+     * (odd ids below 2n); it must consist of exactly those. */
+    long outer_len = 0;
+    int outer_ok = 1;
+    for (long h = 1; !seen[h]; h = next_in_face(g, h)) {
+        seen[h] = 1;
+        outer_ok &= (h & 1) && h < 2 * (long)n;
+        outer_len++;
+    }
+    status = 1;
+    if (!outer_ok || outer_len != (long)n) goto done;
+    for (long h0 = 0; h0 < g->nh; h0++) {
+        if (seen[h0]) continue;
+        long m = 0;
+        for (long h = h0; !seen[h]; h = next_in_face(g, h)) {
+            seen[h] = 1;
+            face[m++] = g->from[h];
+        }
+        int s = triangulate_face(f, face, m);
+        if (s != 0) { status = s; goto done; }
+    }
+    status = 0;
+done:
+    free(seen), free(face);
+    return status;
+}
+
+/* ---- the whole construction ---------------------------------------------- */
+
+static void overlay_free(overlay *o)
+{
+    free(o->cxy), free(o->chords), free(o->owner), free(o->cross);
+    free(o->vertex_of_cross), free(o->chord_seq_start), free(o->chord_seq);
+    for (int i = 0; i < 8; i++) mpq_clear(o->q[i]);
+}
+
+cm_status cm_overlay(const double *const *geoms, const int32_t *const *tris, size_t k,
+                     size_t n, cm_mesh *out, size_t *extra_centroids, cm_error *err)
+{
+    overlay o;
+    graph g;
+    face_output f;
+    memset(&o, 0, sizeof o);
+    memset(&g, 0, sizeof g);
+    memset(&f, 0, sizeof f);
+    for (int i = 0; i < 8; i++) mpq_init(o.q[i]);
+    o.n = n, o.k = k;
+    cm_status status = CM_ERR_NO_MEMORY;
+    int s = make_convex_polygon(&o);
+    if (s > 0) {
+        status = cm_fail(err, CM_ERR_INTERNAL, "overlay: the convex %zu-gon is not strictly convex in double precision", n);
+        goto done;
+    }
+    if (s < 0 || collect_chords(&o, tris) || find_crossings(&o) || build_chord_sequences(&o) ||
+        build_graph(&o, &g))
+        goto done;
+
+    /* Each face of m vertices needs at most one centroid. */
+    f.k = k;
+    f.nv = (size_t)o.nv;
+    f.cap_v = (size_t)o.nv + (size_t)g.nh / 3 + 1;
+    f.xy = calloc(k, sizeof *f.xy);
+    unsigned char *placed = malloc(f.cap_v);
+    if (!f.xy || !placed) { free(placed); goto done; }
+    for (size_t j = 0; j < k; j++) {
+        f.xy[j] = malloc(2 * f.cap_v * sizeof *f.xy[j]);
+        if (!f.xy[j]) { free(placed); goto done; }
+        map_back(&o, geoms[j], tris[j], j, f.xy[j], placed);
+    }
+    free(placed);
+    s = triangulate_faces(&g, n, &f);
+    if (s < 0) goto done;
+    if (s > 0) {
+        status = cm_fail(err, CM_ERR_INTERNAL,
+                         "overlay: a face could not be triangulated in every geometry");
+        goto done;
+    }
+    out->k = k;
+    out->nv = f.nv;
+    out->nt = f.nt;
+    out->xy = f.xy;
+    out->tri = f.tri;
+    f.xy = NULL, f.tri = NULL;
+    *extra_centroids = f.centroids;
+    status = CM_OK;
+done:
+    if (f.xy)
+        for (size_t j = 0; j < k; j++) free(f.xy[j]);
+    free(f.xy), free(f.tri);
+    graph_free(&g);
+    overlay_free(&o);
+    return status;
+}

@@ -1,0 +1,973 @@
+/* The partition driver: a stack of sub-polygons ("items"), each cut until
+ * it is triangulated.
+ *
+ * For an item:
+ * (1) The Steiner-free dynamic program over its common diagonals
+ *     (steinerfree.h) triangulates it when that is possible (always tried
+ *     up to CM_DP_MAX_VERTICES, beyond when cheap), else cuts it along
+ *     common diagonals into triangles and stuck faces; when two or more
+ *     Steiner vertices would be needed, the same program with a fan point
+ *     (a kernel point of the item or of a stuck face, in every geometry)
+ *     may merge stuck faces into one fan around a single Steiner vertex.
+ *     Large items with many common diagonals are first split along the
+ *     most balanced one (the paper's tie-break for link distance 1).
+ * (2) A stuck face (no common diagonal, so at least one Steiner vertex)
+ *     that is star-shaped in every geometry is fanned from one Steiner
+ *     vertex: the fewest possible.
+ * (3) Otherwise it is cut along minimum-link paths (paper, section 2):
+ *     vertex pairs ranked by the largest link distance over the
+ *     geometries, then by balance, within the size guard (a piece may keep
+ *     its parent's size once); the shorter paths are refined to the same
+ *     number of links; the bends become Steiner vertices shared by both
+ *     halves. Among the first valid cuts the one whose halves need the
+ *     fewest Steiner vertices (estimated with the program) is taken.
+ * (4) If no cut is valid, the item goes to the overlay construction
+ *     (stats fallback_count).
+ *
+ * Visibility tables: the common-diagonal table of the input serves every
+ * item cut from it along diagonals (a diagonal between two vertices of such
+ * a sub-polygon is a diagonal of it iff it is one of the input); an item
+ * with bends on its boundary gets a table of its own. */
+#include "construct/partition.h"
+#include "base/buf.h"
+#include "base/clock.h"
+#include "construct/overlay.h"
+#include "geom/angle.h"
+#include "geom/polytri.h"
+
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "geom/linkpath.h"
+#include "geom/predicates.h"
+#include "construct/steinerfree.h"
+#include "geom/visibility.h"
+
+/* Beyond this, the dynamic program's O(m (m + c)) work is skipped. */
+#define DP_WORK_LIMIT 6e7
+/* Stuck faces larger than this go to the overlay construction: the
+ * all-pairs link distances would cost too much. */
+#define LINK_MAX_VERTICES 600
+/* Vertex pairs tried, best first, before giving up on a stuck face; of
+ * the valid cuts, this many are compared by what their halves need. */
+#define LINK_MAX_TRIES 40
+#define LINK_EVALUATE 12
+
+typedef struct vtable {
+    long m;
+    unsigned char *common; /* m * m: a diagonal in every geometry */
+} vtable;
+
+typedef struct item {
+    int32_t *gid;  /* global vertex ids, counter-clockwise */
+    int32_t *tix;  /* indices into the table, NULL while table < 0 */
+    long m, table; /* table -1: needs a table of its own */
+    int repeat;    /* has the size of the polygon it was cut from */
+    int stuck;     /* known to have no common diagonal */
+} item;
+
+typedef struct part {
+    size_t k, n;
+    double **xy;
+    size_t nv, cap_v;
+    int32_t *tri;
+    size_t nt, cap_t;
+    vtable *tab;
+    long ntab, cap_tab;
+    item *stack;
+    long top, cap_stack;
+    cm_partition_stats *st;
+    cm_error *err;
+    cm_progress *progress;
+} part;
+
+static cm_status no_memory(part *p) { return cm_fail_status(p->err, CM_ERR_NO_MEMORY); }
+
+/* ---- the mesh under construction ---------------------------------------- */
+
+/* pos[g] = the new vertex in geometry g. Returns its id or -1. All
+ * geometries share the capacity cap_v (in doubles). */
+static long add_vertex(part *p, const double *const *pos)
+{
+    size_t cap = p->cap_v;
+    for (size_t g = 0; g < p->k; g++) {
+        cap = p->cap_v;
+        if (cm_grow((void **)&p->xy[g], &cap, 2 * (p->nv + 1), sizeof(double)) != 0) return -1;
+    }
+    p->cap_v = cap;
+    for (size_t g = 0; g < p->k; g++) p->xy[g][2 * p->nv] = pos[g][0], p->xy[g][2 * p->nv + 1] = pos[g][1];
+    return (long)p->nv++;
+}
+
+static int add_triangle(part *p, int32_t a, int32_t b, int32_t c)
+{
+    if (cm_grow((void **)&p->tri, &p->cap_t, 3 * (p->nt + 1), sizeof *p->tri) != 0) return -1;
+    p->tri[3 * p->nt] = a, p->tri[3 * p->nt + 1] = b, p->tri[3 * p->nt + 2] = c;
+    p->nt++;
+    return 0;
+}
+
+static void item_free(item *it)
+{
+    free(it->gid), free(it->tix);
+    it->gid = it->tix = NULL;
+}
+
+/* Takes ownership of the item's arrays (freed on failure). */
+static int push_item(part *p, item it)
+{
+    size_t cap = (size_t)p->cap_stack;
+    if (cm_grow((void **)&p->stack, &cap, (size_t)p->top + 1, sizeof *p->stack) != 0) {
+        item_free(&it);
+        return -1;
+    }
+    p->cap_stack = (long)cap;
+    p->stack[p->top++] = it;
+    return 0;
+}
+
+/* A sub-item of it on the local vertices loc[0..m-1]. */
+static int push_sub(part *p, const item *it, const long *loc, long m, int stuck)
+{
+    item c = {malloc((size_t)m * sizeof(int32_t)), malloc((size_t)m * sizeof(int32_t)), m,
+              it->table, m == it->m ? it->repeat : 0, stuck};
+    if (!c.gid || !c.tix) {
+        item_free(&c);
+        return -1;
+    }
+    for (long i = 0; i < m; i++) c.gid[i] = it->gid[loc[i]], c.tix[i] = it->tix[loc[i]];
+    return push_item(p, c);
+}
+
+/* k arrays of the item's 2m local coordinates. */
+static double **local_xy(const part *p, const item *it)
+{
+    double **l = calloc(p->k, sizeof *l);
+    if (!l) return NULL;
+    for (size_t g = 0; g < p->k; g++) {
+        l[g] = malloc(2 * (size_t)it->m * sizeof **l);
+        if (!l[g]) {
+            for (size_t h = 0; h < g; h++) free(l[h]);
+            free(l);
+            return NULL;
+        }
+        for (long i = 0; i < it->m; i++) {
+            l[g][2 * i] = p->xy[g][2 * (size_t)it->gid[i]];
+            l[g][2 * i + 1] = p->xy[g][2 * (size_t)it->gid[i] + 1];
+        }
+    }
+    return l;
+}
+
+static void free_xy(double **l, size_t k)
+{
+    if (!l) return;
+    for (size_t g = 0; g < k; g++) free(l[g]);
+    free(l);
+}
+
+/* ---- common-diagonal tables ---------------------------------------------- */
+
+static long add_table(part *p, long m, unsigned char *common)
+{
+    size_t cap = (size_t)p->cap_tab;
+    if (cm_grow((void **)&p->tab, &cap, (size_t)p->ntab + 1, sizeof *p->tab) != 0) return -1;
+    p->cap_tab = (long)cap;
+    p->tab[p->ntab] = (vtable){m, common};
+    return p->ntab++;
+}
+
+/* ANDs the visibility of every geometry into common (m * m). tris[g] may
+ * be NULL: then geometry g is triangulated here. 0, -1 memory, 1 failed. */
+static int common_table(const double *const *xy, const int32_t *const *tris, size_t k, long m,
+                        unsigned char *common)
+{
+    size_t mm = (size_t)m * (size_t)m;
+    unsigned char *vis = malloc(mm);
+    int32_t *tri = malloc(3 * (size_t)m * sizeof *tri), *idx = malloc((size_t)m * sizeof *idx);
+    int status = -1;
+    if (!vis || !tri || !idx) goto done;
+    for (long i = 0; i < m; i++) idx[i] = (int32_t)i;
+    memset(common, 1, mm);
+    for (size_t g = 0; g < k; g++) {
+        const int32_t *t = tris ? tris[g] : tri;
+        if (!tris) {
+            status = cm_polygon_triangulate(xy[g], idx, m, tri);
+            if (status != 0) goto done;
+            status = -1;
+        }
+        if (cm_visibility_table(xy[g], m, t, vis) != 0) goto done;
+        for (size_t i = 0; i < mm; i++) common[i] &= vis[i];
+    }
+    status = 0;
+done:
+    free(vis), free(tri), free(idx);
+    return status;
+}
+
+static cm_status table_for_item(part *p, item *it)
+{
+    double t0 = cm_seconds_now();
+    long m = it->m;
+    double **l = local_xy(p, it);
+    unsigned char *common = malloc((size_t)m * (size_t)m);
+    it->tix = malloc((size_t)m * sizeof *it->tix);
+    int s = l && common && it->tix ? common_table((const double *const *)l, NULL, p->k, m, common) : -1;
+    free_xy(l, p->k);
+    if (s == 0) it->table = add_table(p, m, common);
+    if (s != 0 || it->table < 0) {
+        free(common);
+        if (s > 0) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: a sub-polygon is not simple");
+        return no_memory(p);
+    }
+    for (long i = 0; i < m; i++) it->tix[i] = (int32_t)i;
+    p->st->seconds_visibility += cm_seconds_now() - t0;
+    return CM_OK;
+}
+
+/* The item's m * m common-diagonal matrix in local indices. */
+static unsigned char *local_common(const part *p, const item *it)
+{
+    const vtable *t = &p->tab[it->table];
+    long m = it->m;
+    unsigned char *c = malloc((size_t)m * (size_t)m);
+    if (!c) return NULL;
+    for (long i = 0; i < m; i++) {
+        const unsigned char *row = t->common + (size_t)it->tix[i] * (size_t)t->m;
+        for (long j = 0; j < m; j++) c[(size_t)i * (size_t)m + (size_t)j] = row[it->tix[j]];
+    }
+    return c;
+}
+
+/* ---- steps ---------------------------------------------------------------- */
+
+static int add_item_triangle(part *p, const item *it, long a, long b, long c)
+{
+    return add_triangle(p, it->gid[a], it->gid[b], it->gid[c]);
+}
+
+/* A Steiner vertex at pos[g] and the fan from it over the item's local
+ * face f[0..n-1] (counter-clockwise). Returns 0 or -1. */
+static int emit_fan(part *p, const item *it, const int32_t *f, long n, const double *const *pos)
+{
+    long x = add_vertex(p, pos);
+    if (x < 0) return -1;
+    for (long s = 0; s < n; s++)
+        if (add_triangle(p, it->gid[f[s]], it->gid[f[(s + 1) % n]], (int32_t)x) != 0) return -1;
+    p->st->fans++;
+    return 0;
+}
+
+/* A point inside the kernel of the sub-polygon f[0..n-1] of l, in every
+ * geometry (pos: k rows of 2 doubles). Returns 1, 0 (not star-shaped in
+ * some geometry) or -1. */
+static int kernel_points(size_t k, double **l, const int32_t *f, long n, double *pos)
+{
+    double *xy = malloc(2 * (size_t)n * sizeof *xy);
+    if (!xy) return -1;
+    int found = 1;
+    for (size_t g = 0; g < k && found == 1; g++) {
+        for (long i = 0; i < n; i++) xy[2 * i] = l[g][2 * f[i]], xy[2 * i + 1] = l[g][2 * f[i] + 1];
+        found = cm_kernel_point(xy, n, pos + 2 * g);
+    }
+    free(xy);
+    return found;
+}
+
+/* Fan points worth a try: the kernel of the whole item (enough alone: one
+ * Steiner vertex for everything), else those of its largest stuck faces.
+ * cand gets up to max candidates of 2k doubles; returns their number or
+ * -1. */
+static int fan_candidates(size_t k, double **l, long m, const cm_sf_plan *plan, double *cand, int max)
+{
+    long *order = malloc((size_t)(plan->nf + 1) * sizeof *order);
+    int32_t *all = malloc((size_t)m * sizeof *all);
+    int count = 0, r = order && all ? 0 : -1;
+    for (long i = 0; r == 0 && i < m; i++) all[i] = (int32_t)i;
+    if (r == 0) r = kernel_points(k, l, all, m, cand);
+    if (r > 0) max = count = 1;
+    for (long f = 0; r >= 0 && f < plan->nf; f++) order[f] = f;
+    for (long a = 0; r >= 0 && a < plan->nf; a++) /* largest faces first */
+        for (long b = a + 1; b < plan->nf; b++) {
+            long na = plan->face_start[order[a] + 1] - plan->face_start[order[a]];
+            long nb = plan->face_start[order[b] + 1] - plan->face_start[order[b]];
+            if (nb > na) {
+                long t = order[a];
+                order[a] = order[b], order[b] = t;
+            }
+        }
+    for (long i = 0; r >= 0 && i < plan->nf && count < max; i++) {
+        long f = order[i], n = plan->face_start[f + 1] - plan->face_start[f];
+        r = kernel_points(k, l, plan->face + plan->face_start[f], n, cand + 2 * k * (size_t)count);
+        if (r > 0) count++;
+    }
+    free(order), free(all);
+    return r < 0 ? -1 : count;
+}
+
+/* Applies a plan: triangles out, fan faces fanned from their points
+ * (fans: 2k doubles per point), stuck faces back on the stack. */
+static int apply_plan(part *p, item *it, const cm_sf_plan *plan, const double *fans)
+{
+    int bad = 0;
+    for (long t = 0; t < plan->nt && !bad; t++)
+        bad = add_item_triangle(p, it, plan->tri[3 * t], plan->tri[3 * t + 1], plan->tri[3 * t + 2]);
+    long *loc = malloc((size_t)it->m * sizeof *loc);
+    const double **pos = calloc(p->k, sizeof *pos);
+    bad |= !loc || !pos;
+    for (long f = 0; f < plan->nf && !bad; f++) {
+        long m = plan->face_start[f + 1] - plan->face_start[f];
+        const int32_t *face = plan->face + plan->face_start[f];
+        if (plan->face_fan[f] >= 0) {
+            for (size_t g = 0; g < p->k; g++) pos[g] = fans + 2 * (p->k * (size_t)plan->face_fan[f] + g);
+            bad = emit_fan(p, it, face, m, pos);
+            continue;
+        }
+        for (long i = 0; i < m; i++) loc[i] = face[i];
+        bad = push_sub(p, it, loc, m, 1);
+    }
+    free(loc), free(pos);
+    return bad ? -1 : 0;
+}
+
+/* The Steiner-free program; when the item needs two or more Steiner
+ * vertices, the same program with fan points (kernel points of the item
+ * and of its stuck faces) may merge stuck faces into fans, one Steiner
+ * vertex each. */
+static cm_status plan_item(part *p, item *it, const unsigned char *common)
+{
+    enum { MAX_FANS = 8 };
+    double t0 = cm_seconds_now();
+    size_t k = p->k;
+    double **l = local_xy(p, it), *cand = malloc(MAX_FANS * 2 * k * sizeof *cand);
+    cm_sf_plan plan, other;
+    int fanned = 0, bad = !l || !cand;
+    if (!bad) bad = cm_steinerfree_plan(it->m, common, (const double *const *)l, k, NULL, 0, &plan) != 0;
+    int count = bad || plan.cost < 2 ? 0 : fan_candidates(k, l, it->m, &plan, cand, MAX_FANS);
+    bad |= count < 0;
+    if (!bad && count > 0) {
+        bad = cm_steinerfree_plan(it->m, common, (const double *const *)l, k, cand, (size_t)count, &other) != 0;
+        if (!bad && other.cost < plan.cost) {
+            cm_sf_plan_clear(&plan);
+            plan = other, fanned = 1;
+        } else if (!bad) {
+            cm_sf_plan_clear(&other);
+        }
+    }
+    if (!bad) {
+        p->st->dp_runs++;
+        p->st->steinerfree += plan.cost == 0;
+        bad = apply_plan(p, it, &plan, fanned ? cand : NULL) != 0;
+        cm_sf_plan_clear(&plan);
+    }
+    free_xy(l, k);
+    free(cand);
+    p->st->seconds_dp += cm_seconds_now() - t0;
+    return bad ? no_memory(p) : CM_OK;
+}
+
+/* A stuck face that is star-shaped in every geometry: one Steiner vertex,
+ * the fewest possible. Returns 1 done, 0 not star-shaped, -1 memory. */
+static int fan_face(part *p, item *it)
+{
+    size_t k = p->k;
+    double **l = local_xy(p, it), *pos = malloc(2 * k * sizeof *pos);
+    const double **rows = calloc(k, sizeof *rows);
+    int32_t *f = malloc((size_t)it->m * sizeof *f);
+    int r = l && pos && rows && f ? 0 : -1;
+    for (long i = 0; r == 0 && i < it->m; i++) f[i] = (int32_t)i;
+    if (r == 0) r = kernel_points(k, l, f, it->m, pos);
+    for (size_t g = 0; r == 1 && g < k; g++) rows[g] = pos + 2 * g;
+    if (r == 1 && emit_fan(p, it, f, it->m, rows) != 0) r = -1;
+    free_xy(l, k);
+    free(pos), free(rows), free(f);
+    return r;
+}
+
+/* Cuts along the most balanced common diagonal (the paper's tie-break).
+ * Returns 1 if cut, 0 if there is none, -1 out of memory. */
+static int greedy_split(part *p, item *it, const unsigned char *common)
+{
+    long m = it->m;
+    for (long span = m / 2; span >= 2; span--) {
+        for (long i = 0; i < m; i++) {
+            long j = (i + span) % m;
+            if (2 * span == m && i >= span) break;
+            if (!common[(size_t)i * (size_t)m + (size_t)j]) continue;
+            long *loc = malloc((size_t)(m + 1) * sizeof *loc), c = 0;
+            if (!loc) return -1;
+            for (long x = i;; x = (x + 1) % m) { loc[c++] = x; if (x == j) break; }
+            int bad = push_sub(p, it, loc, c, 0);
+            c = 0;
+            for (long x = j;; x = (x + 1) % m) { loc[c++] = x; if (x == i) break; }
+            bad = bad || push_sub(p, it, loc, c, 0);
+            free(loc);
+            p->st->greedy_splits++;
+            return bad ? -1 : 1;
+        }
+    }
+    return 0;
+}
+
+/* ---- cutting a stuck face along minimum-link paths ------------------------ */
+
+typedef struct { long u, v; int links, balance, sum; } pair;
+
+static int compare_pairs(const void *pa, const void *pb)
+{
+    const pair *a = pa, *b = pb;
+    if (a->links != b->links) return a->links < b->links ? -1 : 1;
+    if (a->balance != b->balance) return a->balance > b->balance ? -1 : 1;
+    if (a->sum != b->sum) return a->sum < b->sum ? -1 : 1;
+    if (a->u != b->u) return a->u < b->u ? -1 : 1;
+    return (a->v > b->v) - (a->v < b->v);
+}
+
+typedef struct {
+    part *p;
+    item *it;
+    double **l;          /* local coordinates per geometry */
+    cm_linkpart **lp;    /* per geometry */
+    int *dist;           /* k * m * m */
+} face_ctx;
+
+/* All pairs (u, v) the size guard allows, best first; *count of them. */
+static pair *rank_pairs(const face_ctx *f, long *count)
+{
+    long m = f->it->m;
+    size_t k = f->p->k;
+    pair *pairs = malloc((size_t)m * (size_t)m / 2 * sizeof *pairs + sizeof *pairs);
+    if (!pairs) return NULL;
+    *count = 0;
+    for (long u = 0; u < m; u++)
+        for (long v = u + 2; v < m; v++) {
+            if (u == 0 && v == m - 1) continue;
+            int links = 0, sum = 0;
+            for (size_t g = 0; g < k && links >= 0; g++) {
+                int d = f->dist[((size_t)g * (size_t)m + (size_t)u) * (size_t)m + (size_t)v];
+                if (d < 1) links = -1;
+                else links = d > links ? d : links, sum += d;
+            }
+            if (links < 0) continue;
+            long s1 = (v - u + 1) + links - 1, s2 = (m - (v - u) + 1) + links - 1;
+            if (s1 > m || s2 > m || ((s1 == m || s2 == m) && f->it->repeat)) continue;
+            long span = v - u < m - (v - u) ? v - u : m - (v - u);
+            pairs[(*count)++] = (pair){u, v, links, (int)span, sum};
+        }
+    qsort(pairs, (size_t)*count, sizeof *pairs, compare_pairs);
+    return pairs;
+}
+
+/* Inserts bends into the path u, b[0..nb-1], v (polygon xy, m vertices)
+ * until it has `want` bends: a point near the middle of the longest link
+ * that accepts one, pushed sideways by `offset` times the link's length
+ * (less if that is not valid), checked exactly. NULL if none fits. */
+static double *refine_path(const double *xy, long m, long u, long v, const double *b, long nb,
+                           long want, double offset)
+{
+    static const double at[] = {0.5, 0.35, 0.65};
+    const double side[] = {offset, 0.5 * offset, 0.2 * offset, 0.0};
+    double *pts = malloc(2 * (size_t)(want + 1) * sizeof *pts);
+    double *cand = malloc(2 * (size_t)(want + 1) * sizeof *cand);
+    long *order = malloc((size_t)(want + 2) * sizeof *order);
+    if (!pts || !cand || !order) goto fail;
+    if (nb > 0) memcpy(pts, b, 2 * (size_t)nb * sizeof *pts);
+    while (nb < want) {
+        /* links by decreasing length */
+        for (long i = 0; i <= nb; i++) order[i] = i;
+        for (long i = 0; i <= nb; i++)
+            for (long j = i + 1; j <= nb; j++) {
+                const double *a1 = order[i] == 0 ? xy + 2 * u : pts + 2 * (order[i] - 1);
+                const double *c1 = order[i] == nb ? xy + 2 * v : pts + 2 * order[i];
+                const double *a2 = order[j] == 0 ? xy + 2 * u : pts + 2 * (order[j] - 1);
+                const double *c2 = order[j] == nb ? xy + 2 * v : pts + 2 * order[j];
+                double l1 = hypot(c1[0] - a1[0], c1[1] - a1[1]), l2 = hypot(c2[0] - a2[0], c2[1] - a2[1]);
+                if (l2 > l1) {
+                    long t = order[i];
+                    order[i] = order[j], order[j] = t;
+                }
+            }
+        int done = 0;
+        for (long oi = 0; oi <= nb && !done; oi++) {
+            long best = order[oi];
+            const double *a = best == 0 ? xy + 2 * u : pts + 2 * (best - 1);
+            const double *c = best == nb ? xy + 2 * v : pts + 2 * best;
+            double dx = c[0] - a[0], dy = c[1] - a[1];
+            for (size_t si = 0; si < 4 && !done; si++)
+                for (size_t fi = 0; fi < 3 && !done; fi++) {
+                    double q[2] = {a[0] + at[fi] * dx - side[si] * dy, a[1] + at[fi] * dy + side[si] * dx};
+                    memcpy(cand, pts, 2 * (size_t)best * sizeof *cand);
+                    cand[2 * best] = q[0], cand[2 * best + 1] = q[1];
+                    memcpy(cand + 2 * (best + 1), pts + 2 * best, 2 * (size_t)(nb - best) * sizeof *cand);
+                    if (cm_path_valid(xy, m, u, v, cand, nb + 1)) {
+                        double *t = pts;
+                        pts = cand, cand = t;
+                        done = 1;
+                    }
+                }
+        }
+        if (!done) goto fail;
+        nb++;
+    }
+    free(cand), free(order);
+    return pts;
+fail:
+    free(pts), free(cand), free(order);
+    return NULL;
+}
+
+/* ---- choosing the refinement: what the halves' Steiner-free program says */
+
+/* Faces up to this size try several refinements of the shorter paths. */
+#define REFINE_SEARCH_MAX 48
+static const double offsets[] = {0.0, 0.12, -0.12, 0.3, -0.3};
+#define NOFFSETS (sizeof offsets / sizeof offsets[0])
+
+/* Estimated Steiner vertices of a polygon given by k coordinate arrays:
+ * its Steiner-free plan, each stuck face counted 1 if it is star-shaped in
+ * every geometry (a fan) and (vertices - 3) otherwise, or 1 if the whole
+ * polygon is star-shaped. -1 out of memory, LONG_MAX if not simple. */
+static long polygon_cost(size_t k, long m, double **xy)
+{
+    if (m <= 3) return 0;
+    unsigned char *common = malloc((size_t)m * (size_t)m);
+    double *pos = malloc(2 * k * sizeof *pos);
+    int32_t *all = malloc((size_t)m * sizeof *all);
+    long cost = -1;
+    cm_sf_plan plan;
+    int s = common && pos && all ? common_table((const double *const *)xy, NULL, k, m, common) : -1;
+    if (s > 0) cost = LONG_MAX;
+    if (s == 0 && cm_steinerfree_plan(m, common, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
+        cost = 0;
+        for (long f = 0; f < plan.nf && cost >= 0; f++) {
+            long n = plan.face_start[f + 1] - plan.face_start[f];
+            int star = kernel_points(k, xy, plan.face + plan.face_start[f], n, pos);
+            cost = star < 0 ? -1 : cost + (star ? 1 : n - 3);
+        }
+        for (long i = 0; i < m; i++) all[i] = (int32_t)i;
+        if (cost > 1) {
+            int star = kernel_points(k, xy, all, m, pos);
+            cost = star < 0 ? -1 : star ? 1 : cost;
+        }
+        cm_sf_plan_clear(&plan);
+    }
+    free(common), free(pos), free(all);
+    return cost;
+}
+
+/* Sum of the halves' stuck costs for the cut u -> bends -> v. */
+static long cut_cost(const face_ctx *f, const pair *pr, double **bends)
+{
+    size_t k = f->p->k;
+    long m = f->it->m, nb = pr->links - 1, total = 0;
+    double **xy = calloc(k, sizeof *xy);
+    if (!xy) return -1;
+    for (int half = 0; half < 2 && total >= 0 && total < LONG_MAX; half++) {
+        long from = half == 0 ? pr->u : pr->v, to = half == 0 ? pr->v : pr->u;
+        long size = (to - from + m) % m + 1 + nb, bad = 0;
+        for (size_t g = 0; g < k; g++) {
+            xy[g] = malloc(2 * (size_t)size * sizeof **xy);
+            bad |= !xy[g];
+        }
+        for (size_t g = 0; g < k && !bad; g++) {
+            long n = 0;
+            for (long x = from;; x = (x + 1) % m) {
+                xy[g][2 * n] = f->l[g][2 * x], xy[g][2 * n + 1] = f->l[g][2 * x + 1], n++;
+                if (x == to) break;
+            }
+            for (long j = 0; j < nb; j++) {
+                long b = half == 0 ? nb - 1 - j : j;
+                xy[g][2 * n] = bends[g][2 * b], xy[g][2 * n + 1] = bends[g][2 * b + 1], n++;
+            }
+        }
+        long c = bad ? -1 : polygon_cost(k, size, xy);
+        total = c < 0 ? -1 : c == LONG_MAX ? LONG_MAX : total + c;
+        for (size_t g = 0; g < k; g++) free(xy[g]), xy[g] = NULL;
+    }
+    free(xy);
+    return total;
+}
+
+/* Distance from p along the unit direction dir to the polygon boundary
+ * (doubles: it only places candidates). */
+static double free_run(const double *xy, long m, const double p[2], const double dir[2])
+{
+    double best = INFINITY;
+    for (long i = 0; i < m; i++) {
+        const double *a = xy + 2 * i, *b = xy + 2 * ((i + 1) % m);
+        double ex = b[0] - a[0], ey = b[1] - a[1], den = dir[0] * ey - dir[1] * ex;
+        if (den == 0) continue;
+        double t = ((a[0] - p[0]) * ey - (a[1] - p[1]) * ex) / den;
+        double s = ((a[0] - p[0]) * dir[1] - (a[1] - p[1]) * dir[0]) / den;
+        if (t > 1e-12 && s >= 0 && s <= 1 && t < best) best = t;
+    }
+    return best;
+}
+
+/* Single bends for u -> v other than the link path's: points seen from
+ * both, spread over u's corner. out: up to max points (2 doubles each). */
+static long sample_bends(const double *xy, long m, long u, long v, double *out, long max)
+{
+    const double *pu = xy + 2 * u, *pn = xy + 2 * ((u + 1) % m), *pp = xy + 2 * ((u + m - 1) % m);
+    double a0 = atan2(pn[1] - pu[1], pn[0] - pu[0]), span = atan2(pp[1] - pu[1], pp[0] - pu[0]) - a0;
+    while (span <= 0) span += 2 * CM_PI;
+    long count = 0;
+    for (int fi = 1; fi < 8 && count < max; fi++) {
+        double angle = a0 + span * fi / 8.0, dir[2] = {cos(angle), sin(angle)};
+        double run = free_run(xy, m, pu, dir);
+        for (int di = 1; di < 4 && isfinite(run) && count < max; di++) {
+            double y[2] = {pu[0] + run * di / 4.0 * dir[0], pu[1] + run * di / 4.0 * dir[1]};
+            if (cm_path_valid(xy, m, u, v, y, 1)) out[2 * count] = y[0], out[2 * count + 1] = y[1], count++;
+        }
+    }
+    return count;
+}
+
+/* Candidate bend arrays for one geometry (want bends each): the link
+ * path, refined with several sideways offsets when it is short, and for a
+ * single bend a spread of other points seen from both ends. */
+typedef struct {
+    double *bends; /* count * 2 * want doubles */
+    long count;
+} choices;
+
+#define MAX_SAMPLES 10
+
+static int cut_choices(const face_ctx *f, const pair *pr, size_t g, const double *path, long nb,
+                       int search, choices *c)
+{
+    long m = f->it->m, want = pr->links - 1, per = 2 * want;
+    size_t offsets_tried = search && nb < want ? NOFFSETS : 1;
+    c->count = 0;
+    c->bends = malloc(sizeof(double) * (size_t)(per > 0 ? per : 1) * (NOFFSETS + MAX_SAMPLES));
+    if (!c->bends) return -1;
+    for (size_t o = 0; o < offsets_tried; o++) {
+        double *b = refine_path(f->l[g], m, pr->u, pr->v, path, nb, want, offsets[o]);
+        if (!b) continue;
+        memcpy(c->bends + per * c->count++, b, sizeof(double) * (size_t)per);
+        free(b);
+    }
+    if (search && want == 1) c->count += sample_bends(f->l[g], m, pr->u, pr->v, c->bends + per * c->count, MAX_SAMPLES);
+    return 0;
+}
+
+/* Builds the cut for pair pr in every geometry: bends[g] gets links - 1
+ * bends. In a small face the choices of every geometry are searched
+ * (coordinate descent) for the cut whose halves need the fewest Steiner
+ * vertices, their estimate in *cost (0 when not estimated). Returns 1, 0
+ * (no valid cut), -1 out of memory. */
+static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
+{
+    size_t k = f->p->k;
+    long m = f->it->m, want = pr->links - 1, per = 2 * want;
+    int search = m <= REFINE_SEARCH_MAX;
+    choices *c = calloc(k, sizeof *c);
+    long *pick = calloc(k, sizeof *pick), best = LONG_MAX;
+    int result = c && pick ? 1 : -1;
+    for (size_t g = 0; g < k && result == 1; g++) {
+        double *path = NULL;
+        long nb = 0;
+        int links = cm_link_path(f->lp[g], pr->u, pr->v, &path, &nb);
+        int expect = f->dist[((size_t)g * (size_t)m + (size_t)pr->u) * (size_t)m + (size_t)pr->v];
+        if (links < 0) result = -1;
+        else if (links == 0 || links != expect) result = 0;
+        else if (cut_choices(f, pr, g, path, nb, search, &c[g]) != 0) result = -1;
+        else if (c[g].count == 0) result = 0;
+        free(path);
+    }
+    for (size_t g = 0; g < k && result == 1; g++) bends[g] = c[g].bends; /* views while searching */
+    if (result == 1 && search) best = cut_cost(f, pr, bends);
+    for (int pass = 0; pass < 2 && result == 1 && search && best > 0; pass++)
+        for (size_t g = 0; g < k && best > 0; g++)
+            for (long i = 0; i < c[g].count && best > 0; i++) {
+                if (i == pick[g]) continue;
+                bends[g] = c[g].bends + per * i;
+                long cost_i = cut_cost(f, pr, bends);
+                if (cost_i < 0) result = -1;
+                if (cost_i >= 0 && cost_i < best) best = cost_i, pick[g] = i;
+                bends[g] = c[g].bends + per * pick[g];
+            }
+    /* hand over copies of the picked choices */
+    for (size_t g = 0; g < k; g++) {
+        double *b = result == 1 ? malloc(sizeof(double) * (size_t)(per > 0 ? per : 1)) : NULL;
+        if (b) memcpy(b, c[g].bends + per * pick[g], sizeof(double) * (size_t)per);
+        if (result == 1 && !b) result = -1;
+        bends[g] = b;
+        if (c) free(c[g].bends);
+    }
+    *cost = search ? best : 0;
+    free(c), free(pick);
+    return result;
+}
+
+/* The two halves of the face cut by the path u -> bends -> v. */
+static int split_along(part *p, const item *it, const pair *pr, const long *steiner)
+{
+    long m = it->m, nb = pr->links - 1;
+    for (int half = 0; half < 2; half++) {
+        long from = half == 0 ? pr->u : pr->v, to = half == 0 ? pr->v : pr->u;
+        long size = (to - from + m) % m + 1 + nb;
+        item c = {malloc((size_t)size * sizeof(int32_t)), NULL, size, -1, size == m, 0};
+        if (!c.gid) return -1;
+        long n = 0;
+        for (long x = from;; x = (x + 1) % m) {
+            c.gid[n++] = it->gid[x];
+            if (x == to) break;
+        }
+        for (long j = 0; j < nb; j++) c.gid[n++] = (int32_t)steiner[half == 0 ? nb - 1 - j : j];
+        if (push_item(p, c) != 0) return -1;
+    }
+    return 0;
+}
+
+/* Cuts the face along the best valid pair: ranked by the paper's rule,
+ * the first LINK_EVALUATE valid cuts compared by bends plus the estimated
+ * Steiner vertices of their halves. 1 cut, 0 none worked, -1 memory. */
+static int cut_face(face_ctx *f)
+{
+    part *p = f->p;
+    size_t k = p->k;
+    long npairs = 0;
+    pair *pairs = rank_pairs(f, &npairs);
+    if (!pairs) return -1;
+    double **bends = calloc(k, sizeof *bends), **best = calloc(k, sizeof *best);
+    double **pos = calloc(k, sizeof *pos);
+    long best_pair = -1, best_total = LONG_MAX, valid = 0;
+    int result = bends && best && pos ? 0 : -1;
+    for (long c = 0; c < npairs && c < LINK_MAX_TRIES && valid < LINK_EVALUATE && result == 0; c++) {
+        if (best_pair >= 0 && pairs[c].links - 1 >= best_total) break; /* cannot win */
+        long cost = 0;
+        int s = build_cut(f, &pairs[c], bends, &cost);
+        if (s < 0) result = -1;
+        if (s == 1) {
+            valid++;
+            long total = pairs[c].links - 1 + cost;
+            if (total < best_total) {
+                best_total = total, best_pair = c;
+                for (size_t g = 0; g < k; g++) {
+                    free(best[g]);
+                    best[g] = bends[g], bends[g] = NULL;
+                }
+            }
+            if (cost == 0) break; /* halves Steiner-free: the ranking decides */
+        }
+        for (size_t g = 0; g < k; g++) free(bends[g]), bends[g] = NULL;
+    }
+    long *steiner = NULL;
+    if (result == 0 && best_pair >= 0) {
+        long nb = pairs[best_pair].links - 1;
+        steiner = malloc((size_t)(nb + 1) * sizeof *steiner);
+        result = steiner ? 1 : -1;
+        for (long j = 0; j < nb && result == 1; j++) {
+            for (size_t g = 0; g < k; g++) pos[g] = best[g] + 2 * j;
+            steiner[j] = add_vertex(p, (const double *const *)pos);
+            if (steiner[j] < 0) result = -1;
+        }
+        if (result == 1 && split_along(p, f->it, &pairs[best_pair], steiner) != 0) result = -1;
+        p->st->link_splits += result == 1;
+    }
+    for (size_t g = 0; bends && g < k; g++) free(bends[g]);
+    for (size_t g = 0; best && g < k; g++) free(best[g]);
+    free(steiner), free(pairs), free(bends), free(best), free(pos);
+    return result;
+}
+
+static int link_split(part *p, item *it)
+{
+    long m = it->m;
+    if (m > LINK_MAX_VERTICES) return 0;
+    double t0 = cm_seconds_now();
+    face_ctx f = {p, it, local_xy(p, it), calloc(p->k, sizeof(cm_linkpart *)),
+                  malloc(p->k * (size_t)m * (size_t)m * sizeof(int))};
+    int result = f.l && f.lp && f.dist ? 0 : -1;
+    for (size_t g = 0; g < p->k && result == 0; g++) {
+        f.lp[g] = cm_linkpart_create(f.l[g], m);
+        if (!f.lp[g]) result = -1;
+    }
+    /* Only the smallest largest link distance matters: deeper levels of
+     * the window partitions only when no pair is within the cap. */
+    for (int cap = 2; result == 0; cap = cap < 8 ? 2 * cap : INT_MAX) {
+        for (size_t g = 0; g < p->k && result == 0; g++)
+            for (long u = 0; u < m && result == 0; u++)
+                if (cm_link_distances_upto(f.lp[g], u, cap,
+                                           f.dist + ((size_t)g * (size_t)m + (size_t)u) * (size_t)m) != 0)
+                    result = -1;
+        if (result == 0) result = cut_face(&f);
+        if (result != 0 || cap == INT_MAX) break;
+    }
+    for (size_t g = 0; f.lp && g < p->k; g++) cm_linkpart_free(f.lp[g]);
+    free(f.lp), free(f.dist);
+    free_xy(f.l, p->k);
+    p->st->seconds_link += cm_seconds_now() - t0;
+    return result;
+}
+
+/* ---- the guaranteed fallback ---------------------------------------------- */
+
+static cm_status fallback(part *p, item *it)
+{
+    double t0 = cm_seconds_now();
+    long m = it->m;
+    size_t k = p->k;
+    double **l = local_xy(p, it);
+    int32_t **tris = calloc(k, sizeof *tris), *idx = malloc((size_t)m * sizeof *idx);
+    cm_mesh sub;
+    memset(&sub, 0, sizeof sub);
+    long *map = NULL;
+    double **pos = calloc(k, sizeof *pos);
+    cm_status s = CM_ERR_NO_MEMORY;
+    if (!l || !tris || !idx || !pos) goto done;
+    for (long i = 0; i < m; i++) idx[i] = (int32_t)i;
+    for (size_t g = 0; g < k; g++) {
+        tris[g] = malloc(3 * (size_t)(m - 2) * sizeof **tris);
+        if (!tris[g]) goto done;
+        int t = cm_polygon_triangulate(l[g], idx, m, tris[g]);
+        if (t < 0) goto done;
+        if (t > 0) {
+            s = cm_fail(p->err, CM_ERR_INTERNAL, "partition: a sub-polygon is not simple");
+            goto done;
+        }
+    }
+    size_t centroids = 0;
+    s = cm_overlay((const double *const *)l, (const int32_t *const *)tris, k, (size_t)m, &sub,
+                   &centroids, p->err);
+    if (s != CM_OK) goto done;
+    s = CM_ERR_NO_MEMORY;
+    map = malloc(sub.nv * sizeof *map);
+    if (!map) goto done;
+    for (size_t v = 0; v < sub.nv; v++) {
+        if ((long)v < m) {
+            map[v] = it->gid[v];
+            continue;
+        }
+        for (size_t g = 0; g < k; g++) pos[g] = sub.xy[g] + 2 * v;
+        map[v] = add_vertex(p, (const double *const *)pos);
+        if (map[v] < 0) goto done;
+    }
+    for (size_t t = 0; t < sub.nt; t++)
+        if (add_triangle(p, (int32_t)map[sub.tri[3 * t]], (int32_t)map[sub.tri[3 * t + 1]],
+                         (int32_t)map[sub.tri[3 * t + 2]]) != 0)
+            goto done;
+    p->st->fallback_count++;
+    s = CM_OK;
+done:
+    if (s == CM_ERR_NO_MEMORY) no_memory(p);
+    free_xy(l, k);
+    for (size_t g = 0; tris && g < k; g++) free(tris[g]);
+    free(tris), free(idx), free(map), free(pos);
+    cm_mesh_clear(&sub);
+    p->st->seconds_fallback += cm_seconds_now() - t0;
+    return s;
+}
+
+/* ---- one item ------------------------------------------------------------- */
+
+/* Steiner-free program, or a balanced common diagonal. 1 done, 0 stuck. */
+static int common_step(part *p, item *it, cm_status *s)
+{
+    long m = it->m;
+    unsigned char *common = local_common(p, it);
+    if (!common) {
+        *s = no_memory(p);
+        return 1;
+    }
+    long chords = cm_steinerfree_count(m, common);
+    int done = 1;
+    if (chords == 0) {
+        done = 0;
+    } else if (m <= CM_DP_MAX_VERTICES || (double)m * (double)(chords + m) <= DP_WORK_LIMIT) {
+        *s = plan_item(p, it, common);
+    } else {
+        int g = greedy_split(p, it, common);
+        if (g < 0) *s = no_memory(p);
+        done = g != 0;
+    }
+    free(common);
+    return done;
+}
+
+static cm_status process(part *p, item *it)
+{
+    if (it->m == 3)
+        return add_item_triangle(p, it, 0, 1, 2) == 0 ? CM_OK : no_memory(p);
+    cm_status s = CM_OK;
+    if (it->table < 0 && (s = table_for_item(p, it)) != CM_OK) return s;
+    if (!it->stuck && common_step(p, it, &s)) return s;
+    int cut = fan_face(p, it);
+    if (cut == 0) cut = link_split(p, it);
+    if (cut < 0) return no_memory(p);
+    return cut ? CM_OK : fallback(p, it);
+}
+
+static cm_status start(part *p, const double *const *geoms, const int32_t *const *tris)
+{
+    size_t k = p->k, n = p->n;
+    p->xy = calloc(k, sizeof *p->xy);
+    if (!p->xy) return no_memory(p);
+    p->cap_v = 4 * n; /* doubles: room for n Steiner vertices */
+    for (size_t g = 0; g < k; g++) {
+        p->xy[g] = malloc(p->cap_v * sizeof(double));
+        if (!p->xy[g]) return no_memory(p);
+        memcpy(p->xy[g], geoms[g], 2 * n * sizeof(double));
+    }
+    p->nv = n;
+    double t0 = cm_seconds_now();
+    unsigned char *common = malloc(n * n);
+    if (!common || common_table(geoms, tris, k, (long)n, common) != 0 || add_table(p, (long)n, common) < 0) {
+        free(common);
+        return no_memory(p);
+    }
+    p->st->seconds_visibility += cm_seconds_now() - t0;
+    item root = {malloc(n * sizeof(int32_t)), malloc(n * sizeof(int32_t)), (long)n, 0, 0, 0};
+    if (!root.gid || !root.tix) {
+        item_free(&root);
+        return no_memory(p);
+    }
+    for (size_t i = 0; i < n; i++) root.gid[i] = root.tix[i] = (int32_t)i;
+    return push_item(p, root) == 0 ? CM_OK : no_memory(p);
+}
+
+static void part_free(part *p)
+{
+    if (p->xy)
+        for (size_t g = 0; g < p->k; g++) free(p->xy[g]);
+    free(p->xy), free(p->tri);
+    for (long t = 0; t < p->ntab; t++) free(p->tab[t].common);
+    free(p->tab);
+    for (long i = 0; i < p->top; i++) item_free(&p->stack[i]);
+    free(p->stack);
+}
+
+cm_status cm_partition(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
+                       cm_progress *progress, cm_mesh *out, cm_partition_stats *stats,
+                       cm_error *err)
+{
+    part p;
+    memset(&p, 0, sizeof p);
+    memset(stats, 0, sizeof *stats);
+    p.k = k, p.n = n, p.st = stats, p.err = err, p.progress = progress;
+    if (n > CM_PARTITION_MAX_VERTICES) {
+        size_t centroids = 0;
+        stats->fallback_count = 1;
+        cm_status s = cm_overlay(geoms, tris, k, n, out, &centroids, err);
+        if (s == CM_OK) stats->steiner = out->nv - n;
+        return s;
+    }
+    cm_status s = start(&p, geoms, tris);
+    while (s == CM_OK && p.top > 0) {
+        item it = p.stack[--p.top];
+        s = process(&p, &it);
+        item_free(&it);
+        if (s == CM_OK && cm_progress_poll(progress, CM_STAGE_PARTITION, 0.0))
+            s = cm_fail_status(err, CM_ERR_CANCELLED);
+    }
+    if (s == CM_OK) {
+        out->k = k, out->nv = p.nv, out->nt = p.nt, out->xy = p.xy, out->tri = p.tri;
+        stats->steiner = p.nv - n;
+        p.xy = NULL, p.tri = NULL;
+    }
+    part_free(&p);
+    return s;
+}

@@ -1,0 +1,43 @@
+/* Near-optimal compatible triangulation by partition along minimum-link
+ * paths (Surazhsky & Gotsman, section 2). */
+#ifndef CM_PARTITION_H
+#define CM_PARTITION_H
+
+#include "base/error.h"
+#include "base/mesh.h"
+#include "base/progress.h"
+
+/* Sub-polygons up to this many vertices always get the exact Steiner-free
+ * dynamic program (O(m^3) at worst); larger ones get it when the number of
+ * common diagonals c keeps its O(m (m + c)) cost small, otherwise they are
+ * first split along the most balanced common diagonal. */
+#define CM_DP_MAX_VERTICES 300
+
+/* The common-diagonal table of the input takes n^2 bytes: beyond this many
+ * vertices the whole input goes to the overlay construction (counted as
+ * one fallback). */
+#define CM_PARTITION_MAX_VERTICES 6000
+
+typedef struct cm_partition_stats {
+    size_t steiner;        /* Steiner vertices of the result */
+    size_t fallback_count; /* sub-problems handed to the overlay construction */
+    size_t dp_runs;        /* Steiner-free programs run */
+    size_t steinerfree;    /* of those, sub-polygons triangulated without
+                              Steiner vertices */
+    size_t greedy_splits;  /* splits along a balanced common diagonal */
+    size_t link_splits;    /* splits along minimum-link paths with bends */
+    size_t fans;           /* faces triangulated from one Steiner vertex */
+    double seconds_visibility, seconds_dp, seconds_link, seconds_fallback;
+} cm_partition_stats;
+
+/* geoms: k arrays of 2n doubles, counter-clockwise simple polygons with
+ * corresponding vertices; tris: a triangulation of each (3 (n - 2) vertex
+ * indices). Writes a compatible triangulation into *out: the n polygon
+ * vertices first, then the Steiner vertices. o (may be NULL) supplies the
+ * progress callback. Returns CM_OK, CM_ERR_NO_MEMORY, CM_ERR_CANCELLED or
+ * CM_ERR_INTERNAL (message on err). The result is checked by the caller. */
+cm_status cm_partition(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
+                       cm_progress *progress, cm_mesh *out, cm_partition_stats *stats,
+                       cm_error *err);
+
+#endif

@@ -1,0 +1,405 @@
+/* The dynamic program of steinerfree.h.
+ *
+ * Vertices 0..m-1 in order; a "link" (a, b), a < b, is a common diagonal or
+ * a polygon edge b = a + 1. G(i, j) is the best decomposition of the
+ * sub-polygon i, i+1, ..., j closed by the link (i, j); its face on that
+ * link is a chain of links i = f0 < f1 < ... < ft = j (t >= 2): a triangle
+ * (t = 2, cost 0), a stuck face (cost t - 2), or a fan face from the fan
+ * point (t >= 3, cost 1), plus G of every chain link. Chains from i are
+ * built left to right, per row i: plain chains (one link, or two or more)
+ * and fan chains (links that admit the fan). The root is the whole
+ * polygon, closed by the edge (m - 1, 0). Values compare by cost, then by
+ * the smallest angle (larger is better), kept as sin^2 of that angle. */
+#include "construct/steinerfree.h"
+
+#include <limits.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "geom/predicates.h"
+
+typedef struct { long cost; double q; } val;
+
+static const val none = {LONG_MAX, 0.0};
+#define NO_TRIANGLE 2.0 /* quality of a value without triangles */
+
+static int better(val a, val b)
+{
+    return a.cost < b.cost || (a.cost == b.cost && a.q > b.q);
+}
+
+static int exists(val a) { return a.cost != LONG_MAX; }
+
+static val best_of(val a, val b) { return better(b, a) ? b : a; }
+
+enum { BY_TRIANGLE, BY_FACE, BY_FAN };
+
+/* Chains from the row's vertex i to l: one link or more, plain or fan. */
+typedef struct chains {
+    val one, more;   /* exactly one link; two or more */
+    int32_t arg;     /* for `more`: the vertex before l */
+    unsigned char from_more; /* `more` extends a chain of two or more */
+} chains;
+
+typedef struct dp {
+    long m;
+    const unsigned char *common;
+    const double *const *xy;
+    const double *fans; /* nfans candidates of k points (2 doubles each) */
+    size_t k, nfans;
+    long *start;      /* links ending at l: left[start[l] .. start[l+1]) */
+    int32_t *left;    /* ascending */
+    val *g;           /* per link */
+    int32_t *arg;     /* per link: the chain's last vertex before l */
+    unsigned char *by;
+    int16_t *fan_of;  /* per link: the fan point of a BY_FAN face */
+    double *fan_fwd, *fan_rev; /* per fan point and link a < b (nfans rows
+                                  of links): quality of the fan triangle on
+                                  a -> b (b -> a), -1 if the point is not
+                                  strictly left of it */
+    val root;
+    int32_t root_arg;
+    unsigned char root_by;
+    int16_t root_fan_of;
+    double *root_fan;  /* per fan point: the closing edge m-1 -> 0 */
+    long nlinks;
+    chains *plain, *fanned; /* the current row; fanned: nfans rows of m */
+} dp;
+
+static int is_link(const dp *d, long a, long b)
+{
+    if (b == a + 1) return 1;
+    if (a == 0 && b == d->m - 1) return 0; /* the closing edge: the root */
+    return d->common[(size_t)a * (size_t)d->m + (size_t)b] != 0;
+}
+
+/* sin^2 of the smallest angle of the triangle pa, pb, pc. */
+static double quality(const double *pa, const double *pb, const double *pc)
+{
+    double ux = pb[0] - pa[0], uy = pb[1] - pa[1], vx = pc[0] - pa[0], vy = pc[1] - pa[1];
+    double wx = pc[0] - pb[0], wy = pc[1] - pb[1];
+    double ab = ux * ux + uy * uy, ac = vx * vx + vy * vy, bc = wx * wx + wy * wy;
+    double cross = ux * vy - uy * vx, shortest = fmin(ab, fmin(ac, bc));
+    return shortest > 0 ? cross * cross * shortest / (ab * ac * bc) : 0.0;
+}
+
+/* Worst geometry's quality of triangle (a, b, c). */
+static double triangle_quality(const dp *d, long a, long b, long c)
+{
+    double q = NO_TRIANGLE;
+    for (size_t g = 0; g < d->k; g++)
+        q = fmin(q, quality(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->xy[g] + 2 * c));
+    return q;
+}
+
+/* The triangle from fan point x on the directed edge a -> b, or -1 if
+ * invalid in some geometry. */
+static double fan_quality(const dp *d, size_t x, long a, long b)
+{
+    double q = NO_TRIANGLE;
+    for (size_t g = 0; g < d->k; g++) {
+        const double *pa = d->xy[g] + 2 * a, *pb = d->xy[g] + 2 * b, *f = d->fans + 2 * (x * d->k + g);
+        if (cm_orient2d(pa, pb, f) <= 0) return -1.0;
+        q = fmin(q, quality(pa, pb, f));
+    }
+    return q;
+}
+
+static double fwd(const dp *d, size_t x, long s) { return d->fan_fwd[x * (size_t)d->nlinks + (size_t)s]; }
+static double rev(const dp *d, size_t x, long s) { return d->fan_rev[x * (size_t)d->nlinks + (size_t)s]; }
+static chains *fanned(const dp *d, size_t x, long l) { return &d->fanned[x * (size_t)d->m + (size_t)l]; }
+
+static long find_link(const dp *d, long a, long b)
+{
+    long lo = d->start[b], hi = d->start[b + 1] - 1;
+    while (lo <= hi) {
+        long mid = (lo + hi) / 2;
+        if (d->left[mid] == a) return mid;
+        if (d->left[mid] < a) lo = mid + 1; else hi = mid - 1;
+    }
+    return -1;
+}
+
+/* First link into l whose left end is > i. */
+static long first_after(const dp *d, long l, long i)
+{
+    long lo = d->start[l], hi = d->start[l + 1];
+    while (lo < hi) {
+        long mid = (lo + hi) / 2;
+        if (d->left[mid] <= i) lo = mid + 1; else hi = mid;
+    }
+    return lo;
+}
+
+/* The best decomposition so far for one link (or the root). */
+typedef struct {
+    val *value;
+    int32_t *arg;
+    unsigned char *by;
+    int16_t *fan_of;
+} slot;
+
+static void offer(val c, unsigned char how, int32_t a, int16_t fan, slot out)
+{
+    if (better(c, *out.value)) *out.value = c, *out.arg = a, *out.by = how, *out.fan_of = fan;
+}
+
+/* G for the link (i, l) (or the root): the face on it closes a chain of
+ * two links (a triangle), of three or more (a stuck face), or a fan chain
+ * of three or more from a fan point whose triangle on the closing edge
+ * l -> i is valid too (chord_fan(x) >= 0). */
+static void close_face(const dp *d, long i, long l, long chord, slot out)
+{
+    *out.value = none, *out.arg = -1, *out.by = BY_TRIANGLE, *out.fan_of = -1;
+    for (long s = first_after(d, l, i); s < d->start[l + 1]; s++) {
+        long a = d->left[s];
+        val gl = d->g[s];
+        const chains *pc = &d->plain[a];
+        if (exists(pc->one))
+            offer((val){pc->one.cost + gl.cost - 1, fmin(fmin(pc->one.q, gl.q), triangle_quality(d, i, a, l))},
+                  BY_TRIANGLE, (int32_t)a, -1, out);
+        if (exists(pc->more))
+            offer((val){pc->more.cost + gl.cost - 1, fmin(pc->more.q, gl.q)}, BY_FACE, (int32_t)a, -1, out);
+        for (size_t x = 0; x < d->nfans; x++) {
+            double closing = chord >= 0 ? rev(d, x, chord) : d->root_fan[x];
+            const chains *fc = fanned(d, x, a);
+            if (closing < 0 || fwd(d, x, s) < 0 || !exists(fc->more)) continue;
+            offer((val){fc->more.cost + gl.cost + 1, fmin(fmin(fc->more.q, gl.q), fmin(fwd(d, x, s), closing))},
+                  BY_FAN, (int32_t)a, (int16_t)x, out);
+        }
+    }
+}
+
+/* Extends the chains of one kind into l: best of one link or more. */
+static void extend(chains *c, long a, const chains *prev, val step, int fan)
+{
+    val from = best_of(prev->one, prev->more);
+    if (!exists(from)) return;
+    val v = {from.cost + step.cost + (fan ? 0 : 1), fmin(from.q, step.q)};
+    if (better(v, c->more)) c->more = v, c->arg = (int32_t)a, c->from_more = !better(prev->one, prev->more);
+}
+
+/* Chains from i to l, given G of the links into l and the row below l. A
+ * plain chain counts each link once (it adds a face vertex); a fan chain
+ * only collects G, the fan face costs 1 in all. */
+static void extend_chains(dp *d, long i, long l)
+{
+    long s = find_link(d, i, l);
+    chains *pc = &d->plain[l];
+    pc->one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
+    pc->more = none, pc->arg = -1;
+    for (size_t x = 0; x < d->nfans; x++) {
+        chains *fc = fanned(d, x, l);
+        fc->one = s >= 0 && fwd(d, x, s) >= 0 ? (val){d->g[s].cost, fmin(d->g[s].q, fwd(d, x, s))} : none;
+        fc->more = none, fc->arg = -1;
+    }
+    for (long t = first_after(d, l, i); t < d->start[l + 1]; t++) {
+        long a = d->left[t];
+        val gl = d->g[t];
+        extend(pc, a, &d->plain[a], gl, 0);
+        for (size_t x = 0; x < d->nfans; x++)
+            if (fwd(d, x, t) >= 0)
+                extend(fanned(d, x, l), a, fanned(d, x, a), (val){gl.cost, fmin(gl.q, fwd(d, x, t))}, 1);
+    }
+}
+
+/* The farthest l that row i needs: its farthest diagonal (the root's row
+ * needs them all). */
+static long reach(const dp *d, long i)
+{
+    if (i == 0) return d->m - 1;
+    const unsigned char *row = d->common + (size_t)i * (size_t)d->m;
+    for (long j = d->m - 1; j > i + 1; j--)
+        if (row[j]) return j;
+    return i + 1;
+}
+
+static void solve(dp *d)
+{
+    long m = d->m;
+    for (long i = m - 2; i >= 0; i--) {
+        long last = reach(d, i);
+        for (long l = i + 1; l <= last; l++) {
+            if (l > i + 1) {
+                long s = find_link(d, i, l);
+                if (s >= 0)
+                    close_face(d, i, l, s, (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]});
+                else if (i == 0 && l == m - 1)
+                    close_face(d, i, l, -1, (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of});
+            }
+            extend_chains(d, i, l);
+        }
+    }
+}
+
+static int build_links(dp *d)
+{
+    long m = d->m, count = 0;
+    d->start = calloc((size_t)m + 2, sizeof *d->start);
+    if (!d->start) return -1;
+    for (long b = 1; b < m; b++)
+        for (long a = 0; a < b; a++) count += is_link(d, a, b);
+    size_t c = (size_t)count + 1, f = d->nfans ? d->nfans : 1;
+    d->nlinks = count;
+    d->left = malloc(c * sizeof *d->left);
+    d->g = malloc(c * sizeof *d->g);
+    d->arg = malloc(c * sizeof *d->arg);
+    d->by = malloc(c);
+    d->fan_of = malloc(c * sizeof *d->fan_of);
+    d->fan_fwd = malloc(f * c * sizeof *d->fan_fwd);
+    d->fan_rev = malloc(f * c * sizeof *d->fan_rev);
+    d->root_fan = malloc(f * sizeof *d->root_fan);
+    if (!d->left || !d->g || !d->arg || !d->by || !d->fan_of || !d->fan_fwd || !d->fan_rev || !d->root_fan)
+        return -1;
+    long s = 0;
+    for (long b = 0; b < m; b++) {
+        d->start[b] = s;
+        for (long a = 0; a < b; a++) {
+            if (!is_link(d, a, b)) continue;
+            d->left[s] = (int32_t)a;
+            d->g[s] = b == a + 1 ? (val){0, NO_TRIANGLE} : none;
+            d->arg[s] = -1, d->by[s] = BY_TRIANGLE, d->fan_of[s] = -1;
+            for (size_t x = 0; x < d->nfans; x++) {
+                d->fan_fwd[x * (size_t)count + (size_t)s] = fan_quality(d, x, a, b);
+                d->fan_rev[x * (size_t)count + (size_t)s] = b == a + 1 ? -1.0 : fan_quality(d, x, b, a);
+            }
+            s++;
+        }
+    }
+    d->start[m] = d->start[m + 1] = s;
+    for (size_t x = 0; x < d->nfans; x++) d->root_fan[x] = fan_quality(d, x, m - 1, 0);
+    return 0;
+}
+
+/* ---- reading the plan back ------------------------------------------------ */
+
+typedef struct { long a, b; } link;
+
+static int push_link(link **stack, long *top, long *cap, long a, long b)
+{
+    if (b <= a + 1) return 0;
+    if (*top == *cap) {
+        long c = *cap ? 2 * *cap : 64;
+        link *s = realloc(*stack, (size_t)c * sizeof *s);
+        if (!s) return -1;
+        *stack = s, *cap = c;
+    }
+    (*stack)[(*top)++] = (link){a, b};
+    return 0;
+}
+
+static void add_triangle(cm_sf_plan *p, long a, long b, long c)
+{
+    p->tri[3 * p->nt] = (int32_t)a, p->tri[3 * p->nt + 1] = (int32_t)b, p->tri[3 * p->nt + 2] = (int32_t)c;
+    p->nt++;
+}
+
+/* The face on link (i, j) whose chain ends with link (a, j): its vertices
+ * go to the plan, its links to the stack. */
+static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link **stack, long *top,
+                    long *cap)
+{
+    for (long l = i + 1; l <= a; l++) extend_chains(d, i, l);
+    const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
+    long count = 0, v = a;
+    int32_t *f = p->face + p->face_start[p->nf];
+    f[count++] = (int32_t)j;
+    f[count++] = (int32_t)a;
+    for (int more = 1; more;) {
+        long prev = row[v].arg;
+        more = row[v].from_more;
+        f[count++] = (int32_t)prev;
+        v = prev;
+    }
+    if (f[count - 1] != i) f[count++] = (int32_t)i;
+    for (long x = 0, y = count - 1; x < y; x++, y--) {
+        int32_t t = f[x];
+        f[x] = f[y], f[y] = t;
+    }
+    p->face_fan[p->nf] = fan;
+    p->face_start[p->nf + 1] = p->face_start[p->nf] + count;
+    p->nf++;
+    for (long x = 0; x + 1 < count; x++)
+        if (push_link(stack, top, cap, f[x], f[x + 1]) != 0) return -1;
+    return 0;
+}
+
+static int read_plan(dp *d, cm_sf_plan *p)
+{
+    long m = d->m;
+    p->tri = malloc(3 * (size_t)m * sizeof *p->tri);
+    p->face = malloc(3 * (size_t)m * sizeof *p->face);
+    p->face_start = calloc((size_t)m + 1, sizeof *p->face_start);
+    p->face_fan = malloc((size_t)m * sizeof *p->face_fan);
+    link *stack = NULL;
+    long top = 0, cap = 0;
+    if (!p->tri || !p->face || !p->face_start || !p->face_fan || push_link(&stack, &top, &cap, 0, m - 1) != 0) {
+        free(stack);
+        return -1;
+    }
+    while (top > 0) {
+        link l = stack[--top];
+        int32_t a;
+        unsigned char by;
+        int fan;
+        if (l.a == 0 && l.b == m - 1) {
+            a = d->root_arg, by = d->root_by, fan = d->root_fan_of;
+        } else {
+            long s = find_link(d, l.a, l.b);
+            a = d->arg[s], by = d->by[s], fan = d->fan_of[s];
+        }
+        int bad;
+        if (by == BY_TRIANGLE) {
+            add_triangle(p, l.a, a, l.b);
+            bad = push_link(&stack, &top, &cap, l.a, a) || push_link(&stack, &top, &cap, a, l.b);
+        } else {
+            bad = add_face(d, p, l.a, a, l.b, by == BY_FAN ? fan : -1, &stack, &top, &cap);
+        }
+        if (bad) {
+            free(stack);
+            return -1;
+        }
+    }
+    free(stack);
+    return 0;
+}
+
+void cm_sf_plan_clear(cm_sf_plan *plan)
+{
+    free(plan->tri), free(plan->face), free(plan->face_start), free(plan->face_fan);
+    memset(plan, 0, sizeof *plan);
+}
+
+long cm_steinerfree_count(long m, const unsigned char *common)
+{
+    long count = 0;
+    for (long a = 0; a < m; a++)
+        for (long b = a + 2; b < m; b++)
+            if (!(a == 0 && b == m - 1)) count += common[(size_t)a * (size_t)m + (size_t)b] != 0;
+    return count;
+}
+
+int cm_steinerfree_plan(long m, const unsigned char *common, const double *const *xy, size_t k,
+                        const double *fans, size_t nfans, cm_sf_plan *plan)
+{
+    memset(plan, 0, sizeof *plan);
+    dp d;
+    memset(&d, 0, sizeof d);
+    d.m = m, d.common = common, d.xy = xy, d.k = k, d.fans = fans, d.nfans = fans ? nfans : 0;
+    d.root = none, d.root_fan_of = -1;
+    d.plain = malloc((size_t)m * sizeof *d.plain);
+    d.fanned = malloc((size_t)m * (d.nfans ? d.nfans : 1) * sizeof *d.fanned);
+    int status = -1;
+    if (d.plain && d.fanned && build_links(&d) == 0) {
+        solve(&d);
+        plan->cost = d.root.cost;
+        double q = fmin(d.root.q, 1.0);
+        plan->min_angle_deg = d.root.q >= NO_TRIANGLE ? 180.0 : asin(sqrt(q)) * 180.0 / 3.14159265358979323846;
+        status = read_plan(&d, plan);
+    }
+    free(d.start), free(d.left), free(d.g), free(d.arg), free(d.by), free(d.fan_of);
+    free(d.fan_fwd), free(d.fan_rev), free(d.root_fan), free(d.plain), free(d.fanned);
+    if (status != 0) cm_sf_plan_clear(plan);
+    return status;
+}

@@ -1,0 +1,15 @@
+/* Exact simplicity test of one closed polygon. */
+#ifndef CM_POLYGON_CHECK_H
+#define CM_POLYGON_CHECK_H
+
+/* Looks for two edges of the closed polygon xy[0..n-1] (edge i joins vertex
+ * i and i+1 mod n) that cross or touch, other than consecutive edges meeting
+ * at their shared vertex. Consecutive edges that overlap (a spike doubling
+ * back) count. Runs a Shamos-Hoey scan-line in O(n log n) with exact
+ * predicates. Assumes finite coordinates and no repeated vertex.
+ * Returns 1 and sets *edge_a < *edge_b if such a pair exists, 0 if the
+ * polygon is simple, -1 if out of memory. */
+int cm_polygon_find_intersection(const double *xy, long n, long *edge_a,
+                                 long *edge_b);
+
+#endif

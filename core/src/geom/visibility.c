@@ -1,0 +1,471 @@
+/* Visibility by cone propagation through a triangulation; see visibility.h. */
+#include "geom/visibility.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "geom/polytri.h"
+#include "geom/predicates.h"
+
+static int corner_of(const int32_t *tri, long t, int32_t v)
+{
+    for (int i = 0; i < 3; i++)
+        if (tri[3 * t + i] == v) return i;
+    return -1;
+}
+
+/* ---- the visibility table (double coordinates) --------------------------- */
+
+/* A pending crossing: enter triangle t through its edge from r (right, as
+ * seen from the source) to l, with the cone strictly between rays to b and
+ * a (b clockwise of a). */
+typedef struct { int32_t t, r, l, b, a; } crossing;
+
+typedef struct {
+    const double *xy;
+    long m;
+    const int32_t *tri, *nbr, *first; /* first[v]: 3t + corner of v, the
+                                         triangle holding edge v -> v+1 */
+    crossing *stack;
+} vis_ctx;
+
+#define XY(c, v) ((c)->xy + 2 * (size_t)(v))
+
+static int adjacent(long m, long s, long v)
+{
+    return v == (s + 1) % m || s == (v + 1) % m;
+}
+
+static void propagate(const vis_ctx *c, long s, unsigned char *row, long top)
+{
+    while (top > 0) {
+        crossing x = c->stack[--top];
+        const int32_t *t = c->tri + 3 * x.t;
+        int iz = 0;
+        while (t[iz] == x.r || t[iz] == x.l) iz++;
+        int32_t z = t[iz];
+        int oa = cm_orient2d(XY(c, s), XY(c, x.a), XY(c, z));
+        int ob = cm_orient2d(XY(c, s), XY(c, x.b), XY(c, z));
+        /* the edge r -> z lies opposite l, z -> l opposite r */
+        int32_t across_rz = c->nbr[3 * x.t + corner_of(c->tri, x.t, x.l)];
+        int32_t across_zl = c->nbr[3 * x.t + corner_of(c->tri, x.t, x.r)];
+        if (ob > 0 && oa < 0) {
+            row[z] = 1;
+            if (across_rz >= 0) c->stack[top++] = (crossing){across_rz, x.r, z, x.b, z};
+            if (across_zl >= 0) c->stack[top++] = (crossing){across_zl, z, x.l, z, x.a};
+        } else if (ob <= 0) {
+            if (across_zl >= 0) c->stack[top++] = (crossing){across_zl, z, x.l, x.b, x.a};
+        } else if (across_rz >= 0) {
+            c->stack[top++] = (crossing){across_rz, x.r, z, x.b, x.a};
+        }
+    }
+}
+
+/* Walks the fan of s counter-clockwise from the triangle holding s -> s+1. */
+static void visible_from(const vis_ctx *c, long s, unsigned char *row)
+{
+    long top = 0;
+    long slot = c->first[s];
+    while (slot >= 0) {
+        long t = slot / 3, cs = slot % 3;
+        int32_t x = c->tri[3 * t + (cs + 1) % 3], y = c->tri[3 * t + (cs + 2) % 3];
+        if (!adjacent(c->m, s, x)) row[x] = 1;
+        if (!adjacent(c->m, s, y)) row[y] = 1;
+        int32_t across = c->nbr[3 * t + cs];
+        if (across >= 0) c->stack[top++] = (crossing){across, x, y, x, y};
+        int32_t next = c->nbr[3 * t + (cs + 1) % 3];
+        slot = next >= 0 ? 3 * next + corner_of(c->tri, next, (int32_t)s) : -1;
+    }
+    propagate(c, s, row, top);
+}
+
+int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned char *vis)
+{
+    long nt = m - 2;
+    int32_t *nbr = malloc((size_t)(3 * nt) * sizeof *nbr);
+    int32_t *first = malloc((size_t)m * sizeof *first);
+    crossing *stack = malloc((size_t)(nt + 1) * sizeof *stack);
+    int status = -1;
+    if (!nbr || !first || !stack || cm_tri_adjacency(tri, nt, nbr) != 0) goto done;
+    for (long v = 0; v < m; v++) first[v] = -1;
+    for (long t = 0; t < nt; t++)
+        for (int i = 0; i < 3; i++)
+            if (tri[3 * t + (i + 1) % 3] == (tri[3 * t + i] + 1) % m) first[tri[3 * t + i]] = (int32_t)(3 * t + i);
+    vis_ctx c = {xy, m, tri, nbr, first, stack};
+    memset(vis, 0, (size_t)m * (size_t)m);
+    for (long s = 0; s < m; s++) visible_from(&c, s, vis + (size_t)s * (size_t)m);
+    status = 0;
+done:
+    free(nbr), free(first), free(stack);
+    return status;
+}
+
+/* ---- the exact segment test ---------------------------------------------- */
+
+/* Does the direction from vertex i toward point q leave into the interior? */
+static int leaves_inward(const double *xy, long m, long i, const double q[2])
+{
+    const double *p = xy + 2 * ((i + m - 1) % m), *v = xy + 2 * i, *n = xy + 2 * ((i + 1) % m);
+    int turn = cm_orient2d(p, v, n);
+    int left_of_in = cm_orient2d(p, v, q) > 0, left_of_out = cm_orient2d(v, n, q) > 0;
+    if (turn > 0) return left_of_in && left_of_out;
+    if (turn < 0) return left_of_in || left_of_out;
+    return left_of_in;
+}
+
+/* w collinear with a, b: is it on the same side of a as b? */
+static int same_direction(const double a[2], const double b[2], const double w[2])
+{
+    int axis = a[0] != b[0] ? 0 : 1;
+    return (w[axis] > a[axis]) == (b[axis] > a[axis]) && w[axis] != a[axis];
+}
+
+/* The polygon edge from a (a vertex, an end of segment ab) to w may meet
+ * ab only at a. */
+static int edge_touches_only_at_end(const double a[2], const double b[2], const double w[2])
+{
+    return cm_orient2d(a, b, w) != 0 || !same_direction(a, b, w);
+}
+
+int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long ib,
+                      const double b[2])
+{
+    if (a[0] == b[0] && a[1] == b[1]) return 0;
+    if (ia >= 0 && ib >= 0 && adjacent(m, ia, ib)) return 0;
+    for (long i = 0; i < m; i++) {
+        long j = (i + 1) % m;
+        const double *e0 = xy + 2 * i, *e1 = xy + 2 * j;
+        if (ia == i || ia == j) {
+            if (!edge_touches_only_at_end(a, b, ia == i ? e1 : e0)) return 0;
+            continue;
+        }
+        if (ib == i || ib == j) {
+            if (!edge_touches_only_at_end(b, a, ib == i ? e1 : e0)) return 0;
+            continue;
+        }
+        if (cm_segments_intersect(a, b, e0, e1) != 0) return 0;
+    }
+    if (ia >= 0 && !leaves_inward(xy, m, ia, b)) return 0;
+    if (ib >= 0 && !leaves_inward(xy, m, ib, a)) return 0;
+    if (ia < 0 && ib < 0) {
+        /* No contact with the boundary: inside iff a is inside. */
+        long crossings = 0;
+        for (long i = 0; i < m; i++) {
+            const double *e0 = xy + 2 * i, *e1 = xy + 2 * ((i + 1) % m);
+            int up = e0[1] <= a[1] && e1[1] > a[1], down = e1[1] <= a[1] && e0[1] > a[1];
+            if (up && cm_orient2d(e0, e1, a) > 0) crossings++;
+            if (down && cm_orient2d(e0, e1, a) < 0) crossings++;
+        }
+        return (int)(crossings & 1);
+    }
+    return 1;
+}
+
+/* ---- the kernel ----------------------------------------------------------- */
+
+/* Clips the convex polygon in[0..n-1] to the closed left side of a -> b. */
+static long clip_half_plane(const double *in, long n, const double *a, const double *b, double *out)
+{
+    long count = 0;
+    for (long i = 0; i < n; i++) {
+        const double *p = in + 2 * i, *q = in + 2 * ((i + 1) % n);
+        double sp = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+        double sq = (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]);
+        if (sp >= 0) out[2 * count] = p[0], out[2 * count + 1] = p[1], count++;
+        if ((sp >= 0) != (sq >= 0)) {
+            double t = sp / (sp - sq);
+            out[2 * count] = p[0] + t * (q[0] - p[0]), out[2 * count + 1] = p[1] + t * (q[1] - p[1]);
+            count++;
+        }
+    }
+    return count;
+}
+
+int cm_kernel_point(const double *xy, long m, double out[2])
+{
+    double lo[2] = {xy[0], xy[1]}, hi[2] = {xy[0], xy[1]};
+    for (long i = 1; i < m; i++)
+        for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], xy[2 * i + c]), hi[c] = fmax(hi[c], xy[2 * i + c]);
+    double *a = malloc(2 * (size_t)(m + 8) * sizeof *a), *b = malloc(2 * (size_t)(m + 8) * sizeof *b);
+    if (!a || !b) {
+        free(a), free(b);
+        return -1;
+    }
+    double pad = (hi[0] - lo[0]) + (hi[1] - lo[1]); /* any box around it */
+    double box[8] = {lo[0] - pad, lo[1] - pad, hi[0] + pad, lo[1] - pad,
+                     hi[0] + pad, hi[1] + pad, lo[0] - pad, hi[1] + pad};
+    memcpy(a, box, sizeof box);
+    long n = 4;
+    for (long i = 0; i < m && n >= 3; i++) {
+        n = clip_half_plane(a, n, xy + 2 * i, xy + 2 * ((i + 1) % m), b);
+        double *t = a;
+        a = b, b = t;
+    }
+    int found = 0;
+    if (n >= 3) {
+        /* area centroid: inside the kernel even when it is thin */
+        double area = 0, cx = 0, cy = 0;
+        for (long i = 0; i < n; i++) {
+            const double *p = a + 2 * i, *q = a + 2 * ((i + 1) % n);
+            double w = p[0] * q[1] - q[0] * p[1];
+            area += w, cx += (p[0] + q[0]) * w, cy += (p[1] + q[1]) * w;
+        }
+        if (area > 0) {
+            out[0] = cx / (3 * area), out[1] = cy / (3 * area);
+            found = 1;
+            for (long i = 0; i < m && found; i++)
+                found = cm_orient2d(xy + 2 * i, xy + 2 * ((i + 1) % m), out) > 0;
+        }
+    }
+    free(a), free(b);
+    return found;
+}
+
+/* ---- ear clipping over exact points -------------------------------------- */
+
+/* The ring of remaining vertices, their turn (sign of the orientation at
+ * the vertex), cached ear flags, and the vertices that are not strictly
+ * convex: only those can block an ear, and a vertex never turns from
+ * convex back to reflex while ears are cut. */
+typedef struct {
+    cm_xpool *pool;
+    const long *ids;
+    long *prev, *next, *blockers, nblockers;
+    signed char *turn, *ear, *gone;
+} ear_ctx;
+
+static int xo(const ear_ctx *e, long a, long b, long c)
+{
+    return cm_xorient(e->pool, e->ids[a], e->ids[b], e->ids[c]);
+}
+
+static int ear_blocked(ear_ctx *e, long a, long b, long c)
+{
+    long kept = 0;
+    int blocked = 0;
+    for (long i = 0; i < e->nblockers; i++) {
+        long v = e->blockers[i];
+        if (e->gone[v] || e->turn[v] > 0) continue; /* drop it for good */
+        e->blockers[kept++] = v;
+        if (blocked || v == a || v == b || v == c) continue;
+        blocked = xo(e, a, b, v) >= 0 && xo(e, b, c, v) >= 0 && xo(e, c, a, v) >= 0;
+    }
+    e->nblockers = kept;
+    return blocked;
+}
+
+static void update_vertex(ear_ctx *e, long v)
+{
+    e->turn[v] = (signed char)xo(e, e->prev[v], v, e->next[v]);
+    e->ear[v] = e->turn[v] > 0 && !ear_blocked(e, e->prev[v], v, e->next[v]);
+}
+
+static int clip(ear_ctx *e, long k, int32_t *tri_out)
+{
+    for (long i = 0; i < k; i++) e->prev[i] = (i + k - 1) % k, e->next[i] = (i + 1) % k, e->gone[i] = 0;
+    e->nblockers = 0;
+    for (long i = 0; i < k; i++) {
+        e->turn[i] = (signed char)xo(e, e->prev[i], i, e->next[i]);
+        if (e->turn[i] <= 0) e->blockers[e->nblockers++] = i;
+    }
+    for (long i = 0; i < k; i++) e->ear[i] = e->turn[i] > 0 && !ear_blocked(e, e->prev[i], i, e->next[i]);
+    long remaining = k, v = 0, misses = 0, t = 0;
+    while (remaining > 3) {
+        if (!e->ear[v]) {
+            if (++misses > remaining) return 1; /* no ear: not simple */
+            v = e->next[v];
+            continue;
+        }
+        long a = e->prev[v], c = e->next[v];
+        tri_out[3 * t] = (int32_t)a, tri_out[3 * t + 1] = (int32_t)v, tri_out[3 * t + 2] = (int32_t)c;
+        t++;
+        e->next[a] = c, e->prev[c] = a, e->gone[v] = 1;
+        remaining--;
+        update_vertex(e, a);
+        update_vertex(e, c);
+        misses = 0;
+        v = a;
+    }
+    if (xo(e, e->prev[v], v, e->next[v]) <= 0) return 1;
+    tri_out[3 * t] = (int32_t)e->prev[v], tri_out[3 * t + 1] = (int32_t)v,
+    tri_out[3 * t + 2] = (int32_t)e->next[v];
+    return 0;
+}
+
+int cm_xtriangulate(cm_xpool *pool, const long *ids, long k, int32_t *tri_out)
+{
+    size_t n = (size_t)k;
+    ear_ctx e = {pool, ids, malloc(n * sizeof(long)), malloc(n * sizeof(long)),
+                 malloc(n * sizeof(long)), 0, malloc(n), malloc(n), malloc(n)};
+    int status = -1;
+    if (e.prev && e.next && e.blockers && e.turn && e.ear && e.gone) status = clip(&e, k, tri_out);
+    free(e.prev), free(e.next), free(e.blockers), free(e.turn), free(e.ear), free(e.gone);
+    return status;
+}
+
+/* ---- visibility from a source: rooted dual tree, backward cones ---------- */
+
+void cm_vsource_clear(cm_vsource *vs)
+{
+    free(vs->tri), free(vs->nbr), free(vs->up), free(vs->depth);
+    free(vs->fan_start), free(vs->fan), free(vs->low);
+    memset(vs, 0, sizeof *vs);
+}
+
+static int is_root_triangle(const cm_vsource *vs, long t)
+{
+    const int32_t *c = vs->tri + 3 * t;
+    for (int i = 0; i < 3; i++) {
+        if (vs->source >= 0 && c[i] == vs->source) return 1;
+        if (vs->source < 0 && c[i] == vs->k - 1 && c[(i + 1) % 3] == 0) return 1;
+    }
+    return 0;
+}
+
+/* Breadth-first from the roots: depth and the corner facing the parent. */
+static int root_tree(cm_vsource *vs)
+{
+    long nt = vs->nt, head = 0, tail = 0;
+    int32_t *queue = malloc((size_t)nt * sizeof *queue);
+    if (!queue) return -1;
+    for (long t = 0; t < nt; t++) {
+        vs->depth[t] = -1, vs->up[t] = -1;
+        if (is_root_triangle(vs, t)) vs->depth[t] = 0, queue[tail++] = (int32_t)t;
+    }
+    while (head < tail) {
+        long t = queue[head++];
+        for (int i = 0; i < 3; i++) {
+            int32_t n = vs->nbr[3 * t + i];
+            if (n < 0 || vs->depth[n] >= 0) continue;
+            vs->depth[n] = vs->depth[t] + 1;
+            for (int j = 0; j < 3; j++)
+                if (vs->nbr[3 * n + j] == t) vs->up[n] = j;
+            queue[tail++] = n;
+        }
+    }
+    free(queue);
+    return 0;
+}
+
+static int build_fans(cm_vsource *vs)
+{
+    long k = vs->k, nt = vs->nt;
+    vs->fan_start = calloc((size_t)k + 1, sizeof *vs->fan_start);
+    vs->fan = malloc((size_t)(3 * nt + 1) * sizeof *vs->fan);
+    vs->low = malloc((size_t)k * sizeof *vs->low);
+    if (!vs->fan_start || !vs->fan || !vs->low) return -1;
+    for (long s = 0; s < 3 * nt; s++) vs->fan_start[vs->tri[s] + 1]++;
+    for (long v = 0; v < k; v++) vs->fan_start[v + 1] += vs->fan_start[v];
+    for (long s = 0; s < 3 * nt; s++) vs->fan[vs->fan_start[vs->tri[s]]++] = (int32_t)(s / 3);
+    for (long v = k; v > 0; v--) vs->fan_start[v] = vs->fan_start[v - 1];
+    vs->fan_start[0] = 0;
+    return 0;
+}
+
+/* Per vertex, the incident triangle of least depth. */
+static void find_low(cm_vsource *vs)
+{
+    for (long v = 0; v < vs->k; v++) {
+        vs->low[v] = vs->fan[vs->fan_start[v]];
+        for (long f = vs->fan_start[v] + 1; f < vs->fan_start[v + 1]; f++)
+            if (vs->depth[vs->fan[f]] < vs->depth[vs->low[v]]) vs->low[v] = vs->fan[f];
+    }
+}
+
+int cm_vsource_reroot(cm_vsource *vs, long source)
+{
+    vs->source = source;
+    if (root_tree(vs) != 0) return -1;
+    for (long t = 0; t < vs->nt; t++)
+        if (vs->depth[t] < 0) return 1; /* disconnected: not a triangulation */
+    find_low(vs);
+    return 0;
+}
+
+int cm_vsource_build(cm_vsource *vs, cm_xpool *pool, const long *ids, long k, long source)
+{
+    memset(vs, 0, sizeof *vs);
+    vs->pool = pool, vs->ids = ids, vs->k = k, vs->nt = k - 2, vs->source = source;
+    size_t nt = (size_t)(k - 2);
+    vs->tri = malloc(3 * nt * sizeof *vs->tri);
+    vs->nbr = malloc(3 * nt * sizeof *vs->nbr);
+    vs->up = malloc(nt * sizeof *vs->up);
+    vs->depth = malloc(nt * sizeof *vs->depth);
+    if (!vs->tri || !vs->nbr || !vs->up || !vs->depth) return -1;
+    int s = cm_xtriangulate(pool, ids, k, vs->tri);
+    if (s != 0) return s;
+    if (cm_tri_adjacency(vs->tri, vs->k - 2, vs->nbr) != 0 || build_fans(vs) != 0) return -1;
+    return cm_vsource_reroot(vs, source);
+}
+
+/* Narrows the cone (b, a) seen from p by a crossed diagonal from r (right)
+ * to l (left). Returns 0 if the cone became empty. */
+static int narrow(cm_xpool *pool, long p, long *a, long *b, long l, long r)
+{
+    if (cm_xorient(pool, p, *a, l) < 0) *a = l;
+    if (cm_xorient(pool, p, *b, r) > 0) *b = r;
+    return cm_xorient(pool, p, *b, *a) > 0;
+}
+
+/* From triangle t (not a root) up to the source, the cone starting at t's
+ * edge toward the root. */
+static int walk_up(const cm_vsource *vs, long p, long t, long *a, long *b)
+{
+    const long *ids = vs->ids;
+    int c = vs->up[t];
+    long la = ids[vs->tri[3 * t + (c + 2) % 3]], lb = ids[vs->tri[3 * t + (c + 1) % 3]];
+    t = vs->nbr[3 * t + c];
+    while (vs->up[t] >= 0) {
+        c = vs->up[t];
+        long l = ids[vs->tri[3 * t + (c + 2) % 3]], r = ids[vs->tri[3 * t + (c + 1) % 3]];
+        if (!narrow(vs->pool, p, &la, &lb, l, r)) return 0;
+        t = vs->nbr[3 * t + c];
+    }
+    if (vs->source < 0) {
+        if (!narrow(vs->pool, p, &la, &lb, ids[0], ids[vs->k - 1])) return 0;
+    } else {
+        long s = ids[vs->source];
+        if (cm_xorient(vs->pool, p, lb, s) <= 0 || cm_xorient(vs->pool, p, s, la) <= 0) return 0;
+        la = lb = s;
+    }
+    *a = la, *b = lb;
+    return 1;
+}
+
+static int root_cone(const cm_vsource *vs, long *a, long *b)
+{
+    if (vs->source < 0) {
+        *a = vs->ids[0], *b = vs->ids[vs->k - 1];
+    } else {
+        *a = *b = vs->ids[vs->source];
+    }
+    return 1;
+}
+
+int cm_vsource_vertex_cone(cm_vsource *vs, long i, long *a, long *b)
+{
+    long t = vs->low[i];
+    if (vs->source == i || (vs->source < 0 && (i == 0 || i == vs->k - 1))) return 0;
+    if (vs->depth[t] == 0) {
+        if (vs->source >= 0 && (i == (vs->source + 1) % vs->k || vs->source == (i + 1) % vs->k))
+            return 0; /* a polygon edge, not a diagonal */
+        return root_cone(vs, a, b);
+    }
+    if (vs->tri[3 * t + vs->up[t]] != i) return 0; /* cannot happen: low is lowest */
+    return walk_up(vs, vs->ids[i], t, a, b);
+}
+
+int cm_vsource_point_cone(cm_vsource *vs, long p, long *a, long *b)
+{
+    for (long t = 0; t < vs->nt; t++) {
+        const int32_t *c = vs->tri + 3 * t;
+        int inside = 1;
+        for (int i = 0; i < 3 && inside; i++)
+            inside = cm_xorient(vs->pool, vs->ids[c[i]], vs->ids[c[(i + 1) % 3]], p) > 0;
+        if (!inside) continue;
+        if (vs->depth[t] == 0) return root_cone(vs, a, b);
+        return walk_up(vs, p, t, a, b);
+    }
+    return -1;
+}

@@ -1,0 +1,82 @@
+/* Visibility in a simple polygon, exact.
+ *
+ * "v sees w" always means strict visibility: the open segment vw lies in the
+ * open interior of the polygon (it may not touch the boundary, not even at
+ * a vertex), and at a polygon vertex the segment leaves into the interior.
+ * Two polygon vertices see each other iff they span a diagonal.
+ *
+ * All visibility here works on a triangulation of the polygon: a sight line
+ * from a point crosses the triangles of one path of the dual tree, so the
+ * directions it can take form one cone, narrowed at each crossed diagonal
+ * by the diagonal's end points (cone propagation). Every decision is an
+ * exact orientation test. */
+#ifndef CM_VISIBILITY_H
+#define CM_VISIBILITY_H
+
+#include <stdint.h>
+
+#include "geom/xpoint.h"
+
+/* Visibility of a vertex: the whole table. xy holds the m vertices of a
+ * simple counter-clockwise polygon, tri a triangulation of it (m - 2
+ * triangles, vertex indices). Writes vis[s * m + v] = 1 if s sees v, else
+ * 0, for all s, v. O(m) per vertex s (each triangle is entered at most once
+ * from s). Returns 0, or -1 out of memory. */
+int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned char *vis);
+
+/* 1 if the open segment ab lies strictly inside the simple counter-clockwise
+ * polygon xy[0..m-1]. ia (ib) is the polygon vertex a (b) is, or -1 when a
+ * (b) is a point that must itself lie strictly inside. Exact, O(m). */
+int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long ib,
+                      const double b[2]);
+
+/* A point strictly inside the kernel of the simple counter-clockwise
+ * polygon xy[0..m-1] (the points that see the whole polygon), found by
+ * half-plane clipping in doubles and checked exactly: every edge has it
+ * strictly on its left, so the fan from it triangulates the polygon.
+ * Returns 1 and the point in out, 0 if none was found, -1 out of memory. */
+int cm_kernel_point(const double *xy, long m, double out[2]);
+
+/* Ear clipping over exact points: triangulates the simple counter-clockwise
+ * polygon with vertices ids[0..k-1] (pool ids) into k - 2 triangles of local
+ * indices (0..k-1) in tri_out. Returns 0, -1 out of memory, 1 no ear. */
+int cm_xtriangulate(cm_xpool *pool, const long *ids, long k, int32_t *tri_out);
+
+/* A triangulated polygon over exact points with a visibility source: one of
+ * its vertices (point source) or its closing edge ids[k-1] -> ids[0] (a
+ * window: what is visible from the window's open segment is weakly visible
+ * from it). The dual tree is rooted at the source's triangles. */
+typedef struct cm_vsource {
+    cm_xpool *pool;
+    const long *ids; /* k pool ids, counter-clockwise; owned by the caller */
+    long k, nt;
+    long source;     /* local index of a point source, -1 for the window */
+    int32_t *tri;    /* 3 nt local indices */
+    int32_t *nbr;    /* 3 nt */
+    int32_t *up;     /* per triangle: corner opposite the edge toward the
+                        root, -1 for root triangles */
+    int32_t *depth;  /* per triangle */
+    int32_t *fan_start, *fan; /* per vertex: incident triangles (CSR) */
+    int32_t *low;    /* per vertex: incident triangle of least depth */
+} cm_vsource;
+
+/* Triangulates and roots. Returns 0, -1 out of memory, 1 if the polygon
+ * could not be triangulated (not simple). */
+int cm_vsource_build(cm_vsource *vs, cm_xpool *pool, const long *ids, long k, long source);
+/* Roots the same triangulation at another point source (a vertex).
+ * Returns 0, -1 out of memory. */
+int cm_vsource_reroot(cm_vsource *vs, long source);
+void cm_vsource_clear(cm_vsource *vs);
+
+/* Does local vertex i see the source? For a window: does it see some point
+ * of the open window (i not an end of the window). Returns 1 and the cone
+ * of sight lines: *a, *b are pool ids such that the directions from vertex
+ * i that reach the source lie strictly counter-clockwise from b and
+ * strictly clockwise from a (for a point source *a = *b = the source);
+ * 0 if not visible. */
+int cm_vsource_vertex_cone(cm_vsource *vs, long i, long *a, long *b);
+/* The same for the point with pool id p: 1 visible (cone in *a, *b), 0 not
+ * visible, -1 if p is not strictly inside a triangle of the polygon. */
+int cm_vsource_point_cone(cm_vsource *vs, long p, long *a, long *b);
+
+#endif

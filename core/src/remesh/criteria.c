@@ -1,0 +1,94 @@
+/* What the boundary lets the remesher promise. Boundary edges are never
+ * split and corners keep their angle, so some triangles cannot reach the
+ * target however much the interior is refined; refining them anyway only
+ * piles up Steiner vertices. These caps tell the refinement when to stop.
+ *
+ * For boundary edge e = ab of length L, the isosceles triangle on e of
+ * height h is T(h) = {0 < d < h (1 - 2|s| / L)} in coordinates s along e
+ * from its midpoint and d inward. The T(h) grow with h, so the tallest that
+ * fits is found from the first boundary point entering: a point at (s, d)
+ * enters at h = d / (1 - 2|s| / L), a ratio of linear functions along each
+ * polygon edge, so only the ends of its clipped pieces matter. */
+#include <math.h>
+
+#include "remesh/criteria.h"
+#include "remesh/kmesh.h"
+
+static double corner_angle(const double *a, const double *b, const double *c)
+{
+    double ux = c[0] - b[0], uy = c[1] - b[1], vx = a[0] - b[0], vy = a[1] - b[1];
+    double t = atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+    return t < 0 ? t + 2 * CM_PI : t;
+}
+
+typedef struct frame { double mx, my, ux, uy, half; } frame; /* e's midpoint, direction, L/2 */
+
+static double entry_height(const frame *f, double px, double py)
+{
+    double rx = px - f->mx, ry = py - f->my;
+    double s = rx * f->ux + ry * f->uy, d = -rx * f->uy + ry * f->ux;
+    double room = 1 - fabs(s) / f->half;
+    return d > 0 && room > 0 ? d / room : HUGE_VAL;
+}
+
+/* Clips parameter interval [*t0, *t1] to {alpha + beta t > 0}. */
+static void clip(double alpha, double beta, double *t0, double *t1)
+{
+    if (beta == 0) {
+        if (!(alpha > 0)) *t0 = 1, *t1 = 0;
+    } else if (beta > 0) {
+        *t0 = fmax(*t0, -alpha / beta);
+    } else {
+        *t1 = fmin(*t1, -alpha / beta);
+    }
+}
+
+/* The lowest h at which segment pq enters T(h); ends shared with e are
+ * approached, not taken (the ratio is 0/0 there). */
+static double segment_entry(const frame *f, const double *p, const double *q, int p_shared,
+                            int q_shared)
+{
+    double t0 = p_shared ? 1e-7 : 0, t1 = q_shared ? 1 - 1e-7 : 1;
+    double rx = p[0] - f->mx, ry = p[1] - f->my, dx = q[0] - p[0], dy = q[1] - p[1];
+    double s0 = rx * f->ux + ry * f->uy, sd = dx * f->ux + dy * f->uy;
+    double d0 = -rx * f->uy + ry * f->ux, dd = -dx * f->uy + dy * f->ux;
+    clip(d0, dd, &t0, &t1);
+    clip(f->half - s0, -sd, &t0, &t1);
+    clip(f->half + s0, sd, &t0, &t1);
+    if (!(t0 <= t1)) return HUGE_VAL;
+    double h = fmin(entry_height(f, p[0] + t0 * dx, p[1] + t0 * dy),
+                    entry_height(f, p[0] + t1 * dx, p[1] + t1 * dy));
+    if (sd != 0) { /* the kink of |s| */
+        double ts = -s0 / sd;
+        if (ts > t0 && ts < t1) h = fmin(h, entry_height(f, p[0] + ts * dx, p[1] + ts * dy));
+    }
+    return h;
+}
+
+static double edge_cap(const double *xy, size_t n, size_t i)
+{
+    size_t j = (i + 1) % n;
+    const double *a = xy + 2 * i, *b = xy + 2 * j;
+    double L = hypot(b[0] - a[0], b[1] - a[1]);
+    frame f = {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), (b[0] - a[0]) / L, (b[1] - a[1]) / L, 0.5 * L};
+    double h = L * sqrt(3.0) / 2; /* equilateral: no need to look higher */
+    for (size_t e = 0; e < n; e++) {
+        if (e == i) continue;
+        size_t e1 = (e + 1) % n;
+        h = fmin(h, segment_entry(&f, xy + 2 * e, xy + 2 * e1, e == i || e == j, e1 == i || e1 == j));
+    }
+    return atan2(2 * h, L);
+}
+
+void cm_boundary_caps(const cm_mesh *mesh, size_t n, double *bcap, double *vcap)
+{
+    for (size_t i = 0; i < n; i++) bcap[i] = vcap[i] = CM_PI;
+    for (size_t g = 0; g < mesh->k; g++) {
+        const double *xy = mesh->xy[g];
+        for (size_t i = 0; i < n; i++) {
+            bcap[i] = fmin(bcap[i], edge_cap(xy, n, i));
+            double c = corner_angle(xy + 2 * ((i + n - 1) % n), xy + 2 * i, xy + 2 * ((i + 1) % n));
+            vcap[i] = fmin(vcap[i], 0.5 * c);
+        }
+    }
+}

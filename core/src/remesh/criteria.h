@@ -1,0 +1,25 @@
+/* What the remesher aims for, kept apart from the operations that get
+ * there (as CGAL keeps Delaunay_mesh_criteria_2 apart from its mesher):
+ * the angle target, the caps the boundary puts on it, and the smallest
+ * gain that counts. */
+#ifndef CM_REMESH_CRITERIA_H
+#define CM_REMESH_CRITERIA_H
+
+#include "base/mesh.h"
+
+/* Improvements smaller than this (radians) do not count: they would let
+ * rounding noise drive endless flips and moves. */
+#define CM_ANGLE_EPS 1e-9
+
+/* Boundary edge caps carry a margin: the isosceles estimate is what an
+ * ideal apex gets, the mesh around it rarely quite does. */
+#define CM_EDGE_CAP_MARGIN 0.9
+
+/* Caps from the boundary, per geometry the smallest (radians, n entries):
+ * bcap[i], the best smallest angle of an isosceles triangle on boundary
+ * edge i -> i+1 that fits inside the polygon (a boundary edge is never
+ * split, so its triangle can do no better, near enough); vcap[i], half the
+ * corner angle at vertex i (a corner split in two). */
+void cm_boundary_caps(const cm_mesh *mesh, size_t n, double *bcap, double *vcap);
+
+#endif

@@ -1,0 +1,600 @@
+/* The k-geometry corner-table mesh: construction, write-back, the local
+ * operations (flip, split, collapse, move) and the triangle quality index. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "remesh/kmesh.h"
+#include "remesh/kmesh_log.h"
+#include "geom/predicates.h"
+
+/* ---- storage ------------------------------------------------------------ */
+
+/* Free lists hold at most one entry per slot: sized with the slots, pushes
+ * onto them never allocate. */
+static int reserve_list(cm_ibuf *b, int32_t cap)
+{
+    if ((size_t)cap <= b->cap) return 0;
+    int32_t *a = realloc(b->a, (size_t)cap * sizeof *a);
+    if (!a) return -1;
+    b->a = a, b->cap = (size_t)cap;
+    return 0;
+}
+
+static int reserve_vertices(cm_kmesh *km, int32_t need)
+{
+    if (need <= km->cap_v) return 0;
+    int32_t cap = km->cap_v ? km->cap_v : 16;
+    while (cap < need) cap = cap + cap / 2 + 16;
+    for (size_t g = 0; g < km->k; g++) {
+        double *xy = realloc(km->xy[g], 2 * (size_t)cap * sizeof *xy);
+        if (!xy) return -1;
+        km->xy[g] = xy;
+    }
+    int32_t *vc = realloc(km->vc, (size_t)cap * sizeof *vc);
+    if (!vc) return -1;
+    km->vc = vc;
+    uint32_t *mark = realloc(km->mark, (size_t)cap * sizeof *mark);
+    if (!mark) return -1;
+    km->mark = mark;
+    double *vcap = realloc(km->vcap, (size_t)cap * sizeof *vcap);
+    if (!vcap) return -1;
+    km->vcap = vcap;
+    unsigned char *vdirty = realloc(km->vdirty, (size_t)cap);
+    if (!vdirty) return -1;
+    km->vdirty = vdirty;
+    if (reserve_list(&km->free_v, cap)) return -1;
+    for (int32_t v = km->cap_v; v < cap; v++) km->vc[v] = -1, km->mark[v] = 0, km->vcap[v] = CM_PI, km->vdirty[v] = 1;
+    km->cap_v = cap;
+    return 0;
+}
+
+static int reserve_triangles(cm_kmesh *km, int32_t need)
+{
+    if (need <= km->cap_t) return 0;
+    int32_t cap = km->cap_t ? km->cap_t : 16;
+    while (cap < need) cap = cap + cap / 2 + 16;
+    int32_t *tri = realloc(km->tri, 3 * (size_t)cap * sizeof *tri);
+    if (!tri) return -1;
+    km->tri = tri;
+    int32_t *opp = realloc(km->opp, 3 * (size_t)cap * sizeof *opp);
+    if (!opp) return -1;
+    km->opp = opp;
+    double *tkey = realloc(km->tkey, (size_t)cap * sizeof *tkey);
+    if (!tkey) return -1;
+    km->tkey = tkey;
+    double *slack = realloc(km->slack, (size_t)cap * sizeof *slack);
+    if (!slack) return -1;
+    km->slack = slack;
+    if (cm_heap_reserve(&km->tq, cap) || cm_heap_reserve(&km->eq, 3 * cap) ||
+        reserve_list(&km->free_t, cap))
+        return -1;
+    for (int32_t c = 3 * km->cap_t; c < 3 * cap; c++) km->tri[c] = -1, km->opp[c] = -1;
+    for (int32_t t = km->cap_t; t < cap; t++) km->tkey[t] = CM_PI, km->slack[t] = 0;
+    km->cap_t = cap;
+    return 0;
+}
+
+/* ---- slots (through the undo log) ------------------------------------------ */
+
+static void push_free_vertex(cm_kmesh *km, int32_t v)
+{
+    cm_ibuf_push(&km->free_v, v); /* never allocates: see reserve_list */
+    cm_log_free_list(km, v, CM_LOG_PUSH_V);
+}
+
+static void push_free_triangle(cm_kmesh *km, int32_t t)
+{
+    cm_ibuf_push(&km->free_t, t);
+    cm_log_free_list(km, t, CM_LOG_PUSH_T);
+}
+
+static int32_t new_vertex(cm_kmesh *km)
+{
+    if (km->free_v.n) {
+        int32_t v = km->free_v.a[--km->free_v.n];
+        cm_log_free_list(km, v, CM_LOG_POP_V);
+        km->vcap[v] = CM_PI;
+        return v;
+    }
+    if (reserve_vertices(km, km->nv + 1)) return -1;
+    km->vcap[km->nv] = CM_PI;
+    return km->nv++;
+}
+
+static int32_t new_triangle(cm_kmesh *km)
+{
+    if (km->free_t.n) {
+        int32_t t = km->free_t.a[--km->free_t.n];
+        cm_log_free_list(km, t, CM_LOG_POP_T);
+        return t;
+    }
+    if (reserve_triangles(km, km->nt + 1)) return -1;
+    return km->nt++;
+}
+
+void cm_kmesh_free(cm_kmesh *km)
+{
+    cm_kmesh_log_free(km->log);
+    if (km->xy)
+        for (size_t g = 0; g < km->k; g++) free(km->xy[g]);
+    free(km->xy), free(km->tri), free(km->opp), free(km->vc), free(km->scale);
+    free(km->tkey), free(km->slack), free(km->mark), free(km->bcap), free(km->vcap), free(km->vdirty);
+    cm_ibuf_free(&km->free_v), cm_ibuf_free(&km->free_t);
+    cm_heap_free(&km->tq), cm_heap_free(&km->eq);
+    memset(km, 0, sizeof *km);
+}
+
+/* ---- geometry ----------------------------------------------------------- */
+
+/* The smallest angle is opposite the shortest side: one atan2. */
+double cm_kmesh_tri_angle(const cm_kmesh *km, size_t g, int32_t t)
+{
+    const int32_t *v = km->tri + 3 * (size_t)t;
+    return cm_triangle_min_angle(cm_kmesh_pos(km, g, v[0]), cm_kmesh_pos(km, g, v[1]),
+                        cm_kmesh_pos(km, g, v[2]));
+}
+
+int cm_kmesh_tri_ok(const cm_kmesh *km, size_t g, int32_t a, int32_t b, int32_t c)
+{
+    return cm_orient2d(cm_kmesh_pos(km, g, a), cm_kmesh_pos(km, g, b), cm_kmesh_pos(km, g, c)) > 0;
+}
+
+/* The angle triangle t should reach. */
+static double triangle_target(const cm_kmesh *km, int32_t t)
+{
+    double target = km->target;
+    for (int32_t c = 3 * t; c < 3 * t + 3; c++) {
+        target = fmin(target, km->vcap[km->tri[c]]);
+        if (km->opp[c] < 0) target = fmin(target, km->bcap[km->tri[cm_next(c)]]);
+    }
+    return target;
+}
+
+double cm_kmesh_split_score(const cm_kmesh *km, int32_t c)
+{
+    int32_t o = km->opp[c], a = km->tri[cm_next(c)], b = km->tri[cm_prev(c)];
+    double alpha = fmax(fmin(km->tkey[c / 3], km->tkey[o / 3]), 1e-9), len = 0;
+    for (size_t g = 0; g < km->k; g++) len = fmax(len, cm_kmesh_rel_length(km, g, a, b));
+    return len / (alpha * alpha);
+}
+
+/* Files the edge opposite c under its smaller corner, if a triangle
+ * beside it still falls short of its target. */
+static void update_edge(cm_kmesh *km, int32_t c)
+{
+    int32_t o = km->opp[c];
+    if (o < 0) {
+        cm_heap_remove(&km->eq, c);
+        return;
+    }
+    int32_t lo = c < o ? c : o, hi = c < o ? o : c;
+    cm_heap_remove(&km->eq, hi);
+    if (km->slack[c / 3] < 0 || km->slack[o / 3] < 0)
+        cm_heap_set(&km->eq, lo, -cm_kmesh_split_score(km, c));
+    else
+        cm_heap_remove(&km->eq, lo);
+}
+
+void cm_kmesh_touch(cm_kmesh *km, int32_t t)
+{
+    double key = CM_PI;
+    for (size_t g = 0; g < km->k; g++) key = fmin(key, cm_kmesh_tri_angle(km, g, t));
+    km->tkey[t] = key;
+    km->slack[t] = key - triangle_target(km, t);
+    for (int i = 0; i < 3; i++) km->vdirty[km->tri[3 * t + i]] = 1;
+    cm_heap_set(&km->tq, t, km->slack[t]);
+    for (int32_t c = 3 * t; c < 3 * t + 3; c++) update_edge(km, c);
+}
+
+void cm_kmesh_set_caps(cm_kmesh *km, double target, const double *bcap, const double *vcap)
+{
+    km->target = target;
+    for (int32_t i = 0; i < km->n; i++) {
+        km->bcap[i] = bcap ? bcap[i] : CM_PI;
+        km->vcap[i] = vcap ? vcap[i] : CM_PI;
+    }
+    for (int32_t v = km->n; v < km->nv; v++) km->vcap[v] = CM_PI;
+    for (int32_t t = 0; t < km->nt; t++)
+        if (cm_kmesh_tri_live(km, t)) cm_kmesh_touch(km, t);
+    for (int32_t t = 0; t < km->nt; t++) /* neighbours' slack is final now */
+        if (cm_kmesh_tri_live(km, t))
+            for (int32_t c = 3 * t; c < 3 * t + 3; c++) update_edge(km, c);
+}
+
+double cm_kmesh_min_angle(const cm_kmesh *km)
+{
+    double lo = CM_PI;
+    for (int32_t t = 0; t < km->nt; t++)
+        if (cm_kmesh_tri_live(km, t)) lo = fmin(lo, km->tkey[t]);
+    return lo;
+}
+
+double cm_kmesh_rel_length(const cm_kmesh *km, size_t g, int32_t a, int32_t b)
+{
+    const double *p = cm_kmesh_pos(km, g, a), *q = cm_kmesh_pos(km, g, b);
+    return hypot(q[0] - p[0], q[1] - p[1]) / km->scale[g];
+}
+
+double cm_kmesh_min_slack(const cm_kmesh *km)
+{
+    int32_t t = cm_heap_top(&km->tq);
+    return t < 0 ? CM_PI : km->slack[t];
+}
+
+/* ---- construction ------------------------------------------------------- */
+
+typedef struct { int32_t lo, hi, corner; } edge_key;
+
+static int compare_edge_keys(const void *pa, const void *pb)
+{
+    const edge_key *a = pa, *b = pb;
+    if (a->lo != b->lo) return a->lo < b->lo ? -1 : 1;
+    if (a->hi != b->hi) return a->hi < b->hi ? -1 : 1;
+    return (a->corner > b->corner) - (a->corner < b->corner);
+}
+
+/* Pairs opposite corners. 0, -1 out of memory, -2 not a disk with the
+ * boundary 0 -> 1 -> ... -> n-1 -> 0. */
+static int pair_corners(cm_kmesh *km)
+{
+    size_t nc = 3 * (size_t)km->nt;
+    edge_key *e = malloc((nc + 1) * sizeof *e);
+    if (!e) return -1;
+    for (size_t c = 0; c < nc; c++) {
+        int32_t a = km->tri[cm_next((int32_t)c)], b = km->tri[cm_prev((int32_t)c)];
+        e[c] = (edge_key){a < b ? a : b, a < b ? b : a, (int32_t)c};
+    }
+    qsort(e, nc, sizeof *e, compare_edge_keys);
+    int32_t boundary = 0;
+    int status = 0;
+    for (size_t i = 0; i < nc && status == 0;) {
+        size_t j = i + 1;
+        while (j < nc && e[j].lo == e[i].lo && e[j].hi == e[i].hi) j++;
+        int32_t c = e[i].corner;
+        if (j - i == 2) {
+            int32_t d = e[i + 1].corner;
+            if (km->tri[cm_next(c)] != km->tri[cm_prev(d)]) status = -2;
+            km->opp[c] = d, km->opp[d] = c;
+        } else if (j - i == 1) {
+            int32_t a = km->tri[cm_next(c)], b = km->tri[cm_prev(c)];
+            if (a >= km->n || b != (a + 1) % km->n) status = -2;
+            boundary++;
+        } else {
+            status = -2;
+        }
+        i = j;
+    }
+    free(e);
+    return status == 0 && boundary != km->n ? -2 : status;
+}
+
+/* Every vertex must be one fan: closed inside, open on the boundary. */
+static int check_fans(const cm_kmesh *km)
+{
+    int32_t *count = calloc((size_t)km->nv + 1, sizeof *count);
+    cm_ibuf star = {0};
+    if (!count) return -1;
+    int status = 0;
+    for (int32_t c = 0; c < 3 * km->nt; c++) count[km->tri[c]]++;
+    for (int32_t v = 0; v < km->nv && status == 0; v++) {
+        long m = km->vc[v] < 0 ? -2 : cm_kmesh_star(km, v, &star);
+        if (m == -1) status = -1;
+        else if (m < 0 || m != count[v]) status = -2;
+    }
+    free(count);
+    cm_ibuf_free(&star);
+    return status;
+}
+
+static double polygon_area(const double *xy, int32_t n)
+{
+    double sum = 0;
+    for (int32_t i = 0; i < n; i++) {
+        int32_t j = (i + 1) % n;
+        sum += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
+    }
+    return 0.5 * sum;
+}
+
+cm_status cm_kmesh_build(cm_kmesh *km, const cm_mesh *m, size_t n)
+{
+    memset(km, 0, sizeof *km);
+    if (m->nv > (size_t)INT32_MAX / 8 || m->nt > (size_t)INT32_MAX / 8 || n < 3 || m->nv < n)
+        return CM_ERR_INTERNAL;
+    km->k = m->k;
+    km->n = (int32_t)n;
+    km->xy = calloc(m->k, sizeof *km->xy);
+    km->scale = malloc(m->k * sizeof *km->scale);
+    km->bcap = malloc(n * sizeof *km->bcap);
+    if (!km->xy || !km->scale || !km->bcap || cm_heap_init(&km->tq, 0) ||
+        cm_heap_init(&km->eq, 0) ||
+        reserve_vertices(km, (int32_t)(m->nv + m->nv / 4 + 16)) ||
+        reserve_triangles(km, (int32_t)(m->nt + m->nt / 4 + 16))) {
+        cm_kmesh_free(km);
+        return CM_ERR_NO_MEMORY;
+    }
+    km->nv = km->live_v = (int32_t)m->nv;
+    km->nt = km->live_t = (int32_t)m->nt;
+    for (size_t g = 0; g < m->k; g++) {
+        memcpy(km->xy[g], m->xy[g], 2 * m->nv * sizeof *m->xy[g]);
+        km->scale[g] = sqrt(fabs(polygon_area(m->xy[g], km->n)));
+        if (!(km->scale[g] > 0)) km->scale[g] = 1;
+    }
+    for (size_t c = 0; c < 3 * m->nt; c++) {
+        int32_t v = m->tri[c];
+        if (v < 0 || (size_t)v >= m->nv) {
+            cm_kmesh_free(km);
+            return CM_ERR_INTERNAL;
+        }
+        km->tri[c] = v;
+        km->vc[v] = (int32_t)c;
+    }
+    int s = pair_corners(km);
+    if (s == 0) s = check_fans(km);
+    if (s != 0) {
+        cm_kmesh_free(km);
+        return s == -1 ? CM_ERR_NO_MEMORY : CM_ERR_INTERNAL;
+    }
+    cm_kmesh_set_caps(km, 0.0, NULL, NULL);
+    return CM_OK;
+}
+
+cm_status cm_kmesh_write(const cm_kmesh *km, cm_mesh *m)
+{
+    size_t nv = (size_t)km->live_v, nt = (size_t)km->live_t;
+    int32_t *index = malloc(((size_t)km->nv + 1) * sizeof *index);
+    int32_t *tri = malloc((3 * nt + 1) * sizeof *tri);
+    double **xy = calloc(km->k, sizeof *xy);
+    int ok = index && tri && xy;
+    for (size_t g = 0; ok && g < km->k; g++) ok = (xy[g] = malloc(2 * nv * sizeof *xy[g])) != NULL;
+    if (!ok) {
+        if (xy)
+            for (size_t g = 0; g < km->k; g++) free(xy[g]);
+        free(index), free(tri), free(xy);
+        return CM_ERR_NO_MEMORY;
+    }
+    int32_t next = 0;
+    for (int32_t v = 0; v < km->nv; v++) {
+        index[v] = km->vc[v] < 0 ? -1 : next++;
+        if (index[v] < 0) continue;
+        for (size_t g = 0; g < km->k; g++) /* boundary coordinates: copied, never recomputed */
+            memcpy(xy[g] + 2 * (size_t)index[v], km->xy[g] + 2 * (size_t)v, 2 * sizeof(double));
+    }
+    size_t out = 0;
+    for (int32_t t = 0; t < km->nt; t++)
+        if (cm_kmesh_tri_live(km, t))
+            for (int i = 0; i < 3; i++) tri[out++] = index[km->tri[3 * t + i]];
+    for (size_t g = 0; g < m->k; g++) free(m->xy[g]);
+    free(m->xy), free(m->tri);
+    m->xy = xy, m->tri = tri, m->nv = nv, m->nt = nt;
+    free(index);
+    return CM_OK;
+}
+
+/* ---- navigation --------------------------------------------------------- */
+
+long cm_kmesh_star(const cm_kmesh *km, int32_t v, cm_ibuf *corners)
+{
+    corners->n = 0;
+    int32_t start = km->vc[v], c = start;
+    long guard = 3L * km->nt + 3;
+    if (start < 0) return -2;
+    if (cm_kmesh_is_boundary(km, v)) { /* back to the triangle on edge v -> v+1 */
+        while (km->opp[cm_prev(c)] >= 0) {
+            c = cm_prev(km->opp[cm_prev(c)]);
+            if (--guard < 0 || c == start) return -2;
+        }
+        start = c;
+    }
+    for (;;) {
+        if (cm_ibuf_push(corners, c)) return -1;
+        int32_t o = km->opp[cm_next(c)];
+        if (o < 0) return cm_kmesh_is_boundary(km, v) ? (long)corners->n : -2;
+        c = cm_next(o);
+        if (c == start) return cm_kmesh_is_boundary(km, v) ? -2 : (long)corners->n;
+        if (--guard < 0) return -2;
+    }
+}
+
+/* ---- operations --------------------------------------------------------- */
+
+/* Every write below goes through these, so the undo log sees it first. */
+static void set_corner(cm_kmesh *km, int32_t c, int32_t v)
+{
+    cm_log_triangle(km, c / 3);
+    km->tri[c] = v;
+}
+
+static void link_corners(cm_kmesh *km, int32_t a, int32_t b)
+{
+    cm_log_triangle(km, a / 3);
+    km->opp[a] = b;
+    if (b >= 0) {
+        cm_log_triangle(km, b / 3);
+        km->opp[b] = a;
+    }
+}
+
+static void set_vertex_corner(cm_kmesh *km, int32_t v, int32_t c)
+{
+    cm_log_vertex(km, v);
+    km->vc[v] = c;
+}
+
+static void set_position(cm_kmesh *km, size_t g, int32_t v, const double p[2])
+{
+    cm_log_vertex(km, v);
+    km->xy[g][2 * (size_t)v] = p[0];
+    km->xy[g][2 * (size_t)v + 1] = p[1];
+}
+
+void cm_kmesh_flip(cm_kmesh *km, int32_t c)
+{
+    int32_t o = km->opp[c];
+    int32_t v0 = km->tri[c], v1 = km->tri[cm_next(c)], v2 = km->tri[cm_prev(c)], v3 = km->tri[o];
+    int32_t b = km->opp[cm_next(o)], d = km->opp[cm_next(c)];
+    /* (v0 v1 v2) + (v3 v2 v1)  ->  (v0 v1 v3) + (v3 v2 v0) */
+    set_corner(km, cm_prev(c), v3);
+    set_corner(km, cm_prev(o), v0);
+    link_corners(km, c, b);
+    link_corners(km, o, d);
+    link_corners(km, cm_next(c), cm_next(o));
+    set_vertex_corner(km, v0, c), set_vertex_corner(km, v1, cm_next(c));
+    set_vertex_corner(km, v2, cm_next(o)), set_vertex_corner(km, v3, o);
+    cm_kmesh_touch(km, c / 3);
+    cm_kmesh_touch(km, o / 3);
+}
+
+int32_t cm_kmesh_split(cm_kmesh *km, int32_t c, const double *pts)
+{
+    int32_t m = new_vertex(km);
+    if (m < 0) return -1;
+    int32_t ta = new_triangle(km);
+    if (ta < 0) {
+        push_free_vertex(km, m);
+        return -1;
+    }
+    int32_t tb = new_triangle(km);
+    if (tb < 0) {
+        push_free_vertex(km, m), push_free_triangle(km, ta);
+        return -1;
+    }
+    for (size_t g = 0; g < km->k; g++) set_position(km, g, m, pts + 2 * g);
+    int32_t o = km->opp[c];
+    int32_t v0 = km->tri[c], v1 = km->tri[cm_next(c)], v2 = km->tri[cm_prev(c)], v3 = km->tri[o];
+    int32_t d = km->opp[cm_next(c)], b = km->opp[cm_next(o)];
+    int32_t a0 = 3 * ta, b0 = 3 * tb;
+    /* (v0 v1 v2) + (v3 v2 v1) -> (v0 v1 m) (v0 m v2) (v3 v2 m) (v3 m v1) */
+    set_corner(km, cm_prev(c), m);
+    set_corner(km, cm_prev(o), m);
+    set_corner(km, a0, v0), set_corner(km, a0 + 1, m), set_corner(km, a0 + 2, v2);
+    set_corner(km, b0, v3), set_corner(km, b0 + 1, m), set_corner(km, b0 + 2, v1);
+    link_corners(km, c, b0);
+    link_corners(km, cm_next(c), a0 + 2);
+    link_corners(km, a0, o);
+    link_corners(km, a0 + 1, d);
+    link_corners(km, cm_next(o), b0 + 2);
+    link_corners(km, b0 + 1, b);
+    set_vertex_corner(km, m, cm_prev(c)), set_vertex_corner(km, v0, c);
+    set_vertex_corner(km, v1, cm_next(c)), set_vertex_corner(km, v2, a0 + 2);
+    set_vertex_corner(km, v3, o);
+    km->live_v++, km->live_t += 2;
+    cm_kmesh_touch(km, c / 3), cm_kmesh_touch(km, o / 3);
+    cm_kmesh_touch(km, ta), cm_kmesh_touch(km, tb);
+    return m;
+}
+
+uint32_t cm_kmesh_new_stamp(cm_kmesh *km)
+{
+    if (++km->stamp == 0) { /* wrapped: clear the old stamps */
+        memset(km->mark, 0, (size_t)km->cap_v * sizeof *km->mark);
+        km->stamp = 1;
+    }
+    return km->stamp;
+}
+
+static long star_index(const cm_ibuf *star, int32_t c)
+{
+    for (size_t i = 0; i < star->n; i++)
+        if (star->a[i] == c) return (long)i;
+    return -1;
+}
+
+int cm_kmesh_collapse_ok_topology(cm_kmesh *km, int32_t c, const cm_ibuf *star)
+{
+    long m = (long)star->n, j = star_index(star, c);
+    if (j < 0 || m < 3) return 0;
+    int32_t v = km->tri[c], u = km->tri[cm_next(c)];
+    int32_t before = km->tri[cm_next(star->a[(j + m - 1) % m])];
+    int32_t after = km->tri[cm_next(star->a[(j + 1) % m])];
+    cm_kmesh_new_stamp(km);
+    for (long i = 0; i < m; i++) {
+        int32_t w = km->tri[cm_next(star->a[i])];
+        if (w != u && w != before && w != after) km->mark[w] = km->stamp;
+    }
+    /* Walk u's fan without a buffer: any other common neighbour fails. */
+    int32_t start = km->vc[u], e = start;
+    if (cm_kmesh_is_boundary(km, u)) {
+        while (km->opp[cm_prev(e)] >= 0) e = cm_prev(km->opp[cm_prev(e)]);
+        start = e;
+        if (km->mark[km->tri[cm_next(e)]] == km->stamp) return 0;
+    }
+    for (;;) {
+        int32_t w = km->tri[cm_prev(e)];
+        if (km->mark[w] == km->stamp && w != v) return 0;
+        int32_t o = km->opp[cm_next(e)];
+        if (o < 0) break;
+        e = cm_next(o);
+        if (e == start) break;
+    }
+    return 1;
+}
+
+static void kill_triangle(cm_kmesh *km, int32_t t)
+{
+    cm_log_triangle(km, t);
+    for (int i = 0; i < 3; i++) {
+        km->tri[3 * t + i] = -1, km->opp[3 * t + i] = -1;
+        cm_heap_remove(&km->eq, 3 * t + i);
+    }
+    cm_heap_remove(&km->tq, t);
+    push_free_triangle(km, t);
+    km->live_t--;
+}
+
+void cm_kmesh_collapse(cm_kmesh *km, int32_t c, const cm_ibuf *star)
+{
+    long m = (long)star->n, j = star_index(star, c);
+    const int32_t *s = star->a;
+    int32_t v = km->tri[c], u = km->tri[cm_next(c)];
+    int32_t cj = s[j], cb = s[(j + m - 1) % m], ca = s[(j + 1) % m], cbb = s[(j + m - 2) % m];
+    int32_t x = km->opp[cj], y = km->opp[cb];
+    link_corners(km, cm_prev(ca), x);
+    link_corners(km, cm_next(cbb), y);
+    for (long i = 0; i < m; i++)
+        if (i != j && i != (j + m - 1) % m) set_corner(km, s[i], u);
+    set_vertex_corner(km, u, ca);
+    set_vertex_corner(km, km->tri[cm_next(ca)], cm_next(ca));
+    set_vertex_corner(km, km->tri[cm_prev(cbb)], cm_prev(cbb));
+    kill_triangle(km, cj / 3);
+    kill_triangle(km, cb / 3);
+    set_vertex_corner(km, v, -1);
+    push_free_vertex(km, v);
+    km->live_v--;
+    for (long i = 0; i < m; i++)
+        if (i != j && i != (j + m - 1) % m) cm_kmesh_touch(km, s[i] / 3);
+}
+
+void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const cm_ibuf *star)
+{
+    for (size_t i = 0; i < star->n; i++) cm_log_triangle(km, star->a[i] / 3); /* their keys change */
+    set_position(km, g, v, p);
+    for (size_t i = 0; i < star->n; i++) cm_kmesh_touch(km, star->a[i] / 3);
+}
+
+/* ---- full check ---------------------------------------------------------- */
+
+int cm_kmesh_check(const cm_kmesh *km)
+{
+    int32_t boundary = 0, live = 0;
+    for (int32_t t = 0; t < km->nt; t++) {
+        if (!cm_kmesh_tri_live(km, t)) continue;
+        live++;
+        const int32_t *v = km->tri + 3 * (size_t)t;
+        for (size_t g = 0; g < km->k; g++)
+            if (!cm_kmesh_tri_ok(km, g, v[0], v[1], v[2])) return 0;
+        for (int i = 0; i < 3; i++) {
+            int32_t c = 3 * t + i, o = km->opp[c];
+            int32_t a = km->tri[cm_next(c)], b = km->tri[cm_prev(c)];
+            if (km->vc[v[i]] < 0 || km->tri[km->vc[v[i]]] != v[i]) return 0;
+            if (o < 0) {
+                if (a >= km->n || b != (a + 1) % km->n) return 0;
+                boundary++;
+            } else if (km->opp[o] != c || km->tri[cm_next(o)] != b || km->tri[cm_prev(o)] != a) {
+                return 0;
+            }
+        }
+    }
+    return boundary == km->n && live == km->live_t;
+}

@@ -1,0 +1,135 @@
+/* One connectivity, k geometries: the mesh the remesher edits in place.
+ *
+ * A corner table (Rossignac): corner c = 3t + i is vertex tri[c] of triangle
+ * t; opp[c] is the corner across the edge opposite c in the neighbouring
+ * triangle, -1 on the boundary. Triangles are counter-clockwise in every
+ * geometry. Vertices 0..n-1 are the polygon, counter-clockwise in order, and
+ * never move; every other vertex is an interior Steiner vertex. Removed
+ * triangles and vertices leave dead slots (tri[3t] = -1, vc[v] = -1) that
+ * later insertions reuse; cm_kmesh_write compacts.
+ *
+ * The mesh also keeps, for every live triangle, its quality key tkey: the
+ * smallest angle in radians over all k geometries; its slack, tkey minus
+ * the angle the triangle should reach (the target, lowered where the
+ * boundary allows less: see cm_kmesh_set_caps), in a min-heap, so the
+ * worst triangle is always at hand; and a max-heap of the refinement
+ * candidates, the interior edges beside a triangle of negative slack, by
+ * the split score of eq. (5). Every operation below keeps them current.
+ *
+ * Operations do not check validity: the callers (flip.c, smooth.c, ...)
+ * test each candidate exactly with cm_kmesh_tri_ok first. */
+#ifndef CM_KMESH_H
+#define CM_KMESH_H
+
+#include "base/buf.h"
+#include "base/error.h"
+#include "base/heap.h"
+#include "base/mesh.h"
+#include "geom/angle.h"
+
+typedef struct cm_kmesh {
+    size_t k;
+    int32_t n;             /* boundary vertices */
+    int32_t nv, nt;        /* vertex / triangle slots in use, dead included */
+    int32_t cap_v, cap_t;
+    int32_t live_v, live_t;
+    double **xy;           /* k arrays of 2 * cap_v */
+    int32_t *tri, *opp;    /* 3 * cap_t */
+    int32_t *vc;           /* vertex -> one of its corners; -1 dead */
+    cm_ibuf free_v, free_t;
+    double *scale;         /* per geometry: sqrt(polygon area), for lengths */
+    double *tkey;          /* triangle: smallest angle over geometries */
+    double *slack;         /* triangle: tkey minus its target */
+    cm_heap tq;            /* live triangles by slack */
+    cm_heap eq;            /* candidate edges (smaller corner) by -score */
+    double target;         /* radians; 0 until cm_kmesh_set_caps */
+    double *bcap;          /* n: per boundary edge i -> i+1 */
+    double *vcap;          /* per vertex: half the corner angle (boundary), pi */
+    unsigned char *vdirty; /* vertex: a triangle around it changed since
+                              cm_smooth_optimize last found it optimal */
+    uint32_t *mark;        /* scratch vertex stamps */
+    uint32_t stamp;
+    struct cm_kmesh_log *log; /* undo log, NULL until the first transaction */
+} cm_kmesh;
+
+static inline int32_t cm_next(int32_t c) { return c % 3 == 2 ? c - 2 : c + 1; }
+static inline int32_t cm_prev(int32_t c) { return c % 3 == 0 ? c + 2 : c - 1; }
+static inline const double *cm_kmesh_pos(const cm_kmesh *km, size_t g, int32_t v)
+{
+    return km->xy[g] + 2 * (size_t)v;
+}
+static inline int cm_kmesh_is_boundary(const cm_kmesh *km, int32_t v) { return v < km->n; }
+static inline int cm_kmesh_tri_live(const cm_kmesh *km, int32_t t) { return km->tri[3 * t] >= 0; }
+
+/* Builds from a compatible triangulation whose vertices 0..n-1 are the
+ * counter-clockwise boundary. CM_OK, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL
+ * when the triangle list is not a manifold disk with that boundary. */
+cm_status cm_kmesh_build(cm_kmesh *km, const cm_mesh *m, size_t n);
+/* Replaces m's arrays with the compacted mesh: boundary vertices keep their
+ * indices and bit-identical coordinates, Steiner vertices follow in slot
+ * order. CM_OK or CM_ERR_NO_MEMORY (m unchanged). */
+cm_status cm_kmesh_write(const cm_kmesh *km, cm_mesh *m);
+void cm_kmesh_free(cm_kmesh *km);
+
+/* Corners at v in counter-clockwise order; for a boundary vertex the first
+ * corner's triangle holds the edge v -> v + 1 and the last one v - 1 -> v.
+ * Returns the count, or -1 out of memory. */
+long cm_kmesh_star(const cm_kmesh *km, int32_t v, cm_ibuf *corners);
+
+/* Triangle t's smallest angle in geometry g. */
+double cm_kmesh_tri_angle(const cm_kmesh *km, size_t g, int32_t t);
+/* 1 if (a, b, c) is strictly counter-clockwise in geometry g (exact). */
+int cm_kmesh_tri_ok(const cm_kmesh *km, size_t g, int32_t a, int32_t b, int32_t c);
+/* Recomputes t's quality key. */
+void cm_kmesh_touch(cm_kmesh *km, int32_t t);
+/* Length of edge ab in geometry g over that geometry's scale. */
+double cm_kmesh_rel_length(const cm_kmesh *km, size_t g, int32_t a, int32_t b);
+
+/* Flips the interior edge opposite corner c. Afterwards c and opp[c] hold
+ * the two far vertices: the new edge is opposite cm_next(c). */
+void cm_kmesh_flip(cm_kmesh *km, int32_t c);
+/* Splits the interior edge opposite corner c at the points pts (2k
+ * doubles, one point per geometry). Returns the new vertex, -1 out of
+ * memory. The new vertex's corners: cm_prev(c) is one of them. */
+int32_t cm_kmesh_split(cm_kmesh *km, int32_t c, const double *pts);
+/* 1 if removing interior vertex tri[c] by moving it onto u = tri[next(c)]
+ * keeps the mesh a manifold disk (the link condition). */
+int cm_kmesh_collapse_ok_topology(cm_kmesh *km, int32_t c, const cm_ibuf *star);
+/* Collapses the edge from v = tri[c] (interior) to u = tri[next(c)]; star
+ * holds v's corners as from cm_kmesh_star. v's slot and the two triangles
+ * on the edge die. */
+void cm_kmesh_collapse(cm_kmesh *km, int32_t c, const cm_ibuf *star);
+/* Moves interior vertex v in geometry g and refreshes the keys around it. */
+void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const cm_ibuf *star);
+
+/* Transactions: after cm_kmesh_tx_begin every change is logged until
+ * commit or rollback; rollback restores the mesh exactly. tx_region gives
+ * the smallest tkey over the triangles the transaction changed, before
+ * and after. begin returns 0 or -1 out of memory; region and rollback
+ * return -1 when the log ran out of memory (the changes then stay). */
+int cm_kmesh_tx_begin(cm_kmesh *km);
+int cm_kmesh_tx_region(const cm_kmesh *km, double *before, double *after);
+void cm_kmesh_tx_commit(cm_kmesh *km);
+int cm_kmesh_tx_rollback(cm_kmesh *km);
+
+/* Full exact check (tests): adjacency symmetric, every live triangle
+ * counter-clockwise in every geometry, boundary edges exactly i -> i+1.
+ * Returns 1 when valid. */
+int cm_kmesh_check(const cm_kmesh *km);
+
+/* A fresh value for km->mark[v] == stamp tests (vertex sets). */
+uint32_t cm_kmesh_new_stamp(cm_kmesh *km);
+
+/* Smallest slack over live triangles (radians), pi when empty. */
+double cm_kmesh_min_slack(const cm_kmesh *km);
+/* Smallest angle over all triangles and geometries (radians); O(t). */
+double cm_kmesh_min_angle(const cm_kmesh *km);
+/* Sets the target angle (radians) and the caps: a triangle on boundary
+ * edge i -> i+1 should reach min(target, bcap[i]), one at corner i
+ * min(target, vcap[i]) (n entries each, radians; NULL: no cap). */
+void cm_kmesh_set_caps(cm_kmesh *km, double target, const double *bcap, const double *vcap);
+/* Split score of eq. (5) of the interior edge opposite c: the largest
+ * relative length over geometries over alpha_min(e)^2. */
+double cm_kmesh_split_score(const cm_kmesh *km, int32_t c);
+
+#endif

@@ -1,0 +1,75 @@
+/* Edge-split refinement (paper eq. 5). Candidates are the interior edges
+ * beside a triangle that falls short of its target (kmesh.h keeps them by
+ * score); boundary edges are never split, so a bad corner ear is refined
+ * through its one interior edge. */
+#include <math.h>
+#include <stdlib.h>
+
+#include "geom/predicates.h"
+#include "remesh/refine.h"
+
+/* Midpoints per geometry; 1 if the four new triangles are all valid. */
+static int midpoints_ok(const cm_kmesh *km, int32_t c, double *pts)
+{
+    int32_t o = km->opp[c];
+    int32_t v0 = km->tri[c], v1 = km->tri[cm_next(c)], v2 = km->tri[cm_prev(c)], v3 = km->tri[o];
+    for (size_t g = 0; g < km->k; g++) {
+        const double *p0 = cm_kmesh_pos(km, g, v0), *p1 = cm_kmesh_pos(km, g, v1),
+                     *p2 = cm_kmesh_pos(km, g, v2), *p3 = cm_kmesh_pos(km, g, v3);
+        double *m = pts + 2 * g;
+        m[0] = 0.5 * (p1[0] + p2[0]), m[1] = 0.5 * (p1[1] + p2[1]);
+        if (cm_orient2d(p0, p1, m) <= 0 || cm_orient2d(p0, m, p2) <= 0 ||
+            cm_orient2d(p3, p2, m) <= 0 || cm_orient2d(p3, m, p1) <= 0)
+            return 0;
+    }
+    return 1;
+}
+
+long cm_refine_candidates(const cm_kmesh *km, long max, int32_t *out)
+{
+    if (max > INT32_MAX / 4) max = INT32_MAX / 4;
+    return cm_heap_smallest(&km->eq, (int32_t)max, 0.0, out, out + max);
+}
+
+int32_t cm_refine_split(cm_kmesh *km, int32_t c)
+{
+    if (km->tri[c] < 0 || km->opp[c] < 0) return -2;
+    double *pts = malloc(2 * km->k * sizeof *pts);
+    if (!pts) return -1;
+    int32_t m = midpoints_ok(km, c, pts) ? cm_kmesh_split(km, c, pts) : -2;
+    free(pts);
+    return m;
+}
+
+int cm_refine_take_quad(cm_kmesh *km, int32_t c, uint32_t stamp)
+{
+    int32_t q[4] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)], km->tri[km->opp[c]]};
+    for (int i = 0; i < 4; i++)
+        if (km->mark[q[i]] == stamp) return 0;
+    for (int i = 0; i < 4; i++) km->mark[q[i]] = stamp;
+    return 1;
+}
+
+long cm_refine_step(cm_kmesh *km, long k_split, cm_work *touched)
+{
+    long want = k_split < 1000000 ? 4 * k_split + 8 : 4000008;
+    int32_t *cand = malloc((size_t)want * 3 * sizeof *cand);
+    if (!cand) return -1;
+    long nc = cm_refine_candidates(km, want, cand), splits = 0;
+    /* Quads of this round share no vertex, so the splits are independent. */
+    uint32_t stamp = cm_kmesh_new_stamp(km);
+    for (long i = 0; i < nc && splits < k_split; i++) {
+        int32_t c = cand[i];
+        if (km->tri[c] < 0 || km->opp[c] < 0 || !cm_refine_take_quad(km, c, stamp)) continue;
+        int32_t m = cm_refine_split(km, c);
+        if (m == -2) continue;
+        if (m < 0 || cm_work_push(touched, m)) {
+            free(cand);
+            return -1;
+        }
+        km->mark[m] = stamp;
+        splits++;
+    }
+    free(cand);
+    return splits;
+}

@@ -1,0 +1,528 @@
+/* Algorithm 1 (compatible remeshing), preceded by a cleanup that removes
+ * the construction's surplus Steiner vertices and followed by a coarsening
+ * that removes those the result does not need:
+ *
+ *   collapse Steiner vertices wherever valid; flips + smoothing
+ *   while a triangle falls short of its target and the budget lasts:
+ *       split up to k_split edges (eq. 5), each followed by flips +
+ *       smoothing around it
+ *       every area_every rounds: area equalisation; flips + smoothing
+ *   flips + smoothing everywhere
+ *   while a move gains: forced moves around the worst triangles
+ *   collapse Steiner vertices where no angle drops below the target
+ *   flips + smoothing everywhere
+ *
+ * "flips + smoothing" alternates compatible flips with smart smoothing of
+ * each geometry until nothing improves, driven by work lists, so a split
+ * costs work near it only. Where the smoothing formulas are stuck beside a
+ * triangle short of its target, a small search for the best position
+ * takes over (cm_smooth_optimize).
+ *
+ * Each split (with its repair) and each area equalisation is a
+ * transaction: it is undone when the smallest angle of the triangles it
+ * changed went down, so refinement never makes the mesh worse; an edge
+ * whose split was undone twice is not tried again. Refinement stops at the
+ * target, the Steiner budget, the round cap, or when the smallest angle
+ * has stopped rising. The greedy operations then sit in a local optimum;
+ * forced moves step back from it (a flip the angle rule refuses, the
+ * removal of a Steiner vertex, a split, each followed by the repair) and
+ * are kept only when the triangles they changed end up better. What is
+ * left after that is beyond local repair (typically a correspondence that
+ * forces a strong distortion: bench/correspondence_bound.py measures it). */
+#include <math.h>
+#include <stdlib.h>
+
+#include "remesh/remesh.h"
+#include "remesh/areaeq.h"
+#include "remesh/collapse.h"
+#include "remesh/criteria.h"
+#include "remesh/flip.h"
+#include "remesh/refine.h"
+#include "remesh/smooth.h"
+#include "base/clock.h"
+#include "geom/angle.h"
+
+/* Sweeps of flips + smoothing after one split; the polish sweeps over the
+ * whole mesh at the end. */
+#define CM_IMPROVE_SWEEPS 4
+#define CM_POLISH_SWEEPS 16
+/* Undone splits of one edge before it is given up. */
+#define CM_SPLIT_TRIES 2
+/* Refinement stops when the smallest angle has not risen by CM_PROGRESS
+ * (radians, about 0.06 degrees) over stall_limit() splits. */
+#define CM_PROGRESS 1e-3
+/* The short triangles a round of forced moves looks at. */
+#define CM_STEP_OUT_WORST 8
+
+typedef struct tabu_set { /* vertex pairs -> undone splits */
+    uint64_t *keys;       /* 0: empty slot */
+    unsigned char *count;
+    size_t cap, used;
+} tabu_set;
+
+typedef struct remesher {
+    cm_kmesh km;
+    cm_work verts, edges;
+    cm_ibuf star, batch;
+    tabu_set tabu;
+    const cm_options *o;
+    cm_progress *progress;
+    double target; /* radians */
+    long flips;
+} remesher;
+
+/* ---- edges not to split again --------------------------------------------- */
+
+static uint64_t pair_key(int32_t a, int32_t b)
+{
+    uint64_t lo = (uint32_t)(a < b ? a : b), hi = (uint32_t)(a < b ? b : a);
+    return (hi << 32 | lo) + 1;
+}
+
+static size_t tabu_slot(const tabu_set *t, uint64_t key)
+{
+    size_t i = (size_t)((key * 0x9E3779B97F4A7C15ull) >> 17) & (t->cap - 1);
+    while (t->keys[i] && t->keys[i] != key) i = (i + 1) & (t->cap - 1);
+    return i;
+}
+
+static int tabu_count(const tabu_set *t, int32_t a, int32_t b)
+{
+    if (!t->cap) return 0;
+    size_t i = tabu_slot(t, pair_key(a, b));
+    return t->keys[i] ? t->count[i] : 0;
+}
+
+static int tabu_grow(tabu_set *t)
+{
+    size_t cap = t->cap ? 2 * t->cap : 256;
+    uint64_t *keys = calloc(cap, sizeof *keys);
+    unsigned char *count = calloc(cap, 1);
+    if (!keys || !count) {
+        free(keys), free(count);
+        return -1;
+    }
+    tabu_set bigger = {keys, count, cap, t->used};
+    for (size_t i = 0; i < t->cap; i++)
+        if (t->keys[i]) {
+            size_t j = tabu_slot(&bigger, t->keys[i]);
+            keys[j] = t->keys[i], count[j] = t->count[i];
+        }
+    free(t->keys), free(t->count);
+    *t = bigger;
+    return 0;
+}
+
+static int tabu_add(tabu_set *t, int32_t a, int32_t b, int times)
+{
+    if (2 * (t->used + 1) > t->cap && tabu_grow(t)) return -1;
+    uint64_t key = pair_key(a, b);
+    size_t i = tabu_slot(t, key);
+    if (!t->keys[i]) t->keys[i] = key, t->count[i] = 0, t->used++;
+    t->count[i] = (unsigned char)(t->count[i] + times > 200 ? 200 : t->count[i] + times);
+    return 0;
+}
+
+/* ---- flips and smoothing -------------------------------------------------- */
+
+/* Queues v's neighbours for smoothing and the edges around v for flips. */
+static int queue_around(remesher *x, int32_t v)
+{
+    cm_kmesh *km = &x->km;
+    long m = cm_kmesh_star(km, v, &x->star);
+    if (m < 0) return -1;
+    for (long i = 0; i < m; i++) {
+        int32_t c = x->star.a[i];
+        if (cm_work_push(&x->verts, km->tri[cm_next(c)]) || cm_work_push(&x->edges, c) ||
+            cm_work_push(&x->edges, cm_next(c)) || cm_work_push(&x->edges, cm_prev(c)))
+            return -1;
+    }
+    return cm_kmesh_is_boundary(km, v) ? 0 : cm_work_push(&x->verts, v);
+}
+
+/* Is a triangle around v among the furthest from its target, short of
+ * it by at least half the worst shortfall? (uses x->star) The position
+ * search is worth its cost there. */
+static int near_short(remesher *x, int32_t v)
+{
+    double gate = fmin(0.0, 0.5 * cm_kmesh_min_slack(&x->km));
+    long m = cm_kmesh_star(&x->km, v, &x->star);
+    for (long i = 0; i < m; i++)
+        if (x->km.slack[x->star.a[i] / 3] < gate) return 1;
+    return 0;
+}
+
+/* Smooths v in every geometry. Returns 1 if it moved, -1 out of memory. */
+static int smooth_one(remesher *x, int32_t v)
+{
+    cm_kmesh *km = &x->km;
+    int moved = 0;
+    for (size_t g = 0; g < km->k; g++) {
+        int s = cm_smooth_vertex(km, g, v, x->o->smoothing, 1, &x->star);
+        if (s == 0 && near_short(x, v)) s = cm_smooth_optimize(km, g, v, &x->star);
+        if (s < 0) return -1;
+        moved |= s;
+    }
+    return moved;
+}
+
+/* Smooths every queued vertex once; a vertex that moved queues its
+ * surroundings for the next sweep. Returns moves or -1. */
+static long smooth_queued(remesher *x)
+{
+    cm_kmesh *km = &x->km;
+    x->batch.n = 0;
+    for (int32_t v; (v = cm_work_pop(&x->verts)) >= 0;)
+        if (!cm_kmesh_is_boundary(km, v) && km->vc[v] >= 0 && cm_ibuf_push(&x->batch, v)) return -1;
+    long moves = 0;
+    for (size_t i = 0; i < x->batch.n; i++) {
+        int32_t v = x->batch.a[i];
+        int moved = smooth_one(x, v);
+        if (moved < 0 || (moved && queue_around(x, v))) return -1;
+        moves += moved;
+    }
+    return moves;
+}
+
+/* Flips and smoothing, alternated until neither changes anything or the
+ * sweeps run out: both only ever raise local smallest angles. */
+static int improve(remesher *x, int sweeps)
+{
+    for (int sweep = 0; sweep < sweeps; sweep++) {
+        long f = cm_flip_queue(&x->km, &x->edges, &x->verts);
+        if (f < 0) return -1;
+        x->flips += f;
+        long moves = smooth_queued(x);
+        if (moves < 0) return -1;
+        if (moves == 0 && x->edges.items.n == 0) break;
+    }
+    while (cm_work_pop(&x->verts) >= 0) {} /* past the last sweep: drop the rest */
+    while (cm_work_pop(&x->edges) >= 0) {}
+    return 0;
+}
+
+static int improve_everywhere(remesher *x)
+{
+    if (cm_flip_queue_all(&x->km, &x->edges)) return -1;
+    for (int32_t v = x->km.n; v < x->km.nv; v++)
+        if (x->km.vc[v] >= 0 && cm_work_push(&x->verts, v)) return -1;
+    return improve(x, CM_POLISH_SWEEPS);
+}
+
+/* Moves the touched vertices' surroundings into the work lists. */
+static int queue_touched(remesher *x, cm_work *touched)
+{
+    for (int32_t v; (v = cm_work_pop(touched)) >= 0;)
+        if (x->km.vc[v] >= 0 && queue_around(x, v)) return -1;
+    return 0;
+}
+
+/* ---- transactions ----------------------------------------------------------- */
+
+/* Keeps the open transaction if the smallest angle of the triangles it
+ * changed rose by at least `gain` (radians; 0: did not drop), else undoes
+ * it. Returns 1 kept, 0 undone, -1 out of memory. */
+static int settle_by(remesher *x, double gain)
+{
+    double before, after;
+    if (cm_kmesh_tx_region(&x->km, &before, &after)) {
+        cm_kmesh_tx_commit(&x->km);
+        return -1;
+    }
+    if (after >= before + gain) {
+        cm_kmesh_tx_commit(&x->km);
+        return 1;
+    }
+    return cm_kmesh_tx_rollback(&x->km) ? -1 : 0;
+}
+
+static int settle(remesher *x) { return settle_by(x, 0.0); }
+
+static void forget_edge(cm_kmesh *km, int32_t c)
+{
+    cm_heap_remove(&km->eq, c < km->opp[c] ? c : km->opp[c]);
+}
+
+/* Splits the edge opposite c and repairs around the new vertex, as one
+ * transaction. Returns 1 kept, 0 undone or impossible, -1 out of memory. */
+static int try_split(remesher *x, int32_t c)
+{
+    cm_kmesh *km = &x->km;
+    int32_t a = km->tri[cm_next(c)], b = km->tri[cm_prev(c)];
+    if (cm_kmesh_tx_begin(km)) return -1;
+    int32_t m = cm_refine_split(km, c);
+    if (m == CM_NO_MEMORY) return cm_kmesh_tx_commit(km), -1;
+    if (m == CM_SPLIT_NO_FIT) {
+        cm_kmesh_tx_commit(km);
+        forget_edge(km, c);
+        return tabu_add(&x->tabu, a, b, CM_SPLIT_TRIES) ? -1 : 0;
+    }
+    if (queue_around(x, m) || improve(x, CM_IMPROVE_SWEEPS)) return cm_kmesh_tx_commit(km), -1;
+    int kept = settle(x);
+    if (kept != 0) return kept;
+    forget_edge(km, c); /* restored: c is that edge again */
+    return tabu_add(&x->tabu, a, b, 1) ? -1 : 0;
+}
+
+/* One area equalisation sweep and its repair, as a transaction. */
+static int try_area_equalisation(remesher *x)
+{
+    cm_work touched = {0};
+    int s = cm_kmesh_tx_begin(&x->km) ? -1 : 0;
+    if (s == 0 && (cm_areaeq_pass(&x->km, &touched) < 0 || queue_touched(x, &touched) ||
+                   improve(x, CM_IMPROVE_SWEEPS)))
+        s = -1;
+    cm_work_free(&touched);
+    if (s < 0) {
+        cm_kmesh_tx_commit(&x->km);
+        return -1;
+    }
+    return settle(x) < 0 ? -1 : 0;
+}
+
+/* ---- the refinement loop ---------------------------------------------------- */
+
+/* Is the edge opposite c still a candidate worth a try? */
+static int worth_trying(remesher *x, int32_t c)
+{
+    cm_kmesh *km = &x->km;
+    if (km->tri[c] < 0 || km->opp[c] < 0) return 0;
+    int32_t rep = c < km->opp[c] ? c : km->opp[c];
+    if (!cm_heap_contains(&km->eq, rep)) return 0;
+    if (tabu_count(&x->tabu, km->tri[cm_next(c)], km->tri[cm_prev(c)]) < CM_SPLIT_TRIES) return 1;
+    cm_heap_remove(&km->eq, rep);
+    return 0;
+}
+
+static long budget_of(const cm_options *o, size_t n)
+{
+    return o->max_steiner >= 0 ? o->max_steiner : 2 * (long)n + 100;
+}
+
+static long stall_limit(const remesher *x)
+{
+    return 30 + x->km.n / 4;
+}
+
+/* Splits per round: the option, or about 1 % of the triangles. */
+static long round_size(const remesher *x)
+{
+    return x->o->k_split > 0 ? x->o->k_split : (long)fmax(1, x->km.live_t / 100);
+}
+
+/* One round: up to ks splits among the best candidates, no two sharing a
+ * vertex. Returns the splits kept, CM_NO_MEMORY, or CM_NO_CANDIDATES.
+ * *tried counts the attempts. */
+#define CM_NO_CANDIDATES (-2)
+static long split_round(remesher *x, long ks, int32_t *cand, long want, long *tried)
+{
+    cm_kmesh *km = &x->km;
+    long nc = cm_refine_candidates(km, want, cand), kept = 0;
+    uint32_t stamp = cm_kmesh_new_stamp(km);
+    for (long i = 0; i < nc && kept < ks; i++) {
+        int32_t c = cand[i];
+        if (!worth_trying(x, c) || !cm_refine_take_quad(km, c, stamp)) continue;
+        int s = try_split(x, c);
+        if (s < 0) return -1;
+        kept += s, ++*tried;
+    }
+    return nc == 0 ? CM_NO_CANDIDATES : kept;
+}
+
+/* CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
+static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
+{
+    cm_kmesh *km = &x->km;
+    long budget = budget_of(x->o, n), added = 0, attempts = 0, since_best = 0;
+    double best = cm_kmesh_min_angle(km);
+    int32_t *cand = NULL;
+    while (cm_kmesh_min_slack(km) < 0 && added < budget && since_best < stall_limit(x) &&
+           attempts < 4 * budget + 100 &&
+           (x->o->max_iterations <= 0 || rep->iterations < (size_t)x->o->max_iterations)) {
+        long ks = round_size(x), want = 4 * ks + 8;
+        if (ks > budget - added) ks = budget - added;
+        int32_t *more = realloc(cand, (size_t)want * 3 * sizeof *cand);
+        if (!more) goto oom;
+        cand = more;
+        long kept = split_round(x, ks, cand, want, &attempts);
+        if (kept == CM_NO_MEMORY) goto oom;
+        if (kept == CM_NO_CANDIDATES) break;
+        added += kept, rep->splits += kept, rep->iterations++;
+        double now = cm_kmesh_min_angle(km);
+        if (now > best + CM_PROGRESS) best = now, since_best = 0;
+        else since_best += kept > 0 ? kept : 1;
+        if (x->o->area_every > 0 && rep->iterations % (size_t)x->o->area_every == 0 &&
+            try_area_equalisation(x))
+            goto oom;
+        double done = fmin(1.0, fmax(1 + cm_kmesh_min_slack(km) / x->target, (double)added / budget));
+        if (cm_progress_poll(x->progress, CM_STAGE_REMESH, done)) {
+            free(cand);
+            return CM_ERR_CANCELLED;
+        }
+    }
+    rep->split_attempts = attempts;
+    free(cand);
+    return CM_OK;
+oom:
+    free(cand);
+    return CM_ERR_NO_MEMORY;
+}
+
+/* ---- stepping out of local optima ------------------------------------------ */
+
+enum forced_move { FORCED_FLIP, FORCED_COLLAPSE, FORCED_SPLIT, FORCED_MOVES };
+
+/* A move the greedy rules refuse, on the edge opposite c (flip, split) or
+ * on its corner vertex (collapse onto the next), then the repair, as one
+ * transaction kept only if the smallest angle of the triangles it
+ * changed rose. Returns 1 kept, 0 undone or impossible, -1 out of memory. */
+static int try_forced(remesher *x, enum forced_move kind, int32_t c)
+{
+    cm_kmesh *km = &x->km;
+    if (km->tri[c] < 0 || (kind != FORCED_COLLAPSE && km->opp[c] < 0)) return 0;
+    if (kind == FORCED_COLLAPSE && cm_kmesh_is_boundary(km, km->tri[c])) return 0;
+    int32_t around[5] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)],
+                         km->opp[c] >= 0 ? km->tri[km->opp[c]] : -1, -1};
+    if (cm_kmesh_tx_begin(km)) return -1;
+    int done = 0;
+    if (kind == FORCED_FLIP) {
+        done = cm_flip_if_valid(km, c);
+    } else if (kind == FORCED_COLLAPSE) {
+        done = cm_collapse_try(km, c, &x->star);
+    } else {
+        int32_t m = cm_refine_split(km, c);
+        done = m >= 0 ? 1 : m == CM_SPLIT_NO_FIT ? 0 : -1;
+        around[4] = m;
+    }
+    if (done <= 0) {
+        cm_kmesh_tx_commit(km); /* nothing changed */
+        return done;
+    }
+    for (int i = 0; i < 5; i++)
+        if (around[i] >= 0 && km->vc[around[i]] >= 0 && queue_around(x, around[i]))
+            return cm_kmesh_tx_commit(km), -1;
+    if (improve(x, CM_IMPROVE_SWEEPS)) return cm_kmesh_tx_commit(km), -1;
+    return settle_by(x, CM_PROGRESS);
+}
+
+/* The corners of triangle t and of its neighbours (up to 12). */
+static int corners_near(const cm_kmesh *km, int32_t t, int32_t *out)
+{
+    int m = 0;
+    for (int32_t c = 3 * t; c < 3 * t + 3; c++) out[m++] = c;
+    for (int32_t c = 3 * t; c < 3 * t + 3; c++) {
+        int32_t o = km->opp[c];
+        if (o < 0) continue;
+        for (int32_t d = 3 * (o / 3); d < 3 * (o / 3) + 3; d++) out[m++] = d;
+    }
+    return m;
+}
+
+/* Forced moves around the worst short triangles, the first that gains
+ * kept, until none gains, stall_limit() rounds have run or (splits) the
+ * budget is spent. CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
+static cm_status step_out(remesher *x, size_t n)
+{
+    cm_kmesh *km = &x->km;
+    int32_t worst[CM_STEP_OUT_WORST], work[2 * CM_STEP_OUT_WORST], near[12];
+    long budget = budget_of(x->o, n);
+    for (long round = 0; round < stall_limit(x) && cm_kmesh_min_slack(km) < 0; round++) {
+        if (cm_progress_poll(x->progress, CM_STAGE_REMESH, 1.0)) return CM_ERR_CANCELLED;
+        int32_t nw = cm_heap_smallest(&km->tq, CM_STEP_OUT_WORST, 0.0, worst, work);
+        int gained = 0;
+        for (int32_t i = 0; i < nw && !gained; i++) {
+            if (!cm_kmesh_tri_live(km, worst[i])) continue;
+            int m = corners_near(km, worst[i], near);
+            for (int kind = 0; kind < FORCED_MOVES && !gained; kind++) {
+                if (kind == FORCED_SPLIT && km->live_v - km->n >= budget) continue;
+                for (int j = 0; j < m && !gained; j++) {
+                    int s = try_forced(x, (enum forced_move)kind, near[j]);
+                    if (s < 0) return CM_ERR_NO_MEMORY;
+                    gained = s;
+                }
+            }
+        }
+        if (!gained) break;
+    }
+    return CM_OK;
+}
+
+/* ---- cleanup and coarsening ------------------------------------------------- */
+
+/* Removes Steiner vertices with collapses that pass `threshold`, then
+ * repairs around them. Returns collapses or -1. */
+static long coarsen(remesher *x, double threshold)
+{
+    cm_work touched = {0};
+    long total = 0;
+    for (int pass = 0; pass < 4; pass++) {
+        long c = cm_collapse_pass(&x->km, threshold, -1, &touched);
+        if (c < 0 || queue_touched(x, &touched) || improve(x, CM_IMPROVE_SWEEPS)) {
+            cm_work_free(&touched);
+            return -1;
+        }
+        total += c;
+        if (c == 0) break;
+    }
+    cm_work_free(&touched);
+    return total;
+}
+
+static int set_caps(remesher *x, const cm_mesh *mesh, size_t n, cm_remesh_report *rep)
+{
+    double *bcap = malloc(2 * n * sizeof *bcap), *vcap = bcap + n;
+    if (!bcap) return -1;
+    cm_boundary_caps(mesh, n, bcap, vcap);
+    double lo = x->target;
+    for (size_t i = 0; i < n; i++) {
+        bcap[i] *= CM_EDGE_CAP_MARGIN;
+        lo = fmin(lo, fmin(bcap[i], vcap[i]));
+    }
+    cm_kmesh_set_caps(&x->km, x->target, bcap, vcap);
+    rep->target_deg = lo * 180.0 / CM_PI;
+    free(bcap);
+    return 0;
+}
+
+static void remesher_free(remesher *x)
+{
+    cm_kmesh_free(&x->km);
+    cm_work_free(&x->verts), cm_work_free(&x->edges);
+    cm_ibuf_free(&x->star), cm_ibuf_free(&x->batch);
+    free(x->tabu.keys), free(x->tabu.count);
+}
+
+cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, cm_progress *progress,
+                    cm_remesh_report *rep, cm_error *err)
+{
+    remesher x = {0};
+    x.o = o;
+    x.progress = progress;
+    x.target = o->min_angle_deg * CM_PI / 180.0;
+    cm_status s = cm_kmesh_build(&x.km, mesh, n);
+    if (s == CM_ERR_INTERNAL) return cm_fail(err, s, "remesh: the construction is not a triangulated disk");
+    if (s != CM_OK) return cm_fail_status(err, s);
+    long removed = set_caps(&x, mesh, n, rep) ? -1 : coarsen(&x, 0.0);
+    if (removed < 0 || improve_everywhere(&x)) goto oom;
+    rep->collapses += removed;
+    if (cm_progress_report(progress, CM_STAGE_REMESH, 0.0)) {
+        s = CM_ERR_CANCELLED;
+        goto stop;
+    }
+    if ((s = refine(&x, n, rep)) != CM_OK) goto stop;
+    if (improve_everywhere(&x)) goto oom;
+    if ((s = step_out(&x, n)) != CM_OK) goto stop;
+    long late = coarsen(&x, x.target);
+    if (late < 0 || improve_everywhere(&x)) goto oom;
+    rep->collapses += late;
+    rep->flips = x.flips;
+    rep->min_angle_deg = cm_kmesh_min_angle(&x.km) * 180.0 / CM_PI;
+    s = cm_kmesh_write(&x.km, mesh);
+    remesher_free(&x);
+    return s == CM_OK ? CM_OK : cm_fail_status(err, s);
+oom:
+    s = CM_ERR_NO_MEMORY;
+stop:
+    remesher_free(&x);
+    return cm_fail_status(err, s);
+}

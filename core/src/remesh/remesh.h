@@ -1,0 +1,25 @@
+/* Compatible remeshing (paper sections 3 and 4): Algorithm 1 and the
+ * steps around it (remesh.c explains the loop). The operations it drives
+ * live in flip, smooth, areaeq, refine and collapse; what it aims for in
+ * criteria. */
+#ifndef CM_REMESH_REMESH_H
+#define CM_REMESH_REMESH_H
+
+#include "base/error.h"
+#include "base/mesh.h"
+#include "base/progress.h"
+
+typedef struct cm_remesh_report {
+    size_t iterations;    /* refinement rounds */
+    long splits, split_attempts, collapses, flips;
+    double target_deg;    /* the lowest triangle target after the boundary caps */
+    double min_angle_deg; /* smallest angle of the result, all geometries */
+} cm_remesh_report;
+
+/* Algorithm 1 on mesh (polygon vertices 0..n-1 counter-clockwise, each
+ * geometry valid), in place. o: the validated options. Returns CM_OK,
+ * CM_ERR_NO_MEMORY, CM_ERR_CANCELLED or CM_ERR_INTERNAL (message on err). */
+cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, cm_progress *progress,
+                    cm_remesh_report *report, cm_error *err);
+
+#endif

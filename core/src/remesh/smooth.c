@@ -1,0 +1,188 @@
+/* Vertex smoothing, each geometry on its own (paper section 3.1):
+ * Laplacian, angle-based (Zhou and Shimada), weighted angle-based (eq. 2),
+ * plain or "smart", and the combined scheme. */
+#include <math.h>
+
+#include "geom/predicates.h"
+#include "remesh/smooth.h"
+#include "remesh/criteria.h"
+
+/* Halvings of a rejected smart step toward the proposed position. */
+#define CM_SMART_TRIES 3
+/* A smart move must gain this much (radians, about 0.06 degrees): smaller
+ * gains only ripple through the neighbours and change nothing that
+ * matters. */
+#define CM_SMOOTH_GAIN 1e-3
+/* Vertices of higher degree are left where they are. */
+#define CM_SMOOTH_MAX_DEGREE 128
+
+/* v's link polygon in geometry g, counter-clockwise. */
+typedef struct ring {
+    const double *c;                      /* v itself */
+    const double *p[CM_SMOOTH_MAX_DEGREE];
+    long m;
+} ring;
+
+static int ring_of(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring *r)
+{
+    r->m = (long)star->n;
+    if (r->m < 3 || r->m > CM_SMOOTH_MAX_DEGREE) return -1;
+    r->c = cm_kmesh_pos(km, g, v);
+    for (long i = 0; i < r->m; i++) r->p[i] = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[i])]);
+    return 0;
+}
+
+static void laplacian_target(const ring *r, double out[2])
+{
+    double x = 0, y = 0;
+    for (long i = 0; i < r->m; i++) x += r->p[i][0], y += r->p[i][1];
+    out[0] = x / (double)r->m, out[1] = y / (double)r->m;
+}
+
+/* Each neighbour p_i rotates the edge p_i -> v onto the bisector of the
+ * link polygon's angle at p_i; the average of the rotated points, weighted
+ * by 1 / alpha_i^2 when `weighted`. */
+static int angle_target(const ring *r, int weighted, double out[2])
+{
+    const double *c = r->c;
+    double x = 0, y = 0, wsum = 0;
+    for (long i = 0; i < r->m; i++) {
+        const double *p = r->p[i], *pn = r->p[(i + 1) % r->m], *pp = r->p[(i + r->m - 1) % r->m];
+        double dx = c[0] - p[0], dy = c[1] - p[1];
+        double nx = pn[0] - p[0], ny = pn[1] - p[1], qx = pp[0] - p[0], qy = pp[1] - p[1];
+        double a1 = atan2(nx * dy - ny * dx, nx * dx + ny * dy); /* from p_{i+1} to v */
+        double a2 = atan2(dx * qy - dy * qx, dx * qx + dy * qy); /* from v to p_{i-1} */
+        double beta = 0.5 * (a2 - a1), alpha = a1 + a2;
+        double w = weighted ? 1.0 / fmax(alpha * alpha, 1e-12) : 1.0;
+        double cb = cos(beta), sb = sin(beta);
+        x += w * (p[0] + cb * dx - sb * dy);
+        y += w * (p[1] + sb * dx + cb * dy);
+        wsum += w;
+    }
+    if (!(wsum > 0) || !isfinite(x) || !isfinite(y)) return -1;
+    out[0] = x / wsum, out[1] = y / wsum;
+    return 0;
+}
+
+static int target_of(const ring *r, cm_smoothing method, double out[2])
+{
+    switch (method) {
+    case CM_SMOOTH_LAPLACIAN: laplacian_target(r, out); return 0;
+    case CM_SMOOTH_ANGLE: return angle_target(r, 0, out);
+    case CM_SMOOTH_WEIGHTED:
+    case CM_SMOOTH_COMBINED: return angle_target(r, 1, out);
+    }
+    return -1;
+}
+
+int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing method,
+                     const cm_ibuf *star, double out[2])
+{
+    ring r;
+    return ring_of(km, g, v, star, &r) ? -1 : target_of(&r, method, out);
+}
+
+/* Smallest angle of v's triangles with v at q, as sin^2 (monotone below
+ * 90 degrees, no atan2: this runs for every candidate position). */
+static double star_sin2(const ring *r, const double q[2])
+{
+    double lo = 1.0;
+    for (long i = 0; i < r->m; i++) lo = fmin(lo, cm_triangle_min_angle_sin2(q, r->p[i], r->p[(i + 1) % r->m]));
+    return lo;
+}
+
+static int star_valid(const ring *r, const double q[2])
+{
+    for (long i = 0; i < r->m; i++)
+        if (cm_orient2d(q, r->p[i], r->p[(i + 1) % r->m]) <= 0) return 0;
+    return 1;
+}
+
+static double sin2_to_angle(double s) { return asin(sqrt(fmin(1.0, fmax(0.0, s)))); }
+
+/* Tries q (and, if smart, points between v and q): moves v to the first
+ * acceptable one. Returns 1 if moved. */
+static int try_move(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, const ring *r,
+                    const double q[2], int smart, double before)
+{
+    const double *c = r->c;
+    double p[2] = {q[0], q[1]};
+    for (int attempt = 0; attempt < (smart ? CM_SMART_TRIES : 1); attempt++) {
+        if (p[0] == c[0] && p[1] == c[1]) return 0;
+        if ((!smart || sin2_to_angle(star_sin2(r, p)) > before + CM_SMOOTH_GAIN) && star_valid(r, p)) {
+            cm_kmesh_move(km, g, v, p, star);
+            return 1;
+        }
+        p[0] = 0.5 * (p[0] + c[0]), p[1] = 0.5 * (p[1] + c[1]);
+    }
+    return 0;
+}
+
+int cm_smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
+                     cm_ibuf *star)
+{
+    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0) return 0;
+    long m = cm_kmesh_star(km, v, star);
+    if (m < 0) return m == -1 ? -1 : 0;
+    ring r;
+    if (ring_of(km, g, v, star, &r)) return 0;
+    double before = smart ? sin2_to_angle(star_sin2(&r, r.c)) : 0;
+    double q[2];
+    if (target_of(&r, method, q) == 0 && try_move(km, g, v, star, &r, q, smart, before)) return 1;
+    if (method != CM_SMOOTH_COMBINED) return 0;
+    laplacian_target(&r, q);
+    return try_move(km, g, v, star, &r, q, smart, before);
+}
+
+/* Steps of the pattern search below. */
+#define CM_OPTIMIZE_STEPS 10
+
+int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
+{
+    static const double dir[8][2] = {{1, 0}, {0.7071067811865476, 0.7071067811865476}, {0, 1},
+                                     {-0.7071067811865476, 0.7071067811865476}, {-1, 0},
+                                     {-0.7071067811865476, -0.7071067811865476}, {0, -1},
+                                     {0.7071067811865476, -0.7071067811865476}};
+    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0 || !km->vdirty[v]) return 0;
+    long m = cm_kmesh_star(km, v, star);
+    if (m < 0) return m == -1 ? -1 : 0;
+    ring r;
+    if (ring_of(km, g, v, star, &r)) return 0;
+    double best[2] = {r.c[0], r.c[1]}, q = star_sin2(&r, best), step = HUGE_VAL;
+    for (long i = 0; i < r.m; i++)
+        step = fmin(step, hypot(r.p[i][0] - best[0], r.p[i][1] - best[1]));
+    step *= 0.25;
+    double start = q;
+    for (int it = 0; it < CM_OPTIMIZE_STEPS && step > 0; it++) {
+        int improved = 0;
+        for (int d = 0; d < 8; d++) {
+            double p[2] = {best[0] + step * dir[d][0], best[1] + step * dir[d][1]};
+            double qp = star_sin2(&r, p);
+            if (qp > q && star_valid(&r, p)) q = qp, best[0] = p[0], best[1] = p[1], improved = 1;
+        }
+        if (!improved) step *= 0.5;
+    }
+    if (!(sin2_to_angle(q) > sin2_to_angle(start) + CM_SMOOTH_GAIN)) {
+        if (g + 1 == km->k) km->vdirty[v] = 0; /* optimal in every geometry, till a change */
+        return 0;
+    }
+    cm_kmesh_move(km, g, v, best, star);
+    return 1;
+}
+
+long cm_smooth_pass(cm_kmesh *km, cm_smoothing method, int smart)
+{
+    cm_ibuf star = {0};
+    long moves = 0;
+    for (int32_t v = km->n; v < km->nv; v++)
+        for (size_t g = 0; g < km->k && km->vc[v] >= 0; g++) {
+            int s = cm_smooth_vertex(km, g, v, method, smart, &star);
+            if (s < 0) {
+                cm_ibuf_free(&star);
+                return -1;
+            }
+            moves += s;
+        }
+    cm_ibuf_free(&star);
+    return moves;
+}

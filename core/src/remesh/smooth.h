@@ -1,0 +1,29 @@
+/* Smoothing of Steiner vertices, one geometry at a time. Like every remeshing
+ * operation, a change is made only after each affected triangle was found
+ * strictly counter-clockwise in every geometry (exact orient2d). */
+#ifndef CM_REMESH_SMOOTH_H
+#define CM_REMESH_SMOOTH_H
+
+#include "remesh/kmesh.h"
+
+/* Moves Steiner vertex v in geometry g to the position `method` proposes
+ * (CM_SMOOTH_COMBINED: weighted angle-based, then Laplacian). Always only
+ * if every triangle around v stays valid; if smart, only if the smallest
+ * angle around v also improves. Returns 1 moved, 0 not, -1 out of memory.
+ * star is scratch. */
+int cm_smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
+                     cm_ibuf *star);
+/* The position `method` proposes for Steiner vertex v in geometry g, from
+ * its star (corners from cm_kmesh_star). Returns 0, or -1 when undefined. */
+int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing method,
+                     const cm_ibuf *star, double out[2]);
+/* Moves Steiner vertex v in geometry g to where the smallest angle of its
+ * triangles is largest, by a short pattern search, if that gains. The
+ * fallback when the smoothing formulas are stuck near a bad triangle.
+ * Returns 1 moved, 0 not, -1 out of memory. */
+int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star);
+/* One sweep over all Steiner vertices in every geometry. Returns the number
+ * of moves, -1 out of memory. */
+long cm_smooth_pass(cm_kmesh *km, cm_smoothing method, int smart);
+
+#endif
