@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 
 #include <compatmesh/compatmesh.h>
+#include <compatmesh/handles.hh>
 #include <compatmesh/plane.hh>
 
 #include <array>
@@ -19,10 +20,10 @@ namespace py = pybind11;
 
 namespace {
 
-struct ResultDeleter {
-  void operator()(cm_result *result) const { cm_result_free(result); }
-};
-using ResultPtr = std::unique_ptr<cm_result, ResultDeleter>;
+using compatmesh::MorphPtr;
+using compatmesh::ProgressRelay;
+using compatmesh::ResultPtr;
+using compatmesh::SweepPtr;
 
 // One input polygon as the core sees it (xy), and how to map vertices back.
 struct Polygon {
@@ -168,21 +169,15 @@ const std::vector<OptionSetter> &option_setters()
 
 // --- the call --------------------------------------------------------------
 
-struct ProgressContext {
-  py::object *progress;
-  std::exception_ptr error;  // what the callback raised: it must not cross the C code
-};
-
-int call_progress(void *user, double fraction, const char *stage)
+// The Python progress callable (None: none) as the relay's function; the
+// core calls it without the GIL, so it takes the GIL first.
+compatmesh::ProgressFn python_progress(const py::object &progress)
 {
-  auto *context = static_cast<ProgressContext *>(user);
-  py::gil_scoped_acquire gil;
-  try {
-    return py::bool_((*context->progress)(fraction, stage)) ? 1 : 0;
-  } catch (...) {
-    context->error = std::current_exception();
-    return 1;
-  }
+  if (!progress || progress.is_none()) return {};
+  return [&progress](double fraction, const char *stage) {
+    py::gil_scoped_acquire gil;
+    return bool(py::bool_(progress(fraction, stage)));
+  };
 }
 
 // Exception types made at import; kept for the process's life (a handle,
@@ -340,11 +335,8 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
     counts.push_back(p.size());
   }
 
-  ProgressContext context{&callbacks->progress, nullptr};
-  if (callbacks->progress && !callbacks->progress.is_none()) {
-    options.progress = call_progress;
-    options.progress_user = &context;
-  }
+  ProgressRelay relay(python_progress(callbacks->progress));
+  relay.attach(options);
   cm_result *raw = nullptr;
   cm_status status;
   {
@@ -352,7 +344,7 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
     status = cm_triangulate_polygons(data.data(), counts.data(), polygons->size(), &options, &raw);
   }
   ResultPtr result(raw);
-  if (context.error) std::rethrow_exception(context.error);
+  relay.rethrow();
   if (status != CM_OK) raise_failure(raw, status);
   return result;
 }
@@ -366,15 +358,6 @@ Result triangulate(py::object polygons_in, py::kwargs kwargs)
 }
 
 // --- morph and sweep ---------------------------------------------------------
-
-struct MorphDeleter {
-  void operator()(cm_morph *morph) const { cm_morph_free(morph); }
-};
-using MorphPtr = std::unique_ptr<cm_morph, MorphDeleter>;
-struct SweepDeleter {
-  void operator()(cm_sweep *sweep) const { cm_sweep_free(sweep); }
-};
-using SweepPtr = std::unique_ptr<cm_sweep, SweepDeleter>;
 
 // A failed morph or sweep call: the core's message as a ValueError when the
 // arguments were at fault, RuntimeError when its own check failed.
@@ -401,16 +384,12 @@ void require_planar(const std::vector<Polygon> &polygons, const char *function)
 
 // The morph of the triangulated polygons, progress reported like the
 // triangulation's.
-MorphPtr make_morph(const cm_result *result, cm_morph_method method, Callbacks &callbacks,
-                    ProgressContext &context)
+MorphPtr make_morph(const cm_result *result, cm_morph_method method, ProgressRelay &relay)
 {
   cm_morph_options options;
   cm_morph_options_init(&options);
   options.method = method;
-  if (callbacks.progress && !callbacks.progress.is_none()) {
-    options.progress = call_progress;
-    options.progress_user = &context;
-  }
+  relay.attach(options);
   cm_morph *raw = nullptr;
   cm_status status;
   {
@@ -418,7 +397,7 @@ MorphPtr make_morph(const cm_result *result, cm_morph_method method, Callbacks &
     status = cm_morph_create(result, &options, &raw);
   }
   MorphPtr morph(raw);
-  if (context.error) std::rethrow_exception(context.error);
+  relay.rethrow();
   if (status != CM_OK) raise_step_failure(status, raw ? cm_morph_message(raw) : nullptr);
   return morph;
 }
@@ -457,8 +436,8 @@ py::dict morph(py::object polygons_in, py::object t, py::object frames, py::obje
   Callbacks callbacks;
   ResultPtr result = run_triangulation(polygons_in, kwargs, "morph", &polygons, &callbacks);
   require_planar(polygons, "morph");
-  ProgressContext context{&callbacks.progress, nullptr};
-  MorphPtr m = make_morph(result.get(), method, callbacks, context);
+  ProgressRelay relay(python_progress(callbacks.progress));
+  MorphPtr m = make_morph(result.get(), method, relay);
 
   std::size_t nv = cm_result_num_vertices(result.get()), frame_count = times.size();
   py::array_t<double> sections({py::ssize_t(frame_count), py::ssize_t(nv), py::ssize_t(2)});
@@ -514,12 +493,9 @@ py::dict sweep(py::object polygons_in, py::object sections, py::object height, p
                             std::to_string(polygons.size()) + " polygons");
     options.heights = z.data();
   }
-  ProgressContext context{&callbacks.progress, nullptr};
-  MorphPtr m = make_morph(result.get(), CM_MORPH_CONVEX, callbacks, context);
-  if (callbacks.progress && !callbacks.progress.is_none()) {
-    options.progress = call_progress;
-    options.progress_user = &context;
-  }
+  ProgressRelay relay(python_progress(callbacks.progress));
+  MorphPtr m = make_morph(result.get(), CM_MORPH_CONVEX, relay);
+  relay.attach(options);
   cm_sweep *raw = nullptr;
   cm_status status;
   {
@@ -527,7 +503,7 @@ py::dict sweep(py::object polygons_in, py::object sections, py::object height, p
     status = cm_sweep_create(m.get(), &options, &raw);
   }
   SweepPtr w(raw);
-  if (context.error) std::rethrow_exception(context.error);
+  relay.rethrow();
   if (status != CM_OK) raise_step_failure(status, raw ? cm_sweep_message(raw) : nullptr);
 
   py::dict out;

@@ -70,15 +70,16 @@ SectionMorph::SectionMorph(const std::vector<double> &xyz0, const std::vector<do
     xy[g] = compatmesh::to_plane(*frames[g], ordered.data(), nv);
   }
   const double *geometries[2] = {xy[0].data(), xy[1].data()};
-  cm_status s = cm_result_from_meshes(geometries, 2, n, nv, reindexed.data(), reindexed.size() / 3, &result_);
+  cm_result *result = nullptr;
+  cm_status s = cm_result_from_meshes(geometries, 2, n, nv, reindexed.data(), reindexed.size() / 3, &result);
+  result_.reset(result);
   if (s != CM_OK) {
     long g = -1;
-    cm_result_error_location(result_, &g, nullptr, nullptr);
+    cm_result_error_location(result_.get(), &g, nullptr, nullptr);
     std::string which = g == 0 ? " (layer '" + first_name + "')" : g == 1 ? " (layer '" + second_name + "')" : "";
     std::string message = "layers '" + first_name + "' and '" + second_name +
-                          "' are not a compatible pair" + which + ": " + cm_result_message(result_) +
+                          "' are not a compatible pair" + which + ": " + cm_result_message(result_.get()) +
                           " (vertex and triangle numbers count the boundary loop first)";
-    cm_result_free(result_);
     throw FilterError(message);
   }
   // Intrinsic weights: still convex combinations (every section valid),
@@ -88,28 +89,20 @@ SectionMorph::SectionMorph(const std::vector<double> &xyz0, const std::vector<do
   cm_morph_options options;
   cm_morph_options_init(&options);
   options.method = CM_MORPH_INTRINSIC;
-  s = cm_morph_create(result_, &options, &morph_);
-  if (s != CM_OK) {
-    std::string message = std::string("the morph between the layers failed: ") + cm_morph_message(morph_);
-    cm_morph_free(morph_);
-    cm_result_free(result_);
-    throw FilterError(message);
-  }
-}
-
-SectionMorph::~SectionMorph()
-{
-  cm_morph_free(morph_);
-  cm_result_free(result_);
+  cm_morph *morph = nullptr;
+  s = cm_morph_create(result_.get(), &options, &morph);
+  morph_.reset(morph);
+  if (s != CM_OK)
+    throw FilterError(std::string("the morph between the layers failed: ") + cm_morph_message(morph));
 }
 
 std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_deg)
 {
   const std::size_t nv = morph.order_.size();
   std::vector<double> xy(2 * nv);
-  if (cm_morph_section(morph.morph_, t, xy.data(), nullptr, min_angle_deg) != CM_OK)
+  if (cm_morph_section(morph.morph_.get(), t, xy.data(), nullptr, min_angle_deg) != CM_OK)
     throw FilterError("the morph's section at t = " + std::to_string(t) +
-                      " is invalid: " + cm_morph_message(morph.morph_));
+                      " is invalid: " + cm_morph_message(morph.morph_.get()));
   std::vector<double> xyz(3 * nv);
   for (std::size_t j = 0; j < nv; j++) {
     const std::array<double, 3> p = morph.frame0_.to_space(xy[2 * j], xy[2 * j + 1]);

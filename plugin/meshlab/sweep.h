@@ -13,6 +13,7 @@
 #include "progress.h"
 
 #include <compatmesh/compatmesh.h>
+#include <compatmesh/handles.hh>
 #include <compatmesh/plane.hh>
 
 #include <common/ml_mesh_type.h>
@@ -36,15 +37,12 @@ class SectionMorph {
   SectionMorph(const std::vector<double> &xyz0, const std::vector<double> &xyz1,
                const std::vector<int32_t> &triangles, const std::vector<int> &boundary,
                const std::string &first_name, const std::string &second_name);
-  ~SectionMorph();
-  SectionMorph(const SectionMorph &) = delete;
-  SectionMorph &operator=(const SectionMorph &) = delete;
 
   friend std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_deg);
 
  private:
-  cm_result *result_ = nullptr;
-  cm_morph *morph_ = nullptr;
+  compatmesh::ResultPtr result_;
+  compatmesh::MorphPtr morph_;
   compatmesh::PlaneFrame frame0_, frame1_;
   std::vector<int> order_;  // morph vertex j is layer vertex order_[j]
 };

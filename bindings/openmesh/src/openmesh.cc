@@ -32,26 +32,6 @@ Boundary make_boundary(std::vector<double> xyz, std::vector<int> source_vertex,
   return boundary;
 }
 
-namespace {
-
-struct ProgressContext {
-  const ProgressFn *progress;
-  std::exception_ptr error;  // what the callback threw: it must not cross the C code
-};
-
-int call_progress(void *user, double fraction, const char *stage)
-{
-  auto *context = static_cast<ProgressContext *>(user);
-  try {
-    return (*context->progress)(fraction, stage) ? 1 : 0;
-  } catch (...) {
-    context->error = std::current_exception();
-    return 1;
-  }
-}
-
-}  // namespace
-
 ResultPtr triangulate(const std::vector<Boundary> &polygons, const cm_options &options,
                       const ProgressFn &progress)
 {
@@ -62,16 +42,13 @@ ResultPtr triangulate(const std::vector<Boundary> &polygons, const cm_options &o
     counts.push_back(polygon.size());
   }
   cm_options core_options = options;
-  ProgressContext context{&progress, nullptr};
-  if (progress) {
-    core_options.progress = call_progress;
-    core_options.progress_user = &context;
-  }
+  ProgressRelay relay(progress);
+  relay.attach(core_options);
   cm_result *raw = nullptr;
   cm_status status = cm_triangulate_polygons(coordinates.data(), counts.data(), polygons.size(),
                                              &core_options, &raw);
   ResultPtr result(raw);
-  if (context.error) std::rethrow_exception(context.error);
+  relay.rethrow();
   if (!result) throw Error(CM_ERR_NO_MEMORY, "out of memory");
   if (status == CM_OK) return result;
 

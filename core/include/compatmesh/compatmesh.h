@@ -35,6 +35,14 @@
 extern "C" {
 #endif
 
+/* Marks the functions the shared library exports; everything else in it
+ * is hidden. */
+#if defined(__GNUC__)
+#define CM_API __attribute__((visibility("default")))
+#else
+#define CM_API
+#endif
+
 #define CM_VERSION_MAJOR 0
 #define CM_VERSION_MINOR 1
 #define CM_VERSION_PATCH 0
@@ -55,7 +63,7 @@ typedef enum cm_status {
 } cm_status;
 
 /* A short constant name for a status, e.g. "self-intersection". */
-const char *cm_status_string(cm_status status);
+CM_API const char *cm_status_string(cm_status status);
 
 /* How the first compatible triangulation is built. */
 typedef enum cm_method {
@@ -134,7 +142,7 @@ typedef struct cm_options {
 
 /* Fills *options with the defaults. Always call it first, then change the
  * fields you need: new fields get sensible defaults in later versions. */
-void cm_options_init(cm_options *options);
+CM_API void cm_options_init(cm_options *options);
 
 typedef struct cm_stats {
     size_t n;                /* input vertices per polygon */
@@ -176,34 +184,34 @@ typedef struct cm_result cm_result;
  *            the status, the message and the error location); NULL only
  *            when even the handle could not be allocated (CM_ERR_NO_MEMORY).
  * Returns CM_OK only if the result passed the exact validity check. */
-cm_status cm_triangulate(const double *xy, size_t k, size_t n,
+CM_API cm_status cm_triangulate(const double *xy, size_t k, size_t n,
                          const cm_options *options, cm_result **result);
 
 /* The same with one array per polygon: polygons[g] holds 2 * counts[g]
  * doubles. Different counts are reported as CM_ERR_COUNT_MISMATCH. */
-cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *counts,
+CM_API cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *counts,
                                   size_t k, const cm_options *options,
                                   cm_result **result);
 
-void cm_result_free(cm_result *result);
+CM_API void cm_result_free(cm_result *result);
 
-cm_status cm_result_status(const cm_result *result);
+CM_API cm_status cm_result_status(const cm_result *result);
 /* One line, no trailing newline; "" on success. Never NULL. */
-const char *cm_result_message(const cm_result *result);
+CM_API const char *cm_result_message(const cm_result *result);
 /* Where validation failed: polygon and vertex index (0-based), -1 if the
  * failure has no location. For an intersection, vertex is the first
  * vertex of the first offending edge and other_vertex that of the second. */
-void cm_result_error_location(const cm_result *result, long *polygon,
+CM_API void cm_result_error_location(const cm_result *result, long *polygon,
                               long *vertex, long *other_vertex);
 
 /* Geometry. All of these return 0 / NULL on a failed result. */
-size_t cm_result_num_geometries(const cm_result *result);
-size_t cm_result_num_vertices(const cm_result *result); /* per geometry */
+CM_API size_t cm_result_num_geometries(const cm_result *result);
+CM_API size_t cm_result_num_vertices(const cm_result *result); /* per geometry */
 /* 2 * num_vertices doubles (x, y) of geometry g. */
-const double *cm_result_vertices(const cm_result *result, size_t g);
-size_t cm_result_num_triangles(const cm_result *result);
+CM_API const double *cm_result_vertices(const cm_result *result, size_t g);
+CM_API size_t cm_result_num_triangles(const cm_result *result);
 /* 3 * num_triangles vertex indices, counter-clockwise. */
-const int32_t *cm_result_triangles(const cm_result *result);
+CM_API const int32_t *cm_result_triangles(const cm_result *result);
 
 /* Half-edge structure (the layout OpenMesh uses):
  * - half-edges come in pairs: h and h ^ 1 are opposite; edge e owns 2e, 2e+1;
@@ -214,19 +222,19 @@ const int32_t *cm_result_triangles(const cm_result *result);
  * - vertex_halfedge[v]: one outgoing half-edge; for boundary vertices the
  *   outgoing boundary half-edge;
  * - face_halfedge[f]: the half-edge from triangles[3f] to triangles[3f+1]. */
-size_t cm_result_num_halfedges(const cm_result *result);
-const int32_t *cm_result_halfedge_next(const cm_result *result);
-const int32_t *cm_result_halfedge_to_vertex(const cm_result *result);
-const int32_t *cm_result_halfedge_face(const cm_result *result);
-const int32_t *cm_result_vertex_halfedge(const cm_result *result);
-const int32_t *cm_result_face_halfedge(const cm_result *result);
+CM_API size_t cm_result_num_halfedges(const cm_result *result);
+CM_API const int32_t *cm_result_halfedge_next(const cm_result *result);
+CM_API const int32_t *cm_result_halfedge_to_vertex(const cm_result *result);
+CM_API const int32_t *cm_result_halfedge_face(const cm_result *result);
+CM_API const int32_t *cm_result_vertex_halfedge(const cm_result *result);
+CM_API const int32_t *cm_result_face_halfedge(const cm_result *result);
 
-const cm_stats *cm_result_stats(const cm_result *result);
+CM_API const cm_stats *cm_result_stats(const cm_result *result);
 /* Returns CM_ERR_ARGUMENT if g is out of range or the result failed. */
-cm_status cm_result_quality(const cm_result *result, size_t g, cm_quality *quality);
+CM_API cm_status cm_result_quality(const cm_result *result, size_t g, cm_quality *quality);
 /* Quality of geometry g as the construction built it, before remeshing
  * (equal to cm_result_quality when options.remesh was 0). */
-cm_status cm_result_quality_before(const cm_result *result, size_t g, cm_quality *quality);
+CM_API cm_status cm_result_quality_before(const cm_result *result, size_t g, cm_quality *quality);
 
 
 /* Exact validity of one geometry whose coordinates changed after
@@ -244,7 +252,7 @@ cm_status cm_result_quality_before(const cm_result *result, size_t g, cm_quality
  * edges *where and *other), CM_ERR_NOT_FINITE (vertex *where),
  * CM_ERR_ARGUMENT (bad pointers, n < 3, index out of range: triangle *where),
  * CM_ERR_NO_MEMORY. */
-cm_status cm_check_geometry(const double *xy, size_t n, size_t num_vertices,
+CM_API cm_status cm_check_geometry(const double *xy, size_t n, size_t num_vertices,
                             const int32_t *triangles, size_t num_triangles,
                             long *where, long *other);
 
@@ -266,7 +274,7 @@ cm_status cm_check_geometry(const double *xy, size_t n, size_t num_vertices,
  * vertices 0..n-1), CM_ERR_NOT_FINITE, CM_ERR_ZERO_AREA (a triangle flat
  * or wrongly oriented in some geometry), CM_ERR_REPEATED_VERTEX,
  * CM_ERR_SELF_INTERSECTION (boundary), CM_ERR_NO_MEMORY. */
-cm_status cm_result_from_meshes(const double *const *xy, size_t k, size_t n,
+CM_API cm_status cm_result_from_meshes(const double *const *xy, size_t k, size_t n,
                                 size_t num_vertices, const int32_t *triangles,
                                 size_t num_triangles, cm_result **result);
 
@@ -305,7 +313,7 @@ typedef struct cm_morph_options {
     void *progress_user;
 } cm_morph_options;
 
-void cm_morph_options_init(cm_morph_options *options);
+CM_API void cm_morph_options_init(cm_morph_options *options);
 
 typedef struct cm_morph cm_morph;
 
@@ -322,11 +330,11 @@ typedef struct cm_morph cm_morph;
  * could be built (no bridge from the polygon to the enclosure valid in
  * every geometry) or a mean value weight is not positive in doubles. The
  * linear method builds nothing and always succeeds on a valid result. */
-cm_status cm_morph_create(const cm_result *result, const cm_morph_options *options,
+CM_API cm_status cm_morph_create(const cm_result *result, const cm_morph_options *options,
                           cm_morph **morph);
-void cm_morph_free(cm_morph *morph);
+CM_API void cm_morph_free(cm_morph *morph);
 /* One line, no trailing newline; "" when nothing failed. Never NULL. */
-const char *cm_morph_message(const cm_morph *morph);
+CM_API const char *cm_morph_message(const cm_morph *morph);
 
 /* The section at time t in [0, 1].
  *   xy:            receives cm_result_num_vertices(result) * 2 doubles, in
@@ -340,7 +348,7 @@ const char *cm_morph_message(const cm_morph *morph);
  *                  (CM_ERR_INTERNAL); for CM_MORPH_LINEAR it is reported
  *                  and the call returns CM_OK.
  *   min_angle_deg: may be NULL; receives the section's smallest angle. */
-cm_status cm_morph_section(cm_morph *morph, double t, double *xy, size_t *inverted,
+CM_API cm_status cm_morph_section(cm_morph *morph, double t, double *xy, size_t *inverted,
                            double *min_angle_deg);
 
 typedef struct cm_sweep_options {
@@ -358,7 +366,7 @@ typedef struct cm_sweep_options {
     void *progress_user;
 } cm_sweep_options;
 
-void cm_sweep_options_init(cm_sweep_options *options);
+CM_API void cm_sweep_options_init(cm_sweep_options *options);
 
 typedef struct cm_sweep cm_sweep;
 
@@ -371,26 +379,26 @@ typedef struct cm_sweep cm_sweep;
  * split is not positive. Every section must be valid (a linear morph that
  * inverts fails). Same handle and message conventions as the morph; a
  * failed sweep holds no mesh. */
-cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_sweep **sweep);
-void cm_sweep_free(cm_sweep *sweep);
-const char *cm_sweep_message(const cm_sweep *sweep);
-size_t cm_sweep_num_sections(const cm_sweep *sweep);
-const double *cm_sweep_section_z(const cm_sweep *sweep);  /* one z per section */
+CM_API cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_sweep **sweep);
+CM_API void cm_sweep_free(cm_sweep *sweep);
+CM_API const char *cm_sweep_message(const cm_sweep *sweep);
+CM_API size_t cm_sweep_num_sections(const cm_sweep *sweep);
+CM_API const double *cm_sweep_section_z(const cm_sweep *sweep);  /* one z per section */
 /* Nodes: sections * nv, nv = cm_result_num_vertices; node s * nv + v is
  * vertex v of section s; 3 doubles (x, y, z) each. */
-size_t cm_sweep_num_nodes(const cm_sweep *sweep);
-const double *cm_sweep_nodes(const cm_sweep *sweep);
+CM_API size_t cm_sweep_num_nodes(const cm_sweep *sweep);
+CM_API const double *cm_sweep_nodes(const cm_sweep *sweep);
 /* 6 node indices per prism: bottom a b c (counter-clockwise seen from +z),
  * then top a' b' c' (Gmsh's wedge order). */
-size_t cm_sweep_num_prisms(const cm_sweep *sweep);
-const int32_t *cm_sweep_prisms(const cm_sweep *sweep);
+CM_API size_t cm_sweep_num_prisms(const cm_sweep *sweep);
+CM_API const int32_t *cm_sweep_prisms(const cm_sweep *sweep);
 /* 4 node indices per tetrahedron, positive volume (checked exactly); 0 /
  * NULL unless options.tets. Every prism is split by the diagonal rule of
  * Dompierre et al. (by smallest global node index), so faces conform. */
-size_t cm_sweep_num_tets(const cm_sweep *sweep);
-const int32_t *cm_sweep_tets(const cm_sweep *sweep);
+CM_API size_t cm_sweep_num_tets(const cm_sweep *sweep);
+CM_API const int32_t *cm_sweep_tets(const cm_sweep *sweep);
 /* Sum of the prism volumes (equal to the integral of section areas). */
-double cm_sweep_volume(const cm_sweep *sweep);
+CM_API double cm_sweep_volume(const cm_sweep *sweep);
 
 #ifdef __cplusplus
 }

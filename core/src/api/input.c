@@ -22,7 +22,7 @@ static int compare_indexed(const void *pa, const void *pb)
 
 /* Finds two vertices with identical coordinates in O(n log n).
  * Returns 1 (and *first < *second), 0 if none, -1 out of memory. */
-static int find_repeated_vertex(const double *xy, long n, long *first, long *second)
+static int first_repeated_vertex(const double *xy, long n, long *first, long *second)
 {
     indexed_point *p = malloc((size_t)n * sizeof *p);
     if (!p) return -1;
@@ -58,7 +58,7 @@ static cm_status check_one_polygon(const double *xy, long n, long g, cm_error *e
         }
     }
     long a, b;
-    int rep = find_repeated_vertex(xy, n, &a, &b);
+    int rep = first_repeated_vertex(xy, n, &a, &b);
     if (rep < 0) return cm_fail_status(err, CM_ERR_NO_MEMORY);
     if (rep) {
         cm_fail_at(err, g, b, a);

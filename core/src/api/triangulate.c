@@ -165,7 +165,7 @@ static cm_status hint_at_range(cm_result *r, cm_status s, const double *const *p
     return s;
 }
 
-static cm_status run(cm_result *r, const double *const *polygons, const size_t *counts,
+static cm_status run_pipeline(cm_result *r, const double *const *polygons, const size_t *counts,
                      size_t k, const cm_options *o)
 {
     cm_progress progress;
@@ -223,7 +223,7 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
     }
     cm_status s = check_remesh_options(r, options);
-    if (s == CM_OK) s = run(r, polygons, counts, k, options);
+    if (s == CM_OK) s = run_pipeline(r, polygons, counts, k, options);
     if (s != CM_OK) {
         cm_result_clear_geometry(r);
         r->error.status = s;

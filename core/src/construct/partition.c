@@ -101,7 +101,7 @@ static long add_vertex(part *p, const double *const *pos)
     return (long)p->nv++;
 }
 
-static int add_triangle(part *p, int32_t a, int32_t b, int32_t c)
+static int mesh_add_triangle(part *p, int32_t a, int32_t b, int32_t c)
 {
     if (cm_grow((void **)&p->tri, &p->cap_t, 3 * (p->nt + 1), sizeof *p->tri) != 0) return -1;
     p->tri[3 * p->nt] = a, p->tri[3 * p->nt + 1] = b, p->tri[3 * p->nt + 2] = c;
@@ -245,7 +245,7 @@ static unsigned char *local_common(const part *p, const item *it)
 
 static int add_item_triangle(part *p, const item *it, long a, long b, long c)
 {
-    return add_triangle(p, it->gid[a], it->gid[b], it->gid[c]);
+    return mesh_add_triangle(p, it->gid[a], it->gid[b], it->gid[c]);
 }
 
 /* A Steiner vertex at pos[g] and the fan from it over the item's local
@@ -255,7 +255,7 @@ static int emit_fan(part *p, const item *it, const int32_t *f, long n, const dou
     long x = add_vertex(p, pos);
     if (x < 0) return -1;
     for (long s = 0; s < n; s++)
-        if (add_triangle(p, it->gid[f[s]], it->gid[f[(s + 1) % n]], (int32_t)x) != 0) return -1;
+        if (mesh_add_triangle(p, it->gid[f[s]], it->gid[f[(s + 1) % n]], (int32_t)x) != 0) return -1;
     p->st->fans++;
     return 0;
 }
@@ -847,7 +847,7 @@ static cm_status fallback(part *p, item *it)
         if (map[v] < 0) goto done;
     }
     for (size_t t = 0; t < sub.nt; t++)
-        if (add_triangle(p, (int32_t)map[sub.tri[3 * t]], (int32_t)map[sub.tri[3 * t + 1]],
+        if (mesh_add_triangle(p, (int32_t)map[sub.tri[3 * t]], (int32_t)map[sub.tri[3 * t + 1]],
                          (int32_t)map[sub.tri[3 * t + 2]]) != 0)
             goto done;
     p->st->fallback_count++;
@@ -888,7 +888,7 @@ static int common_step(part *p, item *it, cm_status *s)
     return done;
 }
 
-static cm_status process(part *p, item *it)
+static cm_status process_item(part *p, item *it)
 {
     if (it->m == 3)
         return add_item_triangle(p, it, 0, 1, 2) == 0 ? CM_OK : no_memory(p);
@@ -958,7 +958,7 @@ cm_status cm_partition(const double *const *geoms, const int32_t *const *tris, s
     cm_status s = start(&p, geoms, tris);
     while (s == CM_OK && p.top > 0) {
         item it = p.stack[--p.top];
-        s = process(&p, &it);
+        s = process_item(&p, &it);
         item_free(&it);
         if (s == CM_OK && cm_progress_poll(progress, CM_STAGE_PARTITION, 0.0))
             s = cm_fail_status(err, CM_ERR_CANCELLED);

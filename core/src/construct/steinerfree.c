@@ -95,7 +95,7 @@ static double triangle_quality(const dp *d, long a, long b, long c)
 
 /* The triangle from fan point x on the directed edge a -> b, or -1 if
  * invalid in some geometry. */
-static double fan_quality(const dp *d, size_t x, long a, long b)
+static double fan_min_angle(const dp *d, size_t x, long a, long b)
 {
     double q = NO_TRIANGLE;
     for (size_t g = 0; g < d->k; g++) {
@@ -206,7 +206,7 @@ static void extend_chains(dp *d, long i, long l)
 
 /* The farthest l that row i needs: its farthest diagonal (the root's row
  * needs them all). */
-static long reach(const dp *d, long i)
+static long row_reach(const dp *d, long i)
 {
     if (i == 0) return d->m - 1;
     const unsigned char *row = d->common + (size_t)i * (size_t)d->m;
@@ -219,7 +219,7 @@ static void solve(dp *d)
 {
     long m = d->m;
     for (long i = m - 2; i >= 0; i--) {
-        long last = reach(d, i);
+        long last = row_reach(d, i);
         for (long l = i + 1; l <= last; l++) {
             if (l > i + 1) {
                 long s = find_link(d, i, l);
@@ -261,14 +261,14 @@ static int build_links(dp *d)
             d->g[s] = b == a + 1 ? (val){0, NO_TRIANGLE} : none;
             d->arg[s] = -1, d->by[s] = BY_TRIANGLE, d->fan_of[s] = -1;
             for (size_t x = 0; x < d->nfans; x++) {
-                d->fan_fwd[x * (size_t)count + (size_t)s] = fan_quality(d, x, a, b);
-                d->fan_rev[x * (size_t)count + (size_t)s] = b == a + 1 ? -1.0 : fan_quality(d, x, b, a);
+                d->fan_fwd[x * (size_t)count + (size_t)s] = fan_min_angle(d, x, a, b);
+                d->fan_rev[x * (size_t)count + (size_t)s] = b == a + 1 ? -1.0 : fan_min_angle(d, x, b, a);
             }
             s++;
         }
     }
     d->start[m] = d->start[m + 1] = s;
-    for (size_t x = 0; x < d->nfans; x++) d->root_fan[x] = fan_quality(d, x, m - 1, 0);
+    for (size_t x = 0; x < d->nfans; x++) d->root_fan[x] = fan_min_angle(d, x, m - 1, 0);
     return 0;
 }
 
@@ -289,7 +289,7 @@ static int push_link(link **stack, long *top, long *cap, long a, long b)
     return 0;
 }
 
-static void add_triangle(cm_sf_plan *p, long a, long b, long c)
+static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 {
     p->tri[3 * p->nt] = (int32_t)a, p->tri[3 * p->nt + 1] = (int32_t)b, p->tri[3 * p->nt + 2] = (int32_t)c;
     p->nt++;
@@ -351,7 +351,7 @@ static int read_plan(dp *d, cm_sf_plan *p)
         }
         int bad;
         if (by == BY_TRIANGLE) {
-            add_triangle(p, l.a, a, l.b);
+            plan_add_triangle(p, l.a, a, l.b);
             bad = push_link(&stack, &top, &cap, l.a, a) || push_link(&stack, &top, &cap, a, l.b);
         } else {
             bad = add_face(d, p, l.a, a, l.b, by == BY_FAN ? fan : -1, &stack, &top, &cap);

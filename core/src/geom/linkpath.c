@@ -379,7 +379,7 @@ static int open_grazing_windows(cm_linkpart *lp, long P, long i)
     return 0;
 }
 
-static void reach(cm_linkpart *lp, long v, int level, long via, int how, long a, long b)
+static void reach_vertex(cm_linkpart *lp, long v, int level, long via, int how, long a, long b)
 {
     lp->dist[v] = level, lp->via[v] = via, lp->how[v] = (unsigned char)how;
     lp->cone_a[v] = a, lp->cone_b[v] = b;
@@ -405,7 +405,7 @@ static int build_root(cm_linkpart *lp, pocket *p)
     return 0;
 }
 
-static int process(cm_linkpart *lp, long P)
+static int process_window(cm_linkpart *lp, long P)
 {
     pocket *p = &lp->pk[P];
     int s = p->source >= 0 ? build_root(lp, p) : cm_vsource_build(&p->vs, lp->pool, p->ids, p->k, p->source);
@@ -422,7 +422,7 @@ static int process(cm_linkpart *lp, long P)
         long v = p->ids[i], a, b;
         if (!candidate(p, i) || v >= lp->m || lp->dist[v] >= 0) continue;
         if (!cm_vsource_vertex_cone(&p->vs, i, &a, &b)) continue;
-        reach(lp, v, p->level, P, HOW_CONE, a, b);
+        reach_vertex(lp, v, p->level, P, HOW_CONE, a, b);
         if (open_windows(lp, P, i, a, b) < 0) return -1;
     }
     for (long i = 0; i < k; i++) {
@@ -434,17 +434,17 @@ static int process(cm_linkpart *lp, long P)
     p = &lp->pk[P];
     for (long e = 0; p->source < 0 && e < k; e += k - 1) {
         long v = p->ids[e];
-        if (v < lp->m && lp->dist[v] < 0) reach(lp, v, p->level, p->parent, HOW_NEAR, -1, -1);
+        if (v < lp->m && lp->dist[v] < 0) reach_vertex(lp, v, p->level, p->parent, HOW_NEAR, -1, -1);
     }
     for (long i = 0; i < k; i++) {
         long v = p->ids[i];
         if (candidate(p, i) && v < lp->m && lp->dist[v] < 0 && !lp->covered[i])
-            reach(lp, v, p->level + 1, P, HOW_NEAR, -1, -1);
+            reach_vertex(lp, v, p->level + 1, P, HOW_NEAR, -1, -1);
     }
     return 0;
 }
 
-static int run(cm_linkpart *lp, long s, int max_level)
+static int run_levels(cm_linkpart *lp, long s, int max_level)
 {
     if (lp->source == s && lp->max_level >= max_level) return 0;
     drop_pockets(lp);
@@ -452,7 +452,7 @@ static int run(cm_linkpart *lp, long s, int max_level)
     lp->dist[s] = 0;
     if (add_pocket(lp, lp->all, lp->m, 1, -1, s) < 0) return -1;
     for (long P = 0; P < lp->npk; P++)
-        if (lp->pk[P].level <= max_level && process(lp, P) < 0) {
+        if (lp->pk[P].level <= max_level && process_window(lp, P) < 0) {
             drop_pockets(lp);
             return -1;
         }
@@ -462,7 +462,7 @@ static int run(cm_linkpart *lp, long s, int max_level)
 
 int cm_link_distances_upto(cm_linkpart *lp, long s, int max_level, int *dist)
 {
-    if (run(lp, s, max_level) < 0) return -1;
+    if (run_levels(lp, s, max_level) < 0) return -1;
     memcpy(dist, lp->dist, (size_t)lp->m * sizeof *dist);
     return 0;
 }
@@ -646,7 +646,7 @@ static int build_bends(cm_linkpart *lp, long v, int d, double *pts)
 int cm_link_path(cm_linkpart *lp, long u, long v, double **bends, long *nbends)
 {
     *bends = NULL, *nbends = 0;
-    if (run(lp, u, INT_MAX) < 0) return -1;
+    if (run_levels(lp, u, INT_MAX) < 0) return -1;
     int d = lp->dist[v];
     if (d < 1) return 0;
     if (d == 1) return cm_path_valid(lp->xy, lp->m, u, v, NULL, 0);

@@ -57,11 +57,6 @@ static const double *edge_end(const scanline *sw, long e)
     return vertex_at(sw, e + 1);
 }
 
-static int lex_less(const double a[2], const double b[2])
-{
-    return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
-}
-
 static int same_point(const double a[2], const double b[2])
 {
     return a[0] == b[0] && a[1] == b[1];
@@ -70,13 +65,13 @@ static int same_point(const double a[2], const double b[2])
 static const double *edge_left(const scanline *sw, long e)
 {
     const double *s = edge_start(sw, e), *t = edge_end(sw, e);
-    return lex_less(t, s) ? t : s;
+    return cm_point_less(t, s) ? t : s;
 }
 
 static const double *edge_right(const scanline *sw, long e)
 {
     const double *s = edge_start(sw, e), *t = edge_end(sw, e);
-    return lex_less(t, s) ? s : t;
+    return cm_point_less(t, s) ? s : t;
 }
 
 /* Edge `first` (u to v) is followed by edge `second` (v to w): they
@@ -85,7 +80,7 @@ static int consecutive_overlap(const scanline *sw, long first, long second)
 {
     const double *u = edge_start(sw, first), *v = edge_end(sw, first);
     const double *w = edge_end(sw, second);
-    return cm_orient2d(u, v, w) == 0 && lex_less(u, v) == lex_less(w, v);
+    return cm_orient2d(u, v, w) == 0 && cm_point_less(u, v) == cm_point_less(w, v);
 }
 
 static int edges_offend(const scanline *sw, long i, long j)
@@ -232,8 +227,8 @@ static int process_vertex(scanline *sw, long v)
 {
     long n = sw->n, incoming = (v + n - 1) % n, outgoing = v;
     const double *p = vertex_at(sw, v);
-    int incoming_ends = lex_less(vertex_at(sw, v + n - 1), p);
-    int outgoing_ends = lex_less(vertex_at(sw, v + 1), p);
+    int incoming_ends = cm_point_less(vertex_at(sw, v + n - 1), p);
+    int outgoing_ends = cm_point_less(vertex_at(sw, v + 1), p);
     if (incoming_ends && status_remove(sw, incoming)) return 1;
     if (outgoing_ends && status_remove(sw, outgoing)) return 1;
     if (!incoming_ends && status_insert(sw, incoming, p)) return 1;

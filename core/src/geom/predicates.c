@@ -28,11 +28,9 @@
 #pragma STDC FP_CONTRACT OFF /* no fused a*b+c (GCC: off in ISO C mode) */
 #endif
 
-/* Unit roundoff of IEEE double with round-to-nearest. */
-#define EPS 0x1p-53
 
-static const double orient_errbound = (3.0 + 16.0 * EPS) * EPS;
-static const double incircle_errbound = (10.0 + 96.0 * EPS) * EPS;
+static const double orient_errbound = (3.0 + 16.0 * CM_EPS) * CM_EPS;
+static const double incircle_errbound = (10.0 + 96.0 * CM_EPS) * CM_EPS;
 
 /* Bounds on the magnitude of the filters' inputs; see the callers. */
 #define ORIENT_MIN 0x1p-500
@@ -243,19 +241,14 @@ int cm_incircle(const double a[2], const double b[2], const double c[2],
 }
 
 /* a < b in (x, then y) order. */
-static int lex_less(const double a[2], const double b[2])
-{
-    return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
-}
-
 /* p on the closed segment ab, given that a, b, p are collinear. Along a
  * line, (x, y) order is the order of the points on it. */
 static int between_collinear(const double a[2], const double b[2],
                              const double p[2])
 {
-    const double *lo = lex_less(b, a) ? b : a;
-    const double *hi = lex_less(b, a) ? a : b;
-    return !lex_less(p, lo) && !lex_less(hi, p);
+    const double *lo = cm_point_less(b, a) ? b : a;
+    const double *hi = cm_point_less(b, a) ? a : b;
+    return !cm_point_less(p, lo) && !cm_point_less(hi, p);
 }
 
 int cm_segments_intersect(const double a[2], const double b[2],
@@ -276,7 +269,7 @@ int cm_polygon_orientation(const double *xy, long n)
 {
     if (n < 3) return 0;
     /* Recursive summation of n terms of two products each: the error is
-     * below (n + 1) * EPS * (1 + 2^-18) * sum|products| while n < 2^30
+     * below (n + 1) * CM_EPS * (1 + 2^-18) * sum|products| while n < 2^30
      * (Higham, Accuracy and Stability, 3.1); 2n + 4 leaves room for the
      * rounding of `absolute` itself and of the bound. Coordinates within
      * 2^+-500 rule out underflow; a finite `absolute` rules out overflow,
@@ -292,7 +285,7 @@ int cm_polygon_orientation(const double *xy, long n)
             absolute += fabs(left) + fabs(right);
         }
         if (in_range && isfinite(absolute)) {
-            double errbound = (2.0 * (double)n + 4.0) * EPS * absolute;
+            double errbound = (2.0 * (double)n + 4.0) * CM_EPS * absolute;
             if (fabs(sum) > errbound) return sign_of(sum);
         }
     }
@@ -301,7 +294,7 @@ int cm_polygon_orientation(const double *xy, long n)
 
 /* ---- 3D orientation and blended triangles ---------------------------- */
 
-static const double orient3d_errbound = (7.0 + 56.0 * EPS) * EPS;
+static const double orient3d_errbound = (7.0 + 56.0 * CM_EPS) * CM_EPS;
 #define ORIENT3D_MIN 0x1p-300
 #define ORIENT3D_MAX 0x1p+300
 
@@ -397,14 +390,14 @@ int cm_blend_positive(const double a0[2], const double b0[2], const double c0[2]
     double d[8] = {b0[0] - a0[0], b0[1] - a0[1], c0[0] - a0[0], c0[1] - a0[1],
                    b1[0] - a1[0], b1[1] - a1[1], c1[0] - a1[0], c1[1] - a1[1]};
     if (all_within(d, 8, ORIENT_MIN, ORIENT_MAX)) {
-        /* Filter: each cross product has relative error below 4 EPS of
+        /* Filter: each cross product has relative error below 4 CM_EPS of
          * its permanent (two roundings of the differences, products, sum);
          * decide only with a wide margin, else go exact. */
         double a0f = d[0] * d[3] - d[1] * d[2], a0p = fabs(d[0] * d[3]) + fabs(d[1] * d[2]);
         double a1f = d[4] * d[7] - d[5] * d[6], a1p = fabs(d[4] * d[7]) + fabs(d[5] * d[6]);
         double mf = d[0] * d[7] - d[1] * d[6] + d[4] * d[3] - d[5] * d[2];
         double mp = fabs(d[0] * d[7]) + fabs(d[1] * d[6]) + fabs(d[4] * d[3]) + fabs(d[5] * d[2]);
-        const double rel = 16.0 * EPS;
+        const double rel = 16.0 * CM_EPS;
         if (a0f > rel * a0p && a1f > rel * a1p) {
             if (mf > rel * mp) return 1;
             double a0lo = a0f - rel * a0p, a1lo = a1f - rel * a1p;

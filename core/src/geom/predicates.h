@@ -5,6 +5,9 @@
 #ifndef CM_PREDICATES_H
 #define CM_PREDICATES_H
 
+/* Unit roundoff of IEEE double with round-to-nearest. */
+#define CM_EPS 0x1p-53
+
 /* +1 if a, b, c turn counter-clockwise, -1 clockwise, 0 collinear. */
 int cm_orient2d(const double a[2], const double b[2], const double c[2]);
 
@@ -31,5 +34,11 @@ int cm_orient3d(const double a[3], const double b[3], const double c[3], const d
  * in s; decided exactly), else 0. */
 int cm_blend_positive(const double a0[2], const double b0[2], const double c0[2],
                       const double a1[2], const double b1[2], const double c1[2]);
+
+/* (x, then y) order of points: along a line, the order of the points on it. */
+static inline int cm_point_less(const double a[2], const double b[2])
+{
+    return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
+}
 
 #endif

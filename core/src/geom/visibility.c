@@ -240,7 +240,7 @@ static int xo(const ear_ctx *e, long a, long b, long c)
     return cm_xorient(e->pool, e->ids[a], e->ids[b], e->ids[c]);
 }
 
-static int ear_blocked(ear_ctx *e, long a, long b, long c)
+static int xear_blocked(ear_ctx *e, long a, long b, long c)
 {
     long kept = 0;
     int blocked = 0;
@@ -255,13 +255,13 @@ static int ear_blocked(ear_ctx *e, long a, long b, long c)
     return blocked;
 }
 
-static void update_vertex(ear_ctx *e, long v)
+static void xupdate_vertex(ear_ctx *e, long v)
 {
     e->turn[v] = (signed char)xo(e, e->prev[v], v, e->next[v]);
-    e->ear[v] = e->turn[v] > 0 && !ear_blocked(e, e->prev[v], v, e->next[v]);
+    e->ear[v] = e->turn[v] > 0 && !xear_blocked(e, e->prev[v], v, e->next[v]);
 }
 
-static int clip(ear_ctx *e, long k, int32_t *tri_out)
+static int clip_ears(ear_ctx *e, long k, int32_t *tri_out)
 {
     for (long i = 0; i < k; i++) e->prev[i] = (i + k - 1) % k, e->next[i] = (i + 1) % k, e->gone[i] = 0;
     e->nblockers = 0;
@@ -269,7 +269,7 @@ static int clip(ear_ctx *e, long k, int32_t *tri_out)
         e->turn[i] = (signed char)xo(e, e->prev[i], i, e->next[i]);
         if (e->turn[i] <= 0) e->blockers[e->nblockers++] = i;
     }
-    for (long i = 0; i < k; i++) e->ear[i] = e->turn[i] > 0 && !ear_blocked(e, e->prev[i], i, e->next[i]);
+    for (long i = 0; i < k; i++) e->ear[i] = e->turn[i] > 0 && !xear_blocked(e, e->prev[i], i, e->next[i]);
     long remaining = k, v = 0, misses = 0, t = 0;
     while (remaining > 3) {
         if (!e->ear[v]) {
@@ -282,8 +282,8 @@ static int clip(ear_ctx *e, long k, int32_t *tri_out)
         t++;
         e->next[a] = c, e->prev[c] = a, e->gone[v] = 1;
         remaining--;
-        update_vertex(e, a);
-        update_vertex(e, c);
+        xupdate_vertex(e, a);
+        xupdate_vertex(e, c);
         misses = 0;
         v = a;
     }
@@ -299,7 +299,7 @@ int cm_xtriangulate(cm_xpool *pool, const long *ids, long k, int32_t *tri_out)
     ear_ctx e = {pool, ids, malloc(n * sizeof(long)), malloc(n * sizeof(long)),
                  malloc(n * sizeof(long)), 0, malloc(n), malloc(n), malloc(n)};
     int status = -1;
-    if (e.prev && e.next && e.blockers && e.turn && e.ear && e.gone) status = clip(&e, k, tri_out);
+    if (e.prev && e.next && e.blockers && e.turn && e.ear && e.gone) status = clip_ears(&e, k, tri_out);
     free(e.prev), free(e.next), free(e.blockers), free(e.turn), free(e.ear), free(e.gone);
     return status;
 }

@@ -11,7 +11,6 @@
 
 #include "geom/predicates.h"
 
-#define EPS 0x1p-53
 
 typedef struct xpoint {
     double xy[2];
@@ -209,7 +208,7 @@ int cm_xorient(cm_xpool *pool, long a, long b, long c)
         double cax = pc->xy[0] - pa->xy[0], cay = pc->xy[1] - pa->xy[1];
         double l = bax * cay, r = bay * cax, det = l - r;
         double bound = e * (fabs(bax) + fabs(bay) + fabs(cax) + fabs(cay)) + 2.0 * e * e +
-                       8.0 * EPS * (fabs(l) + fabs(r));
+                       8.0 * CM_EPS * (fabs(l) + fabs(r));
         if (det > 1.01 * bound) return 1;
         if (-det > 1.01 * bound) return -1;
     }
@@ -221,7 +220,7 @@ int cm_xcompare(cm_xpool *pool, long p, long q, int axis)
     const xpoint *pp = &pool->p[p], *pq = &pool->p[q];
     double diff = pp->xy[axis] - pq->xy[axis];
     if (!pp->hom && !pq->hom) return (diff > 0) - (diff < 0);
-    double bound = 1.01 * (pp->err + pq->err + EPS * fabs(diff));
+    double bound = 1.01 * (pp->err + pq->err + CM_EPS * fabs(diff));
     if (isfinite(bound) && fabs(diff) > bound) return (diff > 0) - (diff < 0);
     homogeneous(pool, p, pool->s[0]);
     homogeneous(pool, q, pool->s[1]);

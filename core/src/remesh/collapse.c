@@ -21,7 +21,7 @@ static int32_t link_at(const cm_kmesh *km, const cm_ibuf *star, long i)
 }
 
 /* Smallest angle of the fan from u = link j, over all geometries. */
-static double fan_quality(const cm_kmesh *km, const cm_ibuf *star, long j)
+static double collapse_quality(const cm_kmesh *km, const cm_ibuf *star, long j)
 {
     long m = (long)star->n;
     int32_t u = link_at(km, star, j);
@@ -71,7 +71,7 @@ static double best_collapse(cm_kmesh *km, int32_t v, double threshold, cm_ibuf *
     option opts[CM_COLLAPSE_MAX_DEGREE];
     long count = 0;
     for (long j = 0; j < m; j++) {
-        double q = fan_quality(km, star, j);
+        double q = collapse_quality(km, star, j);
         if (q > 0 && q >= need) opts[count++] = (option){q, j};
     }
     qsort(opts, (size_t)count, sizeof *opts, by_quality_desc);

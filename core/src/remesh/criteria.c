@@ -32,7 +32,7 @@ static double entry_height(const frame *f, double px, double py)
 }
 
 /* Clips parameter interval [*t0, *t1] to {alpha + beta t > 0}. */
-static void clip(double alpha, double beta, double *t0, double *t1)
+static void clip_interval(double alpha, double beta, double *t0, double *t1)
 {
     if (beta == 0) {
         if (!(alpha > 0)) *t0 = 1, *t1 = 0;
@@ -52,9 +52,9 @@ static double segment_entry(const frame *f, const double *p, const double *q, in
     double rx = p[0] - f->mx, ry = p[1] - f->my, dx = q[0] - p[0], dy = q[1] - p[1];
     double s0 = rx * f->ux + ry * f->uy, sd = dx * f->ux + dy * f->uy;
     double d0 = -rx * f->uy + ry * f->ux, dd = -dx * f->uy + dy * f->ux;
-    clip(d0, dd, &t0, &t1);
-    clip(f->half - s0, -sd, &t0, &t1);
-    clip(f->half + s0, sd, &t0, &t1);
+    clip_interval(d0, dd, &t0, &t1);
+    clip_interval(f->half - s0, -sd, &t0, &t1);
+    clip_interval(f->half + s0, sd, &t0, &t1);
     if (!(t0 <= t1)) return HUGE_VAL;
     double h = fmin(entry_height(f, p[0] + t0 * dx, p[1] + t0 * dy),
                     entry_height(f, p[0] + t1 * dx, p[1] + t1 * dy));

@@ -187,6 +187,22 @@ void cm_kmesh_touch(cm_kmesh *km, int32_t t)
     for (int32_t c = 3 * t; c < 3 * t + 3; c++) update_edge(km, c);
 }
 
+int cm_kmesh_tx_rollback(cm_kmesh *km)
+{
+    long nt = cm_log_undo(km);
+    if (nt < 0) return -1;
+    for (long i = 0; i < nt; i++) {
+        int32_t t = cm_log_saved_triangle(km->log, (size_t)i);
+        if (km->tri[3 * t] >= 0) {
+            cm_kmesh_touch(km, t);
+            continue;
+        }
+        cm_heap_remove(&km->tq, t);
+        for (int j = 0; j < 3; j++) cm_heap_remove(&km->eq, 3 * t + j);
+    }
+    return 0;
+}
+
 void cm_kmesh_set_caps(cm_kmesh *km, double target, const double *bcap, const double *vcap)
 {
     km->target = target;

@@ -1,7 +1,8 @@
 /* The mesh's undo log. Copy on first write: within a transaction every
  * triangle slot and vertex is saved before its first change, and every
  * free-list operation is recorded, so a rollback restores the mesh
- * exactly, keys and heaps included. */
+ * exactly; kmesh.c then re-keys the restored triangles. The log only
+ * records and restores: it calls nothing in kmesh.c. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -139,7 +140,7 @@ static void undo_free_lists(cm_kmesh *km)
     }
 }
 
-int cm_kmesh_tx_rollback(cm_kmesh *km)
+long cm_log_undo(cm_kmesh *km)
 {
     struct cm_kmesh_log *log = km->log;
     if (!log || !log->active) return 0;
@@ -158,16 +159,12 @@ int cm_kmesh_tx_rollback(cm_kmesh *km)
             km->xy[g][2 * (size_t)v] = log->pos.a[d], km->xy[g][2 * (size_t)v + 1] = log->pos.a[d + 1];
     }
     km->nv = log->nv, km->nt = log->nt, km->live_v = log->live_v, km->live_t = log->live_t;
-    for (size_t i = 0; i < nt; i++) {
-        int32_t t = log->tsave.a[7 * i];
-        if (km->tri[3 * t] >= 0) {
-            cm_kmesh_touch(km, t);
-            continue;
-        }
-        cm_heap_remove(&km->tq, t);
-        for (int j = 0; j < 3; j++) cm_heap_remove(&km->eq, 3 * t + j);
-    }
-    return 0;
+    return (long)nt;
+}
+
+int32_t cm_log_saved_triangle(const struct cm_kmesh_log *log, size_t i)
+{
+    return log->tsave.a[7 * i];
 }
 
 void cm_kmesh_log_free(struct cm_kmesh_log *log)

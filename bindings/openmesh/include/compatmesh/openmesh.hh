@@ -57,6 +57,7 @@
 #include <OpenMesh/Core/Utils/Noncopyable.hh>
 
 #include <compatmesh/compatmesh.h>
+#include <compatmesh/handles.hh>
 #include <compatmesh/plane.hh>
 
 #include <cstddef>
@@ -114,14 +115,6 @@ Boundary make_boundary(std::vector<double> xyz, std::vector<int> source_vertex,
 // that branches or is not closed, non-planar points.
 template <class Mesh>
 Boundary read_boundary(const Mesh &mesh, double relative_tolerance = kDefaultPlanarityTolerance);
-
-struct ResultDeleter {
-  void operator()(cm_result *result) const { cm_result_free(result); }
-};
-using ResultPtr = std::unique_ptr<cm_result, ResultDeleter>;
-
-// Progress: fraction in [0, 1] and a short stage name; return true to cancel.
-using ProgressFn = std::function<bool(double fraction, const char *stage)>;
 
 // Runs the core on the polygons. Throws Error with the core's status and
 // message (the location translated to the input mesh's vertex) on failure;
