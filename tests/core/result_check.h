@@ -148,4 +148,34 @@ static inline int rc_check(const cm_result *r, const double *const *polygons, si
     return 1;
 }
 
+/* The half-edge arrays of r agree with its triangles: h and h ^ 1 are
+ * opposite (different end vertices), every face's next cycle has length 3
+ * within the face, n boundary half-edges, 2 (V + F - 1) in all. */
+static inline int rc_check_halfedges(const cm_result *r, size_t n, char *why, size_t size)
+{
+    size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
+    size_t nh = cm_result_num_halfedges(r), boundary = 0;
+    const int32_t *next = cm_result_halfedge_next(r), *to = cm_result_halfedge_to_vertex(r),
+                  *face = cm_result_halfedge_face(r);
+    if (!next || !to || !face) return rc_fail(why, size, "no half-edges");
+    for (size_t h = 0; h < nh; h++) {
+        if (to[h] == to[h ^ 1]) return rc_fail(why, size, "half-edges %zu and %zu end at one vertex", h, h ^ 1);
+        if (face[h] < 0) {
+            boundary++;
+            continue;
+        }
+        if (next[next[next[h]]] != (int32_t)h || face[next[h]] != face[h])
+            return rc_fail(why, size, "half-edge %zu: its face's next cycle is not a triangle", h);
+    }
+    if (boundary != n || nh != 2 * (nv + nt - 1))
+        return rc_fail(why, size, "%zu half-edges, %zu on the boundary", nh, boundary);
+    return 1;
+}
+
+/* rc_check and rc_check_halfedges, for a test that wants a yes or no. */
+static inline int rc_valid(const cm_result *r, const double *const *polygons, size_t k, size_t n)
+{
+    return rc_check(r, polygons, k, n, NULL, 0) && rc_check_halfedges(r, n, NULL, 0);
+}
+
 #endif

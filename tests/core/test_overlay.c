@@ -9,33 +9,7 @@
 #include "compatmesh/compatmesh.h"
 #include "geom/predicates.h"
 #include "random_polygons.h"
-
-/* Independent check from the public API: contract and validity. */
-static int result_is_valid(const cm_result *r, const double *const *in, size_t k, size_t n)
-{
-    size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
-    const int32_t *tri = cm_result_triangles(r);
-    if (cm_result_status(r) != CM_OK || !tri || nv < n) return 0;
-    if (nt != n + 2 * (nv - n) - 2) return 0;
-    for (size_t g = 0; g < k; g++) {
-        const double *xy = cm_result_vertices(r, g);
-        if (memcmp(xy, in[g], 2 * n * sizeof *xy) != 0) return 0; /* bit-identical */
-        for (size_t t = 0; t < nt; t++)
-            if (cm_orient2d(xy + 2 * tri[3 * t], xy + 2 * tri[3 * t + 1], xy + 2 * tri[3 * t + 2]) <= 0)
-                return 0;
-    }
-    /* Half-edges: opposite pairs, next cycles of length 3 on faces. */
-    size_t nh = cm_result_num_halfedges(r);
-    const int32_t *next = cm_result_halfedge_next(r), *to = cm_result_halfedge_to_vertex(r),
-                  *face = cm_result_halfedge_face(r);
-    size_t boundary = 0;
-    for (size_t h = 0; h < nh; h++) {
-        if (to[h] == to[h ^ 1]) return 0;
-        if (face[h] < 0) { boundary++; continue; }
-        if (next[next[next[h]]] != (int32_t)h || face[next[h]] != face[h]) return 0;
-    }
-    return boundary == n && nh == 2 * (nv + nt - 1);
-}
+#include "result_check.h"
 
 typedef struct {
     const char *name;
@@ -62,7 +36,7 @@ static void run_fixture(const fixture *f)
     cm_status s = cm_triangulate_polygons((const double *const *)f->xy,
                                           (size_t[]){f->n, f->n, f->n}, f->k, &o, &r);
     CHECK_MSG(s == CM_OK, "%s: %s", f->name, cm_result_message(r));
-    CHECK_MSG(result_is_valid(r, (const double *const *)f->xy, f->k, f->n), "%s: invalid", f->name);
+    CHECK_MSG(rc_valid(r, (const double *const *)f->xy, f->k, f->n), "%s: invalid", f->name);
     const cm_stats *st = cm_result_stats(r);
     CHECK_MSG(st->steiner <= f->max_steiner, "%s: %zu Steiner vertices > %zu", f->name,
               st->steiner, f->max_steiner);
@@ -149,7 +123,7 @@ static void test_clockwise_input(void)
     cm_options o = overlay_options();
     CHECK(cm_triangulate_polygons(in, (size_t[]){n, n}, 2, &o, &r) == CM_OK);
     CHECK(cm_result_stats(r)->reversed_input == 1);
-    CHECK(result_is_valid(r, in, 2, n));
+    CHECK(rc_valid(r, in, 2, n));
     /* Boundary half-edges run along the input's (clockwise) order. */
     const int32_t *vh = cm_result_vertex_halfedge(r), *to = cm_result_halfedge_to_vertex(r),
                   *face = cm_result_halfedge_face(r);
@@ -178,7 +152,7 @@ static void test_property_random_pairs(int count)
         if (s != CM_OK) {
             failed++;
             fprintf(stderr, "seed %d: %s\n", seed, cm_result_message(r));
-        } else if (!result_is_valid(r, in, 2, (size_t)n)) {
+        } else if (!rc_valid(r, in, 2, (size_t)n)) {
             invalid++;
         } else {
             steiner_total += cm_result_stats(r)->steiner;

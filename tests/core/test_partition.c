@@ -14,35 +14,8 @@
 #include "construct/partition.h"
 #include "geom/predicates.h"
 #include "random_polygons.h"
+#include "result_check.h"
 #include "geom/visibility.h"
-
-/* Independent check from the public API: contract and validity. */
-static int result_is_valid(const cm_result *r, const double *const *in, size_t k, size_t n)
-{
-    size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
-    const int32_t *tri = cm_result_triangles(r);
-    if (cm_result_status(r) != CM_OK || !tri || nv < n) return 0;
-    if (nt != n + 2 * (nv - n) - 2) return 0;
-    for (size_t g = 0; g < k; g++) {
-        const double *xy = cm_result_vertices(r, g);
-        if (memcmp(xy, in[g], 2 * n * sizeof *xy) != 0) return 0;
-        for (size_t t = 0; t < nt; t++)
-            if (cm_orient2d(xy + 2 * tri[3 * t], xy + 2 * tri[3 * t + 1], xy + 2 * tri[3 * t + 2]) <= 0)
-                return 0;
-    }
-    size_t nh = cm_result_num_halfedges(r), boundary = 0;
-    const int32_t *next = cm_result_halfedge_next(r), *to = cm_result_halfedge_to_vertex(r),
-                  *face = cm_result_halfedge_face(r);
-    for (size_t h = 0; h < nh; h++) {
-        if (to[h] == to[h ^ 1]) return 0;
-        if (face[h] < 0) {
-            boundary++;
-            continue;
-        }
-        if (next[next[next[h]]] != (int32_t)h || face[next[h]] != face[h]) return 0;
-    }
-    return boundary == n && nh == 2 * (nv + nt - 1);
-}
 
 /* Runs the default method without remeshing; returns the Steiner count,
  * or -1 if the result is not valid. */
@@ -55,7 +28,7 @@ static long run(const double *const *xy, size_t k, size_t n, size_t *fallbacks)
     cm_result *r = NULL;
     cm_status s = cm_triangulate_polygons(xy, counts, k, &o, &r);
     long steiner = -1;
-    if (s == CM_OK && result_is_valid(r, xy, k, n)) steiner = (long)cm_result_stats(r)->steiner;
+    if (s == CM_OK && rc_valid(r, xy, k, n)) steiner = (long)cm_result_stats(r)->steiner;
     if (fallbacks) *fallbacks = s == CM_OK ? cm_result_stats(r)->fallback_count : 0;
     if (s != CM_OK) fprintf(stderr, "cm_triangulate: %s\n", cm_result_message(r));
     cm_result_free(r);
@@ -293,7 +266,7 @@ static void test_overlay_method(void)
     size_t counts[2] = {50, 50};
     cm_result *r = NULL;
     CHECK(cm_triangulate_polygons(xy, counts, 2, &o, &r) == CM_OK);
-    CHECK(result_is_valid(r, xy, 2, 50));
+    CHECK(rc_valid(r, xy, 2, 50));
     cm_result_free(r);
 }
 

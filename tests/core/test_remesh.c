@@ -13,6 +13,7 @@
 #include "geom/predicates.h"
 #include "random_mesh.h"
 #include "random_polygons.h"
+#include "result_check.h"
 #include "remesh/areaeq.h"
 #include "remesh/collapse.h"
 #include "remesh/criteria.h"
@@ -339,20 +340,6 @@ typedef struct fixture {
     size_t max_steiner;
 } fixture;
 
-static int result_contract(const cm_result *r, const double *const *in, size_t n)
-{
-    size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
-    const int32_t *tri = cm_result_triangles(r);
-    if (cm_result_status(r) != CM_OK || !tri || nv < n || nt != n + 2 * (nv - n) - 2) return 0;
-    for (size_t g = 0; g < 2; g++) {
-        const double *xy = cm_result_vertices(r, g);
-        if (memcmp(xy, in[g], 2 * n * sizeof *xy) != 0) return 0;
-        for (size_t t = 0; t < nt; t++)
-            if (cm_orient2d(xy + 2 * tri[3 * t], xy + 2 * tri[3 * t + 1], xy + 2 * tri[3 * t + 2]) <= 0) return 0;
-    }
-    return 1;
-}
-
 /* Smallest interior corner angle of the two polygons, degrees. */
 static double smallest_corner(const double *const *in, size_t n)
 {
@@ -377,7 +364,7 @@ static void run_fixture(const fixture *f)
         cm_result_free(r);
         return;
     }
-    CHECK_MSG(result_contract(r, in, f->n), "%s: output contract", f->name);
+    CHECK_MSG(rc_valid(r, in, 2, f->n), "%s: output contract", f->name);
     cm_quality q[2], q0[2];
     for (size_t g = 0; g < 2; g++) {
         cm_result_quality(r, g, &q[g]);
@@ -492,7 +479,7 @@ static void test_options(void)
         o.smoothing = (cm_smoothing)i, o.area_every = i, o.k_split = 1 + i;
         if (i == 3) o.max_steiner = 0;
         CHECK(cm_triangulate_polygons(in, (size_t[]){n, n}, 2, &o, &r) == CM_OK);
-        CHECK(result_contract(r, in, n));
+        CHECK(rc_valid(r, in, 2, n));
         CHECK(cm_result_quality(r, 0, &q) == CM_OK && cm_result_quality_before(r, 0, &q0) == CM_OK);
         CHECK_MSG(q.min_angle_deg >= q0.min_angle_deg, "smoothing %d: %.2f < %.2f", i,
                   q.min_angle_deg, q0.min_angle_deg);
@@ -530,7 +517,7 @@ static void test_cancel_and_clockwise(void)
             t = b[2 * i + c]; b[2 * i + c] = b[2 * (n - 1 - i) + c]; b[2 * (n - 1 - i) + c] = t;
         }
     CHECK(cm_triangulate_polygons(in, (size_t[]){n, n}, 2, NULL, &r) == CM_OK);
-    CHECK(cm_result_stats(r)->reversed_input == 1 && result_contract(r, in, n));
+    CHECK(cm_result_stats(r)->reversed_input == 1 && rc_valid(r, in, 2, n));
     cm_result_free(r);
     free(a), free(b);
 }
