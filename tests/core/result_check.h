@@ -8,7 +8,7 @@
  *
  * What it checks, for every geometry: the n input vertices come back
  * bit-identical and every vertex is finite; every triangle is strictly
- * counter-clockwise (exact orientation, core/src/predicates.h); every
+ * counter-clockwise (exact orientation, core/src/geom/predicates.h); every
  * directed edge is used once at most; the edges used by one triangle only
  * are exactly the polygon's edges, counter-clockwise around it (the input's
  * order, or its reverse for clockwise input); V - E + F = 1; and the
