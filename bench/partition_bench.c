@@ -229,7 +229,7 @@ static void inner_stages(const pair *p, cm_partition_stats *st)
     for (int i = 0; ok && i < p->n; i++) idx[i] = i;
     for (int g = 0; ok && g < p->k; g++) {
         tris[g] = malloc(sizeof(int32_t) * 3 * (size_t)p->n);
-        ok = tris[g] && cm_polygon_triangulate(p->xy[g], idx, p->n, tris[g]) == 0;
+        ok = tris[g] && cm_polygon_triangulate(p->xy[g], idx, p->n, tris[g], NULL) == 0;
     }
     if (ok) cm_partition((const double *const *)p->xy, (const int32_t *const *)tris, (size_t)p->k, (size_t)p->n, NULL,
                          &r->mesh, st, &r->error);
@@ -252,7 +252,7 @@ static int steinerfree_possible(const pair *p)
     for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
     memset(common, 1, n * n);
     for (int g = 0; g < p->k; g++) {
-        if (cm_polygon_triangulate(p->xy[g], idx, p->n, tri) != 0 || cm_visibility_table(p->xy[g], p->n, tri, vis) != 0)
+        if (cm_polygon_triangulate(p->xy[g], idx, p->n, tri, NULL) != 0 || cm_visibility_table(p->xy[g], p->n, tri, vis) != 0)
             goto done;
         for (size_t i = 0; i < n * n; i++) common[i] &= vis[i];
     }

@@ -1,14 +1,46 @@
-#define _POSIX_C_SOURCE 200809L /* sigaction */
+#define _POSIX_C_SOURCE 200809L /* sigaction, timer_create */
 
 #include "interrupt.h"
 
 #include <string.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "cli_common.h"
 
 volatile sig_atomic_t interrupted;
+volatile sig_atomic_t writing_output;
+
+/* The core polls its progress callback in every long loop, so a run
+ * normally ends within a fraction of a second of the signal; should one
+ * step not poll in time, the watchdog ends the process WATCHDOG_NS after
+ * the signal, unless output is being written (the writers check
+ * `interrupted` between files and remove what they staged). */
+#define WATCHDOG_NS 600000000L
+
+static timer_t watchdog;
+static int have_watchdog;
+
+static void on_watchdog(int signal_number)
+{
+    (void)signal_number;
+    if (writing_output) return;
+    static const char message[] = "compatmesh: interrupted; nothing written\n";
+    ssize_t written = write(STDERR_FILENO, message, sizeof message - 1);
+    (void)written;
+    _exit(CLI_EXIT_INTERRUPTED);
+}
 
 static void on_interrupt(int signal_number)
 {
     (void)signal_number;
+    if (!interrupted && have_watchdog) {
+        struct itimerspec when;
+        memset(&when, 0, sizeof when);
+        when.it_value.tv_nsec = WATCHDOG_NS;
+        when.it_interval.tv_nsec = WATCHDOG_NS; /* again while writing */
+        timer_settime(watchdog, 0, &when, NULL);
+    }
     interrupted = 1;
 }
 
@@ -16,8 +48,15 @@ void catch_interrupts(void)
 {
     struct sigaction action;
     memset(&action, 0, sizeof action);
-    action.sa_handler = on_interrupt;
     sigemptyset(&action.sa_mask);
+    action.sa_handler = on_watchdog;
+    sigaction(SIGALRM, &action, NULL);
+    struct sigevent event;
+    memset(&event, 0, sizeof event);
+    event.sigev_notify = SIGEV_SIGNAL;
+    event.sigev_signo = SIGALRM;
+    have_watchdog = timer_create(CLOCK_MONOTONIC, &event, &watchdog) == 0;
+    action.sa_handler = on_interrupt;
     sigaction(SIGINT, &action, NULL);
     sigaction(SIGTERM, &action, NULL);
 }

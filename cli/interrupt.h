@@ -1,4 +1,5 @@
-/* Ctrl-C and SIGTERM: stop the computation cleanly, leaving no output. */
+/* Ctrl-C and SIGTERM: stop the computation within a second, leaving no
+ * output. */
 #ifndef CM_CLI_INTERRUPT_H
 #define CM_CLI_INTERRUPT_H
 
@@ -6,6 +7,8 @@
 
 /* Set by the handler; checked between output files. */
 extern volatile sig_atomic_t interrupted;
+/* Set while a staged output is open (outdir.c): the watchdog waits. */
+extern volatile sig_atomic_t writing_output;
 
 void catch_interrupts(void);
 

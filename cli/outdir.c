@@ -1,6 +1,7 @@
 #define _POSIX_C_SOURCE 200809L /* mkdtemp, strdup */
 
 #include "outdir.h"
+#include "interrupt.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -123,7 +124,9 @@ int staged_output_begin(staged_output *out, const char *target, cli_error *error
         cli_error_set(error, "out of memory");
         return CLI_EXIT_INTERNAL;
     }
+    writing_output = 1; /* the staging directory exists from here on */
     if (!mkdtemp(staging)) {
+        writing_output = 0;
         cli_error_set(error, "cannot create a temporary directory in or beside %s: %s",
                       target, strerror(errno));
         free(staging);
@@ -238,6 +241,7 @@ void staged_output_discard(staged_output *out)
     free(out->staging);
     free(out->target);
     memset(out, 0, sizeof *out);
+    writing_output = 0;
 }
 
 FILE *output_open(const char *path, cli_error *error)

@@ -68,7 +68,7 @@ static inline int rm_build(const double *poly, size_t n, size_t extra, uint64_t 
     if (!xy || !tri || !idx || !geoms) goto done;
     memcpy(xy, poly, 2 * n * sizeof *xy);
     for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
-    if (cm_polygon_triangulate(xy, idx, (long)n, tri) != 0) goto done;
+    if (cm_polygon_triangulate(xy, idx, (long)n, tri, NULL) != 0) goto done;
     size_t count = n - 2;
     for (size_t v = n; v < nv; v++, count += 2) {
         size_t t = rm_pick(xy, tri, count, &rng);

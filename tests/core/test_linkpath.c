@@ -74,7 +74,7 @@ static int sample_points(const double *xy, int n, int per_triangle, uint64_t see
 {
     int32_t *tri = malloc(sizeof(int32_t) * 3 * (size_t)n), *idx = malloc(sizeof(int32_t) * (size_t)n);
     for (int i = 0; i < n; i++) idx[i] = i;
-    cm_polygon_triangulate(xy, idx, n, tri);
+    cm_polygon_triangulate(xy, idx, n, tri, NULL);
     rp_rng rng = {seed};
     int count = 0;
     for (int t = 0; t < n - 2; t++)
@@ -123,7 +123,7 @@ static void check_table(const double *xy, int n, const char *what)
     int32_t *tri = malloc(sizeof(int32_t) * 3 * (size_t)n), *idx = malloc(sizeof(int32_t) * (size_t)n);
     unsigned char *vis = malloc((size_t)n * (size_t)n);
     for (int i = 0; i < n; i++) idx[i] = i;
-    CHECK(cm_polygon_triangulate(xy, idx, n, tri) == 0);
+    CHECK(cm_polygon_triangulate(xy, idx, n, tri, NULL) == 0);
     CHECK(cm_visibility_table(xy, n, tri, vis) == 0);
     int bad = 0;
     for (int u = 0; u < n; u++)

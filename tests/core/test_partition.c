@@ -175,7 +175,7 @@ static void test_link_splits(void)
         for (int i = 0; i < 40; i++) idx[i] = i;
         for (int g = 0; g < 2; g++) {
             tris[g] = malloc(sizeof(int32_t) * 3 * 38);
-            CHECK(cm_polygon_triangulate(xy[g], idx, 40, tris[g]) == 0);
+            CHECK(cm_polygon_triangulate(xy[g], idx, 40, tris[g], NULL) == 0);
         }
         cm_result *r = calloc(1, sizeof *r);
         cm_partition_stats st;

@@ -145,10 +145,10 @@ static void test_affine_image(void)
         unsigned char *common = malloc((size_t)n * (size_t)n);
         int32_t *tri = malloc(sizeof(int32_t) * 3 * (size_t)n), *idx = malloc(sizeof(int32_t) * (size_t)n);
         for (int i = 0; i < n; i++) idx[i] = i;
-        CHECK(cm_polygon_triangulate(a, idx, n, tri) == 0);
+        CHECK(cm_polygon_triangulate(a, idx, n, tri, NULL) == 0);
         unsigned char *vb = malloc((size_t)n * (size_t)n);
         cm_visibility_table(a, n, tri, common);
-        CHECK(cm_polygon_triangulate(b, idx, n, tri) == 0);
+        CHECK(cm_polygon_triangulate(b, idx, n, tri, NULL) == 0);
         cm_visibility_table(b, n, tri, vb);
         for (int i = 0; i < n * n; i++) CHECK(common[i] == vb[i]);
         const double *xy[2] = {a, b};
@@ -174,8 +174,8 @@ static void test_fan(void)
         int32_t *tri = malloc(sizeof(int32_t) * 3 * (size_t)n), *idx = malloc(sizeof(int32_t) * (size_t)n);
         unsigned char *vb = malloc((size_t)n * (size_t)n);
         for (int i = 0; i < n; i++) idx[i] = i;
-        cm_polygon_triangulate(a, idx, n, tri), cm_visibility_table(a, n, tri, common);
-        cm_polygon_triangulate(b, idx, n, tri), cm_visibility_table(b, n, tri, vb);
+        cm_polygon_triangulate(a, idx, n, tri, NULL), cm_visibility_table(a, n, tri, common);
+        cm_polygon_triangulate(b, idx, n, tri, NULL), cm_visibility_table(b, n, tri, vb);
         for (int i = 0; i < n * n; i++) common[i] &= vb[i];
         const double *xy[2] = {a, b}, fan[4] = {ka[0], ka[1], kb[0], kb[1]};
         cm_sf_plan plain, fanned;

@@ -84,7 +84,8 @@ static cm_status build_first(cm_result *r, const double *const *polygons, size_t
             geoms[g][2 * j] = polygons[g][2 * i];
             geoms[g][2 * j + 1] = polygons[g][2 * i + 1];
         }
-        int t = cm_polygon_triangulate(geoms[g], idx, (long)n, tris[g]);
+        int t = cm_polygon_triangulate(geoms[g], idx, (long)n, tris[g], progress);
+        if (t == CM_CANCELLED) s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
         if (t < 0) goto done;
         if (t > 0) {
             s = cm_fail(&r->error, CM_ERR_INTERNAL, "polygon %zu: ear clipping found no ear", g);

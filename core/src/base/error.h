@@ -6,7 +6,8 @@
  * never into a handle of their own.
  *
  * Internal functions that return a count, an index or a flag use negative
- * values for failures, and only these: CM_NO_MEMORY everywhere, and where
+ * values for failures, and only these: CM_NO_MEMORY and CM_CANCELLED
+ * everywhere, and where
  * a function can also give up for another reason, a named value of its own
  * (e.g. CM_SPLIT_NO_FIT in remesh/refine.h). Longer chains (a stage that
  * can be cancelled) return cm_status. */
@@ -16,6 +17,8 @@
 #include "compatmesh/compatmesh.h"
 
 #define CM_NO_MEMORY (-1)
+/* The caller cancelled through the progress callback. */
+#define CM_CANCELLED (-3)
 
 typedef struct cm_error {
     cm_status status;

@@ -23,20 +23,33 @@ void cm_progress_init(cm_progress *p, cm_progress_fn fn, void *user)
     p->fn = fn;
     p->user = user;
     p->last = fn ? cm_seconds_now() : 0.0;
+    p->stage = CM_STAGE_VALIDATE;
+    p->within = 0.0;
+    p->cancelled = 0;
 }
 
 int cm_progress_report(cm_progress *p, cm_stage s, double within)
 {
     if (!p || !p->fn) return 0;
+    if (p->cancelled) return 1;
+    p->stage = s;
+    p->within = within;
     double f = stages[s].from + (stages[s].to - stages[s].from) * within;
-    return p->fn(p->user, f, stages[s].name) != 0;
+    p->cancelled = p->fn(p->user, f, stages[s].name) != 0;
+    return p->cancelled;
 }
 
 int cm_progress_poll(cm_progress *p, cm_stage s, double within)
 {
     if (!p || !p->fn) return 0;
+    if (p->cancelled) return 1;
     double now = cm_seconds_now();
     if (now - p->last < 0.2) return 0;
     p->last = now;
     return cm_progress_report(p, s, within);
+}
+
+int cm_progress_check(cm_progress *p)
+{
+    return p ? cm_progress_poll(p, p->stage, p->within) : 0;
 }

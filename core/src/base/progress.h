@@ -25,13 +25,21 @@ typedef struct cm_progress {
     cm_progress_fn fn; /* NULL: nobody listens, nothing cancels */
     void *user;
     double last;       /* clock of the last throttled report */
+    cm_stage stage;    /* what was reported last */
+    double within;
+    int cancelled;     /* the caller asked to cancel: every check says so */
 } cm_progress;
 
 void cm_progress_init(cm_progress *p, cm_progress_fn fn, void *user);
 /* Reports `within` (0..1) of stage s, mapped into the stage's range, and
  * returns 1 when the caller asks to cancel. */
 int cm_progress_report(cm_progress *p, cm_stage s, double within);
-/* The same for loops: reports at most every 0.2 s, 0 in between. */
+/* The same for loops: reports at most every 0.2 s, 0 in between (1 once
+ * cancelled). */
 int cm_progress_poll(cm_progress *p, cm_stage s, double within);
+/* The cancel check of a long loop that does not know how far it is:
+ * cm_progress_poll at the stage and fraction reported last. Every loop
+ * that can run longer than about 50 ms calls it; p may be NULL. */
+int cm_progress_check(cm_progress *p);
 
 #endif

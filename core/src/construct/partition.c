@@ -194,7 +194,7 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
     for (size_t g = 0; g < k; g++) {
         const int32_t *t = tris ? tris[g] : tri;
         if (!tris) {
-            status = cm_polygon_triangulate(xy[g], idx, m, tri);
+            status = cm_polygon_triangulate(xy[g], idx, m, tri, NULL);
             if (status != 0) goto done;
             status = -1;
         }
@@ -823,7 +823,8 @@ static cm_status fallback(part *p, item *it)
     for (size_t g = 0; g < k; g++) {
         tris[g] = malloc(3 * (size_t)(m - 2) * sizeof **tris);
         if (!tris[g]) goto done;
-        int t = cm_polygon_triangulate(l[g], idx, m, tris[g]);
+        int t = cm_polygon_triangulate(l[g], idx, m, tris[g], p->progress);
+        if (t == CM_CANCELLED) s = cm_fail_status(p->err, CM_ERR_CANCELLED);
         if (t < 0) goto done;
         if (t > 0) {
             s = cm_fail(p->err, CM_ERR_INTERNAL, "partition: a sub-polygon is not simple");

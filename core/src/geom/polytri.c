@@ -5,6 +5,7 @@
 
 #include "base/error.h"
 #include "geom/polytri.h"
+#include "base/progress.h"
 #include "geom/predicates.h"
 
 #define P(v) (xy + 2 * (size_t)(v))
@@ -37,7 +38,7 @@ static void update_vertex(const double *xy, const int32_t *idx, const long *prev
              !ear_blocked(xy, idx, prev, next, convex, prev[v], v, next[v]);
 }
 
-static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri)
+static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri, cm_progress *progress)
 {
     long *prev = malloc((size_t)m * sizeof *prev), *next = malloc((size_t)m * sizeof *next);
     signed char *convex = malloc((size_t)m), *ear = malloc((size_t)m);
@@ -49,8 +50,13 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri)
     }
     for (long i = 0; i < m; i++)
         convex[i] = (signed char)cm_orient2d(P(idx[prev[i]]), P(idx[i]), P(idx[next[i]]));
-    for (long i = 0; i < m; i++)
+    for (long i = 0; i < m; i++) {
         ear[i] = convex[i] > 0 && !ear_blocked(xy, idx, prev, next, convex, prev[i], i, next[i]);
+        if (cm_progress_check(progress)) {
+            status = CM_CANCELLED;
+            goto done;
+        }
+    }
 
     long remaining = m, v = 0, since_last_clip = 0, t = 0;
     status = 1;
@@ -65,6 +71,10 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri)
             update_vertex(xy, idx, prev, next, convex, ear, c);
             since_last_clip = 0;
             v = c;
+            if (cm_progress_check(progress)) {
+                status = CM_CANCELLED;
+                goto done;
+            }
         } else {
             if (++since_last_clip > remaining) goto done; /* no ear: not simple */
             v = next[v];
@@ -142,7 +152,7 @@ static int flip_if_illegal(const double *xy, int32_t *tri, int32_t *nbr, long t,
     return 1;
 }
 
-static int make_delaunay(const double *xy, int32_t *tri, long nt)
+static int make_delaunay(const double *xy, int32_t *tri, long nt, cm_progress *progress)
 {
     int32_t *nbr = malloc((size_t)(3 * nt) * sizeof *nbr);
     long *stack = malloc((size_t)(3 * nt) * sizeof *stack);
@@ -153,6 +163,10 @@ static int make_delaunay(const double *xy, int32_t *tri, long nt)
     long top = 0;
     for (long t = 0; t < nt; t++) stack[top++] = t, queued[t] = 1;
     while (top > 0) {
+        if (cm_progress_check(progress)) {
+            status = CM_CANCELLED;
+            goto done;
+        }
         long t = stack[--top];
         queued[t] = 0;
         for (long i = 0; i < 3; i++) {
@@ -170,9 +184,10 @@ done:
     return status;
 }
 
-int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t *tri_out)
+int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t *tri_out,
+                           cm_progress *progress)
 {
-    int s = clip_ears(xy, idx, m, tri_out);
+    int s = clip_ears(xy, idx, m, tri_out, progress);
     if (s != 0) return s;
-    return make_delaunay(xy, tri_out, m - 2);
+    return make_delaunay(xy, tri_out, m - 2, progress);
 }

@@ -4,14 +4,17 @@
 
 #include <stdint.h>
 
+struct cm_progress;
+
 /* Triangulates the simple counter-clockwise polygon whose
  * vertices are xy[idx[0]], ..., xy[idx[m-1]] (xy holds 2 doubles per vertex)
  * into m - 2 triangles written to tri_out (3 * (m - 2) entries, values from
  * idx), by ear clipping followed by Delaunay edge flips (the result is the
  * constrained Delaunay triangulation of the polygon). Exact predicates.
- * Returns 0 on success, CM_NO_MEMORY, or 1 if no ear was found (the
- * polygon was not simple). */
-int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t *tri_out);
+ * Returns 0 on success, CM_NO_MEMORY, CM_CANCELLED (progress may be
+ * NULL), or 1 if no ear was found (the polygon was not simple). */
+int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t *tri_out,
+                           struct cm_progress *progress);
 
 /* Triangle adjacency: nbr[3t + i] is the triangle across the edge opposite
  * corner i of triangle t, -1 on the boundary. 0, or CM_NO_MEMORY. */

@@ -80,15 +80,18 @@ static double edge_cap(const double *xy, size_t n, size_t i)
     return atan2(2 * h, L);
 }
 
-void cm_boundary_caps(const cm_mesh *mesh, size_t n, double *bcap, double *vcap)
+int cm_boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double *bcap,
+                     double *vcap)
 {
     for (size_t i = 0; i < n; i++) bcap[i] = vcap[i] = CM_PI;
     for (size_t g = 0; g < mesh->k; g++) {
         const double *xy = mesh->xy[g];
         for (size_t i = 0; i < n; i++) {
+            if (cm_progress_check(progress)) return CM_CANCELLED;
             bcap[i] = fmin(bcap[i], edge_cap(xy, n, i));
             double c = corner_angle(xy + 2 * ((i + n - 1) % n), xy + 2 * i, xy + 2 * ((i + 1) % n));
             vcap[i] = fmin(vcap[i], 0.5 * c);
         }
     }
+    return 0;
 }

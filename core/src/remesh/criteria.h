@@ -6,6 +6,7 @@
 #define CM_REMESH_CRITERIA_H
 
 #include "base/mesh.h"
+#include "base/progress.h"
 
 /* Improvements smaller than this (radians) do not count: they would let
  * rounding noise drive endless flips and moves. */
@@ -19,7 +20,9 @@
  * bcap[i], the best smallest angle of an isosceles triangle on boundary
  * edge i -> i+1 that fits inside the polygon (a boundary edge is never
  * split, so its triangle can do no better, near enough); vcap[i], half the
- * corner angle at vertex i (a corner split in two). */
-void cm_boundary_caps(const cm_mesh *mesh, size_t n, double *bcap, double *vcap);
+ * corner angle at vertex i (a corner split in two). O(n^2): 0, or
+ * CM_CANCELLED. */
+int cm_boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double *bcap,
+                     double *vcap);
 
 #endif

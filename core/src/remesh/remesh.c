@@ -167,7 +167,7 @@ static int smooth_one(remesher *x, int32_t v)
 }
 
 /* Smooths every queued vertex once; a vertex that moved queues its
- * surroundings for the next sweep. Returns moves or -1. */
+ * surroundings for the next sweep. Returns moves or -1 (stop). */
 static long smooth_queued(remesher *x)
 {
     cm_kmesh *km = &x->km;
@@ -176,6 +176,7 @@ static long smooth_queued(remesher *x)
         if (!cm_kmesh_is_boundary(km, v) && km->vc[v] >= 0 && cm_ibuf_push(&x->batch, v)) return -1;
     long moves = 0;
     for (size_t i = 0; i < x->batch.n; i++) {
+        if (cm_progress_check(x->progress)) return -1;
         int32_t v = x->batch.a[i];
         int moved = smooth_one(x, v);
         if (moved < 0 || (moved && queue_around(x, v))) return -1;
@@ -184,11 +185,20 @@ static long smooth_queued(remesher *x)
     return moves;
 }
 
+/* Why a step returned -1. */
+static cm_status stop_status(const remesher *x)
+{
+    return x->progress && x->progress->cancelled ? CM_ERR_CANCELLED : CM_ERR_NO_MEMORY;
+}
+
 /* Flips and smoothing, alternated until neither changes anything or the
- * sweeps run out: both only ever raise local smallest angles. */
+ * sweeps run out: both only ever raise local smallest angles. Returns 0,
+ * or -1 to stop: out of memory, or cancelled (x->progress says which; so
+ * for every -1 of the remesher's steps). */
 static int improve(remesher *x, int sweeps)
 {
     for (int sweep = 0; sweep < sweeps; sweep++) {
+        if (cm_progress_check(x->progress)) return -1;
         long f = cm_flip_queue(&x->km, &x->edges, &x->verts);
         if (f < 0) return -1;
         x->flips += f;
@@ -365,7 +375,7 @@ static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
     return CM_OK;
 oom:
     free(cand);
-    return CM_ERR_NO_MEMORY;
+    return stop_status(x);
 }
 
 /* ---- stepping out of local optima ------------------------------------------ */
@@ -437,7 +447,7 @@ static cm_status step_out(remesher *x, size_t n)
                 if (kind == FORCED_SPLIT && km->live_v - km->n >= budget) continue;
                 for (int j = 0; j < m && !gained; j++) {
                     int s = try_forced(x, (enum forced_move)kind, near[j]);
-                    if (s < 0) return CM_ERR_NO_MEMORY;
+                    if (s < 0) return stop_status(x);
                     gained = s;
                 }
             }
@@ -472,7 +482,10 @@ static int set_caps(remesher *x, const cm_mesh *mesh, size_t n, cm_remesh_report
 {
     double *bcap = malloc(2 * n * sizeof *bcap), *vcap = bcap + n;
     if (!bcap) return -1;
-    cm_boundary_caps(mesh, n, bcap, vcap);
+    if (cm_boundary_caps(mesh, n, x->progress, bcap, vcap)) {
+        free(bcap);
+        return -1;
+    }
     double lo = x->target;
     for (size_t i = 0; i < n; i++) {
         bcap[i] *= CM_EDGE_CAP_MARGIN;
@@ -521,7 +534,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, cm_progress *p
     remesher_free(&x);
     return s == CM_OK ? CM_OK : cm_fail_status(err, s);
 oom:
-    s = CM_ERR_NO_MEMORY;
+    s = stop_status(&x);
 stop:
     remesher_free(&x);
     return cm_fail_status(err, s);
