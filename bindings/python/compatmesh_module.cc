@@ -8,6 +8,8 @@
 #include <compatmesh/plane.hh>
 
 #include <array>
+#include <cmath>
+#include <limits>
 #include <cstring>
 #include <exception>
 #include <memory>
@@ -36,6 +38,10 @@ struct Polygon {
 
 using FloatArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
+// Limits that keep one call's output within reason (the command line's).
+constexpr long kMaxFrames = 1000;
+constexpr std::size_t kMaxSections = 10000;
+
 std::string shape_of(const py::array &a)
 {
   std::string s = "(";
@@ -46,14 +52,26 @@ std::string shape_of(const py::array &a)
 [[noreturn]] void raise_input_error(const std::string &message, cm_status status, long polygon,
                                    long vertex, long other);
 
-Polygon read_polygon(py::handle object, std::size_t index, double tolerance)
+// object as an array of doubles, or a TypeError naming `what`: complex
+// values are refused rather than cut to their real parts.
+FloatArray real_array(py::handle object, const std::string &what)
 {
-  std::string name = "polygon " + std::to_string(index);
+  py::array any = py::array::ensure(object);
+  if (!any) PyErr_Clear();
+  if (any && any.dtype().kind() == 'c')
+    throw py::type_error(what + ": complex values are not coordinates");
   FloatArray a = FloatArray::ensure(object);
   if (!a) {
     PyErr_Clear();
-    throw py::type_error(name + ": not convertible to an array of floats");
+    throw py::type_error(what + ": not convertible to an array of floats");
   }
+  return a;
+}
+
+Polygon read_polygon(py::handle object, std::size_t index, double tolerance)
+{
+  std::string name = "polygon " + std::to_string(index);
+  FloatArray a = real_array(object, name);
   if (a.ndim() != 2 || (a.shape(1) != 2 && a.shape(1) != 3))
     throw py::value_error(name + ": expected an n x 2 or n x 3 array, got shape " + shape_of(a));
   Polygon polygon;
@@ -117,7 +135,16 @@ const std::vector<std::pair<const char *, cm_smoothing>> smoothing_names = {
     {"weighted", CM_SMOOTH_WEIGHTED},
     {"combined", CM_SMOOTH_COMBINED}};
 
-// A numeric option; the core checks the range.
+[[noreturn]] void raise_overflow(const std::string &message)
+{
+  PyErr_SetString(PyExc_OverflowError, message.c_str());
+  throw py::error_already_set();
+}
+
+// A numeric option, as strict as the C API: an int where the field is an
+// int (OverflowError when it does not fit, ValueError when negative for an
+// unsigned field), a finite number where it is a double (ValueError for
+// NaN and infinities). The core checks the range.
 template <class T>
 T number_from(py::handle value, const char *option)
 {
@@ -126,7 +153,21 @@ T number_from(py::handle value, const char *option)
     throw py::type_error(std::string(option) + " must be " +
                          (std::is_floating_point<T>::value ? "a number" : "an int") + ", not " +
                          std::string(py::str(value.get_type().attr("__name__"))));
-  return value.cast<T>();
+  if constexpr (std::is_floating_point<T>::value) {
+    double x = value.cast<double>();
+    if (!std::isfinite(x)) throw py::value_error(std::string(option) + " must be finite, got " + std::string(py::repr(value)));
+    return T(x);
+  } else {
+    int overflow = 0;
+    long long x = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
+    if (overflow > 0 || (overflow == 0 && x > 0 && static_cast<unsigned long long>(x) > std::numeric_limits<T>::max()))
+      raise_overflow(std::string(option) + " = " + std::string(py::repr(value)) + " is too large");
+    if (std::is_unsigned<T>::value && (overflow < 0 || x < 0))
+      throw py::value_error(std::string(option) + " must not be negative, got " + std::string(py::repr(value)));
+    if (overflow < 0 || x < static_cast<long long>(std::numeric_limits<T>::min()))
+      raise_overflow(std::string(option) + " = " + std::string(py::repr(value)) + " is too small");
+    return T(x);
+  }
 }
 
 struct OptionSetter {
@@ -171,12 +212,14 @@ const std::vector<OptionSetter> &option_setters()
 
 // The Python progress callable (None: none) as the relay's function; the
 // core calls it without the GIL, so it takes the GIL first.
+// Ctrl-C is checked here too (the main thread's pending signals): a long
+// call stops, and KeyboardInterrupt comes out of it.
 compatmesh::ProgressFn python_progress(const py::object &progress)
 {
-  if (!progress || progress.is_none()) return {};
   return [&progress](double fraction, const char *stage) {
     py::gil_scoped_acquire gil;
-    return bool(py::bool_(progress(fraction, stage)));
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+    return progress && !progress.is_none() && bool(py::bool_(progress(fraction, stage)));
   };
 }
 
@@ -317,6 +360,7 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
     std::string name = item.first.cast<std::string>();
     if (name == "planarity_tolerance") {
       tolerance = number_from<double>(item.second, "planarity_tolerance");
+      if (tolerance < 0) throw py::value_error("planarity_tolerance must not be negative, got " + std::to_string(tolerance));
       continue;
     }
     const OptionSetter *setter = nullptr;
@@ -413,16 +457,17 @@ std::vector<double> morph_times(py::object t, py::object frames)
   std::vector<double> times;
   if (!frames.is_none()) {
     long count = number_from<long>(frames, "frames");
-    if (count < 2) throw py::value_error("morph: frames must be at least 2, got " + std::to_string(count));
+    if (count < 2 || count > kMaxFrames)
+      throw py::value_error("morph: frames must be 2 to " + std::to_string(kMaxFrames) + ", got " +
+                            std::to_string(count));
     for (long f = 0; f < count; f++) times.push_back(f + 1 == count ? 1.0 : double(f) / double(count - 1));
     return times;
   }
   if (py::isinstance<py::float_>(t) || py::isinstance<py::int_>(t)) return {t.cast<double>()};
-  FloatArray a = FloatArray::ensure(t);
-  if (!a || a.ndim() != 1) {
-    PyErr_Clear();
-    throw py::type_error("morph: t must be a number or a 1-D sequence of numbers");
-  }
+  FloatArray a = real_array(t, "morph: t");
+  if (a.ndim() != 1) throw py::type_error("morph: t must be a number or a 1-D sequence of numbers");
+  if (a.shape(0) > kMaxFrames)
+    throw py::value_error("morph: at most " + std::to_string(kMaxFrames) + " times, got " + std::to_string(a.shape(0)));
   times.assign(a.data(), a.data() + a.shape(0));
   return times;
 }
@@ -471,16 +516,16 @@ py::dict sweep(py::object polygons_in, py::object sections, py::object height, p
   cm_sweep_options options;
   cm_sweep_options_init(&options);
   options.sections = number_from<std::size_t>(sections, "sections");
+  if (options.sections > kMaxSections)
+    throw py::value_error("sweep: sections must be at most " + std::to_string(kMaxSections) + ", got " +
+                          std::to_string(options.sections));
   options.tets = tets ? 1 : 0;
   if (!height.is_none()) options.height = number_from<double>(height, "height");
   std::vector<double> z;
   if (!heights.is_none()) {
     if (!height.is_none()) throw py::type_error("sweep() takes height or heights, not both");
-    FloatArray a = FloatArray::ensure(heights);
-    if (!a || a.ndim() != 1) {
-      PyErr_Clear();
-      throw py::type_error("sweep: heights must be a 1-D sequence of numbers");
-    }
+    FloatArray a = real_array(heights, "sweep: heights");
+    if (a.ndim() != 1) throw py::type_error("sweep: heights must be a 1-D sequence of numbers");
     z.assign(a.data(), a.data() + a.shape(0));
   }
   std::vector<Polygon> polygons;
