@@ -55,7 +55,8 @@ void catch_interrupts(void)
     memset(&event, 0, sizeof event);
     event.sigev_notify = SIGEV_SIGNAL;
     event.sigev_signo = SIGALRM;
-    have_watchdog = timer_create(CLOCK_MONOTONIC, &event, &watchdog) == 0;
+    if (!have_watchdog) /* once: Gmsh's start makes the sweep call this again */
+        have_watchdog = timer_create(CLOCK_MONOTONIC, &event, &watchdog) == 0;
     action.sa_handler = on_interrupt;
     sigaction(SIGINT, &action, NULL);
     sigaction(SIGTERM, &action, NULL);

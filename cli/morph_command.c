@@ -262,7 +262,8 @@ done:
 
 static int write_outputs(morph_run *run, cli_error *error)
 {
-    int code = staged_output_begin(&run->output, run->args->out_dir, error);
+    int code = staged_output_begin(&run->output, run->args->out_dir, run->args->tri.inputs,
+                                   run->args->tri.input_count, error);
     if (code == CLI_EXIT_OK) code = write_frames(run, error);
     const char *report = NULL, *picture = NULL;
     if (code == CLI_EXIT_OK) {

@@ -4,6 +4,7 @@
 #include "interrupt.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -95,7 +96,11 @@ int staged_output_check(const char *target, cli_error *error)
     return code;
 }
 
-int staged_output_begin(staged_output *out, const char *target, cli_error *error)
+/* ".", the name, ".compatmesh-XXXXXX": 19 characters besides the name. */
+#define STAGING_BASE_MAX (NAME_MAX - 19)
+
+int staged_output_begin(staged_output *out, const char *target, const char *const *inputs,
+                        size_t input_count, cli_error *error)
 {
     memset(out, 0, sizeof *out);
     char *trimmed = trim_trailing_slashes(target);
@@ -112,11 +117,13 @@ int staged_output_begin(staged_output *out, const char *target, cli_error *error
         staging = malloc(size);
         if (staging) snprintf(staging, size, "%s/.compatmesh-XXXXXX", trimmed);
     } else if (parent) {
-        /* Hidden, and named after the target so a leftover is recognisable. */
+        /* Hidden, and named after the target so a leftover is recognisable;
+         * the target's name cut so the whole stays within NAME_MAX. */
         const char *base = trimmed + base_offset;
-        size_t size = strlen(parent) + strlen(base) + 32;
+        int keep = (int)(strlen(base) < STAGING_BASE_MAX ? strlen(base) : STAGING_BASE_MAX);
+        size_t size = strlen(parent) + (size_t)keep + 32;
         staging = malloc(size);
-        if (staging) snprintf(staging, size, "%s/.%s.compatmesh-XXXXXX", parent, base);
+        if (staging) snprintf(staging, size, "%s/.%.*s.compatmesh-XXXXXX", parent, keep, base);
     }
     free(parent);
     if (!staging) {
@@ -135,6 +142,8 @@ int staged_output_begin(staged_output *out, const char *target, cli_error *error
     }
     out->target = trimmed;
     out->staging = staging;
+    out->inputs = inputs;
+    out->input_count = input_count;
     return CLI_EXIT_OK;
 }
 
@@ -174,6 +183,15 @@ static int commit_as_new_directory(staged_output *out, cli_error *error)
     return CLI_EXIT_OK;
 }
 
+#define MANIFEST "report.json"
+
+static int move_in(const staged_output *out, size_t i, const char *final, cli_error *error)
+{
+    if (rename(out->paths[i], final) == 0) return CLI_EXIT_OK;
+    cli_error_set(error, "cannot move %s into %s: %s", out->names[i], out->target, strerror(errno));
+    return CLI_EXIT_INTERNAL;
+}
+
 /* An existing target: move the files in one by one. Any obstacle that can be
  * seen in advance (a directory where a file goes) is checked before the first
  * move, so a failure leaves the target untouched. */
@@ -196,13 +214,19 @@ static int commit_into_existing_directory(staged_output *out, cli_error *error)
             code = CLI_EXIT_INTERNAL;
         }
     }
-    for (size_t i = 0; i < out->count && code == CLI_EXIT_OK; i++) {
-        if (rename(out->paths[i], finals[i]) != 0) {
-            cli_error_set(error, "cannot move %s into %s: %s", out->names[i],
-                          out->target, strerror(errno));
-            code = CLI_EXIT_INTERNAL;
-        }
+    for (size_t i = 0; i < out->count && code == CLI_EXIT_OK; i++)
+        code = refuse_input_as_output(finals[i], out->inputs, out->input_count, error);
+    /* The manifest goes first and comes back last. */
+    size_t manifest = out->count;
+    for (size_t i = 0; i < out->count; i++)
+        if (strcmp(out->names[i], MANIFEST) == 0) manifest = i;
+    if (code == CLI_EXIT_OK && manifest < out->count && unlink(finals[manifest]) != 0 && errno != ENOENT) {
+        cli_error_set(error, "cannot replace %s: %s", finals[manifest], strerror(errno));
+        code = CLI_EXIT_INTERNAL;
     }
+    for (size_t i = 0; i < out->count && code == CLI_EXIT_OK; i++)
+        if (i != manifest) code = move_in(out, i, finals[i], error);
+    if (code == CLI_EXIT_OK && manifest < out->count) code = move_in(out, manifest, finals[manifest], error);
     for (size_t i = 0; i < out->count; i++) free(finals[i]);
     free(finals);
     return code;
@@ -264,5 +288,20 @@ int output_close(FILE *file, const char *path, cli_error *error)
                       strerror(saved_errno ? saved_errno : EIO));
         return CLI_EXIT_INTERNAL;
     }
+    return CLI_EXIT_OK;
+}
+
+int refuse_input_as_output(const char *path, const char *const *inputs, size_t count,
+                           cli_error *error)
+{
+    struct stat out_info, in_info;
+    if (stat(path, &out_info) != 0) return CLI_EXIT_OK;
+    for (size_t i = 0; i < count; i++)
+        if (stat(inputs[i], &in_info) == 0 && in_info.st_dev == out_info.st_dev &&
+            in_info.st_ino == out_info.st_ino) {
+            cli_error_set(error, "%s would replace the input %s; choose another output", path,
+                          inputs[i]);
+            return CLI_EXIT_USAGE;
+        }
     return CLI_EXIT_OK;
 }

@@ -12,6 +12,8 @@
 
 typedef struct staged_output {
     char *target;  /* the output directory, without trailing slashes */
+    const char *const *inputs; /* files no output may replace (borrowed) */
+    size_t input_count;
     char *staging; /* the temporary directory; NULL once committed */
     char **names;  /* files requested so far, and their staging paths */
     char **paths;
@@ -23,21 +25,33 @@ typedef struct staged_output {
  * a directory, CLI_EXIT_INTERNAL if it or its parent cannot be written. */
 int staged_output_check(const char *target, cli_error *error);
 
-/* Creates the temporary directory for target. On failure *out is left empty
- * and staged_output_discard on it does nothing. */
-int staged_output_begin(staged_output *out, const char *target, cli_error *error);
+/* Creates the temporary directory for target; the inputs (input_count
+ * paths, borrowed) are files no output may replace. On failure *out is left
+ * empty and staged_output_discard on it does nothing. */
+int staged_output_begin(staged_output *out, const char *target, const char *const *inputs,
+                        size_t input_count, cli_error *error);
 
 /* The path under which to write file `name` (no slashes); it is moved to
  * target/name on commit. Owned by *out. NULL if out of memory. */
 const char *staged_output_path(staged_output *out, const char *name);
 
 /* Moves every requested file into target, creating target if missing;
- * files of the same name are replaced, other files in target are kept. */
+ * files of the same name are replaced, other files in target are kept.
+ * Refused, before anything is moved, when a file would replace an input.
+ * report.json is the set's manifest: an old one is removed before the
+ * first move and the new one moved in last, so a report.json always
+ * describes the files beside it, even if the run is killed midway. */
 int staged_output_commit(staged_output *out, cli_error *error);
 
 /* Removes the temporary directory (if still there) and frees *out. Call it
  * after commit too. */
 void staged_output_discard(staged_output *out);
+
+/* CLI_EXIT_USAGE with a message when path is one of the inputs (the same
+ * file: device and inode), else CLI_EXIT_OK (also when path does not
+ * exist). An output never replaces an input. */
+int refuse_input_as_output(const char *path, const char *const *inputs, size_t count,
+                           cli_error *error);
 
 /* dir + "/" + name in new memory (free it), NULL if out of memory. */
 char *path_join(const char *dir, const char *name);

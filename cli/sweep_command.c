@@ -15,6 +15,7 @@
 
 #include "commands.h"
 #include "interrupt.h"
+#include "outdir.h"
 #include "options.h"
 #include "triangulation.h"
 #include "write_volume.h"
@@ -305,6 +306,8 @@ static int sweep(const sweep_args *args, cli_error *error)
     cm_morph *morph = NULL;
     cm_sweep *sweep = NULL;
     int code = check_output(args->output, error);
+    if (code == CLI_EXIT_OK)
+        code = refuse_input_as_output(args->output, args->tri.inputs, args->tri.input_count, error);
     if (code == CLI_EXIT_OK) code = triangulation_run(&tri, &args->tri, error);
     if (code == CLI_EXIT_OK) code = build_sweep(args, &tri, &morph, &sweep, error);
     if (code == CLI_EXIT_OK && interrupted) {

@@ -197,6 +197,25 @@ static int make_output_names(triangulate_run *run, cli_error *error)
     return CLI_EXIT_OK;
 }
 
+/* Before any work: no output may replace an input (commit checks again). */
+static int refuse_inputs_early(triangulate_run *run, cli_error *error)
+{
+    const triangulation_args *tri = &run->args->tri;
+    size_t k = tri->input_count;
+    int code = CLI_EXIT_OK;
+    for (size_t i = 0; i <= k + 1 && code == CLI_EXIT_OK; i++) {
+        const char *name = i < k ? run->mesh_names[i] : i == k ? "report.json" : "preview.svg";
+        char *path = path_join(run->args->out_dir, name);
+        if (!path) {
+            cli_error_set(error, "out of memory");
+            return CLI_EXIT_INTERNAL;
+        }
+        code = refuse_input_as_output(path, tri->inputs, k, error);
+        free(path);
+    }
+    return code;
+}
+
 static int stage_file(triangulate_run *run, const char *name, const char **path,
                       cli_error *error)
 {
@@ -247,7 +266,8 @@ static int write_extras(triangulate_run *run, cli_error *error)
 
 static int write_outputs(triangulate_run *run, cli_error *error)
 {
-    int code = staged_output_begin(&run->output, run->args->out_dir, error);
+    int code = staged_output_begin(&run->output, run->args->out_dir, run->args->tri.inputs,
+                                   run->args->tri.input_count, error);
     if (code == CLI_EXIT_OK) code = write_meshes(run, error);
     if (code == CLI_EXIT_OK) code = write_extras(run, error);
     if (code == CLI_EXIT_OK && interrupted) {
@@ -286,6 +306,7 @@ static int triangulate(const triangulate_args *args, cli_error *error)
     }
     if (code == CLI_EXIT_OK) code = make_output_names(&run, error);
     if (code == CLI_EXIT_OK) code = staged_output_check(args->out_dir, error);
+    if (code == CLI_EXIT_OK) code = refuse_inputs_early(&run, error);
     if (code == CLI_EXIT_OK) code = triangulation_run(&run.tri, &args->tri, error);
     if (code == CLI_EXIT_OK) code = write_outputs(&run, error);
     if (code == CLI_EXIT_OK) print_summary(&run);

@@ -138,8 +138,12 @@ static char *make_temporary(const char *path, cli_error *error)
 int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
                  cli_error *error)
 {
+    writing_output = 1; /* the temporary file exists until the rename */
     char *temporary = make_temporary(path, error);
-    if (!temporary) return CLI_EXIT_INTERNAL;
+    if (!temporary) {
+        writing_output = 0;
+        return CLI_EXIT_INTERNAL;
+    }
     int ierr = 0;
     gmshInitialize(0, NULL, 0, &ierr);
     if (ierr) {
@@ -173,6 +177,7 @@ int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
         code = CLI_EXIT_INTERNAL;
     }
     if (code != CLI_EXIT_OK) unlink(temporary);
+    writing_output = 0;
     free(temporary);
     return code;
 }

@@ -150,9 +150,42 @@ static void test_bad_input(void)
     CHECK(cm_result_from_meshes(xy, 2, 4, 5, fan, 4, NULL) == CM_ERR_ARGUMENT);
 }
 
+/* The statistics do not depend on the scale: the same meshes scaled by
+ * 1e300 and by 1e-300 report the same angles (they used to read 180 and 0
+ * degrees, squared lengths overflowing and underflowing). */
+static void test_statistics_are_scale_free(void)
+{
+    cm_result *r = fixture_result(FIX_TWISTED, N);
+    CHECK(r != NULL);
+    if (!r) return;
+    size_t k = cm_result_num_geometries(r), nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
+    const double scales[] = {1e300, 1e-300};
+    for (size_t i = 0; i < sizeof scales / sizeof scales[0]; i++) {
+        double *xy[2] = {malloc(2 * nv * sizeof(double)), malloc(2 * nv * sizeof(double))};
+        for (size_t g = 0; g < k; g++)
+            for (size_t j = 0; j < 2 * nv; j++) xy[g][j] = cm_result_vertices(r, g)[j] * scales[i];
+        cm_result *scaled = NULL;
+        cm_status s = cm_result_from_meshes((const double *const *)xy, k, N, nv, cm_result_triangles(r), nt, &scaled);
+        CHECK_MSG(s == CM_OK, "scale %g: %s", scales[i], cm_result_message(scaled));
+        for (size_t g = 0; s == CM_OK && g < k; g++) {
+            cm_quality want, got;
+            CHECK(cm_result_quality(r, g, &want) == CM_OK && cm_result_quality(scaled, g, &got) == CM_OK);
+            CHECK_MSG(fabs(want.min_angle_deg - got.min_angle_deg) < 1e-9 &&
+                          fabs(want.max_angle_deg - got.max_angle_deg) < 1e-9 &&
+                          want.pct_below_20deg == got.pct_below_20deg,
+                      "scale %g, geometry %zu: smallest angle %.12g (at scale 1: %.12g), largest %.12g (%.12g)",
+                      scales[i], g, got.min_angle_deg, want.min_angle_deg, got.max_angle_deg, want.max_angle_deg);
+        }
+        cm_result_free(scaled);
+        free(xy[0]), free(xy[1]);
+    }
+    cm_result_free(r);
+}
+
 int main(void)
 {
     test_round_trip();
+    test_statistics_are_scale_free();
     test_bad_input();
     return check_summary("test_from_meshes");
 }

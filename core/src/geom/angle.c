@@ -1,11 +1,45 @@
+/* Triangle angles. The plain double formulas square edge lengths, which
+ * overflows beyond about 1e154 and underflows below 1e-154; where the sum
+ * of the squared lengths leaves [2^-1000, 2^1000] the same formulas run in
+ * long double (a wider exponent), so angles do not depend on the scale. */
 #include <math.h>
 
 #include "geom/angle.h"
 
+#define CM_ANGLE_SAFE_LO 0x1p-1000
+#define CM_ANGLE_SAFE_HI 0x1p1000
+
+static int in_safe_range(double squared_lengths)
+{
+    return squared_lengths > CM_ANGLE_SAFE_LO && squared_lengths < CM_ANGLE_SAFE_HI;
+}
+
+static double angle_at_wide(const double p[2], const double q[2], const double r[2])
+{
+    long double ux = (long double)q[0] - p[0], uy = (long double)q[1] - p[1];
+    long double vx = (long double)r[0] - p[0], vy = (long double)r[1] - p[1];
+    return (double)atan2l(fabsl(ux * vy - uy * vx), ux * vx + uy * vy);
+}
+
 double cm_angle_at(const double p[2], const double q[2], const double r[2])
 {
     double ux = q[0] - p[0], uy = q[1] - p[1], vx = r[0] - p[0], vy = r[1] - p[1];
+    if (!in_safe_range(ux * ux + uy * uy + vx * vx + vy * vy)) return angle_at_wide(p, q, r);
     return atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy);
+}
+
+/* The smallest angle is the one opposite the shortest edge. */
+static double min_angle_wide(const double a[2], const double b[2], const double c[2])
+{
+    long double abx = (long double)b[0] - a[0], aby = (long double)b[1] - a[1];
+    long double bcx = (long double)c[0] - b[0], bcy = (long double)c[1] - b[1];
+    long double cax = (long double)a[0] - c[0], cay = (long double)a[1] - c[1];
+    long double lab = abx * abx + aby * aby, lbc = bcx * bcx + bcy * bcy, lca = cax * cax + cay * cay;
+    long double area2 = fabsl(abx * cay - aby * cax), dot;
+    if (lab <= lbc && lab <= lca) dot = -(cax * bcx + cay * bcy);
+    else if (lbc <= lca) dot = -(abx * cax + aby * cay);
+    else dot = -(bcx * abx + bcy * aby);
+    return (double)atan2l(area2, dot);
 }
 
 double cm_triangle_min_angle(const double a[2], const double b[2], const double c[2])
@@ -14,6 +48,7 @@ double cm_triangle_min_angle(const double a[2], const double b[2], const double 
     double bcx = c[0] - b[0], bcy = c[1] - b[1];
     double cax = a[0] - c[0], cay = a[1] - c[1];
     double lab = abx * abx + aby * aby, lbc = bcx * bcx + bcy * bcy, lca = cax * cax + cay * cay;
+    if (!in_safe_range(lab + lbc + lca)) return min_angle_wide(a, b, c);
     double area2 = fabs(abx * cay - aby * cax);
     double dot;
     if (lab <= lbc && lab <= lca) dot = -(cax * bcx + cay * bcy);      /* at c */
@@ -33,6 +68,10 @@ double cm_triangle_min_angle_sin2(const double a[2], const double b[2], const do
     double bcx = c[0] - b[0], bcy = c[1] - b[1];
     double cax = a[0] - c[0], cay = a[1] - c[1];
     double lab = abx * abx + aby * aby, lbc = bcx * bcx + bcy * bcy, lca = cax * cax + cay * cay;
+    if (!in_safe_range(lab + lbc + lca)) {
+        double s = sin(min_angle_wide(a, b, c));
+        return s * s;
+    }
     double cross = abx * cay - aby * cax, den;
     if (lab <= lbc && lab <= lca) den = lbc * lca;
     else if (lbc <= lca) den = lab * lca;

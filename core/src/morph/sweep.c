@@ -60,6 +60,19 @@ static double level(const cm_morph *m, const cm_sweep_options *o, size_t g)
     return o->heights ? o->heights[g] : o->height * (double)g / (double)(m->k - 1);
 }
 
+/* z0 + (z1 - z0) s, also where z1 - z0 overflows. */
+static double between(double z0, double z1, double s)
+{
+    double z = z0 + (z1 - z0) * s;
+    return isfinite(z) ? z : z0 * (1 - s) + z1 * s;
+}
+
+static double midway(double a, double b)
+{
+    double z = 0.5 * (a + b);
+    return isfinite(z) ? z : 0.5 * a + 0.5 * b;
+}
+
 /* The section (g, s) of the morph; a message on w if it fails. */
 static cm_status make_section(cm_sweep *w, cm_morph *m, section *sec)
 {
@@ -169,7 +182,7 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
         secs[i].g = g;
         secs[i].s = (double)j / (double)per;
         double z0 = level(m, o, g), z1 = level(m, o, g + 1);
-        secs[i].z = j == per ? z1 : z0 + (z1 - z0) * secs[i].s;
+        secs[i].z = j == per ? z1 : between(z0, z1, secs[i].s);
         s = make_section(w, m, &secs[i]);
     }
     size_t refined = 0;
@@ -201,7 +214,7 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
             memset(grown + cap, 0, cap * sizeof *secs);
             secs = grown, cap *= 2;
         }
-        section mid = {secs[i].g, 0.5 * (secs[i].s + s_end), 0.5 * (secs[i].z + secs[i + 1].z), NULL};
+        section mid = {secs[i].g, 0.5 * (secs[i].s + s_end), midway(secs[i].z, secs[i + 1].z), NULL};
         if (!(mid.s > secs[i].s && mid.s < s_end)) {
             s = cm_fail(&w->error, CM_ERR_INTERNAL, "sweep: the prism of triangle %ld at z = %g needs a finer step than doubles allow",
                      bad, secs[i].z);
@@ -234,6 +247,10 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
             if (i + 1 < count) volume += slab_volume(m, secs + i);
         }
         w->volume = (double)volume;
+        if (!isfinite(w->volume))
+            s = cm_fail(&w->error, CM_ERR_ARGUMENT,
+                        "sweep: the volume between z = %g and z = %g overflows doubles; bring the heights closer",
+                        secs[0].z, secs[count - 1].z);
         size_t p = 0;
         for (size_t i = 0; i + 1 < count; i++)
             for (size_t t = 0; t < m->nt; t++, p++) {
