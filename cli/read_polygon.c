@@ -46,29 +46,39 @@ static void vertex_list_free(vertex_list *list)
 
 /* Reads the whole file into a NUL-terminated buffer. Files of any kind
  * (pipes included) work because it reads until end of file. */
-static int read_whole_file(const char *path, char **text, size_t *length,
+static int read_whole_file(const char *path, size_t max_bytes, char **text, size_t *length,
                            cli_error *error)
 {
     FILE *file = fopen(path, "rb");
     if (!file) {
+        int resources = errno == ENOMEM || errno == EMFILE || errno == ENFILE;
         cli_error_set(error, "%s: cannot open: %s", path, strerror(errno));
-        return CLI_EXIT_USAGE;
+        return resources ? CLI_EXIT_INTERNAL : CLI_EXIT_USAGE;
     }
     size_t used = 0, capacity = 1 << 16;
     char *buffer = malloc(capacity);
     int code = buffer ? CLI_EXIT_OK : CLI_EXIT_INTERNAL;
     while (code == CLI_EXIT_OK) {
         if (capacity - used < 2) {
-            char *bigger = realloc(buffer, 2 * capacity);
+            /* Room for max_bytes + 1 bytes and the NUL at most. */
+            size_t grown = capacity > max_bytes / 2 ? max_bytes + 2 : 2 * capacity;
+            char *bigger = realloc(buffer, grown);
             if (!bigger) { code = CLI_EXIT_INTERNAL; break; }
             buffer = bigger;
-            capacity *= 2;
+            capacity = grown;
         }
         size_t got = fread(buffer + used, 1, capacity - used - 1, file);
         used += got;
         if (got == 0) break;
+        if (used > max_bytes) {
+            code = CLI_EXIT_USAGE;
+            break;
+        }
     }
-    if (code == CLI_EXIT_INTERNAL) {
+    if (code == CLI_EXIT_USAGE) {
+        cli_error_set(error, "%s: larger than %zu bytes (--max-input-bytes); raise the limit to read it",
+                      path, max_bytes);
+    } else if (code == CLI_EXIT_INTERNAL) {
         cli_error_set(error, "%s: out of memory reading the file", path);
     } else if (ferror(file)) {
         cli_error_set(error, "%s: cannot read: %s", path, strerror(errno));
@@ -452,12 +462,12 @@ int parse_polygon_text(const char *path, char *text, size_t length,
     return CLI_EXIT_OK;
 }
 
-int read_polygon(const char *path, polygon_input *polygon, cli_error *error)
+int read_polygon(const char *path, size_t max_bytes, polygon_input *polygon, cli_error *error)
 {
     memset(polygon, 0, sizeof *polygon);
     char *text;
     size_t length;
-    int code = read_whole_file(path, &text, &length, error);
+    int code = read_whole_file(path, max_bytes, &text, &length, error);
     if (code != CLI_EXIT_OK) return code;
     code = parse_polygon_text(path, text, length, polygon, error);
     free(text);

@@ -23,11 +23,14 @@ typedef struct polygon_input {
  * polygon following the "l" order, z constant); anything else as ".xy" text
  * (one "x y" vertex per line, blanks and/or one comma between the numbers,
  * '#' to end of line is a comment, blank lines ignored).
+ * A file longer than max_bytes is refused after reading max_bytes + 1
+ * bytes (so /dev/zero is refused too), with a message naming the limit.
  * Returns CLI_EXIT_OK on success. Otherwise leaves *polygon empty, sets
  * error->message to "PATH:LINE: what is wrong" (or "PATH: ..." when no line
  * applies) and returns CLI_EXIT_USAGE for an unreadable or malformed file,
- * CLI_EXIT_INTERNAL when out of memory. */
-int read_polygon(const char *path, polygon_input *polygon, cli_error *error);
+ * CLI_EXIT_INTERNAL when out of memory (also when opening the file runs
+ * out of memory or file descriptors: errno is reported as it is). */
+int read_polygon(const char *path, size_t max_bytes, polygon_input *polygon, cli_error *error);
 
 /* The same for a file's contents already in memory: text[0..length) followed
  * by a NUL at text[length]; `path` names the file in messages and chooses

@@ -22,6 +22,7 @@ int triangulation_args_init(triangulation_args *args, int argc, cli_error *error
     memset(args, 0, sizeof *args);
     cm_options_init(&args->options);
     args->method_name = "partition";
+    args->max_input_bytes = DEFAULT_MAX_INPUT_BYTES;
     args->inputs = malloc((size_t)(argc > 0 ? argc : 1) * sizeof *args->inputs);
     if (args->inputs) return CLI_EXIT_OK;
     cli_error_set(error, "out of memory");
@@ -127,6 +128,9 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
         return set_smoothing(args, command, value, error);
     case OPTION_MAX_ITERATIONS:
         return parse_int(command, "max-iterations", value, &args->options.max_iterations, error);
+    case OPTION_MAX_INPUT_BYTES:
+        return parse_long(command, "max-input-bytes", value, 1, LONG_MAX, &args->max_input_bytes,
+                          error);
     default:
         return -1;
     }
@@ -158,7 +162,7 @@ static int read_inputs(triangulation *t, cli_error *error)
 {
     const triangulation_args *args = t->args;
     for (size_t i = 0; i < args->input_count; i++) {
-        int code = read_polygon(args->inputs[i], &t->polygons[i], error);
+        int code = read_polygon(args->inputs[i], (size_t)args->max_input_bytes, &t->polygons[i], error);
         if (code != CLI_EXIT_OK) return code;
         if (t->polygons[i].count != t->polygons[0].count) {
             cli_error_set(error, "%s has %zu vertices but %s has %zu; the polygons' "

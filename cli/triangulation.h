@@ -20,11 +20,12 @@ enum {
     OPTION_AREA_EVERY,
     OPTION_SMOOTHING,
     OPTION_MAX_ITERATIONS,
+    OPTION_MAX_INPUT_BYTES,
     OPTION_TRIANGULATION_END /* a command's own long options start here */
 };
 
 /* The option_spec entries of the triangulation options, for a command's
- * table (keys 'm' and OPTION_NO_REMESH .. OPTION_MAX_ITERATIONS). */
+ * table (keys 'm' and OPTION_NO_REMESH .. OPTION_MAX_INPUT_BYTES). */
 #define TRIANGULATION_OPTION_SPECS                                            \
     {"method", 'm', "NAME",                                                   \
      "how the first compatible triangulation is built:\n"                     \
@@ -51,14 +52,22 @@ enum {
      "laplacian, angle, weighted or combined (default):\n"                    \
      "weighted angle-based, Laplacian where it fails"},                       \
     {"max-iterations", OPTION_MAX_ITERATIONS, "N",                            \
-     "cap on refinement rounds; default 0: none"}
+     "cap on refinement rounds; default 0: none"},                            \
+    {"max-input-bytes", OPTION_MAX_INPUT_BYTES, "N",                          \
+     "refuse an input file larger than N bytes (default\n"                    \
+     "268435456, 256 MiB)"}
 
 typedef struct triangulation_args {
     const char **inputs; /* argc entries allocated, input_count used */
     size_t input_count;
     const char *method_name;
     cm_options options; /* method and remeshing; the progress hook is set later */
+    long max_input_bytes;
 } triangulation_args;
+
+/* The default of --max-input-bytes: far above any real section (a
+ * 100,000-vertex polygon is 4 MB), far below what would exhaust memory. */
+#define DEFAULT_MAX_INPUT_BYTES (256L << 20)
 
 /* Defaults, and room for every argument of argv to be an input. Returns
  * CLI_EXIT_OK or CLI_EXIT_INTERNAL (out of memory). */
