@@ -119,12 +119,7 @@ cm_status cm_result_from_meshes(const double *const *xy, size_t k, size_t n,
     cm_error_init(&r->error);
     double t0 = cm_seconds_now();
     cm_status s = build_checked(r, xy, k, n, num_vertices, triangles, num_triangles);
-    if (s != CM_OK) {
-        cm_result_clear_geometry(r);
-        r->error.status = s;
-        return s;
-    }
-    r->stats.seconds_check = cm_seconds_now() - t0;
-    cm_error_init(&r->error);
-    return CM_OK;
+    if (s != CM_OK) cm_result_clear_geometry(r);
+    else r->stats.seconds_check = cm_seconds_now() - t0;
+    return cm_error_close(&r->error, s);
 }

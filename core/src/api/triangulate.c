@@ -225,13 +225,8 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
     }
     cm_status s = check_remesh_options(r, options);
     if (s == CM_OK) s = run_pipeline(r, polygons, counts, k, options);
-    if (s != CM_OK) {
-        cm_result_clear_geometry(r);
-        r->error.status = s;
-        return s;
-    }
-    cm_error_init(&r->error);
-    return CM_OK;
+    if (s != CM_OK) cm_result_clear_geometry(r);
+    return cm_error_close(&r->error, s);
 }
 
 cm_status cm_triangulate(const double *xy, size_t k, size_t n, const cm_options *options,

@@ -45,6 +45,14 @@ cm_status cm_fail_status(cm_error *e, cm_status status)
     return cm_fail(e, status, "%s", cm_status_string(status));
 }
 
+cm_status cm_error_close(cm_error *e, cm_status status)
+{
+    if (status == CM_OK) cm_error_init(e);
+    else if (e->message[0] == '\0') cm_fail_status(e, status);
+    e->status = status;
+    return status;
+}
+
 void cm_fail_at(cm_error *e, long polygon, long vertex, long other)
 {
     e->polygon = polygon;

@@ -37,6 +37,9 @@ cm_status cm_fail(cm_error *e, cm_status status, const char *fmt, ...)
 /* cm_fail with the standard message of CM_ERR_NO_MEMORY or
  * CM_ERR_CANCELLED (any other status: its cm_status_string). */
 cm_status cm_fail_status(cm_error *e, cm_status status);
+/* The status a public call returns, recorded on its handle: CM_OK clears
+ * the sink; a failure that has no message yet gets the standard one. */
+cm_status cm_error_close(cm_error *e, cm_status status);
 /* Where bad input is: polygon, vertex and the other vertex involved. */
 void cm_fail_at(cm_error *e, long polygon, long vertex, long other);
 

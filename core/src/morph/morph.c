@@ -226,12 +226,8 @@ static cm_status build_system(cm_morph *m)
     return CM_OK;
 }
 
-cm_status cm_morph_create(const cm_result *result, const cm_morph_options *options,
-                          cm_morph **morph)
+static cm_status create(cm_morph *m, const cm_result *result, const cm_morph_options *options)
 {
-    if (!morph) return CM_ERR_ARGUMENT;
-    cm_morph *m = *morph = calloc(1, sizeof **morph);
-    if (!m) return CM_ERR_NO_MEMORY;
     cm_morph_options defaults;
     if (!options) cm_morph_options_init(&defaults), options = &defaults;
     if (!result) return cm_fail(&m->error, CM_ERR_ARGUMENT, "morph: result is NULL");
@@ -266,9 +262,17 @@ cm_status cm_morph_create(const cm_result *result, const cm_morph_options *optio
     if (m->method == CM_MORPH_INTRINSIC && (s = build_corners(m)) != CM_OK) return s;
     if ((s = build_system(m)) != CM_OK) return s;
     if (cm_progress_report(&progress, CM_STAGE_MORPH_SYSTEM, 1.0)) return cm_fail_status(&m->error, CM_ERR_CANCELLED);
-    cm_error_init(&m->error);
     m->result = result;
     return CM_OK;
+}
+
+cm_status cm_morph_create(const cm_result *result, const cm_morph_options *options,
+                          cm_morph **morph)
+{
+    if (!morph) return CM_ERR_ARGUMENT;
+    cm_morph *m = *morph = calloc(1, sizeof **morph);
+    if (!m) return CM_ERR_NO_MEMORY;
+    return cm_error_close(&m->error, create(m, result, options));
 }
 
 void cm_morph_free(cm_morph *m)

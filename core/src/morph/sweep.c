@@ -282,7 +282,7 @@ cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_s
         w->z = w->nodes = NULL, w->prisms = w->tets = NULL;
         w->ns = w->np = w->ntet = w->nv = 0, w->volume = 0;
     }
-    return s;
+    return cm_error_close(&w->error, s);
 }
 
 void cm_sweep_free(cm_sweep *w)

@@ -1,0 +1,90 @@
+/* Every allocation of the core fails once: the call returns a clean status
+ * (CM_ERR_NO_MEMORY with its message, or CM_OK with a valid result where
+ * the failure was absorbed), never a crash, an abort or a wrong answer
+ * reported as success. The test binary is linked with
+ * -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc, which sends the core's
+ * own calls (the static library's objects) through the counters below;
+ * GMP's and UMFPACK's allocations are their libraries' own and not
+ * counted. Run for every allocation of a triangulation with remeshing, a
+ * convex morph and a sweep. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "random_polygons.h"
+#include "result_check.h"
+
+void *__real_malloc(size_t size);
+void *__real_calloc(size_t count, size_t size);
+void *__real_realloc(void *p, size_t size);
+
+static long calls, fail_at = -1; /* the call that fails, 1-based; -1: none */
+static int paused;               /* the test's own checks allocate too */
+
+static int should_fail(void) { return !paused && ++calls == fail_at; }
+void *__wrap_malloc(size_t size) { return should_fail() ? NULL : __real_malloc(size); }
+void *__wrap_calloc(size_t count, size_t size) { return should_fail() ? NULL : __real_calloc(count, size); }
+void *__wrap_realloc(void *p, size_t size) { return should_fail() ? NULL : __real_realloc(p, size); }
+
+#define N 12
+
+/* One run: triangulate, morph, sweep. Returns the first failing status
+ * (CM_OK when everything succeeded); checks every intermediate claim. */
+static cm_status run(const double *const *polygons, char *where, size_t size)
+{
+    cm_result *r = NULL;
+    size_t counts[2] = {N, N};
+    cm_status s = cm_triangulate_polygons(polygons, counts, 2, NULL, &r);
+    /* No handle at all: the one failure that cannot carry a message. */
+    snprintf(where, size, "triangulate: %s", r ? cm_result_message(r) : "out of memory (no handle)");
+    char why[256] = "";
+    paused = 1;
+    int valid = s != CM_OK || rc_check(r, polygons, 2, N, why, sizeof why);
+    paused = 0;
+    if (!valid) {
+        snprintf(where, size, "triangulate: success, but invalid: %s", why);
+        s = CM_ERR_INTERNAL;
+    }
+    cm_morph *m = NULL;
+    cm_sweep *w = NULL;
+    if (s == CM_OK) {
+        s = cm_morph_create(r, NULL, &m);
+        snprintf(where, size, "morph: %s", m ? cm_morph_message(m) : "out of memory (no handle)");
+    }
+    if (s == CM_OK) {
+        s = cm_sweep_create(m, NULL, &w);
+        snprintf(where, size, "sweep: %s", w ? cm_sweep_message(w) : "out of memory (no handle)");
+    }
+    cm_sweep_free(w);
+    cm_morph_free(m);
+    cm_result_free(r);
+    return s;
+}
+
+int main(void)
+{
+    double a[2 * N], b[2 * N];
+    CHECK(rp_star(a, N, 3) == 0 && rp_star(b, N, 4) == 0);
+    const double *polygons[2] = {a, b};
+    char where[512];
+    calls = 0, fail_at = -1;
+    cm_status clean = run(polygons, where, sizeof where);
+    CHECK_MSG(clean == CM_OK, "the run without failures: %s", where);
+    long total = calls, absorbed = 0, reported = 0;
+    for (long i = 1; i <= total; i++) {
+        calls = 0, fail_at = i;
+        cm_status s = run(polygons, where, sizeof where);
+        if (s == CM_OK) {
+            absorbed++;
+        } else {
+            reported++;
+            CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
+                      "allocation %ld of %ld failed: status %s, %s", i, total, cm_status_string(s), where);
+        }
+    }
+    printf("%ld allocations, each failed once: %ld reported out of memory, %ld absorbed\n", total,
+           reported, absorbed);
+    CHECK(total > 100 && reported > 0);
+    return check_summary("test_alloc_failures");
+}
