@@ -320,10 +320,13 @@ static int sweep(const sweep_args *args, cli_error *error)
                             args->tets ? cm_sweep_num_tets(sweep) : cm_sweep_num_prisms(sweep),
                             args->tets};
         code = write_volume(args->output, &mesh, args->msh_version, error);
+        double volume = cm_sweep_volume(sweep);
+        char volume_text[64] = "volume beyond the double range";
+        if (isfinite(volume)) snprintf(volume_text, sizeof volume_text, "volume %.17g", volume);
         if (code == CLI_EXIT_OK)
-            printf("wrote %s (%zu sections, %zu nodes, %zu %s, volume %.17g)\n", args->output,
+            printf("wrote %s (%zu sections, %zu nodes, %zu %s, %s)\n", args->output,
                    cm_sweep_num_sections(sweep), mesh.num_nodes, mesh.num_cells,
-                   args->tets ? "tetrahedra" : "prisms", cm_sweep_volume(sweep));
+                   args->tets ? "tetrahedra" : "prisms", volume_text);
     }
     cm_sweep_free(sweep);
     cm_morph_free(morph);

@@ -221,6 +221,36 @@ static void test_orient_exactly_collinear(void)
     CHECK(cm_orient2d(big, tiny, sub) == 0);
 }
 
+/* Nearly collinear points with 30-bit integer coordinates (times a common
+ * power of two): the differences are exact but the products are not, the
+ * case the exact-differences stage decides without GMP. */
+static void test_orient_exact_differences(void)
+{
+    uint64_t state = 0xabcdef12;
+    int mismatches = 0, zeros = 0;
+    for (int trial = 0; trial < 20000; trial++) {
+        int e = -440 + (int)random_below(&state, 900);
+        double p[3][2], d[2];
+        for (int k = 0; k < 2; k++) {
+            p[0][k] = (double)(random_below(&state, 1L << 29) - (1L << 28));
+            d[k] = (double)(random_below(&state, 1L << 19) - (1L << 18));
+        }
+        for (int m = 1; m < 3; m++) { /* on the line, give or take a unit */
+            double j = (double)((long)random_below(&state, 1024) - 512);
+            for (int k = 0; k < 2; k++)
+                p[m][k] = p[0][k] + j * d[k] + (double)((int)random_below(&state, 3) - 1) * (trial % 2 == 0);
+        }
+        for (int m = 0; m < 3; m++)
+            for (int k = 0; k < 2; k++) p[m][k] = ldexp(p[m][k], e);
+        int s = cm_orient2d(p[0], p[1], p[2]);
+        mismatches += s != ref_orient2d(p[0], p[1], p[2]);
+        mismatches += cm_orient2d(p[1], p[2], p[0]) != s || cm_orient2d(p[1], p[0], p[2]) != -s;
+        zeros += s == 0;
+    }
+    CHECK_MSG(mismatches == 0, "%d", mismatches);
+    CHECK_MSG(zeros > 5000 && zeros < 15000, "%d exactly collinear of 20000", zeros);
+}
+
 static void test_orient_extreme_random(void)
 {
     static const int ranges[][2] = {
@@ -511,6 +541,7 @@ static void test_polygon_orientation(void)
 
 int main(void)
 {
+    test_orient_exact_differences();
     test_incircle_basics();
     test_orient_grid(0);
     test_orient_grid(1000);

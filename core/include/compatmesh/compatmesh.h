@@ -397,7 +397,8 @@ CM_API const int32_t *cm_sweep_prisms(const cm_sweep *sweep);
  * Dompierre et al. (by smallest global node index), so faces conform. */
 CM_API size_t cm_sweep_num_tets(const cm_sweep *sweep);
 CM_API const int32_t *cm_sweep_tets(const cm_sweep *sweep);
-/* Sum of the prism volumes (equal to the integral of section areas). */
+/* Sum of the prism volumes (equal to the integral of section areas);
+ * HUGE_VAL when it is beyond the double range. */
 CM_API double cm_sweep_volume(const cm_sweep *sweep);
 
 #ifdef __cplusplus

@@ -196,6 +196,66 @@ static int polygon_orientation_exact(const double *xy, long n)
 
 /* ---- filtered predicates --------------------------------------------- */
 
+/* ---- error-free transformations (Shewchuk 1997, section 2) ------------- */
+
+/* With round-to-nearest and no overflow: a - b = x + tail exactly. */
+static double diff_tail(double a, double b, double x)
+{
+    double bvirt = a - x, avirt = x + bvirt;
+    return (a - avirt) + (bvirt - b);
+}
+
+static void two_sum(double a, double b, double *x, double *y)
+{
+    *x = a + b;
+    double bvirt = *x - a, avirt = *x - bvirt;
+    *y = (a - avirt) + (b - bvirt);
+}
+
+static void two_diff(double a, double b, double *x, double *y)
+{
+    *x = a - b;
+    *y = diff_tail(a, b, *x);
+}
+
+/* a = hi + lo, each with at most 26 significant bits (|a| < 2^996). */
+static void split(double a, double *hi, double *lo)
+{
+    double c = 134217729.0 * a; /* 2^27 + 1 */
+    *hi = c - (c - a);
+    *lo = a - *hi;
+}
+
+/* a * b = *x + *y exactly, when the product's error term does not
+ * underflow (|a b| >= 2^-916 or a b = 0). */
+static void two_product(double a, double b, double *x, double *y)
+{
+    double ahi, alo, bhi, blo;
+    *x = a * b;
+    split(a, &ahi, &alo);
+    split(b, &bhi, &blo);
+    double err = *x - ahi * bhi;
+    err -= alo * bhi;
+    err -= ahi * blo;
+    *y = alo * blo - err;
+}
+
+/* The sign of (a1 + a0) - (b1 + b0), exactly: the four-term expansion of
+ * Two_Two_Diff, whose largest nonzero term carries the sign. */
+static int two_two_diff_sign(double a1, double a0, double b1, double b0)
+{
+    double i, j, zero, x0, x1, x2, x3;
+    two_diff(a0, b0, &i, &x0);
+    two_sum(a1, i, &j, &zero);
+    two_diff(zero, b1, &i, &x1);
+    two_sum(j, i, &x3, &x2);
+    return x3 != 0 ? sign_of(x3) : x2 != 0 ? sign_of(x2) : x1 != 0 ? sign_of(x1) : sign_of(x0);
+}
+
+/* Differences 0 or within 2^[-458, 500] keep every product and error term
+ * below clear of overflow and underflow. */
+#define ORIENT_EXACT_MIN 0x1p-458
+
 int cm_orient2d(const double a[2], const double b[2], const double c[2])
 {
     double acx = a[0] - c[0], bcx = b[0] - c[0];
@@ -209,6 +269,17 @@ int cm_orient2d(const double a[2], const double b[2], const double c[2])
         double det = detleft - detright;
         double errbound = orient_errbound * (fabs(detleft) + fabs(detright));
         if (fabs(det) > errbound) return sign_of(det);
+        /* Shewchuk's stage B: when the differences are exact (collinear
+         * points of an outline usually are), the determinant is the exact
+         * difference of two exact products, without GMP. */
+        if (all_within(diff, 4, ORIENT_EXACT_MIN, ORIENT_MAX) && diff_tail(a[0], c[0], acx) == 0 &&
+            diff_tail(b[0], c[0], bcx) == 0 && diff_tail(a[1], c[1], acy) == 0 &&
+            diff_tail(b[1], c[1], bcy) == 0) {
+            double l1, l0, r1, r0;
+            two_product(acx, bcy, &l1, &l0);
+            two_product(acy, bcx, &r1, &r0);
+            return two_two_diff_sign(l1, l0, r1, r0);
+        }
     }
     return orient2d_exact(a, b, c);
 }

@@ -246,11 +246,12 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
             }
             if (i + 1 < count) volume += slab_volume(m, secs + i);
         }
-        w->volume = (double)volume;
-        if (!isfinite(w->volume))
-            s = cm_fail(&w->error, CM_ERR_ARGUMENT,
-                        "sweep: the volume between z = %g and z = %g overflows doubles; bring the heights closer",
-                        secs[0].z, secs[count - 1].z);
+        w->volume = (double)volume; /* HUGE_VAL beyond the double range */
+        for (size_t i = 0; i < 3 * count * w->nv && s == CM_OK; i++)
+            if (!isfinite(w->nodes[i]))
+                s = cm_fail(&w->error, CM_ERR_ARGUMENT,
+                            "sweep: node %zu between z = %g and z = %g is beyond the double range",
+                            i / 3, secs[0].z, secs[count - 1].z);
         size_t p = 0;
         for (size_t i = 0; i + 1 < count; i++)
             for (size_t t = 0; t < m->nt; t++, p++) {

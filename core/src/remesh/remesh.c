@@ -480,8 +480,9 @@ static long coarsen(remesher *x, double threshold)
 
 static int set_caps(remesher *x, const cm_mesh *mesh, size_t n, cm_remesh_report *rep)
 {
-    double *bcap = malloc(2 * n * sizeof *bcap), *vcap = bcap + n;
+    double *bcap = malloc(2 * n * sizeof *bcap);
     if (!bcap) return -1;
+    double *vcap = bcap + n;
     if (cm_boundary_caps(mesh, n, x->progress, bcap, vcap)) {
         free(bcap);
         return -1;
