@@ -342,7 +342,7 @@ static cm_status plan_item(part *p, item *it, const unsigned char *common)
     double t0 = cm_seconds_now();
     size_t k = p->k;
     double **l = local_xy(p, it), *cand = malloc(MAX_FANS * 2 * k * sizeof *cand);
-    cm_sf_plan plan, other;
+    cm_sf_plan plan = {0}, other;
     int fanned = 0, bad = !l || !cand;
     if (!bad) bad = cm_steinerfree_plan(it->m, common, (const double *const *)l, k, NULL, 0, &plan) != 0;
     int count = bad || plan.cost < 2 ? 0 : fan_candidates(k, l, it->m, &plan, cand, MAX_FANS);
@@ -360,8 +360,8 @@ static cm_status plan_item(part *p, item *it, const unsigned char *common)
         p->st->dp_runs++;
         p->st->steinerfree += plan.cost == 0;
         bad = apply_plan(p, it, &plan, fanned ? cand : NULL) != 0;
-        cm_sf_plan_clear(&plan);
     }
+    cm_sf_plan_clear(&plan); /* also when a later step ran out of memory */
     free_xy(l, k);
     free(cand);
     p->st->seconds_dp += cm_seconds_now() - t0;
