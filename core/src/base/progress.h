@@ -28,6 +28,7 @@ typedef struct cm_progress {
     cm_stage stage;    /* what was reported last */
     double within;
     int cancelled;     /* the caller asked to cancel: every check says so */
+    unsigned checks;   /* cm_progress_check looks at the clock every 32nd call */
 } cm_progress;
 
 void cm_progress_init(cm_progress *p, cm_progress_fn fn, void *user);

@@ -6,8 +6,6 @@
 
 #include "geom/angle.h"
 
-#define CM_ANGLE_SAFE_LO 0x1p-1000
-#define CM_ANGLE_SAFE_HI 0x1p1000
 
 static int in_safe_range(double squared_lengths)
 {
@@ -62,19 +60,8 @@ double cm_triangle_max_angle(const double a[2], const double b[2], const double 
     return fmax(cm_angle_at(a, b, c), fmax(cm_angle_at(b, c, a), cm_angle_at(c, a, b)));
 }
 
-double cm_triangle_min_angle_sin2(const double a[2], const double b[2], const double c[2])
+double cm_triangle_min_angle_sin2_wide(const double a[2], const double b[2], const double c[2])
 {
-    double abx = b[0] - a[0], aby = b[1] - a[1];
-    double bcx = c[0] - b[0], bcy = c[1] - b[1];
-    double cax = a[0] - c[0], cay = a[1] - c[1];
-    double lab = abx * abx + aby * aby, lbc = bcx * bcx + bcy * bcy, lca = cax * cax + cay * cay;
-    if (!in_safe_range(lab + lbc + lca)) {
-        double s = sin(min_angle_wide(a, b, c));
-        return s * s;
-    }
-    double cross = abx * cay - aby * cax, den;
-    if (lab <= lbc && lab <= lca) den = lbc * lca;
-    else if (lbc <= lca) den = lab * lca;
-    else den = lab * lbc;
-    return den > 0 ? cross * cross / den : 0.0;
+    double s = sin(min_angle_wide(a, b, c));
+    return s * s;
 }

@@ -13,7 +13,31 @@ double cm_angle_at(const double p[2], const double q[2], const double r[2]);
 double cm_triangle_min_angle(const double a[2], const double b[2], const double c[2]);
 /* Largest angle (radians) of triangle abc. */
 double cm_triangle_max_angle(const double a[2], const double b[2], const double c[2]);
-/* sin^2 of the smallest angle of triangle abc: cheaper, same order. */
-double cm_triangle_min_angle_sin2(const double a[2], const double b[2], const double c[2]);
+/* Squared lengths inside [2^-1000, 2^1000] neither overflow nor underflow
+ * in the plain formulas; outside, long double takes over. */
+#define CM_ANGLE_SAFE_LO 0x1p-1000
+#define CM_ANGLE_SAFE_HI 0x1p1000
+
+double cm_triangle_min_angle_sin2_wide(const double a[2], const double b[2], const double c[2]);
+
+/* sin^2 of the smallest angle of triangle abc: cheaper, same order. Inline:
+ * the smoothing's position searches call it for every trial point. */
+static inline double cm_triangle_min_angle_sin2(const double a[2], const double b[2],
+                                                const double c[2])
+{
+    double abx = b[0] - a[0], aby = b[1] - a[1];
+    double bcx = c[0] - b[0], bcy = c[1] - b[1];
+    double cax = a[0] - c[0], cay = a[1] - c[1];
+    double lab = abx * abx + aby * aby, lbc = bcx * bcx + bcy * bcy, lca = cax * cax + cay * cay;
+    double cross = abx * cay - aby * cax, den;
+    if (lab <= lbc && lab <= lca) den = lbc * lca;
+    else if (lbc <= lca) den = lab * lca;
+    else den = lab * lbc;
+    /* den, the product of the two longest squared lengths, bounds cross^2:
+     * in range, nothing above overflowed. */
+    if (!(den > CM_ANGLE_SAFE_LO && den < CM_ANGLE_SAFE_HI) && den != 0)
+        return cm_triangle_min_angle_sin2_wide(a, b, c);
+    return den > 0 ? cross * cross / den : 0.0;
+}
 
 #endif
