@@ -100,6 +100,21 @@ typedef enum cm_smoothing {
     CM_SMOOTH_COMBINED       /* weighted angle-based; Laplacian where it fails */
 } cm_smoothing;
 
+/* Which vertices correspond. */
+typedef enum cm_correspondence {
+    /* Vertex i of every polygon corresponds to vertex i; the counts must
+     * be equal and the orientations agree. The default. */
+    CM_CORRESPOND_INDEX = 0,
+    /* Normalised arc length between pins (or from the first vertex of
+     * every polygon): every polygon keeps all of its vertices, bit-
+     * identical, and gets the other polygons' vertices as points on its
+     * edges, so the counts may differ; clockwise polygons are reversed to
+     * agree. The result's boundary is that common refinement, counter-
+     * clockwise from the first pin (cm_result_boundary_source says where
+     * each boundary vertex comes from). */
+    CM_CORRESPOND_ARCLENGTH
+} cm_correspondence;
+
 typedef struct cm_options {
     cm_method method;
     cm_progress_fn progress; /* may be NULL */
@@ -138,6 +153,14 @@ typedef struct cm_options {
     /* Cap on refinement rounds, >= 0; 0 (default): no cap beyond the
      * other stopping rules. */
     int max_iterations;
+
+    cm_correspondence correspondence; /* default CM_CORRESPOND_INDEX */
+    /* Pins of CM_CORRESPOND_ARCLENGTH: num_pins k-tuples, pins[j * k + g]
+     * the vertex of polygon g (its input numbering) that pin j ties to the
+     * others; in the same order along every polygon. NULL and 0 (default):
+     * the first vertex of every polygon. */
+    const size_t *pins;
+    size_t num_pins;
 } cm_options;
 
 /* Fills *options with the defaults. Always call it first, then change the
@@ -230,6 +253,12 @@ CM_API const int32_t *cm_result_vertex_halfedge(const cm_result *result);
 CM_API const int32_t *cm_result_face_halfedge(const cm_result *result);
 
 CM_API const cm_stats *cm_result_stats(const cm_result *result);
+/* Where boundary vertex i (< stats.n) of geometry g comes from: returns
+ * the input vertex e of polygon g such that the vertex is the point at
+ * parameter *t in [0, 1) of input edge e -> e + 1 (t == 0: input vertex e
+ * itself, bit-identical). With CM_CORRESPOND_INDEX it is input vertex i.
+ * -1 for a failed result or an index out of range. t may be NULL. */
+CM_API long cm_result_boundary_source(const cm_result *result, size_t g, size_t i, double *t);
 /* Returns CM_ERR_ARGUMENT if g is out of range or the result failed. */
 CM_API cm_status cm_result_quality(const cm_result *result, size_t g, cm_quality *quality);
 /* Quality of geometry g as the construction built it, before remeshing

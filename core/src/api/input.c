@@ -88,8 +88,8 @@ static cm_status check_one_polygon(const double *xy, long n, long g, cm_error *e
     return CM_OK;
 }
 
-cm_status cm_input_validate(const double *const *polygons, const size_t *counts,
-                            size_t k, cm_error *err, int *clockwise)
+cm_status cm_input_check_polygons(const double *const *polygons, const size_t *counts, size_t k,
+                                  int same_count, int *orientation, cm_error *err)
 {
     if (!polygons || !counts) return cm_fail(err, CM_ERR_ARGUMENT, "no polygons given");
     if (k < 2) return cm_fail(err, CM_ERR_ARGUMENT, "need at least 2 polygons, got %zu", k);
@@ -99,7 +99,7 @@ cm_status cm_input_validate(const double *const *polygons, const size_t *counts,
             return cm_fail(err, CM_ERR_TOO_FEW_VERTICES,
                            "polygon %zu has %zu vertices, needs at least 3", g, counts[g]);
         }
-        if (counts[g] != counts[0]) {
+        if (same_count && counts[g] != counts[0]) {
             cm_fail_at(err, (long)g, -1, -1);
             return cm_fail(err, CM_ERR_COUNT_MISMATCH,
                            "polygon %zu has %zu vertices but polygon 0 has %zu", g,
@@ -109,22 +109,30 @@ cm_status cm_input_validate(const double *const *polygons, const size_t *counts,
         if (counts[g] > (size_t)INT32_MAX / 8)
             return cm_fail(err, CM_ERR_ARGUMENT, "polygon %zu is too large", g);
     }
-    int first_orientation = 0;
     for (size_t g = 0; g < k; g++) {
-        int orientation = 0;
-        cm_status s = check_one_polygon(polygons[g], (long)counts[g], (long)g, err, &orientation);
+        cm_status s = check_one_polygon(polygons[g], (long)counts[g], (long)g, err, &orientation[g]);
         if (s != CM_OK) return s;
-        if (g == 0) {
-            first_orientation = orientation;
-        } else if (orientation != first_orientation) {
+    }
+    return CM_OK;
+}
+
+cm_status cm_input_validate(const double *const *polygons, const size_t *counts,
+                            size_t k, cm_error *err, int *clockwise)
+{
+    int *orientation = k ? malloc(k * sizeof *orientation) : NULL;
+    if (k && !orientation) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    cm_status s = cm_input_check_polygons(polygons, counts, k, 1, orientation, err);
+    for (size_t g = 1; s == CM_OK && g < k; g++) {
+        if (orientation[g] != orientation[0]) {
             cm_fail_at(err, (long)g, -1, -1);
-            return cm_fail(err, CM_ERR_ORIENTATION_MISMATCH,
-                           "polygon %zu is %s but polygon 0 is %s: the vertex correspondence "
-                           "would mirror the shape",
-                           g, orientation > 0 ? "counter-clockwise" : "clockwise",
-                           first_orientation > 0 ? "counter-clockwise" : "clockwise");
+            s = cm_fail(err, CM_ERR_ORIENTATION_MISMATCH,
+                        "polygon %zu is %s but polygon 0 is %s: the vertex correspondence "
+                        "would mirror the shape",
+                        g, orientation[g] > 0 ? "counter-clockwise" : "clockwise",
+                        orientation[0] > 0 ? "counter-clockwise" : "clockwise");
         }
     }
-    *clockwise = first_orientation < 0;
-    return CM_OK;
+    if (s == CM_OK) *clockwise = orientation[0] < 0;
+    free(orientation);
+    return s;
 }

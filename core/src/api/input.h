@@ -10,4 +10,11 @@
 cm_status cm_input_validate(const double *const *polygons, const size_t *counts,
                             size_t k, cm_error *err, int *clockwise);
 
+/* The same checks of the arguments and of every polygon on its own; the
+ * counts must agree only with same_count, and the orientations need not:
+ * orientation[g] (k entries) receives +1 for counter-clockwise, -1 for
+ * clockwise. */
+cm_status cm_input_check_polygons(const double *const *polygons, const size_t *counts, size_t k,
+                                  int same_count, int *orientation, cm_error *err);
+
 #endif

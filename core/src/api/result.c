@@ -8,6 +8,7 @@
 void cm_result_clear_geometry(cm_result *r)
 {
     cm_mesh_clear(&r->mesh);
+    cm_boundary_map_clear(&r->boundary);
     free(r->he_next), free(r->he_to), free(r->he_face), free(r->vertex_he), free(r->face_he);
     free(r->quality), free(r->quality_before);
     r->he_next = r->he_to = r->he_face = r->vertex_he = r->face_he = NULL;
@@ -61,6 +62,13 @@ const int32_t *cm_result_halfedge_face(const cm_result *r) { return ok(r) ? r->h
 const int32_t *cm_result_vertex_halfedge(const cm_result *r) { return ok(r) ? r->vertex_he : NULL; }
 const int32_t *cm_result_face_halfedge(const cm_result *r) { return ok(r) ? r->face_he : NULL; }
 const cm_stats *cm_result_stats(const cm_result *r) { return r ? &r->stats : NULL; }
+
+long cm_result_boundary_source(const cm_result *r, size_t g, size_t i, double *t)
+{
+    if (!ok(r) || g >= r->mesh.k || i >= r->n) return -1;
+    if (t) *t = r->boundary.n ? r->boundary.t[g][i] : 0.0;
+    return r->boundary.n ? (long)r->boundary.edge[g][i] : (long)i;
+}
 
 cm_status cm_result_quality(const cm_result *r, size_t g, cm_quality *quality)
 {

@@ -4,6 +4,7 @@
 
 #include "base/error.h"
 #include "base/mesh.h"
+#include "correspond/arclength.h"
 
 struct cm_result {
     cm_error error;   /* status; message and location of a failure */
@@ -17,6 +18,7 @@ struct cm_result {
     cm_stats stats;
     cm_quality *quality; /* k entries */
     cm_quality *quality_before; /* k entries: before remeshing */
+    cm_boundary_map boundary;   /* CM_CORRESPOND_ARCLENGTH; empty for index */
 };
 
 /* Drops all geometry, keeping status and message (a failed result). */

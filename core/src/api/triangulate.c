@@ -207,6 +207,47 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
     return CM_OK;
 }
 
+static cm_status check_correspondence_options(cm_result *r, const cm_options *o)
+{
+    if ((unsigned)o->correspondence > (unsigned)CM_CORRESPOND_ARCLENGTH)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown correspondence %d", (int)o->correspondence);
+    if (o->num_pins && !o->pins) return cm_fail(&r->error, CM_ERR_ARGUMENT, "num_pins is %zu but pins is NULL", o->num_pins);
+    if (o->num_pins && o->correspondence == CM_CORRESPOND_INDEX)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT,
+                       "pins need the arclength correspondence (with index, vertex i is vertex i)");
+    return CM_OK;
+}
+
+/* CM_CORRESPOND_ARCLENGTH: each polygon checked on its own, the common
+ * refinement of the boundaries made, then the pipeline on it. A failure of
+ * the refined boundaries (rounding of a point on an edge next to another
+ * edge) is located at the input edge it came from. */
+static cm_status run_arclength(cm_result *r, const double *const *polygons, const size_t *counts,
+                               size_t k, const cm_options *o)
+{
+    int *orientation = k ? malloc(k * sizeof *orientation) : NULL;
+    size_t *merged_counts = k ? malloc(k * sizeof *merged_counts) : NULL;
+    cm_status s = !k || (orientation && merged_counts) ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
+    if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, o->pins, o->num_pins,
+                                                &r->boundary, &r->error);
+    if (s == CM_OK) {
+        for (size_t g = 0; g < k; g++) merged_counts[g] = r->boundary.n;
+        s = run_pipeline(r, (const double *const *)r->boundary.xy, merged_counts, k, o);
+        if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED && r->error.polygon >= 0 &&
+            r->error.vertex >= 0 && (size_t)r->error.vertex < r->boundary.n) {
+            size_t g = (size_t)r->error.polygon, v = (size_t)r->error.vertex;
+            char detail[sizeof r->error.message];
+            snprintf(detail, sizeof detail, "%s", r->error.message);
+            cm_fail_at(&r->error, (long)g, (long)r->boundary.edge[g][v], -1);
+            cm_fail(&r->error, s, "the boundary the arc-length correspondence made, near input vertex %ld of polygon %zu: %s",
+                    (long)r->boundary.edge[g][v], g, detail);
+        }
+    }
+    free(orientation), free(merged_counts);
+    return s;
+}
+
 cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *counts,
                                   size_t k, const cm_options *options, cm_result **result)
 {
@@ -224,7 +265,11 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
     }
     cm_status s = check_remesh_options(r, options);
-    if (s == CM_OK) s = run_pipeline(r, polygons, counts, k, options);
+    if (s == CM_OK) s = check_correspondence_options(r, options);
+    if (s == CM_OK && options->correspondence == CM_CORRESPOND_ARCLENGTH)
+        s = run_arclength(r, polygons, counts, k, options);
+    else if (s == CM_OK)
+        s = run_pipeline(r, polygons, counts, k, options);
     if (s != CM_OK) cm_result_clear_geometry(r);
     return cm_error_close(&r->error, s);
 }

@@ -1,0 +1,232 @@
+/* Normalised arc length between pins. Every polygon is walked counter-
+ * clockwise from its first pin; the pins split it into P segments, and a
+ * vertex in segment s gets the parameter s + (arc length from the segment's
+ * start) / (the segment's length), so pins sit at whole numbers in every
+ * polygon. The union of all polygons' parameters is the common boundary:
+ * at a parameter of its own a polygon contributes its vertex, elsewhere
+ * the point at that parameter on its edge. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "correspond/arclength.h"
+
+void cm_boundary_map_clear(cm_boundary_map *map)
+{
+    for (size_t g = 0; g < map->k; g++) {
+        if (map->xy) free(map->xy[g]);
+        if (map->edge) free(map->edge[g]);
+        if (map->t) free(map->t[g]);
+    }
+    free(map->xy), free(map->edge), free(map->t);
+    memset(map, 0, sizeof *map);
+}
+
+/* One polygon, counter-clockwise from its first pin. */
+typedef struct walk {
+    const double *xy;  /* input coordinates */
+    size_t n;
+    int reversed;      /* clockwise input */
+    size_t start;      /* counter-clockwise position of the first pin */
+    double *param;     /* n + 1: the i-th vertex from start; param[n] = P */
+} walk;
+
+/* Counter-clockwise position c <-> input index. */
+static size_t input_index(const walk *w, size_t c) { return w->reversed ? (w->n - c) % w->n : c; }
+static size_t ccw_position(const walk *w, size_t v) { return w->reversed ? (w->n - v) % w->n : v; }
+/* The i-th vertex from the start, as an input index. */
+static size_t vertex_at(const walk *w, size_t i) { return input_index(w, (w->start + i) % w->n); }
+static const double *point_at(const walk *w, size_t i) { return w->xy + 2 * vertex_at(w, i); }
+
+/* Pins as counter-clockwise offsets from the first pin of each polygon,
+ * sorted along polygon 0 and checked to be in that order everywhere. */
+static cm_status order_pins(const size_t *pins, size_t num_pins, size_t k, walk *walks,
+                            size_t *offset /* num_pins * k */, cm_error *err)
+{
+    for (size_t j = 0; j < num_pins; j++)
+        for (size_t g = 0; g < k; g++)
+            if (pins[j * k + g] >= walks[g].n) {
+                cm_fail_at(err, (long)g, (long)pins[j * k + g], -1);
+                return cm_fail(err, CM_ERR_ARGUMENT, "pin %zu: vertex %zu of polygon %zu is out of range (%zu vertices)",
+                               j, pins[j * k + g], g, walks[g].n);
+            }
+    /* Order of the pins along polygon 0, by insertion (pins are few). */
+    size_t *order = malloc(num_pins * sizeof *order);
+    if (!order) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    for (size_t j = 0; j < num_pins; j++) {
+        size_t c = ccw_position(&walks[0], pins[j * k]), at = j;
+        while (at > 0 && ccw_position(&walks[0], pins[order[at - 1] * k]) > c) order[at] = order[at - 1], at--;
+        order[at] = j;
+    }
+    for (size_t g = 0; g < k; g++) {
+        walk *w = &walks[g];
+        w->start = ccw_position(w, pins[order[0] * k + g]);
+        for (size_t s = 0; s < num_pins; s++)
+            offset[s * k + g] = (ccw_position(w, pins[order[s] * k + g]) + w->n - w->start) % w->n;
+        for (size_t s = 1; s < num_pins; s++) {
+            if (offset[s * k + g] > offset[(s - 1) * k + g]) continue;
+            size_t a = order[s - 1], b = order[s];
+            free(order);
+            cm_fail_at(err, (long)g, (long)pins[b * k + g], (long)pins[a * k + g]);
+            if (offset[s * k + g] == offset[(s - 1) * k + g])
+                return cm_fail(err, CM_ERR_ARGUMENT, "pins %zu and %zu both pin vertex %zu of polygon %zu", a, b,
+                               pins[a * k + g], g);
+            return cm_fail(err, CM_ERR_ARGUMENT,
+                           "pins %zu and %zu cross: along polygon %zu they come in the other order than along polygon 0",
+                           a, b, g);
+        }
+    }
+    free(order);
+    return CM_OK;
+}
+
+/* Parameters of the vertices of w: whole numbers at the pins, strictly
+ * increasing (nudged up by an ulp where lengths round together). */
+static cm_status parametrise(walk *w, const size_t *offset, size_t stride, size_t num_pins, size_t g,
+                             cm_error *err)
+{
+    size_t n = w->n;
+    double *arc = malloc((n + 1) * sizeof *arc);
+    if (!arc) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    arc[0] = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double *a = point_at(w, i), *b = point_at(w, i + 1);
+        arc[i + 1] = arc[i] + hypot(b[0] - a[0], b[1] - a[1]);
+    }
+    cm_status s = CM_OK;
+    for (size_t seg = 0; seg < num_pins && s == CM_OK; seg++) {
+        size_t from = offset[seg * stride], to = seg + 1 < num_pins ? offset[(seg + 1) * stride] : n;
+        double length = arc[to] - arc[from];
+        w->param[from] = (double)seg;
+        for (size_t i = from + 1; i < to; i++) {
+            double p = (double)seg + (arc[i] - arc[from]) / length;
+            if (p <= w->param[i - 1]) p = nextafter(w->param[i - 1], INFINITY);
+            if (!(p < (double)(seg + 1)) || !isfinite(p)) {
+                cm_fail_at(err, (long)g, (long)vertex_at(w, i), -1);
+                s = cm_fail(err, CM_ERR_ARGUMENT,
+                            "polygon %zu: arc length cannot separate vertex %zu from its neighbours "
+                            "(edges too short against the perimeter)", g, vertex_at(w, i));
+                break;
+            }
+            w->param[i] = p;
+        }
+    }
+    w->param[n] = (double)num_pins;
+    free(arc);
+    return s;
+}
+
+typedef struct entry { double u; size_t g, i; } entry;
+
+static int by_parameter(const void *pa, const void *pb)
+{
+    const entry *a = pa, *b = pb;
+    if (a->u != b->u) return a->u < b->u ? -1 : 1;
+    return (a->g > b->g) - (a->g < b->g);
+}
+
+/* Parameters closer than this (in segments) are one boundary vertex:
+ * vertices that correspond up to rounding do not become two vertices a
+ * hair apart. */
+#define CM_SAME_PARAMETER 1e-9
+
+/* The merged boundary: u[j], the parameter of vertex j (strictly
+ * increasing), and own[g * total + j], the vertex of polygon g there (its
+ * index along the walk) or -1. */
+static cm_status merge(const walk *walks, size_t k, double **u, long **own, size_t *n, cm_error *err)
+{
+    size_t total = 0;
+    for (size_t g = 0; g < k; g++) total += walks[g].n;
+    entry *e = malloc(total * sizeof *e);
+    *u = malloc(total * sizeof **u);
+    *own = malloc(k * total * sizeof **own);
+    if (!e || !*u || !*own) {
+        free(e);
+        return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    }
+    size_t m = 0;
+    for (size_t g = 0; g < k; g++)
+        for (size_t i = 0; i < walks[g].n; i++) e[m++] = (entry){walks[g].param[i], g, i};
+    qsort(e, total, sizeof *e, by_parameter);
+    for (size_t x = 0; x < k * total; x++) (*own)[x] = -1;
+    *n = 0;
+    for (size_t x = 0; x < total; x++) {
+        size_t j = *n - 1;
+        int joins = *n > 0 && e[x].u - (*u)[j] < CM_SAME_PARAMETER && (*own)[e[x].g * total + j] < 0;
+        if (!joins) j = (*n)++, (*u)[j] = e[x].u;
+        (*own)[e[x].g * total + j] = (long)e[x].i;
+    }
+    free(e);
+    return CM_OK;
+}
+
+/* Polygon g at the merged parameters: its own vertices where it has one,
+ * points on its edges elsewhere. own: g's row of merge's table. */
+static void fill(const walk *w, const double *u, const long *own, size_t n, double *xy, int32_t *edge,
+                 double *t)
+{
+    size_t i = 0; /* w's vertex at or before u[j]; the first pin is at u[0] = 0 */
+    for (size_t j = 0; j < n; j++) {
+        if (own[j] >= 0) {
+            i = (size_t)own[j];
+            const double *a = point_at(w, i);
+            xy[2 * j] = a[0], xy[2 * j + 1] = a[1];
+            edge[j] = (int32_t)vertex_at(w, i), t[j] = 0.0;
+            continue;
+        }
+        const double *a = point_at(w, i), *b = point_at(w, i + 1);
+        double s = (u[j] - w->param[i]) / (w->param[i + 1] - w->param[i]);
+        xy[2 * j] = a[0] + s * (b[0] - a[0]);
+        xy[2 * j + 1] = a[1] + s * (b[1] - a[1]);
+        /* Input numbering: a clockwise polygon's edge runs from b to a. */
+        edge[j] = (int32_t)(w->reversed ? vertex_at(w, i + 1) : vertex_at(w, i));
+        t[j] = w->reversed ? 1.0 - s : s;
+    }
+}
+
+cm_status cm_correspond_arclength(const double *const *polygons, const size_t *counts, size_t k,
+                                  const int *orientation, const size_t *pins, size_t num_pins,
+                                  cm_boundary_map *out, cm_error *err)
+{
+    memset(out, 0, sizeof *out);
+    size_t *zeros = NULL;
+    if (num_pins == 0) { /* the first vertex of every polygon */
+        zeros = calloc(k, sizeof *zeros);
+        if (!zeros) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+        pins = zeros, num_pins = 1;
+    }
+    walk *walks = calloc(k, sizeof *walks);
+    size_t *offset = malloc(num_pins * k * sizeof *offset);
+    double *u = NULL;
+    long *own = NULL;
+    cm_status s = walks && offset ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
+    for (size_t g = 0; s == CM_OK && g < k; g++) {
+        walks[g] = (walk){polygons[g], counts[g], orientation[g] < 0, 0, malloc((counts[g] + 1) * sizeof(double))};
+        if (!walks[g].param) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+    }
+    if (s == CM_OK) s = order_pins(pins, num_pins, k, walks, offset, err);
+    for (size_t g = 0; s == CM_OK && g < k; g++) s = parametrise(&walks[g], offset + g, k, num_pins, g, err);
+    size_t n = 0;
+    size_t total = 0;
+    for (size_t g = 0; g < k; g++) total += counts[g];
+    if (s == CM_OK) s = merge(walks, k, &u, &own, &n, err);
+    if (s == CM_OK) {
+        out->k = k, out->n = n;
+        out->xy = calloc(k, sizeof *out->xy);
+        out->edge = calloc(k, sizeof *out->edge);
+        out->t = calloc(k, sizeof *out->t);
+        if (!out->xy || !out->edge || !out->t) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+    }
+    for (size_t g = 0; s == CM_OK && g < k; g++) {
+        out->xy[g] = malloc(2 * n * sizeof **out->xy);
+        out->edge[g] = malloc(n * sizeof **out->edge);
+        out->t[g] = malloc(n * sizeof **out->t);
+        if (!out->xy[g] || !out->edge[g] || !out->t[g]) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+        else fill(&walks[g], u, own + g * total, n, out->xy[g], out->edge[g], out->t[g]);
+    }
+    if (s != CM_OK) cm_boundary_map_clear(out);
+    if (walks)
+        for (size_t g = 0; g < k; g++) free(walks[g].param);
+    free(walks), free(offset), free(u), free(own), free(zeros);
+    return s;
+}

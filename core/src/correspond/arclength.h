@@ -1,0 +1,35 @@
+/* The arc-length correspondence: polygons of any vertex counts made into
+ * polygons of one count whose vertices correspond by index. */
+#ifndef CM_CORRESPOND_ARCLENGTH_H
+#define CM_CORRESPOND_ARCLENGTH_H
+
+#include "base/error.h"
+
+/* Boundaries in correspondence: k counter-clockwise polygons of n vertices
+ * each; vertex i of polygon g is input vertex edge[g][i] of polygon g when
+ * t[g][i] == 0 (its coordinates bit-identical), else the point at
+ * parameter t[g][i] in (0, 1) of input edge edge[g][i] -> edge[g][i] + 1
+ * (input numbering and input direction, so for clockwise input the edge
+ * runs from edge + 1 back to edge in the counter-clockwise boundary). */
+typedef struct cm_boundary_map {
+    size_t k, n;
+    double **xy;    /* k arrays of 2n */
+    int32_t **edge; /* k arrays of n */
+    double **t;     /* k arrays of n */
+} cm_boundary_map;
+
+void cm_boundary_map_clear(cm_boundary_map *map);
+
+/* The common refinement of the k validated polygons (orientation[g] +1 or
+ * -1 as cm_input_check_polygons found it) under normalised arc length
+ * between pins: num_pins k-tuples, pins[j * k + g] the input vertex of
+ * polygon g in pin j, in the same cyclic order along every polygon; none:
+ * the first vertex of every polygon. Every polygon keeps all its vertices
+ * and gets the others' as points on its edges; points at equal parameters
+ * are one vertex. Pins out of range, repeated or crossing are CM_ERR_ARGUMENT
+ * naming the pin and polygon. */
+cm_status cm_correspond_arclength(const double *const *polygons, const size_t *counts, size_t k,
+                                  const int *orientation, const size_t *pins, size_t num_pins,
+                                  cm_boundary_map *out, cm_error *err);
+
+#endif

@@ -1,0 +1,159 @@
+/* The arc-length correspondence (CM_CORRESPOND_ARCLENGTH): polygons of
+ * different vertex counts and orientations pair, every polygon keeps its
+ * own vertices bit-identical in order, added points lie on its edges, pins
+ * are honoured, a polygon against a similar copy of itself with another
+ * start vertex finds the identity, and bad pins are clear errors. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "compatmesh/compatmesh.h"
+#include "random_polygons.h"
+
+/* Every input vertex of every polygon is a boundary vertex, bit-identical,
+ * in order; the other boundary vertices lie on the input edge they name. */
+static int contract_holds(const cm_result *r, const double *const *in, const size_t *counts, size_t k)
+{
+    size_t n = cm_result_stats(r)->n;
+    for (size_t g = 0; g < k; g++) {
+        const double *xy = cm_result_vertices(r, g);
+        size_t seen = 0;
+        long last = -1;
+        for (size_t i = 0; i < n; i++) {
+            double t;
+            long e = cm_result_boundary_source(r, g, i, &t);
+            if (e < 0 || (size_t)e >= counts[g] || !(t >= 0 && t < 1)) return 0;
+            const double *a = in[g] + 2 * e, *b = in[g] + 2 * ((size_t)(e + 1) % counts[g]);
+            if (t == 0) {
+                if (memcmp(xy + 2 * i, a, 2 * sizeof(double)) != 0) return 0;
+                if (last >= 0 && e == last) return 0;
+                last = e, seen++;
+                continue;
+            }
+            double scale = fabs(b[0] - a[0]) + fabs(b[1] - a[1]);
+            double px = a[0] + t * (b[0] - a[0]), py = a[1] + t * (b[1] - a[1]);
+            if (fabs(xy[2 * i] - px) + fabs(xy[2 * i + 1] - py) > 1e-12 * scale) return 0;
+        }
+        if (seen != counts[g]) return 0;
+    }
+    return 1;
+}
+
+static cm_result *pair(const double *a, size_t na, const double *b, size_t nb, const size_t *pins,
+                       size_t num_pins, int remesh)
+{
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = CM_CORRESPOND_ARCLENGTH;
+    o.pins = pins, o.num_pins = num_pins, o.remesh = remesh;
+    const double *in[2] = {a, b};
+    size_t counts[2] = {na, nb};
+    cm_result *r = NULL;
+    cm_triangulate_polygons(in, counts, 2, &o, &r);
+    return r;
+}
+
+static void test_different_counts(void)
+{
+    for (int seed = 1; seed <= 20; seed++) {
+        size_t na = 20 + (size_t)seed, nb = 47 - (size_t)seed % 9;
+        double *a = malloc(2 * na * sizeof *a), *b = malloc(2 * nb * sizeof *b);
+        CHECK(rp_star(a, (int)na, (uint64_t)seed) == 0 && rp_star(b, (int)nb, (uint64_t)seed + 100) == 0);
+        if (seed % 2) rp_reverse(b, 1, (int)nb - 1); /* clockwise: mixed orientations agree in arclength */
+        cm_result *r = pair(a, na, b, nb, NULL, 0, 1);
+        const double *in[2] = {a, b};
+        size_t counts[2] = {na, nb};
+        CHECK_MSG(cm_result_status(r) == CM_OK, "seed %d: %s", seed, cm_result_message(r));
+        if (cm_result_status(r) == CM_OK) {
+            size_t n = cm_result_stats(r)->n;
+            CHECK_MSG(n >= nb && n <= na + nb - 1, "seed %d: %zu boundary vertices for %zu and %zu", seed, n, na, nb);
+            CHECK_MSG(contract_holds(r, in, counts, 2), "seed %d: output contract", seed);
+        }
+        cm_result_free(r);
+        free(a), free(b);
+    }
+}
+
+/* A similar copy (rotated, scaled, moved) numbered from another vertex,
+ * pinned at corresponding vertices: the identity, no vertex added, and the
+ * Steiner-free construction finds no Steiner vertex. */
+static void test_similar_copy_is_the_identity(void)
+{
+    enum { N = 40, SHIFT = 13 };
+    double a[2 * N], b[2 * N];
+    CHECK(rp_star(a, N, 77) == 0);
+    double c = cos(0.7) * 3.0, s = sin(0.7) * 3.0;
+    for (int i = 0; i < N; i++) {
+        const double *p = a + 2 * ((i + SHIFT) % N);
+        b[2 * i] = c * p[0] - s * p[1] + 5.0, b[2 * i + 1] = s * p[0] + c * p[1] - 2.0;
+    }
+    size_t pins[2] = {SHIFT, 0}; /* a's vertex SHIFT is b's vertex 0 */
+    cm_result *r = pair(a, N, b, N, pins, 1, 0);
+    CHECK_MSG(cm_result_status(r) == CM_OK, "%s", cm_result_message(r));
+    if (cm_result_status(r) == CM_OK) {
+        CHECK_MSG(cm_result_stats(r)->n == N, "%zu boundary vertices", cm_result_stats(r)->n);
+        CHECK_MSG(cm_result_stats(r)->steiner == 0, "%zu Steiner vertices", cm_result_stats(r)->steiner);
+        for (size_t i = 0; i < N; i++) {
+            double t;
+            CHECK(cm_result_boundary_source(r, 0, i, &t) == (long)((i + SHIFT) % N) && t == 0);
+            CHECK(cm_result_boundary_source(r, 1, i, &t) == (long)i && t == 0);
+        }
+    }
+    cm_result_free(r);
+}
+
+static void test_pins_are_honoured(void)
+{
+    enum { NA = 30, NB = 44 };
+    double a[2 * NA], b[2 * NB];
+    CHECK(rp_star(a, NA, 5) == 0 && rp_star(b, NB, 6) == 0);
+    size_t pins[3 * 2] = {0, 0, 10, 25, 20, 30};
+    cm_result *r = pair(a, NA, b, NB, pins, 3, 1);
+    CHECK_MSG(cm_result_status(r) == CM_OK, "%s", cm_result_message(r));
+    for (size_t p = 0; cm_result_status(r) == CM_OK && p < 3; p++) {
+        long found = 0;
+        for (size_t i = 0; i < cm_result_stats(r)->n; i++) {
+            double ta, tb;
+            long ea = cm_result_boundary_source(r, 0, i, &ta), eb = cm_result_boundary_source(r, 1, i, &tb);
+            found += ea == (long)pins[2 * p] && ta == 0 && eb == (long)pins[2 * p + 1] && tb == 0;
+        }
+        CHECK_MSG(found == 1, "pin %zu: on %ld shared boundary vertices", p, found);
+    }
+    cm_result_free(r);
+}
+
+static void test_bad_pins(void)
+{
+    enum { NA = 12, NB = 15 };
+    double a[2 * NA], b[2 * NB];
+    CHECK(rp_star(a, NA, 1) == 0 && rp_star(b, NB, 2) == 0);
+    static const struct { size_t pins[6]; size_t count; const char *what; } cases[] = {
+        {{0, 15}, 1, "vertex 15 of polygon 1 is out of range (15 vertices)"},
+        {{0, 0, 5, 9, 8, 3}, 3, "cross"},
+        {{0, 0, 0, 4}, 2, "both pin vertex 0 of polygon 0"},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        cm_result *r = pair(a, NA, b, NB, cases[c].pins, cases[c].count, 1);
+        CHECK_MSG(cm_result_status(r) == CM_ERR_ARGUMENT && strstr(cm_result_message(r), cases[c].what),
+                  "case %zu: %s", c, cm_result_message(r));
+        cm_result_free(r);
+    }
+    /* Pins without the arclength correspondence are refused too. */
+    cm_options o;
+    cm_options_init(&o);
+    size_t pins[2] = {0, 0};
+    o.pins = pins, o.num_pins = 1;
+    cm_result *r = NULL;
+    CHECK(cm_triangulate(a, 2, NA, &o, &r) == CM_ERR_ARGUMENT && strstr(cm_result_message(r), "arclength"));
+    cm_result_free(r);
+}
+
+int main(void)
+{
+    test_different_counts();
+    test_similar_copy_is_the_identity();
+    test_pins_are_honoured();
+    test_bad_pins();
+    return check_summary("test_correspondence");
+}
