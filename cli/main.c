@@ -40,7 +40,8 @@ static void print_main_help(FILE *out)
           "       compatmesh --help | --version\n"
           "\n"
           "Compatible triangulations of planar polygons whose vertices correspond\n"
-          "by index (Surazhsky & Gotsman, \"High Quality Compatible Triangulations\").\n"
+          "by index or by arc length (Surazhsky & Gotsman, \"High Quality\n"
+          "Compatible Triangulations\").\n"
           "\n"
           "Commands:\n", out);
     for (size_t i = 0; i < subcommand_count; i++)

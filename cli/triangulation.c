@@ -32,7 +32,9 @@ int triangulation_args_init(triangulation_args *args, int argc, cli_error *error
 void triangulation_args_free(triangulation_args *args)
 {
     free(args->inputs);
-    args->inputs = NULL;
+    free(args->pins);
+    free(args->pin_texts);
+    args->inputs = NULL, args->pins = NULL, args->pin_texts = NULL;
 }
 
 static int set_method(triangulation_args *args, const char *command, const char *name,
@@ -62,6 +64,51 @@ static int set_smoothing(triangulation_args *args, const char *command, const ch
     cli_error_set(error, "%s: unknown --smoothing '%s' "
                   "(known: laplacian, angle, weighted, combined)", command, name);
     return CLI_EXIT_USAGE;
+}
+
+static int set_correspondence(triangulation_args *args, const char *command, const char *name,
+                              cli_error *error)
+{
+    if (strcmp(name, "index") == 0) args->options.correspondence = CM_CORRESPOND_INDEX;
+    else if (strcmp(name, "arclength") == 0) args->options.correspondence = CM_CORRESPOND_ARCLENGTH;
+    else {
+        cli_error_set(error, "%s: unknown --correspondence '%s' (known: index, arclength)", command, name);
+        return CLI_EXIT_USAGE;
+    }
+    args->correspondence_given = 1;
+    return CLI_EXIT_OK;
+}
+
+/* --pin I,J[,K...]: vertex numbers, one per input; counted per input once
+ * all inputs are known (triangulation_args_check). */
+static int add_pin(triangulation_args *args, const char *command, const char *text, cli_error *error)
+{
+    const char **texts = realloc(args->pin_texts, (args->pin_count + 1) * sizeof *texts);
+    if (!texts) {
+        cli_error_set(error, "out of memory");
+        return CLI_EXIT_INTERNAL;
+    }
+    args->pin_texts = texts;
+    args->pin_texts[args->pin_count++] = text;
+    for (const char *p = text;;) {
+        char *end;
+        errno = 0;
+        long v = *p >= '0' && *p <= '9' ? strtol(p, &end, 10) : -1;
+        if (v < 0 || errno == ERANGE || (*end != ',' && *end != '\0')) {
+            cli_error_set(error, "%s: --pin needs vertex numbers separated by commas, got '%s'", command, text);
+            return CLI_EXIT_USAGE;
+        }
+        size_t *pins = realloc(args->pins, (args->pin_values + 1) * sizeof *pins);
+        if (!pins) {
+            cli_error_set(error, "out of memory");
+            return CLI_EXIT_INTERNAL;
+        }
+        args->pins = pins;
+        args->pins[args->pin_values++] = (size_t)v;
+        if (*end == '\0') break;
+        p = end + 1;
+    }
+    return CLI_EXIT_OK;
 }
 
 /* A whole decimal number in [low, high]; the message names the option. */
@@ -128,6 +175,10 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
         return set_smoothing(args, command, value, error);
     case OPTION_MAX_ITERATIONS:
         return parse_int(command, "max-iterations", value, &args->options.max_iterations, error);
+    case OPTION_CORRESPONDENCE:
+        return set_correspondence(args, command, value, error);
+    case OPTION_PIN:
+        return add_pin(args, command, value, error);
     case OPTION_MAX_INPUT_BYTES:
         return parse_long(command, "max-input-bytes", value, 1, LONG_MAX, &args->max_input_bytes,
                           error);
@@ -139,10 +190,29 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
 int triangulation_args_check(const triangulation_args *args, const char *command,
                              cli_error *error)
 {
-    if (args->input_count >= 2) return CLI_EXIT_OK;
-    cli_error_set(error, "%s: needs at least two input polygons, got %zu "
-                  "(see 'compatmesh %s --help')", command, args->input_count, command);
-    return CLI_EXIT_USAGE;
+    if (args->input_count < 2) {
+        cli_error_set(error, "%s: needs at least two input polygons, got %zu "
+                      "(see 'compatmesh %s --help')", command, args->input_count, command);
+        return CLI_EXIT_USAGE;
+    }
+    if (args->pin_count && args->correspondence_given &&
+        args->options.correspondence == CM_CORRESPOND_INDEX) {
+        cli_error_set(error, "%s: --pin needs --correspondence arclength (with index, vertex i is vertex i)",
+                      command);
+        return CLI_EXIT_USAGE;
+    }
+    if (args->pin_values != args->pin_count * args->input_count) {
+        for (size_t j = 0; j < args->pin_count; j++) {
+            size_t values = 1;
+            for (const char *c = args->pin_texts[j]; *c; c++) values += *c == ',';
+            if (values != args->input_count) {
+                cli_error_set(error, "%s: --pin %s names %zu vertices for %zu inputs", command,
+                              args->pin_texts[j], values, args->input_count);
+                return CLI_EXIT_USAGE;
+            }
+        }
+    }
+    return CLI_EXIT_OK;
 }
 
 const char *file_name(const char *path)
@@ -164,9 +234,10 @@ static int read_inputs(triangulation *t, cli_error *error)
     for (size_t i = 0; i < args->input_count; i++) {
         int code = read_polygon(args->inputs[i], (size_t)args->max_input_bytes, &t->polygons[i], error);
         if (code != CLI_EXIT_OK) return code;
-        if (t->polygons[i].count != t->polygons[0].count) {
-            cli_error_set(error, "%s has %zu vertices but %s has %zu; the polygons' "
-                          "vertices correspond by index, so the counts must be equal",
+        if (args->correspondence_given && t->options.correspondence == CM_CORRESPOND_INDEX &&
+            t->polygons[i].count != t->polygons[0].count) {
+            cli_error_set(error, "%s has %zu vertices but %s has %zu; with --correspondence "
+                          "index the vertices correspond by index, so the counts must be equal",
                           args->inputs[i], t->polygons[i].count, args->inputs[0],
                           t->polygons[0].count);
             return CLI_EXIT_USAGE;
@@ -235,20 +306,21 @@ static void describe_failure(const triangulation *t, cm_status status, cli_error
 
 static int compute(triangulation *t, cli_error *error)
 {
-    size_t k = t->args->input_count, n = t->polygons[0].count;
-    double *xy = malloc(2 * k * n * sizeof *xy + 1);
-    if (!xy) {
+    size_t k = t->args->input_count;
+    const double **xy = malloc(k * sizeof *xy);
+    size_t *counts = malloc(k * sizeof *counts);
+    if (!xy || !counts) {
+        free(xy), free(counts);
         cli_error_set(error, "out of memory");
         return CLI_EXIT_INTERNAL;
     }
-    for (size_t g = 0; g < k; g++)
-        memcpy(xy + 2 * g * n, t->polygons[g].xy, 2 * n * sizeof *xy);
-    cm_options options = t->args->options;
-    options.progress = cancel_if_interrupted;
+    for (size_t g = 0; g < k; g++) xy[g] = t->polygons[g].xy, counts[g] = t->polygons[g].count;
+    t->options.progress = cancel_if_interrupted;
+    t->options.pins = t->args->pins, t->options.num_pins = t->args->pin_count;
     double start = seconds_now();
-    cm_status status = cm_triangulate(xy, k, n, &options, &t->result);
+    cm_status status = cm_triangulate_polygons(xy, counts, k, &t->options, &t->result);
     t->seconds_total = seconds_now() - start;
-    free(xy);
+    free(xy), free(counts);
     if (status == CM_OK) return CLI_EXIT_OK;
     if (status == CM_ERR_CANCELLED) cli_error_set(error, "interrupted; nothing written");
     else describe_failure(t, status, error);
@@ -264,7 +336,13 @@ int triangulation_run(triangulation *t, const triangulation_args *args, cli_erro
         cli_error_set(error, "out of memory");
         return CLI_EXIT_INTERNAL;
     }
+    t->options = args->options;
     int code = read_inputs(t, error);
+    if (code == CLI_EXIT_OK && !args->correspondence_given) { /* pins or counts decide */
+        int differ = 0;
+        for (size_t g = 1; g < args->input_count; g++) differ |= t->polygons[g].count != t->polygons[0].count;
+        if (differ || args->pin_count) t->options.correspondence = CM_CORRESPOND_ARCLENGTH;
+    }
     if (code == CLI_EXIT_OK) code = compute(t, error);
     return code;
 }

@@ -21,11 +21,13 @@ enum {
     OPTION_SMOOTHING,
     OPTION_MAX_ITERATIONS,
     OPTION_MAX_INPUT_BYTES,
+    OPTION_CORRESPONDENCE,
+    OPTION_PIN,
     OPTION_TRIANGULATION_END /* a command's own long options start here */
 };
 
 /* The option_spec entries of the triangulation options, for a command's
- * table (keys 'm' and OPTION_NO_REMESH .. OPTION_MAX_INPUT_BYTES). */
+ * table (keys 'm' and OPTION_NO_REMESH .. OPTION_PIN). */
 #define TRIANGULATION_OPTION_SPECS                                            \
     {"method", 'm', "NAME",                                                   \
      "how the first compatible triangulation is built:\n"                     \
@@ -55,7 +57,18 @@ enum {
      "cap on refinement rounds; default 0: none"},                            \
     {"max-input-bytes", OPTION_MAX_INPUT_BYTES, "N",                          \
      "refuse an input file larger than N bytes (default\n"                    \
-     "268435456, 256 MiB)"}
+     "268435456, 256 MiB)"},                                                  \
+    {"correspondence", OPTION_CORRESPONDENCE, "NAME",                         \
+     "index: vertex i of every input is vertex i (equal\n"                    \
+     "counts; the default when the counts are equal);\n"                      \
+     "arclength: normalised arc length between pins, each\n"                  \
+     "input keeping its vertices and getting the others'\n"                   \
+     "on its edges (the default when the counts differ)"},                    \
+    {"pin", OPTION_PIN, "I,J[,K...]",                                         \
+     "arclength: vertex I of the first input corresponds\n"                   \
+     "to vertex J of the second, ... (0-based, in file\n"                     \
+     "order; repeat for more pins; default: the first\n"                      \
+     "vertices)"}
 
 typedef struct triangulation_args {
     const char **inputs; /* argc entries allocated, input_count used */
@@ -63,6 +76,10 @@ typedef struct triangulation_args {
     const char *method_name;
     cm_options options; /* method and remeshing; the progress hook is set later */
     long max_input_bytes;
+    int correspondence_given;   /* --correspondence was on the command line */
+    size_t *pins;               /* pin_values numbers, k per pin once checked */
+    size_t pin_values, pin_count;
+    const char **pin_texts;     /* as given, for messages */
 } triangulation_args;
 
 /* The default of --max-input-bytes: far above any real section (a
@@ -86,6 +103,7 @@ int triangulation_args_check(const triangulation_args *args, const char *command
 /* The polygons as read and the core's result for them. */
 typedef struct triangulation {
     const triangulation_args *args;
+    cm_options options;      /* args' options, the correspondence decided */
     polygon_input *polygons; /* args->input_count */
     cm_result *result;
     double seconds_total;    /* the core's whole computation */

@@ -79,7 +79,18 @@ static void write_mesh_entry(FILE *file, const report_info *info, size_t g)
     fputs(",\n     \"before_remesh\": {", file);
     write_quality(file, "", ",\n      ", cm_result_quality_before(info->result, g, &quality),
                   quality);
-    fputs("}}", file);
+    fputs("}", file);
+    if (info->correspondence == CM_CORRESPOND_ARCLENGTH) {
+        /* Per boundary vertex: [e, t], the point at t of input edge e -> e + 1. */
+        fputs(",\n     \"boundary_source\": [", file);
+        for (size_t i = 0; i < cm_result_stats(info->result)->n; i++) {
+            double t;
+            long e = cm_result_boundary_source(info->result, g, i, &t);
+            fprintf(file, "%s[%ld, %.17g]", i ? ", " : "", e, t);
+        }
+        fputs("]", file);
+    }
+    fputs("}", file);
 }
 
 /* The opening brace and the counts every report starts with. */
@@ -103,6 +114,8 @@ int write_report(const char *path, const report_info *info, cli_error *error)
     fputs("  \"method\": ", file);
     json_string(file, info->method);
     fprintf(file, ",\n  \"remesh\": %s,\n", info->remesh ? "true" : "false");
+    fprintf(file, "  \"correspondence\": \"%s\",\n",
+            info->correspondence == CM_CORRESPOND_ARCLENGTH ? "arclength" : "index");
     fprintf(file, "  \"reversed_input\": %s,\n", stats->reversed_input ? "true" : "false");
     fprintf(file, "  \"fallback_count\": %zu,\n", stats->fallback_count);
     fprintf(file, "  \"steiner_before_remesh\": %zu,\n", stats->steiner_before_remesh);

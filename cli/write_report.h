@@ -12,6 +12,7 @@ typedef struct report_info {
     const cm_result *result;   /* a successful result */
     const char *method;        /* e.g. "overlay" */
     int remesh;                /* 1 if the result was remeshed */
+    cm_correspondence correspondence;
     double seconds_total;      /* wall time of the whole computation */
     const char *const *inputs; /* k input paths, as given */
     const char *const *outputs;/* k mesh paths, as they are after commit */

@@ -120,10 +120,10 @@ def test_mismatched_counts(cm, tmp_path):
     _, b = twisted_pair(12)
     write_xy(tmp_path / "a.xy", a)
     write_xy(tmp_path / "b.xy", b)
-    result = cm("morph", "a.xy", "b.xy", "-o", "out")
+    result = cm("morph", "a.xy", "b.xy", "-o", "out", "--correspondence", "index")
     assert result.returncode == 2
-    assert result.stderr == ("compatmesh: b.xy has 12 vertices but a.xy has 16; the polygons' "
-                             "vertices correspond by index, so the counts must be equal\n")
+    assert result.stderr == ("compatmesh: b.xy has 12 vertices but a.xy has 16; with --correspondence "
+                             "index the vertices correspond by index, so the counts must be equal\n")
     assert not os.path.exists(tmp_path / "out")
     assert leftovers(tmp_path) == []
 

@@ -232,10 +232,10 @@ def test_mismatched_counts(cm, tmp_path):
     _, b = twisted_pair(12)
     write_xy(tmp_path / "a.xy", a)
     write_xy(tmp_path / "b.xy", b)
-    result = cm("sweep", "a.xy", "b.xy", "-o", "out.msh")
+    result = cm("sweep", "a.xy", "b.xy", "-o", "out.msh", "--correspondence", "index")
     assert result.returncode == 2
-    assert result.stderr == ("compatmesh: b.xy has 12 vertices but a.xy has 16; the polygons' "
-                             "vertices correspond by index, so the counts must be equal\n")
+    assert result.stderr == ("compatmesh: b.xy has 12 vertices but a.xy has 16; with --correspondence "
+                             "index the vertices correspond by index, so the counts must be equal\n")
     assert sorted(os.listdir(tmp_path)) == ["a.xy", "b.xy"]
 
 

@@ -41,7 +41,7 @@ CASES = {
     "overflow": ({"a.xy": SQUARE_TEXT, "b.xy": "0 0\n1e999 0\n1 1\n0 1\n"}, ["a.xy", "b.xy"],
                  r"b\.xy:2: '1e999' is too large"),
     "mismatched_counts": ({"a.xy": SQUARE_TEXT, "b.xy": "0 0\n2 0\n3 1\n1 2\n0 1\n"},
-                          ["a.xy", "b.xy"], r"b\.xy has 5 vertices but a\.xy has 4"),
+                          ["a.xy", "b.xy", "--correspondence", "index"], r"b\.xy has 5 vertices but a\.xy has 4"),
     "too_few_vertices": ({"a.xy": "0 0\n1 0\n", "b.xy": "0 0\n2 0\n"}, ["a.xy", "b.xy"],
                          r"a\.xy: .*3"),
     "repeated_vertex": ({"a.xy": "0 0\n4 0\n4 4\n2 5\n0 4\n",

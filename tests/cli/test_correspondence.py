@@ -1,0 +1,74 @@
+"""--correspondence and --pin: inputs of different vertex counts pair by
+arc length, each keeping its own vertices bit-identical on the boundary;
+pins are honoured; bad pins are one-line errors naming the file."""
+import json
+
+import meshio
+import pytest
+
+from polygons import star, write_xy
+
+
+def pair(tmp_path, na, nb, clockwise_b=False):
+    write_xy(tmp_path / "a.xy", star(na, 1))
+    write_xy(tmp_path / "b.xy", star(nb, 2, clockwise=clockwise_b))
+    return [star(na, 1), star(nb, 2, clockwise=clockwise_b)]
+
+
+@pytest.mark.parametrize("clockwise_b", [False, True])
+def test_different_counts_pair_by_arc_length(cm, tmp_path, clockwise_b):
+    inputs = pair(tmp_path, 17, 29, clockwise_b)
+    r = cm("triangulate", "a.xy", "b.xy", "-o", "out")
+    assert r.returncode == 0, r.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert report["correspondence"] == "arclength"
+    n = report["n"]
+    assert 29 <= n <= 17 + 29 - 1
+    for name, points, mesh in zip(("a", "b"), inputs, report["meshes"]):
+        vertices = meshio.read(tmp_path / "out" / f"{name}.off").points[:n, :2].tolist()
+        sources = mesh["boundary_source"]
+        own = [(i, e) for i, (e, t) in enumerate(sources) if t == 0]
+        assert sorted(e for _, e in own) == list(range(len(points)))  # every vertex, once
+        for i, e in own:  # bit-identical
+            assert vertices[i] == list(points[e])
+        for i, (e, t) in enumerate(sources):  # the others on their edges
+            (x0, y0), (x1, y1) = points[e], points[(e + 1) % len(points)]
+            assert 0 <= t < 1
+            assert abs(vertices[i][0] - (x0 + t * (x1 - x0))) < 1e-12
+            assert abs(vertices[i][1] - (y0 + t * (y1 - y0))) < 1e-12
+
+
+def test_pins_are_honoured(cm, tmp_path):
+    pair(tmp_path, 20, 31)
+    r = cm("triangulate", "a.xy", "b.xy", "-o", "out", "--pin", "0,3", "--pin", "10,20")
+    assert r.returncode == 0, r.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    a, b = (m["boundary_source"] for m in report["meshes"])
+    assert [i for i in range(report["n"]) if a[i] == [0, 0] and b[i] == [3, 0]] == [0]
+    assert len([i for i in range(report["n"]) if a[i] == [10, 0] and b[i] == [20, 0]]) == 1
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--pin", "0,3,4"], "triangulate: --pin 0,3,4 names 3 vertices for 2 inputs"),
+    (["--pin", "0,x"], "triangulate: --pin needs vertex numbers separated by commas, got '0,x'"),
+    (["--pin", "0,31"], "b.xy: pin 0: vertex 31 of polygon 1 is out of range (31 vertices)"),
+    (["--pin", "0,0", "--pin", "5,9", "--pin", "8,3"], "b.xy:4: pins 1 and 2 cross: along polygon 1 they come in the other order"),
+    (["--correspondence", "index"], "with --correspondence index the vertices correspond by index"),
+    (["--correspondence", "index", "--pin", "0,0"], "--pin needs --correspondence arclength"),
+    (["--correspondence", "nearest"], "unknown --correspondence 'nearest' (known: index, arclength)"),
+])
+def test_bad_pins_and_modes(cm, tmp_path, args, message):
+    pair(tmp_path, 20, 31)
+    r = cm("triangulate", "a.xy", "b.xy", "-o", "out", *args)
+    assert r.returncode == 2
+    assert len(r.stderr.strip().splitlines()) == 1 and message in r.stderr, r.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_equal_counts_keep_the_index_correspondence(cm, tmp_path):
+    pair(tmp_path, 20, 20)
+    r = cm("triangulate", "a.xy", "b.xy", "-o", "out")
+    assert r.returncode == 0, r.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert report["correspondence"] == "index" and report["n"] == 20
+    assert "boundary_source" not in report["meshes"][0]
