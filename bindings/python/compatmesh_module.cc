@@ -102,6 +102,9 @@ Polygon read_polygon(py::handle object, std::size_t index, double tolerance)
 
 struct Callbacks {
   py::object progress;  // None or a callable
+  bool correspondence_given = false;
+  std::vector<std::vector<long>> pins;  // as given; checked against k later
+  std::vector<std::size_t> pin_data;    // pins flattened, k per pin
 };
 
 using Setter = void (*)(cm_options &, py::handle, Callbacks &);
@@ -129,6 +132,8 @@ Enum enum_from(py::handle value, const char *option,
 
 const std::vector<std::pair<const char *, cm_method>> method_names = {
     {"overlay", CM_METHOD_OVERLAY}, {"partition", CM_METHOD_PARTITION}};
+const std::vector<std::pair<const char *, cm_correspondence>> correspondence_names = {
+    {"index", CM_CORRESPOND_INDEX}, {"arclength", CM_CORRESPOND_ARCLENGTH}};
 const std::vector<std::pair<const char *, cm_smoothing>> smoothing_names = {
     {"laplacian", CM_SMOOTH_LAPLACIAN},
     {"angle", CM_SMOOTH_ANGLE},
@@ -204,6 +209,28 @@ const std::vector<OptionSetter> &option_setters()
       {"smoothing",
        [](cm_options &o, py::handle v, Callbacks &) { o.smoothing = enum_from(v, "smoothing", smoothing_names); }},
       CM_NUMBER_OPTION(max_iterations),
+      {"correspondence",
+       [](cm_options &o, py::handle v, Callbacks &c) {
+         o.correspondence = enum_from(v, "correspondence", correspondence_names);
+         c.correspondence_given = true;
+       }},
+      {"pins",
+       [](cm_options &, py::handle v, Callbacks &c) {
+         if (v.is_none()) return;
+         if (!py::isinstance<py::sequence>(v) || py::isinstance<py::str>(v))
+           throw py::type_error("pins must be a sequence of vertex tuples, one vertex per polygon");
+         for (py::handle pin : v.cast<py::sequence>()) {
+           if (!py::isinstance<py::sequence>(pin) || py::isinstance<py::str>(pin))
+             throw py::type_error("pins: each pin is a tuple of vertex numbers, one per polygon");
+           std::vector<long> vertices;
+           for (py::handle x : pin.cast<py::sequence>()) {
+             long vertex = number_from<long>(x, "pins");
+             if (vertex < 0) throw py::value_error("pins: vertex numbers must not be negative, got " + std::to_string(vertex));
+             vertices.push_back(vertex);
+           }
+           c.pins.push_back(std::move(vertices));
+         }
+       }},
   };
   return setters;
 }
@@ -267,14 +294,22 @@ py::array_t<T> copy_array(const T *data, std::size_t rows, std::size_t columns)
 
 // The vertices of geometry g in the input's dimension: input vertices
 // as given, Steiner vertices mapped from the plane.
+// Geometry g; for n x 3 input the boundary vertices come from the input's
+// points (its own vertices bit-identical, points added on its edges
+// interpolated along the 3D edge) and the rest are lifted into its plane.
 py::array_t<double> vertices_of(const cm_result *result, std::size_t g, const Polygon &polygon)
 {
-  std::size_t nv = cm_result_num_vertices(result), n = polygon.size();
+  std::size_t nv = cm_result_num_vertices(result), n = cm_result_stats(result)->n, size = polygon.size();
   const double *xy = cm_result_vertices(result, g);
   if (!polygon.spatial) return copy_array(xy, nv, 2);
   py::array_t<double> a({py::ssize_t(nv), py::ssize_t(3)});
   double *out = a.mutable_data();
-  std::memcpy(out, polygon.xyz.data(), 3 * n * sizeof(double));
+  for (std::size_t v = 0; v < n; v++) {
+    double t = 0;
+    std::size_t e = std::size_t(cm_result_boundary_source(result, g, v, &t));
+    const double *p = polygon.xyz.data() + 3 * e, *q = polygon.xyz.data() + 3 * ((e + 1) % size);
+    for (int c = 0; c < 3; c++) out[3 * v + c] = t == 0 ? p[c] : p[c] + t * (q[c] - p[c]);
+  }
   for (std::size_t v = n; v < nv; v++) {
     std::array<double, 3> p = polygon.frame.to_space(xy[2 * v], xy[2 * v + 1]);
     std::memcpy(out + 3 * v, p.data(), sizeof p);
@@ -327,6 +362,7 @@ py::dict stats_of(const cm_result *result)
 struct Result {
   py::array_t<int32_t> faces;
   py::list vertices;
+  py::list boundary_source;
   py::dict halfedges;
   py::dict stats;
 };
@@ -344,6 +380,16 @@ Result make_result(const cm_result *r, const std::vector<Polygon> &polygons)
   result.halfedges["vertex_halfedge"] = copy_array(cm_result_vertex_halfedge(r), nv, 1);
   result.halfedges["face_halfedge"] = copy_array(cm_result_face_halfedge(r), nt, 1);
   result.stats = stats_of(r);
+  std::size_t n = cm_result_stats(r)->n;
+  for (std::size_t g = 0; g < polygons.size(); g++) {
+    py::array_t<std::int64_t> edge{py::ssize_t(n)};
+    py::array_t<double> t{py::ssize_t(n)};
+    for (std::size_t i = 0; i < n; i++) edge.mutable_at(i) = cm_result_boundary_source(r, g, i, t.mutable_data() + i);
+    py::dict source;
+    source["edge"] = edge;
+    source["t"] = t;
+    result.boundary_source.append(source);
+  }
   return result;
 }
 
@@ -378,6 +424,20 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
     data.push_back(p.xy.data());
     counts.push_back(p.size());
   }
+  // Without a word from the caller, pins or different counts mean arc
+  // length (index needs equal counts).
+  bool differ = false;
+  for (std::size_t c : counts) differ |= c != counts.front();
+  if (!callbacks->correspondence_given && (differ || !callbacks->pins.empty()))
+    options.correspondence = CM_CORRESPOND_ARCLENGTH;
+  for (std::size_t j = 0; j < callbacks->pins.size(); j++) {
+    if (callbacks->pins[j].size() != polygons->size())
+      throw py::value_error("pins: pin " + std::to_string(j) + " has " + std::to_string(callbacks->pins[j].size()) +
+                            " vertices for " + std::to_string(polygons->size()) + " polygons");
+    for (long v : callbacks->pins[j]) callbacks->pin_data.push_back(std::size_t(v));
+  }
+  options.pins = callbacks->pin_data.data();
+  options.num_pins = callbacks->pins.size();
 
   ProgressRelay relay(python_progress(callbacks->progress));
   relay.attach(options);
@@ -572,6 +632,9 @@ PYBIND11_MODULE(compatmesh, m)
   py::enum_<cm_method>(m, "Method", "How the first compatible triangulation is built.")
       .value("OVERLAY", CM_METHOD_OVERLAY)
       .value("PARTITION", CM_METHOD_PARTITION);
+  py::enum_<cm_correspondence>(m, "Correspondence", "Which vertices of the polygons correspond.")
+      .value("INDEX", CM_CORRESPOND_INDEX)
+      .value("ARCLENGTH", CM_CORRESPOND_ARCLENGTH);
   py::enum_<cm_smoothing>(m, "Smoothing", "Vertex smoothing in the remesher.")
       .value("LAPLACIAN", CM_SMOOTH_LAPLACIAN)
       .value("ANGLE", CM_SMOOTH_ANGLE)
@@ -590,6 +653,9 @@ PYBIND11_MODULE(compatmesh, m)
       .def_readonly("vertices", &Result::vertices,
                     "list of k float arrays (n input vertices first, then Steiner vertices), "
                     "each n x 2 or n x 3 like its input")
+      .def_readonly("boundary_source", &Result::boundary_source,
+                    "per geometry a dict of n arrays: boundary vertex i is the point at t[i] of input edge "
+                    "edge[i] -> edge[i] + 1 (t == 0: input vertex edge[i] itself)")
       .def_readonly("halfedges", &Result::halfedges,
                     "dict of int32 arrays: next, to_vertex, face (-1 on the boundary), "
                     "vertex_halfedge, face_halfedge; h ^ 1 is the opposite of h")
@@ -623,6 +689,13 @@ options: keyword arguments named like the fields of the C struct cm_options,
     smoothing       compatmesh.Smoothing, its int value, or "laplacian" /
                     "angle" / "weighted" / "combined"
     progress        callable(fraction, stage); return True to cancel
+    correspondence  "index" (vertex i is vertex i; equal counts; the default
+                    when the counts are equal) or "arclength" (normalised
+                    arc length between pins; each polygon keeps its vertices
+                    and gets the others' on its edges; the default when the
+                    counts differ), or a compatmesh.Correspondence
+    pins            arclength: a sequence of tuples, one vertex per polygon,
+                    that correspond (default: the first vertices)
   and planarity_tolerance: how far a 3D point may lie from the plane, as a
     fraction of the polygon's bounding-box diagonal (default 1e-5).
 Raises InputError (a ValueError) with the core's message for bad input,

@@ -37,8 +37,8 @@ def test_case(case, columns):
                 (ax, ay), (bx, by), (cx, cy) = (map(Fraction, v[i]) for i in face)
                 assert (bx - ax) * (cy - ay) - (by - ay) * (cx - ax) > 0
         return
-    with pytest.raises(ValueError) as info:
-        compatmesh.triangulate(polygons)
+    with pytest.raises(ValueError) as info:  # the matrix states the index contract
+        compatmesh.triangulate(polygons, correspondence="index")
     error = info.value
     assert case.fragment in str(error) and "\n" not in str(error)
     assert isinstance(error, compatmesh.InputError)

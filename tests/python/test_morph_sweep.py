@@ -110,7 +110,7 @@ def test_sweep_heights(twisted):
      "heights has 3 values for 2 polygons"),
     (lambda p: compatmesh.sweep(p, sections=1), ValueError, "sweep: sections must be >= 2"),
     (lambda p: compatmesh.sweep(p, height=-1.0), ValueError, "height must be positive"),
-    (lambda p: compatmesh.sweep([p[0], p[1][:-1]]), compatmesh.InputError,
+    (lambda p: compatmesh.sweep([p[0], p[1][:-1]], correspondence="index"), compatmesh.InputError,
      "polygon 1 has 11 vertices but polygon 0 has 12"),
     (lambda p: compatmesh.sweep([np.c_[p[0], np.zeros(12)], np.c_[p[1], np.ones(12)]]),
      ValueError, "polygon 0: expected an n x 2 array"),

@@ -1,0 +1,50 @@
+"""correspondence= and pins=: polygons of different counts pair by arc
+length, each keeping its own vertices; pins are honoured; bad pins raise."""
+import numpy as np
+import pytest
+
+import compatmesh
+from conftest import ring
+
+
+def test_different_counts_pair_by_arc_length():
+    a, b = ring(12), ring(19, inner=0.4)
+    r = compatmesh.triangulate([a, b])
+    n = r.stats["n"]
+    assert 19 <= n <= 12 + 19 - 1
+    for points, vertices, source in zip((a, b), r.vertices, r.boundary_source):
+        own = source["t"] == 0
+        assert sorted(source["edge"][own]) == list(range(len(points)))
+        assert np.array_equal(vertices[:n][own], points[source["edge"][own]])  # bit-identical
+
+
+def test_spatial_input_keeps_its_points():
+    a = np.c_[ring(12), np.full(12, 2.5)]
+    b = np.c_[ring(17, inner=0.4), np.full(17, 7.0)]
+    r = compatmesh.triangulate([a, b], correspondence="arclength", pins=[(3, 5)])
+    n = r.stats["n"]
+    for points, vertices, source in zip((a, b), r.vertices, r.boundary_source):
+        own = source["t"] == 0
+        assert np.array_equal(vertices[:n][own], points[source["edge"][own]])
+        assert np.all(vertices[:, 2] == points[0, 2])
+    pinned = [i for i in range(n) if r.boundary_source[0]["edge"][i] == 3 and r.boundary_source[0]["t"][i] == 0]
+    assert len(pinned) == 1 and r.boundary_source[1]["edge"][pinned[0]] == 5
+
+
+def test_equal_counts_keep_index():
+    r = compatmesh.triangulate([ring(10), ring(10, inner=0.4)])
+    assert r.stats["n"] == 10
+    assert list(r.boundary_source[1]["edge"]) == list(range(10))
+
+
+@pytest.mark.parametrize("kwargs, error, message", [
+    (dict(pins=[(0, 1, 2)]), ValueError, "pin 0 has 3 vertices for 2 polygons"),
+    (dict(pins=[(0, 40)]), compatmesh.InputError, "out of range"),
+    (dict(pins=[(0, -1)]), ValueError, "must not be negative"),
+    (dict(pins="0,1"), TypeError, "pins must be a sequence"),
+    (dict(correspondence="index"), compatmesh.InputError, "vertex count mismatch|has 19 vertices"),
+    (dict(correspondence="nearest"), ValueError, "unknown correspondence 'nearest'"),
+])
+def test_bad_pins_and_modes(kwargs, error, message):
+    with pytest.raises(error, match=message):
+        compatmesh.triangulate([ring(12), ring(19, inner=0.4)], **kwargs)
