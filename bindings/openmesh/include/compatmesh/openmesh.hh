@@ -39,9 +39,10 @@
 // first with their original 3D coordinates; Steiner vertices are mapped
 // from the plane back to 3D. Two int vertex properties, persistent (kept by
 // the OM format), say where each vertex came from:
-//   kInputIndexProperty   the polygon vertex index, -1 for a Steiner vertex
+//   kInputIndexProperty   the boundary vertex index, -1 for a Steiner vertex
 //   kSourceVertexProperty the input mesh's vertex index, -1 for a Steiner
-//                         vertex
+//                         vertex or (CM_CORRESPOND_ARCLENGTH) a point added
+//                         on an input edge
 //
 // Files: OpenMesh 9 reads and writes OFF, OBJ, PLY and STL coordinates as
 // float, also for double meshes, and writes ASCII with 6 digits unless

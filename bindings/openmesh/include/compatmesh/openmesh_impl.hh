@@ -186,10 +186,17 @@ Mesh result_to_mesh(const cm_result *result, std::size_t g, const Boundary *boun
     throw Error(CM_ERR_ARGUMENT, "result_to_mesh: no geometry " + std::to_string(g));
   const std::size_t n = cm_result_stats(result)->n, nv = cm_result_num_vertices(result),
                     nh = cm_result_num_halfedges(result), nt = cm_result_num_triangles(result);
-  if (boundary && boundary->size() != n)
-    throw Error(CM_ERR_ARGUMENT, "result_to_mesh: the boundary has " +
-                                     std::to_string(boundary->size()) + " vertices, the result " +
-                                     std::to_string(n));
+  // Boundary vertex v is the point at t of input edge e -> e + 1 (t == 0:
+  // input vertex e; the index correspondence: e == v).
+  std::vector<long> edge(n);
+  std::vector<double> along(n);
+  for (std::size_t v = 0; v < n; v++) {
+    edge[v] = cm_result_boundary_source(result, g, v, &along[v]);
+    if (boundary && (edge[v] < 0 || std::size_t(edge[v]) >= boundary->size()))
+      throw Error(CM_ERR_ARGUMENT, "result_to_mesh: the boundary has " + std::to_string(boundary->size()) +
+                                       " vertices, the result's geometry " + std::to_string(g) + " needs vertex " +
+                                       std::to_string(edge[v]));
+  }
   const double *xy = cm_result_vertices(result, g);
   const int32_t *next = cm_result_halfedge_next(result), *to = cm_result_halfedge_to_vertex(result),
                 *face = cm_result_halfedge_face(result), *vertex_he = cm_result_vertex_halfedge(result),
@@ -200,9 +207,10 @@ Mesh result_to_mesh(const cm_result *result, std::size_t g, const Boundary *boun
   mesh.reserve(nv, nh / 2, nt);
   for (std::size_t v = 0; v < nv; v++) {
     std::array<double, 3> p;
-    if (boundary && v < n)
-      p = {{boundary->xyz[3 * v], boundary->xyz[3 * v + 1], boundary->xyz[3 * v + 2]}};
-    else if (boundary)
+    if (boundary && v < n) {
+      const double *a = &boundary->xyz[3 * edge[v]], *b = &boundary->xyz[3 * ((edge[v] + 1) % boundary->size())];
+      for (int c = 0; c < 3; c++) p[c] = along[v] == 0 ? a[c] : a[c] + along[v] * (b[c] - a[c]);
+    } else if (boundary)
       p = boundary->frame.to_space(xy[2 * v], xy[2 * v + 1]);
     else
       p = {{xy[2 * v], xy[2 * v + 1], 0.0}};
@@ -234,7 +242,8 @@ Mesh result_to_mesh(const cm_result *result, std::size_t g, const Boundary *boun
   for (std::size_t v = 0; v < nv; v++) {
     VertexHandle vh{int(v)};
     mesh.property(input_index, vh) = v < n ? int(v) : -1;
-    mesh.property(source_vertex, vh) = v >= n ? -1 : boundary ? boundary->source_vertex[v] : int(v);
+    int own = v < n && along[v] == 0 ? int(edge[v]) : -1; /* an input vertex, not a point on an edge */
+    mesh.property(source_vertex, vh) = own < 0 ? -1 : boundary ? boundary->source_vertex[own] : own;
   }
 
   check_same_connectivity(result, mesh);
