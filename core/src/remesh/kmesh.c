@@ -21,29 +21,33 @@ static int reserve_list(cm_ibuf *b, int32_t cap)
     return 0;
 }
 
+/* *array = realloc(*array, count * size); 0, or -1 (*array unchanged). */
+static int resize(void *array, size_t count, size_t size)
+{
+    void **p = array, *q = realloc(*p, count * size);
+    if (!q) return -1;
+    *p = q;
+    return 0;
+}
+
+/* Slots for at least need, growing by half (amortised appends). */
+static int32_t grown(int32_t cap, int32_t need)
+{
+    if (!cap) cap = 16;
+    while (cap < need) cap = cap + cap / 2 + 16;
+    return cap;
+}
+
 static int reserve_vertices(cm_kmesh *km, int32_t need)
 {
     if (need <= km->cap_v) return 0;
-    int32_t cap = km->cap_v ? km->cap_v : 16;
-    while (cap < need) cap = cap + cap / 2 + 16;
-    for (size_t g = 0; g < km->k; g++) {
-        double *xy = realloc(km->xy[g], 2 * (size_t)cap * sizeof *xy);
-        if (!xy) return -1;
-        km->xy[g] = xy;
-    }
-    int32_t *vc = realloc(km->vc, (size_t)cap * sizeof *vc);
-    if (!vc) return -1;
-    km->vc = vc;
-    uint32_t *mark = realloc(km->mark, (size_t)cap * sizeof *mark);
-    if (!mark) return -1;
-    km->mark = mark;
-    double *vcap = realloc(km->vcap, (size_t)cap * sizeof *vcap);
-    if (!vcap) return -1;
-    km->vcap = vcap;
-    unsigned char *vdirty = realloc(km->vdirty, (size_t)cap);
-    if (!vdirty) return -1;
-    km->vdirty = vdirty;
-    if (reserve_list(&km->free_v, cap)) return -1;
+    int32_t cap = grown(km->cap_v, need);
+    size_t c = (size_t)cap;
+    for (size_t g = 0; g < km->k; g++)
+        if (resize(&km->xy[g], 2 * c, sizeof **km->xy)) return -1;
+    if (resize(&km->vc, c, sizeof *km->vc) || resize(&km->mark, c, sizeof *km->mark) ||
+        resize(&km->vcap, c, sizeof *km->vcap) || resize(&km->vdirty, c, 1) || reserve_list(&km->free_v, cap))
+        return -1;
     for (int32_t v = km->cap_v; v < cap; v++) km->vc[v] = -1, km->mark[v] = 0, km->vcap[v] = CM_PI, km->vdirty[v] = 1;
     km->cap_v = cap;
     return 0;
@@ -52,24 +56,13 @@ static int reserve_vertices(cm_kmesh *km, int32_t need)
 static int reserve_triangles(cm_kmesh *km, int32_t need)
 {
     if (need <= km->cap_t) return 0;
-    int32_t cap = km->cap_t ? km->cap_t : 16;
-    while (cap < need) cap = cap + cap / 2 + 16;
-    int32_t *tri = realloc(km->tri, 3 * (size_t)cap * sizeof *tri);
-    if (!tri) return -1;
-    km->tri = tri;
-    int32_t *opp = realloc(km->opp, 3 * (size_t)cap * sizeof *opp);
-    if (!opp) return -1;
-    km->opp = opp;
-    double *tkey = realloc(km->tkey, (size_t)cap * sizeof *tkey);
-    if (!tkey) return -1;
-    km->tkey = tkey;
-    double *slack = realloc(km->slack, (size_t)cap * sizeof *slack);
-    if (!slack) return -1;
-    km->slack = slack;
-    if (cm_heap_reserve(&km->tq, cap) || cm_heap_reserve(&km->eq, 3 * cap) ||
-        reserve_list(&km->free_t, cap))
+    int32_t cap = grown(km->cap_t, need);
+    size_t c = (size_t)cap;
+    if (resize(&km->tri, 3 * c, sizeof *km->tri) || resize(&km->opp, 3 * c, sizeof *km->opp) ||
+        resize(&km->tkey, c, sizeof *km->tkey) || resize(&km->slack, c, sizeof *km->slack) ||
+        cm_heap_reserve(&km->tq, cap) || cm_heap_reserve(&km->eq, 3 * cap) || reserve_list(&km->free_t, cap))
         return -1;
-    for (int32_t c = 3 * km->cap_t; c < 3 * cap; c++) km->tri[c] = -1, km->opp[c] = -1;
+    for (int32_t i = 3 * km->cap_t; i < 3 * cap; i++) km->tri[i] = -1, km->opp[i] = -1;
     for (int32_t t = km->cap_t; t < cap; t++) km->tkey[t] = CM_PI, km->slack[t] = 0;
     km->cap_t = cap;
     return 0;

@@ -54,13 +54,25 @@ static int logging(const cm_kmesh *km)
     return km->log && km->log->active && !km->log->failed;
 }
 
+/* 1 when slot id is changed for the first time in this transaction (it
+ * is marked as saved now), 0 when saved already or not logging. */
+static int first_change(cm_kmesh *km, uint32_t **seen, size_t *cap, int32_t id)
+{
+    struct cm_kmesh_log *log = km->log;
+    if (!logging(km)) return 0;
+    if (grow_seen(seen, cap, (size_t)id + 1)) {
+        log->failed = 1;
+        return 0;
+    }
+    if ((*seen)[id] == log->id) return 0;
+    (*seen)[id] = log->id;
+    return 1;
+}
+
 void cm_log_triangle(cm_kmesh *km, int32_t t)
 {
     struct cm_kmesh_log *log = km->log;
-    if (!logging(km)) return;
-    if (grow_seen(&log->tseen, &log->tcap, (size_t)t + 1)) goto fail;
-    if (log->tseen[t] == log->id) return;
-    log->tseen[t] = log->id;
+    if (!first_change(km, &log->tseen, &log->tcap, t)) return;
     int32_t rec[7] = {t};
     for (int i = 0; i < 3; i++) rec[1 + i] = km->tri[3 * t + i], rec[4 + i] = km->opp[3 * t + i];
     for (int i = 0; i < 7; i++)
@@ -74,10 +86,7 @@ fail:
 void cm_log_vertex(cm_kmesh *km, int32_t v)
 {
     struct cm_kmesh_log *log = km->log;
-    if (!logging(km)) return;
-    if (grow_seen(&log->vseen, &log->vcap, (size_t)v + 1)) goto fail;
-    if (log->vseen[v] == log->id) return;
-    log->vseen[v] = log->id;
+    if (!first_change(km, &log->vseen, &log->vcap, v)) return;
     if (cm_ibuf_push(&log->vsave, v) || cm_ibuf_push(&log->vsave, km->vc[v])) goto fail;
     for (size_t g = 0; g < km->k; g++)
         if (push_double(&log->pos, km->xy[g][2 * (size_t)v]) || push_double(&log->pos, km->xy[g][2 * (size_t)v + 1]))

@@ -332,24 +332,28 @@ const cm_stats &CompatibleTriangulationT<InMesh, OutMesh>::stats() const
   return *cm_result_stats(result_.get());
 }
 
+namespace detail {
+// Geometry g's quality from `get` (cm_result_quality or _before).
+inline cm_quality quality_of(const cm_result *result, std::size_t g,
+                             cm_status (*get)(const cm_result *, std::size_t, cm_quality *))
+{
+  if (!result) throw Error(CM_ERR_ARGUMENT, "no result: run() has not succeeded");
+  cm_quality quality;
+  if (get(result, g, &quality) != CM_OK) throw Error(CM_ERR_ARGUMENT, "no geometry " + std::to_string(g));
+  return quality;
+}
+}  // namespace detail
+
 template <class InMesh, class OutMesh>
 cm_quality CompatibleTriangulationT<InMesh, OutMesh>::quality(std::size_t g) const
 {
-  if (!result_) throw Error(CM_ERR_ARGUMENT, "no result: run() has not succeeded");
-  cm_quality quality;
-  if (cm_result_quality(result_.get(), g, &quality) != CM_OK)
-    throw Error(CM_ERR_ARGUMENT, "no geometry " + std::to_string(g));
-  return quality;
+  return detail::quality_of(result_.get(), g, cm_result_quality);
 }
 
 template <class InMesh, class OutMesh>
 cm_quality CompatibleTriangulationT<InMesh, OutMesh>::quality_before_remesh(std::size_t g) const
 {
-  if (!result_) throw Error(CM_ERR_ARGUMENT, "no result: run() has not succeeded");
-  cm_quality quality;
-  if (cm_result_quality_before(result_.get(), g, &quality) != CM_OK)
-    throw Error(CM_ERR_ARGUMENT, "no geometry " + std::to_string(g));
-  return quality;
+  return detail::quality_of(result_.get(), g, cm_result_quality_before);
 }
 
 template <class OutMesh, class InMesh>
