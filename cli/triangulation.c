@@ -71,8 +71,9 @@ static int set_correspondence(triangulation_args *args, const char *command, con
 {
     if (strcmp(name, "index") == 0) args->options.correspondence = CM_CORRESPOND_INDEX;
     else if (strcmp(name, "arclength") == 0) args->options.correspondence = CM_CORRESPOND_ARCLENGTH;
+    else if (strcmp(name, "auto") == 0) args->options.correspondence = CM_CORRESPOND_AUTO;
     else {
-        cli_error_set(error, "%s: unknown --correspondence '%s' (known: index, arclength)", command, name);
+        cli_error_set(error, "%s: unknown --correspondence '%s' (known: index, arclength, auto)", command, name);
         return CLI_EXIT_USAGE;
     }
     args->correspondence_given = 1;
@@ -341,7 +342,8 @@ int triangulation_run(triangulation *t, const triangulation_args *args, cli_erro
     if (code == CLI_EXIT_OK && !args->correspondence_given) { /* pins or counts decide */
         int differ = 0;
         for (size_t g = 1; g < args->input_count; g++) differ |= t->polygons[g].count != t->polygons[0].count;
-        if (differ || args->pin_count) t->options.correspondence = CM_CORRESPOND_ARCLENGTH;
+        if (args->pin_count) t->options.correspondence = CM_CORRESPOND_ARCLENGTH;
+        else if (differ) t->options.correspondence = CM_CORRESPOND_AUTO;
     }
     if (code == CLI_EXIT_OK) code = compute(t, error);
     return code;

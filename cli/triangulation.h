@@ -63,7 +63,10 @@ enum {
      "counts; the default when the counts are equal);\n"                      \
      "arclength: normalised arc length between pins, each\n"                  \
      "input keeping its vertices and getting the others'\n"                   \
-     "on its edges (the default when the counts differ)"},                    \
+     "on its edges (the default with --pin); auto:\n"                         \
+     "arc length from the starts that align the inputs\n"                     \
+     "best up to a similarity (the default when the\n"                        \
+     "counts differ)"},                                                       \
     {"pin", OPTION_PIN, "I,J[,K...]",                                         \
      "arclength: vertex I of the first input corresponds\n"                   \
      "to vertex J of the second, ... (0-based, in file\n"                     \

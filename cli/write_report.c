@@ -80,7 +80,7 @@ static void write_mesh_entry(FILE *file, const report_info *info, size_t g)
     write_quality(file, "", ",\n      ", cm_result_quality_before(info->result, g, &quality),
                   quality);
     fputs("}", file);
-    if (info->correspondence == CM_CORRESPOND_ARCLENGTH) {
+    if (info->correspondence != CM_CORRESPOND_INDEX) {
         /* Per boundary vertex: [e, t], the point at t of input edge e -> e + 1. */
         fputs(",\n     \"boundary_source\": [", file);
         for (size_t i = 0; i < cm_result_stats(info->result)->n; i++) {
@@ -114,8 +114,8 @@ int write_report(const char *path, const report_info *info, cli_error *error)
     fputs("  \"method\": ", file);
     json_string(file, info->method);
     fprintf(file, ",\n  \"remesh\": %s,\n", info->remesh ? "true" : "false");
-    fprintf(file, "  \"correspondence\": \"%s\",\n",
-            info->correspondence == CM_CORRESPOND_ARCLENGTH ? "arclength" : "index");
+    static const char *const correspondence[] = {"index", "arclength", "auto"};
+    fprintf(file, "  \"correspondence\": \"%s\",\n", correspondence[info->correspondence]);
     fprintf(file, "  \"reversed_input\": %s,\n", stats->reversed_input ? "true" : "false");
     fprintf(file, "  \"fallback_count\": %zu,\n", stats->fallback_count);
     fprintf(file, "  \"steiner_before_remesh\": %zu,\n", stats->steiner_before_remesh);

@@ -133,7 +133,7 @@ Enum enum_from(py::handle value, const char *option,
 const std::vector<std::pair<const char *, cm_method>> method_names = {
     {"overlay", CM_METHOD_OVERLAY}, {"partition", CM_METHOD_PARTITION}};
 const std::vector<std::pair<const char *, cm_correspondence>> correspondence_names = {
-    {"index", CM_CORRESPOND_INDEX}, {"arclength", CM_CORRESPOND_ARCLENGTH}};
+    {"index", CM_CORRESPOND_INDEX}, {"arclength", CM_CORRESPOND_ARCLENGTH}, {"auto", CM_CORRESPOND_AUTO}};
 const std::vector<std::pair<const char *, cm_smoothing>> smoothing_names = {
     {"laplacian", CM_SMOOTH_LAPLACIAN},
     {"angle", CM_SMOOTH_ANGLE},
@@ -428,8 +428,10 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
   // length (index needs equal counts).
   bool differ = false;
   for (std::size_t c : counts) differ |= c != counts.front();
-  if (!callbacks->correspondence_given && (differ || !callbacks->pins.empty()))
+  if (!callbacks->correspondence_given && !callbacks->pins.empty())
     options.correspondence = CM_CORRESPOND_ARCLENGTH;
+  else if (!callbacks->correspondence_given && differ)
+    options.correspondence = CM_CORRESPOND_AUTO;
   for (std::size_t j = 0; j < callbacks->pins.size(); j++) {
     if (callbacks->pins[j].size() != polygons->size())
       throw py::value_error("pins: pin " + std::to_string(j) + " has " + std::to_string(callbacks->pins[j].size()) +
@@ -634,7 +636,8 @@ PYBIND11_MODULE(compatmesh, m)
       .value("PARTITION", CM_METHOD_PARTITION);
   py::enum_<cm_correspondence>(m, "Correspondence", "Which vertices of the polygons correspond.")
       .value("INDEX", CM_CORRESPOND_INDEX)
-      .value("ARCLENGTH", CM_CORRESPOND_ARCLENGTH);
+      .value("ARCLENGTH", CM_CORRESPOND_ARCLENGTH)
+      .value("AUTO", CM_CORRESPOND_AUTO);
   py::enum_<cm_smoothing>(m, "Smoothing", "Vertex smoothing in the remesher.")
       .value("LAPLACIAN", CM_SMOOTH_LAPLACIAN)
       .value("ANGLE", CM_SMOOTH_ANGLE)
@@ -692,8 +695,11 @@ options: keyword arguments named like the fields of the C struct cm_options,
     correspondence  "index" (vertex i is vertex i; equal counts; the default
                     when the counts are equal) or "arclength" (normalised
                     arc length between pins; each polygon keeps its vertices
-                    and gets the others' on its edges; the default when the
-                    counts differ), or a compatmesh.Correspondence
+                    and gets the others' on its edges; the default with
+                    pins), "auto" (arc length
+                    from the starts that align the polygons best up to a
+                    similarity; the default when the counts differ), or a
+                    compatmesh.Correspondence
     pins            arclength: a sequence of tuples, one vertex per polygon,
                     that correspond (default: the first vertices)
   and planarity_tolerance: how far a 3D point may lie from the plane, as a

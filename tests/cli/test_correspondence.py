@@ -17,11 +17,12 @@ def pair(tmp_path, na, nb, clockwise_b=False):
 
 @pytest.mark.parametrize("clockwise_b", [False, True])
 def test_different_counts_pair_by_arc_length(cm, tmp_path, clockwise_b):
+    """Different counts: auto (arc length from the best-aligned starts)."""
     inputs = pair(tmp_path, 17, 29, clockwise_b)
     r = cm("triangulate", "a.xy", "b.xy", "-o", "out")
     assert r.returncode == 0, r.stderr
     report = json.loads((tmp_path / "out" / "report.json").read_text())
-    assert report["correspondence"] == "arclength"
+    assert report["correspondence"] == "auto"  # the default for different counts
     n = report["n"]
     assert 29 <= n <= 17 + 29 - 1
     for name, points, mesh in zip(("a", "b"), inputs, report["meshes"]):
@@ -55,7 +56,7 @@ def test_pins_are_honoured(cm, tmp_path):
     (["--pin", "0,0", "--pin", "5,9", "--pin", "8,3"], "b.xy:4: pins 1 and 2 cross: along polygon 1 they come in the other order"),
     (["--correspondence", "index"], "with --correspondence index the vertices correspond by index"),
     (["--correspondence", "index", "--pin", "0,0"], "--pin needs --correspondence arclength"),
-    (["--correspondence", "nearest"], "unknown --correspondence 'nearest' (known: index, arclength)"),
+    (["--correspondence", "nearest"], "unknown --correspondence 'nearest' (known: index, arclength, auto)"),
 ])
 def test_bad_pins_and_modes(cm, tmp_path, args, message):
     pair(tmp_path, 20, 31)
@@ -72,3 +73,15 @@ def test_equal_counts_keep_the_index_correspondence(cm, tmp_path):
     report = json.loads((tmp_path / "out" / "report.json").read_text())
     assert report["correspondence"] == "index" and report["n"] == 20
     assert "boundary_source" not in report["meshes"][0]
+
+
+def test_auto_recovers_a_shifted_start(cm, tmp_path):
+    """A copy numbered from another vertex: auto pairs it one to one."""
+    points = star(24, 3)
+    write_xy(tmp_path / "a.xy", points)
+    write_xy(tmp_path / "b.xy", [(2 * x + 1, 2 * y - 3) for x, y in points[7:] + points[:7]])
+    r = cm("triangulate", "a.xy", "b.xy", "-o", "out", "--correspondence", "auto")
+    assert r.returncode == 0, r.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert report["n"] == 24
+    assert report["meshes"][1]["boundary_source"][0] == [17, 0]

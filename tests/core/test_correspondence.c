@@ -103,6 +103,35 @@ static void test_similar_copy_is_the_identity(void)
     cm_result_free(r);
 }
 
+/* The same copy with no pin: CM_CORRESPOND_AUTO finds the start itself. */
+static void test_auto_finds_the_start(void)
+{
+    enum { N = 40, SHIFT = 27 };
+    double a[2 * N], b[2 * N];
+    CHECK(rp_star(a, N, 78) == 0);
+    double c = cos(-2.1) * 0.5, s = sin(-2.1) * 0.5;
+    for (int i = 0; i < N; i++) {
+        const double *p = a + 2 * ((i + SHIFT) % N);
+        b[2 * i] = c * p[0] - s * p[1] - 1.0, b[2 * i + 1] = s * p[0] + c * p[1] + 3.0;
+    }
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = CM_CORRESPOND_AUTO, o.remesh = 0;
+    const double *in[2] = {a, b};
+    size_t counts[2] = {N, N};
+    cm_result *r = NULL;
+    CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r) == CM_OK, "%s", cm_result_message(r));
+    if (cm_result_status(r) == CM_OK) {
+        CHECK_MSG(cm_result_stats(r)->n == N && cm_result_stats(r)->steiner == 0, "%zu boundary, %zu Steiner",
+                  cm_result_stats(r)->n, cm_result_stats(r)->steiner);
+        double t;
+        CHECK(cm_result_boundary_source(r, 0, 0, &t) == 0 && t == 0);
+        CHECK_MSG(cm_result_boundary_source(r, 1, 0, &t) == (N - SHIFT) % N && t == 0, "start %ld",
+                  cm_result_boundary_source(r, 1, 0, &t));
+    }
+    cm_result_free(r);
+}
+
 static void test_pins_are_honoured(void)
 {
     enum { NA = 30, NB = 44 };
@@ -153,6 +182,7 @@ int main(void)
 {
     test_different_counts();
     test_similar_copy_is_the_identity();
+    test_auto_finds_the_start();
     test_pins_are_honoured();
     test_bad_pins();
     return check_summary("test_correspondence");

@@ -112,7 +112,12 @@ typedef enum cm_correspondence {
      * agree. The result's boundary is that common refinement, counter-
      * clockwise from the first pin (cm_result_boundary_source says where
      * each boundary vertex comes from). */
-    CM_CORRESPOND_ARCLENGTH
+    CM_CORRESPOND_ARCLENGTH,
+    /* Arc length as above, from starts chosen where none are pinned: the
+     * start of every polygon (against polygon 0's first vertex) whose
+     * arc-length points are closest to a similar image of polygon 0's
+     * (least squares over rotation, scale and translation). */
+    CM_CORRESPOND_AUTO
 } cm_correspondence;
 
 typedef struct cm_options {

@@ -11,6 +11,7 @@
 #include "base/clock.h"
 #include "base/progress.h"
 #include "construct/overlay.h"
+#include "correspond/choose.h"
 #include "construct/partition.h"
 #include "geom/polytri.h"
 #include "remesh/remesh.h"
@@ -209,7 +210,7 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
 
 static cm_status check_correspondence_options(cm_result *r, const cm_options *o)
 {
-    if ((unsigned)o->correspondence > (unsigned)CM_CORRESPOND_ARCLENGTH)
+    if ((unsigned)o->correspondence > (unsigned)CM_CORRESPOND_AUTO)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown correspondence %d", (int)o->correspondence);
     if (o->num_pins && !o->pins) return cm_fail(&r->error, CM_ERR_ARGUMENT, "num_pins is %zu but pins is NULL", o->num_pins);
     if (o->num_pins && o->correspondence == CM_CORRESPOND_INDEX)
@@ -218,7 +219,8 @@ static cm_status check_correspondence_options(cm_result *r, const cm_options *o)
     return CM_OK;
 }
 
-/* CM_CORRESPOND_ARCLENGTH: each polygon checked on its own, the common
+/* CM_CORRESPOND_ARCLENGTH and _AUTO: each polygon checked on its own (for
+ * auto, the starts chosen where none are pinned), the common
  * refinement of the boundaries made, then the pipeline on it. A failure of
  * the refined boundaries (rounding of a point on an edge next to another
  * edge) is located at the input edge it came from. */
@@ -229,8 +231,17 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
     size_t *merged_counts = k ? malloc(k * sizeof *merged_counts) : NULL;
     cm_status s = !k || (orientation && merged_counts) ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
-    if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, o->pins, o->num_pins,
+    const size_t *pins = o->pins;
+    size_t num_pins = o->num_pins, *chosen = NULL;
+    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0) {
+        chosen = malloc(k * sizeof *chosen);
+        s = chosen ? cm_correspond_choose_starts(polygons, counts, k, orientation, chosen, &r->error)
+                   : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        pins = chosen, num_pins = 1;
+    }
+    if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, pins, num_pins,
                                                 &r->boundary, &r->error);
+    free(chosen);
     if (s == CM_OK) {
         for (size_t g = 0; g < k; g++) merged_counts[g] = r->boundary.n;
         s = run_pipeline(r, (const double *const *)r->boundary.xy, merged_counts, k, o);
@@ -266,7 +277,7 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
     }
     cm_status s = check_remesh_options(r, options);
     if (s == CM_OK) s = check_correspondence_options(r, options);
-    if (s == CM_OK && options->correspondence == CM_CORRESPOND_ARCLENGTH)
+    if (s == CM_OK && options->correspondence != CM_CORRESPOND_INDEX)
         s = run_arclength(r, polygons, counts, k, options);
     else if (s == CM_OK)
         s = run_pipeline(r, polygons, counts, k, options);

@@ -116,7 +116,7 @@ static cm_status parametrise(walk *w, const size_t *offset, size_t stride, size_
     return s;
 }
 
-typedef struct entry { double u; size_t g, i; } entry;
+typedef struct entry { double u, room; size_t g, i; } entry;
 
 static int by_parameter(const void *pa, const void *pb)
 {
@@ -125,10 +125,12 @@ static int by_parameter(const void *pa, const void *pb)
     return (a->g > b->g) - (a->g < b->g);
 }
 
-/* Parameters closer than this (in segments) are one boundary vertex:
- * vertices that correspond up to rounding do not become two vertices a
- * hair apart. */
-#define CM_SAME_PARAMETER 1e-9
+/* Vertices of different polygons closer in parameter than this share of
+ * the parameter gap to their neighbours are one boundary vertex (each
+ * polygon its own vertex there): near-coincident vertices would otherwise
+ * leave a sliver edge, and polygons sampled alike keep their one-to-one
+ * correspondence. */
+#define CM_SNAP 0.5
 
 /* The merged boundary: u[j], the parameter of vertex j (strictly
  * increasing), and own[g * total + j], the vertex of polygon g there (its
@@ -140,42 +142,53 @@ static cm_status merge(const walk *walks, size_t k, double **u, long **own, size
     entry *e = malloc(total * sizeof *e);
     *u = malloc(total * sizeof **u);
     *own = malloc(k * total * sizeof **own);
-    if (!e || !*u || !*own) {
-        free(e);
+    double *room = malloc(total * sizeof *room); /* of each group's first entry */
+    if (!e || !*u || !*own || !room) {
+        free(e), free(room);
         return cm_fail_status(err, CM_ERR_NO_MEMORY);
     }
     size_t m = 0;
-    for (size_t g = 0; g < k; g++)
-        for (size_t i = 0; i < walks[g].n; i++) e[m++] = (entry){walks[g].param[i], g, i};
+    for (size_t g = 0; g < k; g++) {
+        const walk *w = &walks[g];
+        for (size_t i = 0; i < w->n; i++) {
+            double before = i ? w->param[i] - w->param[i - 1] : w->param[w->n] - w->param[w->n - 1];
+            e[m++] = (entry){w->param[i], fmin(before, w->param[i + 1] - w->param[i]), g, i};
+        }
+    }
     qsort(e, total, sizeof *e, by_parameter);
     for (size_t x = 0; x < k * total; x++) (*own)[x] = -1;
     *n = 0;
     for (size_t x = 0; x < total; x++) {
         size_t j = *n - 1;
-        int joins = *n > 0 && e[x].u - (*u)[j] < CM_SAME_PARAMETER && (*own)[e[x].g * total + j] < 0;
-        if (!joins) j = (*n)++, (*u)[j] = e[x].u;
+        int joins = *n > 0 && (*own)[e[x].g * total + j] < 0 &&
+                    e[x].u - (*u)[j] < CM_SNAP * fmin(e[x].room, room[j]);
+        if (!joins) j = (*n)++, (*u)[j] = e[x].u, room[j] = e[x].room;
         (*own)[e[x].g * total + j] = (long)e[x].i;
     }
-    free(e);
+    free(e), free(room);
     return CM_OK;
 }
 
 /* Polygon g at the merged parameters: its own vertices where it has one,
- * points on its edges elsewhere. own: g's row of merge's table. */
-static void fill(const walk *w, const double *u, const long *own, size_t n, double *xy, int32_t *edge,
-                 double *t)
+ * elsewhere the point on its edge between its own vertices before and
+ * after, at the share of their parameters (as merged) the vertex has.
+ * own: g's row of merge's table. */
+static void fill(const walk *w, const double *u, const long *own, size_t n, size_t pins, double *xy,
+                 int32_t *edge, double *t)
 {
-    size_t i = 0; /* w's vertex at or before u[j]; the first pin is at u[0] = 0 */
+    size_t i = 0, at = 0, next = 0; /* w's vertex at or before j, where it and the next were merged */
     for (size_t j = 0; j < n; j++) {
         if (own[j] >= 0) {
-            i = (size_t)own[j];
+            i = (size_t)own[j], at = j;
+            for (next = j + 1; next < n && own[next] < 0;) next++;
             const double *a = point_at(w, i);
             xy[2 * j] = a[0], xy[2 * j + 1] = a[1];
             edge[j] = (int32_t)vertex_at(w, i), t[j] = 0.0;
             continue;
         }
+        double u_next = next < n ? u[next] : (double)pins;
         const double *a = point_at(w, i), *b = point_at(w, i + 1);
-        double s = (u[j] - w->param[i]) / (w->param[i + 1] - w->param[i]);
+        double s = (u[j] - u[at]) / (u_next - u[at]);
         xy[2 * j] = a[0] + s * (b[0] - a[0]);
         xy[2 * j + 1] = a[1] + s * (b[1] - a[1]);
         /* Input numbering: a clockwise polygon's edge runs from b to a. */
@@ -222,7 +235,7 @@ cm_status cm_correspond_arclength(const double *const *polygons, const size_t *c
         out->edge[g] = malloc(n * sizeof **out->edge);
         out->t[g] = malloc(n * sizeof **out->t);
         if (!out->xy[g] || !out->edge[g] || !out->t[g]) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
-        else fill(&walks[g], u, own + g * total, n, out->xy[g], out->edge[g], out->t[g]);
+        else fill(&walks[g], u, own + g * total, n, num_pins, out->xy[g], out->edge[g], out->t[g]);
     }
     if (s != CM_OK) cm_boundary_map_clear(out);
     if (walks)

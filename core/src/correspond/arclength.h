@@ -25,8 +25,10 @@ void cm_boundary_map_clear(cm_boundary_map *map);
  * between pins: num_pins k-tuples, pins[j * k + g] the input vertex of
  * polygon g in pin j, in the same cyclic order along every polygon; none:
  * the first vertex of every polygon. Every polygon keeps all its vertices
- * and gets the others' as points on its edges; points at equal parameters
- * are one vertex. Pins out of range, repeated or crossing are CM_ERR_ARGUMENT
+ * and gets the others' as points on its edges; vertices of different
+ * polygons whose parameters are closer than half the gap to their
+ * neighbours are one boundary vertex (no sliver edges; polygons sampled
+ * alike keep a one-to-one correspondence). Pins out of range, repeated or crossing are CM_ERR_ARGUMENT
  * naming the pin and polygon. */
 cm_status cm_correspond_arclength(const double *const *polygons, const size_t *counts, size_t k,
                                   const int *orientation, const size_t *pins, size_t num_pins,
