@@ -25,3 +25,4 @@ def readme_code_block(language):
 def test_readme_shows_the_examples_as_run():
     assert readme_code_block("python") == EXAMPLE.read_text()
     assert readme_code_block("cpp") == (EXAMPLE.parent / "pair.cc").read_text()
+    assert readme_code_block("c") == (EXAMPLE.parent / "pair.c").read_text()
