@@ -190,6 +190,39 @@ static char *make_temporary(const char *path, cli_error *error)
     return temporary;
 }
 
+/* Gmsh writes Nastran bulk data without the BEGIN BULK line that readers
+ * (meshio among them) look for: inserted after the leading comments. */
+static int add_begin_bulk(const char *temporary, const char *path, cli_error *error)
+{
+    FILE *file = fopen(temporary, "rb");
+    char *text = NULL;
+    long size = -1;
+    if (file && fseek(file, 0, SEEK_END) == 0) size = ftell(file);
+    if (size >= 0 && fseek(file, 0, SEEK_SET) == 0 && (text = malloc((size_t)size + 1)) &&
+        fread(text, 1, (size_t)size, file) == (size_t)size) {
+        text[size] = '\0';
+    } else {
+        size = -1;
+    }
+    if (file) fclose(file);
+    int code = CLI_EXIT_INTERNAL;
+    if (size >= 0) {
+        size_t head = 0; /* the "$" comment lines */
+        while (text[head] == '$') {
+            const char *end = strchr(text + head, '\n');
+            head = end ? (size_t)(end - text) + 1 : (size_t)size;
+        }
+        file = fopen(temporary, "wb");
+        if (file && fwrite(text, 1, head, file) == head && fputs("BEGIN BULK\n", file) >= 0 &&
+            fwrite(text + head, 1, (size_t)size - head, file) == (size_t)size - head)
+            code = CLI_EXIT_OK;
+        if (file && fclose(file) != 0) code = CLI_EXIT_INTERNAL;
+    }
+    if (code != CLI_EXIT_OK) cli_error_set(error, "cannot write %s: %s", path, strerror(errno ? errno : EIO));
+    free(text);
+    return code;
+}
+
 int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
                  cli_error *error)
 {
@@ -224,6 +257,8 @@ int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
     }
     gmsh.Finalize(&ierr);
     catch_interrupts();
+    const char *extension = extension_of(path);
+    if (code == CLI_EXIT_OK && strcasecmp(extension, "bdf") == 0) code = add_begin_bulk(temporary, path, error);
     if (code == CLI_EXIT_OK && interrupted) {
         cli_error_set(error, "interrupted; nothing written");
         code = CLI_EXIT_INTERRUPTED;

@@ -13,14 +13,15 @@ import pytest
 from polygons import glyph_pair, leftovers, spiral_pair, twisted_pair, write_xy
 
 PAIRS = {"twisted": twisted_pair, "spiral": spiral_pair, "glyph": glyph_pair}
-# Which reader checks which format: Gmsh reads all but Abaqus; meshio reads
-# .msh, .vtk and .inp (not Gmsh's .bdf, which has no BEGIN BULK, nor .unv).
+# Which reader checks which format: Gmsh reads all but Abaqus (it has no
+# Abaqus reader); meshio reads .msh, .vtk, .inp and .bdf (the tool adds the
+# BEGIN BULK line Gmsh leaves out), not .unv (no meshio reader).
 # Gmsh 4.8 writes VTK wedges in VTK's order but reads them back as if in its
 # own, turning them inside out; test_vtk_file_uses_vtk_wedge_order and meshio
 # check the .vtk prisms instead.
 GMSH_CHECKS = [(fmt, kind) for fmt in ["msh", "msh22", "vtk", "bdf", "unv"]
                for kind in ["prism", "tet"] if (fmt, kind) != ("vtk", "prism")]
-MESHIO_READS = ["msh", "msh22", "vtk", "inp"]
+MESHIO_READS = ["msh", "msh22", "vtk", "inp", "bdf"]
 GMSH_TYPE = {"prism": 6, "tet": 4}
 CORNERS = {"prism": [0, 0, -1, 1, 0, -1, 0, 1, -1, 0, 0, 1, 1, 0, 1, 0, 1, 1],
            "tet": [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]}
@@ -140,7 +141,8 @@ def test_meshio_reads_every_format_alike(cm, tmp_path, kind):
         # meshio gives wedges in Gmsh's order whatever the file's convention,
         # so equal connectivity means each writer kept the orientation.
         assert np.array_equal(mesh.cells[0].data, reference.cells[0].data), fmt
-        assert np.allclose(mesh.points, reference.points, rtol=0, atol=1e-12), fmt
+        digits = 1e-7 if fmt == "bdf" else 1e-12  # Nastran's 16-character fields keep 9 digits
+        assert np.allclose(mesh.points, reference.points, rtol=0, atol=digits), fmt
 
 
 def test_vtk_file_uses_vtk_wedge_order(cm, tmp_path):
