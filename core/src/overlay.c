@@ -514,11 +514,12 @@ static int emit_triangle(face_output *f, long a, long b, long c)
 }
 
 /* A face no ear can cut in every geometry (rounding made it slightly
- * non-convex somewhere): fan it from a new vertex at its vertex centroid. */
+ * non-convex somewhere): fan it from a new vertex at its vertex centroid,
+ * if that fan is valid everywhere. Nothing is emitted otherwise. */
 static int fan_from_centroid(face_output *f, const long *face, long m)
 {
     if (f->nv >= f->cap_v) return 1;
-    long c = (long)f->nv++;
+    long c = (long)f->nv;
     for (size_t j = 0; j < f->k; j++) {
         double sx = 0, sy = 0;
         for (long i = 0; i < m; i++) sx += f->xy[j][2 * face[i]], sy += f->xy[j][2 * face[i] + 1];
@@ -528,14 +529,30 @@ static int fan_from_centroid(face_output *f, const long *face, long m)
         long a = face[i], b = face[(i + 1) % m];
         for (size_t j = 0; j < f->k; j++)
             if (cm_orient2d(f->xy[j] + 2 * a, f->xy[j] + 2 * b, f->xy[j] + 2 * c) <= 0) return 1;
-        if (emit_triangle(f, a, b, c)) return -1;
     }
+    f->nv++;
+    for (long i = 0; i < m; i++)
+        if (emit_triangle(f, face[i], face[(i + 1) % m], c)) return -1;
     f->centroids++;
     return 0;
 }
 
+/* Geometries in which the ear abc is counter-clockwise as rounded. */
+static size_t ear_votes(const face_output *f, long a, long b, long c)
+{
+    size_t votes = 0;
+    for (size_t j = 0; j < f->k; j++)
+        votes += cm_orient2d(f->xy[j] + 2 * a, f->xy[j] + 2 * b, f->xy[j] + 2 * c) > 0;
+    return votes;
+}
+
 /* Cuts the best ear (largest smallest angle over all geometries) until a
- * triangle remains. Returns 0, -1 out of memory, 1 impossible. */
+ * triangle remains. Every face is strictly convex in C, hence (an affine
+ * image inside one triangle of T_j) at the exact crossing positions in
+ * every geometry, so every ear is valid there: a face that rounding made
+ * non-convex is still cut, by the ear valid in the most geometries, and
+ * repair_geometry moves its Steiner vertices afterwards. Returns 0, or -1
+ * out of memory. */
 static int triangulate_face(face_output *f, long *face, long m)
 {
     while (m > 3) {
@@ -545,13 +562,144 @@ static int triangulate_face(face_output *f, long *face, long m)
             double q = ear_quality(f, face[(i + m - 1) % m], face[i], face[(i + 1) % m], face, m);
             if (q > best_q) best_q = q, best = i;
         }
-        if (best < 0) return fan_from_centroid(f, face, m);
+        if (best < 0) {
+            int s = fan_from_centroid(f, face, m);
+            if (s <= 0) return s;
+            size_t best_votes = 0;
+            best = 0;
+            for (long i = 0; i < m; i++) {
+                size_t v = ear_votes(f, face[(i + m - 1) % m], face[i], face[(i + 1) % m]);
+                if (v > best_votes) best_votes = v, best = i;
+            }
+        }
         if (emit_triangle(f, face[(best + m - 1) % m], face[best], face[(best + 1) % m])) return -1;
         memmove(face + best, face + best + 1, (size_t)(m - best - 1) * sizeof *face);
         m--;
     }
-    if (ear_quality(f, face[0], face[1], face[2], face, 3) < 0) return 1;
     return emit_triangle(f, face[0], face[1], face[2]);
+}
+
+/* ---- moving Steiner vertices where rounding inverted a triangle ----------- */
+
+/* Any placement of the Steiner vertices is as good as the exact one as long
+ * as every triangle stays strictly counter-clockwise: the boundary is the
+ * polygon, so the mesh then covers it once. The exact positions make every
+ * triangle positive, but rounding them can invert a thin one (a polygon
+ * whose ear-clipped triangles are slivers thinner than the spacing of
+ * doubles, say). A vertex of an inverted triangle is moved to the first
+ * candidate that makes all its triangles positive, or else to the one that
+ * leaves fewest inverted; a move is taken only when that count drops, so
+ * the count of inverted triangles falls with every move and the repair
+ * ends. Candidates: the centroid of its neighbours, points on the way to
+ * each neighbour, and the doubles within REPAIR_RINGS units in the last
+ * place around it (a sliver thinner than one unit still contains doubles
+ * along its length). */
+#define REPAIR_RINGS 12
+#define REPAIR_PASSES 64
+
+typedef struct incidence {
+    long *start, *tri; /* triangles around each vertex */
+} incidence;
+
+static int incidence_build(const face_output *f, incidence *inc)
+{
+    inc->start = calloc(f->nv + 2, sizeof *inc->start);
+    inc->tri = malloc((3 * f->nt + 1) * sizeof *inc->tri);
+    if (!inc->start || !inc->tri) return -1;
+    for (size_t e = 0; e < 3 * f->nt; e++) inc->start[f->tri[e] + 2]++;
+    for (size_t v = 0; v < f->nv; v++) inc->start[v + 2] += inc->start[v + 1];
+    for (size_t e = 0; e < 3 * f->nt; e++) inc->tri[inc->start[f->tri[e] + 1]++] = (long)(e / 3);
+    return 0;
+}
+
+static int inverted(const face_output *f, const double *xy, long t)
+{
+    const int32_t *c = f->tri + 3 * t;
+    return cm_orient2d(xy + 2 * c[0], xy + 2 * c[1], xy + 2 * c[2]) <= 0;
+}
+
+static long inverted_around(const face_output *f, const incidence *inc, const double *xy, long v)
+{
+    long bad = 0;
+    for (long i = inc->start[v]; i < inc->start[v + 1]; i++) bad += inverted(f, xy, inc->tri[i]);
+    return bad;
+}
+
+static double unit_in_last_place(double x)
+{
+    x = fabs(x);
+    return nextafter(x, INFINITY) - x;
+}
+
+/* Tries candidate p for v; keeps it in best when it beats *best_bad. */
+static int try_candidate(const face_output *f, const incidence *inc, double *xy, long v,
+                         double px, double py, long *best_bad, double *best)
+{
+    if (!isfinite(px) || !isfinite(py)) return 0;
+    double keep[2] = {xy[2 * v], xy[2 * v + 1]};
+    xy[2 * v] = px, xy[2 * v + 1] = py;
+    long bad = inverted_around(f, inc, xy, v);
+    xy[2 * v] = keep[0], xy[2 * v + 1] = keep[1];
+    if (bad < *best_bad) *best_bad = bad, best[0] = px, best[1] = py;
+    return bad == 0;
+}
+
+/* Moves v to a better place if there is one among the candidates. */
+static int move_vertex(const face_output *f, const incidence *inc, double *xy, long v)
+{
+    long bad = inverted_around(f, inc, xy, v), deg = inc->start[v + 1] - inc->start[v];
+    if (bad == 0 || deg == 0) return 0;
+    double best[2], x = xy[2 * v], y = xy[2 * v + 1], cx = 0, cy = 0, reach = fmax(fabs(x), fabs(y));
+    long best_bad = bad;
+    for (long i = inc->start[v]; i < inc->start[v + 1]; i++) {
+        const int32_t *c = f->tri + 3 * inc->tri[i];
+        for (int e = 0; e < 3; e++) {
+            if (c[e] == v) continue;
+            const double *u = xy + 2 * c[e];
+            cx += u[0] / (double)(2 * deg), cy += u[1] / (double)(2 * deg);
+            reach = fmax(reach, fmax(fabs(u[0]), fabs(u[1])));
+        }
+    }
+    int done = try_candidate(f, inc, xy, v, cx, cy, &best_bad, best);
+    for (double s = 0.5; !done && s > 0x1p-60; s *= 0.5)
+        done = try_candidate(f, inc, xy, v, x + s * (cx - x), y + s * (cy - y), &best_bad, best);
+    for (long i = inc->start[v]; !done && i < inc->start[v + 1]; i++) {
+        const int32_t *c = f->tri + 3 * inc->tri[i];
+        for (int e = 0; e < 3 && !done; e++) {
+            if (c[e] == v) continue;
+            const double *u = xy + 2 * c[e];
+            for (double s = 0.25; !done && s > 0x1p-60; s *= 0.5)
+                done = try_candidate(f, inc, xy, v, x + s * (u[0] - x), y + s * (u[1] - y), &best_bad, best);
+        }
+    }
+    double ux = unit_in_last_place(reach), uy = ux;
+    for (int r = 1; !done && r <= REPAIR_RINGS; r++)
+        for (int i = -r; i <= r && !done; i++)
+            for (int k = -r; k <= r && !done; k += (abs(i) == r ? 1 : 2 * r))
+                done = try_candidate(f, inc, xy, v, x + i * ux, y + k * uy, &best_bad, best);
+    if (best_bad >= bad) return 0;
+    xy[2 * v] = best[0], xy[2 * v + 1] = best[1];
+    return 1;
+}
+
+/* Returns the number of triangles still inverted in geometry j, or -1 out
+ * of memory. Vertices below `fixed` (the polygon's) never move. */
+static long repair_geometry(const face_output *f, const incidence *inc, size_t j, size_t fixed)
+{
+    double *xy = f->xy[j];
+    long bad = 0;
+    for (int pass = 0; pass < REPAIR_PASSES; pass++) {
+        int moved = 0;
+        bad = 0;
+        for (long t = 0; t < (long)f->nt; t++) {
+            if (!inverted(f, xy, t)) continue;
+            for (int e = 0; e < 3 && inverted(f, xy, t); e++)
+                if ((size_t)f->tri[3 * t + e] >= fixed) moved |= move_vertex(f, inc, xy, f->tri[3 * t + e]);
+            bad += inverted(f, xy, t);
+        }
+        if (bad == 0 || !moved) break;
+    }
+    return bad;
 }
 
 static int triangulate_faces(const graph *g, size_t n, face_output *f)
@@ -633,10 +781,22 @@ cm_status cm_overlay(const double *const *geoms, const int32_t *const *tris, siz
     s = triangulate_faces(&g, n, &f);
     if (s < 0) goto done;
     if (s > 0) {
-        status = cm_fail(r, CM_ERR_INTERNAL,
-                         "overlay: a face could not be triangulated in every geometry");
+        status = cm_fail(r, CM_ERR_INTERNAL, "overlay: the overlay's outer face is not the boundary");
         goto done;
     }
+    incidence inc = {NULL, NULL};
+    if (incidence_build(&f, &inc)) { free(inc.start), free(inc.tri); goto done; }
+    for (size_t j = 0; j < k; j++) {
+        long bad = repair_geometry(&f, &inc, j, n);
+        if (bad > 0) {
+            free(inc.start), free(inc.tri);
+            status = cm_fail(r, CM_ERR_INTERNAL,
+                             "overlay: %ld triangles of geometry %zu stay inverted: no double "
+                             "position found for their Steiner vertices", bad, j);
+            goto done;
+        }
+    }
+    free(inc.start), free(inc.tri);
     out->k = k;
     out->nv = f.nv;
     out->nt = f.nt;
