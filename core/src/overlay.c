@@ -596,6 +596,7 @@ static int triangulate_face(face_output *f, long *face, long m)
  * along its length). */
 #define REPAIR_RINGS 12
 #define REPAIR_PASSES 64
+#define REPAIR_LINES 64
 
 typedef struct incidence {
     long *start, *tri; /* triangles around each vertex */
@@ -644,6 +645,53 @@ static int try_candidate(const face_output *f, const incidence *inc, double *xy,
     return bad == 0;
 }
 
+/* The doubles on one line of the grid: coordinate `w` fixed to `value`,
+ * the other (u) free. Every triangle (v, a, b) around v bounds u to an open
+ * interval, exactly (GMP rationals): a sliver thinner than a unit in the
+ * last place in both axes, but long, still holds doubles on many such
+ * lines, at its exact middle there. q: 5 scratch rationals. */
+static int scan_line(const face_output *f, const incidence *inc, double *xy, long v, int w,
+                     double value, mpq_t *q, long *best_bad, double *best)
+{
+    int u = 1 - w, have_lo = 0, have_hi = 0;
+    mpq_t *lo = &q[0], *hi = &q[1], *c = &q[2], *bound = &q[3];
+    for (long i = inc->start[v]; i < inc->start[v + 1]; i++) {
+        const int32_t *t = f->tri + 3 * inc->tri[i];
+        int at = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+        const double *a = xy + 2 * t[(at + 1) % 3], *b = xy + 2 * t[(at + 2) % 3];
+        /* orient(a, b, p) = (b_u - a_u)(p_w - a_w) - (b_w - a_w)(p_u - a_u)
+         * for u = x, the negative for u = y: c (p_u - a_u) + r. */
+        mpq_t *r = bound, *d = &q[4];
+        mpq_set_d(*r, value), mpq_set_d(*d, a[w]), mpq_sub(*r, *r, *d);
+        mpq_set_d(*c, b[u]), mpq_set_d(*d, a[u]), mpq_sub(*c, *c, *d);
+        mpq_mul(*r, *r, *c);
+        mpq_set_d(*c, b[w]), mpq_set_d(*d, a[w]), mpq_sub(*c, *c, *d);
+        if (u == 1) mpq_neg(*r, *r); else mpq_neg(*c, *c);
+        /* orient = c (P_u - a_u) + r > 0 */
+        int sign = mpq_sgn(*c);
+        if (sign == 0) {
+            if (mpq_sgn(*r) <= 0) return 0;
+            continue;
+        }
+        mpq_div(*r, *r, *c);
+        mpq_neg(*r, *r);
+        mpq_set_d(*c, a[u]);
+        mpq_add(*r, *r, *c);                           /* a_u - r / c */
+        if (sign > 0 && (!have_lo || mpq_cmp(*r, *lo) > 0)) mpq_set(*lo, *r), have_lo = 1;
+        if (sign < 0 && (!have_hi || mpq_cmp(*r, *hi) < 0)) mpq_set(*hi, *r), have_hi = 1;
+    }
+    if (!have_lo || !have_hi || mpq_cmp(*lo, *hi) >= 0) return 0;
+    mpq_add(*lo, *lo, *hi);
+    mpq_div_2exp(*lo, *lo, 1);
+    double mid = mpq_get_d(*lo), cand[3] = {mid, nextafter(mid, -INFINITY), nextafter(mid, INFINITY)};
+    for (int i = 0; i < 3; i++) {
+        double p[2];
+        p[u] = cand[i], p[w] = value;
+        if (try_candidate(f, inc, xy, v, p[0], p[1], best_bad, best)) return 1;
+    }
+    return 0;
+}
+
 /* Moves v to a better place if there is one among the candidates. */
 static int move_vertex(const face_output *f, const incidence *inc, double *xy, long v)
 {
@@ -677,6 +725,19 @@ static int move_vertex(const face_output *f, const incidence *inc, double *xy, l
         for (int i = -r; i <= r && !done; i++)
             for (int k = -r; k <= r && !done; k += (abs(i) == r ? 1 : 2 * r))
                 done = try_candidate(f, inc, xy, v, x + i * ux, y + k * uy, &best_bad, best);
+    if (!done) {
+        mpq_t q[5];
+        for (int i = 0; i < 5; i++) mpq_init(q[i]);
+        const double base[2][2] = {{x, y}, {cx, cy}};
+        for (int i = 0; i <= REPAIR_LINES && !done; i++)
+            for (int b = 0; b < 2 && !done; b++)
+                for (int w = 0; w < 2 && !done; w++) {
+                    double at = base[b][w], step = unit_in_last_place(at);
+                    done = scan_line(f, inc, xy, v, w, at + i * step, q, &best_bad, best) ||
+                           (i > 0 && scan_line(f, inc, xy, v, w, at - i * step, q, &best_bad, best));
+                }
+        for (int i = 0; i < 5; i++) mpq_clear(q[i]);
+    }
     if (best_bad >= bad) return 0;
     xy[2 * v] = best[0], xy[2 * v + 1] = best[1];
     return 1;
@@ -690,13 +751,13 @@ static long repair_geometry(const face_output *f, const incidence *inc, size_t j
     long bad = 0;
     for (int pass = 0; pass < REPAIR_PASSES; pass++) {
         int moved = 0;
-        bad = 0;
-        for (long t = 0; t < (long)f->nt; t++) {
-            if (!inverted(f, xy, t)) continue;
+        for (long t = 0; t < (long)f->nt; t++)
             for (int e = 0; e < 3 && inverted(f, xy, t); e++)
                 if ((size_t)f->tri[3 * t + e] >= fixed) moved |= move_vertex(f, inc, xy, f->tri[3 * t + e]);
-            bad += inverted(f, xy, t);
-        }
+        /* Counted afresh: a move may invert a triangle passed earlier, as
+         * long as it rights more than that around its vertex. */
+        bad = 0;
+        for (long t = 0; t < (long)f->nt; t++) bad += inverted(f, xy, t);
         if (bad == 0 || !moved) break;
     }
     return bad;
