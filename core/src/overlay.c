@@ -596,7 +596,7 @@ static int triangulate_face(face_output *f, long *face, long m)
  * along its length). */
 #define REPAIR_RINGS 12
 #define REPAIR_PASSES 64
-#define REPAIR_LINES 64
+#define REPAIR_LINES 256
 
 typedef struct incidence {
     long *start, *tri; /* triangles around each vertex */
@@ -692,8 +692,10 @@ static int scan_line(const face_output *f, const incidence *inc, double *xy, lon
     return 0;
 }
 
-/* Moves v to a better place if there is one among the candidates. */
-static int move_vertex(const face_output *f, const incidence *inc, double *xy, long v)
+/* Moves v to a better place if there is one among the candidates; home is
+ * where the construction put it, next to its exact position. */
+static int move_vertex(const face_output *f, const incidence *inc, double *xy, long v,
+                       const double *home)
 {
     long bad = inverted_around(f, inc, xy, v), deg = inc->start[v + 1] - inc->start[v];
     if (bad == 0 || deg == 0) return 0;
@@ -728,9 +730,9 @@ static int move_vertex(const face_output *f, const incidence *inc, double *xy, l
     if (!done) {
         mpq_t q[5];
         for (int i = 0; i < 5; i++) mpq_init(q[i]);
-        const double base[2][2] = {{x, y}, {cx, cy}};
+        const double base[3][2] = {{home[0], home[1]}, {x, y}, {cx, cy}};
         for (int i = 0; i <= REPAIR_LINES && !done; i++)
-            for (int b = 0; b < 2 && !done; b++)
+            for (int b = 0; b < 3 && !done; b++)
                 for (int w = 0; w < 2 && !done; w++) {
                     double at = base[b][w], step = unit_in_last_place(at);
                     done = scan_line(f, inc, xy, v, w, at + i * step, q, &best_bad, best) ||
@@ -747,19 +749,23 @@ static int move_vertex(const face_output *f, const incidence *inc, double *xy, l
  * of memory. Vertices below `fixed` (the polygon's) never move. */
 static long repair_geometry(const face_output *f, const incidence *inc, size_t j, size_t fixed)
 {
-    double *xy = f->xy[j];
+    double *xy = f->xy[j], *home = malloc(2 * f->nv * sizeof *home);
     long bad = 0;
+    if (!home) return -1;
+    memcpy(home, xy, 2 * f->nv * sizeof *home);
     for (int pass = 0; pass < REPAIR_PASSES; pass++) {
         int moved = 0;
         for (long t = 0; t < (long)f->nt; t++)
             for (int e = 0; e < 3 && inverted(f, xy, t); e++)
-                if ((size_t)f->tri[3 * t + e] >= fixed) moved |= move_vertex(f, inc, xy, f->tri[3 * t + e]);
+                if ((size_t)f->tri[3 * t + e] >= fixed) moved |= move_vertex(f, inc, xy, f->tri[3 * t + e],
+                                         home + 2 * f->tri[3 * t + e]);
         /* Counted afresh: a move may invert a triangle passed earlier, as
          * long as it rights more than that around its vertex. */
         bad = 0;
         for (long t = 0; t < (long)f->nt; t++) bad += inverted(f, xy, t);
         if (bad == 0 || !moved) break;
     }
+    free(home);
     return bad;
 }
 
@@ -849,6 +855,7 @@ cm_status cm_overlay(const double *const *geoms, const int32_t *const *tris, siz
     if (incidence_build(&f, &inc)) { free(inc.start), free(inc.tri); goto done; }
     for (size_t j = 0; j < k; j++) {
         long bad = repair_geometry(&f, &inc, j, n);
+        if (bad < 0) { free(inc.start), free(inc.tri); goto done; }
         if (bad > 0) {
             free(inc.start), free(inc.tri);
             status = cm_fail(r, CM_ERR_INTERNAL,
