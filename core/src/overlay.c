@@ -596,7 +596,7 @@ static int triangulate_face(face_output *f, long *face, long m)
  * along its length). */
 #define REPAIR_RINGS 12
 #define REPAIR_PASSES 64
-#define REPAIR_LINES 256
+#define REPAIR_LINES 16
 
 typedef struct incidence {
     long *start, *tri; /* triangles around each vertex */
@@ -692,6 +692,212 @@ static int scan_line(const face_output *f, const incidence *inc, double *xy, lon
     return 0;
 }
 
+/* ---- a double inside a star thinner than the spacing of doubles ------- */
+
+/* In grid units around an origin O on the grid of doubles at spacing
+ * (ux, uy) (powers of two no finer than any coordinate of the star needs,
+ * so every grid point there is a double), v = O + (i ux, j uy) makes the
+ * triangle (v, a, b) counter-clockwise iff A i + B j + C > 0, exactly. */
+typedef struct { mpq_t a, b, c; } grid_constraint;
+
+typedef struct { mpq_t i, j; } grid_point;
+
+#define LATTICE_MAX_VERTICES 64
+#define LATTICE_CONVERGENTS 96
+#define LATTICE_ROWS 24
+
+/* Sutherland-Hodgman on exact points: keeps a i + b j + c >= 0. */
+static int clip_polygon(grid_point *p, int count, grid_point *out, const grid_constraint *h, mpq_t *t)
+{
+    int m = 0;
+    for (int k = 0; k < count && m + 2 <= LATTICE_MAX_VERTICES; k++) {
+        const grid_point *u = &p[k], *w = &p[(k + 1) % count];
+        mpq_mul(t[0], h->a, u->i), mpq_mul(t[1], h->b, u->j), mpq_add(t[0], t[0], t[1]), mpq_add(t[0], t[0], h->c);
+        mpq_mul(t[1], h->a, w->i), mpq_mul(t[2], h->b, w->j), mpq_add(t[1], t[1], t[2]), mpq_add(t[1], t[1], h->c);
+        int su = mpq_sgn(t[0]), sw = mpq_sgn(t[1]);
+        if (su >= 0) mpq_set(out[m].i, u->i), mpq_set(out[m].j, u->j), m++;
+        if (su * sw < 0) { /* u + (w - u) su / (su - sw) */
+            mpq_sub(t[2], t[0], t[1]);
+            mpq_div(t[2], t[0], t[2]);
+            mpq_sub(t[3], w->i, u->i), mpq_mul(t[3], t[3], t[2]), mpq_add(out[m].i, u->i, t[3]);
+            mpq_sub(t[3], w->j, u->j), mpq_mul(t[3], t[3], t[2]), mpq_add(out[m].j, u->j, t[3]);
+            m++;
+        }
+    }
+    return m;
+}
+
+/* Lattice points of one row: (i, j) = s e1 + t e2 for integer s at a fixed
+ * integer t. Tries the first integer s inside the open interval the
+ * constraints allow. */
+static int lattice_row(const face_output *f, const incidence *inc, double *xy, long v,
+                       const grid_constraint *h, int nh, const mpq_t *e, const mpq_t row,
+                       const double *origin, const double *unit, mpq_t *t, long *best_bad, double *best)
+{
+    int have_lo = 0, have_hi = 0;
+    mpq_t *lo = &t[0], *hi = &t[1], *cs = &t[2], *r = &t[3], *tmp = &t[4];
+    for (int k = 0; k < nh; k++) {
+        mpq_mul(*cs, h[k].a, e[0]), mpq_mul(*tmp, h[k].b, e[1]), mpq_add(*cs, *cs, *tmp);
+        mpq_mul(*r, h[k].a, e[2]), mpq_mul(*tmp, h[k].b, e[3]), mpq_add(*r, *r, *tmp);
+        mpq_mul(*r, *r, row), mpq_add(*r, *r, h[k].c);             /* cs s + r > 0 */
+        int sign = mpq_sgn(*cs);
+        if (sign == 0) {
+            if (mpq_sgn(*r) <= 0) return 0;
+            continue;
+        }
+        mpq_div(*r, *r, *cs), mpq_neg(*r, *r);
+        if (sign > 0 && (!have_lo || mpq_cmp(*r, *lo) > 0)) mpq_set(*lo, *r), have_lo = 1;
+        if (sign < 0 && (!have_hi || mpq_cmp(*r, *hi) < 0)) mpq_set(*hi, *r), have_hi = 1;
+    }
+    if (!have_lo || !have_hi || mpq_cmp(*lo, *hi) >= 0) return 0;
+    mpz_fdiv_q(mpq_numref(*tmp), mpq_numref(*lo), mpq_denref(*lo));
+    mpz_add_ui(mpq_numref(*tmp), mpq_numref(*tmp), 1);
+    mpz_set_ui(mpq_denref(*tmp), 1);                                 /* floor(lo) + 1 */
+    if (mpq_cmp(*tmp, *hi) >= 0) return 0;
+    double p[2];
+    for (int axis = 0; axis < 2; axis++) {
+        mpq_mul(*r, *tmp, e[axis]), mpq_mul(*cs, row, e[2 + axis]), mpq_add(*r, *r, *cs);
+        mpq_set_d(*cs, unit[axis]), mpq_mul(*r, *r, *cs);
+        mpq_set_d(*cs, origin[axis]), mpq_add(*r, *r, *cs);
+        p[axis] = mpq_get_d(*r);
+    }
+    return try_candidate(f, inc, xy, v, p[0], p[1], best_bad, best);
+}
+
+/* Finds a double strictly inside the star's kernel when that kernel is a
+ * sliver thinner than the spacing of doubles in every axis direction but
+ * long enough to hold some: its exact shape R (in grid units), its long
+ * direction D, and the continued fraction of D's slope give integer
+ * vectors e1 nearly parallel to D with a partner e2 (det = +-1); the rows
+ * t e2 + s e1 then run along the sliver, and a row through its middle holds
+ * an integer s wherever R is longer than e1. A few convergents and rows
+ * are tried; every candidate is checked exactly. */
+static int lattice_search(const face_output *f, const incidence *inc, double *xy, long v,
+                          const double *home, long *best_bad, double *best)
+{
+    long deg = inc->start[v + 1] - inc->start[v];
+    if (deg + 4 > LATTICE_MAX_VERTICES) return 0;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    for (long k = inc->start[v]; k < inc->start[v + 1]; k++)
+        for (int e = 0; e < 3; e++) {
+            const double *u = xy + 2 * f->tri[3 * inc->tri[k] + e];
+            for (int axis = 0; axis < 2; axis++) lo[axis] = fmin(lo[axis], u[axis]), hi[axis] = fmax(hi[axis], u[axis]);
+        }
+    double unit[2], origin[2];
+    for (int axis = 0; axis < 2; axis++) {
+        unit[axis] = unit_in_last_place(fmax(fabs(lo[axis]), fabs(hi[axis])));
+        origin[axis] = unit[axis] * nearbyint(home[axis] / unit[axis]);
+        if (!(unit[axis] > 0) || !isfinite(origin[axis])) return 0;
+    }
+    int found = 0, nh = (int)deg, count = 4;
+    grid_constraint h[LATTICE_MAX_VERTICES];
+    grid_point poly[2][LATTICE_MAX_VERTICES];
+    mpq_t t[8], e[4], conv[LATTICE_CONVERGENTS + 2][2], row, tlo, thi;
+    for (int k = 0; k < 8; k++) mpq_init(t[k]);
+    for (int k = 0; k < 4; k++) mpq_init(e[k]);
+    for (int k = 0; k < LATTICE_CONVERGENTS + 2; k++) mpq_init(conv[k][0]), mpq_init(conv[k][1]);
+    mpq_init(row), mpq_init(tlo), mpq_init(thi);
+    for (int k = 0; k < nh; k++) mpq_init(h[k].a), mpq_init(h[k].b), mpq_init(h[k].c);
+    for (int b = 0; b < 2; b++)
+        for (int k = 0; k < LATTICE_MAX_VERTICES; k++) mpq_init(poly[b][k].i), mpq_init(poly[b][k].j);
+
+    for (int k = 0; k < nh; k++) {
+        const int32_t *c = f->tri + 3 * inc->tri[inc->start[v] + k];
+        int at = c[0] == v ? 0 : c[1] == v ? 1 : 2;
+        const double *a = xy + 2 * c[(at + 1) % 3], *b = xy + 2 * c[(at + 2) % 3];
+        /* orient(a, b, O + (i ux, j uy)) = (bx - ax)(Oy + j uy - ay) - (by - ay)(Ox + i ux - ax) */
+        mpq_set_d(t[0], b[0]), mpq_set_d(t[1], a[0]), mpq_sub(t[0], t[0], t[1]);   /* dx */
+        mpq_set_d(t[1], b[1]), mpq_set_d(t[2], a[1]), mpq_sub(t[1], t[1], t[2]);   /* dy */
+        mpq_set_d(t[2], unit[1]), mpq_mul(h[k].b, t[0], t[2]);
+        mpq_set_d(t[2], unit[0]), mpq_mul(h[k].a, t[1], t[2]), mpq_neg(h[k].a, h[k].a);
+        mpq_set_d(t[2], origin[1]), mpq_set_d(t[3], a[1]), mpq_sub(t[2], t[2], t[3]), mpq_mul(t[2], t[2], t[0]);
+        mpq_set_d(t[3], origin[0]), mpq_set_d(t[4], a[0]), mpq_sub(t[3], t[3], t[4]), mpq_mul(t[3], t[3], t[1]);
+        mpq_sub(h[k].c, t[2], t[3]);
+    }
+    /* R: the star's bounding box clipped by every constraint. */
+    for (int k = 0; k < 4; k++) {
+        double gx = (k == 1 || k == 2) ? hi[0] : lo[0], gy = k >= 2 ? hi[1] : lo[1];
+        mpq_set_d(t[0], gx), mpq_set_d(t[1], origin[0]), mpq_sub(t[0], t[0], t[1]);
+        mpq_set_d(t[1], unit[0]), mpq_div(poly[0][k].i, t[0], t[1]);
+        mpq_set_d(t[0], gy), mpq_set_d(t[1], origin[1]), mpq_sub(t[0], t[0], t[1]);
+        mpq_set_d(t[1], unit[1]), mpq_div(poly[0][k].j, t[0], t[1]);
+    }
+    int cur = 0;
+    for (int k = 0; k < nh && count >= 3; k++) {
+        count = clip_polygon(poly[cur], count, poly[1 - cur], &h[k], t);
+        cur = 1 - cur;
+    }
+    if (count < 3) goto done;
+    /* Its long direction: the farthest pair of corners. */
+    int fa = 0, fb = 0;
+    double far = -1;
+    for (int a = 0; a < count; a++)
+        for (int b = a + 1; b < count; b++) {
+            mpq_sub(t[0], poly[cur][a].i, poly[cur][b].i), mpq_sub(t[1], poly[cur][a].j, poly[cur][b].j);
+            double d = hypot(mpq_get_d(t[0]), mpq_get_d(t[1]));
+            if (d > far) far = d, fa = a, fb = b;
+        }
+    mpq_sub(t[6], poly[cur][fb].i, poly[cur][fa].i), mpq_sub(t[7], poly[cur][fb].j, poly[cur][fa].j);
+    mpq_abs(t[0], t[6]), mpq_abs(t[1], t[7]);
+    int primary = mpq_cmp(t[0], t[1]) >= 0 ? 0 : 1;                      /* the longer axis */
+    if (mpq_sgn(primary ? t[7] : t[6]) == 0) goto done;
+    /* Convergents h/k of the slope r = D_other / D_primary, as vectors
+     * (primary, other) = (k, h), from h_-1/k_-1 = 1/0 and h_-2/k_-2 = 0/1. */
+    mpq_div(t[2], primary ? t[6] : t[7], primary ? t[7] : t[6]);     /* r */
+    mpz_t num, den, a_k, rem;
+    mpz_inits(num, den, a_k, rem, NULL);
+    mpz_set(num, mpq_numref(t[2])), mpz_set(den, mpq_denref(t[2]));
+    mpq_set_ui(conv[0][0], 1, 1), mpq_set_ui(conv[0][1], 0, 1);      /* (k, h) of index -2: k=1, h=0 */
+    mpq_set_ui(conv[1][0], 0, 1), mpq_set_ui(conv[1][1], 1, 1);      /* index -1: k=0, h=1 */
+    int nconv = 2;
+    while (nconv < LATTICE_CONVERGENTS + 2 && mpz_sgn(den) != 0) {
+        mpz_fdiv_qr(a_k, rem, num, den);
+        mpz_set(num, den), mpz_set(den, rem);
+        mpq_set_z(t[3], a_k);
+        for (int c = 0; c < 2; c++) {
+            mpq_mul(conv[nconv][c], conv[nconv - 1][c], t[3]);
+            mpq_add(conv[nconv][c], conv[nconv][c], conv[nconv - 2][c]);
+        }
+        if (hypot(mpq_get_d(conv[nconv][0]), mpq_get_d(conv[nconv][1])) > far) break;
+        nconv++;
+    }
+    mpz_clears(num, den, a_k, rem, NULL);
+    /* From the longest e1 that fits in R down. */
+    for (int c = nconv - 1; c >= 2 && !found; c--) {
+        for (int which = 0; which < 2; which++) {
+            const mpq_t *src = which == 0 ? conv[c] : conv[c - 1];
+            mpq_set(e[2 * which + primary], src[0]);                  /* k along the primary axis */
+            mpq_set(e[2 * which + 1 - primary], src[1]);
+        }
+        /* Rows t = cross(e1, P) / cross(e1, e2) over R's corners. */
+        mpq_mul(t[0], e[0], e[3]), mpq_mul(t[1], e[1], e[2]), mpq_sub(t[5], t[0], t[1]); /* det */
+        for (int k = 0; k < count; k++) {
+            mpq_mul(t[0], e[0], poly[cur][k].j), mpq_mul(t[1], e[1], poly[cur][k].i);
+            mpq_sub(t[0], t[0], t[1]), mpq_div(t[0], t[0], t[5]);
+            if (k == 0 || mpq_cmp(t[0], tlo) < 0) mpq_set(tlo, t[0]);
+            if (k == 0 || mpq_cmp(t[0], thi) > 0) mpq_set(thi, t[0]);
+        }
+        mpq_add(row, tlo, thi), mpq_div_2exp(row, row, 1);
+        mpz_fdiv_q(mpq_numref(t[6]), mpq_numref(row), mpq_denref(row));
+        mpz_set_ui(mpq_denref(t[6]), 1);                             /* the middle row */
+        for (int r = 0; r < LATTICE_ROWS && !found; r++) {
+            mpq_set_si(t[7], (r + 1) / 2 * (r % 2 ? 1 : -1), 1);
+            mpq_add(row, t[6], t[7]);
+            if (mpq_cmp(row, tlo) < 0 || mpq_cmp(row, thi) > 0) continue;
+            found = lattice_row(f, inc, xy, v, h, nh, e, row, origin, unit, t, best_bad, best);
+        }
+    }
+done:
+    for (int k = 0; k < 8; k++) mpq_clear(t[k]);
+    for (int k = 0; k < 4; k++) mpq_clear(e[k]);
+    for (int k = 0; k < LATTICE_CONVERGENTS + 2; k++) mpq_clear(conv[k][0]), mpq_clear(conv[k][1]);
+    mpq_clear(row), mpq_clear(tlo), mpq_clear(thi);
+    for (int k = 0; k < nh; k++) mpq_clear(h[k].a), mpq_clear(h[k].b), mpq_clear(h[k].c);
+    for (int b = 0; b < 2; b++)
+        for (int k = 0; k < LATTICE_MAX_VERTICES; k++) mpq_clear(poly[b][k].i), mpq_clear(poly[b][k].j);
+    return found;
+}
+
 /* Moves v to a better place if there is one among the candidates; home is
  * where the construction put it, next to its exact position. */
 static int move_vertex(const face_output *f, const incidence *inc, double *xy, long v,
@@ -740,6 +946,7 @@ static int move_vertex(const face_output *f, const incidence *inc, double *xy, l
                 }
         for (int i = 0; i < 5; i++) mpq_clear(q[i]);
     }
+    if (!done) done = lattice_search(f, inc, xy, v, home, &best_bad, best);
     if (best_bad >= bad) return 0;
     xy[2 * v] = best[0], xy[2 * v + 1] = best[1];
     return 1;
