@@ -1009,6 +1009,61 @@ done:
     return status;
 }
 
+/* Repairs every geometry; 0 when all are valid, 1 (with the count and
+ * the geometry left inverted) when not, -1 out of memory. */
+static int repair_all(face_output *f, size_t fixed, long *bad, size_t *where)
+{
+    incidence inc = {NULL, NULL};
+    int status = -1;
+    if (incidence_build(f, &inc)) goto done;
+    status = 0;
+    for (size_t j = 0; j < f->k && status == 0; j++) {
+        *bad = repair_geometry(f, &inc, j, fixed);
+        if (*bad < 0) status = -1;
+        else if (*bad > 0) status = 1, *where = j;
+    }
+done:
+    free(inc.start), free(inc.tri);
+    return status;
+}
+
+/* The last resort when the overlay's Steiner vertices cannot all be placed
+ * (several of them crowded into one sliver thinner than the spacing of
+ * doubles): a polygon star-shaped in every geometry is a fan around one
+ * vertex placed in each kernel, and the repair's search (down to the
+ * lattice search in a sliver kernel) is what places it. Returns 0 with
+ * *fan filled, 1 when some geometry has no such vertex, -1 out of memory. */
+static int star_fan(const double *const *geoms, size_t k, size_t n, face_output *fan)
+{
+    memset(fan, 0, sizeof *fan);
+    fan->k = k;
+    fan->nv = fan->cap_v = n + 1;
+    fan->xy = calloc(k, sizeof *fan->xy);
+    if (!fan->xy) return -1;
+    int status = -1;
+    for (size_t j = 0; j < k; j++) {
+        fan->xy[j] = malloc(2 * (n + 1) * sizeof *fan->xy[j]);
+        if (!fan->xy[j]) goto done;
+        memcpy(fan->xy[j], geoms[j], 2 * n * sizeof *fan->xy[j]);
+        double sx = 0, sy = 0;
+        for (size_t i = 0; i < n; i++) sx += geoms[j][2 * i] / (double)n, sy += geoms[j][2 * i + 1] / (double)n;
+        fan->xy[j][2 * n] = sx, fan->xy[j][2 * n + 1] = sy;
+    }
+    for (size_t i = 0; i < n; i++)
+        if (emit_triangle(fan, (long)i, (long)((i + 1) % n), (long)n)) goto done;
+    long bad = 0;
+    size_t where = 0;
+    status = repair_all(fan, n, &bad, &where);
+    fan->centroids = 1;
+done:
+    if (status != 0) {
+        for (size_t j = 0; j < k; j++) free(fan->xy[j]);
+        free(fan->xy), free(fan->tri);
+        memset(fan, 0, sizeof *fan);
+    }
+    return status;
+}
+
 /* ---- the whole construction ---------------------------------------------- */
 
 static void overlay_free(overlay *o)
@@ -1058,20 +1113,24 @@ cm_status cm_overlay(const double *const *geoms, const int32_t *const *tris, siz
         status = cm_fail(r, CM_ERR_INTERNAL, "overlay: the overlay's outer face is not the boundary");
         goto done;
     }
-    incidence inc = {NULL, NULL};
-    if (incidence_build(&f, &inc)) { free(inc.start), free(inc.tri); goto done; }
-    for (size_t j = 0; j < k; j++) {
-        long bad = repair_geometry(&f, &inc, j, n);
-        if (bad < 0) { free(inc.start), free(inc.tri); goto done; }
-        if (bad > 0) {
-            free(inc.start), free(inc.tri);
+    long bad = 0;
+    size_t where = 0;
+    s = repair_all(&f, n, &bad, &where);
+    if (s < 0) goto done;
+    if (s > 0) {
+        face_output fan;
+        s = star_fan(geoms, k, n, &fan);
+        if (s < 0) goto done;
+        if (s > 0) {
             status = cm_fail(r, CM_ERR_INTERNAL,
                              "overlay: %ld triangles of geometry %zu stay inverted: no double "
-                             "position found for their Steiner vertices", bad, j);
+                             "position found for their Steiner vertices", bad, where);
             goto done;
         }
+        for (size_t j = 0; j < k; j++) free(f.xy[j]);
+        free(f.xy), free(f.tri);
+        f = fan;
     }
-    free(inc.start), free(inc.tri);
     out->k = k;
     out->nv = f.nv;
     out->nt = f.nt;
