@@ -590,10 +590,12 @@ static int triangulate_face(face_output *f, long *face, long m)
  * candidate that makes all its triangles positive, or else to the one that
  * leaves fewest inverted; a move is taken only when that count drops, so
  * the count of inverted triangles falls with every move and the repair
- * ends. Candidates: the centroid of its neighbours, points on the way to
- * each neighbour, and the doubles within REPAIR_RINGS units in the last
- * place around it (a sliver thinner than one unit still contains doubles
- * along its length). */
+ * ends. Candidates, cheapest first: the centroid of its neighbours, points
+ * on the way to each neighbour, the doubles within REPAIR_RINGS units in
+ * the last place around it, REPAIR_LINES rows and columns of doubles
+ * through it (scan_line), and last the lattice search for a star whose
+ * kernel is a sliver thinner than one unit (lattice_search). Every
+ * candidate is checked with exact predicates. */
 #define REPAIR_RINGS 12
 #define REPAIR_PASSES 64
 #define REPAIR_LINES 16
