@@ -20,7 +20,7 @@
 typedef struct {
     const char *name;
     size_t n;
-    double xy[2][14];
+    double xy[2][16];
 } sliver_case;
 
 static const sliver_case cases[] = {
@@ -144,12 +144,31 @@ static const sliver_case cases[] = {
      {0x1.2e5b99558bfcp-3, 0x1.283d46379df26p-2, 0x1.022c3dc25ba2dp-3, 0x1.0c5c36545e32cp-2, 0x1.5a8af9e0b23a6p-3, 0x1.441e593d6d765p-2, 0x1.2d5fbda7b0d71p-3, 0x1.279e5c5ecc24ep-2}}},
     {"soak_59", 4, {{0x1.51c84a5762c4fp-3, 0x1.2bc53047e4bacp-1, 0x1.4005c155c5bd9p-3, 0x1.21113be3137a1p-1, 0x1.2e4335436ad3ap-3, 0x1.165d45a5562d4p-1, 0x1.1c80a9310fe9bp-3, 0x1.0ba94f6798e06p-1},
      {-0x1.737aab739d1eap-4, -0x1.298df37af1e4fp-1, -0x1.348ae6d7a1d86p-4, -0x1.29d513bbfc739p-1, -0x1.eb36247c67beep-5, -0x1.2a1c340f191a1p-1, -0x1.6d567b498bcd2p-5, -0x1.2a63546235c09p-1}}},
+    {"soak_after_0", 6, {{0x1.00e6c1f0f1746p-2, 0x1.398636c365a2p-2, 0x1.00f9cc6dafa32p-2, 0x1.3995e25eb4303p-2, 0x1.010cd6e057947p-2, 0x1.39a58dfbc663ap-2, 0x1.009a9813e8d9ap-2, 0x1.3947885cba5c6p-2, 0x1.00ada28ee3631p-2, 0x1.395733edf2ad1p-2, 0x1.00b38c427f72ap-2, 0x1.395c11b911031p-2},
+     {-0x1.8087425ada361p-2, -0x1.2a89328ed2ea1p-3, -0x1.8b76a54cca30bp-2, -0x1.4b36e6fe878fbp-3, -0x1.9666060530fe6p-2, -0x1.6be494c83b06fp-3, -0x1.54c9bb062ca56p-2, -0x1.4fa4dc380560ap-4, -0x1.5fb91df81cap-2, -0x1.910045176eabcp-4, -0x1.6b347781122e2p-2, -0x1.d5a036b3352d1p-4}}},
+    {"soak_after_1", 7, {{-0x1.cb70f1f7ca9eep-2, -0x1.ac057d941b1ccp-3, -0x1.027e163eadcecp-1, -0x1.3d1c5ad966638p-6, -0x1.5d22f64e752a9p-1, -0x1.f220d2bf7801p-3, -0x1.5d57072862c44p-1, -0x1.f3282dcff567dp-3, -0x1.38e4784a8f694p-1, -0x1.3acd007ee7164p-3, -0x1.027e70c5b970cp-1, -0x1.3d2aaa0c911ep-6, -0x1.e836e9c19ec03p-2, -0x1.d3aad2d5ad408p-4},
+     {0x1.9e9dbe5721245p-2, 0x1.b456e4dd1a244p-2, 0x1.d3d58b70ac2a5p-2, 0x1.aae0ef25a3934p-2, 0x1.93c179fa2f7e4p-2, 0x1.eb142d5be54cep-2, 0x1.6e97f0960ef3p-2, 0x1.595ff2681048fp-1, 0x1.b0feb331bc492p-2, 0x1.6a800fde7e98bp-1, 0x1.888e401d0ba04p-2, 0x1.71082ff105c39p-1, 0x1.6675ac15b8bc8p-2, 0x1.67a3f84f589ccp-1}}},
+    {"soak_after_2", 6, {{0x1.b73bddb3a88dcp-3, -0x1.e69f716c17689p-2, 0x1.725700662f438p-2, -0x1.021b3fac423dp-1, 0x1.85d510a0dc438p-2, -0x1.320834751368ap-1, 0x1.89a3666d34ea2p-2, -0x1.0464b779060f3p-1, 0x1.3e7f17b56ec34p-4, -0x1.cb23aa07d686ap-2, 0x1.553d27748757ep-3, -0x1.dd00eba29a4cbp-2},
+     {-0x1.9e83e0637f1e9p-9, -0x1.c7d7d94944bf8p-8, -0x1.a00b31f8cae88p-9, -0x1.c73d72f1fd37cp-8, -0x1.a0d062961bbf6p-9, -0x1.c73f84b11eed4p-8, -0x1.a4c650309f0afp-9, -0x1.c5dbf3073dedep-8, -0x1.a4a0e4be828ep-9, -0x1.c5fe94c36b2bcp-8, -0x1.9fecce8968a9ep-9, -0x1.c78ba5181c871p-8}}},
+    {"soak_after_3", 6, {{0x1.0b33b59a35aadp-2, -0x1.b845cc9cfe7p-11, 0x1.4c2e9a63ef7ecp-3, -0x1.907fc52f9a648p-6, 0x1.f3aadff0efe6dp-3, -0x1.1bc3a6a1b8516p-7, 0x1.d48942850e1fp-2, 0x1.595dcb1ef2536p-4, 0x1.33589111cc9dap-2, 0x1.8e16d26324b88p-6, 0x1.4ed8eeb14a53ep-2, 0x1.ed49a96c19e21p-6},
+     {0x1.1701e7990d4fep-1, 0x1.ec14c4fb5b46fp-2, 0x1.031c23bd6d164p-1, 0x1.86155e05f3a53p-2, 0x1.d7e9c5baff979p-2, 0x1.0f65610afb6dap-2, 0x1.a99b43fb2502ap-2, 0x1.316ac820066cp-3, 0x1.1f79920e593e6p-1, 0x1.0bbe464816868p-1, 0x1.19f896754e49cp-1, 0x1.fb45e46f717f7p-2}}},
+    {"soak_after_4", 8, {{-0x1.009101c715666p-2, -0x1.73e14cfa8cd3ap-2, -0x1.29774031e6ed3p-1, -0x1.a664376be5acbp-3, -0x1.049d63127cc7cp-2, -0x1.800760e9e2a8cp-2, -0x1.0401e585f1d71p-3, -0x1.181e5d89270aap-4, -0x1.05e9fef99df18p-2, 0x1.c77c5b43ce5ap-4, -0x1.d0b609133f2c4p-2, 0x1.25fad65624254p-5, -0x1.00b1fec4d1492p-2, 0x1.a3f1507e2a0ep-4, -0x1.6b6368e6b4b54p-3, -0x1.34ca0d80fc59p-4},
+     {-0x1.3ceada32a3011p-2, -0x1.f2f7b4e914c54p-2, -0x1.a815fac449051p-2, -0x1.2073163b99d18p-1, -0x1.93c7c790e2adbp-4, -0x1.1d9ad36f62871p-1, -0x1.fae9facf73837p-4, -0x1.06e87ecb4c33bp-3, -0x1.b5239e9e1622ep-4, -0x1.1dad9efc36531p-1, -0x1.2de58402e7f83p-2, -0x1.1f5fb596517ccp-1, -0x1.5de465df89833p-2, -0x1.4938c8d5cefc1p-2, -0x1.4d67a00916422p-2, -0x1.9e183edf71e0ap-2}}},
+    {"soak_after_5", 4, {{-0x1.0ae2b98412d1fp-1, -0x1.c980b1f720e9fp-5, -0x1.124a7a47e5e9ap-1, -0x1.7a34b27e938d2p-4, -0x1.0ae2b98412d1fp-1, -0x1.c980b1f720eap-5, -0x1.71eade0388361p-2, 0x1.25e2f5db2342p-16},
+     {0x1.33533fe9ddca4p-4, -0x1.7140a51474fdep-2, 0x1.745ca7769c72dp-2, -0x1.05a56ee9416bdp-1, 0x1.9e45d32f4e8c7p-2, -0x1.07c4a9bb6d4a2p-1, 0x1.355131925ee08p-2, -0x1.ea2d9fdd60ae9p-2}}},
+    {"soak_after_6", 6, {{0x1.124679d9252e7p-7, -0x1.2d913d42f44aap-1, -0x1.b47d3e2d8a8p-8, -0x1.f8e19593e94c3p-2, 0x1.7536a3d47993p-7, -0x1.42d0b0ede1e5cp-1, 0x1.d8b3d280bdc75p-2, -0x1.57df09270a018p-1, 0x1.c119eb82783cbp-2, -0x1.4e8bb1afaaa61p-1, 0x1.e6431cd038f83p-3, -0x1.4cc1c4a90e783p-1},
+     {0x1.bfe563ca71a56p-2, 0x1.2996f1d75262p-1, 0x1.69803eab498cep-2, 0x1.292dc91f37faep-1, 0x1.973ca241754acp-2, 0x1.e609435114caep-3, 0x1.9019502628479p-2, 0x1.29d9f7d8083aap-2, 0x1.733fe1acfb2b8p-2, 0x1.03bc242c6ddecp-1, 0x1.9992a2bbb6687p-2, 0x1.16a98b01e0206p-1}}},
 };
 
 /* Not star-shaped in one geometry and a sliver thinner than the spacing of
- * doubles in the other, with several Steiner vertices crowded into it: the
- * repair moves one vertex at a time and does not find these yet. */
-static const char *const open_cases[] = {"soak_47"};
+ * doubles in the other, with several Steiner vertices crowded into it (the
+ * repair moves one vertex at a time), or star-shaped everywhere but with a
+ * kernel holding no double (soak_after_5: area 2e-35, a unit in the last
+ * place squared is 1e-32): not solved yet. The soak_after_* pieces are the
+ * ones a 20,000-pair soak still met after the repair. */
+static const char *const open_cases[] = {"soak_47",       "soak_after_0", "soak_after_1",
+                                          "soak_after_2",  "soak_after_3", "soak_after_4",
+                                          "soak_after_5",  "soak_after_6"};
 
 static int is_open(const char *name)
 {
