@@ -10,7 +10,18 @@
  * interleave (C is strictly convex, checked), and the order of crossings
  * along a chord, where floating point cannot separate them, is decided with
  * exact rational arithmetic. Only Steiner positions are rounded, and the
- * final mesh is checked exactly by the caller. */
+ * final mesh is checked exactly by the caller.
+ *
+ * Rounding can invert a triangle: real outlines give pieces whose
+ * triangles are slivers thinner than the spacing of doubles (samples along
+ * a straight edge, rotated), and a crossing rounded off its diagonal lands
+ * outside them. The faces are cut combinatorially (every triangulation of
+ * a face is valid at the exact positions), then the Steiner vertices of
+ * inverted triangles are moved, one at a time, to doubles that make their
+ * triangles positive, found exactly (repair_geometry); failing that, a
+ * polygon star-shaped in every geometry becomes a fan around one vertex
+ * placed the same way (star_fan). What stays inverted is reported as
+ * such: the construction always ends, valid or with that message. */
 #include <gmp.h>
 #include <math.h>
 #include <stdlib.h>
