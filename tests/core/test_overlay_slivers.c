@@ -201,8 +201,35 @@ static void run(const sliver_case *c, cm_method method)
     cm_result_free(r);
 }
 
+/* A pair with no valid answer in doubles, which must fail cleanly:
+ * geometry 0 is the dart (0,0) (1,1) (1,0) (2,3) (vertex 1 reflex) shifted
+ * by 2^52, where the doubles are exactly the integers; geometry 1 is the
+ * same dart with its vertices renumbered so that vertex 0 is reflex.
+ * - A Steiner vertex of a valid result lies strictly inside the polygon in
+ *   every geometry (it is an interior vertex of a disk of positive
+ *   triangles whose boundary is the polygon, covered exactly once).
+ * - The open dart holds no integer point, so no double: a valid result
+ *   has no Steiner vertex.
+ * - Without Steiner vertices two quadrilaterals share one diagonal, but
+ *   geometry 0 admits only 1-3 and geometry 1 only 0-2.
+ * The construction ends with its message about inverted triangles. */
+static void no_double_answer(void)
+{
+    const double big = 0x1p52;
+    const double a[8] = {big, big, big + 1, big + 1, big + 1, big, big + 2, big + 3};
+    const double b[8] = {1, 1, 1, 0, 2, 3, 0, 0};
+    const double *polys[2] = {a, b};
+    size_t counts[2] = {4, 4};
+    cm_result *r = NULL;
+    cm_status s = cm_triangulate_polygons(polys, counts, 2, NULL, &r);
+    CHECK_MSG(s == CM_ERR_INTERNAL && strstr(cm_result_message(r), "no double position"), "%s: %s",
+              cm_status_string(s), cm_result_message(r));
+    cm_result_free(r);
+}
+
 int main(void)
 {
+    no_double_answer();
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
         run(&cases[i], CM_METHOD_OVERLAY);
         run(&cases[i], CM_METHOD_PARTITION);
