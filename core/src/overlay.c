@@ -976,9 +976,10 @@ static long repair_geometry(const face_output *f, const incidence *inc, size_t j
     for (int pass = 0; pass < REPAIR_PASSES; pass++) {
         int moved = 0;
         for (long t = 0; t < (long)f->nt; t++)
-            for (int e = 0; e < 3 && inverted(f, xy, t); e++)
-                if ((size_t)f->tri[3 * t + e] >= fixed) moved |= move_vertex(f, inc, xy, f->tri[3 * t + e],
-                                         home + 2 * f->tri[3 * t + e]);
+            for (int e = 0; e < 3 && inverted(f, xy, t); e++) {
+                long v = f->tri[3 * t + e];
+                if ((size_t)v >= fixed) moved |= move_vertex(f, inc, xy, v, home + 2 * v);
+            }
         /* Counted afresh: a move may invert a triangle passed earlier, as
          * long as it rights more than that around its vertex. */
         bad = 0;
