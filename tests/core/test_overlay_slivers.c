@@ -6,6 +6,8 @@
  * samples along a straight glyph edge, turned by a rotation: a sliver far
  * thinner than the spacing of doubles (twice its area ~1e-18 for sides
  * ~0.1), whose one Steiner vertex the rounded crossing put outside it.
+ * offset_1e15 is the piece of cm_gen_pairs' L/T pair (n = 160) scaled by
+ * 100 and shifted by 1e15, where doubles are 1/8 apart.
  * Each must now give a valid result, checked exactly from the public
  * arrays (result_check.h), by the overlay alone and by the default
  * pipeline; except the few still open below, which must at least fail
@@ -158,6 +160,8 @@ static const sliver_case cases[] = {
      {0x1.33533fe9ddca4p-4, -0x1.7140a51474fdep-2, 0x1.745ca7769c72dp-2, -0x1.05a56ee9416bdp-1, 0x1.9e45d32f4e8c7p-2, -0x1.07c4a9bb6d4a2p-1, 0x1.355131925ee08p-2, -0x1.ea2d9fdd60ae9p-2}}},
     {"soak_after_6", 6, {{0x1.124679d9252e7p-7, -0x1.2d913d42f44aap-1, -0x1.b47d3e2d8a8p-8, -0x1.f8e19593e94c3p-2, 0x1.7536a3d47993p-7, -0x1.42d0b0ede1e5cp-1, 0x1.d8b3d280bdc75p-2, -0x1.57df09270a018p-1, 0x1.c119eb82783cbp-2, -0x1.4e8bb1afaaa61p-1, 0x1.e6431cd038f83p-3, -0x1.4cc1c4a90e783p-1},
      {0x1.bfe563ca71a56p-2, 0x1.2996f1d75262p-1, 0x1.69803eab498cep-2, 0x1.292dc91f37faep-1, 0x1.973ca241754acp-2, 0x1.e609435114caep-3, 0x1.9019502628479p-2, 0x1.29d9f7d8083aap-2, 0x1.733fe1acfb2b8p-2, 0x1.03bc242c6ddecp-1, 0x1.9992a2bbb6687p-2, 0x1.16a98b01e0206p-1}}},
+    {"offset_1e15", 4, {{0x1.c6bf5263401b9p+49, 0x1.c6bf52634002cp+49, 0x1.c6bf52634009dp+49, 0x1.c6bf526340042p+49, 0x1.c6bf52634004fp+49, 0x1.c6bf526340247p+49, 0x1.c6bf52634009ep+49, 0x1.c6bf526340021p+49},
+     {0x1.c6bf52634011cp+49, 0x1.c6bf5263401ecp+49, 0x1.c6bf52633fffep+49, 0x1.c6bf526340247p+49, 0x1.c6bf5263400cdp+49, 0x1.c6bf526340205p+49, 0x1.c6bf5263400f4p+49, 0x1.c6bf5263401f8p+49}}},
 };
 
 /* Not star-shaped in one geometry and a sliver thinner than the spacing of
