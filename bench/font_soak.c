@@ -3,8 +3,8 @@
  *
  *   cm_font_soak [--pairs N] [--first I] [--seed S] [--nmin A] [--nmax B]
  *                [--time-limit SEC] [--method partition|overlay]
- *                [--no-remesh] [--morph] [--out DIR] [--font-dir DIR]...
- *                [--verbose]
+ *                [--no-remesh] [--morph] [--max-shift E] [--out DIR]
+ *                [--font-dir DIR]... [--verbose]
  *
  * Pair i (i = first .. first + N - 1) is drawn from the seed and i alone,
  * so any pair can be rerun by itself with --first i --pairs 1. It takes two
@@ -12,8 +12,10 @@
  * (URW base35, FreeFont, Liberation, Noto, DejaVu; or the --font-dir
  * directories), resamples both by arc length to the same n in [A, B]
  * (glyph_outline.h, as cm_gen_pairs does), and gives each polygon a random
- * rotation; one pair in five also gets a random scale in 1e-8..1e8 and a
- * shift, one in ten is made clockwise. The default pipeline runs on it
+ * rotation; one polygon in five also gets a random scale in 1e-8..1e8 and
+ * a shift of up to 10^E times its size (E = 3 unless --max-shift; 15 puts
+ * unit features where doubles are 1/8 apart), one pair in ten is made
+ * clockwise. The default pipeline runs on it
  * (--method overlay forces the fallback construction everywhere; with
  * --no-remesh the construction is returned as built), with a time limit
  * per pair through the progress callback's cancel.
@@ -177,15 +179,15 @@ typedef struct transform {
 } transform;
 
 /* Rotation about the origin, then scale and shift. The scale is a power of
- * ten in 1e-8..1e8 for one polygon in five, else 1; the shift is up to a
- * thousand times the polygon's size. */
-static void random_transform(uint64_t *rng, transform *t)
+ * ten in 1e-8..1e8 for one polygon in five, else 1; the shift is up to
+ * 10^max_shift times the polygon's size. */
+static void random_transform(uint64_t *rng, double max_shift, transform *t)
 {
     t->angle = 2 * RP_PI * uniform(rng);
     t->scale = 1, t->dx = 0, t->dy = 0;
     if (uniform(rng) < 0.2) {
         t->scale = pow(10.0, floor(17 * uniform(rng)) - 8);
-        double reach = t->scale * pow(10.0, 3 * uniform(rng));
+        double reach = t->scale * pow(10.0, max_shift * uniform(rng));
         t->dx = reach * (2 * uniform(rng) - 1);
         t->dy = reach * (2 * uniform(rng) - 1);
     }
@@ -272,7 +274,7 @@ int main(int argc, char **argv)
     long pairs = 1000, first = 0;
     uint64_t seed = 1;
     int nmin = 30, nmax = 300, remesh = 1, morph = 0, verbose = 0;
-    double limit = 60;
+    double limit = 60, max_shift = 3;
     cm_method method = CM_METHOD_PARTITION;
     const char *out = NULL;
     const char *dirs[64];
@@ -289,6 +291,7 @@ int main(int argc, char **argv)
         else if (strcmp(a, "--nmin") == 0) nmin = atoi(v), i++;
         else if (strcmp(a, "--nmax") == 0) nmax = atoi(v), i++;
         else if (strcmp(a, "--time-limit") == 0) limit = atof(v), i++;
+        else if (strcmp(a, "--max-shift") == 0) max_shift = atof(v), i++;
         else if (strcmp(a, "--out") == 0) out = v, i++;
         else if (strcmp(a, "--font-dir") == 0 && ndirs < 64) dirs[ndirs++] = v, i++;
         else if (strcmp(a, "--method") == 0 && strcmp(v, "overlay") == 0) method = CM_METHOD_OVERLAY, i++;
@@ -332,7 +335,7 @@ int main(int argc, char **argv)
             continue;
         }
         for (int j = 0; j < 2; j++) {
-            random_transform(&rng, &t[j]);
+            random_transform(&rng, max_shift, &t[j]);
             apply(&t[j], p[j], n);
         }
         int clockwise = uniform(&rng) < 0.1;
@@ -400,6 +403,7 @@ int main(int argc, char **argv)
 usage:
     fprintf(stderr, "usage: cm_font_soak [--pairs N] [--first I] [--seed S] [--nmin A] [--nmax B]\n"
                     "                    [--time-limit SEC] [--method partition|overlay] [--no-remesh]\n"
-                    "                    [--morph] [--out DIR] [--font-dir DIR]... [--verbose]\n");
+                    "                    [--morph] [--max-shift E] [--out DIR] [--font-dir DIR]...\n"
+                    "                    [--verbose]\n");
     return 2;
 }
