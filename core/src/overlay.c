@@ -718,6 +718,7 @@ typedef struct { mpq_t i, j; } grid_point;
 #define LATTICE_MAX_VERTICES 64
 #define LATTICE_CONVERGENTS 96
 #define LATTICE_ROWS 24
+#define LATTICE_BOX_POINTS 65536
 
 /* Sutherland-Hodgman on exact points: keeps a i + b j + c >= 0. */
 static int clip_polygon(grid_point *p, int count, grid_point *out, const grid_constraint *h, mpq_t *t)
@@ -841,6 +842,22 @@ static int lattice_search(const face_output *f, const incidence *inc, double *xy
         cur = 1 - cur;
     }
     if (count < 3) goto done;
+    /* A small R: every grid point of its bounding box, so a double in the
+     * kernel is found whenever there is one. */
+    double box[4] = {INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (int a = 0; a < count; a++) {
+        double gi = mpq_get_d(poly[cur][a].i), gj = mpq_get_d(poly[cur][a].j);
+        box[0] = fmin(box[0], gi), box[1] = fmin(box[1], gj);
+        box[2] = fmax(box[2], gi), box[3] = fmax(box[3], gj);
+    }
+    box[0] = floor(box[0]) - 1, box[1] = floor(box[1]) - 1, box[2] = ceil(box[2]) + 1, box[3] = ceil(box[3]) + 1;
+    if ((box[2] - box[0] + 1) * (box[3] - box[1] + 1) <= LATTICE_BOX_POINTS) {
+        for (double gi = box[0]; gi <= box[2] && !found; gi++)
+            for (double gj = box[1]; gj <= box[3] && !found; gj++)
+                found = try_candidate(f, inc, xy, v, origin[0] + gi * unit[0], origin[1] + gj * unit[1],
+                                      best_bad, best);
+        goto done;
+    }
     /* Its long direction: the farthest pair of corners. */
     int fa = 0, fb = 0;
     double far = -1;
