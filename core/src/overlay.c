@@ -1095,6 +1095,54 @@ done:
     return status;
 }
 
+/* The next resort for a small polygon that is not star-shaped in some
+ * geometry, or whose kernel holds no double: two Steiner vertices, s1
+ * fanning the boundary chain a..b and s2 the chain b..a, with the edge
+ * s1 s2 between them (triangles (b, s2, s1) and (a, s1, s2)). Each needs
+ * only to see its own chain, so a sliver whose kernel is empty of doubles
+ * can still take them. Every split a < b is tried. Returns as star_fan. */
+#define TWO_FAN_MAX_N 12
+
+static int two_fan(const double *const *geoms, size_t k, size_t n, size_t a, size_t b,
+                   face_output *fan)
+{
+    memset(fan, 0, sizeof *fan);
+    fan->k = k;
+    fan->nv = fan->cap_v = n + 2;
+    fan->xy = calloc(k, sizeof *fan->xy);
+    if (!fan->xy) return -1;
+    int status = -1;
+    long s1 = (long)n, s2 = (long)n + 1;
+    for (size_t j = 0; j < k; j++) {
+        fan->xy[j] = malloc(2 * (n + 2) * sizeof *fan->xy[j]);
+        if (!fan->xy[j]) goto done;
+        memcpy(fan->xy[j], geoms[j], 2 * n * sizeof *fan->xy[j]);
+        for (int side = 0; side < 2; side++) {
+            size_t from = side ? b : a, to = side ? a + n : b, count = to - from + 1;
+            double sx = 0, sy = 0;
+            for (size_t i = from; i <= to; i++)
+                sx += geoms[j][2 * (i % n)] / (double)count, sy += geoms[j][2 * (i % n) + 1] / (double)count;
+            fan->xy[j][2 * (n + (size_t)side)] = sx, fan->xy[j][2 * (n + (size_t)side) + 1] = sy;
+        }
+    }
+    for (size_t i = a; i < b; i++)
+        if (emit_triangle(fan, (long)i, (long)(i + 1), s1)) goto done;
+    for (size_t i = b; i < a + n; i++)
+        if (emit_triangle(fan, (long)(i % n), (long)((i + 1) % n), s2)) goto done;
+    if (emit_triangle(fan, (long)b, s2, s1) || emit_triangle(fan, (long)a, s1, s2)) goto done;
+    long bad = 0;
+    size_t where = 0;
+    status = repair_all(fan, n, &bad, &where);
+    fan->centroids = 2;
+done:
+    if (status != 0) {
+        for (size_t j = 0; j < k; j++) free(fan->xy[j]);
+        free(fan->xy), free(fan->tri);
+        memset(fan, 0, sizeof *fan);
+    }
+    return status;
+}
+
 /* ---- the whole construction ---------------------------------------------- */
 
 static void overlay_free(overlay *o)
@@ -1151,6 +1199,9 @@ cm_status cm_overlay(const double *const *geoms, const int32_t *const *tris, siz
     if (s > 0) {
         face_output fan;
         s = star_fan(geoms, k, n, &fan);
+        for (size_t a = 0; s > 0 && n <= TWO_FAN_MAX_N && a < n; a++)
+            for (size_t b = a + 2; s > 0 && b + 2 <= a + n && b < n; b++)
+                s = two_fan(geoms, k, n, a, b, &fan);
         if (s < 0) goto done;
         if (s > 0) {
             status = cm_fail(r, CM_ERR_INTERNAL,
