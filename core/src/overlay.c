@@ -20,8 +20,9 @@
  * inverted triangles are moved, one at a time, to doubles that make their
  * triangles positive, found exactly (repair_geometry); failing that, a
  * polygon star-shaped in every geometry becomes a fan around one vertex
- * placed the same way (star_fan). What stays inverted is reported as
- * such: the construction always ends, valid or with that message. */
+ * placed the same way (star_fan), and a small one a fan around two
+ * (two_fan). What stays inverted is reported as such: the construction
+ * always ends, valid or with that message. */
 #include <gmp.h>
 #include <math.h>
 #include <stdlib.h>
