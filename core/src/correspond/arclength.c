@@ -32,11 +32,11 @@ typedef struct walk {
 } walk;
 
 /* Counter-clockwise position c <-> input index. */
-static size_t input_index(const walk *w, size_t c) { return w->reversed ? (w->n - c) % w->n : c; }
+static size_t walk_input(const walk *w, size_t c) { return w->reversed ? (w->n - c) % w->n : c; }
 static size_t ccw_position(const walk *w, size_t v) { return w->reversed ? (w->n - v) % w->n : v; }
 /* The i-th vertex from the start, as an input index. */
-static size_t vertex_at(const walk *w, size_t i) { return input_index(w, (w->start + i) % w->n); }
-static const double *point_at(const walk *w, size_t i) { return w->xy + 2 * vertex_at(w, i); }
+static size_t walk_vertex(const walk *w, size_t i) { return walk_input(w, (w->start + i) % w->n); }
+static const double *walk_point(const walk *w, size_t i) { return w->xy + 2 * walk_vertex(w, i); }
 
 /* Pins as counter-clockwise offsets from the first pin of each polygon,
  * sorted along polygon 0 and checked to be in that order everywhere. */
@@ -90,7 +90,7 @@ static cm_status parametrise(walk *w, const size_t *offset, size_t stride, size_
     if (!arc) return cm_fail_status(err, CM_ERR_NO_MEMORY);
     arc[0] = 0;
     for (size_t i = 0; i < n; i++) {
-        const double *a = point_at(w, i), *b = point_at(w, i + 1);
+        const double *a = walk_point(w, i), *b = walk_point(w, i + 1);
         arc[i + 1] = arc[i] + hypot(b[0] - a[0], b[1] - a[1]);
     }
     cm_status s = CM_OK;
@@ -102,10 +102,10 @@ static cm_status parametrise(walk *w, const size_t *offset, size_t stride, size_
             double p = (double)seg + (arc[i] - arc[from]) / length;
             if (p <= w->param[i - 1]) p = nextafter(w->param[i - 1], INFINITY);
             if (!(p < (double)(seg + 1)) || !isfinite(p)) {
-                cm_fail_at(err, (long)g, (long)vertex_at(w, i), -1);
+                cm_fail_at(err, (long)g, (long)walk_vertex(w, i), -1);
                 s = cm_fail(err, CM_ERR_ARGUMENT,
                             "polygon %zu: arc length cannot separate vertex %zu from its neighbours "
-                            "(edges too short against the perimeter)", g, vertex_at(w, i));
+                            "(edges too short against the perimeter)", g, walk_vertex(w, i));
                 break;
             }
             w->param[i] = p;
@@ -181,18 +181,18 @@ static void fill(const walk *w, const double *u, const long *own, size_t n, size
         if (own[j] >= 0) {
             i = (size_t)own[j], at = j;
             for (next = j + 1; next < n && own[next] < 0;) next++;
-            const double *a = point_at(w, i);
+            const double *a = walk_point(w, i);
             xy[2 * j] = a[0], xy[2 * j + 1] = a[1];
-            edge[j] = (int32_t)vertex_at(w, i), t[j] = 0.0;
+            edge[j] = (int32_t)walk_vertex(w, i), t[j] = 0.0;
             continue;
         }
         double u_next = next < n ? u[next] : (double)pins;
-        const double *a = point_at(w, i), *b = point_at(w, i + 1);
+        const double *a = walk_point(w, i), *b = walk_point(w, i + 1);
         double s = (u[j] - u[at]) / (u_next - u[at]);
         xy[2 * j] = a[0] + s * (b[0] - a[0]);
         xy[2 * j + 1] = a[1] + s * (b[1] - a[1]);
         /* Input numbering: a clockwise polygon's edge runs from b to a. */
-        edge[j] = (int32_t)(w->reversed ? vertex_at(w, i + 1) : vertex_at(w, i));
+        edge[j] = (int32_t)(w->reversed ? walk_vertex(w, i + 1) : walk_vertex(w, i));
         t[j] = w->reversed ? 1.0 - s : s;
     }
 }

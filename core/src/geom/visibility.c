@@ -261,7 +261,7 @@ static void xupdate_vertex(ear_ctx *e, long v)
     e->ear[v] = e->turn[v] > 0 && !xear_blocked(e, e->prev[v], v, e->next[v]);
 }
 
-static int clip_ears(ear_ctx *e, long k, int32_t *tri_out)
+static int clip_xears(ear_ctx *e, long k, int32_t *tri_out)
 {
     for (long i = 0; i < k; i++) e->prev[i] = (i + k - 1) % k, e->next[i] = (i + 1) % k, e->gone[i] = 0;
     e->nblockers = 0;
@@ -299,7 +299,7 @@ int cm_xtriangulate(cm_xpool *pool, const long *ids, long k, int32_t *tri_out)
     ear_ctx e = {pool, ids, malloc(n * sizeof(long)), malloc(n * sizeof(long)),
                  malloc(n * sizeof(long)), 0, malloc(n), malloc(n), malloc(n)};
     int status = -1;
-    if (e.prev && e.next && e.blockers && e.turn && e.ear && e.gone) status = clip_ears(&e, k, tri_out);
+    if (e.prev && e.next && e.blockers && e.turn && e.ear && e.gone) status = clip_xears(&e, k, tri_out);
     free(e.prev), free(e.next), free(e.blockers), free(e.turn), free(e.ear), free(e.gone);
     return status;
 }
