@@ -55,11 +55,9 @@ static int logging(const cm_kmesh *km)
 }
 
 /* 1 when slot id is changed for the first time in this transaction (it
- * is marked as saved now), 0 when saved already or not logging. */
-static int first_change(cm_kmesh *km, uint32_t **seen, size_t *cap, int32_t id)
+ * is marked as saved now), 0 when saved already. */
+static int first_change(struct cm_kmesh_log *log, uint32_t **seen, size_t *cap, int32_t id)
 {
-    struct cm_kmesh_log *log = km->log;
-    if (!logging(km)) return 0;
     if (grow_seen(seen, cap, (size_t)id + 1)) {
         log->failed = 1;
         return 0;
@@ -71,8 +69,9 @@ static int first_change(cm_kmesh *km, uint32_t **seen, size_t *cap, int32_t id)
 
 void cm_log_triangle(cm_kmesh *km, int32_t t)
 {
+    if (!logging(km)) return;
     struct cm_kmesh_log *log = km->log;
-    if (!first_change(km, &log->tseen, &log->tcap, t)) return;
+    if (!first_change(log, &log->tseen, &log->tcap, t)) return;
     int32_t rec[7] = {t};
     for (int i = 0; i < 3; i++) rec[1 + i] = km->tri[3 * t + i], rec[4 + i] = km->opp[3 * t + i];
     for (int i = 0; i < 7; i++)
@@ -85,8 +84,9 @@ fail:
 
 void cm_log_vertex(cm_kmesh *km, int32_t v)
 {
+    if (!logging(km)) return;
     struct cm_kmesh_log *log = km->log;
-    if (!first_change(km, &log->vseen, &log->vcap, v)) return;
+    if (!first_change(log, &log->vseen, &log->vcap, v)) return;
     if (cm_ibuf_push(&log->vsave, v) || cm_ibuf_push(&log->vsave, km->vc[v])) goto fail;
     for (size_t g = 0; g < km->k; g++)
         if (push_double(&log->pos, km->xy[g][2 * (size_t)v]) || push_double(&log->pos, km->xy[g][2 * (size_t)v + 1]))
