@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 
 # Debian packages the build, the tests, the demo and the bench need.
 DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
-  fonts-dejavu-core python3 python3-numpy python3-pytest python3-meshio \
+  fonts-dejavu-core fonts-urw-base35 fonts-freefont-ttf fonts-liberation fonts-noto-core python3 python3-numpy python3-pytest python3-meshio \
   libopenmesh-dev libeigen3-dev pybind11-dev python3-dev \
   meshlab dpkg-dev qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev \
   libglew-dev xvfb xauth \
@@ -59,10 +59,15 @@ fuzz: build
 	    $(BUILD)/fuzz-long/$$h $(FUZZ_SECONDS) || exit 1; \
 	done
 
-# 100,000 random pairs through the default pipeline, checked exactly.
+# 100,000 random pairs through the default pipeline, then FONT_SOAK_PAIRS
+# real glyph pairs of the fonts above (the construction, then 1,000 of them
+# remeshed and morphed), every result checked exactly.
 SOAK_PAIRS ?= 100000
+FONT_SOAK_PAIRS ?= 20000
 soak: build
 	$(BUILD)/bin/soak $(SOAK_PAIRS)
+	$(BUILD)/bin/cm_font_soak --pairs $(FONT_SOAK_PAIRS) --no-remesh
+	$(BUILD)/bin/cm_font_soak --first $(FONT_SOAK_PAIRS) --pairs 1000 --morph
 
 clean:
 	rm -rf $(BUILD)
