@@ -1048,6 +1048,42 @@ done:
     return status;
 }
 
+/* A fan mesh of the n polygon vertices and `extra` Steiner vertices (their
+ * positions left to the caller): 0, or -1 out of memory (*fan empty). */
+static int fan_begin(const double *const *geoms, size_t k, size_t n, size_t extra, face_output *fan)
+{
+    memset(fan, 0, sizeof *fan);
+    fan->k = k;
+    fan->nv = fan->cap_v = n + extra;
+    fan->xy = calloc(k, sizeof *fan->xy);
+    for (size_t j = 0; fan->xy && j < k; j++) {
+        fan->xy[j] = malloc(2 * (n + extra) * sizeof *fan->xy[j]);
+        if (!fan->xy[j]) break;
+        memcpy(fan->xy[j], geoms[j], 2 * n * sizeof *fan->xy[j]);
+        if (j + 1 == k) return 0;
+    }
+    if (fan->xy)
+        for (size_t j = 0; j < k; j++) free(fan->xy[j]);
+    free(fan->xy);
+    memset(fan, 0, sizeof *fan);
+    return -1;
+}
+
+/* Places the fan's Steiner vertices by the repair; on any failure frees it.
+ * Returns as repair_all. */
+static int fan_finish(face_output *fan, size_t n, int emitted)
+{
+    long bad = 0;
+    size_t where = 0;
+    int status = emitted ? repair_all(fan, n, &bad, &where) : -1;
+    if (status != 0) {
+        for (size_t j = 0; j < fan->k; j++) free(fan->xy[j]);
+        free(fan->xy), free(fan->tri);
+        memset(fan, 0, sizeof *fan);
+    }
+    return status;
+}
+
 /* The last resort when the overlay's Steiner vertices cannot all be placed
  * (several of them crowded into one sliver thinner than the spacing of
  * doubles): a polygon star-shaped in every geometry is a fan around one
@@ -1056,33 +1092,16 @@ done:
  * *fan filled, 1 when some geometry has no such vertex, -1 out of memory. */
 static int star_fan(const double *const *geoms, size_t k, size_t n, face_output *fan)
 {
-    memset(fan, 0, sizeof *fan);
-    fan->k = k;
-    fan->nv = fan->cap_v = n + 1;
-    fan->xy = calloc(k, sizeof *fan->xy);
-    if (!fan->xy) return -1;
-    int status = -1;
+    if (fan_begin(geoms, k, n, 1, fan)) return -1;
     for (size_t j = 0; j < k; j++) {
-        fan->xy[j] = malloc(2 * (n + 1) * sizeof *fan->xy[j]);
-        if (!fan->xy[j]) goto done;
-        memcpy(fan->xy[j], geoms[j], 2 * n * sizeof *fan->xy[j]);
         double sx = 0, sy = 0;
         for (size_t i = 0; i < n; i++) sx += geoms[j][2 * i] / (double)n, sy += geoms[j][2 * i + 1] / (double)n;
         fan->xy[j][2 * n] = sx, fan->xy[j][2 * n + 1] = sy;
     }
-    for (size_t i = 0; i < n; i++)
-        if (emit_triangle(fan, (long)i, (long)((i + 1) % n), (long)n)) goto done;
-    long bad = 0;
-    size_t where = 0;
-    status = repair_all(fan, n, &bad, &where);
+    int emitted = 1;
+    for (size_t i = 0; i < n && emitted; i++) emitted = !emit_triangle(fan, (long)i, (long)((i + 1) % n), (long)n);
     fan->centroids = 1;
-done:
-    if (status != 0) {
-        for (size_t j = 0; j < k; j++) free(fan->xy[j]);
-        free(fan->xy), free(fan->tri);
-        memset(fan, 0, sizeof *fan);
-    }
-    return status;
+    return fan_finish(fan, n, emitted);
 }
 
 /* The next resort for a small polygon that is not star-shaped in some
@@ -1096,17 +1115,9 @@ done:
 static int two_fan(const double *const *geoms, size_t k, size_t n, size_t a, size_t b,
                    face_output *fan)
 {
-    memset(fan, 0, sizeof *fan);
-    fan->k = k;
-    fan->nv = fan->cap_v = n + 2;
-    fan->xy = calloc(k, sizeof *fan->xy);
-    if (!fan->xy) return -1;
-    int status = -1;
+    if (fan_begin(geoms, k, n, 2, fan)) return -1;
     long s1 = (long)n, s2 = (long)n + 1;
-    for (size_t j = 0; j < k; j++) {
-        fan->xy[j] = malloc(2 * (n + 2) * sizeof *fan->xy[j]);
-        if (!fan->xy[j]) goto done;
-        memcpy(fan->xy[j], geoms[j], 2 * n * sizeof *fan->xy[j]);
+    for (size_t j = 0; j < k; j++)
         for (int side = 0; side < 2; side++) {
             size_t from = side ? b : a, to = side ? a + n : b, count = to - from + 1;
             double sx = 0, sy = 0;
@@ -1114,23 +1125,13 @@ static int two_fan(const double *const *geoms, size_t k, size_t n, size_t a, siz
                 sx += geoms[j][2 * (i % n)] / (double)count, sy += geoms[j][2 * (i % n) + 1] / (double)count;
             fan->xy[j][2 * (n + (size_t)side)] = sx, fan->xy[j][2 * (n + (size_t)side) + 1] = sy;
         }
-    }
-    for (size_t i = a; i < b; i++)
-        if (emit_triangle(fan, (long)i, (long)(i + 1), s1)) goto done;
-    for (size_t i = b; i < a + n; i++)
-        if (emit_triangle(fan, (long)(i % n), (long)((i + 1) % n), s2)) goto done;
-    if (emit_triangle(fan, (long)b, s2, s1) || emit_triangle(fan, (long)a, s1, s2)) goto done;
-    long bad = 0;
-    size_t where = 0;
-    status = repair_all(fan, n, &bad, &where);
+    int emitted = 1;
+    for (size_t i = a; i < b && emitted; i++) emitted = !emit_triangle(fan, (long)i, (long)(i + 1), s1);
+    for (size_t i = b; i < a + n && emitted; i++)
+        emitted = !emit_triangle(fan, (long)(i % n), (long)((i + 1) % n), s2);
+    emitted = emitted && !emit_triangle(fan, (long)b, s2, s1) && !emit_triangle(fan, (long)a, s1, s2);
     fan->centroids = 2;
-done:
-    if (status != 0) {
-        for (size_t j = 0; j < k; j++) free(fan->xy[j]);
-        free(fan->xy), free(fan->tri);
-        memset(fan, 0, sizeof *fan);
-    }
-    return status;
+    return fan_finish(fan, n, emitted);
 }
 
 /* ---- the whole construction ---------------------------------------------- */
