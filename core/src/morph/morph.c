@@ -25,6 +25,7 @@
 #include "morph/morph.h"
 #include "base/progress.h"
 #include "geom/angle.h"
+#include "geom/polygon_check.h"
 #include "geom/predicates.h"
 
 void cm_morph_options_init(cm_morph_options *options)
@@ -81,6 +82,11 @@ static size_t find_neighbour(const cm_morph *m, int32_t row, int32_t w)
 /* Normalized mean value weights of every interior vertex in geometry g:
  * w_j = (tan(a_{j-1} / 2) + tan(a_j / 2)) / |v_j - v|, accumulated per
  * triangle (each contributes its angle at v to both of its other vertices). */
+/* The smallest tan(a / 2) a weight uses: far below any angle doubles
+ * resolve between edges of comparable length, far above underflow once
+ * normalised; its inverse the largest. */
+#define SLIVER_HALF_TAN 0x1p-60
+
 static void mean_value_weights(cm_morph *m, size_t g)
 {
     const cm_mesh *f = &m->full;
@@ -108,6 +114,15 @@ static void mean_value_weights(cm_morph *m, size_t g)
             /* tan(a / 2) = sin a / (1 + cos a) = (1 - cos a) / sin a: the
              * second near a = pi, where 1 + cos a cancels. */
             double half_tan = dot >= 0 ? cross / (lu * lw + dot) : (lu * lw - dot) / cross;
+            /* The triangle is counter-clockwise (checked exactly), so its
+             * angle at v is in (0, pi); rounded differences of a sliver can
+             * still give a cross product of 0 or the wrong sign (angle near
+             * 0), or tan(a / 2) near infinity (angle near pi). Any positive
+             * weights keep the convex-combination guarantee (and every
+             * section is checked exactly), so tan(a / 2) is kept within
+             * [2^-60, 2^60], where no weight of a row drowns the others. */
+            if (!(half_tan >= SLIVER_HALF_TAN)) half_tan = SLIVER_HALF_TAN;
+            if (half_tan > 1 / SLIVER_HALF_TAN) half_tan = 1 / SLIVER_HALF_TAN;
             lam[find_neighbour(m, row, a)] += half_tan / lu;
             lam[find_neighbour(m, row, b)] += half_tan / lw;
         }
@@ -375,9 +390,20 @@ cm_status cm_morph_section_at(cm_morph *m, size_t g, double s, double *xy, size_
     } else {
         cm_status st = solve_positions(m, g, s);
         if (st != CM_OK) return st;
-        size_t bad = count_inverted(m->full.tri, 0, m->full.nt, m->pos);
-        if (bad)
-            return cm_fail(&m->error, CM_ERR_INTERNAL, "morph: %zu triangles of the enclosed mesh invert at t = %.17g", bad, t);
+        /* The annulus around the section only carries the construction:
+         * rounding may fold one of its slivers. The section stays valid
+         * if its own triangles are counter-clockwise and its boundary is
+         * simple (then they tile the polygon), both checked exactly. */
+        size_t bad = count_inverted(m->full.tri, r->nt, m->full.nt, m->pos);
+        if (bad) {
+            long a, b;
+            int crossing = cm_polygon_find_intersection(m->pos, (long)m->result->n, &a, &b);
+            if (crossing < 0) return cm_fail_status(&m->error, CM_ERR_NO_MEMORY);
+            if (crossing)
+                return cm_fail(&m->error, CM_ERR_INTERNAL,
+                               "morph: %zu triangles of the enclosed mesh invert at t = %.17g and the boundary "
+                               "edges %ld and %ld cross", bad, t, a, b);
+        }
         memcpy(xy, m->pos, 2 * m->nv * sizeof *xy);
     }
     size_t bad = count_inverted(r->tri, 0, m->nt, xy);
