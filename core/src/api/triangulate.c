@@ -65,7 +65,15 @@ static cm_status construct(cm_result *r, const double *const *geoms, const int32
     cm_partition_stats ps;
     cm_status s = cm_partition(geoms, tris, k, n, progress, &r->mesh, &ps, &r->error);
     r->stats.fallback_count = ps.fallback_count;
-    return s;
+    if (s != CM_ERR_INTERNAL) return s;
+    /* A piece the overlay could not place in doubles (a sliver thinner
+     * than their spacing): the whole input has room where the piece had
+     * none, so the guaranteed construction runs on all of it. */
+    cm_mesh_clear(&r->mesh);
+    cm_error_init(&r->error);
+    size_t centroids = 0;
+    r->stats.fallback_count++;
+    return cm_overlay(geoms, tris, k, n, &r->mesh, &centroids, &r->error);
 }
 
 static cm_status build_first(cm_result *r, const double *const *polygons, size_t k, size_t n,
