@@ -32,7 +32,9 @@ static const option_spec sweep_options[] = {
      "sections per pair of consecutive inputs, both ends\n"
      "included, 2 to 10000 (default 11); more may be\n"
      "inserted where a prism would not stay valid"},
-    {"height", OPTION_HEIGHT, "H", "total height, inputs evenly spaced (default 1)"},
+    {"height", OPTION_HEIGHT, "H", "total height, inputs evenly spaced (default: the\n"
+                                   "inputs' z, else the largest diagonal of their\n"
+                                   "bounding boxes)"},
     {"heights", OPTION_HEIGHTS, "Z1,Z2,...",
      "the z of every input, strictly increasing; default:\n"
      "the inputs' own z if they are all OBJ files with z\n"
@@ -262,6 +264,21 @@ static int heights_from_inputs(const triangulation *tri, double *heights, cli_er
     return 1;
 }
 
+/* The largest bounding-box diagonal of the inputs: the default total height,
+ * so that a sweep of sections hundreds of units wide is not flat. */
+static double section_size(const triangulation *tri)
+{
+    double size = 0;
+    for (size_t g = 0; g < tri->args->input_count; g++) {
+        const polygon_input *p = &tri->polygons[g];
+        double lo[2] = {p->xy[0], p->xy[1]}, hi[2] = {p->xy[0], p->xy[1]};
+        for (size_t i = 1; i < p->count; i++)
+            for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], p->xy[2 * i + c]), hi[c] = fmax(hi[c], p->xy[2 * i + c]);
+        size = fmax(size, hypot(hi[0] - lo[0], hi[1] - lo[1]));
+    }
+    return size > 0 && isfinite(size) ? size : 1.0;
+}
+
 static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morph **morph,
                        cm_sweep **sweep, cli_error *error)
 {
@@ -285,6 +302,7 @@ static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morp
             return CLI_EXIT_USAGE;
         }
         if (found) options.heights = own;
+        else options.height = section_size(tri); /* prisms about as tall as the sections are wide */
     }
     cm_morph_options morph_options;
     cm_morph_options_init(&morph_options);

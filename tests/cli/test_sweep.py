@@ -266,3 +266,17 @@ def test_inputs_z_must_increase(cm, tmp_path):
                              "the inputs' z must increase (or use --height / --heights)\n")
     assert not (tmp_path / "out.msh").exists()
     assert cm("sweep", "a.obj", "b.obj", "--heights", "0,1", "-o", "out.msh").returncode == 0
+
+
+def test_default_height_follows_the_section_size(cm, tmp_path):
+    """Without heights or z, the sweep is as tall as the largest bounding-box
+    diagonal: sections hundreds of units wide give no flat prisms."""
+    a, b = twisted_pair()
+    a, b = ([(300 * x, 300 * y) for x, y in p] for p in (a, b))
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    result = cm("sweep", "a.xy", "b.xy", "-o", "out.msh")
+    assert result.returncode == 0, result.stderr
+    z = meshio.read(tmp_path / "out.msh").points[:, 2]
+    diagonal = max(np.hypot(np.ptp([p[0] for p in q]), np.ptp([p[1] for p in q])) for q in (a, b))
+    assert z.min() == 0 and z.max() == pytest.approx(diagonal, rel=1e-15)
