@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "cli_common.h"
+#include "progress_line.h"
 
 volatile sig_atomic_t interrupted;
 volatile sig_atomic_t writing_output;
@@ -25,8 +26,9 @@ static void on_watchdog(int signal_number)
 {
     (void)signal_number;
     if (writing_output) return;
-    static const char message[] = "compatmesh: interrupted; nothing written\n";
-    ssize_t written = write(STDERR_FILENO, message, sizeof message - 1);
+    static const char erase[] = "\r\033[K", message[] = "compatmesh: interrupted; nothing written\n";
+    ssize_t written = progress_line_shown ? write(STDERR_FILENO, erase, sizeof erase - 1) : 0;
+    written = write(STDERR_FILENO, message, sizeof message - 1);
     (void)written;
     _exit(CLI_EXIT_INTERRUPTED);
 }
@@ -60,10 +62,4 @@ void catch_interrupts(void)
     action.sa_handler = on_interrupt;
     sigaction(SIGINT, &action, NULL);
     sigaction(SIGTERM, &action, NULL);
-}
-
-int cancel_if_interrupted(void *user, double fraction, const char *stage)
-{
-    (void)user, (void)fraction, (void)stage;
-    return interrupted;
 }

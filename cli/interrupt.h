@@ -12,7 +12,4 @@ extern volatile sig_atomic_t writing_output;
 
 void catch_interrupts(void);
 
-/* A cm_progress_fn that cancels the core's work once interrupted. */
-int cancel_if_interrupted(void *user, double fraction, const char *stage);
-
 #endif

@@ -8,6 +8,7 @@
 
 #include "commands.h"
 #include "interrupt.h"
+#include "progress_line.h"
 #include "options.h"
 #include "outdir.h"
 #include "triangulation.h"
@@ -173,7 +174,7 @@ static int compute_frames(morph_run *run, cli_error *error)
     cm_morph_options options;
     cm_morph_options_init(&options);
     options.method = run->args->morph;
-    options.progress = cancel_if_interrupted;
+    options.progress = cli_progress;
     cm_status status = cm_morph_create(run->tri.result, &options, &run->morph);
     run->xy = malloc(2 * frames * vertices * sizeof *run->xy);
     run->t = malloc(frames * sizeof *run->t);
@@ -188,6 +189,7 @@ static int compute_frames(morph_run *run, cli_error *error)
                                   &run->inverted[f], &run->min_angle_deg[f]);
         if (status == CM_OK && interrupted) status = CM_ERR_CANCELLED;
     }
+    cli_progress_done();
     if (status == CM_OK) return CLI_EXIT_OK;
     return core_failure("morph", run->morph ? cm_morph_message(run->morph) : "", status,
                         error);

@@ -15,6 +15,7 @@
 
 #include "commands.h"
 #include "interrupt.h"
+#include "progress_line.h"
 #include "outdir.h"
 #include "options.h"
 #include "triangulation.h"
@@ -292,7 +293,7 @@ static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morp
     cm_sweep_options_init(&options);
     options.sections = args->sections;
     options.tets = args->tets;
-    options.progress = cancel_if_interrupted;
+    options.progress = cli_progress;
     if (args->height > 0) options.height = args->height;
     if (args->heights) options.heights = args->heights;
     else if (args->height <= 0) {
@@ -306,7 +307,7 @@ static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morp
     }
     cm_morph_options morph_options;
     cm_morph_options_init(&morph_options);
-    morph_options.progress = cancel_if_interrupted;
+    morph_options.progress = cli_progress;
     cm_status status = cm_morph_create(tri->result, &morph_options, morph);
     const char *message = *morph ? cm_morph_message(*morph) : "";
     if (status == CM_OK) {
@@ -314,6 +315,7 @@ static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morp
         message = *sweep ? cm_sweep_message(*sweep) : "";
     }
     free(own);
+    cli_progress_done();
     if (status == CM_OK) return CLI_EXIT_OK;
     return core_failure("sweep", message, status, error);
 }

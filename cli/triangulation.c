@@ -9,6 +9,7 @@
 #include <time.h>
 
 #include "interrupt.h"
+#include "progress_line.h"
 
 static const struct {
     const char *name;
@@ -316,10 +317,11 @@ static int compute(triangulation *t, cli_error *error)
         return CLI_EXIT_INTERNAL;
     }
     for (size_t g = 0; g < k; g++) xy[g] = t->polygons[g].xy, counts[g] = t->polygons[g].count;
-    t->options.progress = cancel_if_interrupted;
+    t->options.progress = cli_progress;
     t->options.pins = t->args->pins, t->options.num_pins = t->args->pin_count;
     double start = seconds_now();
     cm_status status = cm_triangulate_polygons(xy, counts, k, &t->options, &t->result);
+    cli_progress_done();
     t->seconds_total = seconds_now() - start;
     free(xy), free(counts);
     if (status == CM_OK) return CLI_EXIT_OK;
