@@ -7,6 +7,7 @@
 #include <compatmesh/handles.hh>
 #include <compatmesh/plane.hh>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -599,6 +600,15 @@ py::dict sweep(py::object polygons_in, py::object sections, py::object height, p
       throw py::value_error("sweep: heights has " + std::to_string(z.size()) + " values for " +
                             std::to_string(polygons.size()) + " polygons");
     options.heights = z.data();
+  } else if (height.is_none()) {  // as tall as the polygons are wide, as on the command line
+    double size = 0;
+    for (const Polygon &p : polygons) {
+      double lo[2] = {p.xy[0], p.xy[1]}, hi[2] = {p.xy[0], p.xy[1]};
+      for (std::size_t i = 0; i < p.size(); i++)
+        for (int c = 0; c < 2; c++) lo[c] = std::min(lo[c], p.xy[2 * i + c]), hi[c] = std::max(hi[c], p.xy[2 * i + c]);
+      size = std::max(size, std::hypot(hi[0] - lo[0], hi[1] - lo[1]));
+    }
+    if (size > 0 && std::isfinite(size)) options.height = size;
   }
   ProgressRelay relay(python_progress(callbacks.progress));
   MorphPtr m = make_morph(result.get(), CM_MORPH_CONVEX, relay);
@@ -737,7 +747,8 @@ The volume between the n x 2 polygons: sections of their convex morph
 stacked at increasing z and joined into 6-node prisms, each checked exactly
 to stay valid through its height (sections are inserted where needed).
 Polygon g lies at heights[g] (strictly increasing), or the polygons are
-evenly spaced over height (default 1). sections: per pair of consecutive
+evenly spaced over height (default: the largest diagonal of the polygons'
+bounding boxes). sections: per pair of consecutive
 polygons, both ends included, >= 2. tets: also split every prism into 3
 tetrahedra with conforming faces. Keyword options as for triangulate().
 Returns a dict: nodes (N x 3; node s * nv + v is vertex v of section s),

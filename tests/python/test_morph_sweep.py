@@ -140,3 +140,12 @@ def test_progress_errors_propagate(twisted):
             raise KeyError("from the callback")
     with pytest.raises(KeyError, match="from the callback"):
         compatmesh.morph(twisted, t=0.5, progress=progress)
+
+
+def test_sweep_default_height_follows_the_size(twisted):
+    """Without height or heights the sweep is as tall as the largest
+    bounding-box diagonal, as on the command line."""
+    big = [300.0 * np.asarray(p) for p in twisted]
+    s = compatmesh.sweep(big, sections=3)
+    diagonal = max(np.hypot(*np.ptp(p, axis=0)) for p in big)
+    assert s["nodes"][:, 2].min() == 0 and s["nodes"][:, 2].max() == pytest.approx(diagonal, rel=1e-15)
