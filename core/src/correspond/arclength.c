@@ -22,6 +22,19 @@ void cm_boundary_map_clear(cm_boundary_map *map)
     memset(map, 0, sizeof *map);
 }
 
+double *cm_arc_lengths(const double *xy, size_t n, int reversed, size_t start)
+{
+    double *arc = malloc((n + 1) * sizeof *arc);
+    if (!arc) return NULL;
+    arc[0] = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double *a = xy + 2 * cm_ccw_input((start + i) % n, n, reversed);
+        const double *b = xy + 2 * cm_ccw_input((start + i + 1) % n, n, reversed);
+        arc[i + 1] = arc[i] + hypot(b[0] - a[0], b[1] - a[1]);
+    }
+    return arc;
+}
+
 /* One polygon, counter-clockwise from its first pin. */
 typedef struct walk {
     const double *xy;  /* input coordinates */
@@ -32,7 +45,7 @@ typedef struct walk {
 } walk;
 
 /* Counter-clockwise position c <-> input index. */
-static size_t walk_input(const walk *w, size_t c) { return w->reversed ? (w->n - c) % w->n : c; }
+static size_t walk_input(const walk *w, size_t c) { return cm_ccw_input(c, w->n, w->reversed); }
 static size_t ccw_position(const walk *w, size_t v) { return w->reversed ? (w->n - v) % w->n : v; }
 /* The i-th vertex from the start, as an input index. */
 static size_t walk_vertex(const walk *w, size_t i) { return walk_input(w, (w->start + i) % w->n); }
@@ -86,13 +99,8 @@ static cm_status parametrise(walk *w, const size_t *offset, size_t stride, size_
                              cm_error *err)
 {
     size_t n = w->n;
-    double *arc = malloc((n + 1) * sizeof *arc);
+    double *arc = cm_arc_lengths(w->xy, n, w->reversed, w->start);
     if (!arc) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-    arc[0] = 0;
-    for (size_t i = 0; i < n; i++) {
-        const double *a = walk_point(w, i), *b = walk_point(w, i + 1);
-        arc[i + 1] = arc[i] + hypot(b[0] - a[0], b[1] - a[1]);
-    }
     cm_status s = CM_OK;
     for (size_t seg = 0; seg < num_pins && s == CM_OK; seg++) {
         size_t from = offset[seg * stride], to = seg + 1 < num_pins ? offset[(seg + 1) * stride] : n;

@@ -20,6 +20,14 @@ typedef struct cm_boundary_map {
 
 void cm_boundary_map_clear(cm_boundary_map *map);
 
+/* The input index of counter-clockwise position c of a polygon of n
+ * vertices (reversed: the input is clockwise; vertex 0 stays first). */
+static inline size_t cm_ccw_input(size_t c, size_t n, int reversed) { return reversed ? (n - c) % n : c; }
+
+/* Cumulative arc lengths, n + 1 of them, along the counter-clockwise order
+ * from position start (the last one the perimeter). NULL out of memory. */
+double *cm_arc_lengths(const double *xy, size_t n, int reversed, size_t start);
+
 /* The common refinement of the k validated polygons (orientation[g] +1 or
  * -1 as cm_input_check_polygons found it) under normalised arc length
  * between pins: num_pins k-tuples, pins[j * k + g] the input vertex of

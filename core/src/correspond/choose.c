@@ -10,12 +10,10 @@
 #include <stdlib.h>
 
 #include "correspond/choose.h"
+#include "correspond/arclength.h"
 
 #define SAMPLES 64
 #define COARSE_CANDIDATES 256
-
-/* One polygon counter-clockwise: input index of its c-th vertex. */
-static size_t input_of(size_t c, size_t n, int reversed) { return reversed ? (n - c) % n : c; }
 
 /* SAMPLES points evenly spaced by arc length from counter-clockwise vertex
  * start, centred. arc: cumulative lengths along the counter-clockwise
@@ -33,7 +31,7 @@ static void sample(const double *xy, size_t n, int reversed, const double *arc, 
             if (arc[mid] <= s) lo = mid;
             else hi = mid;
         }
-        const double *a = xy + 2 * input_of(lo, n, reversed), *b = xy + 2 * input_of((lo + 1) % n, n, reversed);
+        const double *a = xy + 2 * cm_ccw_input(lo, n, reversed), *b = xy + 2 * cm_ccw_input((lo + 1) % n, n, reversed);
         double length = arc[lo + 1] - arc[lo], t = length > 0 ? (s - arc[lo]) / length : 0;
         out[j] = (a[0] + t * (b[0] - a[0])) + I * (a[1] + t * (b[1] - a[1]));
         mean += out[j];
@@ -53,31 +51,19 @@ static double residual(const double complex *z, const double complex *w)
     return left / ww;
 }
 
-static double *arc_lengths(const double *xy, size_t n, int reversed)
-{
-    double *arc = malloc((n + 1) * sizeof *arc);
-    if (!arc) return NULL;
-    arc[0] = 0;
-    for (size_t c = 0; c < n; c++) {
-        const double *a = xy + 2 * input_of(c, n, reversed), *b = xy + 2 * input_of((c + 1) % n, n, reversed);
-        arc[c + 1] = arc[c] + hypot(b[0] - a[0], b[1] - a[1]);
-    }
-    return arc;
-}
-
 cm_status cm_correspond_choose_starts(const double *const *polygons, const size_t *counts, size_t k,
                                       const int *orientation, size_t *pins, cm_error *err)
 {
     double complex z[SAMPLES], w[SAMPLES];
-    double *arc0 = arc_lengths(polygons[0], counts[0], orientation[0] < 0);
+    double *arc0 = cm_arc_lengths(polygons[0], counts[0], orientation[0] < 0, 0);
     if (!arc0) return cm_fail_status(err, CM_ERR_NO_MEMORY);
     sample(polygons[0], counts[0], orientation[0] < 0, arc0, 0, z);
-    pins[0] = input_of(0, counts[0], orientation[0] < 0);
+    pins[0] = cm_ccw_input(0, counts[0], orientation[0] < 0);
     free(arc0);
     for (size_t g = 1; g < k; g++) {
         size_t n = counts[g];
         int reversed = orientation[g] < 0;
-        double *arc = arc_lengths(polygons[g], n, reversed);
+        double *arc = cm_arc_lengths(polygons[g], n, reversed, 0);
         if (!arc) return cm_fail_status(err, CM_ERR_NO_MEMORY);
         /* Coarse: every vertex, or COARSE_CANDIDATES of them; then the
          * neighbourhood of the best. */
@@ -96,7 +82,7 @@ cm_status cm_correspond_choose_starts(const double *const *polygons, const size_
                 double left = residual(z, w);
                 if (left < best_left) best_left = left, best = c;
             }
-        pins[g] = input_of(best, n, reversed);
+        pins[g] = cm_ccw_input(best, n, reversed);
         free(arc);
     }
     return CM_OK;
