@@ -8,7 +8,21 @@
 #include "geom/predicates.h"
 #include "remesh/refine.h"
 
-/* Midpoints per geometry; 1 if the four new triangles are all valid. */
+/* Where to put the new vertex of a split, per geometry: the edge's
+ * midpoint, or, where the rounded midpoint leaves one of the four new
+ * triangles flat or folded (beside a triangle that is itself nearly
+ * flat, e.g. an ear of three almost collinear boundary vertices), a point
+ * pushed from it towards one of the two far vertices. */
+static const double split_push[] = {0.0, 1.0 / 16, 1.0 / 4};
+
+static int split_point_ok(const double *p0, const double *p1, const double *p2, const double *p3,
+                          const double *m)
+{
+    return cm_orient2d(p0, p1, m) > 0 && cm_orient2d(p0, m, p2) > 0 && cm_orient2d(p3, p2, m) > 0 &&
+           cm_orient2d(p3, m, p1) > 0;
+}
+
+/* Split points per geometry; 1 if the four new triangles are all valid. */
 static int midpoints_ok(const cm_kmesh *km, int32_t c, double *pts)
 {
     int32_t o = km->opp[c];
@@ -16,11 +30,16 @@ static int midpoints_ok(const cm_kmesh *km, int32_t c, double *pts)
     for (size_t g = 0; g < km->k; g++) {
         const double *p0 = cm_kmesh_pos(km, g, v0), *p1 = cm_kmesh_pos(km, g, v1),
                      *p2 = cm_kmesh_pos(km, g, v2), *p3 = cm_kmesh_pos(km, g, v3);
-        double *m = pts + 2 * g;
-        m[0] = 0.5 * (p1[0] + p2[0]), m[1] = 0.5 * (p1[1] + p2[1]);
-        if (cm_orient2d(p0, p1, m) <= 0 || cm_orient2d(p0, m, p2) <= 0 ||
-            cm_orient2d(p3, p2, m) <= 0 || cm_orient2d(p3, m, p1) <= 0)
-            return 0;
+        double *m = pts + 2 * g, mid[2] = {0.5 * (p1[0] + p2[0]), 0.5 * (p1[1] + p2[1])};
+        int found = 0;
+        for (size_t i = 0; i < sizeof split_push / sizeof *split_push && !found; i++)
+            for (int side = 0; side < (i ? 2 : 1) && !found; side++) {
+                const double *far = side ? p3 : p0;
+                m[0] = mid[0] + split_push[i] * (far[0] - mid[0]);
+                m[1] = mid[1] + split_push[i] * (far[1] - mid[1]);
+                found = split_point_ok(p0, p1, p2, p3, m);
+            }
+        if (!found) return 0;
     }
     return 1;
 }

@@ -49,8 +49,11 @@
 /* Undone splits of one edge before it is given up. */
 #define CM_SPLIT_TRIES 2
 /* Refinement stops when the smallest angle has not risen by CM_PROGRESS
- * (radians, about 0.06 degrees) over stall_limit() splits. */
+ * (radians, about 0.06 degrees; below 2 degrees, by 3 % of itself: slivers
+ * of a fraction of a degree rise in small steps) over stall_limit()
+ * splits. */
 #define CM_PROGRESS 1e-3
+#define CM_PROGRESS_SHARE 0.03
 /* The short triangles a round of forced moves looks at. */
 #define CM_STEP_OUT_WORST 8
 
@@ -359,7 +362,7 @@ static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
         if (kept == CM_NO_CANDIDATES) break;
         added += kept, rep->splits += kept, rep->iterations++;
         double now = cm_kmesh_min_angle(km);
-        if (now > best + CM_PROGRESS) best = now, since_best = 0;
+        if (now > best + fmin(CM_PROGRESS, CM_PROGRESS_SHARE * best)) best = now, since_best = 0;
         else since_best += kept > 0 ? kept : 1;
         if (x->o->area_every > 0 && rep->iterations % (size_t)x->o->area_every == 0 &&
             try_area_equalisation(x))
