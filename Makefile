@@ -9,7 +9,7 @@ DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
   libopenmesh-dev libeigen3-dev pybind11-dev python3-dev \
   meshlab dpkg-dev qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev \
   libglew-dev xvfb xauth \
-  libsuitesparse-dev libgmsh-dev gmsh python3-gmsh python3-scipy \
+  libsuitesparse-dev libgmsh-dev gmsh gmsh-doc python3-gmsh python3-scipy \
   clang libclang-rt-14-dev valgrind
 
 # Only `make bench` needs these: CGAL meshes each polygon alone, to compare.
