@@ -54,7 +54,7 @@ install-meshlab-plugin: build
 FUZZ_SECONDS ?= 600
 fuzz: build
 	sh tests/sanitize/sanitizer_tree.sh . $(BUILD)/sanitize $(JOBS)
-	for h in read_xy read_obj pipeline; do \
+	for h in read_xy read_obj read_ply pipeline; do \
 	  sh tests/fuzz/run_fuzzer.sh $(BUILD)/sanitize/bin/fuzz_$$h tests/fuzz/corpus/$$h \
 	    $(BUILD)/fuzz-long/$$h $(FUZZ_SECONDS) || exit 1; \
 	done

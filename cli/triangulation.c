@@ -298,6 +298,8 @@ static void describe_failure(const triangulation *t, cm_status status, cli_error
     message = without_polygon_prefix(message, polygon);
     if (vertex < 0 || (size_t)vertex >= p->count) {
         cli_error_set(error, "%s: %s", p->path, message);
+    } else if (p->by_index) { /* a binary file: no lines */
+        cli_error_set(error, "%s: vertex %ld: %s", p->path, p->source_line[vertex], message);
     } else if (other < 0 || (size_t)other >= p->count) {
         cli_error_set(error, "%s:%ld: %s", p->path, p->source_line[vertex], message);
     } else {

@@ -4,6 +4,7 @@ saved layers are checked with exact arithmetic.
 
 Usage: meshlab_cases.py WRAPPER DOCS_DIR CASE
 """
+import json
 import math
 import os
 import subprocess
@@ -463,8 +464,16 @@ def case_gmsh_sections(w):
         expect_ok(code, log)
         assert "correspondence: auto (%d and %d input vertices" % tuple(map(len, sections)) in log, log[-2000:]
         pa, _, ta = check_pair(d, "pa.ply", "pb.ply", sections[0], sections[1], 10.0)
-        print("%s: sections of %d and %d vertices at z = %g and %g paired: %d vertices, %d triangles"
-              % (model, len(sections[0]), len(sections[1]), heights[0], heights[1], len(pa), len(ta)))
+        # The command line reads the same OBJ sections (one `l a b` line per edge).
+        cli = subprocess.run([os.path.join(os.path.dirname(WRAPPER), "compatmesh"), "triangulate", "a.obj",
+                              "b.obj", "-o", "cli"], cwd=d, capture_output=True, text=True, timeout=300)
+        assert cli.returncode == 0, cli.stderr
+        report = json.load(open(os.path.join(d, "cli", "report.json")))
+        assert report["correspondence"] == "auto" and report["n"] >= max(map(len, sections)), report["n"]
+        print("%s: sections of %d and %d vertices at z = %g and %g paired: %d vertices, %d triangles; "
+              "the command line: smallest angles %s" % (model, len(sections[0]), len(sections[1]), heights[0],
+                                                        heights[1], len(pa), len(ta),
+                                                        [round(m["min_angle_deg"], 1) for m in report["meshes"]]))
 
 
 def bad_case(w, inputs, message, replacements=()):
