@@ -48,3 +48,24 @@ def test_equal_counts_keep_index():
 def test_bad_pins_and_modes(kwargs, error, message):
     with pytest.raises(error, match=message):
         compatmesh.triangulate([ring(12), ring(19, inner=0.4)], **kwargs)
+
+
+def test_pin_corners():
+    """Two rectangles numbered from different points: pin_corners_deg ties
+    each corner to the same corner (arc length, the default with it)."""
+    def rectangle(w, h, per_side, start):
+        corners = [(0, 0), (w, 0), (w, h), (0, h)]
+        pts = [np.add(corners[i], j / per_side[i] * np.subtract(corners[(i + 1) % 4], corners[i]))
+               for i in range(4) for j in range(per_side[i])]
+        starts = np.cumsum([0] + per_side[:3])
+        return np.roll(np.array(pts, dtype=float), -start, axis=0), (starts - start) % len(pts)
+    a, ca = rectangle(4.0, 2.0, [5, 3, 5, 3], 2)
+    b, cb = rectangle(6.0, 2.5, [4, 2, 3, 2], 1)
+    r = compatmesh.triangulate([a, b], pin_corners_deg=30)
+    sa, sb = r.boundary_source
+    both = (sa["t"] == 0) & (sb["t"] == 0)
+    assert set(zip(ca, cb)) <= set(zip(sa["edge"][both], sb["edge"][both]))
+    with pytest.raises(compatmesh.InputError, match="polygon 1 has no corner to pin"):
+        compatmesh.triangulate([a, ring(20, jitter=False)], pin_corners_deg=30)
+    with pytest.raises(compatmesh.InputError, match="corner pins need the arclength or auto"):
+        compatmesh.triangulate([a, a], pin_corners_deg=30, correspondence="index")

@@ -12,6 +12,7 @@
 #include "base/progress.h"
 #include "construct/overlay.h"
 #include "correspond/choose.h"
+#include "correspond/corners.h"
 #include "construct/partition.h"
 #include "geom/polytri.h"
 #include "remesh/remesh.h"
@@ -224,6 +225,14 @@ static cm_status check_correspondence_options(cm_result *r, const cm_options *o)
     if (o->num_pins && o->correspondence == CM_CORRESPOND_INDEX)
         return cm_fail(&r->error, CM_ERR_ARGUMENT,
                        "pins need the arclength correspondence (with index, vertex i is vertex i)");
+    if (!(o->pin_corners_deg >= 0 && o->pin_corners_deg < 180))
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "pin_corners_deg is %g; expected 0 (off) or an angle in (0, 180)",
+                       o->pin_corners_deg);
+    if (o->pin_corners_deg > 0 && o->correspondence == CM_CORRESPOND_INDEX)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT,
+                       "corner pins need the arclength or auto correspondence (with index, vertex i is vertex i)");
+    if (o->pin_corners_deg > 0 && o->num_pins)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "give either pins or pin_corners_deg, not both");
     return CM_OK;
 }
 
@@ -247,9 +256,19 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         pins = chosen, num_pins = 1;
     }
+    size_t *corner_pins = NULL;
+    if (s == CM_OK && o->pin_corners_deg > 0) {
+        /* Arc length from the chosen starts (auto) or from vertex 0. */
+        size_t *starts = chosen ? chosen : calloc(k, sizeof *starts);
+        s = starts ? cm_correspond_corner_pins(polygons, counts, k, orientation, starts, o->pin_corners_deg,
+                                               &corner_pins, &num_pins, &r->error)
+                   : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        if (starts != chosen) free(starts);
+        pins = corner_pins;
+    }
     if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, pins, num_pins,
                                                 &r->boundary, &r->error);
-    free(chosen);
+    free(chosen), free(corner_pins);
     if (s == CM_OK) {
         for (size_t g = 0; g < k; g++) merged_counts[g] = r->boundary.n;
         s = run_pipeline(r, (const double *const *)r->boundary.xy, merged_counts, k, o);
