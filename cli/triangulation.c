@@ -3,6 +3,7 @@
 #include "triangulation.h"
 
 #include <errno.h>
+#include <math.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
@@ -181,6 +182,16 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
         return set_correspondence(args, command, value, error);
     case OPTION_PIN:
         return add_pin(args, command, value, error);
+    case OPTION_MAX_EDGE: {
+        char *end;
+        double parsed = strtod(value, &end);
+        if (end == value || *end != '\0' || !(parsed > 0 && parsed < HUGE_VAL)) {
+            cli_error_set(error, "%s: --max-edge needs a positive length, got '%s'", command, value);
+            return CLI_EXIT_USAGE;
+        }
+        args->options.max_edge = parsed;
+        return CLI_EXIT_OK;
+    }
     case OPTION_PIN_CORNERS:
         return parse_degrees(command, "pin-corners", value, 180, &args->options.pin_corners_deg, error);
     case OPTION_MAX_INPUT_BYTES:

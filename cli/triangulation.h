@@ -24,11 +24,12 @@ enum {
     OPTION_CORRESPONDENCE,
     OPTION_PIN,
     OPTION_PIN_CORNERS,
+    OPTION_MAX_EDGE,
     OPTION_TRIANGULATION_END /* a command's own long options start here */
 };
 
 /* The option_spec entries of the triangulation options, for a command's
- * table (keys 'm' and OPTION_NO_REMESH .. OPTION_PIN_CORNERS). */
+ * table (keys 'm' and OPTION_NO_REMESH .. OPTION_MAX_EDGE). */
 #define TRIANGULATION_OPTION_SPECS                                            \
     {"method", 'm', "NAME",                                                   \
      "how the first compatible triangulation is built:\n"                     \
@@ -79,7 +80,12 @@ enum {
      "different corner counts each input keeps as many of\n"                  \
      "its most prominent corners as the input with the\n"                     \
      "fewest has, matched with the cyclic shift that puts\n"                  \
-     "them closest in arc length (arclength, auto)"}
+     "them closest in arc length (arclength, auto)"},          \
+    {"max-edge", OPTION_MAX_EDGE, "L",                                       \
+     "split the boundary edges compatibly (the same number\n"                 \
+     "of points on corresponding edges, each input keeping\n"                 \
+     "its vertices) until none is longer than L in any\n"                     \
+     "input; default: off"}
 
 typedef struct triangulation_args {
     const char **inputs; /* argc entries allocated, input_count used */

@@ -233,6 +233,7 @@ const std::vector<OptionSetter> &option_setters()
          }
        }},
       CM_NUMBER_OPTION(pin_corners_deg),
+      CM_NUMBER_OPTION(max_edge),
   };
   return setters;
 }
@@ -716,6 +717,9 @@ options: keyword arguments named like the fields of the C struct cm_options,
     pin_corners_deg pin every vertex whose corner angle deviates from 180
                     degrees by more than this, in order (see compatmesh.h for
                     different corner counts); 0 (default): off
+    max_edge        split the boundary edges compatibly until none is longer
+                    than this in any polygon (each keeps its vertices; also
+                    with "index"); 0 (default): off
   and planarity_tolerance: how far a 3D point may lie from the plane, as a
     fraction of the polygon's bounding-box diagonal (default 1e-5).
 Raises InputError (a ValueError) with the core's message for bad input,

@@ -90,6 +90,7 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   options.correspondence = settings.correspondence;
   options.pins = pins.empty() ? nullptr : pins.data();
   options.num_pins = pins.size() / 2;
+  options.max_edge = settings.max_edge;
   compatmesh::ResultPtr result;
   try {
     result = compatmesh::triangulate(polygons, options, progress.as_function(0, 0.95));
@@ -116,7 +117,7 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
       double t = 0;
       const std::size_t e = std::size_t(cm_result_boundary_source(r, g, v, &t)), f = (e + 1) % b.size();
       for (int c = 0; c < 3; c++)
-        xyz.push_back(t == 0 ? b.xyz[3 * e + c] : (1 - t) * b.xyz[3 * e + c] + t * b.xyz[3 * f + c]);
+        xyz.push_back(t == 0 ? b.xyz[3 * e + c] : b.xyz[3 * e + c] + t * (b.xyz[3 * f + c] - b.xyz[3 * e + c]));
     }
     for (std::size_t v = n; v < nv; v++) {
       auto p = b.frame.to_space(xy[2 * v], xy[2 * v + 1]);

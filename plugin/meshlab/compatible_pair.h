@@ -25,6 +25,7 @@ struct PairSettings {
   // "I,J; I,J ...": vertex I of the first layer tied to vertex J of the
   // second (the layers' own vertex numbers); empty: none.
   std::string pins;
+  double max_edge = 0;  // > 0: boundary edges split to at most this length
 };
 
 struct PairOutcome {

@@ -101,6 +101,10 @@ void FilterCompatMesh::initParameterSet(QAction *action, MeshDocument &md, RichP
                               "Vertices that must correspond, as 'I,J' pairs separated by ';' (vertex I "
                               "of the first layer with vertex J of the second, the layers' vertex "
                               "numbers), in the same order along both boundaries. Arc length and auto only."));
+      par.addParam(RichFloat("MaxEdge", 0.f, "Largest boundary edge",
+                             "0: off. Otherwise the boundary edges are split compatibly (the same number "
+                             "of points on corresponding edges, every input vertex kept) until none is "
+                             "longer than this in either layer: an element size along the boundary."));
       break;
     case FP_COMPATIBLE_SWEEP:
       par.addParam(RichInt("Sections", 5, "Sections", "Number of intermediate sections, at least 1."));
@@ -137,6 +141,8 @@ bool FilterCompatMesh::applyFilter(QAction *action, MeshDocument &md, const Rich
       if (mode < 0 || mode > 2) return fail("Correspondence: unknown value " + QString::number(mode));
       settings.correspondence = modes[mode];
       settings.pins = par.getString("Pins").toStdString();
+      settings.max_edge = par.getFloat("MaxEdge");
+      if (!(settings.max_edge >= 0)) return fail("MaxEdge: expected 0 (off) or a positive length");
       auto outcome = compatmesh_plugin::compatible_pair(first->cm, second->cm, first_name, second_name,
                                                         settings, progress);
       layers = std::move(outcome.layers);
