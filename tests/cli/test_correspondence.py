@@ -55,6 +55,8 @@ def test_pins_are_honoured(cm, tmp_path):
     (["--pin", "0,x"], "triangulate: --pin needs vertex numbers separated by commas, got '0,x'"),
     (["--pin", "0,31"], "b.xy: pin 0: vertex 31 of polygon 1 is out of range (31 vertices)"),
     (["--pin", "0,0", "--pin", "5,9", "--pin", "8,3"], "b.xy:4: pins 1 and 2 cross: along polygon 1 they come in the other order"),
+    (["--pin", "0,0", "--pin", "0,4"], "a.xy:1: pins 0 and 1 both pin vertex 0 of polygon 0"),
+    (["--pin", "0,0", "--pin", "3,4", "--pin", "5,4"], "b.xy:5: pins 1 and 2 both pin vertex 4 of polygon 1"),
     (["--correspondence", "index"], "with --correspondence index the vertices correspond by index"),
     (["--correspondence", "index", "--pin", "0,0"], "--pin needs --correspondence arclength"),
     (["--correspondence", "nearest"], "unknown --correspondence 'nearest' (known: index, arclength, auto)"),

@@ -259,6 +259,26 @@ def case_ply_polylines(w):
     print("PLY polylines: %d vertices, %d triangles" % (len(pa), len(ta)))
 
 
+def case_max_edge(w):
+    # MaxEdge splits the boundary compatibly: no boundary edge longer than
+    # it in either layer, every input vertex kept, the added points on the
+    # input polylines.
+    a = star(16, 1.0, 0.6)
+    b = [(x + 0.3, y, 1.5) for x, y, _ in star(22, 1.2, 0.9, phase=0.2, scale=(1.0, 0.6))]
+    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
+    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
+    script = script_with(w, "pair.mlx", [('value="0" name="MaxEdge"', 'value="0.15" name="MaxEdge"')])
+    code, log = run(w, ["a.ply", "b.ply"], script, {2: "out_a.ply", 3: "out_b.ply"})
+    expect_ok(code, log)
+    pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, 10.0)
+    loop = boundary_loop(ta)
+    for p in (pa, pb):
+        longest = max(np.linalg.norm(p[loop[i]] - p[loop[i - 1]]) for i in range(len(loop)))
+        assert longest <= 0.15 * (1 + 1e-6), "a boundary edge of %.4f" % longest
+    assert len(loop) > 16 + 22, len(loop)
+    print("MaxEdge 0.15: %d boundary vertices, longest boundary edge within the bound" % len(loop))
+
+
 def case_obj_polylines(w):
     # OBJ polylines with 18 and 15 vertices, the second in a tilted plane
     # and stored clockwise (the core walks it the other way round), paired by

@@ -69,3 +69,29 @@ def test_pin_corners():
         compatmesh.triangulate([a, ring(20, jitter=False)], pin_corners_deg=30)
     with pytest.raises(compatmesh.InputError, match="corner pins need the arclength or auto"):
         compatmesh.triangulate([a, a], pin_corners_deg=30, correspondence="index")
+
+
+def test_max_edge():
+    """Boundary edges split to at most max_edge in both polygons, also with
+    the index correspondence (vertex i stays on vertex i)."""
+    a, b = ring(10), ring(10, inner=0.5) * 1.5
+    r = compatmesh.triangulate([a, b], correspondence="index", max_edge=0.3)
+    n = r.stats["n"]
+    assert n > 10
+    for points, vertices, source in zip((a, b), r.vertices, r.boundary_source):
+        own = source["t"] == 0
+        assert list(source["edge"][own]) == list(range(10))
+        assert np.array_equal(vertices[:n][own], points)
+        edges = np.linalg.norm(np.roll(vertices[:n], -1, axis=0) - vertices[:n], axis=1)
+        assert edges.max() <= 0.3 * (1 + 1e-12)
+    assert np.array_equal(r.boundary_source[0]["t"] == 0, r.boundary_source[1]["t"] == 0)
+    with pytest.raises(compatmesh.InputError, match="max_edge is -1"):
+        compatmesh.triangulate([a, b], max_edge=-1)
+
+
+def test_affine_image_is_the_identity():
+    a = ring(15)
+    b = np.roll(a @ np.array([[2.0, 0.5], [0.3, 1.5]]).T + [3.0, -1.0], -4, axis=0)
+    r = compatmesh.triangulate([a, b], correspondence="auto", remesh=False)
+    assert r.stats["n"] == 15 and r.stats["steiner"] == 0
+    assert list(r.boundary_source[1]["edge"]) == [(i - 4) % 15 for i in range(15)]

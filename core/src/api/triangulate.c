@@ -255,6 +255,15 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
     /* every_vertex: the index correspondence, as pins at every vertex. */
     const size_t *pins = every_vertex ? every_vertex : o->pins;
     size_t num_pins = every_vertex ? counts[0] : o->num_pins, *chosen = NULL;
+    size_t *affine = NULL;
+    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && !(o->pin_corners_deg > 0)) {
+        /* Affine images of one another: vertex to vertex, no distortion. */
+        int found = 0;
+        affine = malloc(counts[0] * k * sizeof *affine);
+        s = affine ? cm_correspond_affine_shift(polygons, counts, k, orientation, affine, &found, &r->error)
+                   : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        if (found) pins = affine, num_pins = counts[0];
+    }
     if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0) {
         chosen = malloc(k * sizeof *chosen);
         s = chosen ? cm_correspond_choose_starts(polygons, counts, k, orientation, chosen, &r->error)
@@ -275,7 +284,7 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
                                                 &r->boundary, &r->error);
     if (s == CM_OK && o->max_edge > 0)
         s = cm_boundary_map_split(&r->boundary, polygons, counts, orientation, o->max_edge, &r->error);
-    free(chosen), free(corner_pins);
+    free(chosen), free(corner_pins), free(affine);
     if (s == CM_OK) {
         for (size_t g = 0; g < k; g++) merged_counts[g] = r->boundary.n;
         s = run_pipeline(r, (const double *const *)r->boundary.xy, merged_counts, k, o);
