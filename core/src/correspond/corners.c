@@ -39,8 +39,8 @@ static size_t find_corners(const double *xy, size_t n, int reversed, size_t star
         const double *p = xy + 2 * cm_ccw_input((start + i + n - 1) % n, n, reversed);
         const double *v = xy + 2 * cm_ccw_input((start + i) % n, n, reversed);
         const double *q = xy + 2 * cm_ccw_input((start + i + 1) % n, n, reversed);
-        double ux = v[0] - p[0], uy = v[1] - p[1], wx = q[0] - v[0], wy = q[1] - v[1];
-        double turn = fabs(atan2(ux * wy - uy * wx, ux * wx + uy * wy)) * (180.0 / CM_PI);
+        /* The corner angle c (or 360 - c) deviates from 180 by the turn. */
+        double turn = 180.0 - cm_angle_at(v, p, q) * (180.0 / CM_PI);
         if (turn > degrees) (*out)[m++] = (corner){i, turn, arc[i] / arc[n]};
     }
     free(arc);
