@@ -9,7 +9,7 @@ DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
   libopenmesh-dev libeigen3-dev pybind11-dev python3-dev \
   meshlab dpkg-dev qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev \
   libglew-dev xvfb xauth \
-  libsuitesparse-dev libgmsh-dev gmsh python3-gmsh python3-scipy \
+  libsuitesparse-dev libgmsh-dev gmsh gmsh-doc python3-gmsh python3-scipy \
   clang libclang-rt-14-dev valgrind
 
 # Only `make bench` needs these: CGAL meshes each polygon alone, to compare.
@@ -54,7 +54,7 @@ install-meshlab-plugin: build
 FUZZ_SECONDS ?= 600
 fuzz: build
 	sh tests/sanitize/sanitizer_tree.sh . $(BUILD)/sanitize $(JOBS)
-	for h in read_xy read_obj pipeline; do \
+	for h in read_xy read_obj read_ply pipeline; do \
 	  sh tests/fuzz/run_fuzzer.sh $(BUILD)/sanitize/bin/fuzz_$$h tests/fuzz/corpus/$$h \
 	    $(BUILD)/fuzz-long/$$h $(FUZZ_SECONDS) || exit 1; \
 	done

@@ -2,6 +2,9 @@
 
 #include "read_polygon.h"
 
+#include "edge_loop.h"
+#include "read_ply.h"
+
 #include <ctype.h>
 #include <errno.h>
 #include <math.h>
@@ -260,9 +263,9 @@ typedef struct obj_state {
     double first_z;
     long first_z_line; /* 0 until the first 'v' line */
     int has_z;         /* some 'v' line gave z */
-    long *loop;        /* 0-based vertex indices of the 'l' line */
-    size_t loop_count;
-    long loop_line;    /* 0 until the 'l' line */
+    loop_edge *edges;  /* of every 'l' line, 0-based (range checked at the end) */
+    size_t edge_count, edge_capacity;
+    long l_line;       /* 0 until the first 'l' line */
     cli_error *error;
 } obj_state;
 
@@ -320,33 +323,36 @@ static int obj_loop_index(obj_state *state, const char *field, long number, long
     return 0;
 }
 
-/* Reads the 'l' line. Tokens past MAX_FIELDS are re-split here because a
- * polyline lists every vertex on one line. */
+/* Reads an 'l' line: a polyline of at least two vertices, one edge per
+ * consecutive pair (MeshLab writes one 'l a b' line per edge). Tokens past
+ * MAX_FIELDS are re-split here because a polyline may list every vertex on
+ * one line. */
 static int obj_polyline(obj_state *state, char *rest, long number)
 {
-    if (state->loop_line) {
-        cli_error_set(state->error, "%s:%ld: a second 'l' line (the first is on line %ld); "
-                      "expected exactly one closed polyline",
-                      state->path, number, state->loop_line);
-        return CLI_EXIT_USAGE;
-    }
-    state->loop_line = number;
-    size_t capacity = 0;
+    if (!state->l_line) state->l_line = number;
+    long previous = -1, index;
+    size_t indices = 0;
     char *save = NULL;
     for (char *field = strtok_r(rest, " \t\r\v\f", &save); field;
-         field = strtok_r(NULL, " \t\r\v\f", &save)) {
-        if (state->loop_count == capacity) {
-            capacity = capacity ? 2 * capacity : 64;
-            long *bigger = realloc(state->loop, capacity * sizeof *bigger);
-            if (!bigger) {
-                cli_error_set(state->error, "%s: out of memory", state->path);
-                return CLI_EXIT_INTERNAL;
+         field = strtok_r(NULL, " \t\r\v\f", &save), indices++) {
+        if (obj_loop_index(state, field, number, &index)) return CLI_EXIT_USAGE;
+        if (indices > 0) {
+            if (state->edge_count == state->edge_capacity) {
+                size_t capacity = state->edge_capacity ? 2 * state->edge_capacity : 64;
+                loop_edge *bigger = realloc(state->edges, capacity * sizeof *bigger);
+                if (!bigger) {
+                    cli_error_set(state->error, "%s: out of memory", state->path);
+                    return CLI_EXIT_INTERNAL;
+                }
+                state->edges = bigger, state->edge_capacity = capacity;
             }
-            state->loop = bigger;
+            state->edges[state->edge_count++] = (loop_edge){previous, index, number};
         }
-        if (obj_loop_index(state, field, number, &state->loop[state->loop_count]))
-            return CLI_EXIT_USAGE;
-        state->loop_count++;
+        previous = index;
+    }
+    if (indices < 2) {
+        cli_error_set(state->error, "%s:%ld: an 'l' line needs at least 2 vertices", state->path, number);
+        return CLI_EXIT_USAGE;
     }
     return CLI_EXIT_OK;
 }
@@ -375,41 +381,33 @@ static int visit_obj_line(char *line, long number, void *opaque)
     return CLI_EXIT_OK; /* other statements (o, g, vn, ...) do not matter */
 }
 
-/* Checks the polyline and turns it into the polygon: the 'l' order, without
- * the closing repetition of the first index. */
+/* Chains the 'l' edges into the polygon. */
 static int obj_make_polygon(obj_state *state, polygon_input *polygon)
 {
     const char *path = state->path;
-    if (!state->loop_line) {
+    if (!state->l_line) {
         cli_error_set(state->error, "%s: no 'l' line; expected one closed polyline", path);
         return CLI_EXIT_USAGE;
     }
-    for (size_t i = 0; i < state->loop_count; i++) {
-        if ((size_t)state->loop[i] >= state->vertices.count) {
-            cli_error_set(state->error, "%s:%ld: vertex index %ld is out of range "
-                          "(the file has %zu vertices)", path, state->loop_line,
-                          state->loop[i] + 1, state->vertices.count);
-            return CLI_EXIT_USAGE;
-        }
-    }
-    if (state->loop_count < 2 || state->loop[0] != state->loop[state->loop_count - 1]) {
-        cli_error_set(state->error, "%s:%ld: the 'l' polyline is not closed: its last "
-                      "index must repeat the first", path, state->loop_line);
-        return CLI_EXIT_USAGE;
-    }
-    size_t count = state->loop_count - 1;
+    long *loop;
+    size_t count;
+    int code = edge_loop(path, state->edges, state->edge_count, state->vertices.count, 1, 0, &loop, &count,
+                         state->error);
+    if (code != CLI_EXIT_OK) return code;
     polygon->xy = malloc(2 * count * sizeof *polygon->xy);
     polygon->source_line = malloc(count * sizeof *polygon->source_line);
     if (!polygon->xy || !polygon->source_line) {
+        free(loop);
         cli_error_set(state->error, "%s: out of memory", path);
         return CLI_EXIT_INTERNAL;
     }
     for (size_t i = 0; i < count; i++) {
-        size_t v = (size_t)state->loop[i];
+        size_t v = (size_t)loop[i];
         polygon->xy[2 * i] = state->vertices.xy[2 * v];
         polygon->xy[2 * i + 1] = state->vertices.xy[2 * v + 1];
         polygon->source_line[i] = state->vertices.line[v];
     }
+    free(loop);
     polygon->count = count;
     polygon->has_z = state->has_z;
     polygon->z = state->first_z;
@@ -425,16 +423,16 @@ static int parse_obj(const char *path, char *text, polygon_input *polygon,
     int code = for_each_line(text, visit_obj_line, &state);
     if (code == CLI_EXIT_OK) code = obj_make_polygon(&state, polygon);
     vertex_list_free(&state.vertices);
-    free(state.loop);
+    free(state.edges);
     return code;
 }
 
 /* ---- entry point ------------------------------------------------------- */
 
-static int has_obj_extension(const char *path)
+static int has_extension(const char *path, const char *extension)
 {
-    size_t length = strlen(path);
-    return length >= 4 && strcasecmp(path + length - 4, ".obj") == 0;
+    size_t length = strlen(path), n = strlen(extension);
+    return length >= n && strcasecmp(path + length - n, extension) == 0;
 }
 
 int parse_polygon_text(const char *path, char *text, size_t length,
@@ -443,13 +441,15 @@ int parse_polygon_text(const char *path, char *text, size_t length,
     memset(polygon, 0, sizeof *polygon);
     int code;
     const char *nul = memchr(text, '\0', length);
-    if (nul) {
+    if (has_extension(path, ".ply")) {
+        code = parse_ply(path, text, length, polygon, error);
+    } else if (nul) {
         long line = 1;
         for (const char *p = text; p < nul; p++) line += *p == '\n';
         cli_error_set(error, "%s:%ld: binary data (a NUL byte); expected a text file",
                       path, line);
         code = CLI_EXIT_USAGE;
-    } else if (has_obj_extension(path)) {
+    } else if (has_extension(path, ".obj")) {
         code = parse_obj(path, text, polygon, error);
     } else {
         code = parse_xy(path, text, polygon, error);

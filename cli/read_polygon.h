@@ -14,13 +14,15 @@ typedef struct polygon_input {
     size_t count;
     double *xy;
     long *source_line;
+    int by_index;     /* binary files: source_line[i] is the vertex's index in the file */
     int has_z;        /* an OBJ file gave z (the same for every vertex) */
     double z;         /* that z, else 0 */
 } polygon_input;
 
 /* Reads `path` into *polygon. Files ending in ".obj" (any case) are read as
- * an OBJ polyline ("v x y [z]" lines and exactly one closed "l" line, the
- * polygon following the "l" order, z constant); anything else as ".xy" text
+ * an OBJ polyline ("v x y [z]" lines and "l" lines whose edges form one
+ * closed loop, the polygon following the first "l" line, z constant);
+ * ".ply" as a PLY edge mesh (read_ply.h); anything else as ".xy" text
  * (one "x y" vertex per line, blanks and/or one comma between the numbers,
  * '#' to end of line is a comment, blank lines ignored).
  * A file longer than max_bytes is refused after reading max_bytes + 1

@@ -68,10 +68,14 @@ static void print_triangulate_help(FILE *out)
           "input order and bit-identical, then the Steiner vertices.\n"
           "\n"
           "Inputs (chosen by file name extension):\n"
-          "  .obj        an OBJ polyline: 'v x y [z]' lines and exactly one closed\n"
-          "              'l' line (its last index repeats the first); the polygon\n"
-          "              follows the 'l' order; z, if given, must be the same for\n"
-          "              all vertices\n"
+          "  .obj        an OBJ polyline: 'v x y [z]' lines and 'l' lines whose\n"
+          "              edges form one closed loop (one closed 'l' line, or one\n"
+          "              'l a b' line per edge in any order, as MeshLab writes);\n"
+          "              the polygon follows the first 'l' line; z, if given, must\n"
+          "              be the same for all vertices\n"
+          "  .ply        a PLY edge mesh (ASCII or binary): element vertex (x, y,\n"
+          "              optional z) and element edge (vertex1, vertex2), the edges\n"
+          "              forming one closed loop, followed from the first edge\n"
           "  any other   one vertex 'x y' per line, the numbers separated by blanks\n"
           "              and/or one comma (\"1.5 2\", \"1.5, 2\", \"1.5,2\"); '#' starts\n"
           "              a comment; blank lines are ignored\n"
@@ -246,7 +250,7 @@ static int write_extras(triangulate_run *run, cli_error *error)
 {
     const char *path;
     report_info info = {run->tri.result, run->args->tri.method_name, run->args->tri.options.remesh,
-                        run->tri.options.correspondence,
+                        run->tri.options.correspondence, run->tri.options.max_edge,
                         run->tri.seconds_total, run->args->tri.inputs,
                         (const char *const *)run->final_paths};
     int code = stage_file(run, "report.json", &path, error);

@@ -3,6 +3,7 @@
 #include "triangulation.h"
 
 #include <errno.h>
+#include <math.h>
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
@@ -138,14 +139,14 @@ static int parse_int(const char *command, const char *option, const char *text, 
     return code;
 }
 
-static int parse_min_angle(const char *command, const char *text, double *value,
-                           cli_error *error)
+/* Degrees in (0, high); the message names the option. */
+static int parse_degrees(const char *command, const char *option, const char *text, double high,
+                         double *value, cli_error *error)
 {
     char *end;
     double parsed = strtod(text, &end);
-    if (end == text || *end != '\0' || !(parsed > 0 && parsed < 60)) {
-        cli_error_set(error, "%s: --min-angle needs degrees in (0, 60), got '%s'", command,
-                      text);
+    if (end == text || *end != '\0' || !(parsed > 0 && parsed < high)) {
+        cli_error_set(error, "%s: --%s needs degrees in (0, %g), got '%s'", command, option, high, text);
         return CLI_EXIT_USAGE;
     }
     *value = parsed;
@@ -165,7 +166,7 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
         args->options.remesh = 0;
         return CLI_EXIT_OK;
     case OPTION_MIN_ANGLE:
-        return parse_min_angle(command, value, &args->options.min_angle_deg, error);
+        return parse_degrees(command, "min-angle", value, 60, &args->options.min_angle_deg, error);
     case OPTION_MAX_STEINER:
         return parse_long(command, "max-steiner", value, 0, LONG_MAX, &args->options.max_steiner,
                           error);
@@ -181,6 +182,18 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
         return set_correspondence(args, command, value, error);
     case OPTION_PIN:
         return add_pin(args, command, value, error);
+    case OPTION_MAX_EDGE: {
+        char *end;
+        double parsed = strtod(value, &end);
+        if (end == value || *end != '\0' || !(parsed > 0 && parsed < HUGE_VAL)) {
+            cli_error_set(error, "%s: --max-edge needs a positive length, got '%s'", command, value);
+            return CLI_EXIT_USAGE;
+        }
+        args->options.max_edge = parsed;
+        return CLI_EXIT_OK;
+    }
+    case OPTION_PIN_CORNERS:
+        return parse_degrees(command, "pin-corners", value, 180, &args->options.pin_corners_deg, error);
     case OPTION_MAX_INPUT_BYTES:
         return parse_long(command, "max-input-bytes", value, 1, LONG_MAX, &args->max_input_bytes,
                           error);
@@ -197,10 +210,14 @@ int triangulation_args_check(const triangulation_args *args, const char *command
                       "(see 'compatmesh %s --help')", command, args->input_count, command);
         return CLI_EXIT_USAGE;
     }
-    if (args->pin_count && args->correspondence_given &&
+    if ((args->pin_count || args->options.pin_corners_deg > 0) && args->correspondence_given &&
         args->options.correspondence == CM_CORRESPOND_INDEX) {
-        cli_error_set(error, "%s: --pin needs --correspondence arclength (with index, vertex i is vertex i)",
-                      command);
+        cli_error_set(error, "%s: --%s needs --correspondence arclength (with index, vertex i is vertex i)",
+                      command, args->pin_count ? "pin" : "pin-corners");
+        return CLI_EXIT_USAGE;
+    }
+    if (args->pin_count && args->options.pin_corners_deg > 0) {
+        cli_error_set(error, "%s: give --pin or --pin-corners, not both", command);
         return CLI_EXIT_USAGE;
     }
     if (args->pin_values != args->pin_count * args->input_count) {
@@ -298,6 +315,8 @@ static void describe_failure(const triangulation *t, cm_status status, cli_error
     message = without_polygon_prefix(message, polygon);
     if (vertex < 0 || (size_t)vertex >= p->count) {
         cli_error_set(error, "%s: %s", p->path, message);
+    } else if (p->by_index) { /* a binary file: no lines */
+        cli_error_set(error, "%s: vertex %ld: %s", p->path, p->source_line[vertex], message);
     } else if (other < 0 || (size_t)other >= p->count) {
         cli_error_set(error, "%s:%ld: %s", p->path, p->source_line[vertex], message);
     } else {
@@ -344,7 +363,7 @@ int triangulation_run(triangulation *t, const triangulation_args *args, cli_erro
     if (code == CLI_EXIT_OK && !args->correspondence_given) { /* pins or counts decide */
         int differ = 0;
         for (size_t g = 1; g < args->input_count; g++) differ |= t->polygons[g].count != t->polygons[0].count;
-        if (args->pin_count) t->options.correspondence = CM_CORRESPOND_ARCLENGTH;
+        if (args->pin_count || args->options.pin_corners_deg > 0) t->options.correspondence = CM_CORRESPOND_ARCLENGTH;
         else if (differ) t->options.correspondence = CM_CORRESPOND_AUTO;
     }
     if (code == CLI_EXIT_OK) code = compute(t, error);

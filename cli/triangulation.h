@@ -23,11 +23,13 @@ enum {
     OPTION_MAX_INPUT_BYTES,
     OPTION_CORRESPONDENCE,
     OPTION_PIN,
+    OPTION_PIN_CORNERS,
+    OPTION_MAX_EDGE,
     OPTION_TRIANGULATION_END /* a command's own long options start here */
 };
 
 /* The option_spec entries of the triangulation options, for a command's
- * table (keys 'm' and OPTION_NO_REMESH .. OPTION_PIN). */
+ * table (keys 'm' and OPTION_NO_REMESH .. OPTION_MAX_EDGE). */
 #define TRIANGULATION_OPTION_SPECS                                            \
     {"method", 'm', "NAME",                                                   \
      "how the first compatible triangulation is built:\n"                     \
@@ -71,7 +73,19 @@ enum {
      "arclength: vertex I of the first input corresponds\n"                   \
      "to vertex J of the second, ... (0-based, in file\n"                     \
      "order; repeat for more pins; default: the first\n"                      \
-     "vertices)"}
+     "vertices)"},                                                            \
+    {"pin-corners", OPTION_PIN_CORNERS, "DEG",                                \
+     "pin every vertex whose corner angle deviates from\n"                    \
+     "180 degrees by more than DEG, in order; with\n"                          \
+     "different corner counts each input keeps as many of\n"                  \
+     "its most prominent corners as the input with the\n"                     \
+     "fewest has, matched with the cyclic shift that puts\n"                  \
+     "them closest in arc length (arclength, auto)"},          \
+    {"max-edge", OPTION_MAX_EDGE, "L",                                       \
+     "split the boundary edges compatibly (the same number\n"                 \
+     "of points on corresponding edges, each input keeping\n"                 \
+     "its vertices) until none is longer than L in any\n"                     \
+     "input; default: off"}
 
 typedef struct triangulation_args {
     const char **inputs; /* argc entries allocated, input_count used */

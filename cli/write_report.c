@@ -80,7 +80,7 @@ static void write_mesh_entry(FILE *file, const report_info *info, size_t g)
     write_quality(file, "", ",\n      ", cm_result_quality_before(info->result, g, &quality),
                   quality);
     fputs("}", file);
-    if (info->correspondence != CM_CORRESPOND_INDEX) {
+    if (info->correspondence != CM_CORRESPOND_INDEX || info->max_edge > 0) {
         /* Per boundary vertex: [e, t], the point at t of input edge e -> e + 1. */
         fputs(",\n     \"boundary_source\": [", file);
         for (size_t i = 0; i < cm_result_stats(info->result)->n; i++) {
@@ -116,6 +116,7 @@ int write_report(const char *path, const report_info *info, cli_error *error)
     fprintf(file, ",\n  \"remesh\": %s,\n", info->remesh ? "true" : "false");
     static const char *const correspondence[] = {"index", "arclength", "auto"};
     fprintf(file, "  \"correspondence\": \"%s\",\n", correspondence[info->correspondence]);
+    if (info->max_edge > 0) fprintf(file, "  \"max_edge\": %.17g,\n", info->max_edge);
     fprintf(file, "  \"reversed_input\": %s,\n", stats->reversed_input ? "true" : "false");
     fprintf(file, "  \"fallback_count\": %zu,\n", stats->fallback_count);
     fprintf(file, "  \"steiner_before_remesh\": %zu,\n", stats->steiner_before_remesh);

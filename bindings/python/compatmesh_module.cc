@@ -232,6 +232,8 @@ const std::vector<OptionSetter> &option_setters()
            c.pins.push_back(std::move(vertices));
          }
        }},
+      CM_NUMBER_OPTION(pin_corners_deg),
+      CM_NUMBER_OPTION(max_edge),
   };
   return setters;
 }
@@ -429,7 +431,7 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
   // length (index needs equal counts).
   bool differ = false;
   for (std::size_t c : counts) differ |= c != counts.front();
-  if (!callbacks->correspondence_given && !callbacks->pins.empty())
+  if (!callbacks->correspondence_given && (!callbacks->pins.empty() || options.pin_corners_deg > 0))
     options.correspondence = CM_CORRESPOND_ARCLENGTH;
   else if (!callbacks->correspondence_given && differ)
     options.correspondence = CM_CORRESPOND_AUTO;
@@ -712,6 +714,12 @@ options: keyword arguments named like the fields of the C struct cm_options,
                     compatmesh.Correspondence
     pins            arclength: a sequence of tuples, one vertex per polygon,
                     that correspond (default: the first vertices)
+    pin_corners_deg pin every vertex whose corner angle deviates from 180
+                    degrees by more than this, in order (see compatmesh.h for
+                    different corner counts); 0 (default): off
+    max_edge        split the boundary edges compatibly until none is longer
+                    than this in any polygon (each keeps its vertices; also
+                    with "index"); 0 (default): off
   and planarity_tolerance: how far a 3D point may lie from the plane, as a
     fraction of the polygon's bounding-box diagonal (default 1e-5).
 Raises InputError (a ValueError) with the core's message for bad input,

@@ -3,7 +3,6 @@
 #include "float_check.h"
 #include "layer_boundary.h"
 
-#include <compatmesh/resample.hh>
 
 #include <algorithm>
 #include <cstdio>
@@ -21,37 +20,39 @@ compatmesh::Boundary read_layer(const CMeshO &layer, const std::string &name, bo
   }
 }
 
-// The polygon refitted after its vertices changed: a disk's frame follows
-// the (possibly reversed) boundary as the adapter's does, a polyline's
-// keeps the canonical normal.
-compatmesh::Boundary rebuild(std::vector<double> xyz, std::vector<int> source, bool is_disk,
-                             const std::string &name)
+// The pins text "I,J; I,J ..." as pairs of boundary positions (the
+// polygons' indices), from the layers' vertex numbers.
+std::vector<std::size_t> parse_pins(const std::string &text, const compatmesh::Boundary *polygons,
+                                    const std::string *names)
 {
-  try {
-    return compatmesh::make_boundary(std::move(xyz), std::move(source),
-                                     compatmesh::kDefaultPlanarityTolerance,
-                                     is_disk ? compatmesh::NormalSign::FollowWinding
-                                             : compatmesh::NormalSign::Canonical);
-  } catch (const compatmesh::Error &e) {
-    throw FilterError("layer '" + name + "': " + e.what());
+  std::vector<std::size_t> pins;
+  std::size_t at = 0;
+  while (true) {
+    at = text.find_first_not_of(" \t;", at);
+    if (at == std::string::npos) break;
+    std::size_t end = text.find(';', at);
+    std::string item = text.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    while (!item.empty() && (item.back() == ' ' || item.back() == '\t')) item.pop_back();
+    long v[2];
+    char tail = 0;
+    if (std::sscanf(item.c_str(), " %ld , %ld %c", &v[0], &v[1], &tail) != 2 || v[0] < 0 || v[1] < 0)
+      throw FilterError("Pins: '" + item + "' is not a pair 'I,J' of vertex numbers (pairs separated by ';')");
+    for (int g = 0; g < 2; g++) {
+      const std::vector<int> &source = polygons[g].source_vertex;
+      auto it = std::find(source.begin(), source.end(), int(v[g]));
+      if (it == source.end())
+        throw FilterError("Pins: '" + item + "': vertex " + std::to_string(v[g]) + " of layer '" +
+                          names[g] + "' is not on its boundary");
+      pins.push_back(std::size_t(it - source.begin()));
+    }
+    at = end;
   }
+  return pins;
 }
 
-// Starts the polygon at vertex offset (mod n) and optionally reverses it
-// (keeping that start vertex first).
-compatmesh::Boundary reorder(const compatmesh::Boundary &b, long offset, bool reverse, bool is_disk,
-                             const std::string &name)
+const char *correspondence_name(cm_correspondence c)
 {
-  const long n = long(b.size());
-  std::vector<double> xyz;
-  std::vector<int> source;
-  for (long i = 0; i < n; i++) {
-    long k = reverse ? -i : i;
-    long j = (((offset + k) % n) + n) % n;
-    xyz.insert(xyz.end(), b.xyz.begin() + 3 * j, b.xyz.begin() + 3 * j + 3);
-    source.push_back(b.source_vertex[j]);
-  }
-  return rebuild(std::move(xyz), std::move(source), is_disk, name);
+  return c == CM_CORRESPOND_INDEX ? "index" : c == CM_CORRESPOND_ARCLENGTH ? "arc length" : "auto";
 }
 
 std::string degrees(double value)
@@ -77,38 +78,26 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
     if (polygons[g].size() < 3)
       throw FilterError("layer '" + names[g] + "': its boundary has " +
                       std::to_string(polygons[g].size()) + " vertices; need at least 3");
-  if (settings.start_offset != 0 || settings.reverse_second)
-    polygons[1] = reorder(polygons[1], settings.start_offset, settings.reverse_second, disk[1],
-                          second_name);
-
-  const std::size_t n0 = polygons[0].size(), n1 = polygons[1].size();
-  if (n0 != n1) {
-    if (!settings.resample)
-      throw FilterError("the boundaries have " + std::to_string(n0) + " and " + std::to_string(n1) +
-                      " vertices; tick 'Resample to a common count' or give equal counts");
-    compatmesh::ResampledLoop a, b;
-    compatmesh::resample_common_count(polygons[0].xyz.data(), n0, polygons[1].xyz.data(), n1, a, b);
-    for (int &s : a.source) s = s < 0 ? -1 : polygons[0].source_vertex[s];
-    for (int &s : b.source) s = s < 0 ? -1 : polygons[1].source_vertex[s];
-    polygons[0] = rebuild(std::move(a.xyz), std::move(a.source), disk[0], first_name);
-    polygons[1] = rebuild(std::move(b.xyz), std::move(b.source), disk[1], second_name);
-    outcome.log.push_back("resampled " + std::to_string(n0) + " and " + std::to_string(n1) +
-                          " boundary vertices to " + std::to_string(polygons[0].size()) +
-                          " each by arc length (every input vertex kept)");
-  }
+  const std::vector<std::size_t> pins = parse_pins(settings.pins, polygons.data(), names);
+  if (!pins.empty() && settings.correspondence == CM_CORRESPOND_INDEX)
+    throw FilterError("Pins need the correspondence 'arc length' or 'auto' (with 'index', vertex i is vertex i)");
 
   cm_options options;
   cm_options_init(&options);
   options.min_angle_deg = settings.min_angle_deg;
   options.max_steiner = settings.max_steiner;
   options.remesh = settings.remesh ? 1 : 0;
+  options.correspondence = settings.correspondence;
+  options.pins = pins.empty() ? nullptr : pins.data();
+  options.num_pins = pins.size() / 2;
+  options.max_edge = settings.max_edge;
   compatmesh::ResultPtr result;
   try {
     result = compatmesh::triangulate(polygons, options, progress.as_function(0, 0.95));
   } catch (const compatmesh::Error &e) {
     std::string message = e.what();
-    if (e.status() == CM_ERR_ORIENTATION_MISMATCH)
-      message += " (toggle 'Reverse second boundary')";
+    if (e.status() == CM_ERR_ORIENTATION_MISMATCH || e.status() == CM_ERR_COUNT_MISMATCH)
+      message += " (with Correspondence 'auto' the boundaries need not agree)";
     throw FilterError(message);
   }
 
@@ -120,7 +109,16 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   for (int g = 0; g < 2; g++) {
     const compatmesh::Boundary &b = polygons[g];
     const double *xy = cm_result_vertices(r, g);
-    std::vector<double> xyz(b.xyz.begin(), b.xyz.end());  // the input vertices, as read
+    // Boundary vertices: the input vertices as read, and points on the
+    // input edges (in 3D, at the core's parameter) where the other
+    // boundary has a vertex.
+    std::vector<double> xyz;
+    for (std::size_t v = 0; v < n; v++) {
+      double t = 0;
+      const std::size_t e = std::size_t(cm_result_boundary_source(r, g, v, &t)), f = (e + 1) % b.size();
+      for (int c = 0; c < 3; c++)
+        xyz.push_back(t == 0 ? b.xyz[3 * e + c] : b.xyz[3 * e + c] + t * (b.xyz[3 * f + c] - b.xyz[3 * e + c]));
+    }
     for (std::size_t v = n; v < nv; v++) {
       auto p = b.frame.to_space(xy[2 * v], xy[2 * v + 1]);
       xyz.insert(xyz.end(), p.begin(), p.end());
@@ -143,6 +141,10 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   cm_quality q[2];
   cm_result_quality(r, 0, &q[0]);
   cm_result_quality(r, 1, &q[1]);
+  outcome.log.push_back(std::string("correspondence: ") + correspondence_name(settings.correspondence) +
+                        " (" + std::to_string(polygons[0].size()) + " and " +
+                        std::to_string(polygons[1].size()) + " input vertices, " + std::to_string(n) +
+                        " on the common boundary, every input vertex kept)");
   outcome.log.push_back("compatible triangulation: " + std::to_string(n) + " boundary vertices, " +
                         std::to_string(stats->steiner) + " Steiner vertices (vertex quality 1), " +
                         std::to_string(nt) + " triangles");

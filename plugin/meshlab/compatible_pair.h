@@ -1,7 +1,7 @@
 // "Compatible Triangulation of Two Boundaries": the worker behind the
-// filter. Reads the two layers' polygons, pairs their vertices (start
-// offset, direction, common count), runs the core, and returns the two
-// output layers after checking them as floats. Changes no layer.
+// filter. Reads the two layers' polygons, runs the core with the chosen
+// correspondence, and returns the two output layers after checking them
+// as floats. Changes no layer.
 #ifndef FILTER_COMPATMESH_COMPATIBLE_PAIR_H
 #define FILTER_COMPATMESH_COMPATIBLE_PAIR_H
 
@@ -9,6 +9,7 @@
 #include "layers.h"
 #include "progress.h"
 
+#include <compatmesh/compatmesh.h>
 #include <common/ml_mesh_type.h>
 
 #include <string>
@@ -20,16 +21,17 @@ struct PairSettings {
   double min_angle_deg = 25;
   long max_steiner = -1;
   bool remesh = true;
-  int start_offset = 0;         // vertex of the second boundary paired with the first's vertex 0
-  bool reverse_second = false;  // walk the second boundary the other way
-  bool resample = true;         // bring different counts to a common one by arc length
+  cm_correspondence correspondence = CM_CORRESPOND_AUTO;
+  // "I,J; I,J ...": vertex I of the first layer tied to vertex J of the
+  // second (the layers' own vertex numbers); empty: none.
+  std::string pins;
+  double max_edge = 0;  // > 0: boundary edges split to at most this length
 };
 
 struct PairOutcome {
   std::vector<LayerData> layers;  // two, identical triangles
   std::vector<std::string> log;   // lines for MeshLab's log
 };
-
 
 // first, second: the layers; names: their labels (for messages and the new
 // layers' labels). Throws FilterError with a one-line message.

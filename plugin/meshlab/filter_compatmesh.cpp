@@ -89,15 +89,22 @@ void FilterCompatMesh::initParameterSet(QAction *action, MeshDocument &md, RichP
                            "0: no refinement."));
       par.addParam(RichBool("Remesh", true, "Remesh",
                             "Improve angles by flips, smoothing and splits applied to both layers at once."));
-      par.addParam(RichInt("StartOffset", 0, "Start vertex of the second boundary",
-                           "Index, along the second boundary, of the vertex paired with the first "
-                           "boundary's first vertex."));
-      par.addParam(RichBool("ReverseSecond", false, "Reverse second boundary",
-                            "Walk the second boundary in the opposite direction."));
-      par.addParam(RichBool("Resample", true, "Resample to a common count",
-                            "When the boundaries have different vertex counts, give both the union of "
-                            "their arc-length parameters (every input vertex is kept; the other "
-                            "boundary's vertices are added on edges)."));
+      par.addParam(RichEnum("Correspondence", 2, QStringList() << "index" << "arc length" << "auto",
+                            "Correspondence",
+                            "Which boundary points correspond. index: vertex i of one layer is vertex i "
+                            "of the other (equal counts, same direction). arc length: normalised arc "
+                            "length between the pins (or from each boundary's first vertex). auto: arc "
+                            "length from the start and direction that align the boundaries best. With "
+                            "arc length and auto the counts may differ: every input vertex is kept and "
+                            "the other boundary's vertices are added on its edges."));
+      par.addParam(RichString("Pins", "", "Pins",
+                              "Vertices that must correspond, as 'I,J' pairs separated by ';' (vertex I "
+                              "of the first layer with vertex J of the second, the layers' vertex "
+                              "numbers), in the same order along both boundaries. Arc length and auto only."));
+      par.addParam(RichFloat("MaxEdge", 0.f, "Largest boundary edge",
+                             "0: off. Otherwise the boundary edges are split compatibly (the same number "
+                             "of points on corresponding edges, every input vertex kept) until none is "
+                             "longer than this in either layer: an element size along the boundary."));
       break;
     case FP_COMPATIBLE_SWEEP:
       par.addParam(RichInt("Sections", 5, "Sections", "Number of intermediate sections, at least 1."));
@@ -129,9 +136,13 @@ bool FilterCompatMesh::applyFilter(QAction *action, MeshDocument &md, const Rich
       settings.min_angle_deg = par.getFloat("MinAngle");
       settings.max_steiner = par.getInt("MaxSteiner");
       settings.remesh = par.getBool("Remesh");
-      settings.start_offset = par.getInt("StartOffset");
-      settings.reverse_second = par.getBool("ReverseSecond");
-      settings.resample = par.getBool("Resample");
+      const cm_correspondence modes[] = {CM_CORRESPOND_INDEX, CM_CORRESPOND_ARCLENGTH, CM_CORRESPOND_AUTO};
+      const int mode = par.getEnum("Correspondence");
+      if (mode < 0 || mode > 2) return fail("Correspondence: unknown value " + QString::number(mode));
+      settings.correspondence = modes[mode];
+      settings.pins = par.getString("Pins").toStdString();
+      settings.max_edge = par.getFloat("MaxEdge");
+      if (!(settings.max_edge >= 0)) return fail("MaxEdge: expected 0 (off) or a positive length");
       auto outcome = compatmesh_plugin::compatible_pair(first->cm, second->cm, first_name, second_name,
                                                         settings, progress);
       layers = std::move(outcome.layers);

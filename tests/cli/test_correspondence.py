@@ -2,6 +2,7 @@
 arc length, each keeping its own vertices bit-identical on the boundary;
 pins are honoured; bad pins are one-line errors naming the file."""
 import json
+import math
 
 import meshio
 import pytest
@@ -54,6 +55,8 @@ def test_pins_are_honoured(cm, tmp_path):
     (["--pin", "0,x"], "triangulate: --pin needs vertex numbers separated by commas, got '0,x'"),
     (["--pin", "0,31"], "b.xy: pin 0: vertex 31 of polygon 1 is out of range (31 vertices)"),
     (["--pin", "0,0", "--pin", "5,9", "--pin", "8,3"], "b.xy:4: pins 1 and 2 cross: along polygon 1 they come in the other order"),
+    (["--pin", "0,0", "--pin", "0,4"], "a.xy:1: pins 0 and 1 both pin vertex 0 of polygon 0"),
+    (["--pin", "0,0", "--pin", "3,4", "--pin", "5,4"], "b.xy:5: pins 1 and 2 both pin vertex 4 of polygon 1"),
     (["--correspondence", "index"], "with --correspondence index the vertices correspond by index"),
     (["--correspondence", "index", "--pin", "0,0"], "--pin needs --correspondence arclength"),
     (["--correspondence", "nearest"], "unknown --correspondence 'nearest' (known: index, arclength, auto)"),
@@ -85,3 +88,75 @@ def test_auto_recovers_a_shifted_start(cm, tmp_path):
     report = json.loads((tmp_path / "out" / "report.json").read_text())
     assert report["n"] == 24
     assert report["meshes"][1]["boundary_source"][0] == [17, 0]
+
+
+def sampled_rectangle(w, h, per_side, start):
+    """A w x h rectangle with per_side[i] points on side i (from its
+    corner), numbered from point `start`; returns the points and the index
+    of each corner (lower left, lower right, upper right, upper left)."""
+    corners = [(0.0, 0.0), (w, 0.0), (w, h), (0.0, h)]
+    points, corner_index = [], []
+    for i in range(4):
+        (x0, y0), (x1, y1) = corners[i], corners[(i + 1) % 4]
+        corner_index.append(len(points))
+        for j in range(per_side[i]):
+            t = j / per_side[i]
+            points.append((x0 + t * (x1 - x0), y0 + t * (y1 - y0)))
+    n = len(points)
+    return points[start:] + points[:start], [(c - start) % n for c in corner_index]
+
+
+def pinned_pairs(report):
+    """Boundary vertices where every input has one of its own vertices."""
+    a, b = (m["boundary_source"] for m in report["meshes"])
+    return {(a[i][0], b[i][0]) for i in range(report["n"]) if a[i][1] == 0 and b[i][1] == 0}
+
+
+def test_pin_corners_ties_corner_to_corner(cm, tmp_path):
+    """Rectangles sampled differently, numbered from a point on their
+    bottom sides: --pin-corners pins each corner to the same corner."""
+    a, ca = sampled_rectangle(4.0, 2.0, [5, 3, 5, 3], 2)
+    b, cb = sampled_rectangle(6.0, 2.5, [4, 2, 3, 2], 1)
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    r = cm("triangulate", "a.xy", "b.xy", "-o", "out", "--pin-corners", "30")
+    assert r.returncode == 0, r.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert report["correspondence"] == "arclength"  # the default with corner pins
+    assert set(zip(ca, cb)) <= pinned_pairs(report)
+    # Without them, arc length alone puts the corners elsewhere.
+    r = cm("triangulate", "a.xy", "b.xy", "-o", "plain", "--correspondence", "arclength")
+    assert r.returncode == 0, r.stderr
+    plain = json.loads((tmp_path / "plain" / "report.json").read_text())
+    assert not set(zip(ca, cb)) <= pinned_pairs(plain)
+
+
+def test_pin_corners_keeps_the_most_prominent(cm, tmp_path):
+    """A house (four corners of 90 and 80 degrees, a roof apex turning 20)
+    against a rectangle (four corners): the apex, least prominent, is the
+    one left unpinned; the other corners pair in order."""
+    house = [(0.0, 0.0), (2.0, 0.0), (4.0, 0.0), (4.0, 2.0), (2.0, 2.35), (0.0, 2.0)]
+    rect, cr = sampled_rectangle(4.0, 2.0, [3, 2, 3, 2], 1)
+    write_xy(tmp_path / "a.xy", house[1:] + house[:1])  # vertex 0 mid-bottom, as the rectangle's
+    write_xy(tmp_path / "b.xy", rect)
+    r = cm("triangulate", "a.xy", "b.xy", "-o", "out", "--pin-corners", "10")
+    assert r.returncode == 0, r.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    pairs = pinned_pairs(report)
+    assert {(5, cr[0]), (1, cr[1]), (2, cr[2]), (4, cr[3])} <= pairs  # house: 5 ll, 1 lr, 2 ur, 4 ul
+    assert not any(h == 3 and v in cr for h, v in pairs)  # the apex is pinned to no corner
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--pin-corners", "30"], "b.xy: polygon 1 has no corner to pin: no vertex turns by more than 30 degrees"),
+    (["--pin-corners", "180"], "triangulate: --pin-corners needs degrees in (0, 180), got '180'"),
+    (["--pin-corners", "30", "--pin", "0,0"], "triangulate: give --pin or --pin-corners, not both"),
+    (["--pin-corners", "30", "--correspondence", "index"], "--pin-corners needs --correspondence arclength"),
+])
+def test_bad_corner_pins(cm, tmp_path, args, message):
+    write_xy(tmp_path / "a.xy", sampled_rectangle(4.0, 2.0, [2, 1, 2, 1], 0)[0])
+    write_xy(tmp_path / "b.xy", [(math.cos(2 * math.pi * i / 20), math.sin(2 * math.pi * i / 20)) for i in range(20)])
+    r = cm("triangulate", "a.xy", "b.xy", "-o", "out", *args)
+    assert r.returncode == 2
+    assert len(r.stderr.strip().splitlines()) == 1 and message in r.stderr, r.stderr
+    assert not (tmp_path / "out").exists()

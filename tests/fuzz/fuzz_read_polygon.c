@@ -1,5 +1,5 @@
 /* libFuzzer harness for the CLI's polygon reader (core/cli/read_polygon.c).
- * Built twice, with FUZZ_PATH "input.xy" and "input.obj", so each format
+ * Built once per format, with FUZZ_PATH "input.xy", "input.obj" and "input.ply", so each format
  * gets its own corpus. Whatever the bytes, the reader must either return a
  * polygon (at least one finite vertex, a source line for each) or a
  * one-line "PATH..." message with a usage status; ASan and UBSan catch the
@@ -29,7 +29,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         if (polygon.count == 0 || !polygon.xy || !polygon.source_line) abort();
         for (size_t i = 0; i < polygon.count; i++)
             if (!isfinite(polygon.xy[2 * i]) || !isfinite(polygon.xy[2 * i + 1]) ||
-                polygon.source_line[i] < 1)
+                polygon.source_line[i] < (polygon.by_index ? 0 : 1))
                 abort();
     } else {
         if (code != CLI_EXIT_USAGE) abort();

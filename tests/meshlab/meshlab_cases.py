@@ -4,6 +4,7 @@ saved layers are checked with exact arithmetic.
 
 Usage: meshlab_cases.py WRAPPER DOCS_DIR CASE
 """
+import json
 import math
 import os
 import subprocess
@@ -245,37 +246,57 @@ def expect_error(code, log, message, workdir, outputs):
 
 def case_ply_polylines(w):
     # Closed polylines (PLY edge elements) with 16 and 22 vertices, in
-    # parallel planes: resampled to a common count, every input vertex kept.
+    # parallel planes: the default correspondence (auto) pairs them by arc
+    # length, every input vertex kept.
     a = star(16, 1.0, 0.6)
     b = [(x + 0.3, y, 1.5) for x, y, _ in star(22, 1.2, 0.9, phase=0.2, scale=(1.0, 0.6))]
     write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
     write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
     code, log = run(w, ["a.ply", "b.ply"], os.path.join(DOCS, "pair.mlx"), {2: "out_a.ply", 3: "out_b.ply"})
     expect_ok(code, log)
-    assert "resampled 16 and 22 boundary vertices" in log, log
+    assert "correspondence: auto (16 and 22 input vertices" in log, log
     pa, _, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, 10.0)
     print("PLY polylines: %d vertices, %d triangles" % (len(pa), len(ta)))
 
 
+def case_max_edge(w):
+    # MaxEdge splits the boundary compatibly: no boundary edge longer than
+    # it in either layer, every input vertex kept, the added points on the
+    # input polylines.
+    a = star(16, 1.0, 0.6)
+    b = [(x + 0.3, y, 1.5) for x, y, _ in star(22, 1.2, 0.9, phase=0.2, scale=(1.0, 0.6))]
+    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
+    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
+    script = script_with(w, "pair.mlx", [('value="0" name="MaxEdge"', 'value="0.15" name="MaxEdge"')])
+    code, log = run(w, ["a.ply", "b.ply"], script, {2: "out_a.ply", 3: "out_b.ply"})
+    expect_ok(code, log)
+    pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, 10.0)
+    loop = boundary_loop(ta)
+    for p in (pa, pb):
+        longest = max(np.linalg.norm(p[loop[i]] - p[loop[i - 1]]) for i in range(len(loop)))
+        assert longest <= 0.15 * (1 + 1e-6), "a boundary edge of %.4f" % longest
+    assert len(loop) > 16 + 22, len(loop)
+    print("MaxEdge 0.15: %d boundary vertices, longest boundary edge within the bound" % len(loop))
+
+
 def case_obj_polylines(w):
     # OBJ polylines with 18 and 15 vertices, the second in a tilted plane
-    # and stored clockwise: walked the other way round (ReverseSecond) from
-    # its 4th vertex.
+    # and stored clockwise (the core walks it the other way round), paired by
+    # arc length with its 4th vertex pinned to the first's vertex 0.
     a = star(18, 1.0, 0.7)
     b = tilt([(x, y, 0.0) for x, y, _ in star(15, 1.1, 0.8, phase=0.3)], 0.5)[::-1]
     write_obj_polyline(os.path.join(w, "a.obj"), a)
     write_obj_polyline(os.path.join(w, "b.obj"), b)
-    script = script_with(w, "pair.mlx", [('value="0" name="StartOffset"', 'value="3" name="StartOffset"'),
-                                         ('value="false" name="ReverseSecond"', 'value="true" name="ReverseSecond"')])
+    script = script_with(w, "pair.mlx", [('value="2" name="Correspondence"', 'value="1" name="Correspondence"'), ('value="" name="Pins"', 'value="0,3" name="Pins"')])
     code, log = run(w, ["a.obj", "b.obj"], script, {2: "out_a.ply", 3: "out_b.ply"})
     expect_ok(code, log)
-    assert "resampled 18 and 15 boundary vertices" in log, log
+    assert "correspondence: arc length (18 and 15 input vertices" in log, log
     pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, 10.0)
     # Vertex 0 of the first is paired with vertex 3 of the second.
     a32 = np.array(a, dtype=np.float32).astype(np.float64)
     b32 = np.array(b, dtype=np.float32).astype(np.float64)
     i0 = [i for i in range(len(pa)) if np.array_equal(pa[i], a32[0])][0]
-    assert np.array_equal(pb[i0], b32[3]), "StartOffset not applied"
+    assert np.array_equal(pb[i0], b32[3]), "the pin is not honoured"
     print("OBJ polylines: %d vertices, %d triangles" % (len(pa), len(ta)))
 
 
@@ -283,20 +304,21 @@ def case_off_disks(w):
     # Disk meshes (OFF faces), equal counts; the second lies in a tilted
     # plane and is paired from its 3rd vertex on. (Not OBJ: Debian's meshlab
     # 2020.09 aborts on reading any OBJ with faces, Debian bug #1054006, and
-    # writes OBJ coordinates with 6 decimals.)
+    # writes OBJ coordinates with 6 decimals.) Pinned by index: vertex 0
+    # with vertex 2.
     a, fa = fan_disk(star(14, 1.0, 0.55))
     b, fb = fan_disk(tilt(star(14, 0.9, 0.6, phase=0.1, scale=(1.3, 0.8)), 0.6))
     write_off(os.path.join(w, "a.off"), a, fa)
     write_off(os.path.join(w, "b.off"), b, fb)
-    script = script_with(w, "pair.mlx", [('value="0" name="StartOffset"', 'value="2" name="StartOffset"')])
+    script = script_with(w, "pair.mlx", [('value="2" name="Correspondence"', 'value="1" name="Correspondence"'), ('value="" name="Pins"', 'value="0,2" name="Pins"')])
     code, log = run(w, ["a.off", "b.off"], script, {2: "out_a.ply", 3: "out_b.ply"})
     expect_ok(code, log)
     pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", a[:-1], b[:-1], 10.0)
-    # The start offset pairs vertex 0 of the first with vertex 2 of the second.
+    # The pin pairs vertex 0 of the first with vertex 2 of the second.
     b32 = np.array(b, dtype=np.float32).astype(np.float64)
     a32 = np.array(a, dtype=np.float32).astype(np.float64)
     i0 = [i for i in range(len(pa)) if np.array_equal(pa[i], a32[0])][0]
-    assert np.array_equal(pb[i0], b32[2]), "StartOffset not applied"
+    assert np.array_equal(pb[i0], b32[2]), "the pin is not honoured"
     print("OFF disks: %d vertices, %d triangles" % (len(pa), len(ta)))
 
 
@@ -397,6 +419,83 @@ def case_planar_sections(w):
           % (len(sections[0]), len(sections[1]), len(pa), len(ta)))
 
 
+GMSH_DEMOS = "/usr/share/doc/gmsh-doc/doc/gmsh/demos/api"  # Debian package gmsh-doc
+
+SECTION = """ <filter name="Compute Planar Section">
+  <Param type="RichEnum" value="2" name="planeAxis" enum_val0="X Axis" enum_val1="Y Axis" enum_val2="Z Axis" enum_val3="Custom Axis" enum_cardinality="4"/>
+  <Param type="RichPoint3f" x="0" y="0" z="1" name="customAxis"/>
+  <Param type="RichFloat" value="%r" name="planeOffset"/>
+  <Param type="RichEnum" value="2" name="relativeTo" enum_val0="Bounding box center" enum_val1="Bounding box min" enum_val2="Origin" enum_cardinality="3"/>
+  <Param type="RichBool" value="false" name="createSectionSurface"/>
+  <Param type="RichBool" value="false" name="splitSurfaceWithSection"/>
+ </filter>
+"""
+
+
+def read_obj_loop(path):
+    """The closed polyline of an OBJ file of `l a b` lines (MeshLab's
+    section output: undirected edges in no particular order), in loop order."""
+    points, neighbours = [], {}
+    for line in open(path):
+        t = line.split()
+        if t and t[0] == "v":
+            points.append(tuple(float(x) for x in t[1:4]))
+        elif t and t[0] == "l":
+            a, b = int(t[1]) - 1, int(t[2]) - 1
+            neighbours.setdefault(a, []).append(b)
+            neighbours.setdefault(b, []).append(a)
+    assert len(neighbours) == len(points) and all(len(v) == 2 for v in neighbours.values()), \
+        "%s: not one closed polyline" % path
+    loop, prev = [0], None
+    while True:
+        nxt = [v for v in neighbours[loop[-1]] if v != prev][0]
+        if nxt == 0:
+            break
+        prev = loop[-1]
+        loop.append(nxt)
+    assert len(loop) == len(points), "%s: several loops" % path
+    return [points[i] for i in loop]
+
+
+def case_gmsh_sections(w):
+    # Two different real models from gmsh-doc, each cut at two heights by
+    # MeshLab's Compute Planar Section (one closed loop each), then paired
+    # by the unchanged docs/meshlab/pair.mlx: the filter's defaults
+    # (correspondence auto) must do for both, with no start or direction
+    # chosen by hand.
+    import gzip
+    for model, heights in (("object", (-4.9, 2.2)), ("aneurysm_data", (27.0, 29.9))):
+        d = os.path.join(w, model)
+        os.mkdir(d)
+        stl = os.path.join(d, model + ".stl")
+        with gzip.open(os.path.join(GMSH_DEMOS, model + ".stl.gz")) as f:
+            open(stl, "wb").write(f.read())
+        cut = os.path.join(d, "cut.mlx")
+        open(cut, "w").write("<!DOCTYPE FilterScript>\n<FilterScript>\n" + SECTION % heights[0] +
+                             ' <filter name="Change the current layer">\n  <Param type="RichMesh" value="0" name="layer"/>\n </filter>\n' +
+                             SECTION % heights[1] + "</FilterScript>\n")
+        code, log = run(d, [stl], cut, {1: "a.obj", 2: "b.obj"})
+        expect_ok(code, log)
+        sections = [read_obj_loop(os.path.join(d, name)) for name in ("a.obj", "b.obj")]
+        for r in ("pa.ply", "pb.ply", "log.txt"):
+            if os.path.exists(os.path.join(d, r)):
+                os.remove(os.path.join(d, r))
+        code, log = run(d, ["a.obj", "b.obj"], os.path.join(DOCS, "pair.mlx"), {2: "pa.ply", 3: "pb.ply"})
+        expect_ok(code, log)
+        assert "correspondence: auto (%d and %d input vertices" % tuple(map(len, sections)) in log, log[-2000:]
+        pa, _, ta = check_pair(d, "pa.ply", "pb.ply", sections[0], sections[1], 10.0)
+        # The command line reads the same OBJ sections (one `l a b` line per edge).
+        cli = subprocess.run([os.path.join(os.path.dirname(WRAPPER), "compatmesh"), "triangulate", "a.obj",
+                              "b.obj", "-o", "cli"], cwd=d, capture_output=True, text=True, timeout=300)
+        assert cli.returncode == 0, cli.stderr
+        report = json.load(open(os.path.join(d, "cli", "report.json")))
+        assert report["correspondence"] == "auto" and report["n"] >= max(map(len, sections)), report["n"]
+        print("%s: sections of %d and %d vertices at z = %g and %g paired: %d vertices, %d triangles; "
+              "the command line: smallest angles %s" % (model, len(sections[0]), len(sections[1]), heights[0],
+                                                        heights[1], len(pa), len(ta),
+                                                        [round(m["min_angle_deg"], 1) for m in report["meshes"]]))
+
+
 def bad_case(w, inputs, message, replacements=()):
     script = script_with(w, "pair.mlx", replacements) if replacements else os.path.join(DOCS, "pair.mlx")
     code, log = run(w, inputs, script, {2: "out_a.ply", 3: "out_b.ply"})
@@ -443,8 +542,10 @@ def case_bad_too_few(w):
 
 
 def case_bad_opposite_directions(w):
+    # Only the index correspondence keeps the directions as given.
     write_ply(os.path.join(w, "cw.ply"), star(10, 1.2, 0.5)[::-1], edges=loop_edges(10))
-    bad_case(w, [good_polyline(w), "cw.ply"], "(toggle 'Reverse second boundary')")
+    bad_case(w, [good_polyline(w), "cw.ply"], "(with Correspondence 'auto' the boundaries need not agree)",
+             [('value="2" name="Correspondence"', 'value="0" name="Correspondence"')])
 
 
 def case_bad_same_layer(w):
@@ -452,10 +553,24 @@ def case_bad_same_layer(w):
              [('value="1" name="SecondMesh"', 'value="0" name="SecondMesh"')])
 
 
-def case_bad_counts_without_resampling(w):
+def case_bad_counts_by_index(w):
     write_ply(os.path.join(w, "b.ply"), star(12, 1.0, 0.6), edges=loop_edges(12))
-    bad_case(w, [good_polyline(w), "b.ply"], "the boundaries have 10 and 12 vertices",
-             [('value="true" name="Resample"', 'value="false" name="Resample"')])
+    bad_case(w, [good_polyline(w), "b.ply"], "polygon 1 has 12 vertices but polygon 0 has 10", [('value="2" name="Correspondence"', 'value="0" name="Correspondence"')])
+
+
+def case_bad_pins(w):
+    # Each in its own directory: the log of one run must not answer for the next.
+    cases = [("Pins: '0,x' is not a pair 'I,J' of vertex numbers", "0,x", "2"),
+             ("Pins: '3,12': vertex 12 of layer 'b.ply' is not on its boundary", "0,0; 3,12", "2"),
+             ("pins 1 and 2 cross", "0,0;4,6;6,2", "2"),
+             ("Pins need the correspondence 'arc length' or 'auto'", "0,0", "0")]
+    for k, (message, pins, mode) in enumerate(cases):
+        d = os.path.join(w, str(k))
+        os.mkdir(d)
+        write_ply(os.path.join(d, "b.ply"), star(12, 1.0, 0.6), edges=loop_edges(12))
+        bad_case(d, [good_polyline(d), "b.ply"], message,
+                 [('value="2" name="Correspondence"', 'value="%s" name="Correspondence"' % mode),
+                  ('value="" name="Pins"', 'value="%s" name="Pins"' % pins)])
 
 
 def case_bad_float_rounding(w):
@@ -468,7 +583,7 @@ def case_bad_float_rounding(w):
     write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(24))
     write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(24))
     bad_case(w, ["a.ply", "b.ply"], "valid in double precision but not after rounding to MeshLab's float",
-             [('value="0" name="StartOffset"', 'value="5" name="StartOffset"'),
+             [('value="2" name="Correspondence"', 'value="1" name="Correspondence"'), ('value="" name="Pins"', 'value="0,5" name="Pins"'),
               ('value="25" name="MinAngle"', 'value="33" name="MinAngle"')])
 
 
@@ -480,7 +595,7 @@ def case_sweep_half_turn(w):
     b = [(x, y, 1.0) for x, y, _ in a]
     write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(12))
     write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(12))
-    script = script_with(w, "pair_and_sweep.mlx", [('value="0" name="StartOffset"', 'value="6" name="StartOffset"')])
+    script = script_with(w, "pair_and_sweep.mlx", [('value="2" name="Correspondence"', 'value="1" name="Correspondence"'), ('value="" name="Pins"', 'value="0,6" name="Pins"')])
     outs = {2: "pair_a.ply", 3: "pair_b.ply", 4: "s1.ply", 5: "s2.ply", 6: "s3.ply", 7: "lateral.ply"}
     code, log = run(w, ["a.ply", "b.ply"], script, outs)
     expect_ok(code, log)

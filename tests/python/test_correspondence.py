@@ -48,3 +48,50 @@ def test_equal_counts_keep_index():
 def test_bad_pins_and_modes(kwargs, error, message):
     with pytest.raises(error, match=message):
         compatmesh.triangulate([ring(12), ring(19, inner=0.4)], **kwargs)
+
+
+def test_pin_corners():
+    """Two rectangles numbered from different points: pin_corners_deg ties
+    each corner to the same corner (arc length, the default with it)."""
+    def rectangle(w, h, per_side, start):
+        corners = [(0, 0), (w, 0), (w, h), (0, h)]
+        pts = [np.add(corners[i], j / per_side[i] * np.subtract(corners[(i + 1) % 4], corners[i]))
+               for i in range(4) for j in range(per_side[i])]
+        starts = np.cumsum([0] + per_side[:3])
+        return np.roll(np.array(pts, dtype=float), -start, axis=0), (starts - start) % len(pts)
+    a, ca = rectangle(4.0, 2.0, [5, 3, 5, 3], 2)
+    b, cb = rectangle(6.0, 2.5, [4, 2, 3, 2], 1)
+    r = compatmesh.triangulate([a, b], pin_corners_deg=30)
+    sa, sb = r.boundary_source
+    both = (sa["t"] == 0) & (sb["t"] == 0)
+    assert set(zip(ca, cb)) <= set(zip(sa["edge"][both], sb["edge"][both]))
+    with pytest.raises(compatmesh.InputError, match="polygon 1 has no corner to pin"):
+        compatmesh.triangulate([a, ring(20, jitter=False)], pin_corners_deg=30)
+    with pytest.raises(compatmesh.InputError, match="corner pins need the arclength or auto"):
+        compatmesh.triangulate([a, a], pin_corners_deg=30, correspondence="index")
+
+
+def test_max_edge():
+    """Boundary edges split to at most max_edge in both polygons, also with
+    the index correspondence (vertex i stays on vertex i)."""
+    a, b = ring(10), ring(10, inner=0.5) * 1.5
+    r = compatmesh.triangulate([a, b], correspondence="index", max_edge=0.3)
+    n = r.stats["n"]
+    assert n > 10
+    for points, vertices, source in zip((a, b), r.vertices, r.boundary_source):
+        own = source["t"] == 0
+        assert list(source["edge"][own]) == list(range(10))
+        assert np.array_equal(vertices[:n][own], points)
+        edges = np.linalg.norm(np.roll(vertices[:n], -1, axis=0) - vertices[:n], axis=1)
+        assert edges.max() <= 0.3 * (1 + 1e-12)
+    assert np.array_equal(r.boundary_source[0]["t"] == 0, r.boundary_source[1]["t"] == 0)
+    with pytest.raises(compatmesh.InputError, match="max_edge is -1"):
+        compatmesh.triangulate([a, b], max_edge=-1)
+
+
+def test_affine_image_is_the_identity():
+    a = ring(15)
+    b = np.roll(a @ np.array([[2.0, 0.5], [0.3, 1.5]]).T + [3.0, -1.0], -4, axis=0)
+    r = compatmesh.triangulate([a, b], correspondence="auto", remesh=False)
+    assert r.stats["n"] == 15 and r.stats["steiner"] == 0
+    assert list(r.boundary_source[1]["edge"]) == [(i - 4) % 15 for i in range(15)]

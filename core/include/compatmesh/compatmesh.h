@@ -166,6 +166,23 @@ typedef struct cm_options {
      * the first vertex of every polygon. */
     const size_t *pins;
     size_t num_pins;
+    /* Pins at corners instead (arclength and auto only, no pins given):
+     * > 0 pins every vertex whose corner angle deviates from 180 degrees
+     * by more than this many degrees, in order. With m the fewest corners
+     * any polygon has, each keeps its m most prominent ones (the largest
+     * deviations); polygon g's are matched to polygon 0's in order with the
+     * cyclic shift that puts them closest in normalised arc length (from
+     * vertex 0 with arclength, from the chosen starts with auto). A polygon
+     * without such a corner is CM_ERR_ARGUMENT. 0 (default): off. */
+    double pin_corners_deg;
+    /* Element size along the boundary: > 0 splits the boundary edges
+     * compatibly (the same number of points on corresponding edges, evenly
+     * by the correspondence's parameter, each on its polygon's input edge)
+     * so that no boundary edge is longer than this in any polygon. Every
+     * polygon keeps its input vertices; cm_result_boundary_source says
+     * where each added point lies. Also with CM_CORRESPOND_INDEX (which
+     * otherwise adds interior Steiner vertices only). 0 (default): off. */
+    double max_edge;
 } cm_options;
 
 /* Fills *options with the defaults. Always call it first, then change the

@@ -12,6 +12,8 @@
 #include "base/progress.h"
 #include "construct/overlay.h"
 #include "correspond/choose.h"
+#include "correspond/corners.h"
+#include "correspond/split.h"
 #include "construct/partition.h"
 #include "geom/polytri.h"
 #include "remesh/remesh.h"
@@ -224,6 +226,17 @@ static cm_status check_correspondence_options(cm_result *r, const cm_options *o)
     if (o->num_pins && o->correspondence == CM_CORRESPOND_INDEX)
         return cm_fail(&r->error, CM_ERR_ARGUMENT,
                        "pins need the arclength correspondence (with index, vertex i is vertex i)");
+    if (!(o->pin_corners_deg >= 0 && o->pin_corners_deg < 180))
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "pin_corners_deg is %g; expected 0 (off) or an angle in (0, 180)",
+                       o->pin_corners_deg);
+    if (o->pin_corners_deg > 0 && o->correspondence == CM_CORRESPOND_INDEX)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT,
+                       "corner pins need the arclength or auto correspondence (with index, vertex i is vertex i)");
+    if (o->pin_corners_deg > 0 && o->num_pins)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "give either pins or pin_corners_deg, not both");
+    if (!(o->max_edge >= 0 && o->max_edge < HUGE_VAL))
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "max_edge is %g; expected 0 (off) or a positive length",
+                       o->max_edge);
     return CM_OK;
 }
 
@@ -233,23 +246,45 @@ static cm_status check_correspondence_options(cm_result *r, const cm_options *o)
  * the refined boundaries (rounding of a point on an edge next to another
  * edge) is located at the input edge it came from. */
 static cm_status run_arclength(cm_result *r, const double *const *polygons, const size_t *counts,
-                               size_t k, const cm_options *o)
+                               size_t k, const cm_options *o, const size_t *every_vertex)
 {
     int *orientation = k ? malloc(k * sizeof *orientation) : NULL;
     size_t *merged_counts = k ? malloc(k * sizeof *merged_counts) : NULL;
     cm_status s = !k || (orientation && merged_counts) ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
-    const size_t *pins = o->pins;
-    size_t num_pins = o->num_pins, *chosen = NULL;
+    /* every_vertex: the index correspondence, as pins at every vertex. */
+    const size_t *pins = every_vertex ? every_vertex : o->pins;
+    size_t num_pins = every_vertex ? counts[0] : o->num_pins, *chosen = NULL;
+    size_t *affine = NULL;
+    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && !(o->pin_corners_deg > 0)) {
+        /* Affine images of one another: vertex to vertex, no distortion. */
+        int found = 0;
+        affine = malloc(counts[0] * k * sizeof *affine);
+        s = affine ? cm_correspond_affine_shift(polygons, counts, k, orientation, affine, &found, &r->error)
+                   : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        if (found) pins = affine, num_pins = counts[0];
+    }
     if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0) {
         chosen = malloc(k * sizeof *chosen);
         s = chosen ? cm_correspond_choose_starts(polygons, counts, k, orientation, chosen, &r->error)
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         pins = chosen, num_pins = 1;
     }
+    size_t *corner_pins = NULL;
+    if (s == CM_OK && o->pin_corners_deg > 0) {
+        /* Arc length from the chosen starts (auto) or from vertex 0. */
+        size_t *starts = chosen ? chosen : calloc(k, sizeof *starts);
+        s = starts ? cm_correspond_corner_pins(polygons, counts, k, orientation, starts, o->pin_corners_deg,
+                                               &corner_pins, &num_pins, &r->error)
+                   : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        if (starts != chosen) free(starts);
+        pins = corner_pins;
+    }
     if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, pins, num_pins,
                                                 &r->boundary, &r->error);
-    free(chosen);
+    if (s == CM_OK && o->max_edge > 0)
+        s = cm_boundary_map_split(&r->boundary, polygons, counts, orientation, o->max_edge, &r->error);
+    free(chosen), free(corner_pins), free(affine);
     if (s == CM_OK) {
         for (size_t g = 0; g < k; g++) merged_counts[g] = r->boundary.n;
         s = run_pipeline(r, (const double *const *)r->boundary.xy, merged_counts, k, o);
@@ -264,6 +299,24 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
         }
     }
     free(orientation), free(merged_counts);
+    return s;
+}
+
+/* CM_CORRESPOND_INDEX with max_edge: the index contract checked (equal
+ * counts, one orientation), then the arc-length path with a pin at every
+ * vertex, which keeps vertex i on vertex i and splits the edges. */
+static cm_status run_index_split(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
+                                 const cm_options *o)
+{
+    int clockwise = 0;
+    cm_status s = cm_input_validate(polygons, counts, k, &r->error, &clockwise);
+    if (s != CM_OK) return s;
+    size_t n = counts[0], *every = malloc(n * k * sizeof *every);
+    if (!every) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    for (size_t j = 0; j < n; j++)
+        for (size_t g = 0; g < k; g++) every[j * k + g] = j;
+    s = run_arclength(r, polygons, counts, k, o, every);
+    free(every);
     return s;
 }
 
@@ -286,7 +339,9 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
     cm_status s = check_remesh_options(r, options);
     if (s == CM_OK) s = check_correspondence_options(r, options);
     if (s == CM_OK && options->correspondence != CM_CORRESPOND_INDEX)
-        s = run_arclength(r, polygons, counts, k, options);
+        s = run_arclength(r, polygons, counts, k, options, NULL);
+    else if (s == CM_OK && options->max_edge > 0)
+        s = run_index_split(r, polygons, counts, k, options);
     else if (s == CM_OK)
         s = run_pipeline(r, polygons, counts, k, options);
     if (s != CM_OK) cm_result_clear_geometry(r);

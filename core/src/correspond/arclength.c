@@ -195,13 +195,15 @@ static void fill(const walk *w, const double *u, const long *own, size_t n, size
             continue;
         }
         double u_next = next < n ? u[next] : (double)pins;
-        const double *a = walk_point(w, i), *b = walk_point(w, i + 1);
         double s = (u[j] - u[at]) / (u_next - u[at]);
-        xy[2 * j] = a[0] + s * (b[0] - a[0]);
-        xy[2 * j + 1] = a[1] + s * (b[1] - a[1]);
-        /* Input numbering: a clockwise polygon's edge runs from b to a. */
+        /* Input numbering: a clockwise polygon's edge runs from vertex i + 1
+         * back to i. The point is computed from the (edge, t) reported, so
+         * P[e] + t (P[e + 1] - P[e]) gives it back bit for bit. */
         edge[j] = (int32_t)(w->reversed ? walk_vertex(w, i + 1) : walk_vertex(w, i));
         t[j] = w->reversed ? 1.0 - s : s;
+        const double *a = w->xy + 2 * edge[j], *b = w->xy + 2 * ((size_t)(edge[j] + 1) % w->n);
+        xy[2 * j] = a[0] + t[j] * (b[0] - a[0]);
+        xy[2 * j + 1] = a[1] + t[j] * (b[1] - a[1]);
     }
 }
 

@@ -87,3 +87,89 @@ cm_status cm_correspond_choose_starts(const double *const *polygons, const size_
     }
     return CM_OK;
 }
+
+#define AFFINE_MAX_VERTICES 4096
+#define AFFINE_TOLERANCE 1e-9
+
+/* Counter-clockwise vertices of a polygon, centred, as complex numbers. */
+static void centred(const double *xy, size_t n, int reversed, double complex *out)
+{
+    double complex mean = 0;
+    for (size_t c = 0; c < n; c++) {
+        const double *p = xy + 2 * cm_ccw_input(c, n, reversed);
+        out[c] = p[0] + I * p[1];
+        mean += out[c];
+    }
+    mean /= (double)n;
+    for (size_t c = 0; c < n; c++) out[c] -= mean;
+}
+
+/* The share of sum |q|^2 the least-squares affine image of p leaves, q
+ * read from position shift: with S = sum p p^T and C = sum q p^T (2 x 2),
+ * the residual is sum |q|^2 - tr(C S^-1 C^T) (exact: summed point by
+ * point). */
+static double affine_residual(const double complex *p, const double complex *q, size_t n, size_t shift, int exact)
+{
+    double s00 = 0, s01 = 0, s11 = 0, c00 = 0, c01 = 0, c10 = 0, c11 = 0, qq = 0;
+    for (size_t i = 0; i < n; i++) {
+        double px = creal(p[i]), py = cimag(p[i]);
+        double complex w = q[(i + shift) % n];
+        double qx = creal(w), qy = cimag(w);
+        s00 += px * px, s01 += px * py, s11 += py * py;
+        c00 += qx * px, c01 += qx * py, c10 += qy * px, c11 += qy * py;
+        qq += qx * qx + qy * qy;
+    }
+    double det = s00 * s11 - s01 * s01;
+    if (!(det > 0) || !(qq > 0)) return HUGE_VAL;
+    /* tr(C S^-1 C^T), S^-1 = [s11 -s01; -s01 s00] / det, row by row of C. */
+    double fit = (c00 * (s11 * c00 - s01 * c01) + c01 * (s00 * c01 - s01 * c00) +
+                  c10 * (s11 * c10 - s01 * c11) + c11 * (s00 * c11 - s01 * c10)) / det;
+    if (!exact) return (qq - fit) / qq;
+    /* The difference above cancels to rounding noise near 0: measure the
+     * best candidate directly, with A = C S^-1. */
+    double a00 = (c00 * s11 - c01 * s01) / det, a01 = (c01 * s00 - c00 * s01) / det;
+    double a10 = (c10 * s11 - c11 * s01) / det, a11 = (c11 * s00 - c10 * s01) / det, left = 0;
+    for (size_t i = 0; i < n; i++) {
+        double px = creal(p[i]), py = cimag(p[i]);
+        double complex w = q[(i + shift) % n];
+        double dx = creal(w) - (a00 * px + a01 * py), dy = cimag(w) - (a10 * px + a11 * py);
+        left += dx * dx + dy * dy;
+    }
+    return left / qq;
+}
+
+cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t *counts, size_t k,
+                                     const int *orientation, size_t *pins, int *found, cm_error *err)
+{
+    *found = 0;
+    size_t n = counts[0];
+    for (size_t g = 1; g < k; g++)
+        if (counts[g] != n) return CM_OK;
+    if (n > AFFINE_MAX_VERTICES) return CM_OK;
+    double complex *p = malloc(n * sizeof *p), *q = malloc(n * sizeof *q);
+    size_t *shift = malloc(k * sizeof *shift);
+    if (!p || !q || !shift) {
+        free(p), free(q), free(shift);
+        return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    }
+    centred(polygons[0], n, orientation[0] < 0, p);
+    int all = 1;
+    shift[0] = 0;
+    for (size_t g = 1; g < k && all; g++) {
+        centred(polygons[g], n, orientation[g] < 0, q);
+        double best = HUGE_VAL;
+        for (size_t s = 0; s < n; s++) {
+            double left = affine_residual(p, q, n, s, 0);
+            if (left < best) best = left, shift[g] = s;
+        }
+        all = best < HUGE_VAL && affine_residual(p, q, n, shift[g], 1) <= AFFINE_TOLERANCE * AFFINE_TOLERANCE;
+    }
+    if (all) {
+        for (size_t i = 0; i < n; i++)
+            for (size_t g = 0; g < k; g++)
+                pins[i * k + g] = cm_ccw_input((i + shift[g]) % n, n, orientation[g] < 0);
+        *found = 1;
+    }
+    free(p), free(q), free(shift);
+    return CM_OK;
+}

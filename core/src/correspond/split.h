@@ -1,0 +1,23 @@
+/* Boundary edges split compatibly to a largest length (the element size
+ * finite-element users ask for along the boundary). */
+#ifndef CM_CORRESPOND_SPLIT_H
+#define CM_CORRESPOND_SPLIT_H
+
+#include "base/error.h"
+#include "correspond/arclength.h"
+
+/* Splits every edge j -> j + 1 of the common boundary into the same number
+ * of equal-parameter pieces in every polygon, the fewest with no piece
+ * longer than max_edge in any polygon. The points added lie on the input
+ * edge the segment lies on, at the parameter map->t reports
+ * (P[e] + t (P[e + 1] - P[e]), input numbering), so every polygon keeps
+ * its input vertices and its shape. polygons, counts, orientation as given
+ * to cm_correspond_arclength. A boundary that would pass CM_MAX_BOUNDARY
+ * vertices is CM_ERR_ARGUMENT. */
+cm_status cm_boundary_map_split(cm_boundary_map *map, const double *const *polygons, const size_t *counts,
+                                const int *orientation, double max_edge, cm_error *err);
+
+/* The most boundary vertices a split may make. */
+#define CM_MAX_BOUNDARY ((size_t)1 << 24)
+
+#endif
