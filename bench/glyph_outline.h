@@ -374,8 +374,9 @@ static int resample(const outline *o, int n, double *xy)
 /* n points at equal arc length along the whole outline, the first at its
  * bottom-left point (slid by a fraction of the spacing when a sampling is
  * not simple after snapping). Two outlines sampled so correspond by
- * normalised arc length from their bottom-left points. */
-static int resample_arclength(const outline *o, int n, double *xy)
+ * normalised arc length from their bottom-left points. Inline: cm_font_soak
+ * includes this header and does not use it. */
+static inline int resample_arclength(const outline *o, int n, double *xy)
 {
     int start = bottom_left(o->xy, o->count);
     double total = piece_len(o, start, start);
