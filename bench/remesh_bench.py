@@ -430,8 +430,10 @@ def write_markdown(path, result):
              "correspondence from the bottom-left point), next to the bench set "
              "(`cm_gen_pairs --set bench`). T = min(25, c/2, fan, bound)%s." % (
                  "" if meta["bound"] else " (bound skipped: --no-bound)"), ""]
-    lines += ["- Date: %s; machine: %s, %d cores" % (meta["date"], meta["machine"], meta["cores"]),
-              "- Command: `%s`" % meta["command"]]
+    lines += ["- Date: %s; machine: %s, %d cores; load average %.1f at the start, %.1f at the end "
+              "(CPU seconds are measured, not wall time)" % (meta["date"], meta["machine"], meta["cores"],
+                                                             meta["load"][0], meta["load"][1]),
+              "- Command: `%s` (bench at commit %s)" % (meta["command"], meta["commit"])]
     for b in meta["builds"]:
         lines.append("- %s: `%s` (%s)" % (b["label"], b["path"], b["version"]))
     lines.append("- CGAL alone: %s" % (meta["cgal"] or "not run (--no-cgal)"))
@@ -486,6 +488,11 @@ def machine():
     return platform.machine()
 
 
+def source_commit():
+    run = subprocess.run(["git", "-C", HERE, "rev-parse", "--short", "HEAD"], capture_output=True, text=True)
+    return run.stdout.strip() or "unknown"
+
+
 def version(cli):
     run = subprocess.run([cli, "--version"], capture_output=True, text=True)
     return run.stdout.strip() or "version unknown"
@@ -508,6 +515,7 @@ def main(argv):
     if args.baseline:
         builds["baseline"] = args.baseline
     cache = BoundCache(args.bound_cache)
+    load = os.getloadavg()[0]
     work = tempfile.mkdtemp(prefix="remesh_bench_")
     try:
         pairs = generate(args.gen_pairs, work)
@@ -544,7 +552,8 @@ def main(argv):
           if args.baseline and any(in_group(r, g) and mode in r["runs"] for r in rows)]
     result = {"meta": {"date": datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC"),
                        "machine": machine(), "cores": os.cpu_count(),
-                       "command": " ".join(["remesh_bench.py"] + argv),
+                       "command": " ".join(["remesh_bench.py"] + argv), "commit": source_commit(),
+                       "load": [load, os.getloadavg()[0]],
                        "builds": [{"label": k, "path": v, "version": version(v)} for k, v in builds.items()],
                        "cgal": args.cgal, "bound": not args.no_bound, "modes": args.modes},
               "pairs": rows, "summary": summaries, "versus": vs}
