@@ -12,8 +12,9 @@ DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
   libsuitesparse-dev libgmsh-dev gmsh gmsh-doc python3-gmsh python3-scipy \
   clang libclang-rt-14-dev valgrind
 
-# Only `make bench` needs these: CGAL meshes each polygon alone, to compare.
-BENCH_PACKAGES = libcgal-dev
+# Only `make bench` needs these: CGAL meshes each polygon alone, to compare;
+# Gmsh's STL models give the remesh bench real sections.
+BENCH_PACKAGES = libcgal-dev gmsh-doc
 
 .PHONY: all deps bench-deps build demo test bench fuzz soak clean install-meshlab-plugin
 

@@ -1,6 +1,6 @@
 /* cm_gen_pairs: writes the demo and benchmark polygon pairs as .xy files.
  *
- *   cm_gen_pairs --out DIR [--set demo|bench] [--font PATH]
+ *   cm_gen_pairs --out DIR [--set demo|bench|hard] [--font PATH]
  *
  * Each polygon goes to DIR/NAME_a.xy, DIR/NAME_b.xy (and NAME_c.xy for a
  * triple), one "x y" line per vertex, counter-clockwise, vertices in
@@ -12,6 +12,13 @@
  * points keeping the sharp corners, so two glyphs get the same n. The other
  * shapes come from tests/core/random_polygons.h. Every polygon written is
  * checked simple with the exact brute-force test there.
+ *
+ * The hard set (remesh_bench.py) pairs single-contour glyphs of different
+ * letters from fonts Debian ships other than DejaVu, each resampled by
+ * plain arc length from its bottom-left point (resample_arclength), at
+ * n = 48 and 160, letters drawn with a fixed seed. Its names say the half:
+ * tune_* (two fonts, for tuning) and hold_* (the other fonts and random
+ * simple polygons against discs and stars, held out).
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -201,6 +208,7 @@ static int resample_matched(const outline *o, int k, int n, double *const *xy)
 typedef struct writer {
     const char *dir;
     FILE *list;
+    FT_Library lib;
     FT_Face face;
     int pairs, failures;
 } writer;
@@ -414,11 +422,134 @@ static void bench_set(writer *w)
     }
 }
 
+/* ---- the hard set -------------------------------------------------------- */
+
+#define HARD_FONT_DIR "/usr/share/fonts/"
+#define HARD_SEED 20261124u
+
+/* Font file (under HARD_FONT_DIR), its short name, its half, and how many
+ * letter pairs it gives. */
+typedef struct hard_font {
+    const char *file, *name, *half;
+    int pairs;
+} hard_font;
+
+static const hard_font hard_fonts[] = {
+    {"truetype/freefont/FreeSerifItalic.ttf", "FreeSerifItalic", "tune", 10},
+    {"opentype/urw-base35/P052-Roman.otf", "P052", "tune", 10},
+    {"opentype/urw-base35/NimbusSans-Regular.otf", "NimbusSans", "hold", 4},
+    {"opentype/urw-base35/Z003-MediumItalic.otf", "Z003", "hold", 4},
+    {"opentype/urw-base35/URWBookman-Light.otf", "URWBookman", "hold", 4},
+    {"opentype/urw-base35/C059-Roman.otf", "C059", "hold", 4},
+    {"truetype/liberation/LiberationSerif-Regular.ttf", "LiberationSerif", "hold", 4},
+    {"truetype/noto/NotoSans-Regular.ttf", "NotoSans", "hold", 4},
+};
+static const int hard_n[] = {48, 160};
+/* Letters and digits that have one contour in most fonts; a font's own
+ * glyph is used only when it has exactly one. */
+static const char hard_chars[] = "CEFGHIJKLMNSTUVWXYZ12357cfhklmnrstuvwxyz";
+
+static int single_contour(FT_Face face, char c)
+{
+    return FT_Load_Char(face, (unsigned char)c, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING) == 0 &&
+           face->glyph->format == FT_GLYPH_FORMAT_OUTLINE && face->glyph->outline.n_contours == 1;
+}
+
+/* Both glyphs resampled by arc length at every n of the hard set. */
+static int hard_glyphs_sample(FT_Face face, char a, char b, polys *p)
+{
+    outline o[2] = {{0}};
+    int ok = glyph_outline(face, (unsigned char)a, &o[0]) == 0 &&
+             glyph_outline(face, (unsigned char)b, &o[1]) == 0;
+    for (int i = 0; ok && i < COUNT(hard_n); i++)
+        for (int g = 0; ok && g < 2; g++)
+            ok = resample_arclength(&o[g], hard_n[i], p[i].xy[g]) == 0;
+    outline_free(&o[0]);
+    outline_free(&o[1]);
+    return ok ? 0 : -1;
+}
+
+/* f->pairs pairs of different single-contour letters of one font, drawn
+ * from rng without repeating a pair, each written at every n. */
+static void hard_font_pairs(writer *w, const hard_font *f, rp_rng *rng)
+{
+    char path[4096], name[128], used[64][2];
+    FT_Face face;
+    snprintf(path, sizeof path, "%s%s", HARD_FONT_DIR, f->file);
+    if (FT_New_Face(w->lib, path, 0, &face) != 0) {
+        report_failure(w, path, "cannot open font (Debian packages fonts-urw-base35 "
+                                "fonts-freefont-ttf fonts-liberation fonts-noto-core)");
+        return;
+    }
+    char chars[sizeof hard_chars];
+    int nchars = 0;
+    for (const char *c = hard_chars; *c; c++)
+        if (single_contour(face, *c))
+            chars[nchars++] = *c;
+    polys p[COUNT(hard_n)];
+    for (int i = 0; i < COUNT(hard_n); i++)
+        if (polys_alloc(&p[i], hard_n[i]) != 0) {
+            report_failure(w, f->name, "out of memory");
+            return;
+        }
+    int made = 0;
+    for (int draw = 0; nchars >= 2 && made < f->pairs && draw < 1000; draw++) {
+        char a = chars[rp_below(rng, nchars)], b = chars[rp_below(rng, nchars)];
+        int seen = a == b;
+        for (int k = 0; k < made; k++)
+            seen |= (used[k][0] == a && used[k][1] == b) || (used[k][0] == b && used[k][1] == a);
+        if (seen || hard_glyphs_sample(face, a, b, p) != 0)
+            continue;
+        used[made][0] = a;
+        used[made++][1] = b;
+        for (int i = 0; i < COUNT(hard_n); i++) {
+            snprintf(name, sizeof name, "%s_%s_%c_%c_n%d", f->half, f->name, a, b, hard_n[i]);
+            emit(w, name, p[i].xy, 2, hard_n[i]);
+        }
+    }
+    if (made < f->pairs)
+        report_failure(w, f->name, "too few letter pairs resample simple");
+    for (int i = 0; i < COUNT(hard_n); i++)
+        polys_free(&p[i]);
+    FT_Done_Face(face);
+}
+
+/* A random simple polygon against a disc or a random star, both starting
+ * at their bottom-left vertex. */
+static void hard_shape_pair(writer *w, const char *other, int n, uint64_t seed)
+{
+    char name[64];
+    polys p;
+    snprintf(name, sizeof name, "hold_random_%s_n%d_s%llu", other, n, (unsigned long long)seed);
+    int ok = polys_alloc(&p, n) == 0 && rp_random_simple(p.xy[0], n, seed) == 0 &&
+             (strcmp(other, "disc") == 0 ? rp_disc(p.xy[1], n) : rp_star(p.xy[1], n, seed)) == 0;
+    if (ok) {
+        for (int g = 0; g < 2; g++)
+            rp_twist(p.xy[g], n, bottom_left(p.xy[g], n));
+        emit(w, name, p.xy, 2, n);
+    } else {
+        report_failure(w, name, "random polygon generator failed");
+    }
+    polys_free(&p);
+}
+
+static void hard_set(writer *w)
+{
+    rp_rng rng = {HARD_SEED};
+    for (int f = 0; f < COUNT(hard_fonts); f++)
+        hard_font_pairs(w, &hard_fonts[f], &rng);
+    for (int i = 0; i < COUNT(hard_n); i++)
+        for (uint64_t s = 1; s <= 3; s++) {
+            hard_shape_pair(w, "disc", hard_n[i], 3000 + s);
+            hard_shape_pair(w, "star", hard_n[i], 4000 + s);
+        }
+}
+
 /* ---- main -------------------------------------------------------------- */
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: cm_gen_pairs --out DIR [--set demo|bench] [--font PATH]\n");
+    fprintf(stderr, "usage: cm_gen_pairs --out DIR [--set demo|bench|hard] [--font PATH]\n");
     return 2;
 }
 
@@ -458,16 +589,17 @@ int main(int argc, char **argv)
         else
             return usage();
     }
-    int demo = strcmp(set, "demo") == 0;
-    if (!out || (!demo && strcmp(set, "bench") != 0))
+    int demo = strcmp(set, "demo") == 0, hard = strcmp(set, "hard") == 0;
+    if (!out || (!demo && !hard && strcmp(set, "bench") != 0))
         return usage();
 
     FT_Library lib;
-    writer w = {out, NULL, NULL, 0, 0};
+    writer w = {out, NULL, NULL, NULL, 0, 0};
     char list[4096];
     snprintf(list, sizeof list, "%s/pairs.txt", out);
     if (make_dir(out) != 0 || open_font(font, &lib, &w.face) != 0)
         return 1;
+    w.lib = lib;
     w.list = fopen(list, "w");
     if (!w.list) {
         fprintf(stderr, "cm_gen_pairs: cannot write %s: %s\n", list, strerror(errno));
@@ -475,6 +607,8 @@ int main(int argc, char **argv)
     }
     if (demo)
         demo_set(&w);
+    else if (hard)
+        hard_set(&w);
     else
         bench_set(&w);
     int closed = fclose(w.list);

@@ -8,6 +8,10 @@
  *                                  pieces between sampled evenly by arc
  *                                  length, snapped to the grid of
  *                                  random_polygons.h and checked simple
+ *   resample_arclength(&o, n, xy)  n points at equal arc length from the
+ *                                  outline's bottom-left point (corners
+ *                                  not kept): the plain arc-length
+ *                                  correspondence between two outlines
  */
 #ifndef CM_BENCH_GLYPH_OUTLINE_H
 #define CM_BENCH_GLYPH_OUTLINE_H
@@ -367,5 +371,23 @@ static int resample(const outline *o, int n, double *xy)
     return -1;
 }
 
+/* n points at equal arc length along the whole outline, the first at its
+ * bottom-left point (slid by a fraction of the spacing when a sampling is
+ * not simple after snapping). Two outlines sampled so correspond by
+ * normalised arc length from their bottom-left points. Inline: cm_font_soak
+ * includes this header and does not use it. */
+static inline int resample_arclength(const outline *o, int n, double *xy)
+{
+    int start = bottom_left(o->xy, o->count);
+    double total = piece_len(o, start, start);
+    for (int attempt = 0; attempt < 8; attempt++) {
+        for (int j = 0; j < n; j++)
+            point_along(o, start, total * (j + attempt / 8.0) / n, xy + 2 * j);
+        rp_snap_all(xy, n);
+        if (rp_is_simple(xy, n) && rp_signed_area2(xy, n) > 0)
+            return 0;
+    }
+    return -1;
+}
 
 #endif

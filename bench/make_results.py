@@ -127,19 +127,23 @@ def read_xy(path):
     return points
 
 
-def smallest_corner(points):
-    """The smallest interior angle of a simple polygon, in degrees."""
+def corner_angles(points):
+    """The interior angle at each vertex of a simple polygon, in degrees."""
     n = len(points)
     area2 = sum(points[i][0] * points[(i + 1) % n][1] - points[(i + 1) % n][0] * points[i][1]
                 for i in range(n))
     sign = 1 if area2 > 0 else -1
-    smallest = 360.0
+    angles = []
     for i in range(n):
         (x0, y0), (x1, y1), (x2, y2) = points[i - 1], points[i], points[(i + 1) % n]
         ux, uy, vx, vy = x2 - x1, y2 - y1, x0 - x1, y0 - y1
-        angle = math.degrees(math.atan2(sign * (ux * vy - uy * vx), ux * vx + uy * vy)) % 360
-        smallest = min(smallest, angle)
-    return smallest
+        angles.append(math.degrees(math.atan2(sign * (ux * vy - uy * vx), ux * vx + uy * vy)) % 360)
+    return angles
+
+
+def smallest_corner(points):
+    """The smallest interior angle of a simple polygon, in degrees."""
+    return min(corner_angles(points))
 
 
 def quality_aims(c):

@@ -1,0 +1,575 @@
+"""The remesher judged against what each pair allows, side by side with CGAL
+and optionally with a baseline build.
+
+usage: remesh_bench.py --compatmesh BIN [--baseline BIN] [--quick] [--no-bound]
+                       [--no-cgal] [--modes index,auto] [--only REGEX]
+                       [--out bench/REMESH.md] [--json FILE] [--bound-cache FILE]
+                       [--bound-jobs N] [--gen-pairs BIN] [--cgal BIN]
+                       [--timeout SECONDS]
+
+The pairs: the hard family (`cm_gen_pairs --set hard`: single-contour glyphs
+of different letters from fonts other than the bench's DejaVu Sans, each
+resampled by arc length from its bottom-left point to n = 48 and 160, so
+vertex i of one corresponds to vertex i of the other by arc length; plus
+random simple polygons against discs and stars; and planar sections of
+Gmsh's STL models, bench/stl_sections.py), split into a tuning half
+(`tune_*`, two fonts) and a held-out half (`hold_*`), next to the existing
+bench set (`cm_gen_pairs --set bench`). `--quick` takes a fixed subset of 32
+pairs; `--only` keeps the pairs whose name matches a regular expression.
+
+Modes: `index` runs each pair as written (the hard family's correspondence
+is then arc length); `auto` (`--correspondence auto`, hard family only) lets
+compatmesh choose the correspondence. c, fan, bound and T are those of the
+pair as written in both modes: in `auto`, /T above 1 is what the choice of
+correspondence bought.
+
+Per pair, from the input alone:
+  c        the smallest interior corner over the polygons (degrees)
+  fan      the corner-fan cap: at input vertex i every compatible mesh splits
+           the corner into the same k triangles in every polygon, each angle
+           in [alpha, 180 - 2 alpha], so alpha <= min_g theta_i / k and
+           max_g theta_i / k <= 180 - 2 alpha for some k >= 1;
+           fan = min_i max_k min(min theta_i / k, (180 - max theta_i / k) / 2)
+  bound    bench/correspondence_bound.py: no compatible triangulation of the
+           pair has a smallest angle above it (with the distortion K it comes
+           from); cached by the pair's content (--bound-cache)
+  T        min(25, c / 2, fan, bound): the target a remesher can be held to
+Per pair, build and mode (every run interleaved with the others and with
+CGAL, so machine load hits all alike):
+  angle    the smallest angle over all output meshes; /T its ratio to T
+  <20      the share of triangles under 20 degrees, per mesh (percent)
+  Steiner  compatmesh's Steiner vertices (shared by all meshes)
+  CGAL     the Steiner vertices CGAL's Delaunay mesher (bench/cgal_single.cc)
+           adds to each polygon meshed alone at 25 degrees; St/CGAL is
+           compatmesh's count over the larger of them
+  CPU      user + system seconds of the compatmesh process (os.wait4), its
+           peak resident memory (MB), and x CGAL: the CPU time over CGAL's
+           for meshing each polygon alone (both processes), a ratio of two
+           runs made back to back
+  valid    exit code 0 and report.json valid (compatmesh checks every result
+           exactly before it writes it)
+Summary, per build, mode and group (tuning half, held-out half, bench set,
+all): medians of the above over the valid runs (of <20, the worse mesh's
+share), the smallest /T and how many pairs reach 0.3 T.
+With --baseline, per pair and in the summary: new / baseline ratios of the
+smallest angle, the Steiner count and the CPU time.
+
+Exit code: 0 when every run is valid, 1 when one is not, 2 on bad usage.
+"""
+import argparse
+import concurrent.futures
+import datetime
+import hashlib
+import json
+import os
+import platform
+import re
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import stl_sections  # noqa: E402
+from make_results import corner_angles, fmt_angle, read_xy  # noqa: E402
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+BOUND_SCRIPT = os.path.join(HERE, "correspondence_bound.py")
+HARD_N = (48, 160)  # as in cm_gen_pairs --set hard
+CGAL_ANGLE = 25.0
+TARGET_CAP = 25.0
+GOOD_SHARE_OF_T = 0.3
+# --quick: every second hard pair at n = 48 and the smallest bench pairs.
+QUICK_BENCH = {"glyph_U_S_n40", "glyph_C_G_n40", "glyph_L_T_n40", "glyph_2_Z_n40",
+               "star_n16", "twisted_star_n16", "random_disc_n16"}
+
+
+# ---- the pairs -----------------------------------------------------------
+
+class Pair:
+    """A polygon pair: name, family (hard or bench), half (tune, hold or
+    bench) and its .xy files."""
+
+    def __init__(self, name, family, files):
+        self.name, self.family, self.files = name, family, files
+        self.half = name.split("_")[0] if family == "hard" else "bench"
+        self.polygons = [read_xy(f) for f in files]
+        self.n = len(self.polygons[0])
+
+
+def generate(gen, workdir):
+    """The hard family and the bench set written by cm_gen_pairs."""
+    pairs = []
+    for family, set_name in (("hard", "hard"), ("bench", "bench")):
+        out = os.path.join(workdir, set_name)
+        run = subprocess.run([gen, "--out", out, "--set", set_name], capture_output=True, text=True)
+        if run.returncode != 0:
+            raise SystemExit("remesh_bench: cm_gen_pairs --set %s failed: %s" % (set_name, run.stderr.strip()))
+        for line in open(os.path.join(out, "pairs.txt")):
+            name, *files = line.split()
+            pairs.append(Pair(name, family, [os.path.join(out, f) for f in files]))
+    return pairs
+
+
+def sections(workdir, only):
+    """The held-out STL section pairs (stl_sections.py), unless --only
+    leaves them all out."""
+    names = stl_sections.pair_names(HARD_N)
+    if only and not any(re.search(only, name) for name in names):
+        return []
+    if not os.path.isdir(stl_sections.MODELS):
+        raise SystemExit("remesh_bench: the STL sections need Gmsh's models: install gmsh-doc "
+                         "(make bench-deps), or leave them out with --quick or --only")
+    return [Pair(name, "hard", files)
+            for name, files in stl_sections.write_pairs(os.path.join(workdir, "sections"), HARD_N)]
+
+
+def select(pairs, quick, only):
+    """--quick: every second hard glyph or shape pair at n = 48 and the
+    smallest bench pairs (no STL section); --only: names matching it."""
+    if quick:
+        hard48 = [p for p in pairs if p.family == "hard" and p.n == 48 and "_section_" not in p.name]
+        keep = {p.name for p in hard48[::2]} | QUICK_BENCH
+        pairs = [p for p in pairs if p.name in keep]
+    if only:
+        pairs = [p for p in pairs if re.search(only, p.name)]
+    return pairs
+
+
+# ---- what the input allows -------------------------------------------------
+
+def corner_fan_cap(theta):
+    """The largest alpha (degrees) for which some k triangles split the
+    corner of angle theta[g] in every polygon g with all their angles in
+    [alpha, 180 - 2 alpha]."""
+    lo, hi = min(theta), max(theta)
+    return max(min(lo / k, (180 - hi / k) / 2) for k in range(1, 2 + int(hi)))
+
+
+def fan_cap(polygons):
+    """The corner-fan cap (degrees) of polygons in index correspondence."""
+    return min(corner_fan_cap(theta) for theta in zip(*(corner_angles(p) for p in polygons)))
+
+
+def smallest_corner(polygons):
+    return min(min(corner_angles(p)) for p in polygons)
+
+
+def content_key(files):
+    """The bound cache key: the bound script and the polygons' bytes."""
+    h = hashlib.sha256(open(BOUND_SCRIPT, "rb").read())
+    for f in files:
+        h.update(b"\0" + open(f, "rb").read())
+    return h.hexdigest()
+
+
+class BoundCache:
+    """Correspondence bounds by content key, in a JSON file written after
+    every new bound (an interrupted run keeps what it computed)."""
+
+    def __init__(self, path):
+        self.path = path
+        self.data = json.load(open(path)) if path and os.path.exists(path) else {}
+
+    def fill(self, cli, pairs, timeout, jobs):
+        """Computes the bounds not cached yet, `jobs` at a time (they are
+        not timed, so they need not run alone)."""
+        missing = {content_key(p.files): p for p in pairs}
+        missing = [(k, p) for k, p in missing.items() if k not in self.data]
+        with concurrent.futures.ThreadPoolExecutor(max(1, jobs)) as pool:
+            futures = {pool.submit(compute_bound, cli, p.files, timeout): (k, p) for k, p in missing}
+            for done, future in enumerate(concurrent.futures.as_completed(futures)):
+                key, pair = futures[future]
+                self.data[key] = dict(future.result(), pair=pair.name)
+                self.save()
+                print("[bound %d/%d] %s: %s" % (done + 1, len(missing), pair.name,
+                                                self.data[key]["bound_deg"]), flush=True)
+
+    def save(self):
+        if self.path:
+            tmp = self.path + ".tmp"
+            with open(tmp, "w") as f:
+                json.dump(self.data, f, indent=0, sort_keys=True)
+            os.replace(tmp, self.path)
+
+    def get(self, pair):
+        return self.data[content_key(pair.files)]
+
+
+def compute_bound(cli, files, timeout):
+    try:
+        run = subprocess.run([sys.executable, BOUND_SCRIPT, cli, *files], capture_output=True,
+                             text=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return {"bound_deg": None, "K": None, "error": "timed out after %g s" % timeout}
+    if run.returncode != 0:
+        return {"bound_deg": None, "K": None, "error": run.stderr.strip().splitlines()[-1:]}
+    words = run.stdout.split()
+    return {"bound_deg": float(words[0]), "K": float(words[1]), "quadruple": words[2]}
+
+
+# ---- measured runs -----------------------------------------------------------
+
+def run_measured(cmd, timeout, cwd=None):
+    """Runs cmd; returns (exit code or None on timeout, CPU seconds, peak RSS
+    in MB, stdout, stderr). CPU and memory come from os.wait4: this process
+    alone, user + system."""
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
+        proc = subprocess.Popen(cmd, stdout=out, stderr=err, stdin=subprocess.DEVNULL, cwd=cwd)
+        deadline = time.monotonic() + timeout
+        while True:
+            pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
+            if pid:
+                break
+            if time.monotonic() > deadline:
+                proc.kill()
+                pid, status, usage = os.wait4(proc.pid, 0)
+                status = None
+                break
+            time.sleep(0.002)
+        proc.returncode = 0  # reaped here: keep Popen from waiting again
+        out.seek(0)
+        err.seek(0)
+        code = None if status is None else os.waitstatus_to_exitcode(status)
+        return (code, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0,
+                out.read().decode(errors="replace"), err.read().decode(errors="replace"))
+
+
+def run_compatmesh(cli, pair, mode, workdir, timeout):
+    """One compatmesh run: its numbers, or valid False and why."""
+    out = os.path.join(workdir, "run")
+    shutil.rmtree(out, ignore_errors=True)
+    cmd = [cli, "triangulate", *pair.files, "--out-dir", out]
+    if mode != "index":  # index is the default for equal counts, also in older builds
+        cmd += ["--correspondence", mode]
+    code, cpu, rss, _, err = run_measured(cmd, timeout)
+    result = {"exit": code, "cpu_s": cpu, "rss_mb": rss, "valid": False}
+    report_path = os.path.join(out, "report.json")
+    if code != 0 or not os.path.exists(report_path):
+        result["error"] = "timed out" if code is None else (err.strip().splitlines() or ["?"])[-1]
+        return result
+    report = json.load(open(report_path))
+    shutil.rmtree(out, ignore_errors=True)
+    result.update(valid=bool(report.get("valid", False)), steiner=report["steiner"],
+                  boundary=report["n"],
+                  min_angle_deg=min(m["min_angle_deg"] for m in report["meshes"]),
+                  under20_pct=[m["pct_triangles_below_20deg"] for m in report["meshes"]])
+    return result
+
+
+def run_cgal(cgal, pair, timeout):
+    """Each polygon meshed alone by CGAL at 25 degrees: Steiner counts and
+    the CPU time of both processes together."""
+    counts, cpu = [], 0.0
+    for f in pair.files:
+        code, seconds, _, out, err = run_measured([cgal, f, "%g" % CGAL_ANGLE], timeout)
+        if code != 0:
+            return {"error": "cm_cgal_single %s: %s" % (os.path.basename(f), err.strip() or code)}
+        words = out.split()
+        counts.append(int(words[words.index("steiner") + 1]))
+        cpu += seconds
+    return {"steiner": counts, "cpu_s": cpu}
+
+
+def measure_pair(pair, builds, modes, cgal, workdir, timeout, flip):
+    """CGAL, then every build in every mode, builds alternating their order
+    from pair to pair so neither always runs first."""
+    record = {"cgal": run_cgal(cgal, pair, timeout) if cgal else None, "runs": {}}
+    order = list(builds.items())
+    if flip:
+        order.reverse()
+    for mode in modes:
+        if mode != "index" and pair.family != "hard":
+            continue
+        record["runs"][mode] = {label: run_compatmesh(cli, pair, mode, workdir, timeout)
+                                for label, cli in order}
+    return record
+
+
+# ---- derived numbers ---------------------------------------------------------
+
+def ratio(a, b):
+    return a / b if a is not None and b not in (None, 0) else None
+
+
+def derive(run, target, cgal):
+    """Adds the ratios of one run to T and to CGAL."""
+    if not run["valid"]:
+        return run
+    run["to_T"] = ratio(run["min_angle_deg"], target)
+    if cgal and "error" not in cgal:
+        run["steiner_to_cgal"] = ratio(run["steiner"], max(cgal["steiner"]))
+        run["cpu_to_cgal"] = ratio(run["cpu_s"], cgal["cpu_s"])
+    return run
+
+
+def versus(new, base):
+    """new / baseline ratios of the smallest angle, Steiner count and CPU."""
+    if not (new["valid"] and base["valid"]):
+        return None
+    return {"angle": ratio(new["min_angle_deg"], base["min_angle_deg"]),
+            "steiner": ratio(new["steiner"], base["steiner"]) if base["steiner"] else None,
+            "cpu": ratio(new["cpu_s"], base["cpu_s"])}
+
+
+def median(values):
+    values = [v for v in values if v is not None]
+    return statistics.median(values) if values else None
+
+
+def summarize(rows, label, mode, group):
+    """One summary line's numbers for the rows of a group."""
+    runs = [r["runs"][mode][label] for r in rows if mode in r["runs"]]
+    ok = [x for x in runs if x["valid"]]
+    to_t = [x["to_T"] for x in ok if x.get("to_T") is not None]
+    return {"build": label, "mode": mode, "group": group, "pairs": len(runs),
+            "invalid": len(runs) - len(ok),
+            "median_angle": median(x["min_angle_deg"] for x in ok),
+            "median_to_T": median(to_t), "min_to_T": min(to_t) if to_t else None,
+            "at_least_0.3T": sum(t >= GOOD_SHARE_OF_T for t in to_t),
+            "median_steiner": median(x["steiner"] for x in ok),
+            "median_steiner_to_cgal": median(x.get("steiner_to_cgal") for x in ok),
+            "median_cpu_s": median(x["cpu_s"] for x in ok),
+            "median_cpu_to_cgal": median(x.get("cpu_to_cgal") for x in ok),
+            "median_under20_pct": median(max(x["under20_pct"]) for x in ok)}
+
+
+def summarize_versus(rows, mode, group):
+    pairs = [r["versus"][mode] for r in rows if r.get("versus", {}).get(mode)]
+    return {"mode": mode, "group": group, "pairs": len(pairs),
+            **{"median_" + k: median(p[k] for p in pairs) for k in ("angle", "steiner", "cpu")}}
+
+
+GROUPS = (("tune", "hard family, tuning half"), ("hold", "hard family, held-out half"),
+          ("bench", "bench set"), ("all", "all pairs"))
+
+
+def in_group(row, group):
+    return group == "all" or row["half"] == group
+
+
+# ---- the report --------------------------------------------------------------
+
+def num(value, fmt="%.2f"):
+    return "-" if value is None else fmt % value
+
+
+def angle(value):
+    return "-" if value is None else fmt_angle(value)
+
+
+def pair_table(rows, mode, labels):
+    """The Markdown table of one mode."""
+    head = ["pair", "half", "n", "c", "fan", "bound (K)", "T"]
+    for label in labels:
+        p = "" if len(labels) == 1 else label + " "
+        head += [p + "angle", p + "/T", p + "<20 %", p + "Steiner", p + "St/CGAL", p + "CPU s",
+                 p + "x CGAL", p + "MB", p + "valid"]
+    head.insert(len(head) - 9 * len(labels), "CGAL alone")
+    if len(labels) == 2:
+        head += ["angle new/base", "Steiner new/base", "CPU new/base"]
+    lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
+    for r in rows:
+        if mode not in r["runs"]:
+            continue
+        bound = "-" if r["bound_deg"] is None else "%s (%.3g)" % (angle(r["bound_deg"]), r["K"])
+        cgal = r["cgal"]
+        cells = [r["name"], r["half"], str(r["n"]), angle(r["c"]), angle(r["fan"]), bound, angle(r["T"]),
+                 "-" if not cgal else cgal.get("error") or " / ".join(map(str, cgal["steiner"]))]
+        for label in labels:
+            x = r["runs"][mode][label]
+            if not x["valid"]:
+                cells += ["-"] * 8 + ["**no**: %s" % x.get("error", "report not valid")]
+                continue
+            cells += [angle(x["min_angle_deg"]), num(x.get("to_T")),
+                      " / ".join("%.0f" % s for s in x["under20_pct"]), str(x["steiner"]),
+                      num(x.get("steiner_to_cgal"), "%.1f"), num(x["cpu_s"], "%.3g"),
+                      num(x.get("cpu_to_cgal"), "%.0f"), num(x["rss_mb"], "%.0f"), "yes"]
+        if len(labels) == 2:
+            v = r["versus"].get(mode) or {}
+            cells += [num(v.get("angle")), num(v.get("steiner")), num(v.get("cpu"))]
+        lines.append("| " + " | ".join(cells) + " |")
+    return lines
+
+
+def summary_lines(summaries):
+    lines = ["| build | mode | pairs | invalid | median angle | median /T | min /T | >= 0.3 T | "
+             "median Steiner | median St/CGAL | median CPU s | median x CGAL | median <20 % |",
+             "|" + "---|" * 13]
+    for s in summaries:
+        lines.append("| %s | %s: %s | %d | %d | %s | %s | %s | %d of %d | %s | %s | %s | %s | %s |" % (
+            s["build"], s["mode"], dict(GROUPS)[s["group"]], s["pairs"], s["invalid"],
+            angle(s["median_angle"]), num(s["median_to_T"]), num(s["min_to_T"]),
+            s["at_least_0.3T"], s["pairs"] - s["invalid"], num(s["median_steiner"], "%.0f"),
+            num(s["median_steiner_to_cgal"], "%.1f"), num(s["median_cpu_s"], "%.3g"),
+            num(s["median_cpu_to_cgal"], "%.0f"), num(s["median_under20_pct"], "%.0f")))
+    return lines
+
+
+def versus_lines(summaries):
+    lines = ["| mode | pairs | median angle new/base | median Steiner new/base | median CPU new/base |",
+             "|---|---|---|---|---|"]
+    for s in summaries:
+        lines.append("| %s: %s | %d | %s | %s | %s |" % (
+            s["mode"], dict(GROUPS)[s["group"]], s["pairs"], num(s["median_angle"]),
+            num(s["median_steiner"]), num(s["median_cpu"])))
+    return lines
+
+
+def write_markdown(path, result):
+    meta, rows = result["meta"], result["pairs"]
+    labels = [b["label"] for b in meta["builds"]]
+    lines = ["# Remesher benchmark", "",
+             "`bench/remesh_bench.py` (its docstring defines every number). Hard family: "
+             "`cm_gen_pairs --set hard` (glyphs of different letters from FreeSerif Italic and P052 "
+             "for tuning; Nimbus Sans, Z003, URW Bookman, C059, Liberation Serif, Noto Sans, random "
+             "simple polygons against discs and stars, and planar sections of Gmsh's STL models "
+             "(`bench/stl_sections.py`) held out; n = 48 and 160, arc-length "
+             "correspondence from the bottom-left point), next to the bench set "
+             "(`cm_gen_pairs --set bench`). T = min(25, c/2, fan, bound)%s." % (
+                 "" if meta["bound"] else " (bound skipped: --no-bound)"), ""]
+    lines += ["- Date: %s; machine: %s, %d cores; load average %.1f at the start, %.1f at the end "
+              "(CPU seconds are measured, not wall time)" % (meta["date"], meta["machine"], meta["cores"],
+                                                             meta["load"][0], meta["load"][1]),
+              "- Command: `%s` (bench at commit %s)" % (meta["command"], meta["commit"])]
+    for b in meta["builds"]:
+        lines.append("- %s: `%s` (%s)" % (b["label"], b["path"], b["version"]))
+    lines.append("- CGAL alone: %s" % (meta["cgal"] or "not run (--no-cgal)"))
+    lines += ["", "## Summary", ""] + summary_lines(result["summary"])
+    if result.get("versus"):
+        lines += ["", "New over baseline, same pairs, same run:", ""] + versus_lines(result["versus"])
+    for mode in meta["modes"]:
+        lines += ["", "## Pairs, mode `%s`" % mode, ""] + pair_table(rows, mode, labels)
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+# ---- main --------------------------------------------------------------------
+
+def parse_args(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--compatmesh", required=True, help="the compatmesh CLI to judge")
+    ap.add_argument("--baseline", help="a second compatmesh CLI, run side by side")
+    ap.add_argument("--gen-pairs", help="cm_gen_pairs (default: next to --compatmesh)")
+    ap.add_argument("--cgal", help="cm_cgal_single (default: next to --compatmesh)")
+    ap.add_argument("--no-cgal", action="store_true", help="skip meshing each polygon alone with CGAL")
+    ap.add_argument("--no-bound", action="store_true", help="skip the correspondence bound")
+    ap.add_argument("--bound-cache", default=os.path.join(HERE, "REMESH_bounds.json"),
+                    help="the bounds computed so far, by pair content")
+    ap.add_argument("--bound-jobs", type=int, default=1,
+                    help="bounds computed at once, before the timed runs")
+    ap.add_argument("--quick", action="store_true", help="a fixed subset of 32 pairs")
+    ap.add_argument("--only", help="keep the pairs whose name matches this regular expression")
+    ap.add_argument("--modes", default="index", help="comma-separated: index, auto")
+    ap.add_argument("--out", default=os.path.join(HERE, "REMESH.md"))
+    ap.add_argument("--json", help="also write the raw numbers here")
+    ap.add_argument("--timeout", type=float, default=900, help="seconds per run")
+    args = ap.parse_args(argv)
+    args.modes = args.modes.split(",")
+    if any(m not in ("index", "auto") for m in args.modes):
+        ap.error("--modes: index and auto only")
+    bindir = os.path.dirname(os.path.abspath(args.compatmesh))
+    args.gen_pairs = args.gen_pairs or os.path.join(bindir, "cm_gen_pairs")
+    args.cgal = None if args.no_cgal else args.cgal or os.path.join(bindir, "cm_cgal_single")
+    for tool, what in ((args.compatmesh, "--compatmesh"), (args.baseline, "--baseline"),
+                       (args.gen_pairs, "--gen-pairs"), (args.cgal, "--cgal")):
+        if tool and not os.access(tool, os.X_OK):
+            hint = " (CGAL: make bench-deps, rebuild; or --no-cgal)" if what == "--cgal" else ""
+            ap.error("%s: %s is not an executable%s" % (what, tool, hint))
+    return args
+
+
+def machine():
+    for line in open("/proc/cpuinfo"):
+        if line.startswith("model name"):
+            return line.split(":", 1)[1].strip()
+    return platform.machine()
+
+
+def source_commit():
+    run = subprocess.run(["git", "-C", HERE, "rev-parse", "--short", "HEAD"], capture_output=True, text=True)
+    return run.stdout.strip() or "unknown"
+
+
+def version(cli):
+    run = subprocess.run([cli, "--version"], capture_output=True, text=True)
+    return run.stdout.strip() or "version unknown"
+
+
+def static_row(pair, args, cache):
+    """What the input allows: c, fan, bound and T."""
+    c, fan = smallest_corner(pair.polygons), fan_cap(pair.polygons)
+    bound = cache.get(pair) if not args.no_bound else {}
+    b = bound.get("bound_deg")
+    target = min(TARGET_CAP, c / 2, fan, b if b is not None else 60)
+    return {"name": pair.name, "family": pair.family, "half": pair.half, "n": pair.n,
+            "key": content_key(pair.files), "c": c, "fan": fan, "bound_deg": b, "K": bound.get("K"),
+            "T": target}
+
+
+def main(argv):
+    args = parse_args(argv)
+    builds = {"new": args.compatmesh}
+    if args.baseline:
+        builds["baseline"] = args.baseline
+    cache = BoundCache(args.bound_cache)
+    load = os.getloadavg()[0]
+    work = tempfile.mkdtemp(prefix="remesh_bench_")
+    try:
+        pairs = generate(args.gen_pairs, work)
+        if not args.quick:
+            hard = sum(p.family == "hard" for p in pairs)
+            pairs[hard:hard] = sections(work, args.only)
+        pairs = select(pairs, args.quick, args.only)
+        if not pairs:
+            print("remesh_bench: no pair selected", file=sys.stderr)
+            return 2
+        if not args.no_bound:
+            cache.fill(args.compatmesh, pairs, args.timeout, args.bound_jobs)
+        rows = []
+        for i, pair in enumerate(pairs):
+            row = static_row(pair, args, cache)
+            row.update(measure_pair(pair, builds, args.modes, args.cgal, work, args.timeout, i % 2 == 1))
+            for mode, runs in row["runs"].items():
+                for run in runs.values():
+                    derive(run, row["T"], row["cgal"])
+                if args.baseline:
+                    row.setdefault("versus", {})[mode] = versus(runs["new"], runs["baseline"])
+            rows.append(row)
+            new = next(iter(row["runs"].values()))["new"]
+            print("[%d/%d] %s T %.1f: %s" % (i + 1, len(pairs), pair.name, row["T"],
+                  "%.2f deg, %d Steiner, %.3g s" % (new["min_angle_deg"], new["steiner"], new["cpu_s"])
+                  if new["valid"] else "INVALID: " + new.get("error", "")), flush=True)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    summaries = [summarize([r for r in rows if in_group(r, g)], label, mode, g)
+                 for mode in args.modes for label in builds for g, _ in GROUPS
+                 if any(in_group(r, g) and mode in r["runs"] for r in rows)]
+    vs = [summarize_versus([r for r in rows if in_group(r, g)], mode, g)
+          for mode in args.modes for g, _ in GROUPS
+          if args.baseline and any(in_group(r, g) and mode in r["runs"] for r in rows)]
+    result = {"meta": {"date": datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M UTC"),
+                       "machine": machine(), "cores": os.cpu_count(),
+                       "command": " ".join(["remesh_bench.py"] + argv), "commit": source_commit(),
+                       "load": [load, os.getloadavg()[0]],
+                       "builds": [{"label": k, "path": v, "version": version(v)} for k, v in builds.items()],
+                       "cgal": args.cgal, "bound": not args.no_bound, "modes": args.modes},
+              "pairs": rows, "summary": summaries, "versus": vs}
+    write_markdown(args.out, result)
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(result, f, indent=1)
+    for line in summary_lines(summaries):
+        print(line)
+    invalid = [(r["name"], m, k) for r in rows for m, runs in r["runs"].items()
+               for k, x in runs.items() if not x["valid"]]
+    for name, mode, label in invalid:
+        print("remesh_bench: %s (%s, %s) is not valid" % (name, mode, label), file=sys.stderr)
+    print("remesh_bench: wrote %s%s" % (args.out, " and " + args.json if args.json else ""))
+    return 1 if invalid else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,92 @@
+"""bench/remesh_bench.py: the corner-fan cap worked out by hand, and the
+script run on three tiny pairs (no bound, no CGAL: both have their own
+checks), with the same build as its own baseline and with a baseline that
+fails."""
+import json
+import os
+import subprocess
+import sys
+
+import pytest
+
+BENCH = os.path.join(os.path.dirname(__file__), "..", "..", "bench")
+sys.path.insert(0, BENCH)
+import remesh_bench as rb  # noqa: E402
+
+CLI = os.environ["COMPATMESH"]
+GEN = os.environ["CM_GEN_PAIRS"]
+SCRIPT = os.path.join(BENCH, "remesh_bench.py")
+TINY = ["hold_random_disc_n48_s3001", "glyph_2_Z_n40", "twisted_star_n16"]
+
+
+@pytest.mark.parametrize("theta, cap", [
+    ((60, 60), 60),     # one equilateral triangle in both
+    ((90, 90), 45),     # one right isosceles triangle, or two 45-degree ones
+    ((180, 180), 60),   # a flat corner: three equilateral triangles
+    ((270, 90), 30),    # k = 3: 90 / 3 = 30 and 270 / 3 = 90 <= 180 - 60
+    ((10, 170), 5),     # k = 1 fits 170 only with alpha = 5
+])
+def test_corner_fan_cap(theta, cap):
+    assert rb.corner_fan_cap(theta) == pytest.approx(cap)
+
+
+def test_fan_cap_is_the_worst_corner():
+    square = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    kite = [(0, 0), (1, 0), (3, 3), (0, 1)]  # corners 90, 71.6, 18.4 (at (3, 3)), ...
+    assert rb.fan_cap([square, square]) == pytest.approx(45)
+    worst = min(rb.corner_fan_cap(t) for t in zip(rb.corner_angles(square), rb.corner_angles(kite)))
+    assert rb.fan_cap([square, kite]) == pytest.approx(worst) and worst < 45
+
+
+def bench(tmp_path, *extra):
+    out, raw = tmp_path / "out.md", tmp_path / "out.json"
+    run = subprocess.run([sys.executable, SCRIPT, "--compatmesh", CLI, "--gen-pairs", GEN,
+                          "--no-bound", "--no-cgal", "--only", "^(%s)$" % "|".join(TINY),
+                          "--out", str(out), "--json", str(raw), *extra],
+                         capture_output=True, text=True, timeout=300)
+    return run, out, raw
+
+
+def test_tiny_pairs_against_themselves(tmp_path):
+    run, out, raw = bench(tmp_path, "--baseline", CLI)
+    assert run.returncode == 0, run.stderr
+    result = json.loads(raw.read_text())
+    assert sorted(r["name"] for r in result["pairs"]) == sorted(TINY)
+    for r in result["pairs"]:
+        assert 0 < r["T"] <= 25 and r["T"] <= r["c"] / 2 and r["bound_deg"] is None
+        for label in ("new", "baseline"):
+            x = r["runs"]["index"][label]
+            assert x["valid"] and x["exit"] == 0, (r["name"], x)
+            assert 0 < x["min_angle_deg"] <= 60 and x["to_T"] == pytest.approx(x["min_angle_deg"] / r["T"])
+            assert len(x["under20_pct"]) == 2 and x["cpu_s"] > 0 and x["rss_mb"] > 0
+        # the same deterministic build on both sides
+        assert r["versus"]["index"]["angle"] == 1 and r["versus"]["index"]["steiner"] in (1, None)
+    text = out.read_text()
+    for name in TINY:
+        assert "| %s |" % name in text
+    everything = [s for s in result["summary"] if s["group"] == "all"]
+    assert [s["build"] for s in everything] == ["new", "baseline"]
+    assert all(s["pairs"] == 3 and s["invalid"] == 0 for s in everything)
+    assert "all pairs" in text and "New over baseline" in text
+
+
+def test_a_failing_baseline_is_reported_and_fails(tmp_path):
+    broken = tmp_path / "broken"
+    broken.write_text("#!/bin/sh\necho 'compatmesh: broken on purpose' >&2\nexit 3\n")
+    broken.chmod(0o755)
+    run, out, raw = bench(tmp_path, "--baseline", str(broken))
+    assert run.returncode == 1
+    assert run.stderr.count("(index, baseline) is not valid") == len(TINY)
+    result = json.loads(raw.read_text())
+    for r in result["pairs"]:
+        assert r["runs"]["index"]["new"]["valid"]
+        assert r["runs"]["index"]["baseline"] == dict(r["runs"]["index"]["baseline"], valid=False, exit=3)
+    assert out.read_text().count("**no**: compatmesh: broken on purpose") == len(TINY)
+
+
+def test_missing_cgal_is_a_usage_error(tmp_path):
+    run = subprocess.run([sys.executable, SCRIPT, "--compatmesh", CLI, "--gen-pairs", GEN,
+                          "--cgal", str(tmp_path / "none"), "--out", str(tmp_path / "x.md")],
+                         capture_output=True, text=True, timeout=60)
+    assert run.returncode == 2 and "--cgal" in run.stderr and "--no-cgal" in run.stderr
+    assert not (tmp_path / "x.md").exists()
