@@ -37,7 +37,10 @@ def sweep(cm, tmp_path, pair, fmt, *extra):
     result = cm("sweep", "a.xy", "b.xy", "--sections", 6, "--height", 2.5, "-o",
                 f"out.{extension}", *args, *extra, cwd=tmp_path)
     assert result.returncode == 0, result.stderr
-    assert result.stderr == ""
+    # Only the flat-prism warning may be printed (the glyph's inserted
+    # sections make a few thin layers at this height).
+    assert all(re.fullmatch(r"compatmesh: sweep: warning: \d+ of \d+ prisms are flatter than 1:10 .*", line)
+               for line in result.stderr.splitlines()), result.stderr
     assert leftovers(tmp_path) == []
     return tmp_path / f"out.{extension}", result.stdout
 
