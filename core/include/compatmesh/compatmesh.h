@@ -435,11 +435,13 @@ CM_API const int32_t *cm_sweep_prisms(const cm_sweep *sweep);
  * corners chosen per prism, acyclic around every triangle, so faces
  * conform; among such orders the worst prisms (by the smallest dihedral
  * angle they admit) choose first, looking one step ahead at the
- * neighbours whose diagonals they force. A layer is halved in morph time
- * where a prism's split has a dihedral angle under half the smallest angle
- * of its two triangles while the prism is at least half as tall as its
- * longest triangle edge (a long morph step tilts or twists it; halving a
- * flatter one would only flatten it), within max_refine. */
+ * neighbours whose diagonals they force, then a local search (one diagonal,
+ * one prism's three, or all diagonals at one vertex) raises the worst. A
+ * layer is halved in morph time where a prism's split has a dihedral angle
+ * under half the smallest angle of its two triangles while the prism is at
+ * least half as tall as its longest triangle edge (a long morph step tilts
+ * or twists it; halving a flatter one would only flatten it), as long as no
+ * prism of the halved layer is flatter than 1:5, within max_refine. */
 CM_API size_t cm_sweep_num_tets(const cm_sweep *sweep);
 CM_API const int32_t *cm_sweep_tets(const cm_sweep *sweep);
 /* Sum of the prism volumes (equal to the integral of section areas);

@@ -38,6 +38,7 @@ void cm_prism_split_free(cm_prism_split *split)
 {
     free(split->tri_edge), free(split->edge_tri), free(split->edge_end);
     free(split->dir), free(split->score), free(split->order), free(split->queue);
+    free(split->vertex_start), free(split->vertex_edge), free(split->saved);
     memset(split, 0, sizeof *split);
 }
 
@@ -79,6 +80,17 @@ cm_status cm_prism_split_init(cm_prism_split *split, const int32_t *tri, size_t 
     }
     split->ne = ne;
     free(keys);
+    split->vertex_start = calloc(nv + 2, sizeof *split->vertex_start);
+    split->vertex_edge = malloc((2 * ne + 1) * sizeof *split->vertex_edge);
+    split->saved = malloc(ne + 1);
+    if (!split->vertex_start || !split->vertex_edge || !split->saved) {
+        cm_prism_split_free(split);
+        return cm_fail_status(error, CM_ERR_NO_MEMORY);
+    }
+    for (size_t e = 0; e < ne; e++) split->vertex_start[split->edge_end[2 * e] + 2]++, split->vertex_start[split->edge_end[2 * e + 1] + 2]++;
+    for (size_t v = 0; v < nv; v++) split->vertex_start[v + 2] += split->vertex_start[v + 1];
+    for (size_t e = 0; e < ne; e++)
+        for (int k = 0; k < 2; k++) split->vertex_edge[split->vertex_start[split->edge_end[2 * e + k] + 1]++] = (int32_t)e;
     return CM_OK;
 }
 
@@ -246,6 +258,139 @@ static int compare_best(const void *x, const void *y)
     return (p->tri > q->tri) - (p->tri < q->tri);
 }
 
+/* The corner order the oriented edges give triangle t, or -1 if they run
+ * around it in a cycle. */
+static int order_of(const cm_prism_split *s, size_t t)
+{
+    int precedes[3] = {0, 0, 0};
+    for (int c = 0; c < 3; c++) {
+        int32_t e = s->tri_edge[3 * t + c];
+        int along = (s->tri[3 * t + c] == s->edge_end[2 * e]) == s->dir[e];
+        precedes[along ? c : (c + 1) % 3]++;
+    }
+    for (int o = 0; o < 6; o++)
+        if (precedes[orders[o][0]] == 2 && precedes[orders[o][1]] == 1) return o;
+    return -1;
+}
+
+/* Makes vertex v come first (sink 0) or last (sink 1) among its
+ * neighbours, which keeps every triangle acyclic, if that raises the
+ * smallest score among the triangles whose order it changes. Returns 1 if
+ * done. */
+static int move_vertex(cm_prism_split *s, int32_t v, int sink, unsigned char *order)
+{
+    float before = 180, after = 180;
+    size_t lo = s->vertex_start[v], hi = s->vertex_start[v + 1];
+    for (size_t i = lo; i < hi; i++) {
+        int32_t e = s->vertex_edge[i];
+        s->saved[e] = s->dir[e];
+        int v_lower = s->edge_end[2 * e] == v;
+        s->dir[e] = (signed char)(sink ? !v_lower : v_lower);
+    }
+    for (size_t i = lo; i < hi; i++) {
+        int32_t e = s->vertex_edge[i];
+        for (int side = 0; side < 2; side++) {
+            int32_t t = s->edge_tri[2 * e + side];
+            if (t < 0) continue;
+            int o = order_of(s, (size_t)t);
+            if (o == order[t]) continue; /* unchanged: not part of the comparison */
+            float value = o < 0 ? -3 : s->score[6 * (size_t)t + (size_t)o];
+            after = value < after ? value : after;
+            before = s->score[6 * (size_t)t + order[t]] < before ? s->score[6 * (size_t)t + order[t]] : before;
+        }
+    }
+    if (after > before) {
+        for (size_t i = lo; i < hi; i++)
+            for (int side = 0; side < 2; side++) {
+                int32_t t = s->edge_tri[2 * s->vertex_edge[i] + side];
+                if (t >= 0) order[t] = (unsigned char)order_of(s, (size_t)t);
+            }
+        return 1;
+    }
+    for (size_t i = lo; i < hi; i++) s->dir[s->vertex_edge[i]] = s->saved[s->vertex_edge[i]];
+    return 0;
+}
+
+/* Gives triangle t corner order o if its neighbours stay acyclic and the
+ * smallest score among t and the neighbours whose order changes rises.
+ * Returns 1 if done. */
+static int move_triangle(cm_prism_split *s, size_t t, unsigned char o, unsigned char *order)
+{
+    if (o == order[t]) return 0;
+    const unsigned char *ord = orders[o];
+    int rank[3];
+    for (int k = 0; k < 3; k++) rank[ord[k]] = k;
+    float before = s->score[6 * t + order[t]], after = s->score[6 * t + o];
+    int32_t other[3];
+    for (int c = 0; c < 3; c++) {
+        int32_t e = s->tri_edge[3 * t + c];
+        other[c] = s->edge_tri[2 * e] == (int32_t)t ? s->edge_tri[2 * e + 1] : s->edge_tri[2 * e];
+        s->saved[e] = s->dir[e];
+        int u_first = rank[c] < rank[(c + 1) % 3];
+        s->dir[e] = (signed char)(s->tri[3 * t + c] == s->edge_end[2 * e] ? u_first : !u_first);
+    }
+    int next[3] = {0, 0, 0};
+    for (int c = 0; c < 3; c++) {
+        if (other[c] < 0) continue;
+        size_t u = (size_t)other[c];
+        next[c] = order_of(s, u);
+        if (next[c] == order[u]) continue; /* unchanged: not part of the comparison */
+        float value = next[c] < 0 ? -3 : s->score[6 * u + (size_t)next[c]];
+        after = value < after ? value : after;
+        before = s->score[6 * u + order[u]] < before ? s->score[6 * u + order[u]] : before;
+    }
+    if (after > before) {
+        order[t] = o;
+        for (int c = 0; c < 3; c++)
+            if (other[c] >= 0) order[other[c]] = (unsigned char)next[c];
+        return 1;
+    }
+    for (int c = 0; c < 3; c++) s->dir[s->tri_edge[3 * t + c]] = s->saved[s->tri_edge[3 * t + c]];
+    return 0;
+}
+
+/* Local search after the greedy choice: a prism whose split came out poor
+ * (its edges forced by neighbours chosen earlier) flips one of its
+ * diagonals when both prisms sharing it stay acyclic and the worse of the
+ * two improves, takes another order on the same terms with its three
+ * neighbours, or moves one of its corners to the front or the back of
+ * the order around it (always acyclic) when the prisms around improve. A
+ * few passes, worst prisms first. */
+static void improve(cm_prism_split *s, unsigned char *order)
+{
+    for (int pass = 0; pass < 8; pass++) {
+        int changed = 0;
+        for (size_t t = 0; t < s->nt; t++) s->order[t] = (cm_split_rank){s->score[6 * t + order[t]], (int32_t)t};
+        qsort(s->order, s->nt, sizeof *s->order, compare_best);
+        for (size_t i = 0; i < s->nt; i++) {
+            size_t t = (size_t)s->order[i].tri;
+            for (int c = 0; c < 3; c++) {
+                int32_t e = s->tri_edge[3 * t + c];
+                int32_t u = s->edge_tri[2 * e] == (int32_t)t ? s->edge_tri[2 * e + 1] : s->edge_tri[2 * e];
+                float before = s->score[6 * t + order[t]];
+                if (u >= 0 && s->score[6 * (size_t)u + order[u]] < before) before = s->score[6 * (size_t)u + order[u]];
+                s->dir[e] = (signed char)!s->dir[e];
+                int ot = order_of(s, t), ou = u >= 0 ? order_of(s, (size_t)u) : 0;
+                if (ot >= 0 && ou >= 0) {
+                    float after = s->score[6 * t + (size_t)ot];
+                    if (u >= 0 && s->score[6 * (size_t)u + (size_t)ou] < after) after = s->score[6 * (size_t)u + (size_t)ou];
+                    if (after > before) {
+                        order[t] = (unsigned char)ot;
+                        if (u >= 0) order[u] = (unsigned char)ou;
+                        changed = 1;
+                        continue;
+                    }
+                }
+                s->dir[e] = (signed char)!s->dir[e];
+            }
+            for (int c = 0; c < 3; c++)
+                for (int sink = 0; sink < 2; sink++) changed |= move_vertex(s, s->tri[3 * t + c], sink, order);
+            for (unsigned char o = 0; o < 6; o++) changed |= move_triangle(s, t, o, order);
+        }
+        if (!changed) break;
+    }
+}
+
 double cm_prism_split_choose(cm_prism_split *s, const double *bottom, const double *top, unsigned char *order)
 {
     size_t nt = s->nt;
@@ -278,18 +423,16 @@ double cm_prism_split_choose(cm_prism_split *s, const double *bottom, const doub
                 chosen = o, chosen_trial = value;
         }
         if (chosen < 0) { /* every order conflicts: split by vertex index */
-            worst = 180;
-            for (size_t u = 0; u < nt; u++) {
-                order[u] = index_order(s->tri + 3 * u);
-                if (s->score[6 * u + order[u]] < worst) worst = s->score[6 * u + order[u]];
-            }
-            return worst;
+            memset(s->dir, 1, s->ne);
+            for (size_t u = 0; u < nt; u++) order[u] = index_order(s->tri + 3 * u);
+            break;
         }
         order[t] = (unsigned char)chosen;
         apply_order(s, t, (unsigned char)chosen);
         s->logged = 0; /* kept: the log is for trials only */
-        double value = s->score[6 * t + chosen];
-        if (value < worst) worst = value;
     }
+    improve(s, order);
+    for (size_t t = 0; t < nt; t++)
+        if (s->score[6 * t + order[t]] < worst) worst = s->score[6 * t + order[t]];
     return worst;
 }

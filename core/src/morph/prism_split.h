@@ -31,12 +31,15 @@ typedef struct cm_prism_split {
     int32_t *tri_edge;      /* 3 * nt: edge of corners (c, c + 1) */
     int32_t *edge_tri;      /* 2 * ne: its triangles, -1 on the boundary */
     int32_t *edge_end;      /* 2 * ne: its vertices, lower index first */
+    size_t *vertex_start;   /* nv + 1: vertex v's edges are */
+    int32_t *vertex_edge;   /* vertex_edge[vertex_start[v] .. vertex_start[v + 1]) */
     /* scratch per layer */
     signed char *dir;       /* ne: 1 lower index first, 0 the other, -1 open */
     float *score;           /* 6 * nt: smallest dihedral of each order */
     cm_split_rank *order;   /* nt */
     int32_t *queue;         /* ne: the edges oriented by a trial */
     size_t logged;
+    signed char *saved;     /* ne: directions before a trial move */
 } cm_prism_split;
 
 /* The edges of the mesh (tri stays borrowed). */

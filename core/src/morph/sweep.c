@@ -167,6 +167,7 @@ static cm_status check_layer(cm_sweep *w, const cm_morph *m, section *lo, layer_
                              long *poor)
 {
     *poor = -1;
+    double flattest = 0; /* longest triangle edge of the layer */
     const int32_t *tri = m->result->mesh.tri;
     size_t nv = m->nv;
     *bad = -1;
@@ -185,6 +186,7 @@ static cm_status check_layer(cm_sweep *w, const cm_morph *m, section *lo, layer_
         }
         if (!splitter) continue;
         if (*poor < 0 && poorly_split(lo, c, splitter->split.score[6 * t + lo->split[t]])) *poor = (long)t;
+        flattest = fmax(flattest, fmax(longest_edge(lo, c), longest_edge(lo + 1, c)));
         int32_t v[6] = {c[0], c[1], c[2], c[0] + (int32_t)nv, c[1] + (int32_t)nv, c[2] + (int32_t)nv}, q[12];
         cm_prism_split_tets(v, lo->split[t], q);
         for (int j = 0; j < 3; j++) {
@@ -197,6 +199,9 @@ static cm_status check_layer(cm_sweep *w, const cm_morph *m, section *lo, layer_
             }
         }
     }
+    /* Halving must not make the layer's largest triangles flat: it stays
+     * within half the flat ratio (its tetrahedra keep about 10 degrees). */
+    if (2 * flattest > 0.5 * CM_SWEEP_FLAT_RATIO * (lo[1].z - lo[0].z)) *poor = -1;
     return CM_OK;
 }
 
