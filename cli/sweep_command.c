@@ -28,8 +28,9 @@ enum { OPTION_HEIGHT = OPTION_TRIANGULATION_END, OPTION_HEIGHTS, OPTION_TETS, OP
 static const option_spec sweep_options[] = {
     {"output", 'o', "FILE",
      "the volume mesh (required); the format follows the\n"
-     "extension: .msh (Gmsh), .vtk, .inp (Abaqus), .bdf\n"
-     "(Nastran) or .unv (I-deas universal)"},
+     "extension: .msh (Gmsh), .vtk, .vtu (VTK XML, for\n"
+     "ParaView), .inp (Abaqus), .bdf (Nastran) or .unv\n"
+     "(I-deas universal)"},
     {"sections", 'n', "N",
      "sections per pair of consecutive inputs, both ends\n"
      "included, 2 to 10000 (default 11); more may be\n"
