@@ -19,16 +19,18 @@
 #include "outdir.h"
 #include "options.h"
 #include "triangulation.h"
+#include "write_report.h"
 #include "write_volume.h"
 
-enum { OPTION_HEIGHT = OPTION_TRIANGULATION_END, OPTION_HEIGHTS, OPTION_TETS, OPTION_MSH_VERSION,
+enum { OPTION_HEIGHT = OPTION_TRIANGULATION_END, OPTION_HEIGHTS, OPTION_TETS, OPTION_MSH_VERSION, OPTION_REPORT,
        MAX_SECTIONS = 10000 };
 
 static const option_spec sweep_options[] = {
     {"output", 'o', "FILE",
      "the volume mesh (required); the format follows the\n"
-     "extension: .msh (Gmsh), .vtk, .inp (Abaqus), .bdf\n"
-     "(Nastran) or .unv (I-deas universal)"},
+     "extension: .msh (Gmsh), .vtk, .vtu (VTK XML, for\n"
+     "ParaView), .inp (Abaqus), .bdf (Nastran) or .unv\n"
+     "(I-deas universal)"},
     {"sections", 'n', "N",
      "sections per pair of consecutive inputs, both ends\n"
      "included, 2 to 10000 (default 11); more may be\n"
@@ -41,8 +43,14 @@ static const option_spec sweep_options[] = {
      "the inputs' own z if they are all OBJ files with z\n"
      "(unless all z are equal)"},
     {"tets", OPTION_TETS, NULL, "write tetrahedra (each prism split in 3, faces\n"
-                                "conforming) instead of prisms"},
+                                "conforming, diagonals chosen against slivers)\n"
+                                "instead of prisms"},
     {"msh-version", OPTION_MSH_VERSION, "V", ".msh format version: 4.1 (default) or 2.2"},
+    {"report", OPTION_REPORT, "FILE",
+     "also write a JSON report: counts, the height used and\n"
+     "why, the cells' smallest and largest dihedral angle,\n"
+     "smallest scaled Jacobian, largest aspect ratio and\n"
+     "the prisms' flatness"},
     TRIANGULATION_OPTION_SPECS,
     {"help", 'h', NULL, "show this help and exit"},
 };
@@ -57,6 +65,7 @@ typedef struct sweep_args {
     size_t heights_count;
     int tets;
     double msh_version;
+    const char *report;
     int help;
 } sweep_args;
 
@@ -132,6 +141,9 @@ static int handle_sweep_option(void *context, int key, const char *value, cli_er
     case OPTION_TETS:
         args->tets = 1;
         return CLI_EXIT_OK;
+    case OPTION_REPORT:
+        args->report = value;
+        return CLI_EXIT_OK;
     case OPTION_MSH_VERSION:
         if (strcmp(value, "4.1") == 0) args->msh_version = 4.1;
         else if (strcmp(value, "2.2") == 0) args->msh_version = 2.2;
@@ -158,7 +170,9 @@ static void print_sweep_help(FILE *out)
           "morph --help'), stacks the sections at increasing z and joins consecutive\n"
           "sections into 6-node prisms, each checked exactly to keep a positive\n"
           "volume, and writes the volume mesh with Gmsh. Input g lies at height\n"
-          "z_g; the sections between two inputs are evenly spaced.\n"
+          "z_g; the sections between two inputs are evenly spaced. Prisms flatter\n"
+          "than 1:10 (a triangle edge over 10 times their height) are warned about\n"
+          "on stderr: their tetrahedra cannot avoid small dihedral angles.\n"
           "\n"
           "Options:\n", out);
     print_options(out, sweep_options, sweep_option_count);
@@ -265,23 +279,8 @@ static int heights_from_inputs(const triangulation *tri, double *heights, cli_er
     return 1;
 }
 
-/* The largest bounding-box diagonal of the inputs: the default total height,
- * so that a sweep of sections hundreds of units wide is not flat. */
-static double section_size(const triangulation *tri)
-{
-    double size = 0;
-    for (size_t g = 0; g < tri->args->input_count; g++) {
-        const polygon_input *p = &tri->polygons[g];
-        double lo[2] = {p->xy[0], p->xy[1]}, hi[2] = {p->xy[0], p->xy[1]};
-        for (size_t i = 1; i < p->count; i++)
-            for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], p->xy[2 * i + c]), hi[c] = fmax(hi[c], p->xy[2 * i + c]);
-        size = fmax(size, hypot(hi[0] - lo[0], hi[1] - lo[1]));
-    }
-    return size > 0 && isfinite(size) ? size : 1.0;
-}
-
 static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morph **morph,
-                       cm_sweep **sweep, cli_error *error)
+                       cm_sweep **sweep, const char **height_rule, cli_error *error)
 {
     size_t k = args->tri.input_count;
     double *own = malloc(k * sizeof *own);
@@ -294,16 +293,19 @@ static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morp
     options.sections = args->sections;
     options.tets = args->tets;
     options.progress = cli_progress;
-    if (args->height > 0) options.height = args->height;
-    if (args->heights) options.heights = args->heights;
+    /* options.height stays 0 unless given: the core's default, the largest
+     * bounding-box diagonal of the sections. */
+    *height_rule = "the largest bounding-box diagonal of the sections (default), so prisms are about as tall "
+                   "as the sections are wide";
+    if (args->height > 0) options.height = args->height, *height_rule = "given by --height";
+    if (args->heights) options.heights = args->heights, *height_rule = "given by --heights";
     else if (args->height <= 0) {
         int found = heights_from_inputs(tri, own, error);
         if (found < 0) {
             free(own);
             return CLI_EXIT_USAGE;
         }
-        if (found) options.heights = own;
-        else options.height = section_size(tri); /* prisms about as tall as the sections are wide */
+        if (found) options.heights = own, *height_rule = "the inputs' own z";
     }
     cm_morph_options morph_options;
     cm_morph_options_init(&morph_options);
@@ -325,11 +327,13 @@ static int sweep(const sweep_args *args, cli_error *error)
     triangulation tri = {0};
     cm_morph *morph = NULL;
     cm_sweep *sweep = NULL;
+    const char *height_rule = "";
     int code = check_output(args->output, error);
+    if (code == CLI_EXIT_OK && args->report) code = check_output(args->report, error);
     if (code == CLI_EXIT_OK)
         code = refuse_input_as_output(args->output, args->tri.inputs, args->tri.input_count, error);
     if (code == CLI_EXIT_OK) code = triangulation_run(&tri, &args->tri, error);
-    if (code == CLI_EXIT_OK) code = build_sweep(args, &tri, &morph, &sweep, error);
+    if (code == CLI_EXIT_OK) code = build_sweep(args, &tri, &morph, &sweep, &height_rule, error);
     if (code == CLI_EXIT_OK && interrupted) {
         cli_error_set(error, "interrupted; nothing written");
         code = CLI_EXIT_INTERRUPTED;
@@ -347,6 +351,22 @@ static int sweep(const sweep_args *args, cli_error *error)
             printf("wrote %s (%zu sections, %zu nodes, %zu %s, %s)\n", args->output,
                    cm_sweep_num_sections(sweep), mesh.num_nodes, mesh.num_cells,
                    args->tets ? "tetrahedra" : "prisms", volume_text);
+        cm_sweep_quality quality;
+        cm_sweep_get_quality(sweep, &quality);
+        char warning[256] = "";
+        if (code == CLI_EXIT_OK && quality.flat_prisms > 0) {
+            snprintf(warning, sizeof warning,
+                     "%zu of %zu prisms are flatter than 1:%g (a triangle edge %.3g times the prism's height); "
+                     "their tetrahedra have small dihedral angles: give a larger --height or fewer --sections",
+                     quality.flat_prisms, cm_sweep_num_prisms(sweep), CM_SWEEP_FLAT_RATIO, quality.max_flatness);
+            fprintf(stderr, "compatmesh: sweep: warning: %s\n", warning);
+        }
+        if (code == CLI_EXIT_OK && args->report) {
+            sweep_report_info info = {tri.result, sweep, args->tri.method_name, (const char *const *)args->tri.inputs,
+                                      args->output, args->tets, height_rule, warning[0] ? warning : NULL};
+            code = write_sweep_report(args->report, &info, error);
+            if (code == CLI_EXIT_OK) printf("wrote %s\n", args->report);
+        }
     }
     cm_sweep_free(sweep);
     cm_morph_free(morph);

@@ -163,3 +163,48 @@ int write_morph_report(const char *path, const morph_report_info *info, cli_erro
     fputs("  ]\n}\n", file);
     return output_close(file, path, error);
 }
+
+int write_sweep_report(const char *path, const sweep_report_info *info, cli_error *error)
+{
+    FILE *file = output_open(path, error);
+    if (!file) return CLI_EXIT_INTERNAL;
+    const cm_stats *stats = cm_result_stats(info->result);
+    const cm_sweep *sweep = info->sweep;
+    write_head(file, stats);
+    fputs("  \"method\": ", file);
+    json_string(file, info->method);
+    fputs(",\n  \"inputs\": [", file);
+    for (size_t g = 0; g < stats->k; g++) {
+        json_string(file, info->inputs[g]);
+        fputs(g + 1 < stats->k ? ", " : "],\n", file);
+    }
+    fputs("  \"output\": ", file);
+    json_string(file, info->output);
+    fprintf(file, ",\n  \"sections\": %zu,\n  \"nodes\": %zu,\n  \"cells\": %zu,\n  \"cell_type\": \"%s\",\n",
+            cm_sweep_num_sections(sweep), cm_sweep_num_nodes(sweep),
+            info->tets ? cm_sweep_num_tets(sweep) : cm_sweep_num_prisms(sweep), info->tets ? "tetrahedron" : "prism");
+    json_field(file, "  ", "volume", cm_sweep_volume(sweep));
+    fputs(",\n  \"height\": {", file);
+    json_field(file, "", "value", cm_sweep_height(sweep));
+    fputs(", \"rule\": ", file);
+    json_string(file, info->height_rule);
+    fputs("},\n", file);
+    cm_sweep_quality q;
+    cm_sweep_get_quality(sweep, &q);
+    fputs("  \"quality\": {", file);
+    json_field(file, "", "min_dihedral_deg", q.min_dihedral_deg);
+    json_field(file, ", ", "max_dihedral_deg", q.max_dihedral_deg);
+    json_field(file, ", ", "min_scaled_jacobian", q.min_scaled_jacobian);
+    json_field(file, ", ", "max_aspect_ratio", q.max_aspect_ratio);
+    fputs(", \"aspect_ratio_measure\": ", file);
+    json_string(file, info->tets ? "longest edge / (2 sqrt(6) inradius), 1 for the regular tetrahedron"
+                                 : "longest edge / shortest edge");
+    fputs(",\n              ", file);
+    json_field(file, "", "max_prism_flatness", q.max_flatness);
+    json_field(file, ", ", "flat_ratio", CM_SWEEP_FLAT_RATIO);
+    fprintf(file, ", \"flat_prisms\": %zu},\n", q.flat_prisms);
+    fputs("  \"warnings\": [", file);
+    if (info->warning) json_string(file, info->warning);
+    fputs("]\n}\n", file);
+    return output_close(file, path, error);
+}

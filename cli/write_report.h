@@ -40,4 +40,19 @@ typedef struct morph_report_info {
 
 int write_morph_report(const char *path, const morph_report_info *info, cli_error *error);
 
+/* The sweep's report: the triangulation's counts, the volume mesh's counts,
+ * its height and why, the shape of its cells and the warnings printed. */
+typedef struct sweep_report_info {
+    const cm_result *result;
+    const cm_sweep *sweep;
+    const char *method;         /* triangulation method */
+    const char *const *inputs;  /* k input paths */
+    const char *output;         /* the volume mesh file */
+    int tets;
+    const char *height_rule;    /* why this height, in words */
+    const char *warning;        /* NULL, or the warning printed */
+} sweep_report_info;
+
+int write_sweep_report(const char *path, const sweep_report_info *info, cli_error *error);
+
 #endif

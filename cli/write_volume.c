@@ -11,14 +11,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "interrupt.h"
+#include "write_vtu.h"
+
 #ifdef CM_HAVE_GMSH
 #include <dlfcn.h>
 #include <gmshc.h>
-
-#include "interrupt.h"
 #endif
 
-static const char *const extensions[] = {"msh", "vtk", "inp", "bdf", "unv"};
+static const char *const extensions[] = {"msh", "vtk", "vtu", "inp", "bdf", "unv"};
 
 static const char *extension_of(const char *path)
 {
@@ -39,12 +40,12 @@ int volume_extension_known(const char *path)
 
 int volume_writer_available(void) { return 0; }
 
-int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
-                 cli_error *error)
+static int write_with_gmsh(const char *temporary, const char *path, const volume_mesh *mesh,
+                           double msh_version, cli_error *error)
 {
-    (void)mesh, (void)msh_version;
+    (void)temporary, (void)mesh, (void)msh_version;
     cli_error_set(error, "cannot write %s: this compatmesh was built without Gmsh "
-                  "(libgmsh-dev, CMake option CM_WITH_GMSH)", path);
+                  "(libgmsh-dev, CMake option CM_WITH_GMSH); .vtu needs no Gmsh", path);
     return CLI_EXIT_INTERNAL;
 }
 
@@ -55,20 +56,16 @@ int volume_writer_available(void) { return 1; }
 /* Gmsh is loaded when a volume is written, not at start: it brings about a
  * hundred shared libraries (OpenCascade, FLTK, GL) that would cost every
  * other command 0.09 s and 39 MB before any work. */
+#define GMSH_FUNCTIONS(X)                                                                        \
+    X(Initialize) X(Finalize) X(Free) X(LoggerGetLastError) X(ModelAdd) X(ModelAddDiscreteEntity)  \
+    X(ModelAddPhysicalGroup) X(ModelMeshAddElementsByType) X(ModelMeshAddNodes)                   \
+    X(ModelSetPhysicalName) X(OptionSetNumber) X(Write)
+
 static struct {
     void *library;
-    __typeof__(gmshInitialize) *Initialize;
-    __typeof__(gmshFinalize) *Finalize;
-    __typeof__(gmshFree) *Free;
-    __typeof__(gmshLoggerGetLastError) *LoggerGetLastError;
-    __typeof__(gmshModelAdd) *ModelAdd;
-    __typeof__(gmshModelAddDiscreteEntity) *ModelAddDiscreteEntity;
-    __typeof__(gmshModelAddPhysicalGroup) *ModelAddPhysicalGroup;
-    __typeof__(gmshModelMeshAddElementsByType) *ModelMeshAddElementsByType;
-    __typeof__(gmshModelMeshAddNodes) *ModelMeshAddNodes;
-    __typeof__(gmshModelSetPhysicalName) *ModelSetPhysicalName;
-    __typeof__(gmshOptionSetNumber) *OptionSetNumber;
-    __typeof__(gmshWrite) *Write;
+#define GMSH_POINTER(name) __typeof__(gmsh##name) *name;
+    GMSH_FUNCTIONS(GMSH_POINTER)
+#undef GMSH_POINTER
 } gmsh;
 
 static int load_gmsh(const char *path, cli_error *error)
@@ -80,18 +77,9 @@ static int load_gmsh(const char *path, cli_error *error)
         return CLI_EXIT_INTERNAL;
     }
     struct { const char *name; void **slot; } symbols[] = {
-        {"gmshInitialize", (void **)&gmsh.Initialize},
-        {"gmshFinalize", (void **)&gmsh.Finalize},
-        {"gmshFree", (void **)&gmsh.Free},
-        {"gmshLoggerGetLastError", (void **)&gmsh.LoggerGetLastError},
-        {"gmshModelAdd", (void **)&gmsh.ModelAdd},
-        {"gmshModelAddDiscreteEntity", (void **)&gmsh.ModelAddDiscreteEntity},
-        {"gmshModelAddPhysicalGroup", (void **)&gmsh.ModelAddPhysicalGroup},
-        {"gmshModelMeshAddElementsByType", (void **)&gmsh.ModelMeshAddElementsByType},
-        {"gmshModelMeshAddNodes", (void **)&gmsh.ModelMeshAddNodes},
-        {"gmshModelSetPhysicalName", (void **)&gmsh.ModelSetPhysicalName},
-        {"gmshOptionSetNumber", (void **)&gmsh.OptionSetNumber},
-        {"gmshWrite", (void **)&gmsh.Write},
+#define GMSH_SYMBOL(name) {"gmsh" #name, (void **)&gmsh.name},
+        GMSH_FUNCTIONS(GMSH_SYMBOL)
+#undef GMSH_SYMBOL
     };
     for (size_t i = 0; i < sizeof symbols / sizeof symbols[0]; i++) {
         *symbols[i].slot = dlsym(library, symbols[i].name);
@@ -104,7 +92,6 @@ static int load_gmsh(const char *path, cli_error *error)
     gmsh.library = library;
     return CLI_EXIT_OK;
 }
-
 
 /* Gmsh's last error, or a generic note when it recorded none. */
 static void gmsh_failure(const char *path, const char *what, cli_error *error)
@@ -155,6 +142,38 @@ done:
     free(cell_nodes);
     return code;
 }
+
+/* Writes mesh to temporary through Gmsh, the format by its extension. */
+static int write_with_gmsh(const char *temporary, const char *path, const volume_mesh *mesh,
+                           double msh_version, cli_error *error)
+{
+    if (load_gmsh(path, error) != CLI_EXIT_OK) return CLI_EXIT_INTERNAL;
+    int ierr = 0;
+    gmsh.Initialize(0, NULL, 0, &ierr);
+    if (ierr) {
+        gmsh_failure(path, "start", error);
+        return CLI_EXIT_INTERNAL;
+    }
+    catch_interrupts(); /* Gmsh may install its own handlers; ours leave no file */
+    gmsh.OptionSetNumber("General.Terminal", 0, &ierr);
+    gmsh.OptionSetNumber("Mesh.MshFileVersion", msh_version, &ierr);
+    gmsh.OptionSetNumber("Mesh.Binary", 0, &ierr);
+    /* Nastran: large fields (16 characters), else coordinates lose digits. */
+    gmsh.OptionSetNumber("Mesh.BdfFieldFormat", 2, &ierr);
+    int code = add_mesh(mesh, error, path);
+    if (code == CLI_EXIT_OK) {
+        gmsh.Write(temporary, &ierr);
+        if (ierr) {
+            gmsh_failure(path, "write the file", error);
+            code = CLI_EXIT_INTERNAL;
+        }
+    }
+    gmsh.Finalize(&ierr);
+    catch_interrupts();
+    return code;
+}
+
+#endif
 
 /* "dir/name.EXT" -> "dir/.name.compatmesh-XXXXXX.ext", created empty (so
  * the name is ours) in the target's directory, so rename is atomic. */
@@ -226,38 +245,15 @@ static int add_begin_bulk(const char *temporary, const char *path, cli_error *er
 int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
                  cli_error *error)
 {
-    if (load_gmsh(path, error) != CLI_EXIT_OK) return CLI_EXIT_INTERNAL;
     writing_output = 1; /* the temporary file exists until the rename */
     char *temporary = make_temporary(path, error);
     if (!temporary) {
         writing_output = 0;
         return CLI_EXIT_INTERNAL;
     }
-    int ierr = 0;
-    gmsh.Initialize(0, NULL, 0, &ierr);
-    if (ierr) {
-        gmsh_failure(path, "start", error);
-        unlink(temporary);
-        free(temporary);
-        return CLI_EXIT_INTERNAL;
-    }
-    catch_interrupts(); /* Gmsh may install its own handlers; ours leave no file */
-    gmsh.OptionSetNumber("General.Terminal", 0, &ierr);
-    gmsh.OptionSetNumber("Mesh.MshFileVersion", msh_version, &ierr);
-    gmsh.OptionSetNumber("Mesh.Binary", 0, &ierr);
-    /* Nastran: large fields (16 characters), else coordinates lose digits. */
-    gmsh.OptionSetNumber("Mesh.BdfFieldFormat", 2, &ierr);
-    int code = add_mesh(mesh, error, path);
-    if (code == CLI_EXIT_OK) {
-        gmsh.Write(temporary, &ierr);
-        if (ierr) {
-            gmsh_failure(path, "write the file", error);
-            code = CLI_EXIT_INTERNAL;
-        }
-    }
-    gmsh.Finalize(&ierr);
-    catch_interrupts();
     const char *extension = extension_of(path);
+    int code = strcasecmp(extension, "vtu") == 0 ? write_vtu(temporary, path, mesh, error)
+                                                 : write_with_gmsh(temporary, path, mesh, msh_version, error);
     if (code == CLI_EXIT_OK && strcasecmp(extension, "bdf") == 0) code = add_begin_bulk(temporary, path, error);
     if (code == CLI_EXIT_OK && interrupted) {
         cli_error_set(error, "interrupted; nothing written");
@@ -272,5 +268,3 @@ int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
     free(temporary);
     return code;
 }
-
-#endif

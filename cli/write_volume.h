@@ -1,7 +1,7 @@
 /* Writing the sweep's volume mesh as a finite-element file through Gmsh's
- * C API, the format chosen by the file name's extension. This file is the
- * only one that touches Gmsh, whose state is global: each write
- * initialises and finalises it. */
+ * C API (.vtu by write_vtu.c), the format chosen by the file name's
+ * extension. This file is the only one that touches Gmsh, whose state is
+ * global: each write initialises and finalises it. */
 #ifndef CM_CLI_WRITE_VOLUME_H
 #define CM_CLI_WRITE_VOLUME_H
 
@@ -11,7 +11,7 @@
 #include "cli_common.h"
 
 /* The extensions Gmsh writes for us, lower case, without the dot. */
-#define VOLUME_EXTENSIONS "msh, vtk, inp (Abaqus), bdf (Nastran), unv"
+#define VOLUME_EXTENSIONS "msh, vtk, vtu, inp (Abaqus), bdf (Nastran), unv"
 
 /* Returns 0 if path ends in one of VOLUME_EXTENSIONS (any case), else -1. */
 int volume_extension_known(const char *path);

@@ -585,7 +585,11 @@ py::dict sweep(py::object polygons_in, py::object sections, py::object height, p
     throw py::value_error("sweep: sections must be at most " + std::to_string(kMaxSections) + ", got " +
                           std::to_string(options.sections));
   options.tets = tets ? 1 : 0;
-  if (!height.is_none()) options.height = number_from<double>(height, "height");
+  if (!height.is_none()) {
+    options.height = number_from<double>(height, "height");
+    // 0 would ask the core for its default height: a given height must be positive.
+    if (!(options.height > 0)) throw py::value_error("sweep: height must be positive, got " + py::str(height).cast<std::string>());
+  }
   std::vector<double> z;
   if (!heights.is_none()) {
     if (!height.is_none()) throw py::type_error("sweep() takes height or heights, not both");
@@ -602,16 +606,7 @@ py::dict sweep(py::object polygons_in, py::object sections, py::object height, p
       throw py::value_error("sweep: heights has " + std::to_string(z.size()) + " values for " +
                             std::to_string(polygons.size()) + " polygons");
     options.heights = z.data();
-  } else if (height.is_none()) {  // as tall as the polygons are wide, as on the command line
-    double size = 0;
-    for (const Polygon &p : polygons) {
-      double lo[2] = {p.xy[0], p.xy[1]}, hi[2] = {p.xy[0], p.xy[1]};
-      for (std::size_t i = 0; i < p.size(); i++)
-        for (int c = 0; c < 2; c++) lo[c] = std::min(lo[c], p.xy[2 * i + c]), hi[c] = std::max(hi[c], p.xy[2 * i + c]);
-      size = std::max(size, std::hypot(hi[0] - lo[0], hi[1] - lo[1]));
-    }
-    if (size > 0 && std::isfinite(size)) options.height = size;
-  }
+  }  // else the core's default height: the largest bounding-box diagonal
   ProgressRelay relay(python_progress(callbacks.progress));
   MorphPtr m = make_morph(result.get(), CM_MORPH_CONVEX, relay);
   relay.attach(options);
@@ -631,6 +626,18 @@ py::dict sweep(py::object polygons_in, py::object sections, py::object height, p
   out["tets"] = copy_array(cm_sweep_tets(w.get()), cm_sweep_num_tets(w.get()), 4);
   out["section_z"] = copy_array(cm_sweep_section_z(w.get()), cm_sweep_num_sections(w.get()), 1);
   out["volume"] = cm_sweep_volume(w.get());
+  out["height"] = cm_sweep_height(w.get());
+  out["height_is_default"] = cm_sweep_height_is_default(w.get()) != 0;
+  cm_sweep_quality q;
+  cm_sweep_get_quality(w.get(), &q);
+  py::dict quality;
+  quality["min_dihedral_deg"] = q.min_dihedral_deg;
+  quality["max_dihedral_deg"] = q.max_dihedral_deg;
+  quality["min_scaled_jacobian"] = q.min_scaled_jacobian;
+  quality["max_aspect_ratio"] = q.max_aspect_ratio;
+  quality["max_prism_flatness"] = q.max_flatness;
+  quality["flat_prisms"] = q.flat_prisms;
+  out["quality"] = quality;
   return out;
 }
 
@@ -762,6 +769,10 @@ tetrahedra with conforming faces. Keyword options as for triangulate().
 Returns a dict: nodes (N x 3; node s * nv + v is vertex v of section s),
 prisms (P x 6 int32, Gmsh wedge order: bottom counter-clockwise seen from +z,
 then top), tets (T x 4 int32, positive volume; 0 x 4 unless tets),
-section_z, volume (the prisms' total). Bad arguments raise ValueError with
+section_z, volume (the prisms' total), height (first to last section) and
+height_is_default, quality (a dict for the tetrahedra if tets, else the
+prisms: min_dihedral_deg, max_dihedral_deg, min_scaled_jacobian,
+max_aspect_ratio, max_prism_flatness = longest triangle edge / prism height,
+flat_prisms = prisms flatter than 1:10). Bad arguments raise ValueError with
 the core's message.)doc");
 }

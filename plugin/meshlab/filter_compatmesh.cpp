@@ -1,7 +1,10 @@
 #include "filter_compatmesh.h"
 
 #include "compatible_pair.h"
+#include "default_layers.h"
 #include "sweep.h"
+
+#include <vector>
 
 namespace {
 
@@ -71,13 +74,23 @@ MeshFilterInterface::FilterClass FilterCompatMesh::getClass(QAction *)
 void FilterCompatMesh::initParameterSet(QAction *action, MeshDocument &md, RichParameterList &par)
 {
   // The second layer defaults to the first one that is not current.
-  MeshModel *other = md.mm();
+  MeshModel *first = md.mm(), *other = md.mm();
   for (MeshModel *m : md.meshList)
     if (m != md.mm()) {
       other = m;
       break;
     }
-  par.addParam(RichMesh("FirstMesh", md.mm(), &md, "First boundary", "Layer with the first closed boundary"));
+  // The sweep defaults to the newest layer with faces and the newest older
+  // one with as many vertices and faces: the pair the triangulation filter
+  // has just added, in its order.
+  if (ID(action) == FP_COMPATIBLE_SWEEP) {
+    std::vector<MeshModel *> all(md.meshList.begin(), md.meshList.end());
+    std::vector<compatmesh_plugin::LayerCounts> counts;
+    for (MeshModel *m : all) counts.push_back({m->cm.vn, m->cm.fn});
+    std::size_t i = 0, j = 0;
+    if (compatmesh_plugin::newest_compatible_pair(counts, i, j)) first = all[i], other = all[j];
+  }
+  par.addParam(RichMesh("FirstMesh", first, &md, "First boundary", "Layer with the first closed boundary"));
   par.addParam(RichMesh("SecondMesh", other, &md, "Second boundary", "Layer with the second closed boundary"));
   switch (ID(action)) {
     case FP_COMPATIBLE_TRIANGULATION:

@@ -199,11 +199,31 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
   LayerData lateral;
   lateral.label = "lateral surface";
   for (const std::vector<float> &ring : levels) lateral.xyz.insert(lateral.xyz.end(), ring.begin(), ring.end());
+  // Outward whatever the layers' order and the loop's direction: over a
+  // closed surface the flux of x - centre (taken per level, in the level's
+  // own plane) is twice the enclosed volume, so its sign over the lateral
+  // quads says which way they face.
+  double flux = 0;
+  for (std::size_t s = 0; s + 1 < levels.size(); s++) {
+    const std::vector<float> &ring = levels[s];
+    double centre[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < n; i++)
+      for (int c = 0; c < 3; c++) centre[c] += ring[3 * i + c] / double(n);
+    for (std::size_t i = 0; i < n; i++) {
+      const float *a = &ring[3 * i], *b = &ring[3 * ((i + 1) % n)], *d = &levels[s + 1][3 * i];
+      double u[3], v[3];
+      for (int c = 0; c < 3; c++) u[c] = double(b[c]) - a[c], v[c] = double(d[c]) - a[c];
+      const double normal[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      for (int c = 0; c < 3; c++) flux += normal[c] * (0.5 * (double(a[c]) + b[c]) - centre[c]);
+    }
+  }
+  const bool outward = flux >= 0;
   for (std::size_t s = 0; s + 1 < levels.size(); s++)
     for (std::size_t i = 0; i < n; i++) {
       int32_t a = int32_t(s * n + i), b = int32_t(s * n + (i + 1) % n);
       int32_t c = b + int32_t(n), d = a + int32_t(n);
-      lateral.triangles.insert(lateral.triangles.end(), {a, b, c, a, c, d});
+      if (outward) lateral.triangles.insert(lateral.triangles.end(), {a, b, c, a, c, d});
+      else lateral.triangles.insert(lateral.triangles.end(), {a, c, b, a, d, c});
     }
   outcome.layers.push_back(std::move(lateral));
   progress.report(1.0, "done");

@@ -141,6 +141,79 @@ done:
     cm_result_free(r);
 }
 
+/* Without height or heights the sweep is as tall as the largest bounding-box
+ * diagonal of the geometries and says so; the quality figures describe the
+ * tetrahedra (recomputed here from the nodes). */
+static void test_default_height_and_quality(void)
+{
+    cm_result *r = fixture_result(FIX_GLYPH, N);
+    cm_morph *m = NULL;
+    CHECK(r && cm_morph_create(r, NULL, &m) == CM_OK);
+    if (!m) goto done;
+    double diagonal = 0;
+    for (size_t g = 0; g < cm_result_num_geometries(r); g++) {
+        const double *xy = cm_result_vertices(r, g);
+        double lo[2] = {xy[0], xy[1]}, hi[2] = {xy[0], xy[1]};
+        for (size_t v = 0; v < cm_result_num_vertices(r); v++)
+            for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], xy[2 * v + c]), hi[c] = fmax(hi[c], xy[2 * v + c]);
+        diagonal = fmax(diagonal, hypot(hi[0] - lo[0], hi[1] - lo[1]));
+    }
+    cm_sweep_options o;
+    cm_sweep_options_init(&o);
+    CHECK(o.height == 0);
+    o.tets = 1;
+    cm_sweep *w = NULL;
+    CHECK_MSG(cm_sweep_create(m, &o, &w) == CM_OK, "%s", cm_sweep_message(w));
+    CHECK(cm_sweep_height_is_default(w) && cm_sweep_height(w) == diagonal);
+    cm_sweep_quality q;
+    cm_sweep_get_quality(w, &q);
+    /* Where validity needed many inserted sections some layers are thin, so
+     * only the figures' consistency is asserted here; the sliver bound is
+     * tested on the command line's default sweep. */
+    double least = 180;
+    const double *nodes = cm_sweep_nodes(w);
+    for (size_t t = 0; t < cm_sweep_num_tets(w); t++) {
+        const int32_t *c = cm_sweep_tets(w) + 4 * t;
+        for (int i = 0; i < 4; i++)
+            for (int j = i + 1; j < 4; j++) {
+                int k = 0, l;
+                while (k == i || k == j) k++;
+                l = 6 - i - j - k;
+                double e[3], u[3], v[3], n1[3], n2[3], n[3];
+                for (int x = 0; x < 3; x++)
+                    e[x] = nodes[3 * c[j] + x] - nodes[3 * c[i] + x], u[x] = nodes[3 * c[k] + x] - nodes[3 * c[i] + x],
+                    v[x] = nodes[3 * c[l] + x] - nodes[3 * c[i] + x];
+                for (int x = 0; x < 3; x++) {
+                    int y = (x + 1) % 3, z = (x + 2) % 3;
+                    n1[x] = e[y] * u[z] - e[z] * u[y], n2[x] = e[y] * v[z] - e[z] * v[y];
+                }
+                for (int x = 0; x < 3; x++) n[x] = n1[(x + 1) % 3] * n2[(x + 2) % 3] - n1[(x + 2) % 3] * n2[(x + 1) % 3];
+                double angle = atan2(sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2]);
+                least = fmin(least, angle * 180 / 3.14159265358979323846);
+            }
+    }
+    CHECK_MSG(fabs(q.min_dihedral_deg - least) < 1e-9, "reported %.12g, recomputed %.12g", q.min_dihedral_deg, least);
+    CHECK_MSG(q.min_dihedral_deg > 0 && q.max_dihedral_deg < 180 && q.min_scaled_jacobian > 0 &&
+              q.max_aspect_ratio >= 1 && q.max_flatness > 0,
+              "dihedral %g..%g, scaled Jacobian %g, aspect %g, flatness %g (%zu flat)", q.min_dihedral_deg,
+              q.max_dihedral_deg, q.min_scaled_jacobian, q.max_aspect_ratio, q.max_flatness, q.flat_prisms);
+    printf("glyph, default height %g: dihedral %.2f..%.2f deg, scaled Jacobian %.3f, aspect %.2f, flatness %.2f\n",
+           cm_sweep_height(w), q.min_dihedral_deg, q.max_dihedral_deg, q.min_scaled_jacobian, q.max_aspect_ratio,
+           q.max_flatness);
+    cm_sweep_free(w);
+    /* A given height is used as given; a very flat one is counted as flat. */
+    size_t flat_before = q.flat_prisms;
+    o.height = 1e-3 * diagonal;
+    CHECK(cm_sweep_create(m, &o, &w) == CM_OK && !cm_sweep_height_is_default(w) && cm_sweep_height(w) == o.height);
+    cm_sweep_get_quality(w, &q);
+    CHECK_MSG(q.flat_prisms > flat_before && q.max_flatness > CM_SWEEP_FLAT_RATIO, "%zu flat prisms, flatness %g", q.flat_prisms,
+              q.max_flatness);
+    cm_sweep_free(w);
+done:
+    cm_morph_free(m);
+    cm_result_free(r);
+}
+
 static int cancel_now(void *user, double fraction, const char *stage)
 {
     (void)user, (void)fraction, (void)stage;
@@ -167,11 +240,15 @@ static void test_failures(void)
     CHECK(cm_sweep_num_prisms(w) == 0 && cm_sweep_prisms(w) == NULL);
     cm_sweep_free(w);
 
-    o.max_refine = 0; /* the twisted pair with tets needs inserted sections */
-    o.tets = 1;
-    cm_status s = cm_sweep_create(m, &o, &w);
+    cm_result *spiral = fixture_result(FIX_SPIRAL, N);
+    cm_morph *ms = NULL;
+    CHECK(spiral && cm_morph_create(spiral, NULL, &ms) == CM_OK);
+    o.max_refine = 0; /* the spiral's prisms need an inserted section to stay valid */
+    cm_status s = cm_sweep_create(ms, &o, &w);
     CHECK_MSG(s == CM_ERR_INTERNAL && strstr(cm_sweep_message(w), "max_refine"), "%s", cm_sweep_message(w));
     cm_sweep_free(w);
+    cm_morph_free(ms);
+    cm_result_free(spiral);
 
     cm_sweep_options_init(&o);
     o.sections = 1;
@@ -208,6 +285,7 @@ int main(void)
     test_sweep(FIX_SPIRAL, NULL, 1, CM_MORPH_CONVEX);
     test_sweep(FIX_GLYPH, NULL, 1, CM_MORPH_CONVEX);
     test_sweep(FIX_THREE, three_heights, 1, CM_MORPH_CONVEX);
+    test_default_height_and_quality();
     test_sweep(FIX_SPIRAL, NULL, 1, CM_MORPH_INTRINSIC);
     test_sweep(FIX_THREE, three_heights, 1, CM_MORPH_INTRINSIC);
     test_failures();

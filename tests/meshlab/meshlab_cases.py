@@ -337,8 +337,39 @@ def case_sweep(w):
     assert worst >= 28.0, "smallest section angle %.2f" % worst
     lateral = meshio.read(os.path.join(w, "lateral.ply"))
     assert len(lateral.cells_dict["triangle"]) == 2 * 12 * 4, len(lateral.cells_dict["triangle"])
+    assert lateral_flux(os.path.join(w, "lateral.ply")) > 0, "lateral surface faces inward"
     print("sweep: 3 sections valid, smallest angle %.2f, lateral surface of %d triangles"
           % (worst, len(lateral.cells_dict["triangle"])))
+
+
+def lateral_flux(path):
+    """Flux of the horizontal field (x, y) through the lateral surface:
+    twice the swept volume when its triangles face outward (the caps, flat
+    and horizontal, carry none), minus that when they face inward."""
+    mesh = meshio.read(path)
+    p = mesh.points[mesh.cells_dict["triangle"]]
+    normal = 0.5 * np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    centroid = p.mean(axis=1)
+    return float(np.sum(normal[:, :2] * centroid[:, :2]))
+
+
+def case_sweep_reversed_layers(w):
+    # The upper layer first: the sections run downwards, and the lateral
+    # surface still faces outward.
+    a = star(12, 1.0, 0.7)
+    b = [(x, y, 2.0) for x, y, _ in star(12, 0.8, 0.5, phase=0.5, scale=(1.4, 0.7))]
+    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
+    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
+    script = script_with(w, "pair_and_sweep.mlx", [('value="2" name="FirstMesh"', 'value="3" name="FirstMesh"'),
+                                                    ('value="3" name="SecondMesh"', 'value="2" name="SecondMesh"')])
+    outs = {2: "pair_a.ply", 3: "pair_b.ply", 4: "s1.ply", 5: "s2.ply", 6: "s3.ply", 7: "lateral.ply"}
+    code, log = run(w, ["a.ply", "b.ply"], script, outs)
+    expect_ok(code, log)
+    _, _, ta = check_pair(w, "pair_a.ply", "pair_b.ply", a, b, 10.0)
+    check_sections(w, ta, 2.0, 0.0, 3)
+    flux = lateral_flux(os.path.join(w, "lateral.ply"))
+    assert flux > 0, "lateral surface faces inward (flux %g)" % flux
+    print("reversed sweep: lateral flux %.4f (outward)" % flux)
 
 
 def check_sections(w, ta, z0, z1, count):

@@ -149,3 +149,31 @@ def test_sweep_default_height_follows_the_size(twisted):
     s = compatmesh.sweep(big, sections=3)
     diagonal = max(np.hypot(*np.ptp(p, axis=0)) for p in big)
     assert s["nodes"][:, 2].min() == 0 and s["nodes"][:, 2].max() == pytest.approx(diagonal, rel=1e-15)
+    assert s["height"] == s["nodes"][:, 2].max() and s["height_is_default"]
+    given = compatmesh.sweep(big, sections=3, height=50.0)
+    assert given["height"] == 50.0 and not given["height_is_default"]
+
+
+def test_sweep_quality_matches_the_tetrahedra(twisted):
+    """The quality figures are those of the returned tetrahedra, recomputed
+    here: the smallest and largest dihedral angle and the scaled Jacobian
+    (6 V over the largest product of a corner's three edge lengths, times
+    sqrt 2)."""
+    s = compatmesh.sweep(twisted, tets=True)
+    p = s["nodes"][s["tets"]]
+    angles = []
+    for i, j, k, l in [(0, 1, 2, 3), (0, 2, 1, 3), (0, 3, 1, 2), (1, 2, 0, 3), (1, 3, 0, 2), (2, 3, 0, 1)]:
+        e = p[:, j] - p[:, i]
+        n1, n2 = np.cross(e, p[:, k] - p[:, i]), np.cross(e, p[:, l] - p[:, i])
+        angles.append(np.degrees(np.arctan2(np.linalg.norm(np.cross(n1, n2), axis=1),
+                                            np.einsum("ij,ij->i", n1, n2))))
+    angles = np.array(angles)
+    q = s["quality"]
+    assert q["min_dihedral_deg"] == pytest.approx(angles.min(), abs=1e-9)
+    assert q["max_dihedral_deg"] == pytest.approx(angles.max(), abs=1e-9)
+    six_volume = np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), p[:, 3] - p[:, 0])
+    length = lambda a, b: np.linalg.norm(p[:, a] - p[:, b], axis=1)
+    products = np.array([length(0, 1) * length(0, 2) * length(0, 3), length(1, 0) * length(1, 2) * length(1, 3),
+                         length(2, 0) * length(2, 1) * length(2, 3), length(3, 0) * length(3, 1) * length(3, 2)])
+    assert q["min_scaled_jacobian"] == pytest.approx((np.sqrt(2) * six_volume / products.max(axis=0)).min(), rel=1e-9)
+    assert q["min_dihedral_deg"] > 5 and q["flat_prisms"] == 0

@@ -406,7 +406,10 @@ typedef struct cm_sweep_options {
     /* Sections per segment between consecutive geometries, both ends
      * included, >= 2; default 11. */
     size_t sections;
-    double height;          /* total height, uniform spacing; > 0, default 1 */
+    /* Total height, inputs evenly spaced; > 0, or 0 (the default): the
+     * largest diagonal of the geometries' bounding boxes, so that prisms
+     * are about as tall as the sections are wide whatever their units. */
+    double height;
     /* Optional: one z per input geometry, strictly increasing; overrides
      * height. Only read during cm_sweep_create. */
     const double *heights;
@@ -444,13 +447,52 @@ CM_API const double *cm_sweep_nodes(const cm_sweep *sweep);
 CM_API size_t cm_sweep_num_prisms(const cm_sweep *sweep);
 CM_API const int32_t *cm_sweep_prisms(const cm_sweep *sweep);
 /* 4 node indices per tetrahedron, positive volume (checked exactly); 0 /
- * NULL unless options.tets. Every prism is split by the diagonal rule of
- * Dompierre et al. (by smallest global node index), so faces conform. */
+ * NULL unless options.tets. Prism p gives tetrahedra 3p .. 3p + 2. In each
+ * layer the diagonals of the quad faces follow an order of the triangle
+ * corners chosen per prism, acyclic around every triangle, so faces
+ * conform; among such orders the worst prisms (by the smallest dihedral
+ * angle they admit) choose first, looking one step ahead at the
+ * neighbours whose diagonals they force, then a local search (one diagonal,
+ * one prism's three, or all diagonals at one vertex) raises the worst. A
+ * layer is halved in morph time where a prism's split has a dihedral angle
+ * under half the smallest angle of its two triangles while the prism is at
+ * least half as tall as its longest triangle edge (a long morph step tilts
+ * or twists it; halving a flatter one would only flatten it), as long as no
+ * prism of the halved layer is flatter than 1:5, within max_refine. */
 CM_API size_t cm_sweep_num_tets(const cm_sweep *sweep);
 CM_API const int32_t *cm_sweep_tets(const cm_sweep *sweep);
 /* Sum of the prism volumes (equal to the integral of section areas);
  * HUGE_VAL when it is beyond the double range. */
 CM_API double cm_sweep_volume(const cm_sweep *sweep);
+/* The height from the first to the last section, and 1 if it was the
+ * default (options.height 0 without heights: the largest bounding-box
+ * diagonal of the geometries), else 0. */
+CM_API double cm_sweep_height(const cm_sweep *sweep);
+CM_API int cm_sweep_height_is_default(const cm_sweep *sweep);
+
+/* A prism is flat when its longest triangle edge (bottom or top) exceeds
+ * this many times its height: its tetrahedra have dihedral angles of a few
+ * degrees at best (about atan(height / edge)). */
+#define CM_SWEEP_FLAT_RATIO 10.0
+
+/* Shape of the volume's cells: the tetrahedra with options.tets, else the
+ * prisms (their corner planes: exact where the faces are planar). The
+ * measures are those of Verdict and Gmsh: scaled Jacobian 1 for the
+ * regular tetrahedron and the right prism on an equilateral triangle;
+ * aspect ratio longest edge / (2 sqrt 6 inradius) for a tetrahedron
+ * (1 when regular), longest / shortest edge for a prism. */
+typedef struct cm_sweep_quality {
+    double min_dihedral_deg, max_dihedral_deg;
+    double min_scaled_jacobian;
+    double max_aspect_ratio;
+    /* Over the prisms: the largest longest-triangle-edge / height, and how
+     * many exceed CM_SWEEP_FLAT_RATIO. */
+    double max_flatness;
+    size_t flat_prisms;
+} cm_sweep_quality;
+
+/* Fills quality (all zero for a failed sweep). */
+CM_API void cm_sweep_get_quality(const cm_sweep *sweep, cm_sweep_quality *quality);
 
 #ifdef __cplusplus
 }

@@ -12,14 +12,21 @@
 #include <string.h>
 
 #include "morph/morph.h"
+#include "morph/prism_split.h"
 #include "base/progress.h"
+#include "geom/angle.h"
 #include "geom/predicates.h"
+#include "morph/cell_shape.h"
 
 typedef struct section {
     size_t g;   /* segment between geometries g and g + 1 */
     double s;   /* local time in [0, 1] */
     double z;
     double *xy; /* 2 * nv */
+    /* With tets: the corner order of each triangle's prism up to the next
+     * section (prism_split.h), and the smallest dihedral angle it gives. */
+    unsigned char *split;
+    double worst_dihedral;
 } section;
 
 struct cm_sweep {
@@ -27,13 +34,15 @@ struct cm_sweep {
     size_t nv, ns, np, ntet;
     double *z, *nodes, volume;
     int32_t *prisms, *tets;
+    int default_height;
+    cm_sweep_quality quality;
 };
 
 void cm_sweep_options_init(cm_sweep_options *options)
 {
     memset(options, 0, sizeof *options);
     options->sections = 11;
-    options->height = 1.0;
+    options->height = 0.0;
     options->max_refine = 1000;
 }
 
@@ -48,16 +57,33 @@ static cm_status check_options(cm_sweep *w, const cm_morph *m, const cm_sweep_op
             if (!(o->heights[g + 1] > o->heights[g]))
                 return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: heights must increase strictly: heights[%zu] = %g, heights[%zu] = %g",
                             g, o->heights[g], g + 1, o->heights[g + 1]);
-    } else if (!(o->height > 0 && isfinite(o->height))) {
-        return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: height must be positive and finite, got %g", o->height);
+    } else if (!(o->height >= 0 && isfinite(o->height))) {
+        return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: height must be positive and finite (or 0 for the default), got %g",
+                       o->height);
     }
     return CM_OK;
 }
 
-/* Height of geometry g. */
-static double level(const cm_morph *m, const cm_sweep_options *o, size_t g)
+/* The largest bounding-box diagonal of the geometries (1 if they are all
+ * points or it overflows). */
+static double largest_diagonal(const cm_morph *m)
 {
-    return o->heights ? o->heights[g] : o->height * (double)g / (double)(m->k - 1);
+    const cm_mesh *mesh = &m->result->mesh;
+    double size = 0;
+    for (size_t g = 0; g < mesh->k && mesh->nv > 0; g++) {
+        const double *xy = mesh->xy[g];
+        double lo[2] = {xy[0], xy[1]}, hi[2] = {xy[0], xy[1]};
+        for (size_t i = 1; i < mesh->nv; i++)
+            for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], xy[2 * i + c]), hi[c] = fmax(hi[c], xy[2 * i + c]);
+        size = fmax(size, hypot(hi[0] - lo[0], hi[1] - lo[1]));
+    }
+    return size > 0 && isfinite(size) ? size : 1.0;
+}
+
+/* Height of geometry g for total height `height`. */
+static double level(const cm_morph *m, const cm_sweep_options *o, double height, size_t g)
+{
+    return o->heights ? o->heights[g] : height * (double)g / (double)(m->k - 1);
 }
 
 /* z0 + (z1 - z0) s, also where z1 - z0 overflows. */
@@ -86,28 +112,6 @@ static cm_status make_section(cm_sweep *w, cm_morph *m, section *sec)
     return CM_OK;
 }
 
-static const int prism_rotations[6][6] = {
-    {0, 1, 2, 3, 4, 5}, {1, 2, 0, 4, 5, 3}, {2, 0, 1, 5, 3, 4},
-    {3, 5, 4, 0, 2, 1}, {4, 3, 5, 1, 0, 2}, {5, 4, 3, 2, 1, 0},
-};
-
-/* Dompierre et al.: turn the prism so its smallest global index is
- * corner 0; the quad face opposite it is cut along the diagonal from its
- * own smallest index. Every face is cut by its smallest vertex, so
- * neighbouring prisms agree. Writes 3 tets (12 local corners). */
-static void split_prism(const int32_t v[6], int32_t out[12])
-{
-    int lo = 0;
-    for (int i = 1; i < 6; i++)
-        if (v[i] < v[lo]) lo = i;
-    int32_t w[6];
-    for (int i = 0; i < 6; i++) w[i] = v[prism_rotations[lo][i]];
-    int32_t a = w[1] < w[5] ? w[1] : w[5], b = w[2] < w[4] ? w[2] : w[4];
-    const int32_t first[12] = {w[0], w[1], w[2], w[5], w[0], w[1], w[5], w[4], w[0], w[4], w[5], w[3]};
-    const int32_t second[12] = {w[0], w[1], w[2], w[4], w[0], w[4], w[2], w[5], w[0], w[4], w[5], w[3]};
-    memcpy(out, a < b ? first : second, sizeof first);
-}
-
 static void node_xyz(const section *sec, int32_t local, size_t nv, double p[3])
 {
     const section *x = sec + (local >= (int32_t)nv);
@@ -115,35 +119,96 @@ static void node_xyz(const section *sec, int32_t local, size_t nv, double p[3])
     p[0] = x->xy[2 * v], p[1] = x->xy[2 * v + 1], p[2] = x->z;
 }
 
-/* First triangle whose prism between sections lo and lo + 1 is invalid
- * (blend or, with tets, a tetrahedron not positive), or -1. */
-static long first_invalid(const cm_morph *m, const section *lo, int tets)
+/* x y z of every vertex of a section, for the split's shape measures. */
+static void section_xyz(const section *sec, size_t nv, double *xyz)
 {
+    for (size_t v = 0; v < nv; v++)
+        xyz[3 * v] = sec->xy[2 * v], xyz[3 * v + 1] = sec->xy[2 * v + 1], xyz[3 * v + 2] = sec->z;
+}
+
+/* What splits the layers into tetrahedra: the mesh's edges and two
+ * sections' coordinates. */
+typedef struct layer_splitter {
+    cm_prism_split split;
+    double *bottom, *top; /* 3 * nv */
+} layer_splitter;
+
+/* Longest edge of triangle c in section sec. */
+static double longest_edge(const section *sec, const int32_t *c)
+{
+    double longest = 0;
+    for (int i = 0; i < 3; i++) {
+        const double *a = sec->xy + 2 * (size_t)c[i], *b = sec->xy + 2 * (size_t)c[(i + 1) % 3];
+        longest = fmax(longest, hypot(b[0] - a[0], b[1] - a[1]));
+    }
+    return longest;
+}
+
+/* The split of triangle t's prism between lo and lo + 1 is poor: a dihedral
+ * angle under half the smallest angle of its two triangles (a right prism
+ * of them would reach that angle), while the prism is at least half as
+ * tall as its longest triangle edge. Such a prism is tilted or twisted by a
+ * long morph step, which a shorter step straightens; a flatter one would
+ * only get flatter. */
+static int poorly_split(const section *lo, const int32_t *c, double split_deg)
+{
+    double allowed = fmin(cm_triangle_min_angle(lo[0].xy + 2 * (size_t)c[0], lo[0].xy + 2 * (size_t)c[1], lo[0].xy + 2 * (size_t)c[2]),
+                          cm_triangle_min_angle(lo[1].xy + 2 * (size_t)c[0], lo[1].xy + 2 * (size_t)c[1], lo[1].xy + 2 * (size_t)c[2]));
+    if (!(split_deg < 0.5 * allowed * 180 / CM_PI)) return 0;
+    return lo[1].z - lo[0].z >= 0.5 * fmax(longest_edge(lo, c), longest_edge(lo + 1, c));
+}
+
+/* Checks the prisms between sections lo and lo + 1: *bad is the first
+ * triangle whose prism is invalid (blend or, with a splitter, a
+ * tetrahedron of its chosen split not positive), or -1; *poor the first
+ * whose split is poor (poorly_split), or -1. With a splitter, lo->split
+ * and lo->worst_dihedral are (re)computed. */
+static cm_status check_layer(cm_sweep *w, const cm_morph *m, section *lo, layer_splitter *splitter, long *bad,
+                             long *poor)
+{
+    *poor = -1;
+    double flattest = 0; /* longest triangle edge of the layer */
     const int32_t *tri = m->result->mesh.tri;
     size_t nv = m->nv;
+    *bad = -1;
+    if (splitter) {
+        if (!lo->split && !(lo->split = malloc(m->nt + 1))) return cm_fail_status(&w->error, CM_ERR_NO_MEMORY);
+        section_xyz(lo, nv, splitter->bottom), section_xyz(lo + 1, nv, splitter->top);
+        lo->worst_dihedral = cm_prism_split_choose(&splitter->split, splitter->bottom, splitter->top, lo->split);
+    }
     for (size_t t = 0; t < m->nt; t++) {
         const int32_t *c = tri + 3 * t;
         const double *p0 = lo[0].xy, *p1 = lo[1].xy;
         if (!cm_blend_positive(p0 + 2 * (size_t)c[0], p0 + 2 * (size_t)c[1], p0 + 2 * (size_t)c[2],
-                               p1 + 2 * (size_t)c[0], p1 + 2 * (size_t)c[1], p1 + 2 * (size_t)c[2]))
-            return (long)t;
-        if (!tets) continue;
+                               p1 + 2 * (size_t)c[0], p1 + 2 * (size_t)c[1], p1 + 2 * (size_t)c[2])) {
+            *bad = (long)t;
+            return CM_OK;
+        }
+        if (!splitter) continue;
+        if (*poor < 0 && poorly_split(lo, c, splitter->split.score[6 * t + lo->split[t]])) *poor = (long)t;
+        flattest = fmax(flattest, fmax(longest_edge(lo, c), longest_edge(lo + 1, c)));
         int32_t v[6] = {c[0], c[1], c[2], c[0] + (int32_t)nv, c[1] + (int32_t)nv, c[2] + (int32_t)nv}, q[12];
-        split_prism(v, q);
+        cm_prism_split_tets(v, lo->split[t], q);
         for (int j = 0; j < 3; j++) {
             double a[3], b[3], cc[3], d[3];
             node_xyz(lo, q[4 * j], nv, a), node_xyz(lo, q[4 * j + 1], nv, b);
             node_xyz(lo, q[4 * j + 2], nv, cc), node_xyz(lo, q[4 * j + 3], nv, d);
-            if (cm_orient3d(a, b, cc, d) <= 0) return (long)t;
+            if (cm_orient3d(a, b, cc, d) <= 0) {
+                *bad = (long)t;
+                return CM_OK;
+            }
         }
     }
-    return -1;
+    /* Halving must not make the layer's largest triangles flat: it stays
+     * within half the flat ratio (its tetrahedra keep about 10 degrees). */
+    if (2 * flattest > 0.5 * CM_SWEEP_FLAT_RATIO * (lo[1].z - lo[0].z)) *poor = -1;
+    return CM_OK;
 }
 
 static void free_sections(section *secs, size_t count)
 {
     if (secs)
-        for (size_t i = 0; i < count; i++) free(secs[i].xy);
+        for (size_t i = 0; i < count; i++) free(secs[i].xy), free(secs[i].split);
     free(secs);
 }
 
@@ -168,20 +233,64 @@ static long double slab_volume(const cm_morph *m, const section *lo)
     return sum * ((long double)lo[1].z - (long double)lo[0].z);
 }
 
+/* The quality of the exported cells and the flatness of the prisms. */
+static void measure(cm_sweep *w, const cm_morph *m)
+{
+    cm_sweep_quality *q = &w->quality;
+    q->min_dihedral_deg = 180, q->max_dihedral_deg = 0, q->min_scaled_jacobian = INFINITY;
+    q->max_aspect_ratio = 0, q->max_flatness = 0, q->flat_prisms = 0;
+    size_t cells = w->tets ? w->ntet : w->np, per = w->tets ? 4 : 6;
+    const int32_t *corners = w->tets ? w->tets : w->prisms;
+    for (size_t i = 0; i < cells; i++) {
+        double p[6][3];
+        for (size_t c = 0; c < per; c++) memcpy(p[c], w->nodes + 3 * (size_t)corners[per * i + c], sizeof p[c]);
+        cm_cell_shape shape;
+        if (w->tets) cm_tet_shape((const double(*)[3])p, &shape);
+        else cm_prism_shape((const double(*)[3])p, &shape);
+        q->min_dihedral_deg = fmin(q->min_dihedral_deg, shape.min_dihedral_deg);
+        q->max_dihedral_deg = fmax(q->max_dihedral_deg, shape.max_dihedral_deg);
+        q->min_scaled_jacobian = fmin(q->min_scaled_jacobian, shape.scaled_jacobian);
+        q->max_aspect_ratio = fmax(q->max_aspect_ratio, shape.aspect_ratio);
+    }
+    const int32_t *tri = m->result->mesh.tri;
+    for (size_t i = 0; i + 1 < w->ns; i++)
+        for (size_t t = 0; t < m->nt; t++) {
+            double longest = 0;
+            for (size_t layer = i; layer <= i + 1; layer++)
+                for (int c = 0; c < 3; c++) {
+                    const double *a = w->nodes + 3 * (layer * w->nv + (size_t)tri[3 * t + c]);
+                    const double *b = w->nodes + 3 * (layer * w->nv + (size_t)tri[3 * t + (c + 1) % 3]);
+                    longest = fmax(longest, hypot(b[0] - a[0], b[1] - a[1]));
+                }
+            double flatness = longest / (w->z[i + 1] - w->z[i]);
+            q->max_flatness = fmax(q->max_flatness, flatness);
+            if (flatness > CM_SWEEP_FLAT_RATIO) q->flat_prisms++;
+        }
+}
+
 static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *o)
 {
     cm_progress progress;
     cm_progress_init(&progress, o->progress, o->progress_user);
     size_t per = o->sections - 1, count = (m->k - 1) * per + 1, cap = count + 16;
+    w->default_height = !o->heights && o->height == 0;
+    double height = w->default_height ? largest_diagonal(m) : o->height;
     section *secs = calloc(cap, sizeof *secs);
+    layer_splitter splitter = {0}, *split = o->tets ? &splitter : NULL;
     cm_status s = CM_OK;
     if (!secs) return cm_fail_status(&w->error, CM_ERR_NO_MEMORY);
+    if (split) {
+        s = cm_prism_split_init(&splitter.split, m->result->mesh.tri, m->nt, m->nv, &w->error);
+        splitter.bottom = malloc((3 * m->nv + 1) * sizeof *splitter.bottom);
+        splitter.top = malloc((3 * m->nv + 1) * sizeof *splitter.top);
+        if (s == CM_OK && (!splitter.bottom || !splitter.top)) s = cm_fail_status(&w->error, CM_ERR_NO_MEMORY);
+    }
     for (size_t i = 0; i < count && s == CM_OK; i++) {
         size_t g = i / per, j = i % per;
         if (g == m->k - 1) g--, j = per; /* the last section ends the last segment */
         secs[i].g = g;
         secs[i].s = (double)j / (double)per;
-        double z0 = level(m, o, g), z1 = level(m, o, g + 1);
+        double z0 = level(m, o, height, g), z1 = level(m, o, height, g + 1);
         secs[i].z = j == per ? z1 : between(z0, z1, secs[i].s);
         s = make_section(w, m, &secs[i]);
     }
@@ -191,13 +300,18 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
             s = cm_fail_status(&w->error, CM_ERR_CANCELLED);
             break;
         }
-        long bad = first_invalid(m, secs + i, o->tets);
-        if (bad < 0) {
+        long bad, poor;
+        s = check_layer(w, m, secs + i, split, &bad, &poor);
+        if (s != CM_OK) break;
+        /* End of this segment: the next section starts the next one. */
+        double s_end = secs[i + 1].g == secs[i].g ? secs[i + 1].s : 1.0;
+        double s_mid = 0.5 * (secs[i].s + s_end);
+        /* Poor splits are improved while refinement and doubles allow;
+         * invalid cells must be. */
+        if (bad < 0 && (poor < 0 || refined == o->max_refine || !(s_mid > secs[i].s && s_mid < s_end))) {
             i++;
             continue;
         }
-        /* End of this segment: the next section starts the next one. */
-        double s_end = secs[i + 1].g == secs[i].g ? secs[i + 1].s : 1.0;
         if (refined == o->max_refine) {
             s = cm_fail(&w->error, CM_ERR_INTERNAL,
                      "sweep: the prism of triangle %ld between z = %g and z = %g is not valid along its blend%s "
@@ -214,7 +328,7 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
             memset(grown + cap, 0, cap * sizeof *secs);
             secs = grown, cap *= 2;
         }
-        section mid = {secs[i].g, 0.5 * (secs[i].s + s_end), midway(secs[i].z, secs[i + 1].z), NULL};
+        section mid = {secs[i].g, s_mid, midway(secs[i].z, secs[i + 1].z), NULL, NULL, 0};
         if (!(mid.s > secs[i].s && mid.s < s_end)) {
             s = cm_fail(&w->error, CM_ERR_INTERNAL, "sweep: the prism of triangle %ld at z = %g needs a finer step than doubles allow",
                      bad, secs[i].z);
@@ -260,10 +374,13 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
                     q[c] = (int32_t)(i * w->nv) + tri[3 * t + c];
                     q[3 + c] = (int32_t)((i + 1) * w->nv) + tri[3 * t + c];
                 }
-                if (w->tets) split_prism(q, w->tets + 12 * p);
+                if (w->tets) cm_prism_split_tets(q, secs[i].split[t], w->tets + 12 * p);
             }
     }
+    if (s == CM_OK) measure(w, m);
     free_sections(secs, count);
+    if (split) cm_prism_split_free(&splitter.split);
+    free(splitter.bottom), free(splitter.top);
     return s;
 }
 
@@ -303,3 +420,11 @@ const int32_t *cm_sweep_prisms(const cm_sweep *w) { return w ? w->prisms : NULL;
 size_t cm_sweep_num_tets(const cm_sweep *w) { return w ? w->ntet : 0; }
 const int32_t *cm_sweep_tets(const cm_sweep *w) { return w ? w->tets : NULL; }
 double cm_sweep_volume(const cm_sweep *w) { return w ? w->volume : 0.0; }
+double cm_sweep_height(const cm_sweep *w) { return w && w->ns ? w->z[w->ns - 1] - w->z[0] : 0.0; }
+int cm_sweep_height_is_default(const cm_sweep *w) { return w && w->ns ? w->default_height : 0; }
+
+void cm_sweep_get_quality(const cm_sweep *w, cm_sweep_quality *quality)
+{
+    if (w && w->ns) *quality = w->quality;
+    else memset(quality, 0, sizeof *quality);
+}
