@@ -164,6 +164,9 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
     case OPTION_NO_REMESH:
         args->options.remesh = 0;
         return CLI_EXIT_OK;
+    case OPTION_NO_CEILING:
+        args->options.ceiling = 0;
+        return CLI_EXIT_OK;
     case OPTION_MIN_ANGLE:
         return parse_min_angle(command, value, &args->options.min_angle_deg, error);
     case OPTION_MAX_STEINER:

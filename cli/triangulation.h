@@ -23,11 +23,12 @@ enum {
     OPTION_MAX_INPUT_BYTES,
     OPTION_CORRESPONDENCE,
     OPTION_PIN,
+    OPTION_NO_CEILING,
     OPTION_TRIANGULATION_END /* a command's own long options start here */
 };
 
 /* The option_spec entries of the triangulation options, for a command's
- * table (keys 'm' and OPTION_NO_REMESH .. OPTION_PIN). */
+ * table (keys 'm' and OPTION_NO_REMESH .. OPTION_NO_CEILING). */
 #define TRIANGULATION_OPTION_SPECS                                            \
     {"method", 'm', "NAME",                                                   \
      "how the first compatible triangulation is built:\n"                     \
@@ -71,7 +72,11 @@ enum {
      "arclength: vertex I of the first input corresponds\n"                   \
      "to vertex J of the second, ... (0-based, in file\n"                     \
      "order; repeat for more pins; default: the first\n"                      \
-     "vertices)"}
+     "vertices)"},                                                            \
+    {"no-ceiling", OPTION_NO_CEILING, NULL,                                   \
+     "skip the ceiling (the certified largest smallest\n"                    \
+     "angle any compatible triangulation can have; a few\n"                  \
+     "ms) and let the remesher aim at the target alone"}
 
 typedef struct triangulation_args {
     const char **inputs; /* argc entries allocated, input_count used */
