@@ -109,7 +109,8 @@ double cm_corner_fan_cap(const double *const *geoms, size_t k, size_t n)
         for (double m = 1; lo / m > best; m++) best = fmax(best, fmin(lo / m, (180.0 - hi / m) / 2));
         cap = fmin(cap, best);
     }
-    return cap;
+    /* rounded up: a fan of one triangle reaches the corner angle itself */
+    return fmin(60.0, cap * (1 + 1e-9));
 }
 
 /* ---- finite element mesh of one polygon ------------------------------------ */
