@@ -52,8 +52,9 @@
 
 #define CM_BOUND_PI 3.14159265358979323846
 /* The finite element mesh of each polygon is split into four until it has
- * at least this many triangles: the certified ratio is within a few per
- * cent of a mesh four times finer (bench/CEILING.md). */
+ * at least this many triangles (a rectangle's moduli come out exact; what
+ * the bound loses against bench/correspondence_bound.py is in
+ * bench/CEILING.md). */
 #define CM_BOUND_MIN_TRIANGLES 1200
 /* Marks of the coarse quadruple search, and how many of its best
  * quadruples are refined and certified. */
