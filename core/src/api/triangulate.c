@@ -145,9 +145,7 @@ static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o, cm_pr
     double t = cm_seconds_now();
     cm_remesh_report report = {0};
     /* Nothing above the ceiling can be reached: aim no higher. */
-    cm_options aim = *o;
-    if (o->ceiling && r->stats.ceiling_deg < aim.min_angle_deg) aim.min_angle_deg = r->stats.ceiling_deg;
-    cm_status s = cm_remesh(&r->mesh, n, &aim, progress, &report, &r->error);
+    cm_status s = cm_remesh(&r->mesh, n, o, o->ceiling ? r->stats.ceiling_deg : 60.0, progress, &report, &r->error);
     r->stats.seconds_remesh = cm_seconds_now() - t;
     r->stats.remesh_iterations = report.iterations;
     r->stats.remesh_aim_deg = report.target_deg;

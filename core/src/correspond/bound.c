@@ -30,12 +30,16 @@
  * the conjugate problem (0 from b to c, 1 from d to a), whose least energy
  * is 1 / M. So M lies in [1 / E', E], and the ratio used is a lower bound
  * over an upper bound. Energies are sums of non-negative per-triangle
- * terms, and a relative margin covers their rounding.
+ * terms, and a relative margin covers their rounding (and that of the
+ * split points on the boundary, off the polygon's edges by an ulp).
  *
  * Which quadruple: one whose moduli differ most, found fast but not
  * certified. Each polygon's vertices are placed on the unit circle by the
- * discrete harmonic measure seen from a deep interior node (the boundary
- * values of a conformal map onto the disk); the modulus of a disk
+ * discrete harmonic measure seen from an interior node (the boundary
+ * values of a conformal map onto the disk), in CM_BOUND_VIEWS views from
+ * nodes spread out, each quadruple read in the view that separates its
+ * corners best (a long polygon's far ends crowd together beyond what
+ * doubles resolve); the modulus of a disk
  * quadrilateral is K'(k) / 2 K(k) of its cross-ratio (elliptic integrals
  * by the arithmetic-geometric mean). Every quadruple of CM_BOUND_MARKS
  * evenly spaced vertices is scored, the best few are improved one mark at
@@ -58,11 +62,11 @@
 #define CM_BOUND_MIN_TRIANGLES 1200
 /* Marks of the coarse quadruple search, and how many of its best
  * quadruples are refined and certified. */
-#define CM_BOUND_MARKS 20
-#define CM_BOUND_CANDIDATES 4
+#define CM_BOUND_MARKS 16
+#define CM_BOUND_CANDIDATES 3
 /* Interior nodes the polygon is seen from (one conformal map each), and
- * the least chord between corners on the circle a view must resolve. */
-#define CM_BOUND_VIEWS 3
+ * the least gap between corners on the circle a view must resolve. */
+#define CM_BOUND_VIEWS 8
 #define CM_BOUND_RESOLVED 1e-9
 /* Relative margin on every finite element energy (rounding). */
 #define CM_BOUND_MARGIN 1e-9
@@ -528,26 +532,31 @@ static double agm(double a, double b)
  * t[0] < t[1] < t[2] < t[3] (cyclically), 0 on the arc t0..t1, 1 on
  * t2..t3: with the cross-ratio l = |t0t1| |t2t3| / (|t0t2| |t1t3|) (chords)
  * and s = sqrt(l), the half-plane points -1/k, -1, 1, 1/k with k = (1 - s)
- * / (1 + s) give M = K'(k) / 2 K(k) = agm(1, k') / 2 agm(1, k). NAN when
+ * / (1 + s) = (1 - l) / (1 + s)^2 give M = K'(k) / 2 K(k) = agm(1, k') / 2 agm(1, k). NAN when
  * two corners are too close to tell apart. */
 static double log_modulus(const double *angle, size_t n, const long q[4])
 {
-    double chord[4][4] = {{0}}, sep = 0;
-    /* the view that separates the four corners best */
+    /* the view that separates the four corners best: the largest least
+     * gap between consecutive corners */
+    double gap[4] = {0}, sep = 0;
     for (int e = 0; e < CM_BOUND_VIEWS; e++) {
         const double *view = angle + (size_t)e * n;
-        double c[4][4], least = INFINITY;
-        for (int i = 0; i < 4; i++)
-            for (int j = i + 1; j < 4; j++) {
-                double d = fmod(view[q[j]] - view[q[i]] + 4 * CM_BOUND_PI, 2 * CM_BOUND_PI);
-                c[i][j] = 2 * sin(0.5 * d);
-                least = fmin(least, c[i][j]);
-            }
-        if (least > sep) sep = least, memcpy(chord, c, sizeof c);
+        double g[4], least = INFINITY;
+        for (int i = 0; i < 3; i++) { /* angles in [0, 2 pi) */
+            g[i] = view[q[i + 1]] - view[q[i]];
+            if (g[i] < 0) g[i] += 2 * CM_BOUND_PI;
+        }
+        g[3] = 2 * CM_BOUND_PI - g[0] - g[1] - g[2];
+        for (int i = 0; i < 4; i++) least = fmin(least, g[i]);
+        if (least > sep) sep = least, memcpy(gap, g, sizeof g);
     }
     if (!(sep > CM_BOUND_RESOLVED)) return NAN;
-    double s = sqrt(chord[0][1] * chord[2][3] / (chord[0][2] * chord[1][3]));
-    double k = (1 - s) / (1 + s), kp = 2 * sqrt(s) / (1 + s);
+    double ab = 2 * sin(0.5 * gap[0]), bc = 2 * sin(0.5 * gap[1]), cd = 2 * sin(0.5 * gap[2]);
+    double da = 2 * sin(0.5 * gap[3]), ac = 2 * sin(0.5 * (gap[0] + gap[1])), bd = 2 * sin(0.5 * (gap[1] + gap[2]));
+    /* 1 - l = |t0t3| |t1t2| / (|t0t2| |t1t3|) (Ptolemy) keeps k accurate
+     * when it is tiny, where (1 - s) / (1 + s) would round to 0 */
+    double s = sqrt(ab * cd / (ac * bd)), mu = da * bc / (ac * bd);
+    double k = mu / ((1 + s) * (1 + s)), kp = 2 * sqrt(s) / (1 + s);
     double lo = agm(1, k);
     if (!(lo > 0) || !(kp > 0)) return NAN;
     return log(agm(1, kp) / (2 * lo));
