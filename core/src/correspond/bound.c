@@ -62,7 +62,7 @@
 #define CM_BOUND_MIN_TRIANGLES 1200
 /* Marks of the coarse quadruple search, and how many of its best
  * quadruples are refined and certified. */
-#define CM_BOUND_MARKS 16
+#define CM_BOUND_MARKS 20
 #define CM_BOUND_CANDIDATES 3
 /* Interior nodes the polygon is seen from (one conformal map each), and
  * the least gap between corners on the circle a view must resolve. */
