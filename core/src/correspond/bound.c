@@ -658,13 +658,13 @@ cm_status cm_bound_compute(const double *const *geoms, const int32_t *const *tri
     }
     candidate best[CM_BOUND_CANDIDATES];
     int nc = s == CM_OK && usable ? search(angle, k, (long)n, best) : 0;
+    double *lo = nc ? malloc(2 * k * sizeof *lo) : NULL, *hi = lo ? lo + k : NULL;
+    if (nc && !lo) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
     for (int c = 0; c < nc && s == CM_OK; c++) {
         int dup = 0;
         for (int d = 0; d < c; d++) dup |= !memcmp(best[c].q, best[d].q, sizeof best[c].q);
         if (dup) continue;
         double ratio = 0;
-        double *lo = malloc(2 * k * sizeof *lo), *hi = lo + k;
-        if (!lo) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
         for (size_t g = 0; g < k && s == CM_OK; g++) {
             s = fe_modulus_range(&mesh[g], best[c].q, &lo[g], &hi[g], err);
             if (s == CM_OK && cm_progress_check(progress)) s = cm_fail_status(err, CM_ERR_CANCELLED);
@@ -672,12 +672,12 @@ cm_status cm_bound_compute(const double *const *geoms, const int32_t *const *tri
         for (size_t g = 0; g < k && s == CM_OK; g++)
             for (size_t h = 0; h < k; h++)
                 if (hi[h] > 0 && lo[g] / hi[h] > ratio) ratio = lo[g] / hi[h];
-        free(lo);
         if (s == CM_OK && ratio > out->distortion) {
             out->distortion = ratio;
             memcpy(out->quad, best[c].q, sizeof out->quad);
         }
     }
+    free(lo);
     if (s == CM_OK) out->correspondence_deg = cm_bound_angle(out->distortion);
     for (size_t g = 0; mesh && g < k; g++) fe_free(&mesh[g]);
     for (size_t g = 0; angle && g < k; g++) free(angle[g]);
