@@ -94,8 +94,15 @@ static void print_triangulate_help(FILE *out)
           "                   method, remesh, reversed_input, fallback_count,\n"
           "                   steiner_before_remesh, remesh_iterations,\n"
           "                   remesh_aim_deg (the target lowered where the\n"
-          "                   input allows less), seconds (validate, build,\n"
-          "                   remesh, check, and total: the whole computation)\n"
+          "                   input allows less), ceiling (null with\n"
+          "                   --no-ceiling: ceiling_deg, no compatible\n"
+          "                   triangulation can have a larger smallest angle;\n"
+          "                   corner_fan_cap_deg, correspondence_bound_deg,\n"
+          "                   modulus_distortion, distortion_quad and, for\n"
+          "                   auto, correspondence_bound_before_deg: arc length\n"
+          "                   from the first vertices), seconds (validate,\n"
+          "                   build, remesh, check, ceiling, and total: the\n"
+          "                   whole computation)\n"
           "                   and per mesh the input, output, min/max angle and\n"
           "                   the share of triangles whose smallest angle is\n"
           "                   below 10, 15 and 20 degrees, after and\n"
@@ -252,7 +259,7 @@ static int write_extras(triangulate_run *run, cli_error *error)
     report_info info = {run->tri.result, run->args->tri.method_name, run->args->tri.options.remesh,
                         run->tri.options.correspondence, run->tri.options.max_edge,
                         run->tri.seconds_total, run->args->tri.inputs,
-                        (const char *const *)run->final_paths};
+                        (const char *const *)run->final_paths, run->args->tri.options.ceiling};
     int code = stage_file(run, "report.json", &path, error);
     if (code == CLI_EXIT_OK) code = write_report(path, &info, error);
     if (code == CLI_EXIT_OK) code = stage_file(run, "preview.svg", &path, error);
@@ -294,6 +301,11 @@ static void print_summary(const triangulate_run *run)
     }
     printf("wrote %s/report.json and %s/preview.svg\n", run->output.target,
            run->output.target);
+    const cm_options *o = &run->args->tri.options;
+    if (o->ceiling && stats->ceiling_deg < o->min_angle_deg)
+        printf("no compatible triangulation of %s can have a smallest angle above %.1f degrees "
+               "(target %g)\n", stats->k == 2 ? "this pair" : "these polygons", stats->ceiling_deg,
+               o->min_angle_deg);
 }
 
 static int triangulate(const triangulate_args *args, cli_error *error)

@@ -165,6 +165,9 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
     case OPTION_NO_REMESH:
         args->options.remesh = 0;
         return CLI_EXIT_OK;
+    case OPTION_NO_CEILING:
+        args->options.ceiling = 0;
+        return CLI_EXIT_OK;
     case OPTION_MIN_ANGLE:
         return parse_degrees(command, "min-angle", value, 60, &args->options.min_angle_deg, error);
     case OPTION_MAX_STEINER:

@@ -25,11 +25,12 @@ enum {
     OPTION_PIN,
     OPTION_PIN_CORNERS,
     OPTION_MAX_EDGE,
+    OPTION_NO_CEILING,
     OPTION_TRIANGULATION_END /* a command's own long options start here */
 };
 
 /* The option_spec entries of the triangulation options, for a command's
- * table (keys 'm' and OPTION_NO_REMESH .. OPTION_MAX_EDGE). */
+ * table (keys 'm' and OPTION_NO_REMESH .. OPTION_NO_CEILING). */
 #define TRIANGULATION_OPTION_SPECS                                            \
     {"method", 'm', "NAME",                                                   \
      "how the first compatible triangulation is built:\n"                     \
@@ -85,7 +86,11 @@ enum {
      "split the boundary edges compatibly (the same number\n"                 \
      "of points on corresponding edges, each input keeping\n"                 \
      "its vertices) until none is longer than L in any\n"                     \
-     "input; default: off"}
+     "input; default: off"},                                                  \
+    {"no-ceiling", OPTION_NO_CEILING, NULL,                                   \
+     "skip the ceiling (the certified largest smallest\n"                    \
+     "angle any compatible triangulation can have; a few\n"                  \
+     "ms) and let the remesher aim at the target alone"}
 
 typedef struct triangulation_args {
     const char **inputs; /* argc entries allocated, input_count used */

@@ -51,7 +51,28 @@ static void write_seconds(FILE *file, const cm_stats *stats, double total)
     json_field(file, ", ", "build", stats->seconds_build);
     json_field(file, ", ", "remesh", stats->seconds_remesh);
     json_field(file, ", ", "check", stats->seconds_check);
+    json_field(file, ", ", "ceiling", stats->seconds_ceiling);
     json_field(file, ", ", "total", total);
+    fputs("},\n", file);
+}
+
+/* The certified caps on the smallest angle (null when not computed). */
+static void write_ceiling(FILE *file, const cm_stats *stats, int computed)
+{
+    if (!computed) {
+        fputs("  \"ceiling\": null,\n", file);
+        return;
+    }
+    fputs("  \"ceiling\": {", file);
+    json_field(file, "", "ceiling_deg", stats->ceiling_deg);
+    json_field(file, ", ", "corner_fan_cap_deg", stats->corner_fan_cap_deg);
+    json_field(file, ",\n              ", "correspondence_bound_deg", stats->correspondence_bound_deg);
+    json_field(file, ", ", "modulus_distortion", stats->modulus_distortion);
+    fprintf(file, ",\n              \"distortion_quad\": [%ld, %ld, %ld, %ld]", stats->distortion_quad[0],
+            stats->distortion_quad[1], stats->distortion_quad[2], stats->distortion_quad[3]);
+    if (stats->correspondence_bound_before_deg > 0)
+        json_field(file, ",\n              ", "correspondence_bound_before_deg",
+                   stats->correspondence_bound_before_deg);
     fputs("},\n", file);
 }
 
@@ -123,6 +144,7 @@ int write_report(const char *path, const report_info *info, cli_error *error)
     fprintf(file, "  \"remesh_iterations\": %zu,\n", stats->remesh_iterations);
     json_field(file, "  ", "remesh_aim_deg", stats->remesh_aim_deg);
     fputs(",\n", file);
+    write_ceiling(file, stats, info->ceiling);
     write_seconds(file, stats, info->seconds_total);
     fputs("  \"meshes\": [\n", file);
     for (size_t g = 0; g < stats->k; g++) {

@@ -17,6 +17,7 @@ typedef struct report_info {
     double seconds_total;      /* wall time of the whole computation */
     const char *const *inputs; /* k input paths, as given */
     const char *const *outputs;/* k mesh paths, as they are after commit */
+    int ceiling;               /* 1 if the core computed the ceiling */
 } report_info;
 
 /* Writes the report as one JSON object (see the "report.json" section of

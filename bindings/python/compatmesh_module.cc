@@ -210,6 +210,7 @@ const std::vector<OptionSetter> &option_setters()
       {"smoothing",
        [](cm_options &o, py::handle v, Callbacks &) { o.smoothing = enum_from(v, "smoothing", smoothing_names); }},
       CM_NUMBER_OPTION(max_iterations),
+      CM_NUMBER_OPTION(ceiling),
       {"correspondence",
        [](cm_options &o, py::handle v, Callbacks &c) {
          o.correspondence = enum_from(v, "correspondence", correspondence_names);
@@ -349,6 +350,16 @@ py::dict stats_of(const cm_result *result)
   stats["seconds_build"] = s->seconds_build;
   stats["seconds_remesh"] = s->seconds_remesh;
   stats["seconds_check"] = s->seconds_check;
+  stats["seconds_ceiling"] = s->seconds_ceiling;
+  stats["ceiling_deg"] = s->ceiling_deg;
+  stats["corner_fan_cap_deg"] = s->corner_fan_cap_deg;
+  stats["correspondence_bound_deg"] = s->correspondence_bound_deg;
+  stats["modulus_distortion"] = s->modulus_distortion;
+  stats["distortion_quad"] = py::make_tuple(s->distortion_quad[0], s->distortion_quad[1], s->distortion_quad[2],
+                                            s->distortion_quad[3]);
+  // 0 in the core when not computed (no auto choice): None here
+  stats["correspondence_bound_before_deg"] =
+      s->correspondence_bound_before_deg > 0 ? py::object(py::float_(s->correspondence_bound_before_deg)) : py::none();
   py::list quality, quality_before;
   for (std::size_t g = 0; g < s->k; g++) {
     cm_quality q;
@@ -684,6 +695,8 @@ PYBIND11_MODULE(compatmesh, m)
       .def_readonly("stats", &Result::stats,
                     "dict: the fields of cm_stats (n, k, vertices, steiner, triangles, "
                     "reversed_input, fallback_count, steiner_before_remesh, remesh_iterations, remesh_aim_deg, "
+                    "ceiling_deg, corner_fan_cap_deg, correspondence_bound_deg, modulus_distortion, "
+                    "distortion_quad, correspondence_bound_before_deg (None unless auto chose the starts), "
                     "seconds_*), quality and quality_before_remesh (one dict per geometry)")
       .def("__repr__", [](const Result &r) {
         return "<compatmesh.Result: " + py::str(r.stats["k"]).cast<std::string>() + " geometries, " +
@@ -708,6 +721,9 @@ options: keyword arguments named like the fields of the C struct cm_options,
     min_angle_deg   target smallest angle in degrees
     max_steiner     most Steiner vertices the refinement may add (-1: automatic)
     k_split, area_every, max_iterations   ints, see compatmesh.h
+    ceiling         bool: compute the certified caps on the smallest angle
+                    (stats ceiling_deg ...; the remesher aims no higher);
+                    default True, False for the fastest run
     smoothing       compatmesh.Smoothing, its int value, or "laplacian" /
                     "angle" / "weighted" / "combined"
     progress        callable(fraction, stage); return True to cancel

@@ -152,6 +152,12 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
                         "', " + degrees(q[1].min_angle_deg) + " deg in '" + second_name + "'");
   if (stats->fallback_count > 0)
     outcome.log.push_back("overlay fallback used " + std::to_string(stats->fallback_count) + " times");
+  std::string ceiling = "no compatible triangulation of this pair can have a smallest angle above " +
+                        degrees(stats->ceiling_deg) + " degrees (corner fan " + degrees(stats->corner_fan_cap_deg) +
+                        ", correspondence bound " + degrees(stats->correspondence_bound_deg);
+  if (stats->correspondence_bound_before_deg > 0)
+    ceiling += "; before choosing the starts " + degrees(stats->correspondence_bound_before_deg);
+  outcome.log.push_back(ceiling + ")");
   return outcome;
 }
 

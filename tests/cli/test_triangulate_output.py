@@ -76,7 +76,14 @@ def check_success(tmp_path, result, inputs, fmt="off", out="out"):
         assert report["remesh_aim_deg"] == 0
     assert isinstance(report["reversed_input"], bool)
     assert report["fallback_count"] >= 0
-    assert set(report["seconds"]) >= {"validate", "build", "remesh", "check", "total"}
+    ceiling = report["ceiling"]
+    assert set(ceiling) >= {"ceiling_deg", "corner_fan_cap_deg", "correspondence_bound_deg",
+                            "modulus_distortion", "distortion_quad"}
+    assert ceiling["ceiling_deg"] == min(ceiling["corner_fan_cap_deg"], ceiling["correspondence_bound_deg"])
+    assert 0 < ceiling["ceiling_deg"] <= 60 and ceiling["modulus_distortion"] >= 1
+    # certified: the smallest angle over all meshes never exceeds it
+    assert min(m["min_angle_deg"] for m in report["meshes"]) <= ceiling["ceiling_deg"]
+    assert set(report["seconds"]) >= {"validate", "build", "remesh", "check", "ceiling", "total"}
     assert all(value >= 0 for value in report["seconds"].values())
     assert report["seconds"]["total"] >= report["seconds"]["build"]
     assert re.fullmatch(r"\d+\.\d+\.\d+", report["version"])
@@ -180,6 +187,34 @@ def test_stdout_summary(cm, tmp_path):
     assert re.fullmatch(r"wrote res/b\.off \(n=4, steiner=\d+, min angle [\d.]+ deg\)", lines[1])
     assert "res/report.json" in lines[2] and "res/preview.svg" in lines[2]
     assert len(lines) == 3
+
+
+def test_ceiling_below_target_is_said(cm, tmp_path):
+    # A 5 x 1 rectangle against the unit square, corners corresponding: the
+    # quadrilateral of the four corners has moduli 5 and 1, so no
+    # compatible triangulation can reach 40 degrees (D(alpha)^2 = 5 at about
+    # 37.6; the finite elements certify a little less distortion).
+    rectangle = [(0.0, 0.0), (5.0, 0.0), (5.0, 1.0), (0.0, 1.0)]
+    square = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+    write_xy(tmp_path / "a.xy", rectangle)
+    write_xy(tmp_path / "b.xy", square)
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out", "--min-angle", "40")
+    report = check_success(tmp_path, result, {"a.xy": rectangle, "b.xy": square})
+    ceiling = report["ceiling"]
+    assert ceiling["corner_fan_cap_deg"] == pytest.approx(45)
+    assert 37.5 < ceiling["correspondence_bound_deg"] < 40
+    assert 4.5 < ceiling["modulus_distortion"] <= 5
+    assert sorted(ceiling["distortion_quad"]) == [0, 1, 2, 3]
+    assert report["remesh_aim_deg"] <= ceiling["ceiling_deg"]
+    said = [line for line in result.stdout.splitlines() if line.startswith("no compatible")]
+    assert said == ["no compatible triangulation of this pair can have a smallest angle above "
+                    f"{ceiling['ceiling_deg']:.1f} degrees (target 40)"]
+
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "off", "--min-angle", "40", "--no-ceiling")
+    assert result.returncode == 0, result.stderr
+    report = strict_json(tmp_path / "off" / "report.json")
+    assert report["ceiling"] is None and report["seconds"]["ceiling"] == 0
+    assert "no compatible" not in result.stdout
 
 
 def test_obj_polyline_follows_l_order(cm, tmp_path):

@@ -44,13 +44,18 @@ static int fixture_polygons(fixture_kind kind, int n, double *xy, size_t *k)
     return -1;
 }
 
-/* The compatible triangulation (library defaults: partition + remesh). */
+/* The compatible triangulation (library defaults: partition + remesh),
+ * the remesher aiming at the full target (no ceiling): these fixtures
+ * measure the morph, and their floors were set on those end meshes. */
 static cm_result *fixture_result(fixture_kind kind, int n)
 {
     double *xy = calloc(6 * (size_t)n, sizeof *xy);
     size_t k;
     cm_result *r = NULL;
-    if (xy && fixture_polygons(kind, n, xy, &k) == 0) cm_triangulate(xy, k, (size_t)n, NULL, &r);
+    cm_options o;
+    cm_options_init(&o);
+    o.ceiling = 0;
+    if (xy && fixture_polygons(kind, n, xy, &k) == 0) cm_triangulate(xy, k, (size_t)n, &o, &r);
     free(xy);
     if (r && cm_result_status(r) != CM_OK) {
         fprintf(stderr, "fixture %s: %s\n", fixture_name(kind), cm_result_message(r));

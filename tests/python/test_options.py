@@ -110,3 +110,27 @@ def test_planarity_tolerance_keyword(octagon, star):
     with pytest.raises(ValueError, match="not planar"):
         compatmesh.triangulate([bent, flat])
     compatmesh.triangulate([bent, flat], planarity_tolerance=1e-3)
+
+
+def test_ceiling_in_stats_and_off_by_keyword():
+    # A 5 x 1 rectangle against the unit square, corners corresponding: the
+    # four corners' moduli are 5 and 1, so the certified distortion is at
+    # most 5 and the bound near D^-1(5), 37.6 degrees.
+    rectangle = np.array([[0.0, 0.0], [5.0, 0.0], [5.0, 1.0], [0.0, 1.0]])
+    square = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    s = compatmesh.triangulate([rectangle, square]).stats
+    assert 4.5 < s["modulus_distortion"] <= 5
+    assert 37.5 < s["correspondence_bound_deg"] < 40
+    assert s["corner_fan_cap_deg"] == pytest.approx(45)
+    assert s["ceiling_deg"] == min(s["corner_fan_cap_deg"], s["correspondence_bound_deg"])
+    assert sorted(s["distortion_quad"]) == [0, 1, 2, 3]
+    assert s["correspondence_bound_before_deg"] is None
+    assert min(q["min_angle_deg"] for q in s["quality"]) <= s["ceiling_deg"]
+    off = compatmesh.triangulate([rectangle, square], ceiling=False).stats
+    assert off["ceiling_deg"] == 0 and off["seconds_ceiling"] == 0
+
+
+def test_ceiling_before_and_after_auto(octagon, star):
+    s = compatmesh.triangulate([octagon, star[::-1][:-1]], correspondence="auto").stats
+    assert 0 < s["correspondence_bound_before_deg"] <= 60
+    assert 0 < s["correspondence_bound_deg"] <= 60

@@ -183,6 +183,12 @@ typedef struct cm_options {
      * where each added point lies. Also with CM_CORRESPOND_INDEX (which
      * otherwise adds interior Steiner vertices only). 0 (default): off. */
     double max_edge;
+
+    /* The ceiling (cm_stats.ceiling_deg): 1 (default): compute the
+     * certified caps on the smallest angle any compatible triangulation of
+     * the input can have, report them, and let the remesher aim at no more
+     * than the ceiling; 0: skip it (a few milliseconds at n = 160). */
+    int ceiling;
 } cm_options;
 
 /* Fills *options with the defaults. Always call it first, then change the
@@ -208,6 +214,34 @@ typedef struct cm_stats {
      * target lowered where an input corner (c/2) or a short boundary edge
      * beside a close opposite side allows less; 0 when not remeshed. */
     double remesh_aim_deg;
+
+    /* The ceiling: no compatible triangulation of these polygons (in this
+     * correspondence), whatever its Steiner vertices, can have a smallest
+     * angle above ceiling_deg = min(corner_fan_cap_deg,
+     * correspondence_bound_deg). Certified: rounding and discretisation
+     * only ever make it higher than the truth, never lower. 60 when
+     * nothing binds; all 0 when options.ceiling is 0. The remesher aims at
+     * min(options.min_angle_deg, ceiling_deg). */
+    double ceiling_deg;
+    /* At boundary vertex i the same m triangles split the corner in every
+     * polygon, each angle in [alpha, 180 - 2 alpha]: alpha <= min over i of
+     * the largest over m of min(min_g theta_i / m, (180 - max_g theta_i /
+     * m) / 2), theta_i the corner angles in degrees. */
+    double corner_fan_cap_deg;
+    /* A compatible triangulation with all angles >= alpha is a
+     * D(alpha)^2-quasiconformal map between the polygons, so it cannot
+     * change the conformal modulus of any four marked boundary vertices by
+     * more than D(alpha)^2: the largest alpha allowed by the modulus ratio
+     * modulus_distortion, certified by finite elements (lower bound over
+     * upper bound) on a quadruple found by a fast search. */
+    double correspondence_bound_deg;
+    double modulus_distortion;   /* that certified ratio K >= 1 */
+    long distortion_quad[4];     /* its four boundary vertices, -1 when K == 1 */
+    /* CM_CORRESPOND_AUTO without pins: the correspondence bound of arc
+     * length from the first vertex of every polygon, before the starts were
+     * chosen (what the choice bought); 0 otherwise. */
+    double correspondence_bound_before_deg;
+    double seconds_ceiling;      /* computing the ceiling (both when auto) */
 } cm_stats;
 
 /* Quality of one geometry of the result. */

@@ -11,6 +11,7 @@
 #include "base/clock.h"
 #include "base/progress.h"
 #include "construct/overlay.h"
+#include "correspond/bound.h"
 #include "correspond/choose.h"
 #include "correspond/corners.h"
 #include "correspond/split.h"
@@ -29,6 +30,7 @@ void cm_options_init(cm_options *options)
     options->area_every = 0;
     options->smoothing = CM_SMOOTH_COMBINED;
     options->max_iterations = 0;
+    options->ceiling = 1;
 }
 
 /* The remeshing options; a message on r when one is out of range. */
@@ -107,6 +109,20 @@ static cm_status build_first(cm_result *r, const double *const *polygons, size_t
             goto done;
         }
     }
+    if (o->ceiling) {
+        double t = cm_seconds_now();
+        cm_bound b;
+        s = cm_bound_compute((const double *const *)geoms, (const int32_t *const *)tris, k, n, progress,
+                             &b, &r->error);
+        if (s != CM_OK) goto done;
+        r->stats.corner_fan_cap_deg = b.corner_fan_deg;
+        r->stats.correspondence_bound_deg = b.correspondence_deg;
+        r->stats.ceiling_deg = fmin(b.corner_fan_deg, b.correspondence_deg);
+        r->stats.modulus_distortion = b.distortion;
+        for (int i = 0; i < 4; i++)
+            r->stats.distortion_quad[i] = b.quad[i] < 0 ? -1 : input_index((int32_t)b.quad[i], n, clockwise);
+        r->stats.seconds_ceiling += cm_seconds_now() - t;
+    }
     s = construct(r, (const double *const *)geoms, (const int32_t *const *)tris, k, n, o, progress);
 done:
     if (geoms)
@@ -130,7 +146,8 @@ static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o, cm_pr
     if (cm_progress_report(progress, CM_STAGE_REMESH, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
     double t = cm_seconds_now();
     cm_remesh_report report = {0};
-    cm_status s = cm_remesh(&r->mesh, n, o, progress, &report, &r->error);
+    /* Nothing above the ceiling can be reached: aim no higher. */
+    cm_status s = cm_remesh(&r->mesh, n, o, o->ceiling ? r->stats.ceiling_deg : 60.0, progress, &report, &r->error);
     r->stats.seconds_remesh = cm_seconds_now() - t;
     r->stats.remesh_iterations = report.iterations;
     r->stats.remesh_aim_deg = report.target_deg;
@@ -194,9 +211,10 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
     r->stats.seconds_validate = t1 - t0;
     if (cm_progress_report(&progress, CM_STAGE_TRIANGULATE, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
 
+    double ceiling_before = r->stats.seconds_ceiling;
     s = build_first(r, polygons, k, n, clockwise, o, &progress);
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
-    r->stats.seconds_build = cm_seconds_now() - t1;
+    r->stats.seconds_build = cm_seconds_now() - t1 - (r->stats.seconds_ceiling - ceiling_before);
     s = remesh_stage(r, n, o, &progress);
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     if (clockwise) restore_input_order(&r->mesh, n);
@@ -240,6 +258,23 @@ static cm_status check_correspondence_options(cm_result *r, const cm_options *o)
     return CM_OK;
 }
 
+/* The correspondence bound of arc length from every polygon's first
+ * vertex, for CM_CORRESPOND_AUTO to report what its choice bought. */
+static cm_status bound_before(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
+                              const int *orientation)
+{
+    double t = cm_seconds_now();
+    cm_boundary_map from_first = {0};
+    cm_bound b;
+    cm_status s = cm_correspond_arclength(polygons, counts, k, orientation, NULL, 0, &from_first, &r->error);
+    if (s == CM_OK)
+        s = cm_bound_compute((const double *const *)from_first.xy, NULL, k, from_first.n, NULL, &b, &r->error);
+    if (s == CM_OK) r->stats.correspondence_bound_before_deg = b.correspondence_deg;
+    cm_boundary_map_clear(&from_first);
+    r->stats.seconds_ceiling += cm_seconds_now() - t;
+    return s;
+}
+
 /* CM_CORRESPOND_ARCLENGTH and _AUTO: each polygon checked on its own (for
  * auto, the starts chosen where none are pinned), the common
  * refinement of the boundaries made, then the pipeline on it. A failure of
@@ -280,6 +315,7 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
         if (starts != chosen) free(starts);
         pins = corner_pins;
     }
+    if (s == CM_OK && chosen && o->ceiling) s = bound_before(r, polygons, counts, k, orientation);
     if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, pins, num_pins,
                                                 &r->boundary, &r->error);
     if (s == CM_OK && o->max_edge > 0)

@@ -509,13 +509,13 @@ static void remesher_free(remesher *x)
     free(x->tabu.keys), free(x->tabu.count);
 }
 
-cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, cm_progress *progress,
+cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, cm_progress *progress,
                     cm_remesh_report *rep, cm_error *err)
 {
     remesher x = {0};
     x.o = o;
     x.progress = progress;
-    x.target = o->min_angle_deg * CM_PI / 180.0;
+    x.target = fmin(o->min_angle_deg, ceiling_deg) * CM_PI / 180.0;
     cm_status s = cm_kmesh_build(&x.km, mesh, n);
     if (s == CM_ERR_INTERNAL) return cm_fail(err, s, "remesh: the construction is not a triangulated disk");
     if (s != CM_OK) return cm_fail_status(err, s);
@@ -529,7 +529,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, cm_progress *p
     if ((s = refine(&x, n, rep)) != CM_OK) goto stop;
     if (improve_everywhere(&x)) goto oom;
     if ((s = step_out(&x, n)) != CM_OK) goto stop;
-    long late = coarsen(&x, x.target);
+    long late = coarsen(&x, o->min_angle_deg * CM_PI / 180.0);
     if (late < 0 || improve_everywhere(&x)) goto oom;
     rep->collapses += late;
     rep->flips = x.flips;

@@ -17,9 +17,13 @@ typedef struct cm_remesh_report {
 } cm_remesh_report;
 
 /* Algorithm 1 on mesh (polygon vertices 0..n-1 counter-clockwise, each
- * geometry valid), in place. o: the validated options. Returns CM_OK,
- * CM_ERR_NO_MEMORY, CM_ERR_CANCELLED or CM_ERR_INTERNAL (message on err). */
-cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, cm_progress *progress,
+ * geometry valid), in place. o: the validated options. ceiling_deg: no
+ * compatible triangulation has a larger smallest angle (60 when unknown);
+ * refinement aims at min(o->min_angle_deg, ceiling_deg) and spends no
+ * budget above it, while the final removal of Steiner vertices keeps
+ * every angle at the full target. Returns CM_OK, CM_ERR_NO_MEMORY,
+ * CM_ERR_CANCELLED or CM_ERR_INTERNAL (message on err). */
+cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, cm_progress *progress,
                     cm_remesh_report *report, cm_error *err);
 
 #endif

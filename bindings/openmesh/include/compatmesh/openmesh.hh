@@ -156,6 +156,9 @@ class CompatibleTriangulationT : private OpenMesh::Utils::Noncopyable {
   void set_min_angle_deg(double degrees) { options_.min_angle_deg = degrees; }
   void set_max_steiner(long count) { options_.max_steiner = count; }
   void set_smoothing(cm_smoothing smoothing) { options_.smoothing = smoothing; }
+  // The certified caps on the smallest angle (stats().ceiling_deg and the
+  // fields after it); on by default, off for the fastest run.
+  void set_ceiling(bool ceiling) { options_.ceiling = ceiling ? 1 : 0; }
   void set_planarity_tolerance(double relative) { planarity_tolerance_ = relative; }
   void set_progress(ProgressFn progress) { progress_ = std::move(progress); }
 

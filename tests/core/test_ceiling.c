@@ -1,0 +1,205 @@
+/* The ceiling (correspond/bound.h): fixtures whose answer is known, and a
+ * property test that the certified caps are never below what the pipeline
+ * reaches. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "correspond/bound.h"
+#include "random_polygons.h"
+
+#define PI 3.14159265358979323846
+
+/* The rectangle w x h with its four corners marked: the modulus for 0 on
+ * the bottom and 1 on the top is w / h exactly (the harmonic function is
+ * y / h), and h / w for the other pair of sides. The finite element
+ * bracket must contain it, and (the stated discretisation safety) be
+ * within 6 % of it. */
+static void rectangle_modulus(double w, double h)
+{
+    double xy[8] = {0, 0, w, 0, w, h, 0, h}, lo, hi;
+    long bottom_top[4] = {0, 1, 2, 3}, sides[4] = {1, 2, 3, 0};
+    cm_error err;
+    cm_error_init(&err);
+    CHECK(cm_bound_modulus(xy, NULL, 4, bottom_top, &lo, &hi, &err) == CM_OK);
+    CHECK_MSG(lo <= w / h && w / h <= hi && hi / lo < 1.06, "%g x %g: [%.6g, %.6g] vs %.6g", w, h, lo, hi, w / h);
+    CHECK(cm_bound_modulus(xy, NULL, 4, sides, &lo, &hi, &err) == CM_OK);
+    CHECK_MSG(lo <= h / w && h / w <= hi && hi / lo < 1.06, "%g x %g: [%.6g, %.6g] vs %.6g", w, h, lo, hi, h / w);
+}
+
+/* A 3 x 1 rectangle against the unit square, corners corresponding: the
+ * only quadrilateral has moduli 3 and 1, so the certified distortion is at
+ * most 3 (a lower bound on the true ratio) and, the finite elements being
+ * within 6 % each way, at least 3 / 1.06^2; the bound is the angle D^-1
+ * gives for it; the corner fan at four right angles is 45. */
+static void rectangle_against_square(void)
+{
+    double rect[8] = {0, 0, 3, 0, 3, 1, 0, 1}, square[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    const double *geoms[2] = {rect, square};
+    cm_bound b;
+    cm_error err;
+    cm_error_init(&err);
+    CHECK(cm_bound_compute(geoms, NULL, 2, 4, NULL, &b, &err) == CM_OK);
+    CHECK_MSG(b.distortion <= 3.0 && b.distortion >= 3.0 / (1.06 * 1.06), "K = %.6g", b.distortion);
+    CHECK(b.correspondence_deg == cm_bound_angle(b.distortion));
+    CHECK(b.correspondence_deg >= cm_bound_angle(3.0));
+    CHECK(fabs(b.corner_fan_deg - 45.0) < 1e-6);
+}
+
+/* D and its inverse agree; D(60) = 1; D grows as alpha shrinks. */
+static void dilatation_formula(void)
+{
+    CHECK(fabs(cm_bound_dilatation(PI / 3) - 1.0) < 1e-9);
+    for (double deg = 5; deg < 60; deg += 5) {
+        double K = cm_bound_dilatation(deg * PI / 180);
+        CHECK(K > 1 && K > cm_bound_dilatation((deg + 1) * PI / 180));
+        double back = cm_bound_angle(K);
+        CHECK_MSG(back >= deg && back < deg + 1e-6, "%g -> K %g -> %g", deg, K, back);
+    }
+    CHECK(cm_bound_angle(1.0) == 60.0 && cm_bound_angle(0.5) == 60.0);
+}
+
+/* Interior angle in degrees at vertex i, computed independently of bound.c. */
+static double corner(const double *xy, int n, int i)
+{
+    const double *p = xy + 2 * ((i + n - 1) % n), *v = xy + 2 * i, *q = xy + 2 * ((i + 1) % n);
+    double ax = p[0] - v[0], ay = p[1] - v[1], bx = q[0] - v[0], by = q[1] - v[1];
+    double a = acos(fmax(-1.0, fmin(1.0, (ax * bx + ay * by) / (hypot(ax, ay) * hypot(bx, by))))) * 180 / PI;
+    return bx * ay - by * ax >= 0 ? a : 360 - a; /* reflex when p is right of v -> q */
+}
+
+/* The corner-fan formula, by brute force over fan sizes 1..1000. */
+static double fan_formula(const double *const *geoms, int k, int n)
+{
+    double cap = 60;
+    for (int i = 0; i < n; i++) {
+        double lo = 360, hi = 0, best = 0;
+        for (int g = 0; g < k; g++) lo = fmin(lo, corner(geoms[g], n, i)), hi = fmax(hi, corner(geoms[g], n, i));
+        for (int m = 1; m <= 1000; m++) best = fmax(best, fmin(lo / m, (180 - hi / m) / 2));
+        cap = fmin(cap, best);
+    }
+    return cap;
+}
+
+static double min_angle(const cm_result *r)
+{
+    double lo = 180;
+    for (size_t g = 0; g < cm_result_num_geometries(r); g++) {
+        cm_quality q;
+        if (cm_result_quality(r, g, &q) == CM_OK) lo = fmin(lo, q.min_angle_deg);
+    }
+    return lo;
+}
+
+/* A polygon against an affine image of itself: the corner fan is its
+ * formula; every quadrilateral's moduli differ by at most the affine map's
+ * dilatation (singular value ratio), so the certified K is at most that;
+ * and the pipeline's result is below the ceiling. */
+static void affine_image(uint64_t seed)
+{
+    enum { N = 24 };
+    double a[2 * N], b[2 * N];
+    if (rp_star(a, N, seed)) return;
+    double m00 = 2.0, m01 = 0.7, m10 = 0.1, m11 = 0.8; /* det > 0 */
+    for (int i = 0; i < N; i++) {
+        b[2 * i] = m00 * a[2 * i] + m01 * a[2 * i + 1] + 5;
+        b[2 * i + 1] = m10 * a[2 * i] + m11 * a[2 * i + 1] - 1;
+    }
+    double t = m00 * m00 + m01 * m01 + m10 * m10 + m11 * m11, det = m00 * m11 - m01 * m10;
+    double s1 = sqrt(0.5 * (t + sqrt(t * t - 4 * det * det))), s2 = det / s1;
+    const double *geoms[2] = {a, b};
+    cm_bound bd;
+    cm_error err;
+    cm_error_init(&err);
+    CHECK(cm_bound_compute(geoms, NULL, 2, N, NULL, &bd, &err) == CM_OK);
+    CHECK_MSG(bd.distortion <= s1 / s2 * (1 + 1e-9), "K %.6g above the affine dilatation %.6g", bd.distortion, s1 / s2);
+    CHECK_MSG(fabs(bd.corner_fan_deg / fan_formula(geoms, 2, N) - 1) < 1e-8, "fan %.9g vs formula %.9g",
+              bd.corner_fan_deg, fan_formula(geoms, 2, N));
+    cm_result *r = NULL;
+    CHECK(cm_triangulate_polygons(geoms, (size_t[]){N, N}, 2, NULL, &r) == CM_OK);
+    const cm_stats *st = cm_result_stats(r);
+    CHECK(st->ceiling_deg == fmin(st->corner_fan_cap_deg, st->correspondence_bound_deg));
+    CHECK_MSG(min_angle(r) <= st->ceiling_deg, "reached %.4g above the ceiling %.4g", min_angle(r), st->ceiling_deg);
+    cm_result_free(r);
+}
+
+/* Property: on random pairs (stars, random simple polygons, a star against
+ * itself twisted) the ceiling is never below the smallest angle the
+ * pipeline reaches, remeshing aimed at the full target (ceiling off) or at
+ * the ceiling. */
+static void never_below_reached(void)
+{
+    enum { MAXN = 40 };
+    int pairs = 0;
+    for (uint64_t seed = 1; pairs < 30; seed++) {
+        int n = 8 + (int)(seed * 7 % 21);
+        double a[2 * MAXN], b[2 * MAXN];
+        int kind = (int)(seed % 3), bad = 0;
+        bad |= kind == 2 ? rp_random_simple(a, n, seed) : rp_star(a, n, 11 * seed);
+        if (kind == 1) {
+            memcpy(b, a, sizeof a);
+            rp_twist(b, n, 1 + (int)(seed % 3));
+        } else {
+            bad |= kind == 2 ? rp_random_simple(b, n, seed + 1000) : rp_star(b, n, 13 * seed + 1);
+        }
+        if (bad) continue;
+        pairs++;
+        const double *geoms[2] = {a, b};
+        size_t counts[2] = {(size_t)n, (size_t)n};
+        cm_options o;
+        cm_options_init(&o);
+        cm_result *with = NULL, *without = NULL;
+        cm_status s1 = cm_triangulate_polygons(geoms, counts, 2, &o, &with);
+        o.ceiling = 0;
+        cm_status s2 = cm_triangulate_polygons(geoms, counts, 2, &o, &without);
+        CHECK(s1 == s2);
+        if (s1 == CM_OK && s2 == CM_OK) {
+            double ceiling = cm_result_stats(with)->ceiling_deg;
+            CHECK(cm_result_stats(without)->ceiling_deg == 0);
+            CHECK_MSG(min_angle(with) <= ceiling && min_angle(without) <= ceiling,
+                      "seed %llu n %d: reached %.4g / %.4g, ceiling %.4g", (unsigned long long)seed, n,
+                      min_angle(with), min_angle(without), ceiling);
+            CHECK(ceiling > 0 && ceiling <= 60);
+        }
+        cm_result_free(with), cm_result_free(without);
+    }
+}
+
+static int cancel_at_once(void *user, double fraction, const char *stage)
+{
+    (void)fraction, (void)stage;
+    return ++*(int *)user > 3;
+}
+
+/* Cancelling while the ceiling runs ends the call cleanly. */
+static void cancels(void)
+{
+    enum { N = 400 };
+    double *a = malloc(2 * N * sizeof *a), *b = malloc(2 * N * sizeof *b);
+    if (!a || !b || rp_star(a, N, 3) || rp_star(b, N, 4)) {
+        free(a), free(b);
+        return;
+    }
+    int calls = 0;
+    cm_options o;
+    cm_options_init(&o);
+    o.progress = cancel_at_once, o.progress_user = &calls;
+    cm_result *r = NULL;
+    const double *geoms[2] = {a, b};
+    CHECK(cm_triangulate_polygons(geoms, (size_t[]){N, N}, 2, &o, &r) == CM_ERR_CANCELLED);
+    cm_result_free(r);
+    free(a), free(b);
+}
+
+int main(void)
+{
+    rectangle_modulus(3, 1);
+    rectangle_modulus(1, 5);
+    rectangle_against_square();
+    dilatation_formula();
+    for (uint64_t seed = 1; seed <= 3; seed++) affine_image(seed);
+    never_below_reached();
+    cancels();
+    return check_summary("test_ceiling");
+}
