@@ -1,0 +1,37 @@
+/* Hole bridges: polygons with holes cut open into simple pieces. */
+#ifndef CM_CONSTRUCT_HOLES_H
+#define CM_CONSTRUCT_HOLES_H
+
+#include "base/error.h"
+#include "base/mesh.h"
+
+/* Simple pieces of a polygon with holes, the same in every geometry. */
+typedef struct cm_pieces {
+    size_t count;
+    size_t *start;    /* count + 1 offsets into vertex */
+    int32_t *vertex;  /* each piece's loop vertices, counter-clockwise */
+    size_t chords;
+} cm_pieces;
+
+/* Cuts every hole open by two straight chords between loop vertices.
+ *   geoms:      k arrays of 2 N doubles, N = loop_start[num_loops]; loop l
+ *               is vertices loop_start[l] .. loop_start[l + 1] - 1, the outer
+ *               loop (l = 0) counter-clockwise, the holes clockwise, already
+ *               validated (simple, disjoint, holes inside).
+ * Every chord joins two vertices not used by another chord, lies in the
+ * material in every geometry (exact tests) and crosses no loop and no other
+ * chord; hole h's two chords go to the outer loop or to holes already
+ * joined, so each cut splits one simple piece in two and the pieces
+ * (num_loops of them) are simple polygons with the same vertex cycles in
+ * every geometry. Returns CM_OK, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL when
+ * some hole has no two such chords (message on err). */
+cm_status cm_holes_cut(const double *const *geoms, size_t k, const size_t *loop_start,
+                       size_t num_loops, cm_pieces *out, cm_error *err);
+void cm_pieces_free(cm_pieces *p);
+
+/* Appends a piece's compatible triangulation to whole: piece vertex i < m
+ * is whole's vertex ids[i], the piece's Steiner vertices (m..) become new
+ * vertices of whole. Returns CM_OK or CM_ERR_NO_MEMORY. */
+cm_status cm_holes_glue(cm_mesh *whole, const int32_t *ids, size_t m, const cm_mesh *piece);
+
+#endif
