@@ -199,15 +199,55 @@ static int for_each_line(char *text, int (*visit)(char *, long, void *),
 
 /* ---- .xy text ---------------------------------------------------------- */
 
+/* Loop sizes as a file lists its loops. */
+typedef struct loop_list {
+    size_t *size;
+    size_t count, capacity;
+} loop_list;
+
+static int loop_list_push(loop_list *list, size_t size)
+{
+    if (list->count == list->capacity) {
+        size_t capacity = list->capacity ? 2 * list->capacity : 4;
+        size_t *bigger = realloc(list->size, capacity * sizeof *bigger);
+        if (!bigger) return -1;
+        list->size = bigger, list->capacity = capacity;
+    }
+    list->size[list->count++] = size;
+    return 0;
+}
+
 typedef struct xy_state {
     const char *path;
     vertex_list vertices;
+    loop_list loops;
+    size_t loop_first; /* first vertex of the loop being read */
+    long loop_line;    /* the line of its first vertex */
     cli_error *error;
 } xy_state;
+
+/* Ends the loop being read (none yet: nothing to do). */
+static int xy_close_loop(xy_state *state)
+{
+    size_t size = state->vertices.count - state->loop_first;
+    if (size == 0) return CLI_EXIT_OK;
+    if (size < 3) {
+        cli_error_set(state->error, "%s:%ld: loop %zu has %zu vertices, needs at least 3",
+                      state->path, state->loop_line, state->loops.count, size);
+        return CLI_EXIT_USAGE;
+    }
+    if (loop_list_push(&state->loops, size)) {
+        cli_error_set(state->error, "%s: out of memory", state->path);
+        return CLI_EXIT_INTERNAL;
+    }
+    state->loop_first = state->vertices.count;
+    return CLI_EXIT_OK;
+}
 
 static int visit_xy_line(char *line, long number, void *opaque)
 {
     xy_state *state = opaque;
+    if (line[0] == '>') return xy_close_loop(state);
     strip_comment(line);
     char *fields[MAX_FIELDS];
     int count = split_fields(line, 1, fields);
@@ -226,6 +266,7 @@ static int visit_xy_line(char *line, long number, void *opaque)
     if (parse_coordinate(fields[0], &x, state->path, number, state->error) ||
         parse_coordinate(fields[1], &y, state->path, number, state->error))
         return CLI_EXIT_USAGE;
+    if (state->vertices.count == state->loop_first) state->loop_line = number;
     if (vertex_list_push(&state->vertices, x, y, number)) {
         cli_error_set(state->error, "%s: out of memory", state->path);
         return CLI_EXIT_INTERNAL;
@@ -236,19 +277,27 @@ static int visit_xy_line(char *line, long number, void *opaque)
 static int parse_xy(const char *path, char *text, polygon_input *polygon,
                     cli_error *error)
 {
-    xy_state state = {path, {0}, error};
+    xy_state state = {path, {0}, {0}, 0, 0, error};
     int code = for_each_line(text, visit_xy_line, &state);
     if (code == CLI_EXIT_OK && state.vertices.count == 0) {
         cli_error_set(error, "%s: no vertices found (expected one 'x y' per line)", path);
         code = CLI_EXIT_USAGE;
     }
+    /* A single loop keeps the hole-free rules (the core counts its
+     * vertices); several must each have 3. */
+    if (code == CLI_EXIT_OK && state.loops.count > 0) code = xy_close_loop(&state);
+    else if (code == CLI_EXIT_OK) code = loop_list_push(&state.loops, state.vertices.count) ? CLI_EXIT_INTERNAL : CLI_EXIT_OK;
+    if (code == CLI_EXIT_INTERNAL && !error->message[0]) cli_error_set(error, "%s: out of memory", path);
     if (code != CLI_EXIT_OK) {
         vertex_list_free(&state.vertices);
+        free(state.loops.size);
         return code;
     }
     polygon->count = state.vertices.count;
     polygon->xy = state.vertices.xy;
     polygon->source_line = state.vertices.line;
+    polygon->loops = state.loops.count;
+    polygon->loop_sizes = state.loops.size;
     return CLI_EXIT_OK;
 }
 
@@ -260,9 +309,10 @@ typedef struct obj_state {
     double first_z;
     long first_z_line; /* 0 until the first 'v' line */
     int has_z;         /* some 'v' line gave z */
-    long *loop;        /* 0-based vertex indices of the 'l' line */
-    size_t loop_count;
-    long loop_line;    /* 0 until the 'l' line */
+    long *index;       /* 0-based vertex indices of every 'l' line, one after another */
+    size_t index_count, index_capacity;
+    loop_list lines;   /* how many indices each 'l' line has */
+    long *line_number; /* the file line of each 'l' line */
     cli_error *error;
 } obj_state;
 
@@ -320,33 +370,37 @@ static int obj_loop_index(obj_state *state, const char *field, long number, long
     return 0;
 }
 
-/* Reads the 'l' line. Tokens past MAX_FIELDS are re-split here because a
+/* Reads an 'l' line. Tokens past MAX_FIELDS are re-split here because a
  * polyline lists every vertex on one line. */
 static int obj_polyline(obj_state *state, char *rest, long number)
 {
-    if (state->loop_line) {
-        cli_error_set(state->error, "%s:%ld: a second 'l' line (the first is on line %ld); "
-                      "expected exactly one closed polyline",
-                      state->path, number, state->loop_line);
-        return CLI_EXIT_USAGE;
+    long *numbers = realloc(state->line_number, (state->lines.count + 1) * sizeof *numbers);
+    if (!numbers) {
+        cli_error_set(state->error, "%s: out of memory", state->path);
+        return CLI_EXIT_INTERNAL;
     }
-    state->loop_line = number;
-    size_t capacity = 0;
+    state->line_number = numbers;
+    numbers[state->lines.count] = number;
+    size_t first = state->index_count;
     char *save = NULL;
     for (char *field = strtok_r(rest, " \t\r\v\f", &save); field;
          field = strtok_r(NULL, " \t\r\v\f", &save)) {
-        if (state->loop_count == capacity) {
-            capacity = capacity ? 2 * capacity : 64;
-            long *bigger = realloc(state->loop, capacity * sizeof *bigger);
+        if (state->index_count == state->index_capacity) {
+            size_t capacity = state->index_capacity ? 2 * state->index_capacity : 64;
+            long *bigger = realloc(state->index, capacity * sizeof *bigger);
             if (!bigger) {
                 cli_error_set(state->error, "%s: out of memory", state->path);
                 return CLI_EXIT_INTERNAL;
             }
-            state->loop = bigger;
+            state->index = bigger, state->index_capacity = capacity;
         }
-        if (obj_loop_index(state, field, number, &state->loop[state->loop_count]))
+        if (obj_loop_index(state, field, number, &state->index[state->index_count]))
             return CLI_EXIT_USAGE;
-        state->loop_count++;
+        state->index_count++;
+    }
+    if (loop_list_push(&state->lines, state->index_count - first)) {
+        cli_error_set(state->error, "%s: out of memory", state->path);
+        return CLI_EXIT_INTERNAL;
     }
     return CLI_EXIT_OK;
 }
@@ -375,45 +429,184 @@ static int visit_obj_line(char *line, long number, void *opaque)
     return CLI_EXIT_OK; /* other statements (o, g, vn, ...) do not matter */
 }
 
-/* Checks the polyline and turns it into the polygon: the 'l' order, without
- * the closing repetition of the first index. */
+/* The loops of an OBJ file: vertex indices, one loop after another. */
+typedef struct obj_loops {
+    long *vertex;
+    size_t count;
+    loop_list sizes;
+    long *line; /* an 'l' line of each loop, for messages */
+} obj_loops;
+
+static int obj_add_loop(obj_loops *loops, const long *vertex, size_t size, long line)
+{
+    long *lines = realloc(loops->line, (loops->sizes.count + 1) * sizeof *lines);
+    if (!lines) return -1;
+    loops->line = lines;
+    lines[loops->sizes.count] = line;
+    if (loop_list_push(&loops->sizes, size)) return -1;
+    memcpy(loops->vertex + loops->count, vertex, size * sizeof *vertex);
+    loops->count += size;
+    return 0;
+}
+
+/* Open 'l' lines (MeshLab writes a section as one 'l a b' line per edge)
+ * joined into closed loops at shared vertices: every vertex they use must
+ * end exactly two of their edges. Each loop runs the way its first edge
+ * is written. */
+static int obj_join_edges(obj_state *state, obj_loops *loops, const unsigned char *open)
+{
+    size_t nv = state->vertices.count;
+    long *link = malloc((2 * nv + 1) * sizeof *link), *walk = malloc((state->index_count + 1) * sizeof *walk);
+    long *first_line = malloc((nv + 1) * sizeof *first_line);
+    int code = CLI_EXIT_OK;
+    if (!link || !walk || !first_line) {
+        cli_error_set(state->error, "%s: out of memory", state->path);
+        code = CLI_EXIT_INTERNAL;
+        goto end;
+    }
+    for (size_t v = 0; v < 2 * nv; v++) link[v] = -1;
+    size_t at = 0;
+    for (size_t l = 0; l < state->lines.count && code == CLI_EXIT_OK; at += state->lines.size[l++]) {
+        if (!open[l]) continue;
+        for (size_t i = 0; i + 1 < state->lines.size[l]; i++) {
+            long ends[2] = {state->index[at + i], state->index[at + i + 1]};
+            for (int e = 0; e < 2; e++) {
+                long v = ends[e], w = ends[1 - e];
+                if (link[2 * v] < 0) link[2 * v] = w, first_line[v] = state->line_number[l];
+                else if (link[2 * v + 1] < 0 && v != w) link[2 * v + 1] = w;
+                else {
+                    cli_error_set(state->error, "%s:%ld: vertex %ld ends more than two edges (the 'l' lines "
+                                  "must form closed loops)", state->path, state->line_number[l], v + 1);
+                    code = CLI_EXIT_USAGE;
+                    break;
+                }
+            }
+            if (code != CLI_EXIT_OK) break;
+        }
+    }
+    at = 0;
+    for (size_t l = 0; l < state->lines.count && code == CLI_EXIT_OK; at += state->lines.size[l++]) {
+        if (!open[l]) continue;
+        for (size_t i = 0; i + 1 < state->lines.size[l] && code == CLI_EXIT_OK; i++) {
+            long start = state->index[at + i], prev = start, v = state->index[at + i + 1];
+            if (link[2 * start] == -2) continue; /* on a loop already walked */
+            size_t m = 0;
+            walk[m++] = start;
+            while (v != start && m <= nv) {
+                if (link[2 * v + 1] < 0) break;
+                walk[m++] = v;
+                long next = link[2 * v] == prev ? link[2 * v + 1] : link[2 * v];
+                prev = v, v = next;
+            }
+            if (v != start || link[2 * start + 1] < 0) {
+                long end = link[2 * v + 1] < 0 ? v : start;
+                cli_error_set(state->error, "%s:%ld: the 'l' lines do not close: vertex %ld ends only one edge",
+                              state->path, first_line[end], end + 1);
+                code = CLI_EXIT_USAGE;
+                break;
+            }
+            for (size_t j = 0; j < m; j++) link[2 * walk[j]] = -2;
+            if (obj_add_loop(loops, walk, m, first_line[start])) {
+                cli_error_set(state->error, "%s: out of memory", state->path);
+                code = CLI_EXIT_INTERNAL;
+            }
+        }
+    }
+end:
+    free(link), free(walk), free(first_line);
+    return code;
+}
+
+static double loop_area(const vertex_list *v, const long *loop, size_t m)
+{
+    double sum = 0;
+    for (size_t i = 0; i < m; i++) {
+        const double *a = v->xy + 2 * loop[i], *b = v->xy + 2 * loop[(i + 1) % m];
+        sum += a[0] * b[1] - a[1] * b[0];
+    }
+    return 0.5 * sum;
+}
+
+/* Checks the polylines and turns them into the polygon: each closed 'l'
+ * line a loop in its order without the closing repetition, open ones
+ * joined; the outer loop (largest area: it must contain the others, which
+ * the core checks exactly) first, the holes in file order. */
 static int obj_make_polygon(obj_state *state, polygon_input *polygon)
 {
     const char *path = state->path;
-    if (!state->loop_line) {
+    if (!state->lines.count) {
         cli_error_set(state->error, "%s: no 'l' line; expected one closed polyline", path);
         return CLI_EXIT_USAGE;
     }
-    for (size_t i = 0; i < state->loop_count; i++) {
-        if ((size_t)state->loop[i] >= state->vertices.count) {
-            cli_error_set(state->error, "%s:%ld: vertex index %ld is out of range "
-                          "(the file has %zu vertices)", path, state->loop_line,
-                          state->loop[i] + 1, state->vertices.count);
-            return CLI_EXIT_USAGE;
+    size_t at = 0, opened = 0;
+    unsigned char *open = calloc(state->lines.count, 1);
+    obj_loops loops = {malloc((state->index_count + 1) * sizeof(long)), 0, {0}, NULL};
+    int code = open && loops.vertex ? CLI_EXIT_OK : CLI_EXIT_INTERNAL;
+    if (code != CLI_EXIT_OK) cli_error_set(state->error, "%s: out of memory", path);
+    for (size_t l = 0; l < state->lines.count && code == CLI_EXIT_OK; at += state->lines.size[l++]) {
+        const long *index = state->index + at;
+        size_t size = state->lines.size[l];
+        for (size_t i = 0; i < size; i++)
+            if ((size_t)index[i] >= state->vertices.count) {
+                cli_error_set(state->error, "%s:%ld: vertex index %ld is out of range "
+                              "(the file has %zu vertices)", path, state->line_number[l],
+                              index[i] + 1, state->vertices.count);
+                code = CLI_EXIT_USAGE;
+                break;
+            }
+        if (code != CLI_EXIT_OK) break;
+        if (size >= 2 && index[0] == index[size - 1]) {
+            if (obj_add_loop(&loops, index, size - 1, state->line_number[l])) code = CLI_EXIT_INTERNAL;
+        } else if (state->lines.count == 1 || size < 2) {
+            cli_error_set(state->error, "%s:%ld: the 'l' polyline is not closed: its last "
+                          "index must repeat the first", path, state->line_number[l]);
+            code = CLI_EXIT_USAGE;
+        } else {
+            open[l] = 1, opened++;
         }
     }
-    if (state->loop_count < 2 || state->loop[0] != state->loop[state->loop_count - 1]) {
-        cli_error_set(state->error, "%s:%ld: the 'l' polyline is not closed: its last "
-                      "index must repeat the first", path, state->loop_line);
-        return CLI_EXIT_USAGE;
+    if (code == CLI_EXIT_OK && opened) code = obj_join_edges(state, &loops, open);
+    if (code == CLI_EXIT_INTERNAL && !state->error->message[0]) cli_error_set(state->error, "%s: out of memory", path);
+    size_t outer = 0, count = loops.count;
+    double largest = -1;
+    for (size_t l = 0, first = 0; code == CLI_EXIT_OK && l < loops.sizes.count; first += loops.sizes.size[l++]) {
+        if (loops.sizes.count > 1 && loops.sizes.size[l] < 3) {
+            cli_error_set(state->error, "%s:%ld: a loop of %zu vertices, needs at least 3", path,
+                          loops.line[l], loops.sizes.size[l]);
+            code = CLI_EXIT_USAGE;
+        }
+        double area = fabs(loop_area(&state->vertices, loops.vertex + first, loops.sizes.size[l]));
+        if (area > largest) largest = area, outer = l;
     }
-    size_t count = state->loop_count - 1;
-    polygon->xy = malloc(2 * count * sizeof *polygon->xy);
-    polygon->source_line = malloc(count * sizeof *polygon->source_line);
-    if (!polygon->xy || !polygon->source_line) {
-        cli_error_set(state->error, "%s: out of memory", path);
-        return CLI_EXIT_INTERNAL;
+    if (code == CLI_EXIT_OK) {
+        polygon->xy = malloc(2 * (count + 1) * sizeof *polygon->xy);
+        polygon->source_line = malloc((count + 1) * sizeof *polygon->source_line);
+        polygon->loop_sizes = malloc(loops.sizes.count * sizeof *polygon->loop_sizes);
+        if (!polygon->xy || !polygon->source_line || !polygon->loop_sizes) {
+            cli_error_set(state->error, "%s: out of memory", path);
+            code = CLI_EXIT_INTERNAL;
+        }
     }
-    for (size_t i = 0; i < count; i++) {
-        size_t v = (size_t)state->loop[i];
-        polygon->xy[2 * i] = state->vertices.xy[2 * v];
-        polygon->xy[2 * i + 1] = state->vertices.xy[2 * v + 1];
-        polygon->source_line[i] = state->vertices.line[v];
+    if (code == CLI_EXIT_OK) {
+        size_t out = 0, next_loop = 0;
+        for (size_t pass = 0; pass < 2; pass++) /* the outer loop, then the others */
+            for (size_t l = 0, first = 0; l < loops.sizes.count; first += loops.sizes.size[l++]) {
+                if ((pass == 0) != (l == outer)) continue;
+                polygon->loop_sizes[next_loop++] = loops.sizes.size[l];
+                for (size_t i = 0; i < loops.sizes.size[l]; i++, out++) {
+                    size_t v = (size_t)loops.vertex[first + i];
+                    polygon->xy[2 * out] = state->vertices.xy[2 * v];
+                    polygon->xy[2 * out + 1] = state->vertices.xy[2 * v + 1];
+                    polygon->source_line[out] = state->vertices.line[v];
+                }
+            }
+        polygon->count = count;
+        polygon->loops = loops.sizes.count;
+        polygon->has_z = state->has_z;
+        polygon->z = state->first_z;
     }
-    polygon->count = count;
-    polygon->has_z = state->has_z;
-    polygon->z = state->first_z;
-    return CLI_EXIT_OK;
+    free(open), free(loops.vertex), free(loops.sizes.size), free(loops.line);
+    return code;
 }
 
 static int parse_obj(const char *path, char *text, polygon_input *polygon,
@@ -425,7 +618,7 @@ static int parse_obj(const char *path, char *text, polygon_input *polygon,
     int code = for_each_line(text, visit_obj_line, &state);
     if (code == CLI_EXIT_OK) code = obj_make_polygon(&state, polygon);
     vertex_list_free(&state.vertices);
-    free(state.loop);
+    free(state.index), free(state.lines.size), free(state.line_number);
     return code;
 }
 
@@ -478,5 +671,6 @@ void polygon_input_free(polygon_input *polygon)
 {
     free(polygon->xy);
     free(polygon->source_line);
+    free(polygon->loop_sizes);
     memset(polygon, 0, sizeof *polygon);
 }

@@ -53,7 +53,7 @@ CASES = {
                        ["a.xy", "b.obj"], r"b\.obj:5: .*not closed"),
     "obj_two_polylines": ({"a.xy": SQUARE_TEXT,
                            "b.obj": "v 0 0\nv 1 0\nv 1 1\nv 0 1\nl 1 2 3 4 1\nl 1 2 3 1\n"},
-                          ["a.xy", "b.obj"], r"b\.obj:6: .*exactly one"),
+                          ["a.xy", "b.obj"], r"b\.obj: polygon 1 has 1 hole but polygon 0 has 0"),
     "obj_no_polyline": ({"a.xy": SQUARE_TEXT, "b.obj": "v 0 0\nv 1 0\nv 1 1\n"},
                         ["a.xy", "b.obj"], r"b\.obj: no 'l' line"),
     "obj_index_out_of_range": ({"a.xy": SQUARE_TEXT,

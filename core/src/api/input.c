@@ -184,8 +184,8 @@ static cm_status check_loops_arguments(const cm_loops *polygons, size_t k, cm_er
             return cm_fail(err, CM_ERR_ARGUMENT, "polygon %zu has no loops (NULL xy or loop_sizes, or num_loops 0)", g);
         if (p->num_loops != polygons[0].num_loops) {
             cm_fail_at(err, (long)g, -1, -1);
-            return cm_fail(err, CM_ERR_COUNT_MISMATCH, "polygon %zu has %zu holes but polygon 0 has %zu", g,
-                           p->num_loops - 1, polygons[0].num_loops - 1);
+            return cm_fail(err, CM_ERR_COUNT_MISMATCH, "polygon %zu has %zu hole%s but polygon 0 has %zu", g,
+                           p->num_loops - 1, p->num_loops == 2 ? "" : "s", polygons[0].num_loops - 1);
         }
         size_t total = 0;
         for (size_t l = 0; l < p->num_loops; l++) {
