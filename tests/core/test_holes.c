@@ -131,6 +131,43 @@ static void test_plate(void)
     expect_valid("plate remeshed", &a, &b, 1, 2 * a.n + 100);
 }
 
+/* A thin annulus whose hole is turned half a turn in the second polygon
+ * (hole vertex i sits opposite where it was): no straight chord from the
+ * hole to the outer loop is inside the material in both, so the bridges
+ * need Steiner bends. Valid, 1 hole, Euler characteristic 0; the
+ * construction has Steiner vertices (the bends), at most 2 x 32 of them
+ * plus what the pieces need (80 in all). */
+static void test_turned_hole(void)
+{
+    shape a = {0}, b = {0};
+    add_circle(&a, 0, 0, 1, 24, 1);
+    add_circle(&a, 0, 0, 0.6, 12, -1);
+    b = a;
+    for (size_t i = 24; i < 36; i++) b.xy[2 * i] = -a.xy[2 * i], b.xy[2 * i + 1] = -a.xy[2 * i + 1];
+    cm_loops in[2] = {loops_of(&a), loops_of(&b)};
+    cm_options o;
+    cm_options_init(&o);
+    o.remesh = 0;
+    cm_result *r = NULL;
+    CHECK(cm_triangulate_loops(in, 2, &o, &r) == CM_OK);
+    CHECK_MSG(cm_result_stats(r)->steiner > 0, "the turned hole's bridges bend");
+    cm_result_free(r);
+    expect_valid("turned hole", &a, &b, 0, 80);
+    expect_valid("turned hole remeshed", &a, &b, 1, 2 * a.n + 100);
+    /* two holes, both turned */
+    shape c = {0}, d = {0};
+    add_circle(&c, 0, 0, 1, 32, 1);
+    add_circle(&c, -0.45, 0, 0.3, 10, -1);
+    add_circle(&c, 0.45, 0, 0.3, 10, -1);
+    d = c;
+    for (size_t i = 32; i < 52; i++) {
+        double cx = i < 42 ? -0.45 : 0.45;
+        d.xy[2 * i] = 2 * cx - c.xy[2 * i], d.xy[2 * i + 1] = -c.xy[2 * i + 1];
+    }
+    expect_valid("two turned holes", &c, &d, 0, 200);
+    expect_valid("two turned holes remeshed", &c, &d, 1, 2 * c.n + 100);
+}
+
 /* Bad input: status, a message naming polygon, loop and vertex, the
  * location (vertex: index in the polygon's whole array). */
 static void expect_bad(const char *name, const shape *a, const shape *b, cm_status want,
@@ -246,5 +283,6 @@ int main(void)
     test_hole_free_same();
     test_square_and_disc();
     test_plate();
+    test_turned_hole();
     return check_summary("test_holes");
 }

@@ -322,11 +322,12 @@ static int32_t loop_input_index(const size_t *start, const int *reversed, size_t
 }
 
 /* Triangulates every piece of the cut and glues them into r->mesh
- * (internal numbering: the n loop vertices first). */
+ * (internal numbering: the n loop vertices first, then the paths' bends). */
 static cm_status build_pieces(cm_result *r, const double *const *geoms, size_t k, size_t n,
                               const cm_pieces *pieces, const cm_options *o, cm_progress *progress)
 {
-    cm_mesh whole = {k, n, 0, calloc(k, sizeof(double *)), NULL, NULL, 0};
+    size_t bends = pieces->bends;
+    cm_mesh whole = {k, n + bends, 0, calloc(k, sizeof(double *)), NULL, NULL, 0};
     const double **piece_xy = calloc(k, sizeof *piece_xy);
     double *buffer = NULL;
     cm_status s = CM_ERR_NO_MEMORY;
@@ -336,8 +337,9 @@ static cm_status build_pieces(cm_result *r, const double *const *geoms, size_t k
     buffer = malloc(2 * k * largest * sizeof *buffer);
     if (!whole.xy || !piece_xy || !buffer) goto done;
     for (size_t g = 0; g < k; g++) {
-        if (!(whole.xy[g] = malloc(2 * n * sizeof(double)))) goto done;
+        if (!(whole.xy[g] = malloc(2 * (n + bends) * sizeof(double)))) goto done;
         memcpy(whole.xy[g], geoms[g], 2 * n * sizeof(double));
+        memcpy(whole.xy[g] + 2 * n, pieces->bend_xy[g], 2 * bends * sizeof(double));
     }
     s = CM_OK;
     for (size_t p = 0; p < pieces->count && s == CM_OK; p++) {
@@ -345,7 +347,10 @@ static cm_status build_pieces(cm_result *r, const double *const *geoms, size_t k
         size_t m = pieces->start[p + 1] - pieces->start[p];
         for (size_t g = 0; g < k; g++) {
             double *xy = buffer + 2 * largest * g;
-            for (size_t i = 0; i < m; i++) xy[2 * i] = geoms[g][2 * ids[i]], xy[2 * i + 1] = geoms[g][2 * ids[i] + 1];
+            for (size_t i = 0; i < m; i++) {
+                const double *at = whole.xy[g] + 2 * ids[i]; /* a loop vertex or a bend */
+                xy[2 * i] = at[0], xy[2 * i + 1] = at[1];
+            }
             piece_xy[g] = xy;
         }
         r->stats.fallback_count = 0;
