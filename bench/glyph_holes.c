@@ -111,8 +111,9 @@ int main(int argc, char **argv)
         cm_result_free(r);
         free(g[0].xy), free(g[1].xy);
     }
-    printf("cm_glyph_holes: %d pairs, %d valid, %d failed, %d of them with smallest angle >= min(15, aim/3)\n",
-           total, total - failed, failed, good_angle);
+    printf("cm_glyph_holes: %d pairs, %d valid, %d failed", total, total - failed, failed);
+    if (remesh) printf(", %d with smallest angle >= min(15, aim/3)", good_angle);
+    printf("\n");
     FT_Done_Face(face);
     FT_Done_FreeType(lib);
     if (min_good < 0) min_good = (9 * total + 9) / 10;
