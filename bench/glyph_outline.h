@@ -4,6 +4,8 @@
  *   glyph_outline(face, code, &o)  the outer contour (largest area) of a
  *                                  glyph, curves flattened, counter-clockwise,
  *                                  sharp corners marked
+ *   glyph_contours(face, code, o, max)  every contour of it, the largest
+ *                                  first, then top to bottom
  *   resample(&o, n, xy)            n points along it: every corner kept, the
  *                                  pieces between sampled evenly by arc
  *                                  length, snapped to the grid of
@@ -215,7 +217,7 @@ static void reverse_outline(outline *o)
 }
 
 /* The outer contour of a glyph (largest area), counter-clockwise. */
-static int glyph_outline(FT_Face face, unsigned long code, outline *o)
+static inline int glyph_outline(FT_Face face, unsigned long code, outline *o)
 {
     FT_Outline_Funcs funcs = {on_move, on_line, on_conic, on_cubic, 0, 0};
     glyph_path p = {0};
@@ -242,6 +244,53 @@ static int glyph_outline(FT_Face face, unsigned long code, outline *o)
     mark_corners(o);
     return 0;
 fail:
+    path_free(&p);
+    return -1;
+}
+
+/* Every contour of a glyph (at most max), each counter-clockwise with its
+ * corners marked: the largest first (the outer loop of a glyph with
+ * holes), then the others from the top down (by their centroids' y, then
+ * x), so that the holes of two glyphs pair up in reading order. Returns
+ * the number of contours, -1 on failure. */
+static inline int glyph_contours(FT_Face face, unsigned long code, outline *out, int max)
+{
+    FT_Outline_Funcs funcs = {on_move, on_line, on_conic, on_cubic, 0, 0};
+    glyph_path p = {0};
+    p.scale = 1.0 / face->units_per_EM;
+    int count = 0;
+    double key[64];
+    if (max > 64 || FT_Load_Char(face, code, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING) != 0 ||
+        face->glyph->format != FT_GLYPH_FORMAT_OUTLINE ||
+        FT_Outline_Decompose(&face->glyph->outline, &funcs, &p) != 0 || p.contours > max)
+        goto fail;
+    for (int c = 0; c < p.contours; c++, count++) {
+        outline *o = &out[count];
+        if (take_contour(&p, c, o) != 0) goto fail;
+        double area = contour_area2(o->xy, o->count);
+        if (area < 0) reverse_outline(o);
+        mark_corners(o);
+        if (count > 0 && fabs(area) > contour_area2(out[0].xy, out[0].count)) {
+            outline t = out[0];
+            out[0] = *o, *o = t;
+        }
+    }
+    for (int c = 1; c < count; c++) { /* the holes: top to bottom, then left to right */
+        double cx = 0, cy = 0;
+        for (int i = 0; i < out[c].count; i++) cx += out[c].xy[2 * i], cy += out[c].xy[2 * i + 1];
+        key[c] = -(cy / out[c].count) * 1e3 + cx / out[c].count;
+    }
+    for (int c = 2; c < count; c++) /* insertion sort of the holes */
+        for (int d = c; d > 1 && key[d] < key[d - 1]; d--) {
+            outline t = out[d];
+            out[d] = out[d - 1], out[d - 1] = t;
+            double k = key[d];
+            key[d] = key[d - 1], key[d - 1] = k;
+        }
+    path_free(&p);
+    return count;
+fail:
+    for (int c = 0; c < count; c++) outline_free(&out[c]);
     path_free(&p);
     return -1;
 }

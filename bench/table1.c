@@ -174,7 +174,7 @@ static int measure(const cm_mesh *fixture, size_t n, const method *m, cm_quality
         if (moves < 0) status = -1;
         if (moves == 0) break;
     }
-    cm_mesh out = {1, 0, 0, calloc(1, sizeof(double *)), NULL};
+    cm_mesh out = {1, 0, 0, calloc(1, sizeof(double *)), NULL, NULL, 0};
     if (status == 0 && (!out.xy || !cm_kmesh_check(&km) || cm_kmesh_write(&km, &out) != CM_OK))
         status = -1;
     if (status == 0) cm_mesh_quality(&out, 0, q);

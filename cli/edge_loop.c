@@ -1,6 +1,8 @@
 #include "edge_loop.h"
 
+#include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 /* Where an edge was read, as the message's prefix. */
 static void where(char *out, size_t size, const char *path, long at, int by_index)
@@ -9,13 +11,47 @@ static void where(char *out, size_t size, const char *path, long at, int by_inde
     else snprintf(out, size, "%s:%ld", path, at);
 }
 
-int edge_loop(const char *path, const loop_edge *edges, size_t count, size_t vertex_count, int base, int by_index,
-              long **loop, size_t *length, cli_error *error)
+/* Twice the signed area of the loop of m vertices. */
+static double loop_area2(const double *xy, size_t stride, const long *loop, size_t m)
 {
-    *loop = NULL, *length = 0;
+    double sum = 0;
+    for (size_t i = 0; i < m; i++) {
+        const double *a = xy + stride * (size_t)loop[i], *b = xy + stride * (size_t)loop[(i + 1) % m];
+        sum += a[0] * b[1] - a[1] * b[0];
+    }
+    return sum;
+}
+
+/* Moves the loop of largest area to the front of order (loops of sizes). */
+static int outer_first(const double *xy, size_t stride, long *order, size_t *sizes, size_t loops)
+{
+    size_t outer = 0, first = 0, outer_at = 0;
+    double largest = -1;
+    for (size_t l = 0; l < loops; first += sizes[l++]) {
+        double area = fabs(loop_area2(xy, stride, order + first, sizes[l]));
+        if (area > largest) largest = area, outer = l, outer_at = first;
+    }
+    if (outer == 0) return 0;
+    size_t m = sizes[outer];
+    long *keep = malloc(m * sizeof *keep);
+    if (!keep) return -1;
+    memcpy(keep, order + outer_at, m * sizeof *keep);
+    memmove(order + m, order, outer_at * sizeof *order);
+    memcpy(order, keep, m * sizeof *keep);
+    free(keep);
+    memmove(sizes + 1, sizes, outer * sizeof *sizes);
+    sizes[0] = m;
+    return 0;
+}
+
+int edge_loops(const char *path, const loop_edge *edges, size_t count, const double *xy, size_t stride,
+               size_t vertex_count,
+               int base, int by_index, long **loops, size_t **sizes, size_t *loop_count, cli_error *error)
+{
+    *loops = NULL, *sizes = NULL, *loop_count = 0;
     char at[512];
     if (count == 0) {
-        cli_error_set(error, "%s: no edges; expected one closed polyline", path);
+        cli_error_set(error, "%s: no edges; expected closed polylines", path);
         return CLI_EXIT_USAGE;
     }
     /* The (at most two) edges at every vertex. */
@@ -55,7 +91,7 @@ int edge_loop(const char *path, const loop_edge *edges, size_t count, size_t ver
             if (code != CLI_EXIT_OK) break;
             if (slot[1] >= 0) {
                 cli_error_set(error, "%s: vertex %ld has a third edge (the others at %s %ld and %ld): "
-                              "the polyline branches; expected exactly one closed polyline",
+                              "the polyline branches; expected closed polylines",
                               at, v + base, by_index ? "edges" : "lines", edges[slot[0]].where,
                               edges[slot[1]].where);
                 code = CLI_EXIT_USAGE;
@@ -73,38 +109,35 @@ int edge_loop(const char *path, const loop_edge *edges, size_t count, size_t ver
                           v + base);
             code = CLI_EXIT_USAGE;
         }
-    /* Every vertex touched has two edges: walk the loop through edges[0]. */
-    size_t n = 0;
-    if (code == CLI_EXIT_OK) {
-        long v = edges[0].a, e = 0;
+    /* Every vertex touched has two edges: walk loop after loop, each from
+     * the first edge not on an earlier one. */
+    size_t n = 0, *size = NULL, loops_found = 0;
+    char *on = code == CLI_EXIT_OK ? calloc(count, 1) : NULL;
+    if (code == CLI_EXIT_OK && !(on && (size = malloc(count * sizeof *size)))) {
+        cli_error_set(error, "%s: out of memory", path);
+        code = CLI_EXIT_INTERNAL;
+    }
+    for (size_t start = 0; code == CLI_EXIT_OK && start < count; start++) {
+        if (on[start]) continue;
+        size_t first = n;
+        long v = edges[start].a, e = (long)start;
         do {
             order[n++] = v;
+            on[e] = 1;
             v = edges[e].a == v ? edges[e].b : edges[e].a;
             e = incident[v][0] == e ? incident[v][1] : incident[v][0];
-        } while (v != edges[0].a && n <= count);
-        if (n < count) {
-            /* The first edge not on the loop starts another one. */
-            char *on = calloc(count, 1);
-            if (!on) {
-                cli_error_set(error, "%s: out of memory", path);
-                code = CLI_EXIT_INTERNAL;
-            } else {
-                for (size_t i = 0; i < n; i++) on[incident[order[i]][0]] = on[incident[order[i]][1]] = 1;
-                size_t other = 0;
-                while (on[other]) other++;
-                where(at, sizeof at, path, edges[other].where, by_index);
-                cli_error_set(error, "%s: this edge is on a second closed polyline (the first has %zu "
-                              "vertices); expected exactly one", at, n);
-                code = CLI_EXIT_USAGE;
-                free(on);
-            }
-        }
+        } while (v != edges[start].a && n <= count);
+        size[loops_found++] = n - first;
     }
-    free(incident);
+    free(incident), free(on);
+    if (code == CLI_EXIT_OK && outer_first(xy, stride, order, size, loops_found)) {
+        cli_error_set(error, "%s: out of memory", path);
+        code = CLI_EXIT_INTERNAL;
+    }
     if (code != CLI_EXIT_OK) {
-        free(order);
+        free(order), free(size);
         return code;
     }
-    *loop = order, *length = n;
+    *loops = order, *sizes = size, *loop_count = loops_found;
     return CLI_EXIT_OK;
 }

@@ -1,6 +1,6 @@
-/* One closed polygon from the edges of a polyline file (OBJ `l` elements,
- * PLY edge elements): the edges, in any order and either direction, must
- * form exactly one closed loop. */
+/* The loops of a polygon from the edges of a polyline file (OBJ `l`
+ * elements, PLY edge elements): the edges, in any order and either
+ * direction, must form closed loops (the outer boundary and its holes). */
 #ifndef CM_CLI_EDGE_LOOP_H
 #define CM_CLI_EDGE_LOOP_H
 
@@ -15,17 +15,20 @@ typedef struct loop_edge {
     long where;
 } loop_edge;
 
-/* Chains edges[0..count) over vertex_count vertices (messages number
- * them from base: 1 for OBJ, 0 for PLY) into one loop, starting
- * at edges[0].a and leaving it along edges[0] (so a file listing the loop
- * in order keeps that order). Vertices no edge touches are ignored. On
- * success *loop (malloc'ed) holds the *length vertices in order. Errors
- * ("PATH:WHERE: ...", or "PATH: edge WHERE: ..." when by_index) name the
- * edge where the problem shows: an index out of range, an edge from a
- * vertex to itself or repeated, a branching vertex, an open end, several
- * loops, no edge at all. Returns CLI_EXIT_OK, CLI_EXIT_USAGE or
- * CLI_EXIT_INTERNAL (out of memory). */
-int edge_loop(const char *path, const loop_edge *edges, size_t count, size_t vertex_count, int base, int by_index,
-              long **loop, size_t *length, cli_error *error);
+/* Chains edges[0..count) over vertex_count vertices (vertex v at
+ * xy[stride * v], xy[stride * v + 1]; messages number vertices from base: 1 for OBJ, 0 for PLY) into
+ * closed loops. Each loop starts at the first edge (in file order) not on
+ * an earlier one and leaves along it, so a file listing a loop in order
+ * keeps that order; the loop of largest area comes first (the outer one),
+ * the others follow in file order. Vertices no edge touches are ignored.
+ * On success *loops (malloc'ed) holds the vertices, loop after loop, and
+ * *sizes (malloc'ed) the *loop_count loop lengths. Errors ("PATH:WHERE:
+ * ...", or "PATH: edge WHERE: ..." when by_index) name the edge where the
+ * problem shows: an index out of range, an edge from a vertex to itself or
+ * repeated, a branching vertex, an open end, no edge at all. Returns
+ * CLI_EXIT_OK, CLI_EXIT_USAGE or CLI_EXIT_INTERNAL (out of memory). */
+int edge_loops(const char *path, const loop_edge *edges, size_t count, const double *xy, size_t stride,
+               size_t vertex_count,
+               int base, int by_index, long **loops, size_t **sizes, size_t *loop_count, cli_error *error);
 
 #endif

@@ -298,9 +298,11 @@ int parse_ply(const char *path, const char *data, size_t length, polygon_input *
         }
     }
     long *loop = NULL;
-    size_t count = 0;
+    size_t count = 0, *sizes = NULL, loops = 0;
     if (code == CLI_EXIT_OK)
-        code = edge_loop(path, edges, (size_t)edge->count, (size_t)vertex->count, 0, binary, &loop, &count, error);
+        code = edge_loops(path, edges, (size_t)edge->count, xyz, 3, (size_t)vertex->count, 0, binary, &loop, &sizes,
+                          &loops, error);
+    for (size_t l = 0; l < loops; l++) count += sizes[l];
     if (code == CLI_EXIT_OK) {
         polygon->xy = malloc(2 * count * sizeof *polygon->xy);
         polygon->source_line = malloc(count * sizeof *polygon->source_line);
@@ -313,11 +315,14 @@ int parse_ply(const char *path, const char *data, size_t length, polygon_input *
                 polygon->source_line[i] = line[loop[i]];
             }
             polygon->count = count;
+            polygon->loops = loops;
+            polygon->loop_sizes = sizes;
+            sizes = NULL;
             polygon->by_index = binary;
             polygon->has_z = iz >= 0;
             polygon->z = iz >= 0 ? xyz[2] : 0;
         }
     }
-    free(xyz), free(line), free(edges), free(loop);
+    free(xyz), free(line), free(edges), free(loop), free(sizes);
     return code;
 }

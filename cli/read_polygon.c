@@ -202,15 +202,55 @@ static int for_each_line(char *text, int (*visit)(char *, long, void *),
 
 /* ---- .xy text ---------------------------------------------------------- */
 
+/* Loop sizes as a file lists its loops. */
+typedef struct loop_list {
+    size_t *size;
+    size_t count, capacity;
+} loop_list;
+
+static int loop_list_push(loop_list *list, size_t size)
+{
+    if (list->count == list->capacity) {
+        size_t capacity = list->capacity ? 2 * list->capacity : 4;
+        size_t *bigger = realloc(list->size, capacity * sizeof *bigger);
+        if (!bigger) return -1;
+        list->size = bigger, list->capacity = capacity;
+    }
+    list->size[list->count++] = size;
+    return 0;
+}
+
 typedef struct xy_state {
     const char *path;
     vertex_list vertices;
+    loop_list loops;
+    size_t loop_first; /* first vertex of the loop being read */
+    long loop_line;    /* the line of its first vertex */
     cli_error *error;
 } xy_state;
+
+/* Ends the loop being read (none yet: nothing to do). */
+static int xy_close_loop(xy_state *state)
+{
+    size_t size = state->vertices.count - state->loop_first;
+    if (size == 0) return CLI_EXIT_OK;
+    if (size < 3) {
+        cli_error_set(state->error, "%s:%ld: loop %zu has %zu vertices, needs at least 3",
+                      state->path, state->loop_line, state->loops.count, size);
+        return CLI_EXIT_USAGE;
+    }
+    if (loop_list_push(&state->loops, size)) {
+        cli_error_set(state->error, "%s: out of memory", state->path);
+        return CLI_EXIT_INTERNAL;
+    }
+    state->loop_first = state->vertices.count;
+    return CLI_EXIT_OK;
+}
 
 static int visit_xy_line(char *line, long number, void *opaque)
 {
     xy_state *state = opaque;
+    if (line[0] == '>') return xy_close_loop(state);
     strip_comment(line);
     char *fields[MAX_FIELDS];
     int count = split_fields(line, 1, fields);
@@ -229,6 +269,7 @@ static int visit_xy_line(char *line, long number, void *opaque)
     if (parse_coordinate(fields[0], &x, state->path, number, state->error) ||
         parse_coordinate(fields[1], &y, state->path, number, state->error))
         return CLI_EXIT_USAGE;
+    if (state->vertices.count == state->loop_first) state->loop_line = number;
     if (vertex_list_push(&state->vertices, x, y, number)) {
         cli_error_set(state->error, "%s: out of memory", state->path);
         return CLI_EXIT_INTERNAL;
@@ -239,19 +280,27 @@ static int visit_xy_line(char *line, long number, void *opaque)
 static int parse_xy(const char *path, char *text, polygon_input *polygon,
                     cli_error *error)
 {
-    xy_state state = {path, {0}, error};
+    xy_state state = {path, {0}, {0}, 0, 0, error};
     int code = for_each_line(text, visit_xy_line, &state);
     if (code == CLI_EXIT_OK && state.vertices.count == 0) {
         cli_error_set(error, "%s: no vertices found (expected one 'x y' per line)", path);
         code = CLI_EXIT_USAGE;
     }
+    /* A single loop keeps the hole-free rules (the core counts its
+     * vertices); several must each have 3. */
+    if (code == CLI_EXIT_OK && state.loops.count > 0) code = xy_close_loop(&state);
+    else if (code == CLI_EXIT_OK) code = loop_list_push(&state.loops, state.vertices.count) ? CLI_EXIT_INTERNAL : CLI_EXIT_OK;
+    if (code == CLI_EXIT_INTERNAL && !error->message[0]) cli_error_set(error, "%s: out of memory", path);
     if (code != CLI_EXIT_OK) {
         vertex_list_free(&state.vertices);
+        free(state.loops.size);
         return code;
     }
     polygon->count = state.vertices.count;
     polygon->xy = state.vertices.xy;
     polygon->source_line = state.vertices.line;
+    polygon->loops = state.loops.count;
+    polygon->loop_sizes = state.loops.size;
     return CLI_EXIT_OK;
 }
 
@@ -381,23 +430,24 @@ static int visit_obj_line(char *line, long number, void *opaque)
     return CLI_EXIT_OK; /* other statements (o, g, vn, ...) do not matter */
 }
 
-/* Chains the 'l' edges into the polygon. */
+/* Chains the 'l' edges into the polygon's loops. */
 static int obj_make_polygon(obj_state *state, polygon_input *polygon)
 {
     const char *path = state->path;
     if (!state->l_line) {
-        cli_error_set(state->error, "%s: no 'l' line; expected one closed polyline", path);
+        cli_error_set(state->error, "%s: no 'l' line; expected closed polylines", path);
         return CLI_EXIT_USAGE;
     }
     long *loop;
-    size_t count;
-    int code = edge_loop(path, state->edges, state->edge_count, state->vertices.count, 1, 0, &loop, &count,
-                         state->error);
+    size_t count = 0, *sizes, loops;
+    int code = edge_loops(path, state->edges, state->edge_count, state->vertices.xy, 2, state->vertices.count, 1, 0,
+                          &loop, &sizes, &loops, state->error);
     if (code != CLI_EXIT_OK) return code;
+    for (size_t l = 0; l < loops; l++) count += sizes[l];
     polygon->xy = malloc(2 * count * sizeof *polygon->xy);
     polygon->source_line = malloc(count * sizeof *polygon->source_line);
     if (!polygon->xy || !polygon->source_line) {
-        free(loop);
+        free(loop), free(sizes);
         cli_error_set(state->error, "%s: out of memory", path);
         return CLI_EXIT_INTERNAL;
     }
@@ -409,6 +459,8 @@ static int obj_make_polygon(obj_state *state, polygon_input *polygon)
     }
     free(loop);
     polygon->count = count;
+    polygon->loops = loops;
+    polygon->loop_sizes = sizes;
     polygon->has_z = state->has_z;
     polygon->z = state->first_z;
     return CLI_EXIT_OK;
@@ -478,5 +530,6 @@ void polygon_input_free(polygon_input *polygon)
 {
     free(polygon->xy);
     free(polygon->source_line);
+    free(polygon->loop_sizes);
     memset(polygon, 0, sizeof *polygon);
 }

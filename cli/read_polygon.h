@@ -15,16 +15,23 @@ typedef struct polygon_input {
     double *xy;
     long *source_line;
     int by_index;     /* binary files: source_line[i] is the vertex's index in the file */
+    /* Loops: the outer loop, then the holes, one after another in xy;
+     * loops >= 1 entries of loop_sizes (summing to count). */
+    size_t loops;
+    size_t *loop_sizes;
     int has_z;        /* an OBJ file gave z (the same for every vertex) */
     double z;         /* that z, else 0 */
 } polygon_input;
 
 /* Reads `path` into *polygon. Files ending in ".obj" (any case) are read as
- * an OBJ polyline ("v x y [z]" lines and "l" lines whose edges form one
- * closed loop, the polygon following the first "l" line, z constant);
- * ".ply" as a PLY edge mesh (read_ply.h); anything else as ".xy" text
- * (one "x y" vertex per line, blanks and/or one comma between the numbers,
- * '#' to end of line is a comment, blank lines ignored).
+ * an OBJ polyline ("v x y [z]" lines and "l" lines whose edges form
+ * closed loops, z constant); ".ply" as a PLY edge mesh (read_ply.h); with
+ * several loops the outer one is the one of largest area, the holes follow
+ * in file order, each loop in the order of its first edge. Anything else
+ * as ".xy" text (one "x y" vertex per line, blanks and/or one comma between
+ * the numbers, '#' to end of line is a comment, blank lines ignored; a
+ * line beginning with '>' ends a loop, GMT's multi-segment convention: the
+ * outer loop first, then the holes).
  * A file longer than max_bytes is refused after reading max_bytes + 1
  * bytes (so /dev/zero is refused too), with a message naming the limit.
  * Returns CLI_EXIT_OK on success. Otherwise leaves *polygon empty, sets

@@ -338,14 +338,27 @@ static int compute(triangulation *t, cli_error *error)
         cli_error_set(error, "out of memory");
         return CLI_EXIT_INTERNAL;
     }
-    for (size_t g = 0; g < k; g++) xy[g] = t->polygons[g].xy, counts[g] = t->polygons[g].count;
+    cm_loops *loops = malloc(k * sizeof *loops);
+    if (!loops) {
+        free(xy), free(counts);
+        cli_error_set(error, "out of memory");
+        return CLI_EXIT_INTERNAL;
+    }
+    int holes = 0;
+    for (size_t g = 0; g < k; g++) {
+        const polygon_input *p = &t->polygons[g];
+        xy[g] = p->xy, counts[g] = p->count;
+        loops[g] = (cm_loops){p->xy, p->loop_sizes, p->loops};
+        holes |= p->loops > 1;
+    }
     t->options.progress = cli_progress;
     t->options.pins = t->args->pins, t->options.num_pins = t->args->pin_count;
     double start = seconds_now();
-    cm_status status = cm_triangulate_polygons(xy, counts, k, &t->options, &t->result);
+    cm_status status = holes ? cm_triangulate_loops(loops, k, &t->options, &t->result)
+                             : cm_triangulate_polygons(xy, counts, k, &t->options, &t->result);
     cli_progress_done();
     t->seconds_total = seconds_now() - start;
-    free(xy), free(counts);
+    free(xy), free(counts), free(loops);
     if (status == CM_OK) return CLI_EXIT_OK;
     if (status == CM_ERR_CANCELLED) cli_error_set(error, "interrupted; nothing written");
     else describe_failure(t, status, error);
@@ -364,8 +377,10 @@ int triangulation_run(triangulation *t, const triangulation_args *args, cli_erro
     t->options = args->options;
     int code = read_inputs(t, error);
     if (code == CLI_EXIT_OK && !args->correspondence_given) { /* pins or counts decide */
-        int differ = 0;
-        for (size_t g = 1; g < args->input_count; g++) differ |= t->polygons[g].count != t->polygons[0].count;
+        int differ = 0, holes = 0;
+        for (size_t g = 0; g < args->input_count; g++) holes |= t->polygons[g].loops > 1;
+        /* loops correspond by index (the core names the loop whose sizes differ) */
+        for (size_t g = 1; g < args->input_count && !holes; g++) differ |= t->polygons[g].count != t->polygons[0].count;
         if (args->pin_count || args->options.pin_corners_deg > 0) t->options.correspondence = CM_CORRESPOND_ARCLENGTH;
         else if (differ) t->options.correspondence = CM_CORRESPOND_AUTO;
     }

@@ -123,6 +123,7 @@ static void write_head(FILE *file, const cm_stats *stats)
     fprintf(file, "  \"n\": %zu,\n  \"k\": %zu,\n", stats->n, stats->k);
     fprintf(file, "  \"vertices\": %zu,\n  \"steiner\": %zu,\n  \"triangles\": %zu,\n",
             stats->vertices, stats->steiner, stats->triangles);
+    fprintf(file, "  \"holes\": %zu,\n  \"bridges\": %zu,\n", stats->holes, stats->bridges);
 }
 
 int write_report(const char *path, const report_info *info, cli_error *error)

@@ -127,12 +127,46 @@ static void write_edges(FILE *file, const panel *p, const int32_t *triangles, si
     fputs("\"/>\n", file);
 }
 
-static void write_boundary(FILE *file, const panel *p, size_t n)
+static int compare_edges(const void *a, const void *b)
 {
+    int64_t x = *(const int64_t *)a, y = *(const int64_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* The boundary: the edges of one triangle only, chained into closed
+ * loops (the outer loop and every hole). Returns -1 out of memory. */
+static int write_boundary(FILE *file, const panel *p, const int32_t *triangles, size_t count,
+                          size_t vertices)
+{
+    int64_t *edges = malloc((3 * count + 1) * sizeof *edges);
+    int32_t *next = malloc((vertices + 1) * sizeof *next);
+    if (!edges || !next) {
+        free(edges), free(next);
+        return -1;
+    }
+    for (size_t v = 0; v < vertices; v++) next[v] = -1;
+    for (size_t c = 0; c < 3 * count; c++)
+        edges[c] = (int64_t)triangles[c] * (int64_t)vertices + triangles[c - c % 3 + (c + 1) % 3];
+    qsort(edges, 3 * count, sizeof *edges, compare_edges);
+    for (size_t c = 0; c < 3 * count; c++) {
+        int64_t a = edges[c] / (int64_t)vertices, b = edges[c] % (int64_t)vertices;
+        int64_t twin = b * (int64_t)vertices + a;
+        if (!bsearch(&twin, edges, 3 * count, sizeof *edges, compare_edges)) next[a] = (int32_t)b;
+    }
     fputs("<path class=\"boundary\" d=\"", file);
-    move_to(file, p, 0);
-    for (size_t v = 1; v < n; v++) line_to(file, p, v);
-    fputs("Z\"/>\n", file);
+    for (size_t start = 0; start < vertices; start++) {
+        if (next[start] < 0) continue;
+        move_to(file, p, start);
+        for (int32_t v = next[start], w; v >= 0 && (size_t)v != start; v = w) {
+            line_to(file, p, (size_t)v);
+            w = next[v], next[v] = -1;
+        }
+        next[start] = -1;
+        fputs("Z", file);
+    }
+    fputs("\"/>\n", file);
+    free(edges), free(next);
+    return 0;
 }
 
 /* Dots as zero-length round-capped segments: one element for all of them. */
@@ -178,8 +212,8 @@ static void write_caption(FILE *file, const panel *p, const char *name, size_t n
             p->left, y + 16.0, n, steiner, min_angle);
 }
 
-static void write_panel(FILE *file, const panel *p, const svg_meshes *meshes,
-                        const char *name, double *angles)
+static int write_panel(FILE *file, const panel *p, const svg_meshes *meshes,
+                       const char *name, double *angles)
 {
     const int32_t *triangles = meshes->triangles;
     size_t count = meshes->count;
@@ -192,11 +226,12 @@ static void write_panel(FILE *file, const panel *p, const svg_meshes *meshes,
         fputs("\"/>\n", file);
     }
     write_edges(file, p, triangles, count);
-    write_boundary(file, p, meshes->n);
+    if (write_boundary(file, p, triangles, count, meshes->vertices)) return -1;
     write_steiner(file, p, meshes->n, meshes->vertices);
     write_caption(file, p, name, meshes->n, meshes->vertices - meshes->n,
                   count > 0 ? angles[worst] : 0.0);
     fputs("</g>\n", file);
+    return 0;
 }
 
 int write_svg_meshes(const char *path, const svg_meshes *meshes, cli_error *error)
@@ -225,10 +260,15 @@ int write_svg_meshes(const char *path, const svg_meshes *meshes, cli_error *erro
                 width, height, width, height);
         fputs(STYLE, file);
         fputs("<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n", file);
-        for (size_t g = 0; g < k; g++)
-            write_panel(file, &panels[g], meshes, meshes->names[g], angles);
+        int failed = 0;
+        for (size_t g = 0; g < k && !failed; g++)
+            failed = write_panel(file, &panels[g], meshes, meshes->names[g], angles);
         fputs("</svg>\n", file);
         code = output_close(file, path, error);
+        if (failed && code == CLI_EXIT_OK) {
+            cli_error_set(error, "out of memory");
+            code = CLI_EXIT_INTERNAL;
+        }
     }
     free(panels);
     free(angles);

@@ -34,6 +34,9 @@ struct Polygon {
   bool spatial = false;     // given as n x 3
   std::vector<double> xyz;  // 3n, the input, when spatial
   compatmesh::PlaneFrame frame;
+  // With holes: the loops' sizes (outer first), the loops one after
+  // another in xy; empty for one loop.
+  std::vector<std::size_t> loop_sizes;
   std::size_t size() const { return xy.size() / 2; }
 };
 
@@ -69,8 +72,42 @@ FloatArray real_array(py::handle object, const std::string &what)
   return a;
 }
 
+// A polygon given as a list or tuple of loops (n x 2 arrays, the outer loop
+// first): its first item is two-dimensional, where a list of points has
+// points (one-dimensional) as items.
+bool is_loop_list(py::handle object)
+{
+  if (!py::isinstance<py::list>(object) && !py::isinstance<py::tuple>(object)) return false;
+  py::sequence items = py::reinterpret_borrow<py::sequence>(object);
+  if (py::len(items) == 0) return false;
+  py::object first = items[0];
+  if (py::isinstance<py::array>(first)) return py::array(first).ndim() == 2;
+  if (!py::isinstance<py::list>(first) && !py::isinstance<py::tuple>(first)) return false;
+  py::sequence inner = py::reinterpret_borrow<py::sequence>(first);
+  if (py::len(inner) == 0) return false;
+  py::object point = inner[0];
+  return py::isinstance<py::list>(point) || py::isinstance<py::tuple>(point) || py::isinstance<py::array>(point);
+}
+
+Polygon read_loops(py::handle object, std::size_t index)
+{
+  Polygon polygon;
+  std::size_t l = 0;
+  for (py::handle item : object) {
+    std::string name = "polygon " + std::to_string(index) + ", loop " + std::to_string(l++);
+    FloatArray a = real_array(item, name);
+    if (a.ndim() != 2 || a.shape(1) != 2)
+      throw py::value_error(name + ": expected an n x 2 array (loops of a polygon with holes are planar), got shape " +
+                            shape_of(a));
+    polygon.xy.insert(polygon.xy.end(), a.data(), a.data() + 2 * a.shape(0));
+    polygon.loop_sizes.push_back(std::size_t(a.shape(0)));
+  }
+  return polygon;
+}
+
 Polygon read_polygon(py::handle object, std::size_t index, double tolerance)
 {
+  if (is_loop_list(object)) return read_loops(object, index);
   std::string name = "polygon " + std::to_string(index);
   FloatArray a = real_array(object, name);
   if (a.ndim() != 2 || (a.shape(1) != 2 && a.shape(1) != 3))
@@ -340,6 +377,8 @@ py::dict stats_of(const cm_result *result)
   stats["k"] = s->k;
   stats["vertices"] = s->vertices;
   stats["steiner"] = s->steiner;
+  stats["holes"] = s->holes;
+  stats["bridges"] = s->bridges;
   stats["triangles"] = s->triangles;
   stats["reversed_input"] = bool(s->reversed_input);
   stats["fallback_count"] = s->fallback_count;
@@ -434,17 +473,23 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
   for (py::handle item : polygons_in) polygons->push_back(read_polygon(item, polygons->size(), tolerance));
   std::vector<const double *> data;
   std::vector<std::size_t> counts;
+  std::vector<cm_loops> loops;
+  bool holes = false;
   for (const Polygon &p : *polygons) {
     data.push_back(p.xy.data());
     counts.push_back(p.size());
+    holes |= p.loop_sizes.size() > 1;
   }
+  for (const Polygon &p : *polygons)
+    loops.push_back(cm_loops{p.xy.data(), p.loop_sizes.empty() ? &counts[loops.size()] : p.loop_sizes.data(),
+                             p.loop_sizes.empty() ? 1 : p.loop_sizes.size()});
   // Without a word from the caller, pins or different counts mean arc
   // length (index needs equal counts).
   bool differ = false;
   for (std::size_t c : counts) differ |= c != counts.front();
   if (!callbacks->correspondence_given && (!callbacks->pins.empty() || options.pin_corners_deg > 0))
     options.correspondence = CM_CORRESPOND_ARCLENGTH;
-  else if (!callbacks->correspondence_given && differ)
+  else if (!callbacks->correspondence_given && differ && !holes)  // loops correspond by index
     options.correspondence = CM_CORRESPOND_AUTO;
   for (std::size_t j = 0; j < callbacks->pins.size(); j++) {
     if (callbacks->pins[j].size() != polygons->size())
@@ -461,7 +506,8 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
   cm_status status;
   {
     py::gil_scoped_release no_gil;
-    status = cm_triangulate_polygons(data.data(), counts.data(), polygons->size(), &options, &raw);
+    status = holes ? cm_triangulate_loops(loops.data(), polygons->size(), &options, &raw)
+                   : cm_triangulate_polygons(data.data(), counts.data(), polygons->size(), &options, &raw);
   }
   ResultPtr result(raw);
   relay.rethrow();
@@ -693,7 +739,7 @@ PYBIND11_MODULE(compatmesh, m)
                     "dict of int32 arrays: next, to_vertex, face (-1 on the boundary), "
                     "vertex_halfedge, face_halfedge; h ^ 1 is the opposite of h")
       .def_readonly("stats", &Result::stats,
-                    "dict: the fields of cm_stats (n, k, vertices, steiner, triangles, "
+                    "dict: the fields of cm_stats (n, k, vertices, steiner, holes, bridges, triangles, "
                     "reversed_input, fallback_count, steiner_before_remesh, remesh_iterations, remesh_aim_deg, "
                     "ceiling_deg, corner_fan_cap_deg, correspondence_bound_deg, modulus_distortion, "
                     "distortion_quad, correspondence_bound_before_deg (None unless auto chose the starts), "
@@ -713,7 +759,11 @@ index: one triangle list that is a valid triangulation of every polygon.
 polygons: a sequence of k arrays, each n x 2, or n x 3 for a polygon in any
     plane of 3D (fitted by least squares and mapped to 2D and back; the
     normal points to +x, +y or +z, whichever it is closest to, so the winding
-    is kept).
+    is kept). A polygon with holes is a list of n_j x 2 arrays, the outer
+    loop first, then the holes; every polygon then has the same number of
+    loops of the same sizes (loop j corresponds to loop j, vertex by index),
+    and the result's vertices are the loops' vertices in that order, then
+    the Steiner vertices.
 options: keyword arguments named like the fields of the C struct cm_options,
     defaults from cm_options_init (see compatmesh.h for their meaning):
     method          compatmesh.Method, its int value, or "overlay" / "partition"

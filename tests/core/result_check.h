@@ -62,35 +62,67 @@ static inline int rc_edge_cmp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-static inline int rc_area_matches(const double *xy, const int32_t *tri, size_t nt,
-                                  const double *poly, size_t n, int reversed)
+/* Twice the signed area of loop poly[0..n-1], added to sum exactly (a fan
+ * from its first vertex: the shoelace sum). */
+static inline void rc_add_loop_area2(mpq_t sum, const double *poly, size_t n, mpq_t t0, mpq_t t1,
+                                     mpq_t t2, mpq_t t3)
 {
-    mpq_t tris, ring, t0, t1, t2, t3;
-    mpq_inits(tris, ring, t0, t1, t2, t3, NULL);
+    for (size_t i = 1; i + 1 < n; i++)
+        rc_add_area2(sum, poly, poly + 2 * i, poly + 2 * (i + 1), t0, t1, t2, t3);
+}
+
+/* The triangles' areas add up to the outer loop's minus the holes'. */
+static inline int rc_area_matches(const double *xy, const int32_t *tri, size_t nt,
+                                  const cm_loops *poly, const int *orientation)
+{
+    mpq_t tris, ring, loop, t0, t1, t2, t3;
+    mpq_inits(tris, ring, loop, t0, t1, t2, t3, NULL);
     for (size_t t = 0; t < nt; t++)
         rc_add_area2(tris, xy + 2 * tri[3 * t], xy + 2 * tri[3 * t + 1], xy + 2 * tri[3 * t + 2],
                      t0, t1, t2, t3);
-    /* Fan from vertex 0: the shoelace sum of the polygon, exactly. */
-    for (size_t i = 1; i + 1 < n; i++)
-        rc_add_area2(ring, poly, poly + 2 * i, poly + 2 * (i + 1), t0, t1, t2, t3);
-    if (reversed) mpq_neg(ring, ring);
+    const double *at = poly->xy;
+    for (size_t l = 0; l < poly->num_loops; l++) {
+        mpq_set_ui(loop, 0, 1);
+        rc_add_loop_area2(loop, at, poly->loop_sizes[l], t0, t1, t2, t3);
+        /* the outer loop counts positive, the holes negative */
+        if ((orientation[l] < 0) != (l > 0)) mpq_neg(loop, loop);
+        mpq_add(ring, ring, loop);
+        at += 2 * poly->loop_sizes[l];
+    }
     int equal = mpq_equal(tris, ring) != 0;
-    mpq_clears(tris, ring, t0, t1, t2, t3, NULL);
+    mpq_clears(tris, ring, loop, t0, t1, t2, t3, NULL);
     return equal;
 }
 
-static inline int rc_check(const cm_result *r, const double *const *polygons, size_t k, size_t n,
-                           char *why, size_t size)
+/* The loop and position of vertex v (< n) of a polygon with these loops. */
+static inline size_t rc_loop_of(const cm_loops *p, size_t v, size_t *first)
+{
+    size_t l = 0, at = 0;
+    while (v >= at + p->loop_sizes[l]) at += p->loop_sizes[l++];
+    *first = at;
+    return l;
+}
+
+/* rc_check for polygons with holes: the boundary edges are exactly the
+ * loops' edges, the outer loop counter-clockwise and the holes clockwise
+ * (each loop's input order or its reverse), V - E + F = 1 - holes, and the
+ * areas add up to the outer loop's minus the holes'. */
+static inline int rc_check_loops(const cm_result *r, const cm_loops *polygons, size_t k,
+                                 char *why, size_t size)
 {
     if (!r || cm_result_status(r) != CM_OK) return rc_fail(why, size, "not a successful result");
-    size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
+    size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r), n = 0;
+    const cm_loops *p0 = &polygons[0];
+    for (size_t l = 0; l < p0->num_loops; l++) n += p0->loop_sizes[l];
     const int32_t *tri = cm_result_triangles(r);
-    const cm_stats *stats = cm_result_stats(r);
     if (cm_result_num_geometries(r) != k) return rc_fail(why, size, "%zu geometries", cm_result_num_geometries(r));
     if (nv < n || !tri || nt == 0) return rc_fail(why, size, "%zu vertices, %zu triangles", nv, nt);
-    int reversed = stats->reversed_input;
+    int orientation[64];
+    if (p0->num_loops > 64) return rc_fail(why, size, "too many loops for the checker");
+    for (size_t l = 0, at = 0; l < p0->num_loops; at += p0->loop_sizes[l++])
+        orientation[l] = cm_polygon_orientation(p0->xy + 2 * at, (long)p0->loop_sizes[l]);
 
-    /* Topology: directed edges once each, boundary = polygon edges. */
+    /* Topology: directed edges once each, boundary = loop edges. */
     int64_t *edges = malloc(3 * nt * sizeof *edges);
     if (!edges) return rc_fail(why, size, "out of memory");
     for (size_t t = 0; t < nt; t++)
@@ -118,40 +150,57 @@ static inline int rc_check(const cm_result *r, const double *const *polygons, si
         }
         undirected++;
         boundary++;
-        /* A boundary edge must be a polygon edge, running counter-clockwise. */
-        int64_t from = reversed ? b : a, to = reversed ? a : b;
-        if (from >= (int64_t)n || to != (from + 1) % (int64_t)n) {
+        /* A boundary edge must be a loop edge, with the material on its left. */
+        size_t first = 0, l = (size_t)a < n ? rc_loop_of(p0, (size_t)a, &first) : 0;
+        int material_left = (l == 0) == (orientation[l] > 0);
+        int64_t from = material_left ? a : b, to = material_left ? b : a, m = (int64_t)p0->loop_sizes[l];
+        if (a >= (int64_t)n || b >= (int64_t)n || from < (int64_t)first || from >= (int64_t)first + m ||
+            to != (int64_t)first + (from - (int64_t)first + 1) % m) {
             free(edges);
-            return rc_fail(why, size, "boundary edge %lld-%lld is not a polygon edge",
+            return rc_fail(why, size, "boundary edge %lld-%lld is not a loop edge",
                            (long long)a, (long long)b);
         }
     }
     free(edges);
-    if (boundary != n) return rc_fail(why, size, "%zu boundary edges for %zu polygon edges", boundary, n);
-    if ((long)nv - (long)undirected + (long)nt != 1)
-        return rc_fail(why, size, "Euler characteristic %ld", (long)nv - (long)undirected + (long)nt);
+    long euler = 2 - (long)p0->num_loops;
+    if (boundary != n) return rc_fail(why, size, "%zu boundary edges for %zu loop edges", boundary, n);
+    if ((long)nv - (long)undirected + (long)nt != euler)
+        return rc_fail(why, size, "Euler characteristic %ld, expected %ld",
+                       (long)nv - (long)undirected + (long)nt, euler);
 
     /* Geometry, every polygon. */
     for (size_t g = 0; g < k; g++) {
         const double *xy = cm_result_vertices(r, g);
         if (!xy) return rc_fail(why, size, "geometry %zu missing", g);
-        if (memcmp(xy, polygons[g], 2 * n * sizeof *xy) != 0)
+        if (memcmp(xy, polygons[g].xy, 2 * n * sizeof *xy) != 0)
             return rc_fail(why, size, "geometry %zu: input vertices changed", g);
         for (size_t v = 0; v < 2 * nv; v++)
             if (!isfinite(xy[v])) return rc_fail(why, size, "geometry %zu: vertex %zu not finite", g, v / 2);
         for (size_t t = 0; t < nt; t++)
             if (cm_orient2d(xy + 2 * tri[3 * t], xy + 2 * tri[3 * t + 1], xy + 2 * tri[3 * t + 2]) <= 0)
                 return rc_fail(why, size, "geometry %zu: triangle %zu is not counter-clockwise", g, t);
-        if (!rc_area_matches(xy, tri, nt, polygons[g], n, reversed))
+        if (!rc_area_matches(xy, tri, nt, &polygons[g], orientation))
             return rc_fail(why, size, "geometry %zu: triangle areas do not add up to the polygon's", g);
     }
     return 1;
 }
 
+static inline int rc_check(const cm_result *r, const double *const *polygons, size_t k, size_t n,
+                           char *why, size_t size)
+{
+    cm_loops *loops = malloc((k + 1) * sizeof *loops);
+    if (!loops) return rc_fail(why, size, "out of memory");
+    for (size_t g = 0; g < k; g++) loops[g] = (cm_loops){polygons[g], &n, 1};
+    int ok = rc_check_loops(r, loops, k, why, size);
+    free(loops);
+    return ok;
+}
+
 /* The half-edge arrays of r agree with its triangles: h and h ^ 1 are
  * opposite (different end vertices), every face's next cycle has length 3
- * within the face, n boundary half-edges, 2 (V + F - 1) in all. */
-static inline int rc_check_halfedges(const cm_result *r, size_t n, char *why, size_t size)
+ * within the face, n boundary half-edges, 2 (V + F - (1 - holes)) in all. */
+static inline int rc_check_halfedges_holes(const cm_result *r, size_t n, size_t holes, char *why,
+                                           size_t size)
 {
     size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
     size_t nh = cm_result_num_halfedges(r), boundary = 0;
@@ -167,9 +216,14 @@ static inline int rc_check_halfedges(const cm_result *r, size_t n, char *why, si
         if (next[next[next[h]]] != (int32_t)h || face[next[h]] != face[h])
             return rc_fail(why, size, "half-edge %zu: its face's next cycle is not a triangle", h);
     }
-    if (boundary != n || nh != 2 * (nv + nt - 1))
+    if (boundary != n || nh + 2 != 2 * (nv + nt + holes))
         return rc_fail(why, size, "%zu half-edges, %zu on the boundary", nh, boundary);
     return 1;
+}
+
+static inline int rc_check_halfedges(const cm_result *r, size_t n, char *why, size_t size)
+{
+    return rc_check_halfedges_holes(r, n, 0, why, size);
 }
 
 /* rc_check and rc_check_halfedges, for a test that wants a yes or no. */

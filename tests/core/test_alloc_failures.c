@@ -6,12 +6,16 @@
  * own calls (the static library's objects) through the counters below;
  * GMP's and UMFPACK's allocations are their libraries' own and not
  * counted. Run for every allocation of a triangulation with remeshing, a
- * convex morph and a sweep. */
+ * convex morph and a sweep, and of the construction for polygons with
+ * holes whose bridges need Steiner bends. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include <math.h>
+
 #include "check.h"
+#include "geom/angle.h"
 #include "random_polygons.h"
 #include "result_check.h"
 
@@ -62,6 +66,65 @@ static cm_status run(const double *const *polygons, char *where, size_t size)
     return s;
 }
 
+/* Annuli, the hole turned half a turn in the second (bent bridges). */
+#define HOLE_OUTER 12
+#define HOLE_INNER 6
+static double annulus[2][2 * (HOLE_OUTER + HOLE_INNER)];
+static const size_t annulus_sizes[2] = {HOLE_OUTER, HOLE_INNER};
+static int bent; /* the last successful run had Steiner vertices (bends) */
+
+static cm_status run_holes(char *where, size_t size)
+{
+    cm_loops in[2] = {{annulus[0], annulus_sizes, 2}, {annulus[1], annulus_sizes, 2}};
+    cm_options o; /* the remesher's allocations are the first run's */
+    cm_options_init(&o);
+    o.remesh = 0;
+    cm_result *r = NULL;
+    cm_status s = cm_triangulate_loops(in, 2, &o, &r);
+    snprintf(where, size, "holes: %s", r ? cm_result_message(r) : "out of memory (no handle)");
+    char why[256] = "";
+    paused = 1;
+    int valid = s != CM_OK || rc_check_loops(r, in, 2, why, sizeof why);
+    paused = 0;
+    if (!valid) {
+        snprintf(where, size, "holes: success, but invalid: %s", why);
+        s = CM_ERR_INTERNAL;
+    }
+    if (s == CM_OK) bent = cm_result_stats(r)->steiner > 0;
+    cm_result_free(r);
+    return s;
+}
+
+static void test_holes(void)
+{
+    for (int g = 0; g < 2; g++)
+        for (int i = 0; i < HOLE_OUTER + HOLE_INNER; i++) {
+            int outer = i < HOLE_OUTER;
+            double a = outer ? 2 * CM_PI * i / HOLE_OUTER : -2 * CM_PI * (i - HOLE_OUTER) / HOLE_INNER;
+            double radius = outer ? 1 : 0.6, turn = !outer && g ? CM_PI : 0;
+            annulus[g][2 * i] = radius * cos(a + turn), annulus[g][2 * i + 1] = radius * sin(a + turn);
+        }
+    char where[512];
+    calls = 0, fail_at = -1;
+    CHECK_MSG(run_holes(where, sizeof where) == CM_OK, "the run without failures: %s", where);
+    CHECK_MSG(strstr(where, "holes: ") && bent, "the turned annulus's bridges bend");
+    long total = calls, reported = 0;
+    /* Every one of the first 1000 (validation, bridges, the first pieces),
+     * then a sample: the pieces' partitions allocate tens of thousands of
+     * times, and their allocations are the hole-free run's above. */
+    for (long i = 1; i <= total; i += i < 1000 ? 1 : 211) {
+        calls = 0, fail_at = i;
+        cm_status s = run_holes(where, sizeof where);
+        if (s == CM_OK) continue;
+        reported++;
+        CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
+                  "holes: allocation %ld of %ld failed: status %s, %s", i, total, cm_status_string(s), where);
+    }
+    printf("holes: %ld allocations, the first 1000 and every 211th failed once: %ld reported out of memory\n",
+           total, reported);
+    CHECK(total > 50 && reported > 0);
+}
+
 int main(void)
 {
     double a[2 * N], b[2 * N];
@@ -86,5 +149,6 @@ int main(void)
     printf("%ld allocations, each failed once: %ld reported out of memory, %ld absorbed\n", total,
            reported, absorbed);
     CHECK(total > 100 && reported > 0);
+    test_holes();
     return check_summary("test_alloc_failures");
 }

@@ -183,7 +183,7 @@ static void test_link_splits(void)
         int32_t boundary[40];
         for (int i = 0; i < 40; i++) boundary[i] = i;
         r->n = 40;
-        CHECK(cm_halfedge_build_and_check(r, boundary) == CM_OK);
+        CHECK(cm_halfedge_build_and_check(r, boundary, NULL, 1) == CM_OK);
         CHECK(st.fallback_count == 0);
         splits += st.link_splits;
         cm_result_free(r);

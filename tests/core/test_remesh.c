@@ -129,8 +129,8 @@ static int random_operation(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *w
 /* After begin, random operations, rollback: the mesh must be as before. */
 static int rollback_restores(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *work)
 {
-    cm_mesh before = {km->k, 0, 0, calloc(km->k, sizeof(double *)), NULL};
-    cm_mesh after = {km->k, 0, 0, calloc(km->k, sizeof(double *)), NULL};
+    cm_mesh before = {km->k, 0, 0, calloc(km->k, sizeof(double *)), NULL, NULL, 0};
+    cm_mesh after = {km->k, 0, 0, calloc(km->k, sizeof(double *)), NULL, NULL, 0};
     int ok = before.xy && after.xy && cm_kmesh_write(km, &before) == CM_OK && cm_kmesh_tx_begin(km) == 0;
     for (int i = 0; ok && i < 8; i++) ok = random_operation(km, rng, star, work) == 0;
     ok = ok && cm_kmesh_tx_rollback(km) == 0 && cm_kmesh_write(km, &after) == CM_OK;

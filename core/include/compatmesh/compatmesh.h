@@ -242,6 +242,8 @@ typedef struct cm_stats {
      * chosen (what the choice bought); 0 otherwise. */
     double correspondence_bound_before_deg;
     double seconds_ceiling;      /* computing the ceiling (both when auto) */
+    size_t holes;            /* hole loops per polygon (cm_triangulate_loops) */
+    size_t bridges;          /* chords that cut the holes open */
 } cm_stats;
 
 /* Quality of one geometry of the result. */
@@ -271,6 +273,39 @@ CM_API cm_status cm_triangulate(const double *xy, size_t k, size_t n,
 CM_API cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *counts,
                                   size_t k, const cm_options *options,
                                   cm_result **result);
+
+/* One polygon with holes: an outer loop and num_loops - 1 hole loops,
+ * stored one after another (no repeated closing vertex). */
+typedef struct cm_loops {
+    const double *xy;         /* 2 * (sum of loop_sizes) doubles */
+    const size_t *loop_sizes; /* num_loops vertex counts, the outer loop first */
+    size_t num_loops;         /* 1 + the number of holes, >= 1 */
+} cm_loops;
+
+/* Compatibly triangulates k polygons with holes: every polygon has the
+ * same number of loops of the same sizes; loop l of every polygon
+ * corresponds to loop l, vertex i of a loop to vertex i (index
+ * correspondence only). Each loop may run either way (the same way in every
+ * polygon); the holes must lie strictly inside the outer loop, outside each
+ * other, and no loop may touch another. Failures of validation name the
+ * polygon, the loop and the vertex within the loop; the error location's
+ * vertex is the index into the polygon's whole xy array.
+ *
+ * The holes are cut open by straight chords between loop vertices, each
+ * valid in every polygon (two per hole, disjoint), into simple pieces that
+ * are triangulated as by cm_triangulate and glued along the chords. When no
+ * such chords exist the call fails with CM_ERR_INTERNAL and says which hole.
+ *
+ * The result: the input vertices first, in input order (outer loop, then
+ * each hole), bit-identical, then the Steiner vertices; its boundary edges
+ * are exactly the loops' edges; V - E + F = 1 - holes. The half-edge
+ * arrays chain each loop's boundary half-edges separately. Remeshing runs
+ * as for cm_triangulate (the loops are never touched). Such a result is not
+ * morphed (cm_morph_create refuses it), and cm_check_geometry and
+ * cm_result_from_meshes take one boundary loop only. With one loop per
+ * polygon this is cm_triangulate_polygons. */
+CM_API cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k,
+                                      const cm_options *options, cm_result **result);
 
 CM_API void cm_result_free(cm_result *result);
 
@@ -410,8 +445,8 @@ typedef struct cm_morph cm_morph;
  *   morph:   receives a new handle, also on failure (then it carries the
  *            message, cm_morph_message); NULL only when even the handle
  *            could not be allocated. Always cm_morph_free it.
- * Returns CM_ERR_ARGUMENT (NULL or failed result, unknown method),
- * CM_ERR_CANCELLED, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL when no enclosure
+ * Returns CM_ERR_ARGUMENT (NULL or failed result, unknown method, a result
+ * of polygons with holes: not morphed), CM_ERR_CANCELLED, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL when no enclosure
  * could be built (no bridge from the polygon to the enclosure valid in
  * every geometry) or a mean value weight is not positive in doubles. The
  * linear method builds nothing and always succeeds on a valid result. */

@@ -89,7 +89,7 @@ static cm_status build_checked(cm_result *r, const double *const *xy, size_t k, 
     if (!boundary) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     for (size_t j = 0; j < n; j++) boundary[j] = (int32_t)(clockwise && j > 0 ? n - j : j);
     cm_fail_at(&r->error, -1, -1, -1);
-    s = cm_halfedge_build_and_check(r, boundary);
+    s = cm_halfedge_build_and_check(r, boundary, NULL, 1);
     free(boundary);
     if (s == CM_ERR_NO_MEMORY) return cm_fail(&r->error, s, "out of memory");
     if (s != CM_OK) {

@@ -53,8 +53,8 @@ static int alloc_halfedges(cm_result *r, size_t nh)
 /* Pairs the triangles' directed edges into edges; unpaired ones must be the
  * boundary cycle. Fills he_to, he_face, he_next (inside triangles) and
  * he_of_slot. Returns the number of edges, or -1 / -2 (memory / invalid). */
-static long pair_edges(cm_result *r, const int32_t *boundary, int32_t *he_of_slot,
-                       int32_t *boundary_he)
+static long pair_edges(cm_result *r, const int32_t *boundary, const size_t *loop_start,
+                       int32_t *he_of_slot, int32_t *boundary_he)
 {
     const cm_mesh *m = &r->mesh;
     size_t ns = 3 * m->nt, n = r->n;
@@ -107,16 +107,17 @@ static long pair_edges(cm_result *r, const int32_t *boundary, int32_t *he_of_slo
     free(e);
     /* Boundary half-edges must run boundary[i+1] -> boundary[i]. */
     for (size_t i = 0; i < n; i++) {
-        int32_t h = boundary_he[boundary[(i + 1) % n]];
+        int32_t h = boundary_he[boundary[cm_loops_next(loop_start, n, i)]];
         if (h < 0 || r->he_to[h] != boundary[i]) {
-            cm_fail_at(&r->error, -1, boundary[i], boundary[(i + 1) % n]);
+            cm_fail_at(&r->error, -1, boundary[i], boundary[cm_loops_next(loop_start, n, i)]);
             return -2;
         }
     }
     return edge;
 }
 
-cm_status cm_halfedge_build_and_check(cm_result *r, const int32_t *boundary)
+cm_status cm_halfedge_build_and_check(cm_result *r, const int32_t *boundary,
+                                      const size_t *loop_start, size_t num_loops)
 {
     cm_status s = check_orientation(r);
     if (s != CM_OK) return s;
@@ -128,22 +129,22 @@ cm_status cm_halfedge_build_and_check(cm_result *r, const int32_t *boundary)
     s = CM_ERR_NO_MEMORY;
     if (!he_of_slot || !boundary_he) goto done;
     for (size_t v = 0; v < nv; v++) boundary_he[v] = -1;
-    long ne = pair_edges(r, boundary, he_of_slot, boundary_he);
+    long ne = pair_edges(r, boundary, loop_start, he_of_slot, boundary_he);
     if (ne == -1) goto done;
     s = CM_ERR_INTERNAL;
     if (ne < 0) {
         if (r->error.vertex >= 0)
-            cm_fail(&r->error, s, "check: at edge %ld-%ld the triangles do not form a disk bounded by the input polygon",
+            cm_fail(&r->error, s, "check: at edge %ld-%ld the triangles do not form a surface bounded by the input loops",
                     r->error.vertex, r->error.other);
         else
-            cm_fail(&r->error, s, "check: the triangles do not form a disk bounded by the input polygon");
+            cm_fail(&r->error, s, "check: the triangles do not form a surface bounded by the input loops");
         goto done;
     }
     size_t nh = r->nh;
     for (size_t t = 0; t < nt; t++)
         for (int i = 0; i < 3; i++) r->he_next[he_of_slot[3 * t + i]] = he_of_slot[3 * t + (i + 1) % 3];
     for (size_t i = 0; i < n; i++) {
-        int32_t h = boundary_he[boundary[(i + 1) % n]];
+        int32_t h = boundary_he[boundary[cm_loops_next(loop_start, n, i)]];
         r->he_next[h] = boundary_he[boundary[i]];
     }
     for (size_t t = 0; t < nt; t++) r->face_he[t] = he_of_slot[3 * t];
@@ -174,8 +175,11 @@ cm_status cm_halfedge_build_and_check(cm_result *r, const int32_t *boundary)
             goto done;
         }
     }
-    if ((long)nv - ne + (long)nt != 1) {
-        cm_fail(&r->error, s, "check: Euler characteristic %ld, not a disk", (long)nv - ne + (long)nt);
+    /* Connected, manifold, bounded by the loops: Euler characteristic
+     * 1 - holes says it is a disk with those holes, nothing of higher genus. */
+    long euler = 2 - (long)(loop_start ? num_loops : 1);
+    if ((long)nv - ne + (long)nt != euler) {
+        cm_fail(&r->error, s, "check: Euler characteristic %ld, expected %ld", (long)nv - ne + (long)nt, euler);
         goto done;
     }
     s = CM_OK;

@@ -10,6 +10,7 @@
 #include "api/result.h"
 #include "base/clock.h"
 #include "base/progress.h"
+#include "construct/holes.h"
 #include "construct/overlay.h"
 #include "correspond/bound.h"
 #include "correspond/choose.h"
@@ -224,7 +225,7 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
     int32_t *boundary = malloc(n * sizeof *boundary);
     if (!boundary) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     for (size_t j = 0; j < n; j++) boundary[j] = input_index((int32_t)j, n, clockwise);
-    s = cm_halfedge_build_and_check(r, boundary);
+    s = cm_halfedge_build_and_check(r, boundary, NULL, 1);
     free(boundary);
     if (s == CM_ERR_NO_MEMORY) return cm_fail_status(&r->error, s);
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
@@ -399,4 +400,198 @@ cm_status cm_triangulate(const double *xy, size_t k, size_t n, const cm_options 
     }
     free(polygons), free(counts);
     return s;
+}
+
+/* ---- polygons with holes ----------------------------------------------- */
+
+/* Internal vertex j of loop l (material to its left) is input vertex
+ * start[l] + j, or start[l] + (m - j) % m for a reversed loop. */
+static int32_t loop_input_index(const size_t *start, const int *reversed, size_t l, size_t j)
+{
+    size_t m = start[l + 1] - start[l];
+    return (int32_t)(start[l] + (reversed[l] && j ? m - j : j));
+}
+
+/* Triangulates every piece of the cut and glues them into r->mesh
+ * (internal numbering: the n loop vertices first, then the paths' bends). */
+static cm_status build_pieces(cm_result *r, const double *const *geoms, size_t k, size_t n,
+                              const cm_pieces *pieces, const cm_options *o, cm_progress *progress)
+{
+    size_t bends = pieces->bends;
+    cm_mesh whole = {k, n + bends, 0, calloc(k, sizeof(double *)), NULL, NULL, 0};
+    const double **piece_xy = calloc(k, sizeof *piece_xy);
+    double *buffer = NULL;
+    cm_status s = CM_ERR_NO_MEMORY;
+    size_t largest = 0, fallbacks = 0;
+    for (size_t p = 0; p < pieces->count; p++)
+        if (pieces->start[p + 1] - pieces->start[p] > largest) largest = pieces->start[p + 1] - pieces->start[p];
+    buffer = malloc(2 * k * largest * sizeof *buffer);
+    if (!whole.xy || !piece_xy || !buffer) goto done;
+    for (size_t g = 0; g < k; g++) {
+        if (!(whole.xy[g] = malloc(2 * (n + bends) * sizeof(double)))) goto done;
+        memcpy(whole.xy[g], geoms[g], 2 * n * sizeof(double));
+        memcpy(whole.xy[g] + 2 * n, pieces->bend_xy[g], 2 * bends * sizeof(double));
+    }
+    s = CM_OK;
+    for (size_t p = 0; p < pieces->count && s == CM_OK; p++) {
+        const int32_t *ids = pieces->vertex + pieces->start[p];
+        size_t m = pieces->start[p + 1] - pieces->start[p];
+        for (size_t g = 0; g < k; g++) {
+            double *xy = buffer + 2 * largest * g;
+            for (size_t i = 0; i < m; i++) {
+                const double *at = whole.xy[g] + 2 * ids[i]; /* a loop vertex or a bend */
+                xy[2 * i] = at[0], xy[2 * i + 1] = at[1];
+            }
+            piece_xy[g] = xy;
+        }
+        r->stats.fallback_count = 0;
+        s = build_first(r, piece_xy, k, m, 0, o, progress);
+        fallbacks += r->stats.fallback_count;
+        if (s == CM_OK && cm_holes_glue(&whole, ids, m, &r->mesh) != CM_OK)
+            s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        else if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
+            char detail[sizeof r->error.message];
+            snprintf(detail, sizeof detail, "%s", r->error.message);
+            cm_fail(&r->error, s, "piece %zu of %zu the hole bridges cut: %s", p, pieces->count, detail);
+        }
+        cm_mesh_clear(&r->mesh);
+    }
+    r->stats.fallback_count = fallbacks;
+done:
+    if (s == CM_OK) {
+        r->mesh = whole;
+    } else {
+        cm_mesh_clear(&whole);
+        if (s == CM_ERR_NO_MEMORY) cm_fail_status(&r->error, s);
+    }
+    free(piece_xy), free(buffer);
+    return s;
+}
+
+/* Internal numbering back to input order: loop vertex j of r->mesh moves
+ * to position perm[j]; Steiner vertices keep theirs. */
+static cm_status permute_loop_vertices(cm_result *r, const int32_t *perm, size_t n)
+{
+    cm_mesh *m = &r->mesh;
+    double *tmp = malloc(2 * n * sizeof *tmp);
+    if (!tmp) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    for (size_t g = 0; g < m->k; g++) {
+        for (size_t j = 0; j < n; j++)
+            tmp[2 * perm[j]] = m->xy[g][2 * j], tmp[2 * perm[j] + 1] = m->xy[g][2 * j + 1];
+        memcpy(m->xy[g], tmp, 2 * n * sizeof *tmp);
+    }
+    free(tmp);
+    for (size_t t = 0; t < 3 * m->nt; t++)
+        if ((size_t)m->tri[t] < n) m->tri[t] = perm[m->tri[t]];
+    return CM_OK;
+}
+
+static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o)
+{
+    cm_progress progress;
+    cm_progress_init(&progress, o->progress, o->progress_user);
+    double t0 = cm_seconds_now();
+    if (cm_progress_report(&progress, CM_STAGE_VALIDATE, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
+    if (o->correspondence != CM_CORRESPOND_INDEX)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT,
+                       "polygons with holes take the index correspondence only (equal loop sizes)");
+    size_t num_loops = polygons && k ? polygons[0].num_loops : 0;
+    int *reversed = malloc((num_loops + 1) * sizeof *reversed);
+    size_t *start = malloc((num_loops + 1) * sizeof *start);
+    double **geoms = calloc(k + 1, sizeof *geoms);
+    int32_t *perm = NULL;
+    cm_pieces pieces = {0};
+    cm_status s = reversed && start && geoms ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    if (s == CM_OK) s = cm_input_validate_loops(polygons, k, &r->error, reversed);
+    if (s != CM_OK) goto done;
+    start[0] = 0;
+    for (size_t l = 0; l < num_loops; l++) start[l + 1] = start[l] + polygons[0].loop_sizes[l];
+    size_t n = start[num_loops];
+    r->n = n;
+    r->stats.n = n, r->stats.k = k, r->stats.holes = num_loops - 1;
+    r->stats.reversed_input = reversed[0];
+    if (!(perm = malloc(n * sizeof *perm))) goto oom;
+    for (size_t l = 0; l < num_loops; l++)
+        for (size_t j = 0; j < start[l + 1] - start[l]; j++)
+            perm[start[l] + j] = loop_input_index(start, reversed, l, j);
+    for (size_t g = 0; g < k; g++) {
+        if (!(geoms[g] = malloc(2 * n * sizeof *geoms[g]))) goto oom;
+        for (size_t v = 0; v < n; v++)
+            geoms[g][2 * v] = polygons[g].xy[2 * perm[v]], geoms[g][2 * v + 1] = polygons[g].xy[2 * perm[v] + 1];
+    }
+    double t1 = cm_seconds_now();
+    r->stats.seconds_validate = t1 - t0;
+    if (cm_progress_report(&progress, CM_STAGE_TRIANGULATE, 0.0)) {
+        s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
+        goto done;
+    }
+    s = cm_holes_cut((const double *const *)geoms, k, start, num_loops, &pieces, &r->error);
+    r->stats.bridges = pieces.chords;
+    if (s == CM_OK) s = build_pieces(r, (const double *const *)geoms, k, n, &pieces, o, &progress);
+    if (s != CM_OK) goto done;
+    r->stats.seconds_build = cm_seconds_now() - t1;
+    r->mesh.loop_start = start, r->mesh.num_loops = num_loops; /* the remesher's boundary */
+    s = remesh_stage(r, n, o, &progress);
+    r->mesh.loop_start = NULL, r->mesh.num_loops = 0;
+    if (s != CM_OK) goto done;
+    if ((s = permute_loop_vertices(r, perm, n)) != CM_OK) goto done;
+    double t2 = cm_seconds_now();
+    if (cm_progress_report(&progress, CM_STAGE_CHECK, 0.0)) {
+        s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
+        goto done;
+    }
+    s = cm_halfedge_build_and_check(r, perm, start, num_loops);
+    if (s == CM_ERR_NO_MEMORY) cm_fail_status(&r->error, s);
+    if (s != CM_OK) goto done;
+    r->stats.seconds_check = cm_seconds_now() - t2;
+    s = cm_result_measure(r);
+    if (s == CM_OK && cm_progress_report(&progress, CM_STAGE_DONE, 0.0)) s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
+    goto done;
+oom:
+    s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+done:
+    if (geoms)
+        for (size_t g = 0; g < k; g++) free(geoms[g]);
+    free(geoms), free(reversed), free(start), free(perm);
+    cm_pieces_free(&pieces);
+    return s;
+}
+
+cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_options *options,
+                               cm_result **result)
+{
+    int holes = 0;
+    for (size_t g = 0; polygons && g < k; g++) holes |= polygons[g].num_loops != 1;
+    if (polygons && k && !holes) { /* hole-free: exactly cm_triangulate_polygons */
+        const double **xy = malloc(k * sizeof *xy);
+        size_t *counts = malloc(k * sizeof *counts);
+        cm_status s = CM_ERR_NO_MEMORY;
+        if (xy && counts) {
+            for (size_t g = 0; g < k; g++)
+                xy[g] = polygons[g].xy, counts[g] = polygons[g].loop_sizes ? polygons[g].loop_sizes[0] : 0;
+            s = cm_triangulate_polygons(xy, counts, k, options, result);
+        } else if (result) {
+            *result = NULL;
+        }
+        free(xy), free(counts);
+        return s;
+    }
+    if (!result) return CM_ERR_ARGUMENT;
+    cm_result *r = calloc(1, sizeof *r);
+    *result = r;
+    if (!r) return CM_ERR_NO_MEMORY;
+    cm_error_init(&r->error);
+    cm_options defaults;
+    if (!options) {
+        cm_options_init(&defaults);
+        options = &defaults;
+    }
+    cm_status s = CM_OK;
+    if (options->method != CM_METHOD_OVERLAY && options->method != CM_METHOD_PARTITION)
+        s = cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
+    if (s == CM_OK) s = check_remesh_options(r, options);
+    if (s == CM_OK) s = check_correspondence_options(r, options);
+    if (s == CM_OK) s = run_loops(r, polygons, k, options);
+    if (s != CM_OK) cm_result_clear_geometry(r);
+    return cm_error_close(&r->error, s);
 }

@@ -11,7 +11,18 @@ typedef struct cm_mesh {
     size_t nv, nt;   /* vertices, triangles */
     double **xy;     /* k arrays of 2 * nv doubles */
     int32_t *tri;    /* 3 * nt indices, counter-clockwise */
+    /* The boundary when it has holes: loop l is vertices loop_start[l] ..
+     * loop_start[l + 1] - 1 (num_loops + 1 offsets), the outer loop
+     * counter-clockwise, the holes clockwise. NULL: one loop, 0 .. n - 1.
+     * Not owned. */
+    const size_t *loop_start;
+    size_t num_loops;
 } cm_mesh;
+
+/* The vertex after / before vertex i (< n) along its loop, the loops
+ * being loop_start[l] .. loop_start[l + 1] - 1 (NULL: one loop 0 .. n - 1). */
+size_t cm_loops_next(const size_t *loop_start, size_t n, size_t i);
+size_t cm_loops_prev(const size_t *loop_start, size_t n, size_t i);
 
 /* Frees the arrays; the mesh is empty (k kept). */
 void cm_mesh_clear(cm_mesh *mesh);

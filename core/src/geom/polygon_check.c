@@ -30,6 +30,7 @@ typedef struct status_node {
 typedef struct scanline {
     const double *xy;
     long n;
+    const long *succ, *pred; /* loops: the vertex after / before; NULL: one cycle */
     status_node *node; /* indexed by edge */
     long root;
     long hit_a, hit_b; /* the offending pair, once found */
@@ -47,6 +48,16 @@ static const double *vertex_at(const scanline *sw, long v)
     return sw->xy + 2 * (v % sw->n);
 }
 
+static long succ_of(const scanline *sw, long v)
+{
+    return sw->succ ? sw->succ[v] : (v + 1) % sw->n;
+}
+
+static long pred_of(const scanline *sw, long v)
+{
+    return sw->pred ? sw->pred[v] : (v + sw->n - 1) % sw->n;
+}
+
 static const double *edge_start(const scanline *sw, long e)
 {
     return vertex_at(sw, e);
@@ -54,7 +65,7 @@ static const double *edge_start(const scanline *sw, long e)
 
 static const double *edge_end(const scanline *sw, long e)
 {
-    return vertex_at(sw, e + 1);
+    return vertex_at(sw, succ_of(sw, e));
 }
 
 static int same_point(const double a[2], const double b[2])
@@ -85,8 +96,8 @@ static int consecutive_overlap(const scanline *sw, long first, long second)
 
 static int edges_offend(const scanline *sw, long i, long j)
 {
-    if ((i + 1) % sw->n == j) return consecutive_overlap(sw, i, j);
-    if ((j + 1) % sw->n == i) return consecutive_overlap(sw, j, i);
+    if (succ_of(sw, i) == j) return consecutive_overlap(sw, i, j);
+    if (succ_of(sw, j) == i) return consecutive_overlap(sw, j, i);
     return cm_segments_intersect(edge_start(sw, i), edge_end(sw, i),
                                  edge_start(sw, j), edge_end(sw, j)) != 0;
 }
@@ -225,10 +236,10 @@ static int event_order(const void *pa, const void *pb)
  * enter it. Returns 1 if an offending pair is found. */
 static int process_vertex(scanline *sw, long v)
 {
-    long n = sw->n, incoming = (v + n - 1) % n, outgoing = v;
+    long incoming = pred_of(sw, v), outgoing = v;
     const double *p = vertex_at(sw, v);
-    int incoming_ends = cm_point_less(vertex_at(sw, v + n - 1), p);
-    int outgoing_ends = cm_point_less(vertex_at(sw, v + 1), p);
+    int incoming_ends = cm_point_less(vertex_at(sw, incoming), p);
+    int outgoing_ends = cm_point_less(vertex_at(sw, succ_of(sw, v)), p);
     if (incoming_ends && status_remove(sw, incoming)) return 1;
     if (outgoing_ends && status_remove(sw, outgoing)) return 1;
     if (!incoming_ends && status_insert(sw, incoming, p)) return 1;
@@ -260,26 +271,56 @@ static int run_scanline(scanline *sw, vertex_event *events)
     return 0;
 }
 
-int cm_polygon_find_intersection(const double *xy, long n, long *edge_a,
-                                 long *edge_b)
+static int find_intersection(scanline *sw, long *edge_a, long *edge_b)
 {
-    scanline sw = {xy, n, NULL, -1, -1, -1};
     int found;
+    long n = sw->n;
     if (n < 2) {
         found = 0;
     } else if (n == 2) { /* the two edges coincide */
-        record_hit(&sw, 0, 1);
+        record_hit(sw, 0, 1);
         found = 1;
     } else if ((size_t)n > SIZE_MAX / sizeof(status_node)) {
         found = -1;
     } else {
         vertex_event *events = malloc((size_t)n * sizeof *events);
-        sw.node = malloc((size_t)n * sizeof *sw.node);
-        found = events && sw.node ? run_scanline(&sw, events) : -1;
+        sw->node = malloc((size_t)n * sizeof *sw->node);
+        found = events && sw->node ? run_scanline(sw, events) : -1;
         free(events);
-        free(sw.node);
+        free(sw->node);
     }
-    if (edge_a) *edge_a = found == 1 ? sw.hit_a : -1;
-    if (edge_b) *edge_b = found == 1 ? sw.hit_b : -1;
+    if (edge_a) *edge_a = found == 1 ? sw->hit_a : -1;
+    if (edge_b) *edge_b = found == 1 ? sw->hit_b : -1;
+    return found;
+}
+
+int cm_polygon_find_intersection(const double *xy, long n, long *edge_a,
+                                 long *edge_b)
+{
+    scanline sw = {xy, n, NULL, NULL, NULL, -1, -1, -1};
+    return find_intersection(&sw, edge_a, edge_b);
+}
+
+int cm_loops_find_intersection(const double *xy, const size_t *loop_sizes, size_t num_loops,
+                               long *edge_a, long *edge_b)
+{
+    long n = 0;
+    for (size_t l = 0; l < num_loops; l++) n += (long)loop_sizes[l];
+    long *succ = malloc(((size_t)n + 1) * sizeof *succ), *pred = malloc(((size_t)n + 1) * sizeof *pred);
+    int found = -1;
+    if (succ && pred) {
+        long start = 0;
+        for (size_t l = 0; l < num_loops; l++) {
+            long m = (long)loop_sizes[l];
+            for (long j = 0; j < m; j++) {
+                succ[start + j] = start + (j + 1) % m;
+                pred[start + (j + 1) % m] = start + j;
+            }
+            start += m;
+        }
+        scanline sw = {xy, n, succ, pred, NULL, -1, -1, -1};
+        found = find_intersection(&sw, edge_a, edge_b);
+    }
+    free(succ), free(pred);
     return found;
 }

@@ -2,6 +2,8 @@
 #ifndef CM_POLYGON_CHECK_H
 #define CM_POLYGON_CHECK_H
 
+#include <stddef.h>
+
 /* Looks for two edges of the closed polygon xy[0..n-1] (edge i joins vertex
  * i and i+1 mod n) that cross or touch, other than consecutive edges meeting
  * at their shared vertex. Consecutive edges that overlap (a spike doubling
@@ -11,5 +13,13 @@
  * polygon is simple, -1 if out of memory. */
 int cm_polygon_find_intersection(const double *xy, long n, long *edge_a,
                                  long *edge_b);
+
+/* The same for several closed loops stored one after another in xy
+ * (loop l has loop_sizes[l] >= 3 vertices; its edges join consecutive
+ * vertices and its last vertex to its first): edges of one loop or of
+ * different loops that cross or touch. Edge e runs from vertex e (an index
+ * into the whole array) to the next vertex of its loop. Same returns. */
+int cm_loops_find_intersection(const double *xy, const size_t *loop_sizes, size_t num_loops,
+                               long *edge_a, long *edge_b);
 
 #endif

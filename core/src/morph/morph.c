@@ -250,6 +250,11 @@ static cm_status create(cm_morph *m, const cm_result *result, const cm_morph_opt
         return cm_fail(&m->error, CM_ERR_ARGUMENT, "morph: the result failed (%s)", cm_result_message(result));
     if ((unsigned)options->method > (unsigned)CM_MORPH_INTRINSIC)
         return cm_fail(&m->error, CM_ERR_ARGUMENT, "morph: unknown method %d", (int)options->method);
+    /* The enclosure and the section checks take one boundary loop. */
+    if (result->stats.holes > 0)
+        return cm_fail(&m->error, CM_ERR_ARGUMENT,
+                       "morph: polygons with holes (%zu per polygon) cannot be morphed or swept; "
+                       "only their triangulation is supported", result->stats.holes);
     m->method = options->method;
     m->k = result->mesh.k, m->nv = result->mesh.nv, m->nt = result->mesh.nt;
     if (m->method == CM_MORPH_LINEAR) {

@@ -65,16 +65,16 @@ static double segment_entry(const frame *f, const double *p, const double *q, in
     return h;
 }
 
-static double edge_cap(const double *xy, size_t n, size_t i)
+static double edge_cap(const cm_mesh *mesh, const double *xy, size_t n, size_t i)
 {
-    size_t j = (i + 1) % n;
+    size_t j = cm_loops_next(mesh->loop_start, n, i);
     const double *a = xy + 2 * i, *b = xy + 2 * j;
     double L = hypot(b[0] - a[0], b[1] - a[1]);
     frame f = {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), (b[0] - a[0]) / L, (b[1] - a[1]) / L, 0.5 * L};
     double h = L * sqrt(3.0) / 2; /* equilateral: no need to look higher */
     for (size_t e = 0; e < n; e++) {
         if (e == i) continue;
-        size_t e1 = (e + 1) % n;
+        size_t e1 = cm_loops_next(mesh->loop_start, n, e);
         h = fmin(h, segment_entry(&f, xy + 2 * e, xy + 2 * e1, e == i || e == j, e1 == i || e1 == j));
     }
     return atan2(2 * h, L);
@@ -88,8 +88,9 @@ int cm_boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, doubl
         const double *xy = mesh->xy[g];
         for (size_t i = 0; i < n; i++) {
             if (cm_progress_check(progress)) return CM_CANCELLED;
-            bcap[i] = fmin(bcap[i], edge_cap(xy, n, i));
-            double c = corner_angle(xy + 2 * ((i + n - 1) % n), xy + 2 * i, xy + 2 * ((i + 1) % n));
+            bcap[i] = fmin(bcap[i], edge_cap(mesh, xy, n, i));
+            double c = corner_angle(xy + 2 * cm_loops_prev(mesh->loop_start, n, i), xy + 2 * i,
+                                    xy + 2 * cm_loops_next(mesh->loop_start, n, i));
             vcap[i] = fmin(vcap[i], 0.5 * c);
         }
     }

@@ -112,7 +112,7 @@ void cm_kmesh_free(cm_kmesh *km)
     if (km->xy)
         for (size_t g = 0; g < km->k; g++) free(km->xy[g]);
     free(km->xy), free(km->tri), free(km->opp), free(km->vc), free(km->scale);
-    free(km->tkey), free(km->slack), free(km->mark), free(km->bcap), free(km->vcap), free(km->vdirty);
+    free(km->tkey), free(km->slack), free(km->mark), free(km->bcap), free(km->bnext), free(km->vcap), free(km->vdirty);
     cm_ibuf_free(&km->free_v), cm_ibuf_free(&km->free_t);
     cm_heap_free(&km->tq), cm_heap_free(&km->eq);
     memset(km, 0, sizeof *km);
@@ -243,8 +243,8 @@ static int compare_edge_keys(const void *pa, const void *pb)
     return (a->corner > b->corner) - (a->corner < b->corner);
 }
 
-/* Pairs opposite corners. 0, -1 out of memory, -2 not a disk with the
- * boundary 0 -> 1 -> ... -> n-1 -> 0. */
+/* Pairs opposite corners. 0, -1 out of memory, -2 not a surface bounded
+ * by the loops i -> bnext[i]. */
 static int pair_corners(cm_kmesh *km)
 {
     size_t nc = 3 * (size_t)km->nt;
@@ -267,7 +267,7 @@ static int pair_corners(cm_kmesh *km)
             km->opp[c] = d, km->opp[d] = c;
         } else if (j - i == 1) {
             int32_t a = km->tri[cm_next(c)], b = km->tri[cm_prev(c)];
-            if (a >= km->n || b != (a + 1) % km->n) status = -2;
+            if (a >= km->n || b != km->bnext[a]) status = -2;
             boundary++;
         } else {
             status = -2;
@@ -296,11 +296,13 @@ static int check_fans(const cm_kmesh *km)
     return status;
 }
 
-static double polygon_area(const double *xy, int32_t n)
+/* The area inside the boundary loops (the holes' clockwise loops count
+ * negative). */
+static double polygon_area(const double *xy, const int32_t *bnext, int32_t n)
 {
     double sum = 0;
     for (int32_t i = 0; i < n; i++) {
-        int32_t j = (i + 1) % n;
+        int32_t j = bnext[i];
         sum += xy[2 * i] * xy[2 * j + 1] - xy[2 * j] * xy[2 * i + 1];
     }
     return 0.5 * sum;
@@ -316,7 +318,10 @@ cm_status cm_kmesh_build(cm_kmesh *km, const cm_mesh *m, size_t n)
     km->xy = calloc(m->k, sizeof *km->xy);
     km->scale = malloc(m->k * sizeof *km->scale);
     km->bcap = malloc(n * sizeof *km->bcap);
-    if (!km->xy || !km->scale || !km->bcap || cm_heap_init(&km->tq, 0) ||
+    km->bnext = malloc(n * sizeof *km->bnext);
+    if (km->bnext)
+        for (size_t i = 0; i < n; i++) km->bnext[i] = (int32_t)cm_loops_next(m->loop_start, n, i);
+    if (!km->xy || !km->scale || !km->bcap || !km->bnext || cm_heap_init(&km->tq, 0) ||
         cm_heap_init(&km->eq, 0) ||
         reserve_vertices(km, (int32_t)(m->nv + m->nv / 4 + 16)) ||
         reserve_triangles(km, (int32_t)(m->nt + m->nt / 4 + 16))) {
@@ -327,7 +332,7 @@ cm_status cm_kmesh_build(cm_kmesh *km, const cm_mesh *m, size_t n)
     km->nt = km->live_t = (int32_t)m->nt;
     for (size_t g = 0; g < m->k; g++) {
         memcpy(km->xy[g], m->xy[g], 2 * m->nv * sizeof *m->xy[g]);
-        km->scale[g] = sqrt(fabs(polygon_area(m->xy[g], km->n)));
+        km->scale[g] = sqrt(fabs(polygon_area(m->xy[g], km->bnext, km->n)));
         if (!(km->scale[g] > 0)) km->scale[g] = 1;
     }
     for (size_t c = 0; c < 3 * m->nt; c++) {
@@ -598,7 +603,7 @@ int cm_kmesh_check(const cm_kmesh *km)
             int32_t a = km->tri[cm_next(c)], b = km->tri[cm_prev(c)];
             if (km->vc[v[i]] < 0 || km->tri[km->vc[v[i]]] != v[i]) return 0;
             if (o < 0) {
-                if (a >= km->n || b != (a + 1) % km->n) return 0;
+                if (a >= km->n || b != km->bnext[a]) return 0;
                 boundary++;
             } else if (km->opp[o] != c || km->tri[cm_next(o)] != b || km->tri[cm_prev(o)] != a) {
                 return 0;

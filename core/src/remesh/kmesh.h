@@ -3,8 +3,8 @@
  * A corner table (Rossignac): corner c = 3t + i is vertex tri[c] of triangle
  * t; opp[c] is the corner across the edge opposite c in the neighbouring
  * triangle, -1 on the boundary. Triangles are counter-clockwise in every
- * geometry. Vertices 0..n-1 are the polygon, counter-clockwise in order, and
- * never move; every other vertex is an interior Steiner vertex. Removed
+ * geometry. Vertices 0..n-1 are the polygon, counter-clockwise in order
+ * (or its loops, cm_mesh.loop_start, the holes clockwise), and never move; every other vertex is an interior Steiner vertex. Removed
  * triangles and vertices leave dead slots (tri[3t] = -1, vc[v] = -1) that
  * later insertions reuse; cm_kmesh_write compacts.
  *
@@ -43,7 +43,8 @@ typedef struct cm_kmesh {
     cm_heap tq;            /* live triangles by slack */
     cm_heap eq;            /* candidate edges (smaller corner) by -score */
     double target;         /* radians; 0 until cm_kmesh_set_caps */
-    double *bcap;          /* n: per boundary edge i -> i+1 */
+    double *bcap;          /* n: per boundary edge i -> bnext[i] */
+    int32_t *bnext;        /* n: the next vertex along i's boundary loop */
     double *vcap;          /* per vertex: half the corner angle (boundary), pi */
     unsigned char *vdirty; /* vertex: a triangle around it changed since
                               cm_smooth_optimize last found it optimal */
@@ -113,7 +114,7 @@ void cm_kmesh_tx_commit(cm_kmesh *km);
 int cm_kmesh_tx_rollback(cm_kmesh *km);
 
 /* Full exact check (tests): adjacency symmetric, every live triangle
- * counter-clockwise in every geometry, boundary edges exactly i -> i+1.
+ * counter-clockwise in every geometry, boundary edges exactly i -> bnext[i].
  * Returns 1 when valid. */
 int cm_kmesh_check(const cm_kmesh *km);
 

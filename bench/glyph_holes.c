@@ -1,0 +1,121 @@
+/* cm_glyph_holes: compatible triangulations of glyph pairs with holes from
+ * DejaVu Sans (O/D, P/R, A/R, 6/9, B/8, a/e, b/d, ...), every result checked
+ * by the independent exact checker (tests/core/result_check.h: loops
+ * bit-identical, boundary edges exactly the loops, Euler characteristic
+ * 1 - h, areas adding up in rationals).
+ *
+ *   cm_glyph_holes [--font PATH] [--outer N] [--hole M] [--no-remesh] [--min-good G]
+ *
+ * Each glyph's outer contour is resampled by arc length to N points (default
+ * 64), each hole to M (default 24), corners kept (glyph_outline.h); the
+ * holes pair up top to bottom. Prints one line per pair (Steiner vertices,
+ * smallest angles, the remesher's aim) and a summary; exit status 1 when a
+ * pair fails or its result is not exactly valid, or when fewer than G pairs
+ * (default: 90 % of them) reach a smallest angle of min(15, aim / 3)
+ * degrees in both glyphs (aim: the target the input's corners and short
+ * edges allow). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "compatmesh/compatmesh.h"
+#include "glyph_outline.h"
+#include "result_check.h"
+
+#define MAX_LOOPS 8
+
+static const char *const pairs[][2] = {
+    {"O", "D"}, {"P", "R"}, {"A", "R"}, {"6", "9"}, {"B", "8"}, {"a", "e"},
+    {"b", "d"}, {"O", "Q"}, {"D", "P"}, {"o", "e"}, {"p", "q"}, {"4", "A"},
+};
+
+/* One glyph as loops for cm_triangulate_loops. */
+typedef struct glyph_loops {
+    double *xy;
+    size_t sizes[MAX_LOOPS], loops;
+} glyph_loops;
+
+static int load(FT_Face face, char c, int outer, int hole, glyph_loops *g)
+{
+    outline o[MAX_LOOPS];
+    int count = glyph_contours(face, (unsigned long)(unsigned char)c, o, MAX_LOOPS);
+    if (count < 1) return -1;
+    size_t total = 0;
+    for (int l = 0; l < count; l++) total += (size_t)(l ? hole : outer);
+    g->xy = malloc(2 * total * sizeof *g->xy);
+    g->loops = (size_t)count;
+    int ok = g->xy != NULL;
+    for (int l = 0, at = 0; ok && l < count; l++) {
+        int m = l ? hole : outer;
+        g->sizes[l] = (size_t)m;
+        ok = resample(&o[l], m, g->xy + 2 * at) == 0;
+        at += m;
+    }
+    for (int l = 0; l < count; l++) outline_free(&o[l]);
+    return ok ? 0 : -1;
+}
+
+int main(int argc, char **argv)
+{
+    const char *font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+    int outer = 64, hole = 24, remesh = 1, min_good = -1;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--font") && i + 1 < argc) font = argv[++i];
+        else if (!strcmp(argv[i], "--outer") && i + 1 < argc) outer = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--hole") && i + 1 < argc) hole = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--no-remesh")) remesh = 0;
+        else if (!strcmp(argv[i], "--min-good") && i + 1 < argc) min_good = atoi(argv[++i]);
+        else {
+            fprintf(stderr, "usage: cm_glyph_holes [--font PATH] [--outer N] [--hole M] [--no-remesh] [--min-good G]\n");
+            return 2;
+        }
+    }
+    FT_Library lib;
+    FT_Face face;
+    if (FT_Init_FreeType(&lib) || FT_New_Face(lib, font, 0, &face)) {
+        fprintf(stderr, "cm_glyph_holes: cannot load %s (Debian package fonts-dejavu-core)\n", font);
+        return 1;
+    }
+    cm_options o;
+    cm_options_init(&o);
+    o.remesh = remesh;
+    int failed = 0, good_angle = 0, total = 0;
+    printf("%-6s %5s %6s %8s %8s %8s %8s\n", "pair", "holes", "n", "steiner", "angle_a", "angle_b", "aim");
+    for (size_t p = 0; p < sizeof pairs / sizeof pairs[0]; p++) {
+        glyph_loops g[2] = {{0}, {0}};
+        int loaded = load(face, pairs[p][0][0], outer, hole, &g[0]) == 0 &&
+                     load(face, pairs[p][1][0], outer, hole, &g[1]) == 0;
+        cm_loops in[2] = {{g[0].xy, g[0].sizes, g[0].loops}, {g[1].xy, g[1].sizes, g[1].loops}};
+        cm_result *r = NULL;
+        cm_status s = loaded ? cm_triangulate_loops(in, 2, &o, &r) : CM_ERR_ARGUMENT;
+        char why[256] = "";
+        size_t n = (size_t)outer + (g[0].loops - 1) * (size_t)hole;
+        int valid = s == CM_OK && rc_check_loops(r, in, 2, why, sizeof why) &&
+                    rc_check_halfedges_holes(r, n, g[0].loops - 1, why, sizeof why);
+        total++;
+        if (!valid) {
+            failed++;
+            printf("%s/%s   FAILED: %s %s\n", pairs[p][0], pairs[p][1], loaded ? cm_status_string(s) : "glyph not loaded",
+                   s == CM_OK ? why : cm_result_message(r));
+        } else {
+            const cm_stats *st = cm_result_stats(r);
+            cm_quality qa, qb;
+            cm_result_quality(r, 0, &qa), cm_result_quality(r, 1, &qb);
+            double aim = remesh ? st->remesh_aim_deg : 0, want = aim < 45 ? aim / 3 : 15;
+            want = want < 15 ? want : 15;
+            int good = qa.min_angle_deg >= want && qb.min_angle_deg >= want;
+            good_angle += good;
+            printf("%s/%s    %5zu %6zu %8zu %8.1f %8.1f %8.1f%s\n", pairs[p][0], pairs[p][1], st->holes, st->n,
+                   st->steiner, qa.min_angle_deg, qb.min_angle_deg, aim, good ? "" : "  (below min(15, aim/3))");
+        }
+        cm_result_free(r);
+        free(g[0].xy), free(g[1].xy);
+    }
+    printf("cm_glyph_holes: %d pairs, %d valid, %d failed", total, total - failed, failed);
+    if (remesh) printf(", %d with smallest angle >= min(15, aim/3)", good_angle);
+    printf("\n");
+    FT_Done_Face(face);
+    FT_Done_FreeType(lib);
+    if (min_good < 0) min_good = (9 * total + 9) / 10;
+    return failed || (remesh && good_angle < min_good) ? 1 : 0;
+}

@@ -1,0 +1,188 @@
+"""Polygons with holes on the command line: `.xy` loops separated by '>'
+lines (GMT's multi-segment convention), OBJ files with several closed 'l'
+loops or one 'l a b' line per edge, the outputs (loops bit-identical, the
+report's hole count, Euler characteristic 1 - h), bad input named by file,
+line, loop and vertex, and morph and sweep refusing holes."""
+import json
+import math
+
+import pytest
+
+from polygons import leftovers
+
+
+def circle(cx, cy, r, m, direction=1):
+    return [(cx + r * math.cos(direction * 2 * math.pi * i / m),
+             cy + r * math.sin(direction * 2 * math.pi * i / m)) for i in range(m)]
+
+
+def square(cx, cy, h, m, direction=1):
+    corners = [(-1, -1), (1, -1), (1, 1), (-1, 1)]
+    if direction < 0:
+        corners = [(-1, -1), (-1, 1), (1, 1), (1, -1)]
+    side = m // 4
+    points = []
+    for c in range(4):
+        (ax, ay), (bx, by) = corners[c], corners[(c + 1) % 4]
+        for i in range(side):
+            t = i / side
+            points.append((cx + h * ((1 - t) * ax + t * bx), cy + h * ((1 - t) * ay + t * by)))
+    return points
+
+
+def xy_text(loops):
+    return "> outer loop\n" + "> hole\n".join(
+        "".join(f"{x!r} {y!r}\n" for x, y in loop) for loop in loops)
+
+
+def obj_text(loops, edges=False):
+    lines, first = [], 1
+    for loop in loops:
+        lines += [f"v {x!r} {y!r} 0" for x, y in loop]
+    for loop in loops:
+        idx = list(range(first, first + len(loop)))
+        if edges:
+            lines += [f"l {a} {b}" for a, b in zip(idx, idx[1:] + idx[:1])]
+        else:
+            lines.append("l " + " ".join(map(str, idx + idx[:1])))
+        first += len(loop)
+    return "\n".join(lines) + "\n"
+
+
+SQUARE_WITH_HOLE = [square(0, 0, 1, 16), square(0, 0, 0.4, 8, -1)]
+DISC_WITH_HOLE = [circle(0, 0, 1, 16), circle(0.3, 0.2, 0.35, 8, -1)]
+
+
+def read_off(path):
+    with open(path) as f:
+        assert f.readline().strip() == "OFF"
+        nv, nt, _ = map(int, f.readline().split())
+        vertices = [tuple(map(float, f.readline().split()[:2])) for _ in range(nv)]
+        triangles = [tuple(map(int, f.readline().split()[1:4])) for _ in range(nt)]
+    return vertices, triangles
+
+
+def check_output(out, names, inputs, holes):
+    """Loops first and bit-identical; boundary = the loops; V - E + F = 1 - h."""
+    report = json.loads((out / "report.json").read_text())
+    assert report["holes"] == holes and report["bridges"] == 2 * holes
+    n = sum(len(loop) for loop in inputs[0])
+    assert report["n"] == n
+    faces = None
+    for name, loops in zip(names, inputs):
+        vertices, triangles = read_off(out / f"{name}.off")
+        assert vertices[:n] == [p for loop in loops for p in loop]
+        assert faces is None or faces == triangles
+        faces = triangles
+    edges = {}
+    for a, b, c in faces:
+        for e in ((a, b), (b, c), (c, a)):
+            edges[e] = edges.get(e, 0) + 1
+    undirected = {tuple(sorted(e)) for e in edges}
+    boundary = {tuple(sorted(e)) for e in edges if (e[1], e[0]) not in edges}
+    loop_edges, first = set(), 0
+    for loop in inputs[0]:
+        m = len(loop)
+        loop_edges |= {tuple(sorted((first + i, first + (i + 1) % m))) for i in range(m)}
+        first += m
+    assert boundary == loop_edges
+    assert len(vertices) - len(undirected) + len(faces) == 1 - holes
+    return report
+
+
+@pytest.mark.parametrize("fmt", ["xy", "obj", "obj-edges"])
+def test_square_and_disc(cm, tmp_path, fmt):
+    ext = "xy" if fmt == "xy" else "obj"
+    write = (lambda loops: xy_text(loops)) if fmt == "xy" else \
+        (lambda loops: obj_text(loops, edges=fmt == "obj-edges"))
+    (tmp_path / f"a.{ext}").write_text(write(SQUARE_WITH_HOLE))
+    (tmp_path / f"b.{ext}").write_text(write(DISC_WITH_HOLE))
+    result = cm("triangulate", f"a.{ext}", f"b.{ext}", "--out-dir", "out")
+    assert result.returncode == 0, result.stderr
+    report = check_output(tmp_path / "out", ["a", "b"], [SQUARE_WITH_HOLE, DISC_WITH_HOLE], 1)
+    assert min(m["min_angle_deg"] for m in report["meshes"]) >= 20
+    svg = (tmp_path / "out" / "preview.svg").read_text()
+    assert svg.count("Z") >= 2 * 2  # two closed boundary loops per panel
+
+
+def test_obj_outer_found_by_containment(cm, tmp_path):
+    """The hole's 'l' line first: the outer loop is the one of largest area."""
+    (tmp_path / "a.obj").write_text(obj_text(SQUARE_WITH_HOLE[::-1]))
+    (tmp_path / "b.obj").write_text(obj_text(DISC_WITH_HOLE[::-1]))
+    result = cm("triangulate", "a.obj", "b.obj", "--out-dir", "out", "--no-remesh")
+    assert result.returncode == 0, result.stderr
+    check_output(tmp_path / "out", ["a", "b"], [SQUARE_WITH_HOLE, DISC_WITH_HOLE], 1)
+
+
+PLATE = [square(0, 0, 2, 24)] + [circle(cx, cy, 0.45, 10, -1)
+                                 for cx, cy in ((-1, -1), (1, -0.8), (0, 1))]
+
+
+def test_plate_three_bolt_holes(cm, tmp_path):
+    c, s = math.cos(0.5), math.sin(0.5)
+    moved = [[(c * (x + 0.4 * y) - s * y, s * (x + 0.4 * y) + c * y) for x, y in loop]
+             for loop in PLATE]
+    (tmp_path / "plate.xy").write_text(xy_text(PLATE))
+    (tmp_path / "moved.xy").write_text(xy_text(moved))
+    result = cm("triangulate", "plate.xy", "moved.xy", "--out-dir", "out")
+    assert result.returncode == 0, result.stderr
+    check_output(tmp_path / "out", ["plate", "moved"], [PLATE, moved], 3)
+
+
+def bad(cm, tmp_path, a_loops, b_text, pattern, *extra):
+    import re
+    (tmp_path / "a.xy").write_text(xy_text(a_loops))
+    (tmp_path / "b.xy").write_text(b_text)
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out", *extra)
+    assert result.returncode == 2, result.stderr
+    assert result.stderr.count("\n") == 1
+    assert re.search(pattern, result.stderr), result.stderr
+    assert leftovers(tmp_path) == [] and not (tmp_path / "out").exists()
+
+
+def test_bad_hole_count(cm, tmp_path):
+    bad(cm, tmp_path, SQUARE_WITH_HOLE, xy_text(DISC_WITH_HOLE[:1] + [square(0, 0, 0.4, 8, -1)] * 0),
+        r"b\.xy: polygon 1 has 0 holes but polygon 0 has 1|b\.xy has 16 vertices")
+
+
+def test_bad_loop_size(cm, tmp_path):
+    bad(cm, tmp_path, SQUARE_WITH_HOLE, xy_text([circle(0, 0, 1, 16), circle(0, 0, 0.3, 7, -1)]),
+        r"^compatmesh: b\.xy: hole 1 \(loop 1\) has 7 vertices but in polygon 0 it has 8")
+
+
+def test_bad_hole_outside(cm, tmp_path):
+    # line 1 is the '>' header, the outer loop lines 2-17, '>' on 18, the hole from line 19
+    bad(cm, tmp_path, SQUARE_WITH_HOLE, xy_text([circle(0, 0, 1, 16), circle(3, 0, 0.3, 8, -1)]),
+        r"^compatmesh: b\.xy:19: hole 1 \(loop 1\) lies outside the outer loop")
+
+
+def test_bad_hole_crossing(cm, tmp_path):
+    bad(cm, tmp_path, SQUARE_WITH_HOLE, xy_text([circle(0, 0, 1, 16), circle(0.8, 0, 0.3, 8, -1)]),
+        r"^compatmesh: b\.xy:\d+: edge \d+-\d+ of the outer loop \(loop 0\) and edge \d+-\d+ of "
+        r"hole 1 \(loop 1\) cross or touch")
+
+
+def test_bad_short_loop(cm, tmp_path):
+    bad(cm, tmp_path, SQUARE_WITH_HOLE, "0 0\n1 0\n1 1\n0 1\n>\n0.2 0.2\n0.3 0.3\n",
+        r"^compatmesh: b\.xy:6: loop 1 has 2 vertices, needs at least 3")
+
+
+def test_bad_obj_edges_not_closed(cm, tmp_path):
+    (tmp_path / "a.obj").write_text(obj_text(SQUARE_WITH_HOLE, edges=True))
+    text = obj_text(DISC_WITH_HOLE, edges=True).replace("l 24 17\n", "")
+    (tmp_path / "b.obj").write_text(text)
+    result = cm("triangulate", "a.obj", "b.obj", "--out-dir", "out")
+    assert result.returncode == 2
+    assert "b.obj:" in result.stderr and "do not close" in result.stderr
+
+
+@pytest.mark.parametrize("command", ["morph", "sweep"])
+def test_morph_and_sweep_refuse_holes(cm, tmp_path, command):
+    (tmp_path / "a.xy").write_text(xy_text(SQUARE_WITH_HOLE))
+    (tmp_path / "b.xy").write_text(xy_text(DISC_WITH_HOLE))
+    target = ["--out-dir", "out"] if command == "morph" else ["-o", "out.msh"]
+    result = cm(command, "a.xy", "b.xy", *target, "--no-remesh")
+    assert result.returncode == 2
+    assert result.stderr.count("\n") == 1
+    assert "polygons with holes" in result.stderr and "cannot be morphed or swept" in result.stderr
+    assert leftovers(tmp_path) == [] and not (tmp_path / "out").exists()

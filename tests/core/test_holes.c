@@ -1,0 +1,288 @@
+/* Polygons with holes through cm_triangulate_loops: every bad-input class
+ * with its message and location, and fixtures that state what they expect
+ * (valid, hole count, Euler characteristic 1 - h, a Steiner bound), each
+ * result checked exactly by result_check.h (areas in rationals). */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+#include "compatmesh/compatmesh.h"
+#include "result_check.h"
+
+#define MAX_LOOPS 8
+#define MAX_VERTICES 512
+
+/* One polygon with holes under construction. */
+typedef struct shape {
+    double xy[2 * MAX_VERTICES];
+    size_t sizes[MAX_LOOPS], loops, n;
+} shape;
+
+static void add_point(shape *s, double x, double y)
+{
+    s->xy[2 * s->n] = x, s->xy[2 * s->n + 1] = y;
+    s->n++, s->sizes[s->loops - 1]++;
+}
+
+static void begin_loop(shape *s) { s->sizes[s->loops++] = 0; }
+
+/* A circle of m points, counter-clockwise (dir 1) or clockwise (-1). */
+static void add_circle(shape *s, double cx, double cy, double radius, size_t m, int dir)
+{
+    begin_loop(s);
+    for (size_t i = 0; i < m; i++) {
+        double a = dir * 2 * 3.14159265358979323846 * (double)i / (double)m;
+        add_point(s, cx + radius * cos(a), cy + radius * sin(a));
+    }
+}
+
+/* An axis-aligned square of side 2 h around (cx, cy), m points (m a
+ * multiple of 4), from its lower left corner, either way. */
+static void add_square(shape *s, double cx, double cy, double h, size_t m, int dir)
+{
+    begin_loop(s);
+    size_t side = m / 4;
+    double corners[5][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}};
+    if (dir < 0) corners[1][0] = -1, corners[1][1] = 1, corners[3][0] = 1, corners[3][1] = -1;
+    for (size_t c = 0; c < 4; c++)
+        for (size_t i = 0; i < side; i++) {
+            double t = (double)i / (double)side;
+            add_point(s, cx + h * ((1 - t) * corners[c][0] + t * corners[c + 1][0]),
+                      cy + h * ((1 - t) * corners[c][1] + t * corners[c + 1][1]));
+        }
+}
+
+static cm_loops loops_of(const shape *s)
+{
+    return (cm_loops){s->xy, s->sizes, s->loops};
+}
+
+/* Runs a fixture and checks everything it states. */
+static void expect_valid(const char *name, const shape *a, const shape *b, int remesh,
+                         size_t max_steiner)
+{
+    cm_loops in[2] = {loops_of(a), loops_of(b)};
+    cm_options o;
+    cm_options_init(&o);
+    o.remesh = remesh;
+    cm_result *r = NULL;
+    cm_status s = cm_triangulate_loops(in, 2, &o, &r);
+    CHECK_MSG(s == CM_OK, "%s: %s (%s)", name, cm_status_string(s), cm_result_message(r));
+    if (s == CM_OK) {
+        char why[256] = "";
+        const cm_stats *st = cm_result_stats(r);
+        CHECK_MSG(rc_check_loops(r, in, 2, why, sizeof why), "%s: %s", name, why);
+        CHECK_MSG(rc_check_halfedges_holes(r, a->n, a->loops - 1, why, sizeof why), "%s: %s", name, why);
+        CHECK_MSG(st->holes == a->loops - 1, "%s: %zu holes", name, st->holes);
+        CHECK_MSG(st->bridges == 2 * (a->loops - 1), "%s: %zu bridges", name, st->bridges);
+        CHECK_MSG(st->n == a->n && st->vertices == cm_result_num_vertices(r), "%s: counts", name);
+        CHECK_MSG(st->steiner <= max_steiner, "%s: %zu Steiner vertices, at most %zu expected", name,
+                  st->steiner, max_steiner);
+        /* Euler: V - E + F = 1 - h with E = (3F + n) / 2. */
+        size_t v = cm_result_num_vertices(r), f = cm_result_num_triangles(r);
+        CHECK_MSG(2 * (long)v - (3 * (long)f + (long)a->n) + 2 * (long)f == 2 * (2 - (long)a->loops),
+                  "%s: Euler characteristic", name);
+        cm_quality q0, q1;
+        cm_result_quality(r, 0, &q0), cm_result_quality(r, 1, &q1);
+        printf("%-28s holes %zu  Steiner %zu (construction %zu)  smallest angles %.1f %.1f\n", name,
+               st->holes, st->steiner, st->steiner_before_remesh, q0.min_angle_deg, q1.min_angle_deg);
+    }
+    cm_result_free(r);
+}
+
+/* A square with a square hole against a disc with an off-centre round
+ * hole: valid, 1 hole, Euler characteristic 0; the construction needs few
+ * Steiner vertices (at most 40), remeshing at most 2 n + 100. */
+static void test_square_and_disc(void)
+{
+    shape a = {0}, b = {0};
+    add_square(&a, 0, 0, 1, 16, 1);
+    add_square(&a, 0, 0, 0.4, 8, -1);
+    add_circle(&b, 0, 0, 1, 16, 1);
+    add_circle(&b, 0.3, 0.2, 0.35, 8, -1);
+    expect_valid("square/disc", &a, &b, 0, 40);
+    expect_valid("square/disc remeshed", &a, &b, 1, 2 * a.n + 100);
+    /* Holes given counter-clockwise, outer clockwise: normalised. */
+    shape c = {0}, d = {0};
+    add_square(&c, 0, 0, 1, 16, -1);
+    add_square(&c, 0, 0, 0.4, 8, 1);
+    add_circle(&d, 0, 0, 1, 16, -1);
+    add_circle(&d, 0.3, 0.2, 0.35, 8, 1);
+    expect_valid("square/disc reversed loops", &c, &d, 0, 40);
+}
+
+/* A plate with 3 bolt holes against a rotated, sheared copy with the holes
+ * moved: valid, 3 holes, Euler characteristic -2. */
+static void test_plate(void)
+{
+    shape a = {0}, b = {0};
+    add_square(&a, 0, 0, 2, 24, 1);
+    double centres[3][2] = {{-1, -1}, {1, -0.8}, {0, 1}};
+    for (int h = 0; h < 3; h++) add_circle(&a, centres[h][0], centres[h][1], 0.45, 10, -1);
+    b = a;
+    double c = cos(0.5), s = sin(0.5);
+    for (size_t i = 0; i < b.n; i++) {
+        double x = a.xy[2 * i], y = a.xy[2 * i + 1];
+        if (i >= 24) x += 0.15 * centres[(i - 24) / 10][0], y += 0.1; /* holes moved apart */
+        x += 0.4 * y; /* shear */
+        b.xy[2 * i] = c * x - s * y, b.xy[2 * i + 1] = s * x + c * y;
+    }
+    expect_valid("plate", &a, &b, 0, 60);
+    expect_valid("plate remeshed", &a, &b, 1, 2 * a.n + 100);
+}
+
+/* A thin annulus whose hole is turned half a turn in the second polygon
+ * (hole vertex i sits opposite where it was): no straight chord from the
+ * hole to the outer loop is inside the material in both, so the bridges
+ * need Steiner bends. Valid, 1 hole, Euler characteristic 0; the
+ * construction has Steiner vertices (the bends), at most 2 x 32 of them
+ * plus what the pieces need (80 in all). */
+static void test_turned_hole(void)
+{
+    shape a = {0}, b = {0};
+    add_circle(&a, 0, 0, 1, 24, 1);
+    add_circle(&a, 0, 0, 0.6, 12, -1);
+    b = a;
+    for (size_t i = 24; i < 36; i++) b.xy[2 * i] = -a.xy[2 * i], b.xy[2 * i + 1] = -a.xy[2 * i + 1];
+    cm_loops in[2] = {loops_of(&a), loops_of(&b)};
+    cm_options o;
+    cm_options_init(&o);
+    o.remesh = 0;
+    cm_result *r = NULL;
+    CHECK(cm_triangulate_loops(in, 2, &o, &r) == CM_OK);
+    CHECK_MSG(cm_result_stats(r)->steiner > 0, "the turned hole's bridges bend");
+    cm_result_free(r);
+    expect_valid("turned hole", &a, &b, 0, 80);
+    expect_valid("turned hole remeshed", &a, &b, 1, 2 * a.n + 100);
+    /* two holes, both turned */
+    shape c = {0}, d = {0};
+    add_circle(&c, 0, 0, 1, 32, 1);
+    add_circle(&c, -0.45, 0, 0.3, 10, -1);
+    add_circle(&c, 0.45, 0, 0.3, 10, -1);
+    d = c;
+    for (size_t i = 32; i < 52; i++) {
+        double cx = i < 42 ? -0.45 : 0.45;
+        d.xy[2 * i] = 2 * cx - c.xy[2 * i], d.xy[2 * i + 1] = -c.xy[2 * i + 1];
+    }
+    expect_valid("two turned holes", &c, &d, 0, 200);
+    expect_valid("two turned holes remeshed", &c, &d, 1, 2 * c.n + 100);
+}
+
+/* Bad input: status, a message naming polygon, loop and vertex, the
+ * location (vertex: index in the polygon's whole array). */
+static void expect_bad(const char *name, const shape *a, const shape *b, cm_status want,
+                       const char *fragment, long polygon, long vertex)
+{
+    cm_loops in[2] = {loops_of(a), loops_of(b)};
+    cm_result *r = NULL;
+    cm_status s = cm_triangulate_loops(in, 2, NULL, &r);
+    CHECK_MSG(s == want, "%s: got %s (%s), want %s", name, cm_status_string(s), cm_result_message(r),
+              cm_status_string(want));
+    CHECK_MSG(strstr(cm_result_message(r), fragment), "%s: message '%s' lacks '%s'", name,
+              cm_result_message(r), fragment);
+    long p = -2, v = -2;
+    cm_result_error_location(r, &p, &v, NULL);
+    CHECK_MSG(p == polygon && v == vertex, "%s: location (%ld, %ld), want (%ld, %ld)", name, p, v,
+              polygon, vertex);
+    CHECK_MSG(cm_result_num_triangles(r) == 0 && cm_result_vertices(r, 0) == NULL,
+              "%s: no geometry", name);
+    cm_result_free(r);
+}
+
+static void test_bad_input(void)
+{
+    shape a = {0}, b = {0};
+    add_square(&a, 0, 0, 1, 8, 1);
+    add_square(&a, 0, 0, 0.4, 4, -1);
+    b = a;
+    shape c = a;
+    c.loops = 1, c.n = 8;
+    expect_bad("hole count", &a, &c, CM_ERR_COUNT_MISMATCH, "polygon 1 has 0 holes but polygon 0 has 1", 1, -1);
+    shape d = {0};
+    add_square(&d, 0, 0, 1, 8, 1);
+    add_circle(&d, 0, 0, 0.4, 5, -1);
+    expect_bad("loop size", &a, &d, CM_ERR_COUNT_MISMATCH,
+               "polygon 1: hole 1 (loop 1) has 5 vertices but in polygon 0 it has 4", 1, -1);
+    shape e = a;
+    e.sizes[1] = 2, e.n = 10;
+    expect_bad("tiny hole", &e, &e, CM_ERR_TOO_FEW_VERTICES, "hole 1 (loop 1) has 2 vertices", 0, -1);
+    b.xy[2 * 9 + 1] = NAN;
+    expect_bad("not finite", &a, &b, CM_ERR_NOT_FINITE, "polygon 1: hole 1 (loop 1): vertex 1", 1, 9);
+    b = a;
+    b.xy[2 * 10] = b.xy[2 * 2], b.xy[2 * 10 + 1] = b.xy[2 * 2 + 1];
+    expect_bad("repeated", &a, &b, CM_ERR_REPEATED_VERTEX,
+               "polygon 1: hole 1 (loop 1): vertex 2 repeats vertex 2 of the outer loop", 1, 10);
+    b = a; /* hole vertex 2 pushed through the outer loop's right side */
+    b.xy[2 * 10] = 1.5;
+    expect_bad("hole crosses outer", &a, &b, CM_ERR_SELF_INTERSECTION,
+               "polygon 1: edge 3-4 of the outer loop (loop 0) and edge", 1, 3);
+    b = a; /* hole bow-tie: vertices 1 and 2 swapped */
+    b.xy[2 * 9] = a.xy[2 * 10], b.xy[2 * 9 + 1] = a.xy[2 * 10 + 1];
+    b.xy[2 * 10] = a.xy[2 * 9], b.xy[2 * 10 + 1] = a.xy[2 * 9 + 1];
+    expect_bad("hole not simple", &a, &b, CM_ERR_SELF_INTERSECTION,
+               "polygon 1: hole 1 (loop 1): edges", 1, 8);
+    b = a; /* the hole moved outside */
+    for (size_t i = 8; i < 12; i++) b.xy[2 * i] += 5;
+    expect_bad("hole outside", &a, &b, CM_ERR_SELF_INTERSECTION, "polygon 1: hole 1 (loop 1) lies outside the outer loop", 1, 8);
+    shape f = {0}, g = {0};
+    add_square(&f, 0, 0, 1, 8, 1);
+    add_square(&f, 0, 0, 0.6, 4, -1);
+    add_square(&f, 0, 0, 0.2, 4, -1);
+    add_square(&g, 0, 0, 1, 8, 1);
+    add_square(&g, -0.5, 0, 0.2, 4, -1);
+    add_square(&g, 0.5, 0, 0.2, 4, -1);
+    expect_bad("nested holes", &g, &f, CM_ERR_SELF_INTERSECTION,
+               "polygon 1: hole 2 (loop 2) lies inside hole 1 (loop 1)", 1, 12);
+    shape t = g; /* hole 2 touching hole 1 at a vertex */
+    t.xy[2 * 12] = -0.3, t.xy[2 * 12 + 1] = 0.1;
+    t.xy[2 * 14] = -0.2, t.xy[2 * 14 + 1] = 0.4;
+    t.xy[2 * 13] = t.xy[2 * 9 + 0], t.xy[2 * 13 + 1] = t.xy[2 * 9 + 1] - 0.0;
+    expect_bad("holes touch", &g, &t, CM_ERR_REPEATED_VERTEX, "hole 2 (loop 2): vertex 1 repeats vertex 1 of hole 1", 1, 13);
+    shape u = g; /* hole 2 mirrored: clockwise in polygon 0, counter-clockwise here */
+    for (size_t i = 0; i < 4; i++) {
+        u.xy[2 * (12 + i)] = g.xy[2 * (15 - i)], u.xy[2 * (12 + i) + 1] = g.xy[2 * (15 - i) + 1];
+    }
+    expect_bad("orientation", &g, &u, CM_ERR_ORIENTATION_MISMATCH,
+               "polygon 1: hole 2 (loop 2) is counter-clockwise but in polygon 0 it is clockwise", 1, 12);
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = CM_CORRESPOND_ARCLENGTH;
+    cm_loops in[2] = {loops_of(&a), loops_of(&a)};
+    cm_result *r = NULL;
+    CHECK(cm_triangulate_loops(in, 2, &o, &r) == CM_ERR_ARGUMENT);
+    CHECK(strstr(cm_result_message(r), "index correspondence"));
+    cm_result_free(r);
+}
+
+/* Without holes the loops call is cm_triangulate_polygons, bit for bit. */
+static void test_hole_free_same(void)
+{
+    shape a = {0}, b = {0};
+    add_square(&a, 0, 0, 1, 12, 1);
+    add_circle(&b, 0.2, 0, 1.3, 12, 1);
+    cm_loops in[2] = {loops_of(&a), loops_of(&b)};
+    const double *p[2] = {a.xy, b.xy};
+    size_t counts[2] = {12, 12};
+    cm_result *r1 = NULL, *r2 = NULL;
+    CHECK(cm_triangulate_loops(in, 2, NULL, &r1) == CM_OK);
+    CHECK(cm_triangulate_polygons(p, counts, 2, NULL, &r2) == CM_OK);
+    CHECK(cm_result_num_vertices(r1) == cm_result_num_vertices(r2) &&
+          cm_result_num_triangles(r1) == cm_result_num_triangles(r2));
+    CHECK(memcmp(cm_result_triangles(r1), cm_result_triangles(r2),
+                 3 * cm_result_num_triangles(r1) * sizeof(int32_t)) == 0);
+    for (size_t g = 0; g < 2; g++)
+        CHECK(memcmp(cm_result_vertices(r1, g), cm_result_vertices(r2, g),
+                     2 * cm_result_num_vertices(r1) * sizeof(double)) == 0);
+    CHECK(cm_result_stats(r1)->holes == 0);
+    cm_result_free(r1), cm_result_free(r2);
+}
+
+int main(void)
+{
+    test_bad_input();
+    test_hole_free_same();
+    test_square_and_disc();
+    test_plate();
+    test_turned_hole();
+    return check_summary("test_holes");
+}

@@ -1,0 +1,86 @@
+"""Polygons with holes: a list of arrays per polygon, the outer loop first.
+Each fixture states what it expects (valid, the hole count, Euler
+characteristic 1 - h, the loops bit-identical and first, areas adding up to
+the outer loop's minus the holes'); bad input raises InputError naming the
+polygon and loop."""
+from fractions import Fraction
+
+import numpy as np
+import pytest
+
+import compatmesh
+
+
+def circle(cx, cy, r, m, direction=1):
+    a = direction * 2 * np.pi * np.arange(m) / m
+    return np.c_[cx + r * np.cos(a), cy + r * np.sin(a)]
+
+
+def square(h, m, direction=1):
+    corners = np.array([(-1, -1), (1, -1), (1, 1), (-1, 1)], float)
+    if direction < 0:
+        corners = corners[[0, 3, 2, 1]]
+    side = m // 4
+    t = np.arange(side)[:, None] / side
+    return h * np.vstack([(1 - t) * corners[c] + t * corners[(c + 1) % 4] for c in range(4)])
+
+
+def exact_area2(points):
+    """Twice the signed area, exactly (shoelace over Fractions)."""
+    p = [(Fraction(x), Fraction(y)) for x, y in points]
+    return sum(a[0] * b[1] - a[1] * b[0] for a, b in zip(p, p[1:] + p[:1]))
+
+
+def check(result, polygons):
+    holes = len(polygons[0]) - 1
+    n = sum(len(loop) for loop in polygons[0])
+    faces = result.faces
+    assert result.stats["holes"] == holes and result.stats["bridges"] == 2 * holes
+    edges = {(a, b) for f in faces for a, b in ((f[0], f[1]), (f[1], f[2]), (f[2], f[0]))}
+    undirected = {tuple(sorted(e)) for e in edges}
+    assert len(result.vertices[0]) - len(undirected) + len(faces) == 1 - holes
+    for loops, vertices in zip(polygons, result.vertices):
+        assert np.array_equal(vertices[:n], np.vstack(loops))
+        area = sum(abs(exact_area2(tri)) for tri in vertices[faces].tolist())
+        outer, *inner = (abs(exact_area2(loop.tolist())) for loop in loops)
+        assert area == outer - sum(inner)
+        a, b, c = (vertices[faces[:, i]] for i in range(3))
+        assert (((b - a)[:, 0] * (c - a)[:, 1] - (c - a)[:, 0] * (b - a)[:, 1]) > 0).all()
+
+
+def test_square_and_disc():
+    a = [square(1, 16), square(0.4, 8, -1)]
+    b = [circle(0, 0, 1, 16), circle(0.3, 0.2, 0.35, 8, -1)]
+    result = compatmesh.triangulate([a, b])
+    check(result, [a, b])
+    assert min(q["min_angle_deg"] for q in result.stats["quality"]) >= 20
+
+
+def test_plate_three_holes_as_lists():
+    plate = [square(2, 24)] + [circle(x, y, 0.45, 10, -1) for x, y in ((-1, -1), (1, -0.8), (0, 1))]
+    shear = np.array([[1.0, 0.4], [0.0, 1.0]])
+    moved = [loop @ shear.T + [0.3, -0.1] for loop in plate]
+    result = compatmesh.triangulate([[loop.tolist() for loop in plate], tuple(moved)], remesh=False)
+    check(result, [plate, moved])
+
+
+def test_bad_input_names_polygon_and_loop():
+    a = [square(1, 8), square(0.4, 4, -1)]
+    with pytest.raises(compatmesh.InputError, match="hole 1 \\(loop 1\\) has 5 vertices") as info:
+        compatmesh.triangulate([a, [circle(0, 0, 1, 8), circle(0, 0, 0.3, 5, -1)]])
+    assert info.value.status == "vertex count mismatch" and info.value.polygon == 1
+    outside = [square(1, 8), square(0.4, 4, -1) + [3, 0]]
+    with pytest.raises(compatmesh.InputError, match="polygon 1: hole 1 \\(loop 1\\) lies outside") as info:
+        compatmesh.triangulate([a, outside])
+    assert info.value.vertex == 8
+    with pytest.raises(ValueError, match="polygon 1, loop 1: expected an n x 2 array"):
+        compatmesh.triangulate([a, [square(1, 8), np.zeros((4, 3))]])
+    with pytest.raises(compatmesh.InputError, match="polygon 1 has 0 holes but polygon 0 has 1"):
+        compatmesh.triangulate([a, square(1, 12)])
+
+
+def test_morph_refuses_holes():
+    a = [square(1, 16), square(0.4, 8, -1)]
+    b = [circle(0, 0, 1, 16), circle(0.3, 0.2, 0.35, 8, -1)]
+    with pytest.raises(ValueError, match="polygons with holes"):
+        compatmesh.morph([a, b], frames=3)
