@@ -544,7 +544,7 @@ static int obj_make_polygon(obj_state *state, polygon_input *polygon)
     int code = open && loops.vertex ? CLI_EXIT_OK : CLI_EXIT_INTERNAL;
     if (code != CLI_EXIT_OK) cli_error_set(state->error, "%s: out of memory", path);
     for (size_t l = 0; l < state->lines.count && code == CLI_EXIT_OK; at += state->lines.size[l++]) {
-        const long *index = state->index + at;
+        const long *index = state->index ? state->index + at : NULL; /* no indices yet: NULL */
         size_t size = state->lines.size[l];
         for (size_t i = 0; i < size; i++)
             if ((size_t)index[i] >= state->vertices.count) {
