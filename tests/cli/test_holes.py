@@ -173,7 +173,7 @@ def test_bad_obj_edges_not_closed(cm, tmp_path):
     (tmp_path / "b.obj").write_text(text)
     result = cm("triangulate", "a.obj", "b.obj", "--out-dir", "out")
     assert result.returncode == 2
-    assert "b.obj:" in result.stderr and "do not close" in result.stderr
+    assert "b.obj:" in result.stderr and "not closed" in result.stderr
 
 
 @pytest.mark.parametrize("command", ["morph", "sweep"])
@@ -186,3 +186,12 @@ def test_morph_and_sweep_refuse_holes(cm, tmp_path, command):
     assert result.stderr.count("\n") == 1
     assert "polygons with holes" in result.stderr and "cannot be morphed or swept" in result.stderr
     assert leftovers(tmp_path) == [] and not (tmp_path / "out").exists()
+
+
+def test_obj_empty_loop_line(cm, tmp_path):
+    """An 'l' line without indices beside a closed loop: refused, one line."""
+    (tmp_path / "a.obj").write_text(obj_text(SQUARE_WITH_HOLE))
+    (tmp_path / "b.obj").write_text("l \t\n" + obj_text(DISC_WITH_HOLE))
+    result = cm("triangulate", "a.obj", "b.obj", "--out-dir", "out")
+    assert result.returncode == 2 and result.stderr.count("\n") == 1
+    assert result.stderr.startswith("compatmesh: b.obj:1: an 'l' line needs at least 2 vertices")
