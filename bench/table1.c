@@ -130,7 +130,7 @@ static int build_displaced(const double *poly, size_t n, cm_mesh *out)
     memcpy(xy[0], cm_result_vertices(r, 0), 2 * nv * sizeof **xy);
     memcpy(tri, cm_result_triangles(r), 3 * nt * sizeof *tri);
     cm_result_free(r);
-    *out = (cm_mesh){1, nv, nt, xy, tri};
+    *out = (cm_mesh){.k = 1, .nv = nv, .nt = nt, .xy = xy, .tri = tri};
     rp_rng rng = {2002};
     displace(out, n, 3, &rng);
     return 0;
