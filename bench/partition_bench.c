@@ -20,6 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "read_xy.h"
 #include "compatmesh/compatmesh.h"
 #include "api/result.h"
 #include "geom/polytri.h"
@@ -143,26 +144,6 @@ static void synthetic_pairs(bench *b)
             pair *p = new_pair(b, name, "random", 2, n);
             keep(b, p, p ? rp_random_simple(p->xy[0], n, 7 * (uint64_t)(n + seed)) | rp_random_simple(p->xy[1], n, 7 * (uint64_t)(n + seed) + 3) : 0);
         }
-}
-
-/* One "x y" line per vertex. Returns the count, -1 on error. */
-static int read_xy(const char *path, double **out)
-{
-    FILE *f = fopen(path, "r");
-    if (!f) return -1;
-    int n = 0, cap = 256;
-    double *xy = malloc(sizeof(double) * 2 * (size_t)cap), x, y;
-    while (xy && fscanf(f, "%lf %lf", &x, &y) == 2) {
-        if (n == cap) {
-            double *t = realloc(xy, sizeof(double) * 4 * (size_t)cap);
-            if (!t) break;
-            xy = t, cap *= 2;
-        }
-        xy[2 * n] = x, xy[2 * n + 1] = y, n++;
-    }
-    fclose(f);
-    *out = xy;
-    return xy ? n : -1;
 }
 
 /* The glyph pairs and triples of a cm_gen_pairs directory. */

@@ -114,6 +114,7 @@ static int build_displaced(const double *poly, size_t n, cm_mesh *out)
     cm_options_init(&o);
     o.min_angle_deg = DISPLACED_AIM; /* an aim above reach: a fine mesh */
     o.max_steiner = DISPLACED_STEINER;
+    o.ceiling = 0; /* the aim is a fine mesh, not the best reachable angle */
     if (cm_triangulate_polygons(polygons, counts, 2, &o, &r) != CM_OK) {
         cm_result_free(r);
         return -1;

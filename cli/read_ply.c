@@ -293,6 +293,18 @@ int parse_ply(const char *path, const char *data, size_t length, polygon_input *
                     code = CLI_EXIT_USAGE;
                 }
             } else if (e == edge) {
+                for (int end = 0; end < 2 && code == CLI_EXIT_OK; end++) {
+                    double v = value[end ? ib : ia];
+                    if (v >= 0 && v < (double)vertex->count && v == floor(v)) continue;
+                    if (binary)
+                        cli_error_set(error, "%s: edge %ld: vertex index %g is out of range (the file has %ld vertices)",
+                                      path, i, v, vertex->count);
+                    else
+                        cli_error_set(error, "%s:%ld: vertex index %g is out of range (the file has %ld vertices)",
+                                      path, where, v, vertex->count);
+                    code = CLI_EXIT_USAGE;
+                }
+                if (code != CLI_EXIT_OK) break;
                 edges[i] = (loop_edge){(long)value[ia], (long)value[ib], binary ? i : where};
             }
         }

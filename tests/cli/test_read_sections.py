@@ -91,10 +91,11 @@ SQUARE8 = [(0.0, 0.0), (1.0, 0.0), (2.0, 0.0), (2.0, 1.0), (2.0, 2.0), (1.0, 2.0
 TWO_LOOPS = SQUARE8 + [(x + 5, y) for x, y in SQUARE8]
 # name: (points, edges, OBJ message, ASCII PLY message, binary PLY message)
 BAD = {
+    # Two loops are a polygon with a hole; the other input has none.
     "two_loops": (TWO_LOOPS, loop_edges(8) + loop_edges(8, 8),
-                  r"a\.obj:26: this edge is on a second closed polyline \(the first has 8 vertices\); expected exactly one",
-                  r"a\.ply:39: this edge is on a second closed polyline",
-                  r"a\.ply: edge 8: this edge is on a second closed polyline"),
+                  r"b\.xy: polygon 1 has 0 holes but polygon 0 has 1",
+                  r"b\.xy: polygon 1 has 0 holes but polygon 0 has 1",
+                  r"b\.xy: polygon 1 has 0 holes but polygon 0 has 1"),
     "open": (SQUARE8, loop_edges(8)[:-1],
              r"a\.obj:10: the polyline is not closed: vertex 1 has only this edge",
              r"a\.ply:23: the polyline is not closed: vertex 0 has only this edge",

@@ -357,19 +357,28 @@ static cm_status run_index_split(cm_result *r, const double *const *polygons, co
     return s;
 }
 
+/* A new result handle in *result (NULL when even that fails), and the
+ * options to use: *options, or the defaults stored in *defaults. */
+static cm_result *new_result(cm_result **result, const cm_options **options, cm_options *defaults)
+{
+    if (!result) return NULL;
+    cm_result *r = calloc(1, sizeof *r);
+    *result = r;
+    if (!r) return NULL;
+    cm_error_init(&r->error);
+    if (!*options) {
+        cm_options_init(defaults);
+        *options = defaults;
+    }
+    return r;
+}
+
 cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *counts,
                                   size_t k, const cm_options *options, cm_result **result)
 {
-    if (!result) return CM_ERR_ARGUMENT;
-    cm_result *r = calloc(1, sizeof *r);
-    *result = r;
-    if (!r) return CM_ERR_NO_MEMORY;
-    cm_error_init(&r->error);
     cm_options defaults;
-    if (!options) {
-        cm_options_init(&defaults);
-        options = &defaults;
-    }
+    cm_result *r = new_result(result, &options, &defaults);
+    if (!r) return result ? CM_ERR_NO_MEMORY : CM_ERR_ARGUMENT;
     if (options->method != CM_METHOD_OVERLAY && options->method != CM_METHOD_PARTITION) {
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
     }
@@ -576,16 +585,9 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
         free(xy), free(counts);
         return s;
     }
-    if (!result) return CM_ERR_ARGUMENT;
-    cm_result *r = calloc(1, sizeof *r);
-    *result = r;
-    if (!r) return CM_ERR_NO_MEMORY;
-    cm_error_init(&r->error);
     cm_options defaults;
-    if (!options) {
-        cm_options_init(&defaults);
-        options = &defaults;
-    }
+    cm_result *r = new_result(result, &options, &defaults);
+    if (!r) return result ? CM_ERR_NO_MEMORY : CM_ERR_ARGUMENT;
     cm_status s = CM_OK;
     if (options->method != CM_METHOD_OVERLAY && options->method != CM_METHOD_PARTITION)
         s = cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
