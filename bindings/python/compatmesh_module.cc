@@ -412,12 +412,31 @@ py::dict stats_of(const cm_result *result)
   return stats;
 }
 
-struct Result {
+// What triangulate, morph and sweep have in common: the points, the cells
+// by meshio's cell type names, the statistics and the quality; each kind
+// adds its own fields and to_meshio().
+struct Output {
+  py::object points;
+  py::dict cells;
+  py::dict stats;
+  py::object quality;
+};
+
+struct Result : Output {
   py::array_t<int32_t> faces;
   py::list vertices;
   py::list boundary_source;
   py::dict halfedges;
-  py::dict stats;
+};
+
+// Morph and sweep keep the fields they returned as a dict, readable as
+// attributes and by key.
+struct Morph : Output {
+  py::dict fields;
+};
+
+struct Sweep : Output {
+  py::dict fields;
 };
 
 Result make_result(const cm_result *r, const std::vector<Polygon> &polygons)
@@ -433,6 +452,9 @@ Result make_result(const cm_result *r, const std::vector<Polygon> &polygons)
   result.halfedges["vertex_halfedge"] = copy_array(cm_result_vertex_halfedge(r), nv, 1);
   result.halfedges["face_halfedge"] = copy_array(cm_result_face_halfedge(r), nt, 1);
   result.stats = stats_of(r);
+  result.points = result.vertices;
+  result.cells["triangle"] = result.faces;
+  result.quality = result.stats["quality"];
   std::size_t n = cm_result_stats(r)->n;
   for (std::size_t g = 0; g < polygons.size(); g++) {
     py::array_t<std::int64_t> edge{py::ssize_t(n)};
@@ -594,7 +616,7 @@ std::vector<double> morph_times(py::object t, py::object frames)
   return times;
 }
 
-py::dict morph(py::object polygons_in, py::object t, py::object frames, py::object morph_method,
+Morph morph(py::object polygons_in, py::object t, py::object frames, py::object morph_method,
                py::kwargs kwargs)
 {
   std::vector<double> times = morph_times(t, frames);
@@ -622,17 +644,29 @@ py::dict morph(py::object polygons_in, py::object t, py::object frames, py::obje
     inverted.mutable_at(f) = std::int64_t(bad);
     min_angle.mutable_at(f) = angle;
   }
-  py::dict out;
-  out["faces"] = copy_array(cm_result_triangles(result.get()), cm_result_num_triangles(result.get()), 3);
-  out["t"] = copy_array(times.data(), frame_count, 1);
-  out["sections"] = sections;
-  out["inverted"] = inverted;
-  out["min_angle_deg"] = min_angle;
-  out["n"] = polygons.empty() ? 0 : polygons[0].size();
+  Morph out;
+  py::dict &fields = out.fields;
+  fields["faces"] = copy_array(cm_result_triangles(result.get()), cm_result_num_triangles(result.get()), 3);
+  fields["t"] = copy_array(times.data(), frame_count, 1);
+  fields["sections"] = sections;
+  fields["inverted"] = inverted;
+  fields["min_angle_deg"] = min_angle;
+  fields["n"] = polygons.empty() ? 0 : polygons[0].size();
+  out.points = sections;
+  out.cells["triangle"] = fields["faces"];
+  out.stats = stats_of(result.get());
+  py::list quality;
+  for (std::size_t f = 0; f < frame_count; f++) {
+    py::dict q;
+    q["min_angle_deg"] = min_angle.at(f);
+    q["inverted"] = inverted.at(f);
+    quality.append(q);
+  }
+  out.quality = quality;
   return out;
 }
 
-py::dict sweep(py::object polygons_in, py::object sections, py::object height, py::object heights,
+Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::object heights,
                bool tets, py::kwargs kwargs)
 {
   cm_sweep_options options;
@@ -677,7 +711,8 @@ py::dict sweep(py::object polygons_in, py::object sections, py::object height, p
   relay.rethrow();
   if (status != CM_OK) raise_step_failure(status, raw ? cm_sweep_message(raw) : nullptr);
 
-  py::dict out;
+  Sweep swept;
+  py::dict &out = swept.fields;
   out["nodes"] = copy_array(cm_sweep_nodes(w.get()), cm_sweep_num_nodes(w.get()), 3);
   out["prisms"] = copy_array(cm_sweep_prisms(w.get()), cm_sweep_num_prisms(w.get()), 6);
   out["tets"] = copy_array(cm_sweep_tets(w.get()), cm_sweep_num_tets(w.get()), 4);
@@ -695,7 +730,131 @@ py::dict sweep(py::object polygons_in, py::object sections, py::object height, p
   quality["max_prism_flatness"] = q.max_flatness;
   quality["flat_prisms"] = q.flat_prisms;
   out["quality"] = quality;
+  swept.points = out["nodes"];
+  swept.cells["wedge"] = out["prisms"];
+  if (tets) swept.cells["tetra"] = out["tets"];
+  swept.stats = stats_of(result.get());
+  swept.quality = quality;
+  return swept;
+}
+
+
+// --- meshio ------------------------------------------------------------------
+// to_meshio() and write() hand the arrays to meshio, imported when first
+// used so that the module works without it.
+
+py::module_ import_meshio(const char *function)
+{
+  try {
+    return py::module_::import("meshio");
+  } catch (py::error_already_set &e) {
+    if (!e.matches(PyExc_ImportError)) throw;
+    PyErr_SetString(PyExc_ImportError, (std::string(function) +
+                                        " needs meshio (the Debian package python3-meshio)").c_str());
+    throw py::error_already_set();
+  }
+}
+
+// n x 2 or n x 3 points as a new n x 3 float64 array, z = 0 for planar
+// points: the formats meshio writes hold 3D points, so a written file reads
+// back as it was given.
+py::array_t<double> points_3d(py::handle points)
+{
+  FloatArray a = FloatArray::ensure(points);
+  std::size_t n = std::size_t(a.shape(0)), d = std::size_t(a.shape(1));
+  py::array_t<double> out({py::ssize_t(n), py::ssize_t(3)});
+  double *o = out.mutable_data();
+  const double *in = a.data();
+  for (std::size_t i = 0; i < n; i++)
+    for (std::size_t c = 0; c < 3; c++) o[3 * i + c] = c < d ? in[d * i + c] : 0.0;
   return out;
+}
+
+py::object meshio_mesh(py::handle points, const char *cell_type, py::handle cells, const char *function)
+{
+  py::list blocks;
+  blocks.append(py::make_tuple(cell_type, cells));
+  return import_meshio(function).attr("Mesh")(points_3d(points), blocks);
+}
+
+// which (a geometry or frame number; negative counts from the end) checked
+// against count.
+std::size_t index_in(py::handle which, std::size_t count, const char *what, const char *function)
+{
+  long i = number_from<long>(which, what);
+  if (i < -long(count) || i >= long(count))
+    throw py::index_error(std::string(function) + ": " + what + " " + std::to_string(i) + " is out of range (0 to " +
+                          std::to_string(long(count) - 1) + ")");
+  return std::size_t(i < 0 ? i + long(count) : i);
+}
+
+py::object result_to_meshio(const Result &r, py::object geometry)
+{
+  std::size_t k = py::len(r.vertices);
+  auto one = [&](std::size_t g) { return meshio_mesh(r.vertices[g], "triangle", r.faces, "to_meshio"); };
+  if (!geometry.is_none()) return one(index_in(geometry, k, "geometry", "to_meshio"));
+  py::list meshes;
+  for (std::size_t g = 0; g < k; g++) meshes.append(one(g));
+  return meshes;
+}
+
+py::object morph_to_meshio(const Morph &m, py::object frame)
+{
+  py::array sections = m.fields["sections"];
+  std::size_t count = std::size_t(sections.shape(0));
+  auto one = [&](std::size_t f) {
+    return meshio_mesh(sections[py::int_(f)], "triangle", m.fields["faces"], "to_meshio");
+  };
+  if (!frame.is_none()) return one(index_in(frame, count, "frame", "to_meshio"));
+  py::list meshes;
+  for (std::size_t f = 0; f < count; f++) meshes.append(one(f));
+  return meshes;
+}
+
+// The prisms (meshio's wedge is VTK's: the bottom clockwise seen from the
+// top, so a, c, b then d, f, e) or the tetrahedra.
+py::object sweep_to_meshio(const Sweep &s, py::object cells)
+{
+  bool has_tets = s.cells.contains("tetra");
+  std::string kind = cells.is_none() ? (has_tets ? "tetra" : "wedge") : py::str(cells).cast<std::string>();
+  if (!cells.is_none() && !py::isinstance<py::str>(cells))
+    throw py::type_error("to_meshio: cells must be 'wedge', 'tetra' or None");
+  if (kind == "tetra") {
+    if (!has_tets) throw py::value_error("to_meshio: this sweep has no tetrahedra (sweep(..., tets=True) makes them)");
+    return meshio_mesh(s.fields["nodes"], "tetra", s.fields["tets"], "to_meshio");
+  }
+  if (kind != "wedge") throw py::value_error("to_meshio: unknown cells '" + kind + "' (known: 'wedge', 'tetra')");
+  py::array_t<int32_t> gmsh = s.fields["prisms"];
+  py::ssize_t p = gmsh.shape(0);
+  py::array_t<int32_t> vtk({p, py::ssize_t(6)});
+  static const int order[6] = {0, 2, 1, 3, 5, 4};
+  for (py::ssize_t i = 0; i < p; i++)
+    for (int c = 0; c < 6; c++) vtk.mutable_at(i, c) = gmsh.at(i, order[c]);
+  return meshio_mesh(s.fields["nodes"], "wedge", vtk, "to_meshio");
+}
+
+// write(path, which, file_format): one mesh through meshio.write, the format
+// from the file's extension unless given.
+void write_mesh(py::object mesh, py::object path, py::object file_format)
+{
+  import_meshio("write").attr("write")(path, mesh, py::arg("file_format") = file_format);
+}
+
+// Morph's and sweep's fields by key, as when they were dicts.
+template <class T>
+void add_mapping(py::class_<T, Output> &cls, const std::vector<std::pair<const char *, const char *>> &fields)
+{
+  for (const auto &field : fields) {
+    std::string key = field.first;
+    cls.def_property_readonly(field.first, [key](const T &self) { return py::object(self.fields[key.c_str()]); },
+                              field.second);
+  }
+  cls.def("__getitem__", [](const T &self, const std::string &key) {
+        if (!self.fields.contains(key)) throw py::key_error(key);
+        return py::object(self.fields[key.c_str()]);
+      })
+      .def("__contains__", [](const T &self, py::object key) { return self.fields.contains(key); })
+      .def("keys", [](const T &self) { return self.fields.attr("keys")(); }, "the field names, as the dict's keys");
 }
 
 }  // namespace
@@ -727,10 +886,31 @@ PYBIND11_MODULE(compatmesh, m)
   cancelled_type = py::exception<CancelledTag>(m, "Cancelled", PyExc_Exception).inc_ref();
   cancelled_type.attr("__doc__") = "The progress callback asked to stop.";
 
-  py::class_<Result>(m, "Result", "A compatible triangulation: one connectivity, k geometries.")
+  py::class_<Output>(m, "Output", R"doc(What triangulate(), morph() and sweep() return: a Result, a Morph or a Sweep.
+
+Common attributes (arrays are numpy arrays):
+  points   the vertex positions: Result, a list of k float64 arrays (nv x 2
+           or nv x 3, one per geometry); Morph, F x nv x 2 float64 (one
+           section per frame); Sweep, N x 3 float64
+  cells    dict from meshio's cell type names to int32 arrays: "triangle"
+           (m x 3) for Result and Morph; "wedge" (P x 6, Gmsh's corner order)
+           and, with tets, "tetra" (T x 4) for Sweep
+  stats    dict: the triangulation's statistics (see Result.stats)
+  quality  Result: per geometry a dict of angles; Morph: per frame a dict
+           (min_angle_deg, inverted); Sweep: a dict of 3D figures
+  to_meshio(...)  a meshio.Mesh (points always nv x 3 float64, z = 0 in the
+           plane), or a list of them
+  write(path, ..., file_format=None)  one mesh written by meshio (format
+           from the extension: .vtu, .vtk, .msh, .xdmf, .obj, .ply, ...))doc")
+      .def_readonly("points", &Output::points, "the vertex positions (float64; shape by kind, see Output)")
+      .def_readonly("cells", &Output::cells, "dict: meshio cell type name -> int32 array of vertex numbers")
+      .def_readonly("stats", &Output::stats, "dict: the triangulation's statistics (see Result.stats)")
+      .def_readonly("quality", &Output::quality, "the quality figures (see Output)");
+
+  py::class_<Result, Output>(m, "Result", "A compatible triangulation: one connectivity, k geometries.")
       .def_readonly("faces", &Result::faces, "m x 3 int32 array, counter-clockwise in every geometry")
       .def_readonly("vertices", &Result::vertices,
-                    "list of k float arrays (n input vertices first, then Steiner vertices), "
+                    "list of k float64 arrays (n input vertices first, then Steiner vertices), "
                     "each n x 2 or n x 3 like its input")
       .def_readonly("boundary_source", &Result::boundary_source,
                     "per geometry a dict of n arrays: boundary vertex i is the point at t[i] of input edge "
@@ -744,10 +924,113 @@ PYBIND11_MODULE(compatmesh, m)
                     "ceiling_deg, corner_fan_cap_deg, correspondence_bound_deg, modulus_distortion, "
                     "distortion_quad, correspondence_bound_before_deg (None unless auto chose the starts), "
                     "seconds_*), quality and quality_before_remesh (one dict per geometry)")
+      .def("to_meshio", &result_to_meshio, py::arg("geometry") = py::none(),
+           R"doc(to_meshio(geometry=None) -> meshio.Mesh or list of meshio.Mesh
+
+Geometry g (0 to k-1, negative from the end) as a meshio.Mesh: points
+nv x 3 float64 (z = 0 for planar input), cells [("triangle", m x 3 int32)];
+without geometry, a list of the k meshes. Needs meshio.)doc")
+      .def(
+          "write",
+          [](const Result &r, py::object path, py::object geometry, py::object file_format) {
+            if (geometry.is_none() && py::len(r.vertices) != 1)
+              throw py::value_error("write: give the geometry to write (0 to " +
+                                    std::to_string(py::len(r.vertices) - 1) + ")");
+            write_mesh(result_to_meshio(r, geometry.is_none() ? py::int_(0) : geometry), path, file_format);
+          },
+          py::arg("path"), py::arg("geometry") = py::none(), py::arg("file_format") = py::none(),
+          R"doc(write(path, geometry, file_format=None)
+
+Writes to_meshio(geometry) with meshio.write: the format from the path's
+extension unless file_format names one of meshio's.)doc")
       .def("__repr__", [](const Result &r) {
         return "<compatmesh.Result: " + py::str(r.stats["k"]).cast<std::string>() + " geometries, " +
                py::str(r.stats["vertices"]).cast<std::string>() + " vertices, " +
                py::str(r.stats["triangles"]).cast<std::string>() + " triangles>";
+      });
+
+  py::class_<Morph, Output> morph_class(m, "Morph", R"doc(Sections of the morph through compatibly triangulated polygons.
+
+Fields, as attributes and by key (m["sections"]):
+  faces          m x 3 int32, the same in every section, counter-clockwise
+  t              F float64, the times
+  sections       F x nv x 2 float64, the n polygon vertices first
+  inverted       F int64, triangles not strictly counter-clockwise
+  min_angle_deg  F float64, the smallest angle of each section
+  n              int, the number of polygon vertices)doc");
+  add_mapping(morph_class, {{"faces", "m x 3 int32 array, the same in every section"},
+                            {"t", "F float64 array: the times of the sections"},
+                            {"sections", "F x nv x 2 float64 array, the n polygon vertices first"},
+                            {"inverted", "F int64 array: triangles not strictly counter-clockwise"},
+                            {"min_angle_deg", "F float64 array: each section's smallest angle"},
+                            {"n", "int: the number of polygon vertices"}});
+  morph_class
+      .def("to_meshio", &morph_to_meshio, py::arg("frame") = py::none(),
+           R"doc(to_meshio(frame=None) -> meshio.Mesh or list of meshio.Mesh
+
+Section `frame` (0 to F-1, negative from the end) as a meshio.Mesh: points
+nv x 3 float64 (z = 0), cells [("triangle", m x 3 int32)]; without frame, a
+list of the F meshes. Needs meshio.)doc")
+      .def(
+          "write",
+          [](const Morph &mo, py::object path, py::object frame, py::object file_format) {
+            py::array sections = mo.fields["sections"];
+            if (frame.is_none() && sections.shape(0) != 1)
+              throw py::value_error("write: give the frame to write (0 to " + std::to_string(sections.shape(0) - 1) + ")");
+            write_mesh(morph_to_meshio(mo, frame.is_none() ? py::int_(0) : frame), path, file_format);
+          },
+          py::arg("path"), py::arg("frame") = py::none(), py::arg("file_format") = py::none(),
+          R"doc(write(path, frame, file_format=None)
+
+Writes to_meshio(frame) with meshio.write: the format from the path's
+extension unless file_format names one of meshio's.)doc")
+      .def("__repr__", [](const Morph &mo) {
+        py::array sections = mo.fields["sections"];
+        return "<compatmesh.Morph: " + std::to_string(sections.shape(0)) + " frames, " +
+               std::to_string(sections.shape(1)) + " vertices, " + std::to_string(py::len(mo.fields["faces"])) +
+               " triangles>";
+      });
+
+  py::class_<Sweep, Output> sweep_class(m, "Sweep", R"doc(The volume swept between compatibly triangulated polygons.
+
+Fields, as attributes and by key (s["nodes"]):
+  nodes        N x 3 float64; node s * nv + v is vertex v of section s
+  prisms       P x 6 int32, Gmsh's wedge order (bottom counter-clockwise
+               seen from +z, then the top)
+  tets         T x 4 int32, positive volume (0 x 4 without tets)
+  section_z    S float64, the sections' heights
+  volume, height (floats), height_is_default (bool)
+  quality      dict of 3D figures (see sweep()))doc");
+  add_mapping(sweep_class, {{"nodes", "N x 3 float64 array; node s * nv + v is vertex v of section s"},
+                            {"prisms", "P x 6 int32 array, Gmsh's wedge order"},
+                            {"tets", "T x 4 int32 array, positive volume (0 x 4 without tets)"},
+                            {"section_z", "S float64 array: the sections' heights"},
+                            {"volume", "float: the prisms' total volume"},
+                            {"height", "float: first to last section"},
+                            {"height_is_default", "bool: the height came from the polygons' size"}});
+  sweep_class
+      .def("to_meshio", &sweep_to_meshio, py::arg("cells") = py::none(),
+           R"doc(to_meshio(cells=None) -> meshio.Mesh
+
+The sweep as a meshio.Mesh: points N x 3 float64 (the nodes), cells
+[("tetra", T x 4 int32)] for cells="tetra" (the default when the sweep has
+tetrahedra) or [("wedge", P x 6 int32)] for cells="wedge" (the default
+otherwise), the prisms in meshio's (VTK's) corner order: a, c, b, d, f, e
+of Gmsh's a, b, c, d, e, f. Needs meshio.)doc")
+      .def(
+          "write",
+          [](const Sweep &sw, py::object path, py::object cells, py::object file_format) {
+            write_mesh(sweep_to_meshio(sw, cells), path, file_format);
+          },
+          py::arg("path"), py::arg("cells") = py::none(), py::arg("file_format") = py::none(),
+          R"doc(write(path, cells=None, file_format=None)
+
+Writes to_meshio(cells) with meshio.write: the format from the path's
+extension unless file_format names one of meshio's.)doc")
+      .def("__repr__", [](const Sweep &sw) {
+        return "<compatmesh.Sweep: " + std::to_string(py::len(sw.fields["nodes"])) + " nodes, " +
+               std::to_string(py::len(sw.fields["prisms"])) + " prisms, " +
+               std::to_string(py::len(sw.fields["tets"])) + " tetrahedra>";
       });
 
   m.def("triangulate", &triangulate, py::arg("polygons"),
@@ -795,13 +1078,17 @@ options: keyword arguments named like the fields of the C struct cm_options,
                     with "index"); 0 (default): off
   and planarity_tolerance: how far a 3D point may lie from the plane, as a
     fraction of the polygon's bounding-box diagonal (default 1e-5).
+Returns a Result: faces (m x 3 int32), vertices (= points; a list of k
+float64 arrays, nv x 2 or nv x 3 like the input), boundary_source,
+halfedges, stats, quality (per geometry), cells ({"triangle": faces}),
+to_meshio(geometry) and write(path, geometry).
 Raises InputError (a ValueError) with the core's message for bad input,
 TypeError for an unknown keyword, Cancelled when progress asked to stop,
 RuntimeError if the construction failed its own check.)doc");
 
   m.def("morph", &morph, py::arg("polygons"), py::arg("t") = py::none(), py::arg("frames") = py::none(),
         py::arg("morph_method") = "convex",
-        R"doc(morph(polygons, t=None, frames=None, morph_method="convex", **options) -> dict
+        R"doc(morph(polygons, t=None, frames=None, morph_method="convex", **options) -> Morph
 
 Triangulates the n x 2 polygons as triangulate() does (same keyword options)
 and returns sections of the morph through them: the polygons are surrounded
@@ -813,16 +1100,18 @@ k > 2 polygons the morph passes through polygon g at t = g / (k - 1).
 
 t: a time in [0, 1] or a sequence of them; or frames: a count >= 2 of evenly
     spaced times from 0 to 1 (give exactly one).
-Returns a dict: faces (m x 3 int32, the same in every section), t (F),
-sections (F x nv x 2 floats, the n polygon vertices first), inverted (F ints:
-triangles not strictly counter-clockwise, by exact predicates), min_angle_deg
-(F), n. Raises InputError (a ValueError) for bad polygons, ValueError with
+Returns a Morph (its fields also by key, as in a dict): faces (m x 3 int32,
+the same in every section), t (F float64), sections (F x nv x 2 float64, the
+n polygon vertices first), inverted (F int64: triangles not strictly
+counter-clockwise, by exact predicates), min_angle_deg (F float64), n; and
+points (= sections), cells, stats (the triangulation's), quality (per
+frame), to_meshio(frame), write(path, frame). Raises InputError (a ValueError) for bad polygons, ValueError with
 the core's message for a bad t, RuntimeError if a convex section failed its
 exact check.)doc");
 
   m.def("sweep", &sweep, py::arg("polygons"), py::arg("sections") = 11, py::arg("height") = py::none(),
         py::arg("heights") = py::none(), py::arg("tets") = false,
-        R"doc(sweep(polygons, sections=11, height=None, heights=None, tets=False, **options) -> dict
+        R"doc(sweep(polygons, sections=11, height=None, heights=None, tets=False, **options) -> Sweep
 
 The volume between the n x 2 polygons: sections of their convex morph
 stacked at increasing z and joined into 6-node prisms, each checked exactly
@@ -832,13 +1121,14 @@ evenly spaced over height (default: the largest diagonal of the polygons'
 bounding boxes). sections: per pair of consecutive
 polygons, both ends included, >= 2. tets: also split every prism into 3
 tetrahedra with conforming faces. Keyword options as for triangulate().
-Returns a dict: nodes (N x 3; node s * nv + v is vertex v of section s),
-prisms (P x 6 int32, Gmsh wedge order: bottom counter-clockwise seen from +z,
-then top), tets (T x 4 int32, positive volume; 0 x 4 unless tets),
-section_z, volume (the prisms' total), height (first to last section) and
+Returns a Sweep (its fields also by key, as in a dict): nodes (N x 3 float64;
+node s * nv + v is vertex v of section s), prisms (P x 6 int32, Gmsh wedge
+order: bottom counter-clockwise seen from +z, then top), tets (T x 4 int32,
+positive volume; 0 x 4 unless tets), section_z (S float64), volume (the prisms' total), height (first to last section) and
 height_is_default, quality (a dict for the tetrahedra if tets, else the
 prisms: min_dihedral_deg, max_dihedral_deg, min_scaled_jacobian,
 max_aspect_ratio, max_prism_flatness = longest triangle edge / prism height,
-flat_prisms = prisms flatter than 1:10). Bad arguments raise ValueError with
-the core's message.)doc");
+flat_prisms = prisms flatter than 1:10); and points (= nodes), cells,
+stats (the triangulation's), to_meshio(cells), write(path). Bad arguments
+raise ValueError with the core's message.)doc");
 }

@@ -1,0 +1,133 @@
+"""triangulate, morph and sweep return one kind of object (compatmesh.Output):
+common attributes, to_meshio() and write() through meshio, docstrings with
+shapes. Each mesh written by meshio reads back bit-identical."""
+import meshio
+import numpy as np
+import pytest
+
+import compatmesh
+from conftest import ring
+
+
+@pytest.fixture(scope="module")
+def pair():
+    """Two stars of 12 vertices, one turned: a morph with moving vertices."""
+    c, s = np.cos(2.0), np.sin(2.0)
+    return ring(12, inner=0.5), ring(12, inner=0.7, jitter=False) @ np.array([[c, s], [-s, c]]) * 1.3
+
+
+@pytest.fixture(scope="module")
+def outputs(pair):
+    return {"triangulate": compatmesh.triangulate(pair),
+            "morph": compatmesh.morph(pair, frames=4),
+            "sweep": compatmesh.sweep(pair, sections=3, height=2.0),
+            "sweep_tets": compatmesh.sweep(pair, sections=3, height=2.0, tets=True)}
+
+
+def assert_round_trip(mesh, path):
+    """mesh written by meshio to path and read back: the same points, bit for
+    bit, and the same cells."""
+    meshio.write(path, mesh)
+    back = meshio.read(path)
+    assert back.points.dtype == np.float64 and np.array_equal(back.points, mesh.points)
+    assert [c.type for c in back.cells] == [c.type for c in mesh.cells]
+    for read, written in zip(back.cells, mesh.cells):
+        assert np.array_equal(read.data, written.data)
+
+
+def test_one_kind_of_object(outputs):
+    for name, out in outputs.items():
+        assert isinstance(out, compatmesh.Output), name
+        assert isinstance(out.stats, dict) and out.stats["k"] == 2, name
+        assert out.cells and all(a.dtype == np.int32 for a in out.cells.values()), name
+        assert out.quality, name
+
+
+def test_triangulation_to_meshio(outputs, pair, tmp_path):
+    r = outputs["triangulate"]
+    assert r.points is r.vertices and r.quality == r.stats["quality"]
+    assert list(r.cells) == ["triangle"] and r.cells["triangle"] is r.faces
+    meshes = r.to_meshio()
+    assert isinstance(meshes, list) and len(meshes) == 2
+    for g, mesh in enumerate(meshes):
+        assert isinstance(mesh, meshio.Mesh) and mesh.points.shape == (len(r.vertices[g]), 3)
+        assert np.array_equal(mesh.points[:, :2], r.vertices[g]) and np.all(mesh.points[:, 2] == 0)
+        assert np.array_equal(mesh.cells_dict["triangle"], r.faces)
+        assert np.array_equal(mesh.points[:12, :2], pair[g])  # the input vertices, exactly
+        assert np.array_equal(r.to_meshio(g).points, mesh.points)
+        assert_round_trip(mesh, tmp_path / f"geometry{g}.vtu")
+        assert_round_trip(mesh, tmp_path / f"geometry{g}.msh")
+    assert np.array_equal(r.to_meshio(-1).points, meshes[1].points)
+
+
+def test_morph_to_meshio(outputs, tmp_path):
+    m = outputs["morph"]
+    assert m.points is m.sections and m.sections is m["sections"]
+    assert "faces" in m and "colour" not in m and set(m.keys()) >= {"faces", "t", "sections", "n"}
+    assert [q["inverted"] for q in m.quality] == list(m.inverted)
+    assert [q["min_angle_deg"] for q in m.quality] == list(m.min_angle_deg)
+    meshes = m.to_meshio()
+    assert len(meshes) == 4
+    for f, mesh in enumerate(meshes):
+        assert np.array_equal(mesh.points[:, :2], m.sections[f]) and np.all(mesh.points[:, 2] == 0)
+        assert np.array_equal(mesh.cells_dict["triangle"], m.faces)
+        assert_round_trip(mesh, tmp_path / f"frame{f}.vtu")
+    # the frames differ: the vertices move
+    assert not np.array_equal(meshes[1].points, meshes[2].points)
+
+
+def test_sweep_to_meshio(outputs, tmp_path):
+    s, t = outputs["sweep"], outputs["sweep_tets"]
+    assert s.points is s.nodes and list(s.cells) == ["wedge"] and list(t.cells) == ["wedge", "tetra"]
+    assert s.quality is s["quality"]
+    wedges = s.to_meshio()
+    assert list(wedges.cells_dict) == ["wedge"] and np.array_equal(wedges.points, s.nodes)
+    # meshio's (VTK's) wedge: the bottom clockwise seen from the top
+    assert np.array_equal(wedges.cells_dict["wedge"], s.prisms[:, [0, 2, 1, 3, 5, 4]])
+    p = wedges.points[wedges.cells_dict["wedge"]]
+    assert np.all(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])[:, 2] < 0)
+    tets = t.to_meshio()
+    assert list(tets.cells_dict) == ["tetra"] and np.array_equal(tets.cells_dict["tetra"], t.tets)
+    assert np.array_equal(t.to_meshio("wedge").cells_dict["wedge"], t.prisms[:, [0, 2, 1, 3, 5, 4]])
+    for mesh, name in [(wedges, "wedges"), (tets, "tets")]:
+        assert_round_trip(mesh, tmp_path / f"{name}.vtu")
+        assert_round_trip(mesh, tmp_path / f"{name}.msh")
+
+
+def test_write(outputs, tmp_path):
+    outputs["triangulate"].write(tmp_path / "g1.vtu", 1)
+    assert np.array_equal(meshio.read(tmp_path / "g1.vtu").points[:, :2], outputs["triangulate"].vertices[1])
+    outputs["morph"].write(tmp_path / "f2.vtk", frame=2)
+    assert np.array_equal(meshio.read(tmp_path / "f2.vtk").points[:, :2], outputs["morph"].sections[2])
+    outputs["sweep_tets"].write(tmp_path / "volume.msh", cells="tetra")
+    assert np.array_equal(meshio.read(tmp_path / "volume.msh").cells_dict["tetra"], outputs["sweep_tets"].tets)
+    outputs["sweep"].write(tmp_path / "volume.dat", file_format="vtu")
+    assert list(meshio.read(tmp_path / "volume.dat", file_format="vtu").cells_dict) == ["wedge"]
+
+
+@pytest.mark.parametrize("call, error, message", [
+    (lambda o: o["triangulate"].to_meshio(2), IndexError, "to_meshio: geometry 2 is out of range \\(0 to 1\\)"),
+    (lambda o: o["morph"].to_meshio(-5), IndexError, "to_meshio: frame -5 is out of range"),
+    (lambda o: o["triangulate"].write("x.vtu"), ValueError, "write: give the geometry to write \\(0 to 1\\)"),
+    (lambda o: o["morph"].write("x.vtu"), ValueError, "write: give the frame to write \\(0 to 3\\)"),
+    (lambda o: o["sweep"].to_meshio("tetra"), ValueError, "this sweep has no tetrahedra"),
+    (lambda o: o["sweep"].to_meshio("hexahedron"), ValueError, "unknown cells 'hexahedron'"),
+    (lambda o: o["morph"]["colour"], KeyError, "colour"),
+])
+def test_bad_requests(outputs, call, error, message):
+    with pytest.raises(error, match=message):
+        call(outputs)
+
+
+def test_docstrings_give_shapes_and_types():
+    for function, kind in [(compatmesh.triangulate, "Result"), (compatmesh.morph, "Morph"),
+                           (compatmesh.sweep, "Sweep")]:
+        assert f"-> {kind}" in function.__doc__ and "float64" in function.__doc__ and "int32" in function.__doc__
+    for cls in [compatmesh.Output, compatmesh.Result, compatmesh.Morph, compatmesh.Sweep]:
+        assert cls.__doc__ and cls.to_meshio.__doc__ if cls is not compatmesh.Output else cls.__doc__
+    for cls in [compatmesh.Result, compatmesh.Morph, compatmesh.Sweep]:
+        assert "meshio.Mesh" in cls.to_meshio.__doc__ and "float64" in cls.to_meshio.__doc__
+        assert "meshio" in cls.write.__doc__
+    assert "F x nv x 2 float64" in compatmesh.Morph.sections.__doc__
+    assert "N x 3 float64" in compatmesh.Sweep.nodes.__doc__
+    assert "m x 3 int32" in compatmesh.Result.faces.__doc__
