@@ -800,7 +800,7 @@ py::object result_to_meshio(const Result &r, py::object geometry)
 
 py::object morph_to_meshio(const Morph &m, py::object frame)
 {
-  py::array sections = m.fields["sections"];
+  py::array sections = py::array::ensure(m.fields["sections"]);
   std::size_t count = std::size_t(sections.shape(0));
   auto one = [&](std::size_t f) {
     return meshio_mesh(sections[py::int_(f)], "triangle", m.fields["faces"], "to_meshio");
@@ -824,7 +824,7 @@ py::object sweep_to_meshio(const Sweep &s, py::object cells)
     return meshio_mesh(s.fields["nodes"], "tetra", s.fields["tets"], "to_meshio");
   }
   if (kind != "wedge") throw py::value_error("to_meshio: unknown cells '" + kind + "' (known: 'wedge', 'tetra')");
-  py::array_t<int32_t> gmsh = s.fields["prisms"];
+  auto gmsh = py::array_t<int32_t>::ensure(s.fields["prisms"]);
   py::ssize_t p = gmsh.shape(0);
   py::array_t<int32_t> vtk({p, py::ssize_t(6)});
   static const int order[6] = {0, 2, 1, 3, 5, 4};
@@ -974,7 +974,7 @@ list of the F meshes. Needs meshio.)doc")
       .def(
           "write",
           [](const Morph &mo, py::object path, py::object frame, py::object file_format) {
-            py::array sections = mo.fields["sections"];
+            py::array sections = py::array::ensure(mo.fields["sections"]);
             if (frame.is_none() && sections.shape(0) != 1)
               throw py::value_error("write: give the frame to write (0 to " + std::to_string(sections.shape(0) - 1) + ")");
             write_mesh(morph_to_meshio(mo, frame.is_none() ? py::int_(0) : frame), path, file_format);
@@ -985,7 +985,7 @@ list of the F meshes. Needs meshio.)doc")
 Writes to_meshio(frame) with meshio.write: the format from the path's
 extension unless file_format names one of meshio's.)doc")
       .def("__repr__", [](const Morph &mo) {
-        py::array sections = mo.fields["sections"];
+        py::array sections = py::array::ensure(mo.fields["sections"]);
         return "<compatmesh.Morph: " + std::to_string(sections.shape(0)) + " frames, " +
                std::to_string(sections.shape(1)) + " vertices, " + std::to_string(py::len(mo.fields["faces"])) +
                " triangles>";
