@@ -840,6 +840,90 @@ void write_mesh(py::object mesh, py::object path, py::object file_format)
   import_meshio("write").attr("write")(path, mesh, py::arg("file_format") = file_format);
 }
 
+
+// A polygon from a file meshio reads: its "line" cells are the boundary
+// edges, chained into closed loops, each loop in the order of its edges from
+// the first edge of the file on it. More than one loop: the one of largest
+// area is the outer loop, the others holes in file order.
+py::object read_polygon_file(py::object path, py::object file_format)
+{
+  py::object mesh = import_meshio("read_polygon").attr("read")(path, py::arg("file_format") = file_format);
+  std::string where = "read_polygon: " + py::str(path).cast<std::string>() + ": ";
+  FloatArray points = real_array(mesh.attr("points"), where + "points");
+  if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3))
+    throw py::value_error(where + "expected n x 2 or n x 3 points, got shape " + shape_of(points));
+  std::size_t count = std::size_t(points.shape(0)), dim = std::size_t(points.shape(1));
+  std::vector<std::array<std::size_t, 2>> edges;
+  for (py::handle block : mesh.attr("cells")) {
+    if (py::str(block.attr("type")).cast<std::string>() != "line") continue;
+    auto data = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(block.attr("data"));
+    for (py::ssize_t i = 0; i < data.shape(0); i++) {
+      std::array<std::size_t, 2> edge;
+      for (int c = 0; c < 2; c++) {
+        std::int64_t p = data.at(i, c);
+        if (p < 0 || std::uint64_t(p) >= count)
+          throw py::value_error(where + "line " + std::to_string(edges.size()) + " has point " + std::to_string(p) +
+                                ", out of range (" + std::to_string(count) + " points)");
+        edge[c] = std::size_t(p);
+      }
+      if (edge[0] == edge[1])
+        throw py::value_error(where + "line " + std::to_string(edges.size()) + " joins point " +
+                              std::to_string(edge[0]) + " to itself");
+      edges.push_back(edge);
+    }
+  }
+  if (edges.empty()) throw py::value_error(where + "no line cells (a polygon is read from its boundary edges)");
+  std::vector<std::vector<std::size_t>> at(count);  // the edges at each point
+  for (std::size_t e = 0; e < edges.size(); e++)
+    for (std::size_t p : edges[e]) at[p].push_back(e);
+  for (std::size_t p = 0; p < count; p++)
+    if (!at[p].empty() && at[p].size() != 2)
+      throw py::value_error(where + "point " + std::to_string(p) + " is on " + std::to_string(at[p].size()) +
+                            " lines (a boundary point is on 2)");
+  std::vector<bool> used(edges.size(), false);
+  std::vector<std::vector<std::size_t>> loops;
+  for (std::size_t first = 0; first < edges.size(); first++) {
+    if (used[first]) continue;
+    std::vector<std::size_t> loop;
+    std::size_t point = edges[first][0];
+    for (std::size_t e = first; !used[e]; e = at[point][at[point][0] == e ? 1 : 0]) {
+      used[e] = true;
+      loop.push_back(point);
+      point = edges[e][edges[e][0] == point ? 1 : 0];
+    }
+    loops.push_back(loop);
+  }
+  const double *xyz = points.data();
+  bool planar_xy = true;  // z == 0 everywhere: an n x 2 polygon
+  for (const auto &loop : loops)
+    for (std::size_t p : loop) planar_xy &= dim == 2 || xyz[3 * p + 2] == 0;
+  std::size_t columns = planar_xy ? 2 : 3;
+  if (columns == 3 && loops.size() > 1)
+    throw py::value_error(where + std::to_string(loops.size()) +
+                          " loops out of the z = 0 plane (a polygon with holes is read in the xy plane)");
+  auto area = [&](const std::vector<std::size_t> &loop) {
+    double twice = 0;
+    for (std::size_t i = 0; i < loop.size(); i++) {
+      const double *a = xyz + dim * loop[i], *b = xyz + dim * loop[(i + 1) % loop.size()];
+      twice += a[0] * b[1] - b[0] * a[1];
+    }
+    return std::fabs(twice);
+  };
+  std::size_t outer = 0;
+  for (std::size_t l = 1; l < loops.size(); l++)
+    if (area(loops[l]) > area(loops[outer])) outer = l;
+  std::rotate(loops.begin(), loops.begin() + outer, loops.begin() + outer + 1);
+  py::list arrays;
+  for (const auto &loop : loops) {
+    py::array_t<double> a({py::ssize_t(loop.size()), py::ssize_t(columns)});
+    for (std::size_t i = 0; i < loop.size(); i++)
+      for (std::size_t c = 0; c < columns; c++) a.mutable_at(i, c) = xyz[dim * loop[i] + c];
+    arrays.append(a);
+  }
+  if (loops.size() == 1) return arrays[0];
+  return arrays;
+}
+
 // Morph's and sweep's fields by key, as when they were dicts.
 template <class T>
 void add_mapping(py::class_<T, Output> &cls, const std::vector<std::pair<const char *, const char *>> &fields)
@@ -1032,6 +1116,19 @@ extension unless file_format names one of meshio's.)doc")
                std::to_string(py::len(sw.fields["prisms"])) + " prisms, " +
                std::to_string(py::len(sw.fields["tets"])) + " tetrahedra>";
       });
+
+  m.def("read_polygon", &read_polygon_file, py::arg("path"), py::arg("file_format") = py::none(),
+        R"doc(read_polygon(path, file_format=None) -> array or list of arrays
+
+A polygon from any file meshio reads (.vtk, .vtu, .msh, ...; the format from
+the extension unless file_format names one of meshio's), given by its
+boundary: the file's "line" cells, chained into closed loops (every point on
+a line is on exactly two). One loop: an n x 2 float64 array (n x 3 when some
+z is not 0), the points in the order of the lines from the first line of the
+file. Several loops: a list of n_j x 2 float64 arrays, the loop of largest
+area first, then the holes in file order, as triangulate() takes a polygon
+with holes. Raises ValueError naming the file and the line or point at
+fault. Needs meshio.)doc");
 
   m.def("triangulate", &triangulate, py::arg("polygons"),
         R"doc(triangulate(polygons, **options) -> Result

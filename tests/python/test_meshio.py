@@ -131,3 +131,62 @@ def test_docstrings_give_shapes_and_types():
     assert "F x nv x 2 float64" in compatmesh.Morph.sections.__doc__
     assert "N x 3 float64" in compatmesh.Sweep.nodes.__doc__
     assert "m x 3 int32" in compatmesh.Result.faces.__doc__
+    assert "n x 2 float64" in compatmesh.read_polygon.__doc__
+
+
+def boundary_mesh(*loops, z=None):
+    """The loops as one meshio mesh of line cells, each loop's lines in order;
+    the points of all loops one after another, with z if given."""
+    points = np.concatenate(loops)
+    if z is not None:
+        points = np.c_[points, z]
+    lines, start = [], 0
+    for loop in loops:
+        i = np.arange(start, start + len(loop))
+        lines.append(np.c_[i, np.roll(i, -1)])
+        start += len(loop)
+    return meshio.Mesh(points, [("line", np.concatenate(lines))])
+
+
+@pytest.mark.parametrize("suffix", ["vtu", "vtk"])
+def test_read_polygon_round_trip(pair, tmp_path, suffix):
+    """A polygon written by meshio as lines reads back bit-identical, starting
+    at the first line's first point, and triangulates like the array."""
+    paths = []
+    for g, polygon in enumerate(pair):
+        paths.append(tmp_path / f"polygon{g}.{suffix}")
+        meshio.write(paths[-1], boundary_mesh(polygon))
+        back = compatmesh.read_polygon(paths[-1])
+        assert back.dtype == np.float64 and np.array_equal(back, polygon)
+    read = compatmesh.triangulate([compatmesh.read_polygon(p) for p in paths])
+    assert np.array_equal(read.faces, compatmesh.triangulate(pair).faces)
+
+
+def test_read_polygon_with_a_hole_and_in_space(tmp_path):
+    outer, hole = ring(8) * 3, ring(6, jitter=False)[::-1]
+    meshio.write(tmp_path / "holed.vtu", boundary_mesh(hole, outer))  # the hole first in the file
+    loops = compatmesh.read_polygon(tmp_path / "holed.vtu")
+    assert len(loops) == 2 and np.array_equal(loops[0], outer) and np.array_equal(loops[1], hole)
+    tilted = ring(8)
+    meshio.write(tmp_path / "tilted.vtu", boundary_mesh(tilted, z=0.5 * tilted[:, 0]))
+    back = compatmesh.read_polygon(tmp_path / "tilted.vtu")
+    assert np.array_equal(back, np.c_[tilted, 0.5 * tilted[:, 0]])
+
+
+@pytest.mark.parametrize("lines, message", [
+    ([[0, 1], [1, 2]], "point 0 is on 1 lines \\(a boundary point is on 2\\)"),
+    ([[0, 1], [1, 2], [2, 9]], "line 2 has point 9, out of range \\(4 points\\)"),
+    ([[0, 1], [1, 1]], "line 1 joins point 1 to itself"),
+])
+def test_read_polygon_errors(tmp_path, lines, message):
+    path = tmp_path / "bad.vtu"
+    meshio.write(path, meshio.Mesh(ring(4), [("line", np.array(lines))]))
+    with pytest.raises(ValueError, match="read_polygon: .*bad.vtu: " + message):
+        compatmesh.read_polygon(path)
+
+
+def test_read_polygon_needs_lines(tmp_path):
+    path = tmp_path / "triangle.vtu"
+    meshio.write(path, meshio.Mesh(ring(3), [("triangle", np.array([[0, 1, 2]]))]))
+    with pytest.raises(ValueError, match="no line cells"):
+        compatmesh.read_polygon(path)
