@@ -8,7 +8,7 @@ import meshio
 import numpy as np
 import pytest
 
-from polygons import (glyph_pair, leftovers, orientation, read_vertex_text, snapshot,
+from polygons import (check_png, glyph_pair, leftovers, orientation, read_vertex_text, snapshot,
                       spiral_pair, twisted_pair, write_xy)
 
 PAIRS = {"twisted": twisted_pair, "spiral": spiral_pair, "glyph": glyph_pair}
@@ -67,6 +67,7 @@ def test_every_frame_is_valid(cm, tmp_path, name):
     svg = ET.parse(out / "frames.svg").getroot()
     assert svg.tag.endswith("svg")
     assert len(svg.findall("{http://www.w3.org/2000/svg}g")) == FRAMES
+    check_png(out / "frames.png", out / "frames.svg")
     assert leftovers(tmp_path) == []
 
 
