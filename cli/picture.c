@@ -12,6 +12,8 @@ static const double PANEL_MAX_WIDTH = 720.0;
 static const double MARGIN = 20.0;
 static const double CAPTION_HEIGHT = 40.0;
 static const double CAPTION_MIN_WIDTH = 240.0; /* a panel is at least this wide */
+/* Many panels (a morph of hundreds of frames) wrap into rows this wide. */
+static const double ROW_MAX_WIDTH = 8192.0;
 static const double POOR_ANGLE_DEG = 20.0;
 static const double DEGREES_PER_RADIAN = 57.295779513082321;
 
@@ -27,10 +29,10 @@ const style_paint picture_styles[STYLE_COUNT] = {
 typedef struct panel {
     const double *xy;
     double min_x, max_y, scale;
-    double left, width, height; /* in pixels */
+    double left, top, width, height; /* in pixels */
 } panel;
 
-static panel make_panel(const double *xy, size_t count, double left)
+static panel make_panel(const double *xy, size_t count, double left, double top)
 {
     double min_x = INFINITY, max_x = -INFINITY, min_y = INFINITY, max_y = -INFINITY;
     for (size_t v = 0; v < count; v++) {
@@ -44,7 +46,7 @@ static panel make_panel(const double *xy, size_t count, double left)
      * guard only keeps a degenerate input from dividing by zero. */
     double scale = PANEL_HEIGHT / (height > 0 ? height : 1.0);
     if (width * scale > PANEL_MAX_WIDTH) scale = PANEL_MAX_WIDTH / width;
-    panel p = {xy, min_x, max_y, scale, left, width * scale, height * scale};
+    panel p = {xy, min_x, max_y, scale, left, top, width * scale, height * scale};
     return p;
 }
 
@@ -60,7 +62,7 @@ static int add_step(picture *pic, step_kind kind, const panel *p, size_t v)
     path_step step = {kind, 0, 0};
     if (p) {
         step.x = p->left + (p->xy[2 * v] - p->min_x) * p->scale;
-        step.y = MARGIN + (p->max_y - p->xy[2 * v + 1]) * p->scale;
+        step.y = p->top + MARGIN + (p->max_y - p->xy[2 * v + 1]) * p->scale;
     }
     pic->steps[pic->step_count++] = step;
     return 0;
@@ -233,7 +235,7 @@ static int add_steiner(picture *pic, const panel *p, size_t n, size_t vertices)
 static int add_caption(picture *pic, const panel *p, const char *name, size_t n,
                        size_t steiner, double min_angle)
 {
-    double y = MARGIN + PANEL_HEIGHT + 16.0;
+    double y = p->top + MARGIN + PANEL_HEIGHT + 16.0;
     char line[128];
     snprintf(line, sizeof line, "n=%zu, Steiner %zu, min angle %.1f\u00b0", n, steiner, min_angle);
     return add_text(pic, p->left, y, name) || add_text(pic, p->left, y + 16.0, line) ? -1 : 0;
@@ -259,12 +261,19 @@ int picture_of_meshes(picture *pic, const picture_meshes *meshes, cli_error *err
     memset(pic, 0, sizeof *pic);
     double *angles = malloc((meshes->count + 1) * sizeof *angles);
     int failed = !angles;
-    double left = MARGIN;
+    const double row_height = MARGIN + PANEL_HEIGHT + CAPTION_HEIGHT;
+    double left = MARGIN, top = 0, width = MARGIN;
     for (size_t g = 0; g < meshes->k && !failed; g++) {
-        panel p = make_panel(meshes->xy[g], meshes->vertices, left);
+        panel p = make_panel(meshes->xy[g], meshes->vertices, left, top);
+        double advance = fmax(p.width, CAPTION_MIN_WIDTH) + MARGIN;
+        if (left > MARGIN && left + advance > ROW_MAX_WIDTH) { /* next row */
+            left = MARGIN, top += row_height;
+            p = make_panel(meshes->xy[g], meshes->vertices, left, top);
+        }
         failed = add_panel(pic, &p, meshes, meshes->names[g], angles);
         pic->panel_count++;
-        left += fmax(p.width, CAPTION_MIN_WIDTH) + MARGIN;
+        left += advance;
+        width = fmax(width, left);
     }
     free(angles);
     if (failed) {
@@ -272,8 +281,8 @@ int picture_of_meshes(picture *pic, const picture_meshes *meshes, cli_error *err
         cli_error_set(error, "out of memory");
         return CLI_EXIT_INTERNAL;
     }
-    pic->width = ceil(left);
-    pic->height = MARGIN + PANEL_HEIGHT + CAPTION_HEIGHT + MARGIN;
+    pic->width = ceil(width);
+    pic->height = top + row_height + MARGIN;
     return CLI_EXIT_OK;
 }
 

@@ -78,7 +78,7 @@ typedef struct picture_meshes {
 } picture_meshes;
 
 /* One panel per geometry, each scaled to the same height with y pointing
- * up: the triangles whose smallest angle is below 20 degrees orange, each
+ * up, side by side in rows at most 8192 pixels wide: the triangles whose smallest angle is below 20 degrees orange, each
  * panel's worst triangle red, edges thin, the input boundary thick, Steiner
  * vertices as dots, and a caption "NAME" / "n=.., Steiner .., min angle ..°".
  * Returns CLI_EXIT_OK or, out of memory, CLI_EXIT_INTERNAL with error set

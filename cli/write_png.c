@@ -1,9 +1,15 @@
 #include "write_png.h"
 
 #include <cairo.h>
+#include <math.h>
 #include <stdio.h>
 
 #include "outdir.h"
+
+/* Larger pictures (a morph of hundreds of frames) are scaled down to this
+ * many pixels: memory grows with them (4 bytes a pixel), and cairo's images
+ * stop at 32767 pixels a side. */
+static const double PNG_MAX_PIXELS = 64.0 * 1024 * 1024;
 
 static void set_colour(cairo_t *cr, uint32_t rgb)
 {
@@ -48,11 +54,16 @@ static cairo_status_t write_to_file(void *closure, const unsigned char *data, un
 
 int write_png(const char *path, const picture *pic, cli_error *error)
 {
-    cairo_surface_t *surface =
-        cairo_image_surface_create(CAIRO_FORMAT_RGB24, (int)pic->width, (int)pic->height);
+    double pixels = pic->width * pic->height;
+    double scale = fmin(pixels > PNG_MAX_PIXELS ? sqrt(PNG_MAX_PIXELS / pixels) : 1.0,
+                        32767.0 / fmax(pic->width, pic->height));
+    scale = fmin(scale, 1.0);
+    cairo_surface_t *surface = cairo_image_surface_create(
+        CAIRO_FORMAT_RGB24, (int)ceil(scale * pic->width), (int)ceil(scale * pic->height));
     cairo_t *cr = cairo_create(surface);
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
+    cairo_scale(cr, scale, scale);
     for (size_t l = 0; l < pic->layer_count; l++) draw_layer(cr, pic, &pic->layers[l]);
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, PICTURE_FONT_PIXELS);

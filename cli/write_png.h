@@ -1,4 +1,5 @@
-/* A picture (picture.h) as PNG, drawn by cairo at one pixel per unit. */
+/* A picture (picture.h) as PNG, drawn by cairo at one pixel per unit (scaled
+ * down to 64 million pixels if larger). */
 #ifndef CM_CLI_WRITE_PNG_H
 #define CM_CLI_WRITE_PNG_H
 
