@@ -335,4 +335,6 @@ def test_awkward_file_names_keep_report_and_svg_valid(cm, tmp_path):
     root = ET.parse(tmp_path / "out" / "preview.svg").getroot()
     captions = [t.text for t in root.iter(f"{SVG}text")]
     assert captions[0] == 'we"ird & <odd>\\ \ufffd.xy' and captions[1].startswith("n=4")
+    # cairo refuses text that is not UTF-8: the PNG gets the same caption.
+    check_png(tmp_path / "out" / "preview.png", tmp_path / "out" / "preview.svg")
     assert (tmp_path / "out" / os.fsdecode(b'we"ird & <odd>\\ \xff.off')).exists()
