@@ -19,7 +19,7 @@ extern volatile sig_atomic_t progress_line_shown;
 
 void cli_progress_set_mode(progress_mode mode);
 
-/* 1 under --quiet: the commands print no "wrote ..." summary. */
+/* 1 under --quiet: the commands print nothing on stdout. */
 int cli_quiet(void);
 
 /* A cm_progress_fn. */

@@ -98,7 +98,7 @@ enum {
      "start, also when stderr is not a terminal (then as\n"                  \
      "plain lines: one per stage and per tenth done)"},                       \
     {"quiet", OPTION_QUIET, NULL,                                             \
-     "no progress on stderr and no summary on stdout\n"                      \
+     "no progress on stderr and nothing on stdout\n"                         \
      "(errors and warnings are still printed)"}
 
 typedef struct triangulation_args {
