@@ -14,6 +14,7 @@
 #include "triangulation.h"
 #include "write_mesh.h"
 #include "write_report.h"
+#include "write_png.h"
 #include "write_svg.h"
 
 enum { OPTION_MORPH = OPTION_TRIANGULATION_END, MAX_FRAMES = 1000 };
@@ -105,6 +106,7 @@ static void print_morph_help(FILE *out)
           "  DIR/frame_000.FMT ...  one section per frame, all with the same faces\n"
           "                         (those of the triangulation), z = 0\n"
           "  DIR/frames.svg         the frames side by side\n"
+          "  DIR/frames.png         the same picture as PNG (drawn with cairo)\n"
           "  DIR/report.json        counts, morph, and per frame: file, t,\n"
           "                         min_angle_deg, inverted (triangles not strictly\n"
           "                         counter-clockwise, by exact predicates)\n"
@@ -229,7 +231,8 @@ static int write_frames(morph_run *run, cli_error *error)
     return CLI_EXIT_OK;
 }
 
-static int write_picture(morph_run *run, const char *path, cli_error *error)
+/* frames.svg and frames.png, one picture drawn into both. */
+static int write_pictures(morph_run *run, const char *svg, const char *png, cli_error *error)
 {
     size_t frames = run->args->frames;
     const cm_result *result = run->tri.result;
@@ -250,10 +253,14 @@ static int write_picture(morph_run *run, const char *path, cli_error *error)
         }
         snprintf(captions[f], 64, "t = %.3f, %zu inverted", run->t[f], run->inverted[f]);
     }
-    svg_meshes meshes = {cm_result_triangles(result), cm_result_num_triangles(result),
-                         cm_result_stats(result)->n, vertices, xy,
-                         (const char *const *)captions, frames};
-    code = write_svg_meshes(path, &meshes, error);
+    picture_meshes meshes = {cm_result_triangles(result), cm_result_num_triangles(result),
+                             cm_result_stats(result)->n, vertices, xy,
+                             (const char *const *)captions, frames};
+    picture pic;
+    code = picture_of_meshes(&pic, &meshes, error);
+    if (code == CLI_EXIT_OK) code = write_svg(svg, &pic, error);
+    if (code == CLI_EXIT_OK) code = write_png(png, &pic, error);
+    picture_free(&pic);
 done:
     if (captions)
         for (size_t f = 0; f < frames; f++) free(captions[f]);
@@ -267,12 +274,13 @@ static int write_outputs(morph_run *run, cli_error *error)
     int code = staged_output_begin(&run->output, run->args->out_dir, run->args->tri.inputs,
                                    run->args->tri.input_count, error);
     if (code == CLI_EXIT_OK) code = write_frames(run, error);
-    const char *report = NULL, *picture = NULL;
+    const char *report = NULL, *svg = NULL, *png = NULL;
     if (code == CLI_EXIT_OK) {
         report = staged_output_path(&run->output, "report.json");
-        picture = staged_output_path(&run->output, "frames.svg");
+        svg = staged_output_path(&run->output, "frames.svg");
+        png = staged_output_path(&run->output, "frames.png");
     }
-    if (code == CLI_EXIT_OK && (!report || !picture)) {
+    if (code == CLI_EXIT_OK && (!report || !svg || !png)) {
         cli_error_set(error, "out of memory");
         code = CLI_EXIT_INTERNAL;
     }
@@ -283,7 +291,7 @@ static int write_outputs(morph_run *run, cli_error *error)
                                   run->t, run->min_angle_deg, run->inverted};
         code = write_morph_report(report, &info, error);
     }
-    if (code == CLI_EXIT_OK) code = write_picture(run, picture, error);
+    if (code == CLI_EXIT_OK) code = write_pictures(run, svg, png, error);
     if (code == CLI_EXIT_OK && interrupted) {
         cli_error_set(error, "interrupted; nothing written");
         code = CLI_EXIT_INTERRUPTED;
@@ -303,8 +311,8 @@ static void print_summary(const morph_run *run)
     printf("wrote %zu frames to %s (%s morph, min angle %.1f deg, %zu inverted "
            "triangles in all)\n", run->args->frames, run->output.target,
            run->args->morph_name, worst, inverted);
-    printf("wrote %s/report.json and %s/frames.svg\n", run->output.target,
-           run->output.target);
+    printf("wrote %s/report.json, %s/frames.svg and %s/frames.png\n", run->output.target,
+           run->output.target, run->output.target);
 }
 
 static int morph(const morph_args *args, cli_error *error)
@@ -315,7 +323,7 @@ static int morph(const morph_args *args, cli_error *error)
     if (code == CLI_EXIT_OK) code = triangulation_run(&run.tri, &args->tri, error);
     if (code == CLI_EXIT_OK) code = compute_frames(&run, error);
     if (code == CLI_EXIT_OK) code = write_outputs(&run, error);
-    if (code == CLI_EXIT_OK) print_summary(&run);
+    if (code == CLI_EXIT_OK && !cli_quiet()) print_summary(&run);
     morph_run_free(&run);
     return code;
 }

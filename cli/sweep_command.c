@@ -347,7 +347,7 @@ static int sweep(const sweep_args *args, cli_error *error)
         double volume = cm_sweep_volume(sweep);
         char volume_text[64] = "volume beyond the double range";
         if (isfinite(volume)) snprintf(volume_text, sizeof volume_text, "volume %.17g", volume);
-        if (code == CLI_EXIT_OK)
+        if (code == CLI_EXIT_OK && !cli_quiet())
             printf("wrote %s (%zu sections, %zu nodes, %zu %s, %s)\n", args->output,
                    cm_sweep_num_sections(sweep), mesh.num_nodes, mesh.num_cells,
                    args->tets ? "tetrahedra" : "prisms", volume_text);
@@ -365,7 +365,7 @@ static int sweep(const sweep_args *args, cli_error *error)
             sweep_report_info info = {tri.result, sweep, args->tri.method_name, (const char *const *)args->tri.inputs,
                                       args->output, args->tets, height_rule, warning[0] ? warning : NULL};
             code = write_sweep_report(args->report, &info, error);
-            if (code == CLI_EXIT_OK) printf("wrote %s\n", args->report);
+            if (code == CLI_EXIT_OK && !cli_quiet()) printf("wrote %s\n", args->report);
         }
     }
     cm_sweep_free(sweep);

@@ -11,9 +11,11 @@
 #include "interrupt.h"
 #include "options.h"
 #include "outdir.h"
+#include "progress_line.h"
 #include "triangulation.h"
 #include "write_mesh.h"
 #include "write_report.h"
+#include "write_png.h"
 #include "write_svg.h"
 
 static const option_spec triangulate_options[] = {
@@ -118,6 +120,7 @@ static void print_triangulate_help(FILE *out)
           "  DIR/preview.svg  the meshes side by side: boundary thick, Steiner\n"
           "                   vertices as dots, triangles whose smallest angle is\n"
           "                   below 20 degrees orange, each mesh's worst one red\n"
+          "  DIR/preview.png  the same picture as PNG (drawn with cairo)\n"
           "\n", out);
     fputs(cli_exit_status_help, out);
 }
@@ -222,8 +225,9 @@ static int refuse_inputs_early(triangulate_run *run, cli_error *error)
     const triangulation_args *tri = &run->args->tri;
     size_t k = tri->input_count;
     int code = CLI_EXIT_OK;
-    for (size_t i = 0; i <= k + 1 && code == CLI_EXIT_OK; i++) {
-        const char *name = i < k ? run->mesh_names[i] : i == k ? "report.json" : "preview.svg";
+    static const char *const extras[] = {"report.json", "preview.svg", "preview.png"};
+    for (size_t i = 0; i < k + 3 && code == CLI_EXIT_OK; i++) {
+        const char *name = i < k ? run->mesh_names[i] : extras[i - k];
         char *path = path_join(run->args->out_dir, name);
         if (!path) {
             cli_error_set(error, "out of memory");
@@ -270,7 +274,6 @@ static int write_extras(triangulate_run *run, cli_error *error)
                         (const char *const *)run->final_paths, run->args->tri.options.ceiling};
     int code = stage_file(run, "report.json", &path, error);
     if (code == CLI_EXIT_OK) code = write_report(path, &info, error);
-    if (code == CLI_EXIT_OK) code = stage_file(run, "preview.svg", &path, error);
     if (code != CLI_EXIT_OK) return code;
     const char **names = malloc(run->args->tri.input_count * sizeof *names);
     if (!names) {
@@ -279,8 +282,15 @@ static int write_extras(triangulate_run *run, cli_error *error)
     }
     for (size_t g = 0; g < run->args->tri.input_count; g++)
         names[g] = file_name(run->args->tri.inputs[g]);
-    code = write_svg(path, run->tri.result, names, error);
+    picture pic;
+    code = picture_of_result(&pic, run->tri.result, names, error);
     free(names);
+    if (code != CLI_EXIT_OK) return code;
+    code = stage_file(run, "preview.svg", &path, error);
+    if (code == CLI_EXIT_OK) code = write_svg(path, &pic, error);
+    if (code == CLI_EXIT_OK) code = stage_file(run, "preview.png", &path, error);
+    if (code == CLI_EXIT_OK) code = write_png(path, &pic, error);
+    picture_free(&pic);
     return code;
 }
 
@@ -307,8 +317,8 @@ static void print_summary(const triangulate_run *run)
         printf("wrote %s (n=%zu, steiner=%zu, min angle %.1f deg)\n", run->final_paths[g],
                stats->n, stats->steiner, quality.min_angle_deg);
     }
-    printf("wrote %s/report.json and %s/preview.svg\n", run->output.target,
-           run->output.target);
+    printf("wrote %s/report.json, %s/preview.svg and %s/preview.png\n", run->output.target,
+           run->output.target, run->output.target);
     const cm_options *o = &run->args->tri.options;
     if (o->ceiling && stats->ceiling_deg < o->min_angle_deg)
         printf("no compatible triangulation of %s can have a smallest angle above %.1f degrees "
@@ -334,7 +344,7 @@ static int triangulate(const triangulate_args *args, cli_error *error)
     if (code == CLI_EXIT_OK) code = refuse_inputs_early(&run, error);
     if (code == CLI_EXIT_OK) code = triangulation_run(&run.tri, &args->tri, error);
     if (code == CLI_EXIT_OK) code = write_outputs(&run, error);
-    if (code == CLI_EXIT_OK) print_summary(&run);
+    if (code == CLI_EXIT_OK && !cli_quiet()) print_summary(&run);
     triangulate_run_free(&run);
     return code;
 }

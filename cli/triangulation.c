@@ -168,6 +168,12 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
     case OPTION_NO_CEILING:
         args->options.ceiling = 0;
         return CLI_EXIT_OK;
+    case OPTION_PROGRESS:
+        args->progress = 1;
+        return CLI_EXIT_OK;
+    case OPTION_QUIET:
+        args->quiet = 1;
+        return CLI_EXIT_OK;
     case OPTION_MIN_ANGLE:
         return parse_degrees(command, "min-angle", value, 60, &args->options.min_angle_deg, error);
     case OPTION_MAX_STEINER:
@@ -208,6 +214,10 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
 int triangulation_args_check(const triangulation_args *args, const char *command,
                              cli_error *error)
 {
+    if (args->progress && args->quiet) {
+        cli_error_set(error, "%s: give --progress or --quiet, not both", command);
+        return CLI_EXIT_USAGE;
+    }
     if (args->input_count < 2) {
         cli_error_set(error, "%s: needs at least two input polygons, got %zu "
                       "(see 'compatmesh %s --help')", command, args->input_count, command);
@@ -234,6 +244,9 @@ int triangulation_args_check(const triangulation_args *args, const char *command
             }
         }
     }
+    cli_progress_set_mode(args->quiet      ? PROGRESS_QUIET
+                          : args->progress ? PROGRESS_ALWAYS
+                                           : PROGRESS_AUTO);
     return CLI_EXIT_OK;
 }
 

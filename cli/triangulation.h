@@ -26,11 +26,13 @@ enum {
     OPTION_PIN_CORNERS,
     OPTION_MAX_EDGE,
     OPTION_NO_CEILING,
+    OPTION_PROGRESS,
+    OPTION_QUIET,
     OPTION_TRIANGULATION_END /* a command's own long options start here */
 };
 
 /* The option_spec entries of the triangulation options, for a command's
- * table (keys 'm' and OPTION_NO_REMESH .. OPTION_NO_CEILING). */
+ * table (keys 'm' and OPTION_NO_REMESH .. OPTION_QUIET). */
 #define TRIANGULATION_OPTION_SPECS                                            \
     {"method", 'm', "NAME",                                                   \
      "how the first compatible triangulation is built:\n"                     \
@@ -90,7 +92,14 @@ enum {
     {"no-ceiling", OPTION_NO_CEILING, NULL,                                   \
      "skip the ceiling (the certified largest smallest\n"                    \
      "angle any compatible triangulation can have; a few\n"                  \
-     "ms) and let the remesher aim at the target alone"}
+     "ms) and let the remesher aim at the target alone"},       \
+    {"progress", OPTION_PROGRESS, NULL,                                       \
+     "show the stage and how far it is on stderr from the\n"                 \
+     "start, also when stderr is not a terminal (then as\n"                  \
+     "plain lines: one per stage and per tenth done)"},                       \
+    {"quiet", OPTION_QUIET, NULL,                                             \
+     "no progress on stderr and nothing on stdout\n"                         \
+     "(errors and warnings are still printed)"}
 
 typedef struct triangulation_args {
     const char **inputs; /* argc entries allocated, input_count used */
@@ -102,6 +111,7 @@ typedef struct triangulation_args {
     size_t *pins;               /* pin_values numbers, k per pin once checked */
     size_t pin_values, pin_count;
     const char **pin_texts;     /* as given, for messages */
+    int progress, quiet;        /* --progress, --quiet */
 } triangulation_args;
 
 /* The default of --max-input-bytes: far above any real section (a
@@ -118,7 +128,8 @@ void triangulation_args_free(triangulation_args *args);
 int triangulation_option(triangulation_args *args, const char *command, int key,
                          const char *value, cli_error *error);
 
-/* Checks there are at least two inputs. */
+/* Checks there are at least two inputs and the options agree, then sets
+ * the progress display (--progress, --quiet). */
 int triangulation_args_check(const triangulation_args *args, const char *command,
                              cli_error *error);
 

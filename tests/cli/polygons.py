@@ -169,3 +169,28 @@ def is_simple(points):
             if cross(points[i], points[(i + 1) % n], points[j], points[(j + 1) % n]):
                 return False
     return True
+
+
+def check_png(png_path, svg_path):
+    """The PNG picture beside an SVG one: a real PNG (signature, IHDR), read
+    back by Pillow at the SVG's size, white with the black boundary and
+    the red worst triangle drawn."""
+    import struct
+    import xml.etree.ElementTree as ET
+
+    from PIL import Image
+
+    data = open(png_path, "rb").read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", "PNG signature"
+    length, kind, width, height = struct.unpack(">I4sII", data[8:24])
+    assert kind == b"IHDR" and length == 13
+    svg = ET.parse(svg_path).getroot()
+    assert (width, height) == (int(svg.get("width")), int(svg.get("height")))
+    assert 200 <= width <= 100000 and 200 <= height <= 2000
+    with Image.open(png_path) as image:
+        image.load()  # decodes every row: a truncated file raises here
+        assert image.format == "PNG" and image.size == (width, height)
+        colours = dict((rgb, count) for count, rgb in image.convert("RGB").getcolors(width * height))
+    assert max(colours, key=colours.get) == (255, 255, 255), "white background"
+    assert (0, 0, 0) in colours, "black boundary and captions"
+    assert (0xd7, 0x19, 0x1c) in colours, "the worst triangle in red"

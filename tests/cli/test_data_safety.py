@@ -70,7 +70,7 @@ def test_longest_directory_name_works(cm, tmp_path):
     name = "d" * 255  # NAME_MAX: the staging directory beside it must fit too
     r = cm("triangulate", "a.xy", "b.xy", "--out-dir", name)
     assert r.returncode == 0, r.stderr
-    assert sorted(os.listdir(tmp_path / name)) == ["a.off", "b.off", "preview.svg", "report.json"]
+    assert sorted(os.listdir(tmp_path / name)) == ["a.off", "b.off", "preview.png", "preview.svg", "report.json"]
     assert sorted(os.listdir(tmp_path)) == ["a.xy", "b.xy", name]
 
 

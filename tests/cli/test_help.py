@@ -5,7 +5,7 @@ import pytest
 
 TRIANGULATE_OPTIONS = ["--out-dir", "--format", "--method", "--no-remesh", "--min-angle",
                        "--max-steiner", "--k-split", "--area-every", "--smoothing",
-                       "--max-iterations", "--help"]
+                       "--max-iterations", "--progress", "--quiet", "--help"]
 
 
 def check_exit_codes_documented(text):
@@ -29,7 +29,8 @@ def test_triangulate_help(cm, flag):
     assert result.stdout.startswith("Usage: compatmesh triangulate IN1 IN2")
     for option in TRIANGULATE_OPTIONS:
         assert re.search(rf"^\s+(-\w, )?{option}\b", result.stdout, re.MULTILINE), option
-    for word in ("off", "obj", "ply", "partition", "overlay", "report.json", "preview.svg"):
+    for word in ("off", "obj", "ply", "partition", "overlay", "report.json", "preview.svg",
+                 "preview.png"):
         assert word in result.stdout
     check_exit_codes_documented(result.stdout)
 
@@ -57,9 +58,10 @@ def test_usage_errors(cm, args, pattern):
 
 @pytest.mark.parametrize("command, options, words", [
     ("morph", ["--out-dir", "--frames", "--morph", "--format", "--method", "--no-remesh",
-               "--help"], ["convex", "linear", "frame_000", "frames.svg", "report.json"]),
+               "--progress", "--quiet", "--help"],
+     ["convex", "linear", "frame_000", "frames.svg", "frames.png", "report.json"]),
     ("sweep", ["--output", "--sections", "--height", "--heights", "--tets", "--msh-version",
-               "--method", "--no-remesh", "--help"],
+               "--method", "--no-remesh", "--progress", "--quiet", "--help"],
      [".msh", ".vtk", ".inp", ".bdf", ".unv", "2.2", "4.1"]),
 ])
 def test_morph_and_sweep_help(cm, command, options, words):

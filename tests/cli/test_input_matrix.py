@@ -25,9 +25,9 @@ def one_line(result):
 # Every command that starts from polygons, with what it writes on success.
 COMMANDS = {
     "triangulate": (["--out-dir", "out"],
-                    lambda k: [f"p{g}.off" for g in range(k)] + ["report.json", "preview.svg"]),
+                    lambda k: [f"p{g}.off" for g in range(k)] + ["report.json", "preview.svg", "preview.png"]),
     "morph": (["--out-dir", "out", "--frames", "3"],
-              lambda k: [f"frame_{f:03d}.off" for f in range(3)] + ["report.json", "frames.svg"]),
+              lambda k: [f"frame_{f:03d}.off" for f in range(3)] + ["report.json", "frames.svg", "frames.png"]),
     "sweep": (["-o", "out/sweep.msh", "--sections", "3"], lambda k: ["sweep.msh"]),
 }
 
@@ -145,7 +145,7 @@ def test_existing_out_dir_keeps_no_staging(cm, tmp_path):
     (tmp_path / "out").mkdir()
     result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
     assert result.returncode == 0, result.stderr
-    assert sorted(os.listdir(tmp_path / "out")) == ["a.off", "b.off", "preview.svg", "report.json"]
+    assert sorted(os.listdir(tmp_path / "out")) == ["a.off", "b.off", "preview.png", "preview.svg", "report.json"]
     assert leftovers(tmp_path) == []
 
 
@@ -161,5 +161,5 @@ def test_extreme_magnitudes_give_a_valid_result(cm, tmp_path):
                                  (1.34645866811137e-309, 0.0), (0.0, 0.0)])
     result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
     assert result.returncode == 0, result.stderr
-    assert sorted(os.listdir(tmp_path / "out")) == ["a.off", "b.off", "preview.svg", "report.json"]
+    assert sorted(os.listdir(tmp_path / "out")) == ["a.off", "b.off", "preview.png", "preview.svg", "report.json"]
     assert leftovers(tmp_path) == []

@@ -8,7 +8,7 @@ import meshio
 import numpy as np
 import pytest
 
-from polygons import (glyph_pair, leftovers, orientation, read_vertex_text, snapshot,
+from polygons import (check_png, glyph_pair, leftovers, orientation, read_vertex_text, snapshot,
                       spiral_pair, twisted_pair, write_xy)
 
 PAIRS = {"twisted": twisted_pair, "spiral": spiral_pair, "glyph": glyph_pair}
@@ -67,6 +67,7 @@ def test_every_frame_is_valid(cm, tmp_path, name):
     svg = ET.parse(out / "frames.svg").getroot()
     assert svg.tag.endswith("svg")
     assert len(svg.findall("{http://www.w3.org/2000/svg}g")) == FRAMES
+    check_png(out / "frames.png", out / "frames.svg")
     assert leftovers(tmp_path) == []
 
 
@@ -166,3 +167,15 @@ def test_frames_in_other_formats(cm, tmp_path, fmt):
         reference = meshio.read(tmp_path / "off" / f"frame_{f:03d}.off")
         assert np.array_equal(mesh.cells_dict["triangle"], reference.cells_dict["triangle"])
         assert np.array_equal(mesh.points, reference.points)
+
+
+def test_many_frames_wrap_into_rows(cm, tmp_path):
+    write_pair(tmp_path, twisted_pair())
+    result = cm("morph", "a.xy", "b.xy", "--frames", 60, "-o", "out", "--quiet")
+    assert result.returncode == 0, result.stderr
+    out = tmp_path / "out"
+    svg = ET.parse(out / "frames.svg").getroot()
+    assert len(svg.findall("{http://www.w3.org/2000/svg}g")) == 60
+    # 60 panels at least 240 pixels wide do not fit in one 8192-pixel row.
+    assert int(svg.get("width")) <= 8192 and int(svg.get("height")) > 2 * 420
+    check_png(out / "frames.png", out / "frames.svg")

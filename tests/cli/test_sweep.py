@@ -309,3 +309,17 @@ def test_default_height_follows_the_section_size(cm, tmp_path):
     z = meshio.read(tmp_path / "out.msh").points[:, 2]
     diagonal = max(np.hypot(np.ptp([p[0] for p in q]), np.ptp([p[1] for p in q])) for q in (a, b))
     assert z.min() == 0 and z.max() == pytest.approx(diagonal, rel=1e-15)
+
+
+def test_quiet_sweep_prints_no_summary(cm, tmp_path):
+    a, b = twisted_pair()
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    result = cm("sweep", "a.xy", "b.xy", "--sections", 4, "-o", "out.msh",
+                "--report", "report.json", "--quiet")
+    assert result.returncode == 0, result.stderr
+    assert result.stdout == ""
+    assert all(line.startswith("compatmesh: sweep: warning: ")
+               for line in result.stderr.splitlines()), result.stderr
+    assert meshio.read(tmp_path / "out.msh").points.shape[0] > 0
+    assert (tmp_path / "report.json").stat().st_size > 0

@@ -10,7 +10,7 @@ import meshio
 import numpy as np
 import pytest
 
-from polygons import (KITE, SQUARE, leftovers, orientation, read_vertex_text, signed_area,
+from polygons import (KITE, SQUARE, check_png, leftovers, orientation, read_vertex_text, signed_area,
                       snapshot, star, write_xy)
 
 SVG = "{http://www.w3.org/2000/svg}"
@@ -123,6 +123,7 @@ def check_success(tmp_path, result, inputs, fmt="off", out="out"):
             assert before == {key: entry[key] for key in before}
 
     check_svg(out_dir / "preview.svg", inputs, report, angles_per_mesh)
+    check_png(out_dir / "preview.png", out_dir / "preview.svg")
     assert leftovers(tmp_path) == []
     return report
 
@@ -157,7 +158,7 @@ def test_pair_of_stars_default_off(cm, tmp_path):
     report = check_success(tmp_path, result, {"a.xy": a, "b.xy": b})
     assert report["steiner"] > 0, "this pair needs Steiner vertices"
     assert sorted(os.listdir(tmp_path / "out")) == \
-        ["a.off", "b.off", "preview.svg", "report.json"]
+        ["a.off", "b.off", "preview.png", "preview.svg", "report.json"]
 
 
 @pytest.mark.parametrize("fmt", ["off", "obj", "ply"])
@@ -186,6 +187,7 @@ def test_stdout_summary(cm, tmp_path):
     assert re.fullmatch(r"wrote res/a\.off \(n=4, steiner=\d+, min angle [\d.]+ deg\)", lines[0])
     assert re.fullmatch(r"wrote res/b\.off \(n=4, steiner=\d+, min angle [\d.]+ deg\)", lines[1])
     assert "res/report.json" in lines[2] and "res/preview.svg" in lines[2]
+    assert "res/preview.png" in lines[2]
     assert len(lines) == 3
 
 
@@ -317,7 +319,8 @@ def test_success_leaves_nothing_else(cm, tmp_path):
     assert result.returncode == 0
     after = snapshot(tmp_path)
     new = sorted(set(after) - set(before))
-    assert new == ["out", "out/a.off", "out/b.off", "out/preview.svg", "out/report.json"]
+    assert new == ["out", "out/a.off", "out/b.off", "out/preview.png", "out/preview.svg",
+                   "out/report.json"]
 
 
 def test_awkward_file_names_keep_report_and_svg_valid(cm, tmp_path):
@@ -332,4 +335,6 @@ def test_awkward_file_names_keep_report_and_svg_valid(cm, tmp_path):
     root = ET.parse(tmp_path / "out" / "preview.svg").getroot()
     captions = [t.text for t in root.iter(f"{SVG}text")]
     assert captions[0] == 'we"ird & <odd>\\ \ufffd.xy' and captions[1].startswith("n=4")
+    # cairo refuses text that is not UTF-8: the PNG gets the same caption.
+    check_png(tmp_path / "out" / "preview.png", tmp_path / "out" / "preview.svg")
     assert (tmp_path / "out" / os.fsdecode(b'we"ird & <odd>\\ \xff.off')).exists()

@@ -1,0 +1,104 @@
+#include "write_png.h"
+
+#include <cairo.h>
+#include <fontconfig/fontconfig.h>
+#include <math.h>
+#include <stdio.h>
+
+#include "outdir.h"
+
+/* Larger pictures (a morph of hundreds of frames) are scaled down to this
+ * many pixels: memory grows with them (4 bytes a pixel), and cairo's images
+ * stop at 32767 pixels a side. */
+static const double PNG_MAX_PIXELS = 64.0 * 1024 * 1024;
+
+static void set_colour(cairo_t *cr, uint32_t rgb)
+{
+    cairo_set_source_rgb(cr, ((rgb >> 16) & 0xff) / 255.0, ((rgb >> 8) & 0xff) / 255.0,
+                         (rgb & 0xff) / 255.0);
+}
+
+/* A dot is a zero-length round-capped sub-path, which cairo strokes as a
+ * disc of the line width, as SVG does. */
+static void draw_layer(cairo_t *cr, const picture *pic, const picture_layer *layer)
+{
+    const style_paint *paint = &picture_styles[layer->style];
+    cairo_new_path(cr);
+    for (size_t i = layer->first; i < layer->first + layer->count; i++) {
+        const path_step *step = &pic->steps[i];
+        switch (step->kind) {
+        case STEP_MOVE: cairo_move_to(cr, step->x, step->y); break;
+        case STEP_LINE: cairo_line_to(cr, step->x, step->y); break;
+        case STEP_CLOSE: cairo_close_path(cr); break;
+        case STEP_DOT:
+            cairo_move_to(cr, step->x, step->y);
+            cairo_line_to(cr, step->x, step->y);
+            break;
+        }
+    }
+    set_colour(cr, paint->rgb);
+    if (paint->filled) {
+        cairo_fill(cr);
+        return;
+    }
+    cairo_set_line_width(cr, paint->width);
+    cairo_set_line_cap(cr, paint->round ? CAIRO_LINE_CAP_ROUND : CAIRO_LINE_CAP_BUTT);
+    cairo_set_line_join(cr, paint->round ? CAIRO_LINE_JOIN_ROUND : CAIRO_LINE_JOIN_MITER);
+    cairo_stroke(cr);
+}
+
+static cairo_status_t write_to_file(void *closure, const unsigned char *data, unsigned int length)
+{
+    return fwrite(data, 1, length, closure) == length ? CAIRO_STATUS_SUCCESS
+                                                      : CAIRO_STATUS_WRITE_ERROR;
+}
+
+int write_png(const char *path, const picture *pic, cli_error *error)
+{
+    double pixels = pic->width * pic->height;
+    double scale = fmin(pixels > PNG_MAX_PIXELS ? sqrt(PNG_MAX_PIXELS / pixels) : 1.0,
+                        32767.0 / fmax(pic->width, pic->height));
+    scale = fmin(scale, 1.0);
+    cairo_surface_t *surface = cairo_image_surface_create(
+        CAIRO_FORMAT_RGB24, (int)ceil(scale * pic->width), (int)ceil(scale * pic->height));
+    cairo_t *cr = cairo_create(surface);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_scale(cr, scale, scale);
+    for (size_t l = 0; l < pic->layer_count; l++) draw_layer(cr, pic, &pic->layers[l]);
+    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr, PICTURE_FONT_PIXELS);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    for (size_t t = 0; t < pic->text_count; t++) {
+        cairo_move_to(cr, pic->texts[t].x, pic->texts[t].y);
+        cairo_show_text(cr, pic->texts[t].text);
+    }
+    /* A context or surface in error (say, too large to allocate) draws
+     * nothing from then on, so one check at the end covers every call. */
+    cairo_status_t status = cairo_status(cr);
+    cairo_destroy(cr);
+    int code = CLI_EXIT_INTERNAL;
+    if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
+    if (status != CAIRO_STATUS_SUCCESS) {
+        cli_error_set(error, "%s: cannot draw the picture: %s", path,
+                      cairo_status_to_string(status));
+    } else {
+        FILE *file = output_open(path, error);
+        if (file) {
+            status = cairo_surface_write_to_png_stream(surface, write_to_file, file);
+            code = output_close(file, path, error);
+            if (code == CLI_EXIT_OK && status != CAIRO_STATUS_SUCCESS) {
+                cli_error_set(error, "%s: cannot write the PNG: %s", path,
+                              cairo_status_to_string(status));
+                code = CLI_EXIT_INTERNAL;
+            }
+        }
+    }
+    cairo_surface_destroy(surface);
+    /* The font caches of cairo and fontconfig would otherwise live until
+     * exit, which valgrind reports as leaks; one picture per run, so
+     * releasing them costs nothing. */
+    cairo_debug_reset_static_data();
+    FcFini();
+    return code;
+}
