@@ -32,3 +32,13 @@ def cm(compatmesh_path, tmp_path):
                               capture_output=True, timeout=120,
                               encoding="utf-8", errors="replace")
     return run
+
+
+@pytest.fixture
+def gmsh_session():
+    """Gmsh's Python API, initialised quietly for one test."""
+    import gmsh
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    yield gmsh
+    gmsh.finalize()

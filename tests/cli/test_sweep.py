@@ -53,14 +53,6 @@ def reported(stdout):
     return int(m[1]), int(m[2]), int(m[3]), float(m[5])
 
 
-@pytest.fixture
-def gmsh_session():
-    gmsh.initialize()
-    gmsh.option.setNumber("General.Terminal", 0)
-    yield gmsh
-    gmsh.finalize()
-
-
 @pytest.mark.parametrize("fmt, kind", GMSH_CHECKS)
 @pytest.mark.parametrize("name", sorted(PAIRS))
 def test_gmsh_reads_back_positive_elements(cm, tmp_path, gmsh_session, name, fmt, kind):

@@ -17,14 +17,6 @@ TET_EDGES = [(0, 1, 2, 3), (0, 2, 1, 3), (0, 3, 1, 2), (1, 2, 0, 3), (1, 3, 0, 2
 
 
 @pytest.fixture
-def gmsh_session():
-    gmsh.initialize()
-    gmsh.option.setNumber("General.Terminal", 0)
-    yield gmsh
-    gmsh.finalize()
-
-
-@pytest.fixture
 def us_pair(compatmesh_path, tmp_path):
     """The U and S of the paper's Figure 8, as examples/demo.sh makes them."""
     generator = os.path.join(os.path.dirname(compatmesh_path), "cm_gen_pairs")
