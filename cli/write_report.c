@@ -115,6 +115,16 @@ static void write_mesh_entry(FILE *file, const report_info *info, size_t g)
 }
 
 /* The opening brace and the counts every report starts with. */
+/* ["a", "b", ...]: count > 0 strings. */
+static void json_string_list(FILE *file, const char *const *strings, size_t count)
+{
+    fputc('[', file);
+    for (size_t i = 0; i < count; i++) {
+        json_string(file, strings[i]);
+        fputs(i + 1 < count ? ", " : "]", file);
+    }
+}
+
 static void write_head(FILE *file, const cm_stats *stats)
 {
     fprintf(file, "{\n");
@@ -166,11 +176,9 @@ int write_morph_report(const char *path, const morph_report_info *info, cli_erro
     json_string(file, info->method);
     fputs(",\n  \"morph\": ", file);
     json_string(file, info->morph);
-    fputs(",\n  \"inputs\": [", file);
-    for (size_t g = 0; g < stats->k; g++) {
-        json_string(file, info->inputs[g]);
-        fputs(g + 1 < stats->k ? ", " : "],\n", file);
-    }
+    fputs(",\n  \"inputs\": ", file);
+    json_string_list(file, info->inputs, stats->k);
+    fputs(",\n", file);
     size_t total = 0;
     for (size_t f = 0; f < info->frame_count; f++) total += info->inverted[f];
     fprintf(file, "  \"inverted_total\": %zu,\n", total);
@@ -196,11 +204,9 @@ int write_sweep_report(const char *path, const sweep_report_info *info, cli_erro
     write_head(file, stats);
     fputs("  \"method\": ", file);
     json_string(file, info->method);
-    fputs(",\n  \"inputs\": [", file);
-    for (size_t g = 0; g < stats->k; g++) {
-        json_string(file, info->inputs[g]);
-        fputs(g + 1 < stats->k ? ", " : "],\n", file);
-    }
+    fputs(",\n  \"inputs\": ", file);
+    json_string_list(file, info->inputs, stats->k);
+    fputs(",\n", file);
     fputs("  \"output\": ", file);
     json_string(file, info->output);
     fprintf(file, ",\n  \"sections\": %zu,\n  \"nodes\": %zu,\n  \"cells\": %zu,\n  \"cell_type\": \"%s\",\n",

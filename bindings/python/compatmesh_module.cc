@@ -841,6 +841,16 @@ void write_mesh(py::object mesh, py::object path, py::object file_format)
 }
 
 
+// write()'s choice among `count` meshes: `which`, or the only one.
+py::object the_one(py::object which, size_t count, const char *what)
+{
+  if (!which.is_none()) return which;
+  if (count != 1)
+    throw py::value_error(std::string("write: give the ") + what + " to write (0 to " + std::to_string(count - 1) +
+                          ")");
+  return py::int_(0);
+}
+
 // A polygon from a file meshio reads: its "line" cells are the boundary
 // edges, chained into closed loops, each loop in the order of its edges from
 // the first edge of the file on it. More than one loop: the one of largest
@@ -1017,10 +1027,7 @@ without geometry, a list of the k meshes. Needs meshio.)doc")
       .def(
           "write",
           [](const Result &r, py::object path, py::object geometry, py::object file_format) {
-            if (geometry.is_none() && py::len(r.vertices) != 1)
-              throw py::value_error("write: give the geometry to write (0 to " +
-                                    std::to_string(py::len(r.vertices) - 1) + ")");
-            write_mesh(result_to_meshio(r, geometry.is_none() ? py::int_(0) : geometry), path, file_format);
+            write_mesh(result_to_meshio(r, the_one(geometry, py::len(r.vertices), "geometry")), path, file_format);
           },
           py::arg("path"), py::arg("geometry") = py::none(), py::arg("file_format") = py::none(),
           R"doc(write(path, geometry, file_format=None)
@@ -1058,10 +1065,8 @@ list of the F meshes. Needs meshio.)doc")
       .def(
           "write",
           [](const Morph &mo, py::object path, py::object frame, py::object file_format) {
-            py::array sections = py::array::ensure(mo.fields["sections"]);
-            if (frame.is_none() && sections.shape(0) != 1)
-              throw py::value_error("write: give the frame to write (0 to " + std::to_string(sections.shape(0) - 1) + ")");
-            write_mesh(morph_to_meshio(mo, frame.is_none() ? py::int_(0) : frame), path, file_format);
+            py::ssize_t frames = py::array::ensure(mo.fields["sections"]).shape(0);
+            write_mesh(morph_to_meshio(mo, the_one(frame, (size_t)frames, "frame")), path, file_format);
           },
           py::arg("path"), py::arg("frame") = py::none(), py::arg("file_format") = py::none(),
           R"doc(write(path, frame, file_format=None)

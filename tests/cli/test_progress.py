@@ -16,6 +16,23 @@ import pytest
 from polygons import star, write_xy
 
 
+def drain(main, process):
+    """What is left to read on the terminal `main` until the process has
+    ended and the terminal is empty or closed; closes it."""
+    seen = b""
+    while True:
+        ready, _, _ = select.select([main], [], [], 0.5)
+        try:
+            chunk = os.read(main, 4096) if ready else b""
+        except OSError:  # the other end closed
+            chunk = b""
+        if not chunk and process.poll() is not None:
+            break
+        seen += chunk
+    os.close(main)
+    return seen
+
+
 def test_progress_line_on_a_terminal(compatmesh_path, tmp_path):
     write_xy(tmp_path / "a.xy", star(20000, 1))
     write_xy(tmp_path / "b.xy", star(20000, 2))
@@ -31,16 +48,7 @@ def test_progress_line_on_a_terminal(compatmesh_path, tmp_path):
             seen += os.read(main, 4096)
     process.send_signal(signal.SIGINT)
     process.wait(timeout=10)
-    while True:
-        ready, _, _ = select.select([main], [], [], 0.5)
-        try:
-            chunk = os.read(main, 4096) if ready else b""
-        except OSError:  # the other end closed
-            chunk = b""
-        if not chunk:
-            break
-        seen += chunk
-    os.close(main)
+    seen += drain(main, process)
     text = seen.decode()
     assert process.returncode == 130
     assert "\rcompatmesh: " in text and "%" in text, text
@@ -52,17 +60,7 @@ def run_on_terminal(args, cwd):
     main, sub = pty.openpty()
     process = subprocess.Popen(args, cwd=cwd, stdout=subprocess.DEVNULL, stderr=sub)
     os.close(sub)
-    seen = b""
-    while True:
-        ready, _, _ = select.select([main], [], [], 1.0)
-        try:
-            chunk = os.read(main, 4096) if ready else b""
-        except OSError:  # the other end closed
-            chunk = b""
-        if not chunk and process.poll() is not None:
-            break
-        seen += chunk
-    os.close(main)
+    seen = drain(main, process)
     return process.wait(timeout=60), seen.decode()
 
 
