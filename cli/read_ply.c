@@ -236,11 +236,15 @@ int parse_ply(const char *path, const char *data, size_t length, polygon_input *
                       vertex ? "edge" : "vertex");
         return CLI_EXIT_USAGE;
     }
-    /* No more entries than the data could hold (a byte per value at least). */
-    if (vertex->count > (long)length || edge->count > (long)length) {
-        cli_error_set(error, "%s: the header promises more vertices or edges than the file holds", path);
-        return CLI_EXIT_USAGE;
-    }
+    /* No more entries than the data could hold (a byte per value at least),
+     * for every element: each is read through. An element without
+     * properties holds no data. */
+    for (int k = 0; k < num_elements; k++)
+        if (elements[k].num_properties > 0 && elements[k].count > (long)length) {
+            cli_error_set(error, "%s: the header promises more %s elements than the file holds", path,
+                          elements[k].name);
+            return CLI_EXIT_USAGE;
+        }
     double *xyz = malloc(3 * (size_t)(vertex->count + 1) * sizeof *xyz);
     long *line = malloc((size_t)(vertex->count + 1) * sizeof *line);
     loop_edge *edges = malloc((size_t)(edge->count + 1) * sizeof *edges);
@@ -252,7 +256,7 @@ int parse_ply(const char *path, const char *data, size_t length, polygon_input *
     const int binary = r.format != 0;
     for (int k = 0; k < num_elements && code == CLI_EXIT_OK; k++) {
         const ply_element *e = &elements[k];
-        for (long i = 0; i < e->count && code == CLI_EXIT_OK; i++) {
+        for (long i = 0; i < e->count && e->num_properties > 0 && code == CLI_EXIT_OK; i++) {
             long where = r.line + 1;
             double value[MAX_PROPERTIES] = {0};
             for (int p = 0; p < e->num_properties && code == CLI_EXIT_OK; p++) {
