@@ -4,16 +4,23 @@
  * reported as success. The test binary is linked with
  * -Wl,--wrap=malloc,--wrap=calloc,--wrap=realloc, which sends the core's
  * own calls (the static library's objects) through the counters below;
- * GMP's and UMFPACK's allocations are their libraries' own and not
- * counted. Run for every allocation of a triangulation with remeshing, a
- * convex morph and a sweep, and of the construction for polygons with
- * holes whose bridges need Steiner bends. */
+ * GMP's allocations go through the core's functions (base/gmp_memory.h)
+ * and are counted too; UMFPACK's are its own and are not. Run for every
+ * allocation of a triangulation with remeshing, a convex morph and a
+ * sweep, of the overlay construction (exact rational arithmetic in GMP
+ * throughout), and of the construction for polygons with holes whose
+ * bridges need Steiner bends. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include <math.h>
 
+#include <gmp.h>
+
+void *__gmp_default_allocate(size_t); /* exported by libgmp, not declared */
+
+#include "base/gmp_memory.h"
 #include "check.h"
 #include "geom/angle.h"
 #include "random_polygons.h"
@@ -125,6 +132,46 @@ static void test_holes(void)
     CHECK(total > 50 && reported > 0);
 }
 
+/* The overlay of two stars: its intersection points are GMP rationals, so
+ * failures land inside GMP. Each must end the call with CM_ERR_NO_MEMORY
+ * (the reserve carried GMP through) or a valid result, never an abort. */
+static void test_gmp(const double *const *polygons)
+{
+    cm_options o;
+    cm_options_init(&o);
+    o.method = CM_METHOD_OVERLAY;
+    o.remesh = 0;
+    size_t counts[2] = {N, N};
+    long total = -1, inside_gmp = 0, reported = 0;
+    for (long i = 0; i <= total || total < 0; i++) {
+        calls = 0, fail_at = i ? i : -1;
+        cm_result *r = NULL;
+        cm_status s = cm_triangulate_polygons(polygons, counts, 2, &o, &r);
+        int reserve = cm_gmp_memory_exhausted();
+        paused = 1;
+        char why[256] = "";
+        CHECK_MSG(s != CM_OK || rc_check(r, polygons, 2, N, why, sizeof why),
+                  "overlay, allocation %ld failed: success, but invalid: %s", i, why);
+        CHECK_MSG(s == CM_OK || (s == CM_ERR_NO_MEMORY && (!r || strstr(cm_result_message(r), "out of memory"))),
+                  "overlay, allocation %ld failed: status %s, %s", i, cm_status_string(s),
+                  r ? cm_result_message(r) : "no handle");
+        paused = 0;
+        cm_result_free(r);
+        if (i == 0) {
+            CHECK_MSG(s == CM_OK, "the overlay without failures");
+            total = calls;
+        }
+        inside_gmp += reserve;
+        reported += s != CM_OK;
+    }
+    void *(*a)(size_t);
+    mp_get_memory_functions(&a, NULL, NULL);
+    printf("overlay: %ld allocations, each failed once: %ld reported out of memory, %ld inside GMP\n", total,
+           reported, inside_gmp);
+    CHECK_MSG(a != __gmp_default_allocate, "GMP allocates through the core's functions");
+    CHECK_MSG(inside_gmp > 0, "some failures hit GMP's allocations");
+}
+
 int main(void)
 {
     double a[2 * N], b[2 * N];
@@ -149,6 +196,7 @@ int main(void)
     printf("%ld allocations, each failed once: %ld reported out of memory, %ld absorbed\n", total,
            reported, absorbed);
     CHECK(total > 100 && reported > 0);
+    test_gmp(polygons);
     test_holes();
     return check_summary("test_alloc_failures");
 }

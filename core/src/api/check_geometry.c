@@ -4,6 +4,7 @@
  * counter-clockwise, the triangles tile the polygon without overlap, so
  * these two tests are all validity needs. */
 #include "compatmesh/compatmesh.h"
+#include "base/gmp_memory.h"
 #include "geom/polygon_check.h"
 #include "geom/predicates.h"
 
@@ -24,6 +25,7 @@ cm_status cm_check_geometry(const double *xy, size_t n, size_t num_vertices,
 {
     long w = -1, o = -1;
     cm_status status = CM_OK;
+    cm_gmp_memory_begin();
     if (!xy || !triangles || n < 3 || n > num_vertices) {
         status = CM_ERR_ARGUMENT;
         goto done;

@@ -8,6 +8,7 @@
 #include "api/halfedge.h"
 #include "api/quality.h"
 #include "base/clock.h"
+#include "base/gmp_memory.h"
 #include "geom/predicates.h"
 
 /* Copies the input into r->mesh, triangles counter-clockwise. */
@@ -113,6 +114,7 @@ cm_status cm_result_from_meshes(const double *const *xy, size_t k, size_t n,
                                 size_t num_triangles, cm_result **result)
 {
     if (!result) return CM_ERR_ARGUMENT;
+    cm_gmp_memory_begin();
     cm_result *r = calloc(1, sizeof *r);
     *result = r;
     if (!r) return CM_ERR_NO_MEMORY;

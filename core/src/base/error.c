@@ -3,6 +3,7 @@
 #include <stdio.h>
 
 #include "base/error.h"
+#include "base/gmp_memory.h"
 
 const char *cm_status_string(cm_status status)
 {
@@ -32,6 +33,8 @@ void cm_error_init(cm_error *e)
 
 cm_status cm_fail(cm_error *e, cm_status status, const char *fmt, ...)
 {
+    if (status == CM_ERR_CANCELLED && cm_gmp_memory_exhausted()) /* progress.c stopped the run */
+        return cm_fail_status(e, CM_ERR_NO_MEMORY);
     e->status = status;
     va_list ap;
     va_start(ap, fmt);
@@ -47,6 +50,7 @@ cm_status cm_fail_status(cm_error *e, cm_status status)
 
 cm_status cm_error_close(cm_error *e, cm_status status)
 {
+    if (status == CM_ERR_CANCELLED && cm_gmp_memory_exhausted()) status = cm_fail_status(e, CM_ERR_NO_MEMORY);
     if (status == CM_OK) cm_error_init(e);
     else if (e->message[0] == '\0') cm_fail_status(e, status);
     e->status = status;

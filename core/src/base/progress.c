@@ -2,6 +2,7 @@
  * (the partition) report one fraction throughout. */
 #include "base/progress.h"
 #include "base/clock.h"
+#include "base/gmp_memory.h"
 
 static const struct {
     const char *name;
@@ -27,12 +28,21 @@ void cm_progress_init(cm_progress *p, cm_progress_fn fn, void *user)
     p->within = 0.0;
     p->cancelled = 0;
     p->checks = 0;
+    cm_gmp_memory_begin();
+}
+
+/* GMP ran on its reserve: stop as if cancelled (the status becomes
+ * CM_ERR_NO_MEMORY, error.c). */
+static int starved(cm_progress *p)
+{
+    if (p && cm_gmp_memory_exhausted()) p->cancelled = 1;
+    return p && p->cancelled;
 }
 
 int cm_progress_report(cm_progress *p, cm_stage s, double within)
 {
+    if (starved(p)) return 1;
     if (!p || !p->fn) return 0;
-    if (p->cancelled) return 1;
     p->stage = s;
     p->within = within;
     double f = stages[s].from + (stages[s].to - stages[s].from) * within;
@@ -42,8 +52,8 @@ int cm_progress_report(cm_progress *p, cm_stage s, double within)
 
 int cm_progress_poll(cm_progress *p, cm_stage s, double within)
 {
+    if (starved(p)) return 1;
     if (!p || !p->fn) return 0;
-    if (p->cancelled) return 1;
     double now = cm_seconds_now();
     if (now - p->last < 0.2) return 0;
     p->last = now;
@@ -52,6 +62,7 @@ int cm_progress_poll(cm_progress *p, cm_stage s, double within)
 
 int cm_progress_check(cm_progress *p)
 {
+    if (starved(p)) return 1;
     if (!p || !p->fn) return 0;
     if (++p->checks % 32 != 0) return p->cancelled; /* the clock costs more than most loop bodies */
     return cm_progress_poll(p, p->stage, p->within);

@@ -27,7 +27,8 @@ typedef struct cm_progress {
     double last;       /* clock of the last throttled report */
     cm_stage stage;    /* what was reported last */
     double within;
-    int cancelled;     /* the caller asked to cancel: every check says so */
+    int cancelled;     /* the caller asked to cancel, or GMP ran out of memory
+                        (gmp_memory.h): every check says so */
     unsigned checks;   /* cm_progress_check looks at the clock every 32nd call */
 } cm_progress;
 
