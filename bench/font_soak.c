@@ -22,15 +22,20 @@
  *
  * Every pair ends as one of: valid (CM_OK and the exact check passes),
  * refused (an input error: the transformed polygons are not simple, say),
+ * beyond precision (CM_ERR_PRECISION: no double positions were found for
+ * Steiner vertices, e.g. a small glyph shifted far from the origin),
  * failed (CM_ERR_INTERNAL, CM_ERR_NO_MEMORY, or CM_OK that the checker
  * rejects) or timed out. Each failure is printed with what reproduces it
  * and, with --out, its polygons are written to DIR/pair_I_a.xy and _b.xy.
  * With --morph, every valid result is also morphed (convex combinations)
- * and sections at t = 0.1 .. 0.9 are checked; morph failures are counted
- * separately. Exit status 1 when anything failed. */
+ * and sections at t = 0.1 .. 0.9 are checked, then swept into prisms split
+ * into tetrahedra (default options: the sweep checks every prism and
+ * tetrahedron exactly, so the soak asks a success and a finite volume);
+ * morph and sweep failures are counted separately. Exit status 1 when anything failed. */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
 #include <errno.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -241,11 +246,12 @@ static const char *base_name(const char *path)
 }
 
 typedef struct counts {
-    long valid, refused, failed, timeout, skipped, morph_ok, morph_failed;
+    long valid, refused, precision, failed, timeout, skipped, morph_ok, morph_failed;
     double seconds;
 } counts;
 
-/* Sections strictly inside (0, 1): the ends are the result itself. */
+/* Sections strictly inside (0, 1): the ends are the result itself; then
+ * the sweep. */
 static int morph_check(const cm_result *r, char *why, size_t size)
 {
     cm_morph_options mo;
@@ -265,6 +271,21 @@ static int morph_check(const cm_result *r, char *why, size_t size)
         }
     }
     free(xy);
+    if (ok) {
+        cm_sweep_options so;
+        cm_sweep_options_init(&so);
+        so.tets = 1;
+        cm_sweep *w = NULL;
+        s = cm_sweep_create(m, &so, &w);
+        cm_sweep_quality q;
+        cm_sweep_get_quality(w, &q);
+        if (s != CM_OK || !isfinite(cm_sweep_volume(w))) {
+            snprintf(why, size, "sweep: %s, smallest scaled Jacobian %g: %s", cm_status_string(s),
+                     q.min_scaled_jacobian, w ? cm_sweep_message(w) : "");
+            ok = 0;
+        }
+        cm_sweep_free(w);
+    }
     cm_morph_free(m);
     return ok;
 }
@@ -360,6 +381,9 @@ int main(int argc, char **argv)
                 if (morph_check(r, why, sizeof why)) c.morph_ok++;
                 else verdict = "morph-failed", c.morph_failed++;
             }
+        } else if (s == CM_ERR_PRECISION) {
+            verdict = "precision", c.precision++;
+            snprintf(why, sizeof why, "%s: %s", cm_status_string(s), r ? cm_result_message(r) : "");
         } else if (s == CM_ERR_CANCELLED && d.expired) {
             verdict = "timeout", c.timeout++;
         } else if (s == CM_ERR_INTERNAL || s == CM_ERR_NO_MEMORY || s == CM_ERR_CANCELLED) {
@@ -391,8 +415,8 @@ int main(int argc, char **argv)
         cm_result_free(r);
     }
     c.seconds = elapsed(&all);
-    printf("cm_font_soak: %ld valid, %ld refused, %ld failed, %ld timed out, %ld skipped",
-           c.valid, c.refused, c.failed, c.timeout, c.skipped);
+    printf("cm_font_soak: %ld valid, %ld refused, %ld beyond precision, %ld failed, %ld timed out, %ld skipped",
+           c.valid, c.refused, c.precision, c.failed, c.timeout, c.skipped);
     if (morph) printf("; morph %ld valid, %ld failed", c.morph_ok, c.morph_failed);
     printf("; %.1f s\n", c.seconds);
     free(xy);

@@ -286,7 +286,8 @@ int exit_code_for(cm_status status)
     switch (status) {
     case CM_OK: return CLI_EXIT_OK;
     case CM_ERR_NO_MEMORY:
-    case CM_ERR_INTERNAL: return CLI_EXIT_INTERNAL;
+    case CM_ERR_INTERNAL:
+    case CM_ERR_PRECISION: return CLI_EXIT_INTERNAL;
     case CM_ERR_CANCELLED: return CLI_EXIT_INTERRUPTED;
     default: return CLI_EXIT_USAGE; /* the input was at fault */
     }

@@ -306,7 +306,7 @@ struct CancelledTag {};
     PyErr_SetString(cancelled_type.ptr(), message.c_str());
     throw py::error_already_set();
   }
-  if (status == CM_ERR_INTERNAL) throw std::runtime_error(message);
+  if (status == CM_ERR_INTERNAL || status == CM_ERR_PRECISION) throw std::runtime_error(message);
   long polygon = -1, vertex = -1, other = -1;
   cm_result_error_location(result, &polygon, &vertex, &other);
   raise_input_error(message, status, polygon, vertex, other);
@@ -557,7 +557,7 @@ Result triangulate(py::object polygons_in, py::kwargs kwargs)
     PyErr_SetString(cancelled_type.ptr(), text.c_str());
     throw py::error_already_set();
   }
-  if (status == CM_ERR_INTERNAL) throw std::runtime_error(text);
+  if (status == CM_ERR_INTERNAL || status == CM_ERR_PRECISION) throw std::runtime_error(text);
   throw py::value_error(text);
 }
 

@@ -38,7 +38,7 @@ static inline char *bic_trim(char *s)
 
 static inline int bic_status(const char *text, cm_status *status)
 {
-    for (int s = CM_OK; s <= CM_ERR_INTERNAL; s++)
+    for (int s = CM_OK; s <= CM_ERR_PRECISION; s++)
         if (strcmp(cm_status_string((cm_status)s), text) == 0) {
             *status = (cm_status)s;
             return 0;

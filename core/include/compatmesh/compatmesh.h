@@ -59,7 +59,13 @@ typedef enum cm_status {
     CM_ERR_ORIENTATION_MISMATCH, /* clockwise and counter-clockwise mixed */
     CM_ERR_NO_MEMORY,
     CM_ERR_CANCELLED,            /* the progress callback asked to stop */
-    CM_ERR_INTERNAL              /* the construction failed its own exact check */
+    CM_ERR_INTERNAL,             /* the construction failed its own exact check */
+    /* No position in doubles was found for some Steiner vertex: the input's
+     * vertices lie so close together, for their magnitude, that the
+     * doubles between them are too few (a polygon far from the origin
+     * relative to its size). Some such inputs provably have no valid
+     * answer in doubles; translated nearer the origin they have room. */
+    CM_ERR_PRECISION
 } cm_status;
 
 /* A short constant name for a status, e.g. "self-intersection". */

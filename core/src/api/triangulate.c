@@ -70,7 +70,7 @@ static cm_status construct(cm_result *r, const double *const *geoms, const int32
     cm_partition_stats ps;
     cm_status s = cm_partition(geoms, tris, k, n, progress, &r->mesh, &ps, &r->error);
     r->stats.fallback_count = ps.fallback_count;
-    if (s != CM_ERR_INTERNAL) return s;
+    if (s != CM_ERR_INTERNAL && s != CM_ERR_PRECISION) return s;
     /* A piece the overlay could not place in doubles (a sliver thinner
      * than their spacing): the whole input has room where the piece had
      * none, so the guaranteed construction runs on all of it. */

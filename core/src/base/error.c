@@ -20,6 +20,7 @@ const char *cm_status_string(cm_status status)
     case CM_ERR_NO_MEMORY: return "out of memory";
     case CM_ERR_CANCELLED: return "cancelled";
     case CM_ERR_INTERNAL: return "internal error";
+    case CM_ERR_PRECISION: return "beyond double precision";
     }
     return "unknown status";
 }

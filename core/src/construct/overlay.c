@@ -1195,9 +1195,12 @@ cm_status cm_overlay(const double *const *geoms, const int32_t *const *tris, siz
                 s = two_fan(geoms, k, n, a, b, &fan);
         if (s < 0) goto done;
         if (s > 0) {
-            status = cm_fail(err, CM_ERR_INTERNAL,
+            status = cm_fail(err, CM_ERR_PRECISION,
                              "overlay: %ld triangles of geometry %zu stay inverted: no double "
-                             "position found for their Steiner vertices", bad, where);
+                             "position found for their Steiner vertices (polygon %zu's vertices are "
+                             "too close together for their magnitude; nearer the origin it has room)",
+                             bad, where, where);
+            cm_fail_at(err, (long)where, -1, -1);
             goto done;
         }
         for (size_t j = 0; j < k; j++) free(f.xy[j]);
