@@ -246,12 +246,13 @@ static const char *base_name(const char *path)
 }
 
 typedef struct counts {
-    long valid, refused, precision, failed, timeout, skipped, morph_ok, morph_failed;
+    long valid, refused, precision, failed, timeout, skipped, morph_ok, morph_precision, morph_failed;
     double seconds;
 } counts;
 
 /* Sections strictly inside (0, 1): the ends are the result itself; then
- * the sweep. */
+ * the sweep. Returns 1 when both hold, 0 when one failed, 2 when one ended
+ * beyond double precision (CM_ERR_PRECISION). */
 static int morph_check(const cm_result *r, char *why, size_t size)
 {
     cm_morph_options mo;
@@ -287,7 +288,7 @@ static int morph_check(const cm_result *r, char *why, size_t size)
         cm_sweep_free(w);
     }
     cm_morph_free(m);
-    return ok;
+    return ok ? 1 : s == CM_ERR_PRECISION ? 2 : 0;
 }
 
 int main(int argc, char **argv)
@@ -378,7 +379,9 @@ int main(int argc, char **argv)
         } else if (s == CM_OK) {
             verdict = "valid", c.valid++;
             if (morph) {
-                if (morph_check(r, why, sizeof why)) c.morph_ok++;
+                int m = morph_check(r, why, sizeof why);
+                if (m == 1) c.morph_ok++;
+                else if (m == 2) verdict = "morph-precision", c.morph_precision++;
                 else verdict = "morph-failed", c.morph_failed++;
             }
         } else if (s == CM_ERR_PRECISION) {
@@ -417,7 +420,9 @@ int main(int argc, char **argv)
     c.seconds = elapsed(&all);
     printf("cm_font_soak: %ld valid, %ld refused, %ld beyond precision, %ld failed, %ld timed out, %ld skipped",
            c.valid, c.refused, c.precision, c.failed, c.timeout, c.skipped);
-    if (morph) printf("; morph %ld valid, %ld failed", c.morph_ok, c.morph_failed);
+    if (morph)
+        printf("; morph and sweep %ld valid, %ld beyond precision, %ld failed", c.morph_ok, c.morph_precision,
+               c.morph_failed);
     printf("; %.1f s\n", c.seconds);
     free(xy);
     for (long i = 0; i < fonts.count; i++) free(fonts.f[i].path), free(fonts.f[i].codes);

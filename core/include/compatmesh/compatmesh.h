@@ -470,8 +470,9 @@ CM_API const char *cm_morph_message(const cm_morph *morph);
  *                  to geometry g.
  *   inverted:      may be NULL; receives the number of triangles that are
  *                  not strictly counter-clockwise (exact predicates). For
- *                  the convex methods a non-zero count is a failure
- *                  (CM_ERR_INTERNAL); for CM_MORPH_LINEAR it is reported
+ *                  the convex methods, valid at every t in exact
+ *                  arithmetic, a non-zero count is rounding in doubles
+ *                  (CM_ERR_PRECISION); for CM_MORPH_LINEAR it is reported
  *                  and the call returns CM_OK.
  *   min_angle_deg: may be NULL; receives the section's smallest angle. */
 CM_API cm_status cm_morph_section(cm_morph *morph, double t, double *xy, size_t *inverted,

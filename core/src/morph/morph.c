@@ -405,9 +405,9 @@ cm_status cm_morph_section_at(cm_morph *m, size_t g, double s, double *xy, size_
             int crossing = cm_polygon_find_intersection(m->pos, (long)m->result->n, &a, &b);
             if (crossing < 0) return cm_fail_status(&m->error, CM_ERR_NO_MEMORY);
             if (crossing)
-                return cm_fail(&m->error, CM_ERR_INTERNAL,
+                return cm_fail(&m->error, CM_ERR_PRECISION,
                                "morph: %zu triangles of the enclosed mesh invert at t = %.17g and the boundary "
-                               "edges %ld and %ld cross", bad, t, a, b);
+                               "edges %ld and %ld cross: rounding in doubles", bad, t, a, b);
         }
         memcpy(xy, m->pos, 2 * m->nv * sizeof *xy);
     }
@@ -420,8 +420,13 @@ cm_status cm_morph_section_at(cm_morph *m, size_t g, double s, double *xy, size_
                                                 xy + 2 * (size_t)r->tri[3 * j + 2]));
         *min_angle_deg = lo * 180.0 / CM_PI;
     }
+    /* Convex combinations are valid at every t in exact arithmetic
+     * (Floater's theorem over the common convex enclosure): what folds is
+     * rounding, typically of geometries whose sizes differ by many orders
+     * of magnitude, or of a sliver. */
     if (bad && m->method != CM_MORPH_LINEAR)
-        return cm_fail(&m->error, CM_ERR_INTERNAL, "morph: %zu triangles invert at t = %.17g", bad, t);
+        return cm_fail(&m->error, CM_ERR_PRECISION,
+                       "morph: %zu triangles invert at t = %.17g: rounding in doubles", bad, t);
     cm_error_init(&m->error);
     return CM_OK;
 }

@@ -330,7 +330,7 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
         }
         section mid = {secs[i].g, s_mid, midway(secs[i].z, secs[i + 1].z), NULL, NULL, 0};
         if (!(mid.s > secs[i].s && mid.s < s_end)) {
-            s = cm_fail(&w->error, CM_ERR_INTERNAL, "sweep: the prism of triangle %ld at z = %g needs a finer step than doubles allow",
+            s = cm_fail(&w->error, CM_ERR_PRECISION, "sweep: the prism of triangle %ld at z = %g needs a finer step than doubles allow",
                      bad, secs[i].z);
             break;
         }
