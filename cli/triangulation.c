@@ -391,10 +391,14 @@ int triangulation_run(triangulation *t, const triangulation_args *args, cli_erro
     t->options = args->options;
     int code = read_inputs(t, error);
     if (code == CLI_EXIT_OK && !args->correspondence_given) { /* pins or counts decide */
-        int differ = 0, holes = 0;
-        for (size_t g = 0; g < args->input_count; g++) holes |= t->polygons[g].loops > 1;
-        /* loops correspond by index (the core names the loop whose sizes differ) */
-        for (size_t g = 1; g < args->input_count && !holes; g++) differ |= t->polygons[g].count != t->polygons[0].count;
+        /* Any loop whose sizes differ (the core names a hole count that differs). */
+        int differ = 0;
+        const polygon_input *p0 = &t->polygons[0];
+        for (size_t g = 1; g < args->input_count; g++) {
+            const polygon_input *p = &t->polygons[g];
+            differ |= p->count != p0->count;
+            for (size_t l = 0; l < p->loops && l < p0->loops; l++) differ |= p->loop_sizes[l] != p0->loop_sizes[l];
+        }
         if (args->pin_count || args->options.pin_corners_deg > 0) t->options.correspondence = CM_CORRESPOND_ARCLENGTH;
         else if (differ) t->options.correspondence = CM_CORRESPOND_AUTO;
     }

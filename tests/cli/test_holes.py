@@ -146,8 +146,33 @@ def test_bad_hole_count(cm, tmp_path):
 
 
 def test_bad_loop_size(cm, tmp_path):
-    bad(cm, tmp_path, SQUARE_WITH_HOLE, xy_text([circle(0, 0, 1, 16), circle(0, 0, 0.3, 7, -1)]),
-        r"^compatmesh: b\.xy: hole 1 \(loop 1\) has 7 vertices but in polygon 0 it has 8")
+    bad(cm, tmp_path, SQUARE_WITH_HOLE, xy_text([circle(0, 0, 1, 17), circle(0, 0, 0.3, 7, -1)]),
+        r"^compatmesh: b\.xy: the outer loop \(loop 0\) has 17 vertices but in polygon 0 it has 16",
+        "--correspondence", "index")
+
+
+def test_loops_of_different_sizes_pair_by_default(cm, tmp_path):
+    """Loops of different sizes (and a hole running the other way) take the
+    auto correspondence loop by loop: valid, one hole, every input vertex of
+    each file among its mesh's boundary vertices, bit-identical; V - E + F =
+    1 - h."""
+    other = [circle(0, 0, 1, 23), circle(0.3, 0.2, 0.35, 11)]
+    (tmp_path / "a.xy").write_text(xy_text(SQUARE_WITH_HOLE))
+    (tmp_path / "b.xy").write_text(xy_text(other))
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
+    assert result.returncode == 0, result.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert report["holes"] == 1 and report["n"] >= 23 + 11
+    faces = None
+    for name, loops in (("a", SQUARE_WITH_HOLE), ("b", other)):
+        vertices, triangles = read_off(tmp_path / "out" / f"{name}.off")
+        boundary = set(vertices[:report["n"]])
+        assert all(p in boundary for loop in loops for p in loop)
+        assert faces is None or faces == triangles
+        faces = triangles
+    edges = {tuple(sorted(e)) for a, b, c in faces for e in ((a, b), (b, c), (c, a))}
+    assert len(vertices) - len(edges) + len(faces) == 0
+    assert min(m["min_angle_deg"] for m in report["meshes"]) >= 10
 
 
 def test_bad_hole_outside(cm, tmp_path):

@@ -247,11 +247,97 @@ static void test_bad_input(void)
     cm_options o;
     cm_options_init(&o);
     o.correspondence = CM_CORRESPOND_ARCLENGTH;
+    size_t pins[2] = {0, 0};
+    o.pins = pins, o.num_pins = 1;
     cm_loops in[2] = {loops_of(&a), loops_of(&a)};
     cm_result *r = NULL;
     CHECK(cm_triangulate_loops(in, 2, &o, &r) == CM_ERR_ARGUMENT);
-    CHECK(strstr(cm_result_message(r), "index correspondence"));
+    CHECK(strstr(cm_result_message(r), "pins are not taken for polygons with holes"));
     cm_result_free(r);
+}
+
+/* The input loop of polygon g that input vertex v (whole-array index)
+ * belongs to, and its start and size. */
+static size_t input_loop(const shape *s, long v, size_t *start, size_t *size)
+{
+    size_t l = 0, at = 0;
+    while (l + 1 < s->loops && (size_t)v >= at + s->sizes[l]) at += s->sizes[l++];
+    *start = at, *size = s->sizes[l];
+    return l;
+}
+
+/* Arc-length and auto correspondences with holes: loops of different
+ * sizes pair loop by loop. Expected: valid (checked exactly against the
+ * refined loops the result reports), every input vertex of every loop a
+ * boundary vertex, bit-identical, once and in order; every other boundary
+ * vertex on the input edge it names, of its own loop; 1 hole, Euler
+ * characteristic 0. */
+static void test_arclength_loops(void)
+{
+    shape a = {0}, b = {0};
+    add_square(&a, 0, 0, 1, 16, 1);
+    add_square(&a, 0.1, 0, 0.4, 8, -1);
+    add_circle(&b, 0, 0, 1, 23, -1); /* the other way round: normalised */
+    add_circle(&b, 0.3, 0.2, 0.35, 11, 1);
+    const shape *in_shape[2] = {&a, &b};
+    cm_correspondence modes[2] = {CM_CORRESPOND_ARCLENGTH, CM_CORRESPOND_AUTO};
+    for (int mode = 0; mode < 2; mode++)
+        for (int remesh = 0; remesh < 2; remesh++) {
+            cm_options o;
+            cm_options_init(&o);
+            o.correspondence = modes[mode], o.remesh = remesh;
+            cm_loops in[2] = {loops_of(&a), loops_of(&b)};
+            cm_result *r = NULL;
+            cm_status st = cm_triangulate_loops(in, 2, &o, &r);
+            CHECK_MSG(st == CM_OK, "mode %d: %s", mode, cm_result_message(r));
+            if (st != CM_OK) {
+                cm_result_free(r);
+                continue;
+            }
+            size_t n = cm_result_stats(r)->n, sizes[2] = {0, 0};
+            int contract = 1;
+            for (size_t g = 0; g < 2; g++) {
+                const shape *s = in_shape[g];
+                const double *xy = cm_result_vertices(r, g);
+                size_t seen = 0, loop_sizes[2] = {0, 0};
+                for (size_t i = 0; i < n; i++) {
+                    double t;
+                    long e = cm_result_boundary_source(r, g, i, &t);
+                    if (e < 0 || (size_t)e >= s->n || !(t >= 0 && t < 1)) {
+                        contract = 0;
+                        break;
+                    }
+                    size_t start, size, l = input_loop(s, e, &start, &size);
+                    loop_sizes[l]++;
+                    const double *p = s->xy + 2 * e, *q = s->xy + 2 * (start + ((size_t)e - start + 1) % size);
+                    if (t == 0) {
+                        contract &= memcmp(xy + 2 * i, p, 2 * sizeof(double)) == 0;
+                        seen++;
+                    } else {
+                        double scale = fabs(q[0] - p[0]) + fabs(q[1] - p[1]);
+                        contract &= fabs(xy[2 * i] - (p[0] + t * (q[0] - p[0]))) +
+                                        fabs(xy[2 * i + 1] - (p[1] + t * (q[1] - p[1]))) <= 1e-12 * scale;
+                    }
+                }
+                contract &= seen == s->n;
+                if (g == 0) sizes[0] = loop_sizes[0], sizes[1] = loop_sizes[1];
+                else contract &= sizes[0] == loop_sizes[0] && sizes[1] == loop_sizes[1];
+            }
+            CHECK_MSG(contract, "mode %d remesh %d: the boundary contract", mode, remesh);
+            if (contract) {
+                cm_loops refined[2] = {{cm_result_vertices(r, 0), sizes, 2}, {cm_result_vertices(r, 1), sizes, 2}};
+                char why[256] = "";
+                CHECK_MSG(rc_check_loops(r, refined, 2, why, sizeof why), "mode %d remesh %d: %s", mode, remesh, why);
+                CHECK_MSG(rc_check_halfedges_holes(r, n, 1, why, sizeof why), "mode %d remesh %d: %s", mode, remesh, why);
+                CHECK(cm_result_stats(r)->holes == 1 && n >= 23 + 11);
+                cm_quality q0, q1;
+                cm_result_quality(r, 0, &q0), cm_result_quality(r, 1, &q1);
+                printf("square/disc, loops of different sizes, %s%s: %zu boundary vertices, Steiner %zu, "
+                       "smallest angles %.1f %.1f\n", mode ? "auto" : "arclength", remesh ? ", remeshed" : "", n,
+                       cm_result_stats(r)->steiner, q0.min_angle_deg, q1.min_angle_deg);
+            }
+            cm_result_free(r);
+        }
 }
 
 /* Without holes the loops call is cm_triangulate_polygons, bit for bit. */
@@ -284,5 +370,6 @@ int main(void)
     test_square_and_disc();
     test_plate();
     test_turned_hole();
+    test_arclength_loops();
     return check_summary("test_holes");
 }

@@ -67,7 +67,7 @@ def test_plate_three_holes_as_lists():
 def test_bad_input_names_polygon_and_loop():
     a = [square(1, 8), square(0.4, 4, -1)]
     with pytest.raises(compatmesh.InputError, match="hole 1 \\(loop 1\\) has 5 vertices") as info:
-        compatmesh.triangulate([a, [circle(0, 0, 1, 8), circle(0, 0, 0.3, 5, -1)]])
+        compatmesh.triangulate([a, [circle(0, 0, 1, 8), circle(0, 0, 0.3, 5, -1)]], correspondence="index")
     assert info.value.status == "vertex count mismatch" and info.value.polygon == 1
     outside = [square(1, 8), square(0.4, 4, -1) + [3, 0]]
     with pytest.raises(compatmesh.InputError, match="polygon 1: hole 1 \\(loop 1\\) lies outside") as info:
@@ -77,6 +77,19 @@ def test_bad_input_names_polygon_and_loop():
         compatmesh.triangulate([a, [square(1, 8), np.zeros((4, 3))]])
     with pytest.raises(compatmesh.InputError, match="polygon 1 has 0 holes but polygon 0 has 1"):
         compatmesh.triangulate([a, square(1, 12)])
+
+
+def test_loops_of_different_sizes_pair_by_default():
+    """Loops of different sizes take the auto correspondence loop by loop:
+    every input vertex is a boundary vertex, bit-identical; one hole."""
+    a = [square(1, 16), square(0.4, 8, -1)]
+    b = [circle(0, 0, 1, 23), circle(0.3, 0.2, 0.35, 11)]
+    result = compatmesh.triangulate([a, b])
+    n = result.stats["n"]
+    assert result.stats["holes"] == 1 and n >= 23 + 11
+    for loops, vertices in zip((a, b), result.vertices):
+        boundary = {tuple(p) for p in vertices[:n]}
+        assert all(tuple(p) in boundary for loop in loops for p in loop)
 
 
 def test_morph_refuses_holes():

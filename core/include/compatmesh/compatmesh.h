@@ -289,11 +289,15 @@ typedef struct cm_loops {
 } cm_loops;
 
 /* Compatibly triangulates k polygons with holes: every polygon has the
- * same number of loops of the same sizes; loop l of every polygon
- * corresponds to loop l, vertex i of a loop to vertex i (index
- * correspondence only). Each loop may run either way (the same way in every
- * polygon); the holes must lie strictly inside the outer loop, outside each
- * other, and no loop may touch another. Failures of validation name the
+ * same number of loops; loop l of every polygon corresponds to loop l.
+ * With CM_CORRESPOND_INDEX (loops of the same sizes, each running the same
+ * way in every polygon) vertex i of a loop corresponds to vertex i; with
+ * CM_CORRESPOND_ARCLENGTH or _AUTO every loop is paired as a polygon
+ * without holes would be (loops of any sizes and directions; starts
+ * chosen per loop for auto, pin_corners_deg and max_edge per loop; explicit
+ * pins are refused), and cm_result_boundary_source says where each
+ * boundary vertex lies. The holes must lie strictly inside the outer loop,
+ * outside each other, and no loop may touch another. Failures of validation name the
  * polygon, the loop and the vertex within the loop; the error location's
  * vertex is the index into the polygon's whole xy array.
  *
@@ -303,7 +307,8 @@ typedef struct cm_loops {
  * such chords exist the call fails with CM_ERR_INTERNAL and says which hole.
  *
  * The result: the input vertices first, in input order (outer loop, then
- * each hole), bit-identical, then the Steiner vertices; its boundary edges
+ * each hole), bit-identical (with the arc-length correspondences: the
+ * refined loops, outer first), then the Steiner vertices; its boundary edges
  * are exactly the loops' edges; V - E + F = 1 - holes. The half-edge
  * arrays chain each loop's boundary half-edges separately. Remeshing runs
  * as for cm_triangulate (the loops are never touched). Such a result is not
@@ -354,6 +359,8 @@ CM_API const cm_stats *cm_result_stats(const cm_result *result);
  * the input vertex e of polygon g such that the vertex is the point at
  * parameter *t in [0, 1) of input edge e -> e + 1 (t == 0: input vertex e
  * itself, bit-identical). With CM_CORRESPOND_INDEX it is input vertex i.
+ * For polygons with holes, e indexes the polygon's whole xy array and
+ * e + 1 is the next vertex of e's loop.
  * -1 for a failed result or an index out of range. t may be NULL. */
 CM_API long cm_result_boundary_source(const cm_result *result, size_t g, size_t i, double *t);
 /* Returns CM_ERR_ARGUMENT if g is out of range or the result failed. */

@@ -173,7 +173,7 @@ static size_t loop_of(const size_t *start, size_t num_loops, long v, long *withi
     return l;
 }
 
-static cm_status check_loops_arguments(const cm_loops *polygons, size_t k, cm_error *err)
+static cm_status check_loops_arguments(const cm_loops *polygons, size_t k, int same_sizes, cm_error *err)
 {
     if (!polygons) return cm_fail(err, CM_ERR_ARGUMENT, "no polygons given");
     if (k < 2) return cm_fail(err, CM_ERR_ARGUMENT, "need at least 2 polygons, got %zu", k);
@@ -195,7 +195,7 @@ static cm_status check_loops_arguments(const cm_loops *polygons, size_t k, cm_er
                 return cm_fail(err, CM_ERR_TOO_FEW_VERTICES, "polygon %zu: %s has %zu vertices, needs at least 3",
                                g, loop_name(name, sizeof name, l), m);
             }
-            if (m != polygons[0].loop_sizes[l]) {
+            if (same_sizes && m != polygons[0].loop_sizes[l]) {
                 cm_fail_at(err, (long)g, -1, -1);
                 return cm_fail(err, CM_ERR_COUNT_MISMATCH, "polygon %zu: %s has %zu vertices but in polygon 0 it has %zu",
                                g, loop_name(name, sizeof name, l), m, polygons[0].loop_sizes[l]);
@@ -279,9 +279,24 @@ static cm_status check_one_loops(const double *xy, const size_t *start, size_t n
     return CM_OK;
 }
 
+cm_status cm_input_check_loops(const cm_loops *polygons, size_t k, int *orientation, cm_error *err)
+{
+    cm_status s = check_loops_arguments(polygons, k, 0, err);
+    size_t num_loops = s == CM_OK ? polygons[0].num_loops : 0;
+    size_t *start = s == CM_OK ? malloc((num_loops + 1) * sizeof *start) : NULL;
+    if (s == CM_OK && !start) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+    for (size_t g = 0; s == CM_OK && g < k; g++) {
+        start[0] = 0;
+        for (size_t l = 0; l < num_loops; l++) start[l + 1] = start[l] + polygons[g].loop_sizes[l];
+        s = check_one_loops(polygons[g].xy, start, num_loops, (long)g, err, orientation + g * num_loops);
+    }
+    free(start);
+    return s;
+}
+
 cm_status cm_input_validate_loops(const cm_loops *polygons, size_t k, cm_error *err, int *reversed)
 {
-    cm_status s = check_loops_arguments(polygons, k, err);
+    cm_status s = check_loops_arguments(polygons, k, 1, err);
     if (s != CM_OK) return s;
     size_t num_loops = polygons[0].num_loops;
     size_t *start = malloc((num_loops + 1) * sizeof *start);

@@ -27,4 +27,9 @@ cm_status cm_input_check_polygons(const double *const *polygons, const size_t *c
  * the polygon and the vertex's index in that polygon's whole array. */
 cm_status cm_input_validate_loops(const cm_loops *polygons, size_t k, cm_error *err, int *reversed);
 
+/* The same checks of every polygon on its own, for the arc-length
+ * correspondences: the same number of loops, any loop sizes, any
+ * orientations; orientation[g * num_loops + l] receives +1 or -1. */
+cm_status cm_input_check_loops(const cm_loops *polygons, size_t k, int *orientation, cm_error *err);
+
 #endif

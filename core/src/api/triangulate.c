@@ -276,23 +276,22 @@ static cm_status bound_before(cm_result *r, const double *const *polygons, const
     return s;
 }
 
-/* CM_CORRESPOND_ARCLENGTH and _AUTO: each polygon checked on its own (for
- * auto, the starts chosen where none are pinned), the common
- * refinement of the boundaries made, then the pipeline on it. A failure of
- * the refined boundaries (rounding of a point on an edge next to another
- * edge) is located at the input edge it came from. */
-static cm_status run_arclength(cm_result *r, const double *const *polygons, const size_t *counts,
-                               size_t k, const cm_options *o, const size_t *every_vertex)
+/* The boundaries in correspondence for CM_CORRESPOND_ARCLENGTH and _AUTO,
+ * of k polygons each checked on its own (orientation as found): for auto,
+ * the starts chosen where none are pinned; then the common refinement and
+ * the max_edge split. every_vertex: the index correspondence, as pins at
+ * every vertex. whole: a whole polygon, whose pins the caller gave and
+ * whose bound before the choice is reported; 0 for one loop of polygons
+ * with holes. */
+static cm_status correspond_boundary(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
+                                     const int *orientation, const cm_options *o, const size_t *every_vertex,
+                                     int whole, cm_boundary_map *out)
 {
-    int *orientation = k ? malloc(k * sizeof *orientation) : NULL;
-    size_t *merged_counts = k ? malloc(k * sizeof *merged_counts) : NULL;
-    cm_status s = !k || (orientation && merged_counts) ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-    if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
-    /* every_vertex: the index correspondence, as pins at every vertex. */
-    const size_t *pins = every_vertex ? every_vertex : o->pins;
-    size_t num_pins = every_vertex ? counts[0] : o->num_pins, *chosen = NULL;
+    cm_status s = CM_OK;
+    const size_t *pins = every_vertex ? every_vertex : whole ? o->pins : NULL;
+    size_t num_pins = every_vertex ? counts[0] : whole ? o->num_pins : 0, *chosen = NULL;
     size_t *affine = NULL;
-    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && !(o->pin_corners_deg > 0)) {
+    if (o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && !(o->pin_corners_deg > 0)) {
         /* Affine images of one another: vertex to vertex, no distortion. */
         int found = 0;
         affine = malloc(counts[0] * k * sizeof *affine);
@@ -316,24 +315,43 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
         if (starts != chosen) free(starts);
         pins = corner_pins;
     }
-    if (s == CM_OK && chosen && o->ceiling) s = bound_before(r, polygons, counts, k, orientation);
-    if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, pins, num_pins,
-                                                &r->boundary, &r->error);
+    if (s == CM_OK && chosen && o->ceiling && whole) s = bound_before(r, polygons, counts, k, orientation);
+    if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, pins, num_pins, out, &r->error);
     if (s == CM_OK && o->max_edge > 0)
-        s = cm_boundary_map_split(&r->boundary, polygons, counts, orientation, o->max_edge, &r->error);
+        s = cm_boundary_map_split(out, polygons, counts, orientation, o->max_edge, &r->error);
     free(chosen), free(corner_pins), free(affine);
+    return s;
+}
+
+/* A failure on the refined boundaries (rounding of a point on an edge next
+ * to another edge) located at the input edge it came from. */
+static void locate_in_input(cm_result *r, cm_status s)
+{
+    if (s == CM_OK || s == CM_ERR_NO_MEMORY || s == CM_ERR_CANCELLED || r->error.polygon < 0 ||
+        r->error.vertex < 0 || (size_t)r->error.vertex >= r->boundary.n)
+        return;
+    size_t g = (size_t)r->error.polygon, v = (size_t)r->error.vertex;
+    char detail[sizeof r->error.message];
+    snprintf(detail, sizeof detail, "%s", r->error.message);
+    cm_fail_at(&r->error, (long)g, (long)r->boundary.edge[g][v], -1);
+    cm_fail(&r->error, s, "the boundary the arc-length correspondence made, near input vertex %ld of polygon %zu: %s",
+            (long)r->boundary.edge[g][v], g, detail);
+}
+
+/* CM_CORRESPOND_ARCLENGTH and _AUTO: the boundaries in correspondence,
+ * then the pipeline on them. */
+static cm_status run_arclength(cm_result *r, const double *const *polygons, const size_t *counts,
+                               size_t k, const cm_options *o, const size_t *every_vertex)
+{
+    int *orientation = k ? malloc(k * sizeof *orientation) : NULL;
+    size_t *merged_counts = k ? malloc(k * sizeof *merged_counts) : NULL;
+    cm_status s = !k || (orientation && merged_counts) ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
+    if (s == CM_OK) s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, 1, &r->boundary);
     if (s == CM_OK) {
         for (size_t g = 0; g < k; g++) merged_counts[g] = r->boundary.n;
         s = run_pipeline(r, (const double *const *)r->boundary.xy, merged_counts, k, o);
-        if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED && r->error.polygon >= 0 &&
-            r->error.vertex >= 0 && (size_t)r->error.vertex < r->boundary.n) {
-            size_t g = (size_t)r->error.polygon, v = (size_t)r->error.vertex;
-            char detail[sizeof r->error.message];
-            snprintf(detail, sizeof detail, "%s", r->error.message);
-            cm_fail_at(&r->error, (long)g, (long)r->boundary.edge[g][v], -1);
-            cm_fail(&r->error, s, "the boundary the arc-length correspondence made, near input vertex %ld of polygon %zu: %s",
-                    (long)r->boundary.edge[g][v], g, detail);
-        }
+        locate_in_input(r, s);
     }
     free(orientation), free(merged_counts);
     return s;
@@ -501,9 +519,6 @@ static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, con
     cm_progress_init(&progress, o->progress, o->progress_user);
     double t0 = cm_seconds_now();
     if (cm_progress_report(&progress, CM_STAGE_VALIDATE, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
-    if (o->correspondence != CM_CORRESPOND_INDEX)
-        return cm_fail(&r->error, CM_ERR_ARGUMENT,
-                       "polygons with holes take the index correspondence only (equal loop sizes)");
     size_t num_loops = polygons && k ? polygons[0].num_loops : 0;
     int *reversed = malloc((num_loops + 1) * sizeof *reversed);
     size_t *start = malloc((num_loops + 1) * sizeof *start);
@@ -566,6 +581,85 @@ done:
     return s;
 }
 
+/* CM_CORRESPOND_ARCLENGTH and _AUTO for polygons with holes: loop l of
+ * every polygon corresponds to loop l, and within each loop as for a
+ * polygon without holes (starts chosen for auto, corner pins and max_edge
+ * per loop). The caller's pins are refused: they would have to name
+ * loops. The refined loops then take the index pipeline, and r->boundary
+ * maps every boundary vertex to its input edge, numbered in the polygon's
+ * whole array (the edge from a vertex to the next of its loop). */
+static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o)
+{
+    if (o->num_pins)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT,
+                       "pins are not taken for polygons with holes; pin_corners_deg and the auto "
+                       "correspondence work loop by loop");
+    if (!polygons || k < 2) return cm_input_check_loops(polygons, k, NULL, &r->error);
+    size_t L = polygons[0].num_loops;
+    int *orientation = malloc((k * L + 1) * sizeof *orientation), *loop_orientation = malloc(k * sizeof(int));
+    size_t *start = malloc(k * (L + 1) * sizeof *start), *count = malloc(k * sizeof *count);
+    size_t *sizes = malloc((L + 1) * sizeof *sizes);
+    const double **xy = malloc(k * sizeof *xy);
+    cm_boundary_map *maps = calloc(L + 1, sizeof *maps);
+    cm_loops *refined = malloc(k * sizeof *refined);
+    cm_status s = orientation && loop_orientation && start && count && sizes && xy && maps && refined
+                      ? CM_OK
+                      : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    if (s == CM_OK) s = cm_input_check_loops(polygons, k, orientation, &r->error);
+    for (size_t g = 0; s == CM_OK && g < k; g++) {
+        start[g * (L + 1)] = 0;
+        for (size_t l = 0; l < L; l++) start[g * (L + 1) + l + 1] = start[g * (L + 1) + l] + polygons[g].loop_sizes[l];
+    }
+    size_t n = 0;
+    for (size_t l = 0; s == CM_OK && l < L; l++) {
+        for (size_t g = 0; g < k; g++) {
+            xy[g] = polygons[g].xy + 2 * start[g * (L + 1) + l];
+            count[g] = polygons[g].loop_sizes[l], loop_orientation[g] = orientation[g * L + l];
+        }
+        s = correspond_boundary(r, xy, count, k, loop_orientation, o, NULL, 0, &maps[l]);
+        if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
+            char detail[sizeof r->error.message];
+            snprintf(detail, sizeof detail, "%s", r->error.message);
+            long g = r->error.polygon, v = r->error.vertex;
+            if (g >= 0 && (size_t)g < k && v >= 0) cm_fail_at(&r->error, g, (long)start[(size_t)g * (L + 1) + l] + v, -1);
+            cm_fail(&r->error, s, "%s %zu: %s", l ? "hole" : "outer loop", l, detail);
+        }
+        sizes[l] = maps[l].n, n += maps[l].n;
+    }
+    /* The refined loops one after another, as the index pipeline takes them. */
+    cm_boundary_map *b = &r->boundary;
+    if (s == CM_OK) {
+        b->k = k, b->n = n;
+        b->xy = calloc(k, sizeof *b->xy), b->edge = calloc(k, sizeof *b->edge), b->t = calloc(k, sizeof *b->t);
+        if (!b->xy || !b->edge || !b->t) s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    }
+    for (size_t g = 0; s == CM_OK && g < k; g++) {
+        b->xy[g] = malloc(2 * n * sizeof *b->xy[g]), b->edge[g] = malloc(n * sizeof *b->edge[g]);
+        b->t[g] = malloc(n * sizeof *b->t[g]);
+        if (!b->xy[g] || !b->edge[g] || !b->t[g]) {
+            s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+            break;
+        }
+        for (size_t l = 0, at = 0; l < L; at += maps[l].n, l++) {
+            memcpy(b->xy[g] + 2 * at, maps[l].xy[g], 2 * maps[l].n * sizeof *b->xy[g]);
+            memcpy(b->t[g] + at, maps[l].t[g], maps[l].n * sizeof *b->t[g]);
+            for (size_t i = 0; i < maps[l].n; i++)
+                b->edge[g][at + i] = (int32_t)start[g * (L + 1) + l] + maps[l].edge[g][i];
+        }
+        refined[g] = (cm_loops){b->xy[g], sizes, L};
+    }
+    if (s == CM_OK) {
+        cm_options by_index = *o;
+        by_index.correspondence = CM_CORRESPOND_INDEX;
+        by_index.pin_corners_deg = 0, by_index.max_edge = 0;
+        s = run_loops(r, refined, k, &by_index);
+        locate_in_input(r, s);
+    }
+    for (size_t l = 0; maps && l < L; l++) cm_boundary_map_clear(&maps[l]);
+    free(orientation), free(loop_orientation), free(start), free(count), free(sizes), free(xy), free(maps), free(refined);
+    return s;
+}
+
 cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_options *options,
                                cm_result **result)
 {
@@ -593,7 +687,8 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
         s = cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
     if (s == CM_OK) s = check_remesh_options(r, options);
     if (s == CM_OK) s = check_correspondence_options(r, options);
-    if (s == CM_OK) s = run_loops(r, polygons, k, options);
+    if (s == CM_OK && options->correspondence != CM_CORRESPOND_INDEX) s = run_loops_arclength(r, polygons, k, options);
+    else if (s == CM_OK) s = run_loops(r, polygons, k, options);
     if (s != CM_OK) cm_result_clear_geometry(r);
     return cm_error_close(&r->error, s);
 }
