@@ -585,7 +585,8 @@ done:
  * every polygon corresponds to loop l, and within each loop as for a
  * polygon without holes (starts chosen for auto, corner pins and max_edge
  * per loop). The caller's pins are refused: they would have to name
- * loops. The refined loops then take the index pipeline, and r->boundary
+ * loops. CM_CORRESPOND_INDEX with max_edge comes here too, as pins at every
+ * vertex of each loop. The refined loops then take the index pipeline, and r->boundary
  * maps every boundary vertex to its input edge, numbered in the polygon's
  * whole array (the edge from a vertex to the next of its loop). */
 static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o)
@@ -606,6 +607,18 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
                       ? CM_OK
                       : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     if (s == CM_OK) s = cm_input_check_loops(polygons, k, orientation, &r->error);
+    int index_split = o->correspondence == CM_CORRESPOND_INDEX;
+    size_t *every = NULL;
+    if (s == CM_OK && index_split) { /* equal sizes and directions, then vertex i on vertex i */
+        int *reversed = malloc(L * sizeof *reversed);
+        s = reversed ? cm_input_validate_loops(polygons, k, &r->error, reversed) : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        free(reversed);
+        size_t largest = 0;
+        for (size_t l = 0; l < L; l++) largest = polygons[0].loop_sizes[l] > largest ? polygons[0].loop_sizes[l] : largest;
+        if (s == CM_OK && !(every = malloc(largest * k * sizeof *every))) s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        for (size_t j = 0; s == CM_OK && j < largest; j++)
+            for (size_t g = 0; g < k; g++) every[j * k + g] = j;
+    }
     for (size_t g = 0; s == CM_OK && g < k; g++) {
         start[g * (L + 1)] = 0;
         for (size_t l = 0; l < L; l++) start[g * (L + 1) + l + 1] = start[g * (L + 1) + l] + polygons[g].loop_sizes[l];
@@ -616,7 +629,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
             xy[g] = polygons[g].xy + 2 * start[g * (L + 1) + l];
             count[g] = polygons[g].loop_sizes[l], loop_orientation[g] = orientation[g * L + l];
         }
-        s = correspond_boundary(r, xy, count, k, loop_orientation, o, NULL, 0, &maps[l]);
+        s = correspond_boundary(r, xy, count, k, loop_orientation, o, every, 0, &maps[l]);
         if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
             char detail[sizeof r->error.message];
             snprintf(detail, sizeof detail, "%s", r->error.message);
@@ -657,6 +670,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
     }
     for (size_t l = 0; maps && l < L; l++) cm_boundary_map_clear(&maps[l]);
     free(orientation), free(loop_orientation), free(start), free(count), free(sizes), free(xy), free(maps), free(refined);
+    free(every);
     return s;
 }
 
@@ -687,7 +701,8 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
         s = cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
     if (s == CM_OK) s = check_remesh_options(r, options);
     if (s == CM_OK) s = check_correspondence_options(r, options);
-    if (s == CM_OK && options->correspondence != CM_CORRESPOND_INDEX) s = run_loops_arclength(r, polygons, k, options);
+    if (s == CM_OK && (options->correspondence != CM_CORRESPOND_INDEX || options->max_edge > 0))
+        s = run_loops_arclength(r, polygons, k, options);
     else if (s == CM_OK) s = run_loops(r, polygons, k, options);
     if (s != CM_OK) cm_result_clear_geometry(r);
     return cm_error_close(&r->error, s);
