@@ -3,6 +3,7 @@
  * (valid, hole count, Euler characteristic 1 - h, a Steiner bound), each
  * result checked exactly by result_check.h (areas in rationals). */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
@@ -57,6 +58,53 @@ static cm_loops loops_of(const shape *s)
     return (cm_loops){s->xy, s->sizes, s->loops};
 }
 
+static double loop_area(const double *xy, size_t m)
+{
+    double a = 0;
+    for (size_t i = 0; i < m; i++) {
+        const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % m);
+        a += p[0] * q[1] - q[0] * p[1];
+    }
+    return 0.5 * fabs(a);
+}
+
+/* The morph and sweep of a result with holes: sections at t = 0.1 .. 0.9
+ * valid (the morph counts inverted triangles exactly) and covering the
+ * outer loop's area minus the holes' (the holes stay empty); the sweep
+ * into tetrahedra succeeds (every prism and tetrahedron checked exactly). */
+static void expect_morph(const char *name, const cm_result *r, const shape *a)
+{
+    cm_morph *m = NULL;
+    cm_status s = cm_morph_create(r, NULL, &m);
+    CHECK_MSG(s == CM_OK, "%s: morph: %s", name, cm_morph_message(m));
+    size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
+    const int32_t *tri = cm_result_triangles(r);
+    double *xy = malloc(2 * nv * sizeof *xy);
+    for (int step = 1; s == CM_OK && xy && step < 10; step++) {
+        size_t inverted = 1;
+        s = cm_morph_section(m, step / 10.0, xy, &inverted, NULL);
+        CHECK_MSG(s == CM_OK && inverted == 0, "%s: section at t = %.1f: %s", name, step / 10.0, cm_morph_message(m));
+        double covered = 0, expected = loop_area(xy, a->sizes[0]);
+        for (size_t l = 1, at = a->sizes[0]; l < a->loops; at += a->sizes[l++]) expected -= loop_area(xy + 2 * at, a->sizes[l]);
+        for (size_t t = 0; t < nt; t++) {
+            const double *p = xy + 2 * tri[3 * t], *q = xy + 2 * tri[3 * t + 1], *u = xy + 2 * tri[3 * t + 2];
+            covered += 0.5 * ((q[0] - p[0]) * (u[1] - p[1]) - (q[1] - p[1]) * (u[0] - p[0]));
+        }
+        CHECK_MSG(fabs(covered - expected) <= 1e-9 * expected, "%s: t = %.1f covers %.17g, expected %.17g", name,
+                  step / 10.0, covered, expected);
+    }
+    free(xy);
+    if (s == CM_OK) {
+        cm_sweep_options so;
+        cm_sweep_options_init(&so);
+        so.tets = 1;
+        cm_sweep *w = NULL;
+        CHECK_MSG(cm_sweep_create(m, &so, &w) == CM_OK, "%s: sweep: %s", name, cm_sweep_message(w));
+        cm_sweep_free(w);
+    }
+    cm_morph_free(m);
+}
+
 /* Runs a fixture and checks everything it states. */
 static void expect_valid(const char *name, const shape *a, const shape *b, int remesh,
                          size_t max_steiner)
@@ -86,6 +134,7 @@ static void expect_valid(const char *name, const shape *a, const shape *b, int r
         cm_result_quality(r, 0, &q0), cm_result_quality(r, 1, &q1);
         printf("%-28s holes %zu  Steiner %zu (construction %zu)  smallest angles %.1f %.1f\n", name,
                st->holes, st->steiner, st->steiner_before_remesh, q0.min_angle_deg, q1.min_angle_deg);
+        expect_morph(name, r, a);
     }
     cm_result_free(r);
 }

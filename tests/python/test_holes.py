@@ -92,8 +92,18 @@ def test_loops_of_different_sizes_pair_by_default():
         assert all(tuple(p) in boundary for loop in loops for p in loop)
 
 
-def test_morph_refuses_holes():
+def test_morph_and_sweep_with_holes():
+    """The holes stay empty: every frame's triangles are counter-clockwise and
+    cover the outer loop's area minus the hole's; the sweep's tetrahedra are
+    positive."""
     a = [square(1, 16), square(0.4, 8, -1)]
     b = [circle(0, 0, 1, 16), circle(0.3, 0.2, 0.35, 8, -1)]
-    with pytest.raises(ValueError, match="polygons with holes"):
-        compatmesh.morph([a, b], frames=3)
+    morph = compatmesh.morph([a, b], frames=3)
+    tri = morph.cells["triangle"]
+    for frame in morph.points:
+        e1, e2 = frame[tri[:, 1]] - frame[tri[:, 0]], frame[tri[:, 2]] - frame[tri[:, 0]]
+        areas = 0.5 * (e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0])
+        outer, hole = (abs(exact_area2(frame[lo:hi].tolist())) / 2 for lo, hi in ((0, 16), (16, 24)))
+        assert areas.min() > 0 and abs(areas.sum() - (outer - hole)) < 1e-9 * outer
+    sweep = compatmesh.sweep([a, b], tets=True)
+    assert sweep.quality["min_scaled_jacobian"] > 0 and len(sweep.cells["tetra"]) == 3 * len(sweep.cells["wedge"])

@@ -311,9 +311,10 @@ typedef struct cm_loops {
  * refined loops, outer first), then the Steiner vertices; its boundary edges
  * are exactly the loops' edges; V - E + F = 1 - holes. The half-edge
  * arrays chain each loop's boundary half-edges separately. Remeshing runs
- * as for cm_triangulate (the loops are never touched). Such a result is not
- * morphed (cm_morph_create refuses it), and cm_check_geometry and
- * cm_result_from_meshes take one boundary loop only. With one loop per
+ * as for cm_triangulate (the loops are never touched). Such a result is
+ * morphed and swept like any other (the morph fills every hole with a
+ * compatible triangulation of its own, which the sections leave out);
+ * cm_check_geometry and cm_result_from_meshes take one boundary loop only. With one loop per
  * polygon this is cm_triangulate_polygons. */
 CM_API cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k,
                                       const cm_options *options, cm_result **result);
@@ -458,8 +459,8 @@ typedef struct cm_morph cm_morph;
  *   morph:   receives a new handle, also on failure (then it carries the
  *            message, cm_morph_message); NULL only when even the handle
  *            could not be allocated. Always cm_morph_free it.
- * Returns CM_ERR_ARGUMENT (NULL or failed result, unknown method, a result
- * of polygons with holes: not morphed), CM_ERR_CANCELLED, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL when no enclosure
+ * Returns CM_ERR_ARGUMENT (NULL or failed result, unknown method),
+ * CM_ERR_CANCELLED, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL when no enclosure
  * could be built (no bridge from the polygon to the enclosure valid in
  * every geometry) or a mean value weight is not positive in doubles. The
  * linear method builds nothing and always succeeds on a valid result. */

@@ -9,6 +9,8 @@ void cm_result_clear_geometry(cm_result *r)
 {
     cm_mesh_clear(&r->mesh);
     cm_boundary_map_clear(&r->boundary);
+    free(r->loop_start);
+    r->loop_start = NULL, r->num_loops = 0;
     free(r->he_next), free(r->he_to), free(r->he_face), free(r->vertex_he), free(r->face_he);
     free(r->quality), free(r->quality_before);
     r->he_next = r->he_to = r->he_face = r->vertex_he = r->face_he = NULL;

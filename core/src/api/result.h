@@ -19,6 +19,10 @@ struct cm_result {
     cm_quality *quality; /* k entries */
     cm_quality *quality_before; /* k entries: before remeshing */
     cm_boundary_map boundary;   /* CM_CORRESPOND_ARCLENGTH; empty for index */
+    /* Polygons with holes: loop l is boundary vertices loop_start[l] ..
+     * loop_start[l + 1] - 1, the outer loop first; NULL without holes. */
+    size_t *loop_start;
+    size_t num_loops;
 };
 
 /* Drops all geometry, keeping status and message (a failed result). */

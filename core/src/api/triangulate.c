@@ -570,6 +570,7 @@ static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, con
     r->stats.seconds_check = cm_seconds_now() - t2;
     s = cm_result_measure(r);
     if (s == CM_OK && cm_progress_report(&progress, CM_STAGE_DONE, 0.0)) s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
+    if (s == CM_OK) r->loop_start = start, r->num_loops = num_loops, start = NULL; /* the morph fills the holes */
     goto done;
 oom:
     s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);

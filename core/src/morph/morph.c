@@ -22,6 +22,7 @@
 #include <umfpack.h>
 
 #include "morph/enclosure.h"
+#include "morph/fill_holes.h"
 #include "morph/morph.h"
 #include "base/progress.h"
 #include "geom/angle.h"
@@ -250,11 +251,6 @@ static cm_status create(cm_morph *m, const cm_result *result, const cm_morph_opt
         return cm_fail(&m->error, CM_ERR_ARGUMENT, "morph: the result failed (%s)", cm_result_message(result));
     if ((unsigned)options->method > (unsigned)CM_MORPH_INTRINSIC)
         return cm_fail(&m->error, CM_ERR_ARGUMENT, "morph: unknown method %d", (int)options->method);
-    /* The enclosure and the section checks take one boundary loop. */
-    if (result->stats.holes > 0)
-        return cm_fail(&m->error, CM_ERR_ARGUMENT,
-                       "morph: polygons with holes (%zu per polygon) cannot be morphed or swept; "
-                       "only their triangulation is supported", result->stats.holes);
     m->method = options->method;
     m->k = result->mesh.k, m->nv = result->mesh.nv, m->nt = result->mesh.nt;
     if (m->method == CM_MORPH_LINEAR) {
@@ -265,7 +261,17 @@ static cm_status create(cm_morph *m, const cm_result *result, const cm_morph_opt
     cm_progress progress;
     cm_progress_init(&progress, options->progress, options->progress_user);
     if (cm_progress_report(&progress, CM_STAGE_ENCLOSURE, 0.0)) return cm_fail_status(&m->error, CM_ERR_CANCELLED);
-    cm_status s = cm_enclosure_build(result, &progress, &m->full, &m->boundary, &m->error);
+    cm_status s;
+    if (result->num_loops > 1) {
+        /* Holes filled: the enclosure sees a disk bounded by the outer loop. */
+        cm_result disk = {.n = result->loop_start[1]};
+        disk.stats.n = disk.n;
+        s = cm_fill_holes(result, &disk.mesh, &m->error);
+        if (s == CM_OK) s = cm_enclosure_build(&disk, &progress, &m->full, &m->boundary, &m->error);
+        cm_mesh_clear(&disk.mesh);
+    } else {
+        s = cm_enclosure_build(result, &progress, &m->full, &m->boundary, &m->error);
+    }
     if (s != CM_OK) return s;
     if (cm_progress_report(&progress, CM_STAGE_MORPH_SYSTEM, 0.0)) return cm_fail_status(&m->error, CM_ERR_CANCELLED);
     m->unknown = malloc(m->full.nv * sizeof *m->unknown);
@@ -363,6 +369,19 @@ static size_t count_inverted(const int32_t *tri, size_t first, size_t last, cons
     return bad;
 }
 
+/* Exactly: do the section's boundary loops cross or touch (a, b: the first
+ * vertices of two such edges)? 1 yes, 0 no, -1 out of memory. */
+static int loops_cross(const cm_result *r, const double *xy, long *a, long *b)
+{
+    if (r->num_loops <= 1) return cm_polygon_find_intersection(xy, (long)r->n, a, b);
+    size_t *sizes = malloc(r->num_loops * sizeof *sizes);
+    if (!sizes) return -1;
+    for (size_t l = 0; l < r->num_loops; l++) sizes[l] = r->loop_start[l + 1] - r->loop_start[l];
+    int hit = cm_loops_find_intersection(xy, sizes, r->num_loops, a, b);
+    free(sizes);
+    return hit;
+}
+
 cm_status cm_morph_section(cm_morph *m, double t, double *xy, size_t *inverted,
                            double *min_angle_deg)
 {
@@ -395,14 +414,15 @@ cm_status cm_morph_section_at(cm_morph *m, size_t g, double s, double *xy, size_
     } else {
         cm_status st = solve_positions(m, g, s);
         if (st != CM_OK) return st;
-        /* The annulus around the section only carries the construction:
-         * rounding may fold one of its slivers. The section stays valid
-         * if its own triangles are counter-clockwise and its boundary is
-         * simple (then they tile the polygon), both checked exactly. */
+        /* The annulus around the section and the holes' fills only carry
+         * the construction: rounding may fold one of their slivers. The
+         * section stays valid if its own triangles are counter-clockwise
+         * and its loops are simple and disjoint (then they tile the
+         * polygon), both checked exactly. */
         size_t bad = count_inverted(m->full.tri, r->nt, m->full.nt, m->pos);
         if (bad) {
             long a, b;
-            int crossing = cm_polygon_find_intersection(m->pos, (long)m->result->n, &a, &b);
+            int crossing = loops_cross(m->result, m->pos, &a, &b);
             if (crossing < 0) return cm_fail_status(&m->error, CM_ERR_NO_MEMORY);
             if (crossing)
                 return cm_fail(&m->error, CM_ERR_PRECISION,
