@@ -14,8 +14,7 @@
 #include "triangulation.h"
 #include "write_mesh.h"
 #include "write_report.h"
-#include "write_png.h"
-#include "write_svg.h"
+#include "write_picture.h"
 
 enum { OPTION_MORPH = OPTION_TRIANGULATION_END, MAX_FRAMES = 1000 };
 

@@ -15,8 +15,7 @@
 #include "triangulation.h"
 #include "write_mesh.h"
 #include "write_report.h"
-#include "write_png.h"
-#include "write_svg.h"
+#include "write_picture.h"
 
 static const option_spec triangulate_options[] = {
     {"out-dir", 'o', "DIR",
