@@ -105,7 +105,7 @@ static void print_morph_help(FILE *out)
           "  DIR/frame_000.FMT ...  one section per frame, all with the same faces\n"
           "                         (those of the triangulation), z = 0\n"
           "  DIR/frames.svg         the frames side by side\n"
-          "  DIR/frames.png         the same picture as PNG (drawn with cairo)\n"
+          "  DIR/frames.png         the same picture as PNG (cairo draws both)\n"
           "  DIR/report.json        counts, morph, and per frame: file, t,\n"
           "                         min_angle_deg, inverted (triangles not strictly\n"
           "                         counter-clockwise, by exact predicates)\n"

@@ -20,11 +20,11 @@ static const double POOR_ANGLE_DEG = 20.0;
 static const double DEGREES_PER_RADIAN = 57.295779513082321;
 
 const style_paint picture_styles[STYLE_COUNT] = {
-    [STYLE_POOR] = {"poor", 1, 0xfdae61, 0.0, 0},
-    [STYLE_WORST] = {"worst", 1, 0xd7191c, 0.0, 0},
-    [STYLE_EDGES] = {"edges", 0, 0x555555, 0.4, 0},
-    [STYLE_BOUNDARY] = {"boundary", 0, 0x000000, 1.6, 1},
-    [STYLE_STEINER] = {"steiner", 0, 0x2166ac, 3.0, 1},
+    [STYLE_POOR] = {1, 0xfdae61, 0.0, 0},
+    [STYLE_WORST] = {1, 0xd7191c, 0.0, 0},
+    [STYLE_EDGES] = {0, 0x555555, 0.4, 0},
+    [STYLE_BOUNDARY] = {0, 0x000000, 1.6, 1},
+    [STYLE_STEINER] = {0, 0x2166ac, 3.0, 1},
 };
 
 /* Maps one geometry into its panel. */

@@ -119,7 +119,7 @@ static void print_triangulate_help(FILE *out)
           "  DIR/preview.svg  the meshes side by side: boundary thick, Steiner\n"
           "                   vertices as dots, triangles whose smallest angle is\n"
           "                   below 20 degrees orange, each mesh's worst one red\n"
-          "  DIR/preview.png  the same picture as PNG (drawn with cairo)\n"
+          "  DIR/preview.png  the same picture as PNG (cairo draws both)\n"
           "\n", out);
     fputs(cli_exit_status_help, out);
 }
