@@ -136,9 +136,8 @@ def sweep_figure(binary, work, docs, n):
     image.resize((WIDTH, HEIGHT), Image.LANCZOS).save(os.path.join(docs, "sweep.png"), optimize=True)
 
 
-def size_table(binary, work):
-    """The sweep of glyph_pair() into every format, prisms and tetrahedra."""
-    a, b = glyph_pair()
+def size_table(binary, work, a, b):
+    """The sweep of a and b into every format, prisms and tetrahedra."""
     write_xy(os.path.join(work, "ga.xy"), a)
     write_xy(os.path.join(work, "gb.xy"), b)
     counts, sizes = {}, {}
@@ -183,7 +182,7 @@ def main(build, docs=os.path.join(ROOT, "docs"), readme=os.path.join(ROOT, "READ
         us = us_figure(build, work, docs)
         morph_figure(binary, work, docs)
         sweep_figure(binary, work, docs, len(a))
-        table = size_table(binary, work)
+        table = size_table(binary, work, *glyph_pair())
     with open(readme) as f:
         text = f.read()
     text = replace_block(replace_block(text, "us", us), "sweep sizes", table)
