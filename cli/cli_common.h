@@ -1,6 +1,6 @@
 /* Small pieces every part of the command-line tool shares: exit codes, the
  * error message buffer the modules fill and main prints, and the UTF-8 check
- * the JSON and SVG writers need to keep their output valid. */
+ * behind utf8_text.h (jansson and cairo take only valid UTF-8). */
 #ifndef CM_CLI_COMMON_H
 #define CM_CLI_COMMON_H
 

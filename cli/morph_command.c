@@ -14,8 +14,7 @@
 #include "triangulation.h"
 #include "write_mesh.h"
 #include "write_report.h"
-#include "write_png.h"
-#include "write_svg.h"
+#include "write_picture.h"
 
 enum { OPTION_MORPH = OPTION_TRIANGULATION_END, MAX_FRAMES = 1000 };
 
@@ -106,7 +105,7 @@ static void print_morph_help(FILE *out)
           "  DIR/frame_000.FMT ...  one section per frame, all with the same faces\n"
           "                         (those of the triangulation), z = 0\n"
           "  DIR/frames.svg         the frames side by side\n"
-          "  DIR/frames.png         the same picture as PNG (drawn with cairo)\n"
+          "  DIR/frames.png         the same picture as PNG (cairo draws both)\n"
           "  DIR/report.json        counts, morph, and per frame: file, t,\n"
           "                         min_angle_deg, inverted (triangles not strictly\n"
           "                         counter-clockwise, by exact predicates)\n"

@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "utf8_text.h"
+
 /* Layout in pixels. Very wide polygons are limited in width instead of
  * height so one panel cannot dwarf the others. */
 static const double PANEL_HEIGHT = 360.0;
@@ -18,11 +20,11 @@ static const double POOR_ANGLE_DEG = 20.0;
 static const double DEGREES_PER_RADIAN = 57.295779513082321;
 
 const style_paint picture_styles[STYLE_COUNT] = {
-    [STYLE_POOR] = {"poor", 1, 0xfdae61, 0.0, 0},
-    [STYLE_WORST] = {"worst", 1, 0xd7191c, 0.0, 0},
-    [STYLE_EDGES] = {"edges", 0, 0x555555, 0.4, 0},
-    [STYLE_BOUNDARY] = {"boundary", 0, 0x000000, 1.6, 1},
-    [STYLE_STEINER] = {"steiner", 0, 0x2166ac, 3.0, 1},
+    [STYLE_POOR] = {1, 0xfdae61, 0.0, 0},
+    [STYLE_WORST] = {1, 0xd7191c, 0.0, 0},
+    [STYLE_EDGES] = {0, 0x555555, 0.4, 0},
+    [STYLE_BOUNDARY] = {0, 0x000000, 1.6, 1},
+    [STYLE_STEINER] = {0, 0x2166ac, 3.0, 1},
 };
 
 /* Maps one geometry into its panel. */
@@ -88,9 +90,8 @@ static void end_layer(picture *pic)
     if (layer->count == 0) pic->layer_count--;
 }
 
-/* Keeps a copy of text in which bytes that are not well-formed UTF-8, and
- * control characters, are U+FFFD: file names can hold any bytes, and both
- * XML and cairo need valid UTF-8. */
+/* Keeps a copy of text, repaired (utf8_text.h): file names can hold any
+ * bytes, and cairo needs valid UTF-8. */
 static int add_text(picture *pic, double x, double y, const char *text)
 {
     if (pic->text_count == pic->text_capacity) {
@@ -99,20 +100,8 @@ static int add_text(picture *pic, double x, double y, const char *text)
         if (!texts) return -1;
         pic->texts = texts, pic->text_capacity = capacity;
     }
-    size_t remaining = strlen(text);
-    char *copy = malloc(3 * remaining + 1), *out = copy; /* U+FFFD is 3 bytes */
+    char *copy = utf8_repaired_copy(text, 1);
     if (!copy) return -1;
-    for (const unsigned char *c = (const unsigned char *)text; remaining > 0;) {
-        size_t length = utf8_sequence_length(c, remaining);
-        if (length == 0 || (*c < 0x20 && *c != '\t')) {
-            memcpy(out, "\xEF\xBF\xBD", 3), out += 3;
-            length = length ? length : 1;
-        } else {
-            memcpy(out, c, length), out += length;
-        }
-        c += length, remaining -= length;
-    }
-    *out = '\0';
     pic->texts[pic->text_count++] = (picture_text){pic->panel_count, x, y, copy};
     return 0;
 }

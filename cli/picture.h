@@ -1,6 +1,6 @@
 /* What preview.svg/png and frames.svg/png show, as drawing primitives in
- * pixels: the k meshes side by side, worst triangles highlighted. The SVG
- * and PNG writers only translate these, so both pictures agree. */
+ * pixels: the k meshes side by side, worst triangles highlighted.
+ * write_picture.c draws these into both formats, so both pictures agree. */
 #ifndef CM_CLI_PICTURE_H
 #define CM_CLI_PICTURE_H
 
@@ -22,7 +22,6 @@ typedef enum picture_style {
 } picture_style;
 
 typedef struct style_paint {
-    const char *name;    /* the SVG class */
     int filled;          /* 1: fill the path, 0: stroke it */
     uint32_t rgb;        /* 0xRRGGBB */
     double width;        /* stroke width in pixels */

@@ -15,8 +15,7 @@
 #include "triangulation.h"
 #include "write_mesh.h"
 #include "write_report.h"
-#include "write_png.h"
-#include "write_svg.h"
+#include "write_picture.h"
 
 static const option_spec triangulate_options[] = {
     {"out-dir", 'o', "DIR",
@@ -120,7 +119,7 @@ static void print_triangulate_help(FILE *out)
           "  DIR/preview.svg  the meshes side by side: boundary thick, Steiner\n"
           "                   vertices as dots, triangles whose smallest angle is\n"
           "                   below 20 degrees orange, each mesh's worst one red\n"
-          "  DIR/preview.png  the same picture as PNG (drawn with cairo)\n"
+          "  DIR/preview.png  the same picture as PNG (cairo draws both)\n"
           "\n", out);
     fputs(cli_exit_status_help, out);
 }

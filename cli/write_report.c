@@ -1,239 +1,288 @@
 #include "write_report.h"
 
+#include <jansson.h>
 #include <math.h>
-#include <string.h>
+#include <stdlib.h>
 
 #include "outdir.h"
+#include "utf8_text.h"
 
-/* A JSON string. Invalid UTF-8 (file names can hold any bytes) becomes
- * U+FFFD so the file stays valid JSON. */
-static void json_string(FILE *file, const char *text)
+/* A report is built as a jansson tree, then dumped. The setters below stop
+ * at the first failure and remember it, so building needs no checks: a value
+ * that is not finite (JSON has none) or out of memory fails the whole report,
+ * which is then not written. */
+typedef struct tree {
+    const char *not_finite; /* the key of the first value that was not */
+    int out_of_memory;
+} tree;
+
+static int failed(const tree *t) { return t->not_finite || t->out_of_memory; }
+
+/* Takes value (a new reference), NULL meaning out of memory. */
+static json_t *keep(tree *t, json_t *value)
 {
-    const unsigned char *p = (const unsigned char *)text;
-    size_t remaining = strlen(text);
-    fputc('"', file);
-    while (remaining > 0) {
-        size_t length = utf8_sequence_length(p, remaining);
-        if (length == 0) {
-            fputs("\\ufffd", file);
-            length = 1;
-        } else if (*p == '"' || *p == '\\') {
-            fprintf(file, "\\%c", *p);
-        } else if (*p < 0x20) {
-            fprintf(file, "\\u%04x", *p);
-        } else {
-            fwrite(p, 1, length, file);
-        }
-        p += length;
-        remaining -= length;
+    if (!value) t->out_of_memory = 1;
+    return value;
+}
+
+static void set(tree *t, json_t *object, const char *key, json_t *value)
+{
+    if (!value || !object || failed(t)) {
+        if (!value) t->out_of_memory = 1;
+        json_decref(value);
+        return;
     }
-    fputc('"', file);
+    if (json_object_set_new(object, key, value) != 0) t->out_of_memory = 1;
 }
 
-/* JSON has no NaN or infinity; null marks a value that could not be had. */
-static void json_number(FILE *file, double value)
+static void append(tree *t, json_t *array, json_t *value)
 {
-    if (isfinite(value)) fprintf(file, "%.10g", value);
-    else fputs("null", file);
+    if (!value || !array || failed(t)) {
+        if (!value) t->out_of_memory = 1;
+        json_decref(value);
+        return;
+    }
+    if (json_array_append_new(array, value) != 0) t->out_of_memory = 1;
 }
 
-static void json_field(FILE *file, const char *separator, const char *key,
-                       double value)
+static json_t *real(tree *t, const char *key, double value)
 {
-    fprintf(file, "%s\"%s\": ", separator, key);
-    json_number(file, value);
+    if (isfinite(value)) return keep(t, json_real(value));
+    if (!t->not_finite) t->not_finite = key;
+    return json_null(); /* a placeholder: the report is not written */
 }
 
-static void write_seconds(FILE *file, const cm_stats *stats, double total)
+static void set_real(tree *t, json_t *object, const char *key, double value)
 {
-    fputs("  \"seconds\": {", file);
-    json_field(file, "", "validate", stats->seconds_validate);
-    json_field(file, ", ", "build", stats->seconds_build);
-    json_field(file, ", ", "remesh", stats->seconds_remesh);
-    json_field(file, ", ", "check", stats->seconds_check);
-    json_field(file, ", ", "ceiling", stats->seconds_ceiling);
-    json_field(file, ", ", "total", total);
-    fputs("},\n", file);
+    set(t, object, key, real(t, key, value));
+}
+
+static void set_count(tree *t, json_t *object, const char *key, size_t value)
+{
+    set(t, object, key, keep(t, json_integer((json_int_t)value)));
+}
+
+static void set_bool(tree *t, json_t *object, const char *key, int value)
+{
+    set(t, object, key, json_boolean(value));
+}
+
+/* File names can hold any bytes: invalid UTF-8 becomes U+FFFD. */
+static json_t *text(tree *t, const char *value)
+{
+    char *copy = utf8_repaired_copy(value, 0);
+    json_t *string = copy ? json_string(copy) : NULL;
+    free(copy);
+    return keep(t, string);
+}
+
+static void set_text(tree *t, json_t *object, const char *key, const char *value)
+{
+    set(t, object, key, text(t, value));
+}
+
+static json_t *text_list(tree *t, const char *const *values, size_t count)
+{
+    json_t *list = keep(t, json_array());
+    for (size_t i = 0; i < count; i++) append(t, list, text(t, values[i]));
+    return list;
+}
+
+/* Writes the tree to path, or says why not. Doubles get 17 significant
+ * digits, so every value reads back as the same double. */
+static int dump(tree *t, json_t *root, const char *path, cli_error *error)
+{
+    int code = CLI_EXIT_INTERNAL;
+    if (t->not_finite) {
+        cli_error_set(error, "%s: %s is not a finite number", path, t->not_finite);
+    } else if (t->out_of_memory || !root) {
+        cli_error_set(error, "%s: out of memory", path);
+    } else {
+        FILE *file = output_open(path, error);
+        if (file) {
+            int written = json_dumpf(root, file, JSON_INDENT(2) | JSON_REAL_PRECISION(17)) == 0;
+            fputc('\n', file);
+            code = output_close(file, path, error);
+            if (code == CLI_EXIT_OK && !written) {
+                cli_error_set(error, "cannot write %s", path);
+                code = CLI_EXIT_INTERNAL;
+            }
+        }
+    }
+    json_decref(root);
+    return code;
+}
+
+/* The counts every report starts with. */
+static json_t *head(tree *t, const cm_stats *stats)
+{
+    char version[64];
+    snprintf(version, sizeof version, "%d.%d.%d", CM_VERSION_MAJOR, CM_VERSION_MINOR,
+             CM_VERSION_PATCH);
+    json_t *root = keep(t, json_object());
+    set_text(t, root, "version", version);
+    set_count(t, root, "n", stats->n);
+    set_count(t, root, "k", stats->k);
+    set_count(t, root, "vertices", stats->vertices);
+    set_count(t, root, "steiner", stats->steiner);
+    set_count(t, root, "triangles", stats->triangles);
+    set_count(t, root, "holes", stats->holes);
+    set_count(t, root, "bridges", stats->bridges);
+    return root;
+}
+
+static json_t *seconds(tree *t, const cm_stats *stats, double total)
+{
+    json_t *object = keep(t, json_object());
+    set_real(t, object, "validate", stats->seconds_validate);
+    set_real(t, object, "build", stats->seconds_build);
+    set_real(t, object, "remesh", stats->seconds_remesh);
+    set_real(t, object, "check", stats->seconds_check);
+    set_real(t, object, "ceiling", stats->seconds_ceiling);
+    set_real(t, object, "total", total);
+    return object;
 }
 
 /* The certified caps on the smallest angle (null when not computed). */
-static void write_ceiling(FILE *file, const cm_stats *stats, int computed)
+static json_t *ceiling(tree *t, const cm_stats *stats, int computed)
 {
-    if (!computed) {
-        fputs("  \"ceiling\": null,\n", file);
+    if (!computed) return json_null();
+    json_t *object = keep(t, json_object());
+    set_real(t, object, "ceiling_deg", stats->ceiling_deg);
+    set_real(t, object, "corner_fan_cap_deg", stats->corner_fan_cap_deg);
+    set_real(t, object, "correspondence_bound_deg", stats->correspondence_bound_deg);
+    set_real(t, object, "modulus_distortion", stats->modulus_distortion);
+    json_t *quad = keep(t, json_array());
+    for (int i = 0; i < 4; i++) append(t, quad, keep(t, json_integer(stats->distortion_quad[i])));
+    set(t, object, "distortion_quad", quad);
+    if (stats->correspondence_bound_before_deg > 0)
+        set_real(t, object, "correspondence_bound_before_deg",
+                 stats->correspondence_bound_before_deg);
+    return object;
+}
+
+/* The quality fields of one mesh, into object. A successful result has them
+ * all; not having them is an internal failure, reported as out of memory
+ * would be. */
+static void set_quality(tree *t, json_t *object, cm_status status, cm_quality quality)
+{
+    if (status != CM_OK) {
+        t->out_of_memory = 1;
         return;
     }
-    fputs("  \"ceiling\": {", file);
-    json_field(file, "", "ceiling_deg", stats->ceiling_deg);
-    json_field(file, ", ", "corner_fan_cap_deg", stats->corner_fan_cap_deg);
-    json_field(file, ",\n              ", "correspondence_bound_deg", stats->correspondence_bound_deg);
-    json_field(file, ", ", "modulus_distortion", stats->modulus_distortion);
-    fprintf(file, ",\n              \"distortion_quad\": [%ld, %ld, %ld, %ld]", stats->distortion_quad[0],
-            stats->distortion_quad[1], stats->distortion_quad[2], stats->distortion_quad[3]);
-    if (stats->correspondence_bound_before_deg > 0)
-        json_field(file, ",\n              ", "correspondence_bound_before_deg",
-                   stats->correspondence_bound_before_deg);
-    fputs("},\n", file);
+    set_real(t, object, "min_angle_deg", quality.min_angle_deg);
+    set_real(t, object, "max_angle_deg", quality.max_angle_deg);
+    set_real(t, object, "pct_triangles_below_10deg", quality.pct_below_10deg);
+    set_real(t, object, "pct_triangles_below_15deg", quality.pct_below_15deg);
+    set_real(t, object, "pct_triangles_below_20deg", quality.pct_below_20deg);
 }
 
-/* The quality fields of one mesh; NaN (null) when it could not be had. */
-static void write_quality(FILE *file, const char *first, const char *line,
-                          cm_status status, cm_quality quality)
-{
-    if (status != CM_OK) quality = (cm_quality){NAN, NAN, NAN, NAN, NAN};
-    json_field(file, first, "min_angle_deg", quality.min_angle_deg);
-    json_field(file, ", ", "max_angle_deg", quality.max_angle_deg);
-    json_field(file, line, "pct_triangles_below_10deg", quality.pct_below_10deg);
-    json_field(file, ", ", "pct_triangles_below_15deg", quality.pct_below_15deg);
-    json_field(file, ", ", "pct_triangles_below_20deg", quality.pct_below_20deg);
-}
-
-static void write_mesh_entry(FILE *file, const report_info *info, size_t g)
+static json_t *mesh_entry(tree *t, const report_info *info, size_t g)
 {
     cm_quality quality;
-    fputs("    {\"input\": ", file);
-    json_string(file, info->inputs[g]);
-    fputs(", \"output\": ", file);
-    json_string(file, info->outputs[g]);
-    write_quality(file, ",\n     ", ",\n     ", cm_result_quality(info->result, g, &quality),
-                  quality);
-    fputs(",\n     \"before_remesh\": {", file);
-    write_quality(file, "", ",\n      ", cm_result_quality_before(info->result, g, &quality),
-                  quality);
-    fputs("}", file);
+    json_t *entry = keep(t, json_object());
+    set_text(t, entry, "input", info->inputs[g]);
+    set_text(t, entry, "output", info->outputs[g]);
+    set_quality(t, entry, cm_result_quality(info->result, g, &quality), quality);
+    json_t *before = keep(t, json_object());
+    set_quality(t, before, cm_result_quality_before(info->result, g, &quality), quality);
+    set(t, entry, "before_remesh", before);
     if (info->correspondence != CM_CORRESPOND_INDEX || info->max_edge > 0) {
         /* Per boundary vertex: [e, t], the point at t of input edge e -> e + 1. */
-        fputs(",\n     \"boundary_source\": [", file);
-        for (size_t i = 0; i < cm_result_stats(info->result)->n; i++) {
-            double t;
-            long e = cm_result_boundary_source(info->result, g, i, &t);
-            fprintf(file, "%s[%ld, %.17g]", i ? ", " : "", e, t);
+        json_t *sources = keep(t, json_array());
+        for (size_t i = 0; i < cm_result_stats(info->result)->n && !failed(t); i++) {
+            double at;
+            long e = cm_result_boundary_source(info->result, g, i, &at);
+            json_t *pair = keep(t, json_array());
+            append(t, pair, keep(t, json_integer(e)));
+            append(t, pair, real(t, "boundary_source", at));
+            append(t, sources, pair);
         }
-        fputs("]", file);
+        set(t, entry, "boundary_source", sources);
     }
-    fputs("}", file);
-}
-
-/* The opening brace and the counts every report starts with. */
-/* ["a", "b", ...]: count > 0 strings. */
-static void json_string_list(FILE *file, const char *const *strings, size_t count)
-{
-    fputc('[', file);
-    for (size_t i = 0; i < count; i++) {
-        json_string(file, strings[i]);
-        fputs(i + 1 < count ? ", " : "]", file);
-    }
-}
-
-static void write_head(FILE *file, const cm_stats *stats)
-{
-    fprintf(file, "{\n");
-    fprintf(file, "  \"version\": \"%d.%d.%d\",\n", CM_VERSION_MAJOR, CM_VERSION_MINOR,
-            CM_VERSION_PATCH);
-    fprintf(file, "  \"n\": %zu,\n  \"k\": %zu,\n", stats->n, stats->k);
-    fprintf(file, "  \"vertices\": %zu,\n  \"steiner\": %zu,\n  \"triangles\": %zu,\n",
-            stats->vertices, stats->steiner, stats->triangles);
-    fprintf(file, "  \"holes\": %zu,\n  \"bridges\": %zu,\n", stats->holes, stats->bridges);
+    return entry;
 }
 
 int write_report(const char *path, const report_info *info, cli_error *error)
 {
-    FILE *file = output_open(path, error);
-    if (!file) return CLI_EXIT_INTERNAL;
-    const cm_stats *stats = cm_result_stats(info->result);
-    write_head(file, stats);
-    fprintf(file, "  \"valid\": true,\n");
-    fputs("  \"method\": ", file);
-    json_string(file, info->method);
-    fprintf(file, ",\n  \"remesh\": %s,\n", info->remesh ? "true" : "false");
     static const char *const correspondence[] = {"index", "arclength", "auto"};
-    fprintf(file, "  \"correspondence\": \"%s\",\n", correspondence[info->correspondence]);
-    if (info->max_edge > 0) fprintf(file, "  \"max_edge\": %.17g,\n", info->max_edge);
-    fprintf(file, "  \"reversed_input\": %s,\n", stats->reversed_input ? "true" : "false");
-    fprintf(file, "  \"fallback_count\": %zu,\n", stats->fallback_count);
-    fprintf(file, "  \"steiner_before_remesh\": %zu,\n", stats->steiner_before_remesh);
-    fprintf(file, "  \"remesh_iterations\": %zu,\n", stats->remesh_iterations);
-    json_field(file, "  ", "remesh_aim_deg", stats->remesh_aim_deg);
-    fputs(",\n", file);
-    write_ceiling(file, stats, info->ceiling);
-    write_seconds(file, stats, info->seconds_total);
-    fputs("  \"meshes\": [\n", file);
-    for (size_t g = 0; g < stats->k; g++) {
-        write_mesh_entry(file, info, g);
-        fputs(g + 1 < stats->k ? ",\n" : "\n", file);
-    }
-    fputs("  ]\n}\n", file);
-    return output_close(file, path, error);
+    tree t = {0};
+    const cm_stats *stats = cm_result_stats(info->result);
+    json_t *root = head(&t, stats);
+    set_bool(&t, root, "valid", 1);
+    set_text(&t, root, "method", info->method);
+    set_bool(&t, root, "remesh", info->remesh);
+    set_text(&t, root, "correspondence", correspondence[info->correspondence]);
+    if (info->max_edge > 0) set_real(&t, root, "max_edge", info->max_edge);
+    set_bool(&t, root, "reversed_input", stats->reversed_input);
+    set_count(&t, root, "fallback_count", stats->fallback_count);
+    set_count(&t, root, "steiner_before_remesh", stats->steiner_before_remesh);
+    set_count(&t, root, "remesh_iterations", stats->remesh_iterations);
+    set_real(&t, root, "remesh_aim_deg", stats->remesh_aim_deg);
+    set(&t, root, "ceiling", ceiling(&t, stats, info->ceiling));
+    set(&t, root, "seconds", seconds(&t, stats, info->seconds_total));
+    json_t *meshes = keep(&t, json_array());
+    for (size_t g = 0; g < stats->k; g++) append(&t, meshes, mesh_entry(&t, info, g));
+    set(&t, root, "meshes", meshes);
+    return dump(&t, root, path, error);
 }
 
 int write_morph_report(const char *path, const morph_report_info *info, cli_error *error)
 {
-    FILE *file = output_open(path, error);
-    if (!file) return CLI_EXIT_INTERNAL;
+    tree t = {0};
     const cm_stats *stats = cm_result_stats(info->result);
-    write_head(file, stats);
-    fputs("  \"method\": ", file);
-    json_string(file, info->method);
-    fputs(",\n  \"morph\": ", file);
-    json_string(file, info->morph);
-    fputs(",\n  \"inputs\": ", file);
-    json_string_list(file, info->inputs, stats->k);
-    fputs(",\n", file);
+    json_t *root = head(&t, stats);
+    set_text(&t, root, "method", info->method);
+    set_text(&t, root, "morph", info->morph);
+    set(&t, root, "inputs", text_list(&t, info->inputs, stats->k));
     size_t total = 0;
     for (size_t f = 0; f < info->frame_count; f++) total += info->inverted[f];
-    fprintf(file, "  \"inverted_total\": %zu,\n", total);
-    fputs("  \"frames\": [\n", file);
+    set_count(&t, root, "inverted_total", total);
+    json_t *frames = keep(&t, json_array());
     for (size_t f = 0; f < info->frame_count; f++) {
-        fputs("    {\"file\": ", file);
-        json_string(file, info->outputs[f]);
-        json_field(file, ", ", "t", info->t[f]);
-        json_field(file, ", ", "min_angle_deg", info->min_angle_deg[f]);
-        fprintf(file, ", \"inverted\": %zu}%s\n", info->inverted[f],
-                f + 1 < info->frame_count ? "," : "");
+        json_t *frame = keep(&t, json_object());
+        set_text(&t, frame, "file", info->outputs[f]);
+        set_real(&t, frame, "t", info->t[f]);
+        set_real(&t, frame, "min_angle_deg", info->min_angle_deg[f]);
+        set_count(&t, frame, "inverted", info->inverted[f]);
+        append(&t, frames, frame);
     }
-    fputs("  ]\n}\n", file);
-    return output_close(file, path, error);
+    set(&t, root, "frames", frames);
+    return dump(&t, root, path, error);
 }
 
 int write_sweep_report(const char *path, const sweep_report_info *info, cli_error *error)
 {
-    FILE *file = output_open(path, error);
-    if (!file) return CLI_EXIT_INTERNAL;
+    tree t = {0};
     const cm_stats *stats = cm_result_stats(info->result);
     const cm_sweep *sweep = info->sweep;
-    write_head(file, stats);
-    fputs("  \"method\": ", file);
-    json_string(file, info->method);
-    fputs(",\n  \"inputs\": ", file);
-    json_string_list(file, info->inputs, stats->k);
-    fputs(",\n", file);
-    fputs("  \"output\": ", file);
-    json_string(file, info->output);
-    fprintf(file, ",\n  \"sections\": %zu,\n  \"nodes\": %zu,\n  \"cells\": %zu,\n  \"cell_type\": \"%s\",\n",
-            cm_sweep_num_sections(sweep), cm_sweep_num_nodes(sweep),
-            info->tets ? cm_sweep_num_tets(sweep) : cm_sweep_num_prisms(sweep), info->tets ? "tetrahedron" : "prism");
-    json_field(file, "  ", "volume", cm_sweep_volume(sweep));
-    fputs(",\n  \"height\": {", file);
-    json_field(file, "", "value", cm_sweep_height(sweep));
-    fputs(", \"rule\": ", file);
-    json_string(file, info->height_rule);
-    fputs("},\n", file);
+    json_t *root = head(&t, stats);
+    set_text(&t, root, "method", info->method);
+    set(&t, root, "inputs", text_list(&t, info->inputs, stats->k));
+    set_text(&t, root, "output", info->output);
+    set_count(&t, root, "sections", cm_sweep_num_sections(sweep));
+    set_count(&t, root, "nodes", cm_sweep_num_nodes(sweep));
+    set_count(&t, root, "cells", info->tets ? cm_sweep_num_tets(sweep) : cm_sweep_num_prisms(sweep));
+    set_text(&t, root, "cell_type", info->tets ? "tetrahedron" : "prism");
+    set_real(&t, root, "volume", cm_sweep_volume(sweep));
+    json_t *height = keep(&t, json_object());
+    set_real(&t, height, "value", cm_sweep_height(sweep));
+    set_text(&t, height, "rule", info->height_rule);
+    set(&t, root, "height", height);
     cm_sweep_quality q;
     cm_sweep_get_quality(sweep, &q);
-    fputs("  \"quality\": {", file);
-    json_field(file, "", "min_dihedral_deg", q.min_dihedral_deg);
-    json_field(file, ", ", "max_dihedral_deg", q.max_dihedral_deg);
-    json_field(file, ", ", "min_scaled_jacobian", q.min_scaled_jacobian);
-    json_field(file, ", ", "max_aspect_ratio", q.max_aspect_ratio);
-    fputs(", \"aspect_ratio_measure\": ", file);
-    json_string(file, info->tets ? "longest edge / (2 sqrt(6) inradius), 1 for the regular tetrahedron"
-                                 : "longest edge / shortest edge");
-    fputs(",\n              ", file);
-    json_field(file, "", "max_prism_flatness", q.max_flatness);
-    json_field(file, ", ", "flat_ratio", CM_SWEEP_FLAT_RATIO);
-    fprintf(file, ", \"flat_prisms\": %zu},\n", q.flat_prisms);
-    fputs("  \"warnings\": [", file);
-    if (info->warning) json_string(file, info->warning);
-    fputs("]\n}\n", file);
-    return output_close(file, path, error);
+    json_t *quality = keep(&t, json_object());
+    set_real(&t, quality, "min_dihedral_deg", q.min_dihedral_deg);
+    set_real(&t, quality, "max_dihedral_deg", q.max_dihedral_deg);
+    set_real(&t, quality, "min_scaled_jacobian", q.min_scaled_jacobian);
+    set_real(&t, quality, "max_aspect_ratio", q.max_aspect_ratio);
+    set_text(&t, quality, "aspect_ratio_measure",
+             info->tets ? "longest edge / (2 sqrt(6) inradius), 1 for the regular tetrahedron"
+                        : "longest edge / shortest edge");
+    set_real(&t, quality, "max_prism_flatness", q.max_flatness);
+    set_real(&t, quality, "flat_ratio", CM_SWEEP_FLAT_RATIO);
+    set_count(&t, quality, "flat_prisms", q.flat_prisms);
+    set(&t, root, "quality", quality);
+    set(&t, root, "warnings", info->warning ? text_list(&t, &info->warning, 1) : keep(&t, json_array()));
+    return dump(&t, root, path, error);
 }

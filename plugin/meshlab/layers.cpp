@@ -12,6 +12,12 @@ void add_layers(MeshDocument &md, const std::vector<LayerData> &layers)
     CMeshO &m = mm->cm;
     const std::size_t nv = data.xyz.size() / 3, nf = data.triangles.size() / 3;
     if (!data.quality.empty()) mm->updateDataMask(MeshModel::MM_VERTQUALITY);
+    // A filter cannot choose how the GUI draws a new layer: MeshLab picks
+    // that from the layer (suggestedDefaultPerViewRenderingData). A
+    // polygonal layer is drawn flat shaded with its edges over it, and ours
+    // is one, whose polygons are the triangles (no edge is faux): without
+    // the edges a compatible pair shows as two flat grey disks.
+    if (!data.triangles.empty()) mm->updateDataMask(MeshModel::MM_POLYGONAL);
     vcg::tri::Allocator<CMeshO>::AddVertices(m, nv);
     for (std::size_t i = 0; i < nv; i++) {
       m.vert[i].P() = Point3m(data.xyz[3 * i], data.xyz[3 * i + 1], data.xyz[3 * i + 2]);

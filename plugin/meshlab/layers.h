@@ -20,6 +20,8 @@ struct LayerData {
 
 // Adds one new layer per entry (not made current), with normals and
 // bounding boxes updated; vertex quality is enabled and filled when given.
+// Layers with faces are marked polygonal (each triangle its own polygon),
+// so the GUI draws their edges over the shading.
 void add_layers(MeshDocument &md, const std::vector<LayerData> &layers);
 
 }  // namespace compatmesh_plugin

@@ -9,11 +9,14 @@ import pytest
 
 DEFAULT_BINARY = os.path.join(
     os.path.dirname(__file__), "..", "..", "build", "bin", "compatmesh")
+DEFAULT_PROBE = os.path.join(os.path.dirname(DEFAULT_BINARY), "report_probe")
 
 
 def pytest_addoption(parser):
     parser.addoption("--compatmesh", default=os.environ.get("COMPATMESH", DEFAULT_BINARY),
                      help="path of the compatmesh executable under test")
+    parser.addoption("--report-probe", default=os.environ.get("REPORT_PROBE", DEFAULT_PROBE),
+                     help="path of the report writer's probe (tests/cli/report_probe.c)")
 
 
 @pytest.fixture(scope="session")
@@ -21,6 +24,14 @@ def compatmesh_path(request):
     path = os.path.abspath(request.config.getoption("--compatmesh"))
     if not os.access(path, os.X_OK):
         pytest.fail(f"compatmesh executable not found at {path} (build it, or pass --compatmesh)")
+    return path
+
+
+@pytest.fixture(scope="session")
+def report_probe(request):
+    path = os.path.abspath(request.config.getoption("--report-probe"))
+    if not os.access(path, os.X_OK):
+        pytest.fail(f"report_probe not found at {path} (build it, or pass --report-probe)")
     return path
 
 

@@ -171,13 +171,22 @@ def is_simple(points):
     return True
 
 
-def check_png(png_path, svg_path):
-    """The PNG picture beside an SVG one: a real PNG (signature, IHDR), read
-    back by Pillow at the SVG's size, white with the black boundary and
-    the red worst triangle drawn."""
+SVG = "{http://www.w3.org/2000/svg}"
+
+
+def check_pictures(png_path, svg_path):
+    """The PNG and SVG pictures of one run. The PNG: a real PNG (signature,
+    IHDR), read back by Pillow, white with the black boundary and the red
+    worst triangle drawn. The SVG: well-formed XML of the PNG's size in
+    pixels that librsvg (rsvg-convert, as image viewers and browsers on
+    Linux use) renders to the same picture, up to anti-aliasing. Returns
+    the SVG's root element."""
     import struct
+    import subprocess
+    import tempfile
     import xml.etree.ElementTree as ET
 
+    import numpy as np
     from PIL import Image
 
     data = open(png_path, "rb").read()
@@ -185,12 +194,58 @@ def check_png(png_path, svg_path):
     length, kind, width, height = struct.unpack(">I4sII", data[8:24])
     assert kind == b"IHDR" and length == 13
     svg = ET.parse(svg_path).getroot()
-    assert (width, height) == (int(svg.get("width")), int(svg.get("height")))
+    assert svg.tag == f"{SVG}svg"
+    assert (svg.get("width"), svg.get("height")) == (f"{width}px", f"{height}px")
+    assert svg.get("viewBox") == f"0 0 {width} {height}"
     assert 200 <= width <= 100000 and 200 <= height <= 2000
     with Image.open(png_path) as image:
         image.load()  # decodes every row: a truncated file raises here
         assert image.format == "PNG" and image.size == (width, height)
-        colours = dict((rgb, count) for count, rgb in image.convert("RGB").getcolors(width * height))
+        png = np.asarray(image.convert("RGB"), dtype=int)
+    colours = dict((rgb, count) for count, rgb in Image.fromarray(png.astype(np.uint8))
+                   .getcolors(width * height))
     assert max(colours, key=colours.get) == (255, 255, 255), "white background"
     assert (0, 0, 0) in colours, "black boundary and captions"
     assert (0xd7, 0x19, 0x1c) in colours, "the worst triangle in red"
+    with tempfile.TemporaryDirectory() as work:
+        rendered = os.path.join(work, "svg.png")
+        subprocess.run(["rsvg-convert", "-b", "white", "-o", rendered, str(svg_path)], check=True)
+        with Image.open(rendered) as image:
+            assert image.size == (width, height)
+            drawn = np.asarray(image.convert("RGB"), dtype=int)
+    differ = np.abs(drawn - png).max(axis=2) > 64
+    assert differ.mean() < 0.02, f"{differ.mean():.1%} of the SVG's pixels differ from the PNG's"
+    return svg
+
+
+def drawn_paths(svg):
+    """What the SVG draws outside its definitions (cairo keeps the captions'
+    glyph outlines there), as (fill, stroke, stroke width, d) per path;
+    colours as 0xRRGGBB, None for none."""
+    def colour(value):
+        if value in (None, "none"):
+            return None
+        channels = value[value.index("(") + 1:value.index(")")].split(",")
+        rgb = [round(float(c.rstrip("%")) * 255 / 100) for c in channels]
+        return rgb[0] << 16 | rgb[1] << 8 | rgb[2]
+
+    defs = {id(p) for d in svg.iter(f"{SVG}defs") for p in d.iter(f"{SVG}path")}
+    paths = []
+    for p in svg.iter(f"{SVG}path"):
+        if id(p) in defs:
+            continue
+        style = dict(item.split(":", 1) for item in p.get("style", "").replace(" ", "").split(";")
+                     if ":" in item)
+        paths.append((colour(style.get("fill")), colour(style.get("stroke")),
+                      float(style.get("stroke-width", 0)), p.get("d")))
+    return paths
+
+
+# The picture's paints (cli/picture.c): what each path is, by its colours.
+POOR, WORST, EDGES, BOUNDARY, STEINER = 0xfdae61, 0xd7191c, 0x555555, 0x000000, 0x2166ac
+
+
+def paths_of(svg, fill=None, stroke=None):
+    """The d attributes of the paths filled or stroked in one colour."""
+    return [d for f, s, _, d in drawn_paths(svg)
+            if (fill is not None and f == fill) or (stroke is not None and s == stroke)]

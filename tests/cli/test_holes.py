@@ -9,7 +9,7 @@ import math
 
 import pytest
 
-from polygons import leftovers
+from polygons import BOUNDARY, check_pictures, leftovers, paths_of
 
 
 def circle(cx, cy, r, m, direction=1):
@@ -102,8 +102,9 @@ def test_square_and_disc(cm, tmp_path, fmt):
     assert result.returncode == 0, result.stderr
     report = check_output(tmp_path / "out", ["a", "b"], [SQUARE_WITH_HOLE, DISC_WITH_HOLE], 1)
     assert min(m["min_angle_deg"] for m in report["meshes"]) >= 20
-    svg = (tmp_path / "out" / "preview.svg").read_text()
-    assert svg.count("Z") >= 2 * 2  # two closed boundary loops per panel
+    svg = check_pictures(tmp_path / "out" / "preview.png", tmp_path / "out" / "preview.svg")
+    boundaries = paths_of(svg, stroke=BOUNDARY)
+    assert [d.count("Z") for d in boundaries] == [2, 2]  # the outer loop and the hole's, per mesh
 
 
 def test_obj_outer_found_by_containment(cm, tmp_path):

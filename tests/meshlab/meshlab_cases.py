@@ -7,6 +7,7 @@ Usage: meshlab_cases.py WRAPPER DOCS_DIR CASE
 import json
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -231,6 +232,27 @@ def check_pair(workdir, out_a, out_b, in_a, in_b, min_angle_bound):
     return pa, pb, ta
 
 
+def check_log_numbers(log, pa, pb, triangles):
+    """The filter's log gives the Steiner count, the smallest angle of each
+    layer and the certified ceiling with its correspondence bound, in
+    agreement with the saved layers."""
+    m = re.search(r"compatible triangulation: (\d+) boundary vertices, (\d+) Steiner vertices "
+                  r"\(vertex quality 1\), (\d+) triangles", log)
+    assert m, log
+    boundary = len(boundary_loop(triangles))
+    assert (int(m.group(1)), int(m.group(2)), int(m.group(3))) == (boundary, len(pa) - boundary, len(triangles))
+    m = re.search(r"smallest angle: ([\d.]+) deg in '[^']*', ([\d.]+) deg in '[^']*'", log)
+    assert m, log
+    for logged, pts in zip(m.groups(), (pa, pb)):  # the layers are float: 0.01 degrees apart at most
+        assert abs(float(logged) - min(min_angle(pts[t]) for t in triangles)) < 0.02, (logged, log)
+    m = re.search(r"no compatible triangulation of this pair can have a smallest angle above ([\d.]+) "
+                  r"degrees \(corner fan ([\d.]+), correspondence bound ([\d.]+)", log)
+    assert m, log
+    ceiling, fan, bound = map(float, m.groups())
+    assert ceiling == min(fan, bound) and ceiling >= max(float(x) for x in
+                                                          re.findall(r"([\d.]+) deg in", log)), log
+
+
 def expect_ok(code, log):
     assert code == 0 and "Problem with filter" not in log, "meshlabserver failed:\n" + log[-3000:]
 
@@ -255,7 +277,8 @@ def case_ply_polylines(w):
     code, log = run(w, ["a.ply", "b.ply"], os.path.join(DOCS, "pair.mlx"), {2: "out_a.ply", 3: "out_b.ply"})
     expect_ok(code, log)
     assert "correspondence: auto (16 and 22 input vertices" in log, log
-    pa, _, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, 10.0)
+    pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, 10.0)
+    check_log_numbers(log, pa, pb, ta)
     print("PLY polylines: %d vertices, %d triangles" % (len(pa), len(ta)))
 
 

@@ -1,5 +1,6 @@
-#include "write_png.h"
+#include "write_picture.h"
 
+#include <cairo-svg.h>
 #include <cairo.h>
 #include <fontconfig/fontconfig.h>
 #include <math.h>
@@ -19,7 +20,7 @@ static void set_colour(cairo_t *cr, uint32_t rgb)
 }
 
 /* A dot is a zero-length round-capped sub-path, which cairo strokes as a
- * disc of the line width, as SVG does. */
+ * disc of the line width. */
 static void draw_layer(cairo_t *cr, const picture *pic, const picture_layer *layer)
 {
     const style_paint *paint = &picture_styles[layer->style];
@@ -47,21 +48,10 @@ static void draw_layer(cairo_t *cr, const picture *pic, const picture_layer *lay
     cairo_stroke(cr);
 }
 
-static cairo_status_t write_to_file(void *closure, const unsigned char *data, unsigned int length)
+/* The one drawing path of both formats: white background, the layers in
+ * order, then the captions. */
+static void draw_picture(cairo_t *cr, const picture *pic, double scale)
 {
-    return fwrite(data, 1, length, closure) == length ? CAIRO_STATUS_SUCCESS
-                                                      : CAIRO_STATUS_WRITE_ERROR;
-}
-
-int write_png(const char *path, const picture *pic, cli_error *error)
-{
-    double pixels = pic->width * pic->height;
-    double scale = fmin(pixels > PNG_MAX_PIXELS ? sqrt(PNG_MAX_PIXELS / pixels) : 1.0,
-                        32767.0 / fmax(pic->width, pic->height));
-    scale = fmin(scale, 1.0);
-    cairo_surface_t *surface = cairo_image_surface_create(
-        CAIRO_FORMAT_RGB24, (int)ceil(scale * pic->width), (int)ceil(scale * pic->height));
-    cairo_t *cr = cairo_create(surface);
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
     cairo_scale(cr, scale, scale);
@@ -73,12 +63,69 @@ int write_png(const char *path, const picture *pic, cli_error *error)
         cairo_move_to(cr, pic->texts[t].x, pic->texts[t].y);
         cairo_show_text(cr, pic->texts[t].text);
     }
-    /* A context or surface in error (say, too large to allocate) draws
-     * nothing from then on, so one check at the end covers every call. */
+}
+
+static cairo_status_t write_to_file(void *closure, const unsigned char *data, unsigned int length)
+{
+    return fwrite(data, 1, length, closure) == length ? CAIRO_STATUS_SUCCESS
+                                                      : CAIRO_STATUS_WRITE_ERROR;
+}
+
+/* The first error of the context or the surface, once drawing is over: a
+ * context or surface in error (too large to allocate, a failed write) does
+ * nothing from then on, so one check at the end covers every call. */
+static cairo_status_t drawn(cairo_t *cr, cairo_surface_t *surface)
+{
     cairo_status_t status = cairo_status(cr);
     cairo_destroy(cr);
-    int code = CLI_EXIT_INTERNAL;
     if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
+    return status;
+}
+
+/* The font caches of cairo and fontconfig would otherwise live until exit,
+ * which valgrind reports as leaks; two pictures per run, so releasing them
+ * costs nothing. No cairo object may be alive. */
+static void release_fonts(void)
+{
+    cairo_debug_reset_static_data();
+    FcFini();
+}
+
+/* The SVG surface writes to the file as it draws and when finished. */
+int write_svg(const char *path, const picture *pic, cli_error *error)
+{
+    FILE *file = output_open(path, error);
+    if (!file) return CLI_EXIT_INTERNAL;
+    cairo_surface_t *surface =
+        cairo_svg_surface_create_for_stream(write_to_file, file, pic->width, pic->height);
+    cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PX);
+    cairo_t *cr = cairo_create(surface);
+    draw_picture(cr, pic, 1.0);
+    cairo_status_t status = drawn(cr, surface);
+    cairo_surface_finish(surface);
+    if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
+    cairo_surface_destroy(surface);
+    release_fonts();
+    int code = output_close(file, path, error);
+    if (code == CLI_EXIT_OK && status != CAIRO_STATUS_SUCCESS) {
+        cli_error_set(error, "%s: cannot write the SVG: %s", path, cairo_status_to_string(status));
+        code = CLI_EXIT_INTERNAL;
+    }
+    return code;
+}
+
+int write_png(const char *path, const picture *pic, cli_error *error)
+{
+    double pixels = pic->width * pic->height;
+    double scale = fmin(pixels > PNG_MAX_PIXELS ? sqrt(PNG_MAX_PIXELS / pixels) : 1.0,
+                        32767.0 / fmax(pic->width, pic->height));
+    scale = fmin(scale, 1.0);
+    cairo_surface_t *surface = cairo_image_surface_create(
+        CAIRO_FORMAT_RGB24, (int)ceil(scale * pic->width), (int)ceil(scale * pic->height));
+    cairo_t *cr = cairo_create(surface);
+    draw_picture(cr, pic, scale);
+    cairo_status_t status = drawn(cr, surface);
+    int code = CLI_EXIT_INTERNAL;
     if (status != CAIRO_STATUS_SUCCESS) {
         cli_error_set(error, "%s: cannot draw the picture: %s", path,
                       cairo_status_to_string(status));
@@ -95,10 +142,6 @@ int write_png(const char *path, const picture *pic, cli_error *error)
         }
     }
     cairo_surface_destroy(surface);
-    /* The font caches of cairo and fontconfig would otherwise live until
-     * exit, which valgrind reports as leaks; one picture per run, so
-     * releasing them costs nothing. */
-    cairo_debug_reset_static_data();
-    FcFini();
+    release_fonts();
     return code;
 }
