@@ -28,8 +28,9 @@ int write_vtu(const char *path, const char *target, const volume_mesh *mesh, cli
                   "      <Points>\n"
                   "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
             mesh->num_nodes, mesh->num_cells);
+    char line[16 + 3 * FORMAT_DOUBLE_SIZE] = "         "; /* the indent, 9 + 1 blanks */
     for (size_t i = 0; i < mesh->num_nodes; i++) {
-        char line[16 + 3 * FORMAT_DOUBLE_SIZE] = "         ", *end = line + 9;
+        char *end = line + 9;
         for (int c = 0; c < 3; c++) {
             *end++ = ' ';
             end = format_double(end, mesh->nodes[3 * i + (size_t)c]);
