@@ -1,5 +1,5 @@
 /* Doubles as text for every text writer of the tool: the shortest decimal
- * that reads back (strtod, Python's float, C++ streams) as the same double,
+ * that reads back (strtod, Python's float, NumPy) as the same double,
  * bit for bit, -0 and subnormals included. Shortest, not "%.17g": 0.1 stays
  * "0.1" rather than "0.10000000000000001". */
 #ifndef CM_CLI_FORMAT_DOUBLE_H
