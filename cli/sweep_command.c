@@ -14,6 +14,7 @@
 #include <compatmesh/compatmesh.h>
 
 #include "commands.h"
+#include "format_double.h"
 #include "interrupt.h"
 #include "progress_line.h"
 #include "outdir.h"
@@ -346,7 +347,7 @@ static int sweep(const sweep_args *args, cli_error *error)
         code = write_volume(args->output, &mesh, args->msh_version, error);
         double volume = cm_sweep_volume(sweep);
         char volume_text[64] = "volume beyond the double range";
-        if (isfinite(volume)) snprintf(volume_text, sizeof volume_text, "volume %.17g", volume);
+        if (isfinite(volume)) format_double(volume_text + sprintf(volume_text, "volume "), volume);
         if (code == CLI_EXIT_OK && !cli_quiet())
             printf("wrote %s (%zu sections, %zu nodes, %zu %s, %s)\n", args->output,
                    cm_sweep_num_sections(sweep), mesh.num_nodes, mesh.num_cells,

@@ -1,5 +1,15 @@
+/* OFF, OBJ and PLY written here rather than by OpenMesh's IO (a dependency
+ * of the adapter), for measured reasons (bench/mesh_writers_bench.cc,
+ * bench/CLI_COST.md): OpenMesh 9.0's OFF/OBJ/PLY writers take every point
+ * as float (BaseExporter::point), whatever the mesh's point type, the
+ * precision argument or the binary option, so no file of theirs reads back
+ * bit-identical; their ASCII writers take more than twice as long (a
+ * 1098-triangle morph frame: 1.0 ms against 0.43 ms here; 100k triangles:
+ * 52 ms against 25 ms); and linking OpenMesh would add libOpenMeshCore and
+ * libstdc++ to every start of the tool (+1 ms, +100 page faults). */
 #include "write_mesh.h"
 
+#include "format_double.h"
 #include "outdir.h"
 
 #include <inttypes.h>
@@ -49,8 +59,16 @@ static void write_vertices(FILE *file, mesh_format format, const double *xy,
                            size_t count)
 {
     const char *prefix = format == MESH_FORMAT_OBJ ? "v " : "";
-    for (size_t i = 0; i < count; i++)
-        fprintf(file, "%s%.17g %.17g 0\n", prefix, xy[2 * i], xy[2 * i + 1]);
+    size_t prefix_length = strlen(prefix);
+    char line[8 + 2 * FORMAT_DOUBLE_SIZE];
+    memcpy(line, prefix, prefix_length);
+    for (size_t i = 0; i < count; i++) {
+        char *end = format_double(line + prefix_length, xy[2 * i]);
+        *end++ = ' ';
+        end = format_double(end, xy[2 * i + 1]);
+        memcpy(end, " 0\n", 3);
+        fwrite(line, 1, (size_t)(end + 3 - line), file);
+    }
 }
 
 static void write_triangles(FILE *file, mesh_format format,

@@ -21,7 +21,7 @@ int mesh_format_from_name(const char *name, mesh_format *format);
 const char *mesh_format_name(mesh_format format);
 
 /* Writes geometry g of result to path: all vertices with z = 0, coordinates
- * printed with "%.17g" so they read back bit-identical, then the shared
+ * printed shortest (format_double.h) so they read back bit-identical, then the shared
  * triangles (counter-clockwise). Returns CLI_EXIT_OK or CLI_EXIT_INTERNAL
  * with error set. */
 int write_mesh(const char *path, const cm_result *result, size_t g,

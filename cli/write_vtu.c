@@ -4,6 +4,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "format_double.h"
+
 enum { VTK_TETRA = 10, VTK_WEDGE = 13 };
 
 int write_vtu(const char *path, const char *target, const volume_mesh *mesh, cli_error *error)
@@ -26,9 +28,16 @@ int write_vtu(const char *path, const char *target, const volume_mesh *mesh, cli
                   "      <Points>\n"
                   "        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
             mesh->num_nodes, mesh->num_cells);
-    for (size_t i = 0; i < mesh->num_nodes; i++)
-        fprintf(file, "          %.17g %.17g %.17g\n", mesh->nodes[3 * i], mesh->nodes[3 * i + 1],
-                mesh->nodes[3 * i + 2]);
+    char line[16 + 3 * FORMAT_DOUBLE_SIZE] = "         "; /* the indent, 9 + 1 blanks */
+    for (size_t i = 0; i < mesh->num_nodes; i++) {
+        char *end = line + 9;
+        for (int c = 0; c < 3; c++) {
+            *end++ = ' ';
+            end = format_double(end, mesh->nodes[3 * i + (size_t)c]);
+        }
+        *end++ = '\n';
+        fwrite(line, 1, (size_t)(end - line), file);
+    }
     fputs("        </DataArray>\n      </Points>\n      <Cells>\n"
           "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n", file);
     for (size_t c = 0; c < mesh->num_cells; c++) {

@@ -3,10 +3,11 @@
 # the README's C example (docs/examples/pair.c) built with pkg-config and
 # with find_package(compatmesh), the C++ OpenMesh example
 # (docs/examples/pair.cc) with find_package, the installed command-line
-# tool and the installed Python module.
-#   check_install.sh SOURCE_DIR BUILD_DIR WORK_DIR
+# tool (a triangulation, and a sweep through Gmsh when built with it) and
+# the installed Python module.
+#   check_install.sh SOURCE_DIR BUILD_DIR WORK_DIR WITH_GMSH(ON|OFF)
 set -eu
-src=$1 build=$2 work=$3
+src=$1 build=$2 work=$3 with_gmsh=$4
 rm -rf "$work"
 mkdir -p "$work"
 prefix=$work/prefix
@@ -41,6 +42,15 @@ cp "$src/tests/openmesh/data/a.off" "$src/tests/openmesh/data/b.off" "$work/proj
 
 # The installed tool and Python module.
 "$prefix/bin/compatmesh" --version | grep -q '^compatmesh '
+printf '0 0\n4 0\n4 3\n0 3\n' >"$work/a.xy"
+printf '0 0\n4 1\n3 4\n-1 2\n' >"$work/b.xy"
+"$prefix/bin/compatmesh" triangulate "$work/a.xy" "$work/b.xy" -o "$work/tri" >/dev/null
+test -s "$work/tri/a.off" && test -s "$work/tri/preview.png"
+# Gmsh is loaded by the installed tool when a sweep writes a Gmsh format.
+if [ "$with_gmsh" = ON ]; then
+  "$prefix/bin/compatmesh" sweep "$work/a.xy" "$work/b.xy" -o "$work/sweep.msh" >/dev/null
+  grep -q '^\$MeshFormat' "$work/sweep.msh"
+fi
 PYTHONPATH="$prefix/lib/python3/dist-packages" /usr/bin/python3 -c \
   'import compatmesh, numpy as np; r = compatmesh.triangulate([np.array([[0, 0], [4, 0], [4, 3], [0, 3.0]]), np.array([[0, 0], [4, 1], [3, 4], [-1, 2.0]])]); assert len(r.faces) >= 2'
 echo "installed into $prefix and used: pkg-config, find_package (C and C++), CLI, Python"
