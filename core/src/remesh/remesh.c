@@ -37,6 +37,8 @@
 #include "remesh/collapse.h"
 #include "remesh/criteria.h"
 #include "remesh/flip.h"
+#include "remesh/mapopt.h"
+#include "remesh/maprefine.h"
 #include "remesh/refine.h"
 #include "remesh/smooth.h"
 #include "base/clock.h"
@@ -72,6 +74,7 @@ typedef struct remesher {
     cm_progress *progress;
     double target; /* radians */
     long flips;
+    long spent;    /* Steiner vertices added before refine() */
 } remesher;
 
 /* ---- edges not to split again --------------------------------------------- */
@@ -346,7 +349,7 @@ static long split_round(remesher *x, long ks, int32_t *cand, long want, long *tr
 static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
 {
     cm_kmesh *km = &x->km;
-    long budget = budget_of(x->o, n), added = 0, attempts = 0, since_best = 0;
+    long budget = budget_of(x->o, n) - x->spent, added = 0, attempts = 0, since_best = 0;
     double best = cm_kmesh_min_angle(km);
     int32_t *cand = NULL;
     while (cm_kmesh_min_slack(km) < 0 && added < budget && since_best < stall_limit(x) &&
@@ -460,6 +463,66 @@ static cm_status step_out(remesher *x, size_t n)
     return CM_OK;
 }
 
+/* ---- map-aware start ----------------------------------------------------------- */
+
+/* The map-aware remesher's weights: the shape term keeps each geometry's
+ * triangles from degenerating while the map term leads (before
+ * refinement), then both count alike. */
+#define CM_MAP_SHAPE_FIRST 0.1
+#define CM_MAP_SHAPE_AFTER 1.0
+#define CM_MAP_ITERATIONS 200
+#define CM_MAP_SWEEPS 20
+/* Middle-metric refinement aims at this share of each triangle's target;
+ * it runs in CM_MAP_CYCLES cycles, each ending with the descent on the
+ * finer mesh, with an equal share of the budget. */
+#define CM_MAP_SHARE 1.0
+#define CM_MAP_CYCLES 3
+/* The share of the Steiner budget the middle-metric refinement may
+ * spend; Algorithm 1 has the rest. */
+#define CM_MAP_BUDGET 0.5
+
+/* CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
+#include <stdio.h>
+static void dbg(remesher *x, const char *what)
+{
+    if (!getenv("CM_MAPDEBUG")) return;
+    cm_kmesh *km = &x->km;
+    double mid = 10, mid2 = 10, min2 = 10; int flat = 0, below = 0;
+    for (int32_t t = 0; t < km->nt; t++)
+        if (cm_kmesh_tri_live(km, t)) {
+            double a = cm_mid_angle(km, km->tri[3 * t], km->tri[3 * t + 1], km->tri[3 * t + 2]);
+            mid = fmin(mid, a);
+            if (km->tkey[t] < 1e-3) { flat++; continue; }
+            if (km->slack[t] < 0) below++;
+            mid2 = fmin(mid2, a), min2 = fmin(min2, km->tkey[t]);
+        }
+    fprintf(stderr, "   nonflat: min %.3f mid %.3f flat %d short %d\n", min2 * 180 / CM_PI, mid2 * 180 / CM_PI, flat, below);
+    cm_mapopt_weights w = {1, 0};
+    fprintf(stderr, "%-14s steiner %d min %.3f mid %.3f mapE %.4g check %d\n", what, km->live_v - km->n,
+            cm_kmesh_min_angle(km) * 180 / CM_PI, mid * 180 / CM_PI, cm_mapopt_energy(km, w) / km->live_t, cm_kmesh_check(km));
+}
+static cm_status map_start(remesher *x, size_t n, cm_remesh_report *rep)
+{
+    dbg(x, "start");
+    cm_mapopt_weights first = {1.0, CM_MAP_SHAPE_FIRST}, after = {1.0, CM_MAP_SHAPE_AFTER};
+    long budget = (long)(CM_MAP_BUDGET * (double)budget_of(x->o, n)), start = x->km.live_v - x->km.n;
+    long st = cm_mapopt_run(&x->km, first, CM_MAP_ITERATIONS);
+    if (st < 0 || cm_mapopt_local(&x->km, first, CM_MAP_SWEEPS) < 0) return stop_status(x);
+    if (getenv("CM_MAPDEBUG")) fprintf(stderr, "steps %ld\n", st);
+    dbg(x, "mapopt");
+    for (int cycle = 1; cycle <= CM_MAP_CYCLES; cycle++) {
+        if (cm_progress_poll(x->progress, CM_STAGE_REMESH, 0.5 * cycle / CM_MAP_CYCLES)) return CM_ERR_CANCELLED;
+        long added = cm_mid_refine(&x->km, CM_MAP_SHARE, start + budget * cycle / CM_MAP_CYCLES, after);
+        if (added < 0 || cm_mapopt_run(&x->km, after, CM_MAP_ITERATIONS) < 0 ||
+            cm_mapopt_local(&x->km, after, CM_MAP_SWEEPS) < 0)
+            return stop_status(x);
+        rep->splits += added, x->spent += added;
+        dbg(x, "cycle");
+        if (added == 0) break;
+    }
+    return CM_OK;
+}
+
 /* ---- cleanup and coarsening ------------------------------------------------- */
 
 /* Removes Steiner vertices with collapses that pass `threshold`, then
@@ -526,9 +589,16 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
         s = CM_ERR_CANCELLED;
         goto stop;
     }
+    if (o->remesher == CM_REMESHER_MAP) {
+        if ((s = map_start(&x, n, rep)) != CM_OK) goto stop;
+        if (improve_everywhere(&x)) goto oom;
+    }
+    dbg(&x, "improve");
     if ((s = refine(&x, n, rep)) != CM_OK) goto stop;
+    dbg(&x, "refine");
     if (improve_everywhere(&x)) goto oom;
     if ((s = step_out(&x, n)) != CM_OK) goto stop;
+    dbg(&x, "stepout");
     long late = coarsen(&x, o->min_angle_deg * CM_PI / 180.0);
     if (late < 0 || improve_everywhere(&x)) goto oom;
     rep->collapses += late;
