@@ -65,6 +65,16 @@ static double mips(m2 A, m2 B, double s, m2 *ga, m2 *gb)
     return f;
 }
 
+/* f(A, B)^p, gradients likewise (times s). */
+static double mips_power(m2 A, m2 B, double p, double s, m2 *ga, m2 *gb)
+{
+    if (p == 1.0) return mips(A, B, s, ga, gb);
+    double f = mips(A, B, 0, NULL, NULL);
+    if (!isfinite(f)) return INFINITY;
+    if (ga || gb) mips(A, B, s * p * pow(f, p - 1), ga, gb);
+    return pow(f, p);
+}
+
 /* The equilateral triangle's edge matrix. */
 static const m2 equilateral = {1.0, 0.5, 0.0, 0.86602540378443864676};
 
@@ -119,18 +129,18 @@ static double energy(optimiser *o, const double *pos, int with_grad)
     size_t k = km->k;
     m2 e[CM_MAPOPT_MAX_K], g[CM_MAPOPT_MAX_K];
     if (with_grad) memset(o->grad, 0, 2 * k * (size_t)o->m * sizeof *o->grad);
-    double total = 0;
+    double total = 0, pw = o->w.power > 0 ? o->w.power : 1.0;
     for (int32_t t = 0; t < km->nt; t++) {
         if (!cm_kmesh_tri_live(km, t) || (o->frozen && o->frozen[t])) continue;
         const int32_t *v = km->tri + 3 * (size_t)t;
         for (size_t a = 0; a < k; a++) e[a] = edges(o, pos, a, v), g[a] = (m2){0, 0, 0, 0};
         for (size_t a = 0; a < k; a++) {
             if (o->w.shape > 0)
-                total += o->w.shape * mips(equilateral, e[a], o->w.shape, NULL, with_grad ? &g[a] : NULL);
+                total += o->w.shape * mips_power(equilateral, e[a], pw, o->w.shape, NULL, with_grad ? &g[a] : NULL);
             if (o->w.map > 0)
                 for (size_t b = a + 1; b < k; b++)
-                    total += o->w.map * mips(e[a], e[b], o->w.map, with_grad ? &g[a] : NULL,
-                                             with_grad ? &g[b] : NULL);
+                    total += o->w.map * mips_power(e[a], e[b], pw, o->w.map, with_grad ? &g[a] : NULL,
+                                                   with_grad ? &g[b] : NULL);
             if (!isfinite(total)) return INFINITY;
         }
         if (with_grad)
@@ -366,7 +376,7 @@ static double star_energy(const cm_kmesh *km, cm_mapopt_weights w, const cm_ibuf
                           const unsigned char *skip, size_t g, const double p[2], double grad[2])
 {
     m2 e[CM_MAPOPT_MAX_K], ge[CM_MAPOPT_MAX_K];
-    double total = 0;
+    double total = 0, pw = w.power > 0 ? w.power : 1.0;
     if (grad) grad[0] = grad[1] = 0;
     for (size_t i = 0; i < star->n; i++) {
         if (skip[i]) continue;
@@ -382,10 +392,10 @@ static double star_energy(const cm_kmesh *km, cm_mapopt_weights w, const cm_ibuf
             ge[a] = (m2){0, 0, 0, 0};
         }
         for (size_t a = 0; a < km->k; a++) {
-            if (w.shape > 0) total += w.shape * mips(equilateral, e[a], w.shape, NULL, a == g ? &ge[a] : NULL);
+            if (w.shape > 0) total += w.shape * mips_power(equilateral, e[a], pw, w.shape, NULL, a == g ? &ge[a] : NULL);
             if (w.map > 0)
                 for (size_t b = a + 1; b < km->k; b++)
-                    total += w.map * mips(e[a], e[b], w.map, a == g ? &ge[a] : NULL, b == g ? &ge[b] : NULL);
+                    total += w.map * mips_power(e[a], e[b], pw, w.map, a == g ? &ge[a] : NULL, b == g ? &ge[b] : NULL);
         }
         if (!isfinite(total)) return INFINITY;
         if (grad) { /* d/dp of the corner j of the edge matrix, back to unnormalised */

@@ -15,6 +15,9 @@
  * triangle degenerates in any geometry. */
 typedef struct cm_mapopt_weights {
     double map, shape;
+    /* each term raised to this power (0 or 1: as is): larger leans
+     * toward the worst triangles, as the smallest angle does */
+    double power;
 } cm_mapopt_weights;
 
 /* Up to `iterations` descent steps on the energy over the Steiner

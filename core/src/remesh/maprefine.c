@@ -6,7 +6,6 @@
  * circumcentre follow from the three squared edge lengths alone. */
 #include <math.h>
 #include <stdlib.h>
-#include <stdio.h>
 
 #include "remesh/maprefine.h"
 #include "remesh/flip.h"
@@ -153,6 +152,23 @@ static int32_t insert_at(cm_kmesh *km, int32_t t, const double bary[3], double *
     return cm_kmesh_insert(km, t, pts);
 }
 
+/* Keeps the open transaction if the smallest angle (all geometries) of
+ * the triangles it changed did not drop, else undoes it. 1 kept, 0
+ * undone, -1 out of memory. */
+static int settle(cm_kmesh *km)
+{
+    double before, after;
+    if (cm_kmesh_tx_region(km, &before, &after)) {
+        cm_kmesh_tx_commit(km);
+        return -1;
+    }
+    if (after >= before) {
+        cm_kmesh_tx_commit(km);
+        return 1;
+    }
+    return cm_kmesh_tx_rollback(km) ? -1 : 0;
+}
+
 typedef struct { double key; int32_t t; } candidate;
 
 static int by_key(const void *pa, const void *pb)
@@ -169,7 +185,14 @@ long cm_mid_refine(cm_kmesh *km, double share, long budget, cm_mapopt_weights w)
     cm_ibuf star = {0};
     long inserted = 0, status = 0;
     if (!pts) return -1;
-    if (cm_flip_queue_all(km, &edges) || cm_mid_flip_queue(km, &edges) < 0) goto oom;
+    /* toward the middle Delaunay triangulation first, kept as the
+     * insertions below are */
+    if (cm_kmesh_tx_begin(km)) goto oom;
+    if (cm_flip_queue_all(km, &edges) || cm_mid_flip_queue(km, &edges) < 0) {
+        cm_kmesh_tx_commit(km);
+        goto oom;
+    }
+    if (settle(km) < 0) goto oom;
     for (;;) {
         if (km->live_v - km->n >= budget) break;
         free(cand);
@@ -191,27 +214,29 @@ long cm_mid_refine(cm_kmesh *km, double share, long budget, cm_mapopt_weights w)
         for (size_t i = 0; i < nc && done < round && km->live_v - km->n < budget; i++) {
             int32_t t = cand[i].t;
             if (!cm_kmesh_tri_live(km, t)) continue;
-            const int32_t *v = km->tri + 3 * (size_t)t;
+            const int32_t v[3] = {km->tri[3 * t], km->tri[3 * t + 1], km->tri[3 * t + 2]};
             if (km->mark[v[0]] == stamp || km->mark[v[1]] == stamp || km->mark[v[2]] == stamp) continue;
             double bary[3];
-            int32_t m = -2;
             if (cm_mid_circumcentre(km, t, bary)) continue;
             int lo = bary[0] <= bary[1] && bary[0] <= bary[2] ? 0 : bary[1] <= bary[2] ? 1 : 2;
-            if (bary[lo] >= CM_MID_INSIDE) m = insert_at(km, t, bary, pts);
-            else if (km->opp[3 * t + lo] >= 0) {
-                m = cm_refine_split(km, 3 * t + lo);
-                if (m >= 0 && cm_mapopt_vertex(km, w, m, CM_MID_SPLIT_STEPS, &star) < 0) goto oom;
+            if (bary[lo] < CM_MID_INSIDE && km->opp[3 * t + lo] < 0) continue;
+            if (cm_kmesh_tx_begin(km)) goto oom;
+            int32_t m = bary[lo] >= CM_MID_INSIDE ? insert_at(km, t, bary, pts) : cm_refine_split(km, 3 * t + lo);
+            if (m >= 0 && (cm_mapopt_vertex(km, w, m, CM_MID_SPLIT_STEPS, &star) < 0 ||
+                           queue_star(km, m, &edges, &star) || cm_mid_flip_queue(km, &edges) < 0))
+                m = -1;
+            if (m < 0) {
+                cm_kmesh_tx_commit(km); /* nothing changed, or out of memory */
+                if (m == -1) goto oom;
+                continue;
             }
-            if (m == -1) goto oom;
-            if (m < 0) continue;
-            if (getenv("CM_MAPDEBUG2")) {
-                cm_kmesh_star(km, m, &star);
-                fprintf(stderr, "ins t%d bary %.3f %.3f %.3f lo %d:", t, bary[0], bary[1], bary[2], lo);
-                for (size_t j = 0; j < star.n; j++) fprintf(stderr, " %.4f/%.3f", km->tkey[star.a[j] / 3], tri_mid(km, star.a[j] / 3));
-                fprintf(stderr, "\n");
+            int kept = settle(km);
+            if (kept < 0) goto oom;
+            if (!kept) {
+                for (int j = 0; j < 3; j++) km->mark[v[j]] = stamp; /* not again this round */
+                continue;
             }
             done++, inserted++;
-            if (queue_star(km, m, &edges, &star) || cm_mid_flip_queue(km, &edges) < 0) goto oom;
             if (cm_kmesh_star(km, m, &star) == -1) goto oom;
             km->mark[m] = stamp;
             for (size_t j = 0; j < star.n; j++) km->mark[km->tri[cm_next(star.a[j])]] = stamp;

@@ -31,7 +31,9 @@ long cm_mid_flip_queue(cm_kmesh *km, cm_work *edges);
  * the geometries do not change), or, when that falls outside, at the
  * midpoint of the interior edge it lies beyond, that vertex then moved
  * by a few Newton steps on the energy w (the midpoint of a sliver's long
- * side is close to its apex); each followed by middle flips. Returns the insertions, -1 out of memory. */
+ * side is close to its apex); each followed by middle flips, as a
+ * transaction undone when the smallest angle (all geometries) of the
+ * triangles it changed dropped. Not inside a transaction. Returns the insertions, -1 out of memory. */
 long cm_mid_refine(cm_kmesh *km, double share, long budget, cm_mapopt_weights w);
 
 #endif

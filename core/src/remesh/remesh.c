@@ -472,6 +472,7 @@ static cm_status step_out(remesher *x, size_t n)
 #define CM_MAP_SHAPE_AFTER 1.0
 #define CM_MAP_ITERATIONS 200
 #define CM_MAP_SWEEPS 20
+#define CM_MAP_POLISH_ROUNDS 4
 /* Middle-metric refinement aims at this share of each triangle's target;
  * it runs in CM_MAP_CYCLES cycles, each ending with the descent on the
  * finer mesh, with an equal share of the budget. */
@@ -501,10 +502,19 @@ static void dbg(remesher *x, const char *what)
     fprintf(stderr, "%-14s steiner %d min %.3f mid %.3f mapE %.4g check %d\n", what, km->live_v - km->n,
             cm_kmesh_min_angle(km) * 180 / CM_PI, mid * 180 / CM_PI, cm_mapopt_energy(km, w) / km->live_t, cm_kmesh_check(km));
 }
+static double envd(const char *name, double dflt) { const char *v = getenv(name); return v ? atof(v) : dflt; }
+#undef CM_MAP_SHARE
+#define CM_MAP_SHARE envd("CM_MAP_SHARE", 1.0)
+#undef CM_MAP_BUDGET
+#define CM_MAP_BUDGET envd("CM_MAP_BUDGET", 0.5)
+#undef CM_MAP_SHAPE_FIRST
+#define CM_MAP_SHAPE_FIRST envd("CM_MAP_SHAPE_FIRST", 0.1)
+#undef CM_MAP_CYCLES
+#define CM_MAP_CYCLES ((int)envd("CM_MAP_CYCLES", 3))
 static cm_status map_start(remesher *x, size_t n, cm_remesh_report *rep)
 {
     dbg(x, "start");
-    cm_mapopt_weights first = {1.0, CM_MAP_SHAPE_FIRST}, after = {1.0, CM_MAP_SHAPE_AFTER};
+    cm_mapopt_weights first = {1.0, CM_MAP_SHAPE_FIRST, envd("CM_MAP_POWER", 1)}, after = {1.0, CM_MAP_SHAPE_AFTER, envd("CM_MAP_POWER", 1)};
     long budget = (long)(CM_MAP_BUDGET * (double)budget_of(x->o, n)), start = x->km.live_v - x->km.n;
     long st = cm_mapopt_run(&x->km, first, CM_MAP_ITERATIONS);
     if (st < 0 || cm_mapopt_local(&x->km, first, CM_MAP_SWEEPS) < 0) return stop_status(x);
@@ -521,6 +531,28 @@ static cm_status map_start(remesher *x, size_t n, cm_remesh_report *rep)
         if (added == 0) break;
     }
     return CM_OK;
+}
+
+/* Descent on the map and shape energy over the whole mesh, then flips +
+ * smoothing, as one transaction kept only if the smallest angle rose:
+ * a move of every geometry at once, out of the optimum of the
+ * one-vertex, one-geometry moves. Repeated while it gains. Returns 0 or
+ * -1 (stop). */
+static int map_polish(remesher *x)
+{
+    cm_mapopt_weights w = {1.0, CM_MAP_SHAPE_AFTER, 1.0};
+    for (int round = 0; round < CM_MAP_POLISH_ROUNDS; round++) {
+        if (cm_kmesh_tx_begin(&x->km)) return -1;
+        if (cm_mapopt_local(&x->km, w, CM_MAP_SWEEPS) < 0 || improve_everywhere(x)) {
+            cm_kmesh_tx_commit(&x->km);
+            return -1;
+        }
+        int kept = settle_by(x, CM_PROGRESS);
+        if (getenv("CM_MAPDEBUG")) fprintf(stderr, "polish kept %d min %.3f\n", kept, cm_kmesh_min_angle(&x->km) * 180 / CM_PI);
+        if (kept < 0) return -1;
+        if (kept == 0) break;
+    }
+    return 0;
 }
 
 /* ---- cleanup and coarsening ------------------------------------------------- */
@@ -589,15 +621,17 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
         s = CM_ERR_CANCELLED;
         goto stop;
     }
-    if (o->remesher == CM_REMESHER_MAP) {
+    int variant = getenv("CM_MAPVARIANT") ? atoi(getenv("CM_MAPVARIANT")) : 1;
+    if (o->remesher == CM_REMESHER_MAP && (variant & 1)) {
         if ((s = map_start(&x, n, rep)) != CM_OK) goto stop;
         if (improve_everywhere(&x)) goto oom;
     }
     dbg(&x, "improve");
-    if ((s = refine(&x, n, rep)) != CM_OK) goto stop;
+    if (!(o->remesher == CM_REMESHER_MAP && (variant & 8)) && (s = refine(&x, n, rep)) != CM_OK) goto stop;
     dbg(&x, "refine");
     if (improve_everywhere(&x)) goto oom;
-    if ((s = step_out(&x, n)) != CM_OK) goto stop;
+    if (o->remesher == CM_REMESHER_MAP && (variant & 2) && map_polish(&x)) goto oom;
+    if (!(o->remesher == CM_REMESHER_MAP && (variant & 4)) && (s = step_out(&x, n)) != CM_OK) goto stop;
     dbg(&x, "stepout");
     long late = coarsen(&x, o->min_angle_deg * CM_PI / 180.0);
     if (late < 0 || improve_everywhere(&x)) goto oom;
