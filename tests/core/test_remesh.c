@@ -127,7 +127,7 @@ static int random_operation(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *w
     int32_t v = (int32_t)rp_below(rng, (uint64_t)km->nv);
     size_t g = (size_t)rp_below(rng, km->k);
     if (km->tri[c] < 0) return 0;
-    switch (rp_below(rng, 12)) {
+    switch (rp_below(rng, 13)) {
     case 0: cm_flip_try(km, c); return 0;
     case 1: cm_flip_if_valid(km, c); return 0;
     case 2: return cm_smooth_vertex(km, g, v, (cm_smoothing)rp_below(rng, 4), (int)rp_below(rng, 2), star) < 0 ? -1 : 0;
@@ -139,6 +139,7 @@ static int random_operation(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *w
     case 8: return cm_mapopt_local(km, map_weights(rng), 1) < 0 ? -1 : 0;
     case 9: return km->vc[v] >= 0 && cm_mapopt_vertex(km, map_weights(rng), v, 2, star) < 0 ? -1 : 0;
     case 10: return cm_flip_queue_all(km, work) || cm_mid_flip_queue(km, work) < 0 ? -1 : 0;
+    case 11: return cm_mid_insert(km, c / 3) == -1 ? -1 : 0;
     default: return cm_kmesh_star(km, km->vc[v] >= 0 ? v : 0, star) == -1 ? -1 : 0;
     }
 }
@@ -235,7 +236,6 @@ static void test_map_descent(int pairs)
         moved += !boundary_intact(&km, in);
         stale += !keys_fresh(&km);
         dropped += cm_kmesh_min_angle(&km) < lo;
-        if (cm_kmesh_min_angle(&km) < lo) printf("TMP %d %.17g %.17g\n", seed, lo * DEG, cm_kmesh_min_angle(&km) * DEG);
         cm_kmesh_free(&km), cm_mesh_clear(&m);
         free(a), free(b);
     }

@@ -152,6 +152,18 @@ static int32_t insert_at(cm_kmesh *km, int32_t t, const double bary[3], double *
     return cm_kmesh_insert(km, t, pts);
 }
 
+int32_t cm_mid_insert(cm_kmesh *km, int32_t t)
+{
+    double bary[3];
+    if (!cm_kmesh_tri_live(km, t) || cm_mid_circumcentre(km, t, bary)) return -2;
+    if (fmin(bary[0], fmin(bary[1], bary[2])) < CM_MID_INSIDE) return -2;
+    double *pts = malloc(2 * km->k * sizeof *pts);
+    if (!pts) return -1;
+    int32_t m = insert_at(km, t, bary, pts);
+    free(pts);
+    return m;
+}
+
 /* Keeps the open transaction if the smallest angle (all geometries) of
  * the triangles it changed did not drop, else undoes it. 1 kept, 0
  * undone, -1 out of memory. */

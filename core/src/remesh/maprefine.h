@@ -18,6 +18,12 @@ double cm_mid_angle(const cm_kmesh *km, int32_t a, int32_t b, int32_t c);
  * coordinates (summing to 1; negative outside). 0, or -1 when flat. */
 int cm_mid_circumcentre(const cm_kmesh *km, int32_t t, double bary[3]);
 
+/* Inserts a vertex at t's middle circumcentre, at the same barycentric
+ * coordinates in every geometry, if it lies inside t (every coordinate
+ * at least a small margin) and the three new triangles are valid in all.
+ * Returns the vertex, -2 when not, -1 out of memory. */
+int32_t cm_mid_insert(cm_kmesh *km, int32_t t);
+
 /* Flips edges from `edges` (corners; emptied) while the smaller middle
  * angle of the two triangles rises and the quad is strictly convex in
  * every geometry (toward the middle metric's Delaunay triangulation).

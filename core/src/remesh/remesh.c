@@ -28,7 +28,15 @@
  * removal of a Steiner vertex, a split, each followed by the repair) and
  * are kept only when the triangles they changed end up better. What is
  * left after that is beyond local repair (typically a correspondence that
- * forces a strong distortion: bench/correspondence_bound.py measures it). */
+ * forces a strong distortion: bench/correspondence_bound.py measures it).
+ *
+ * The map-aware remesher (CM_REMESHER_MAP) runs a start before the
+ * refinement: the Steiner vertices of every geometry move to lower the
+ * conformal distortion of the maps between the geometries (mapopt), and
+ * vertices go where a triangle is poor in the metric halfway between them
+ * (maprefine), each insertion kept only where no angle dropped; its forced
+ * moves also try an insertion at the middle circumcentre of a short
+ * triangle. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -386,16 +394,19 @@ oom:
 
 /* ---- stepping out of local optima ------------------------------------------ */
 
-enum forced_move { FORCED_FLIP, FORCED_COLLAPSE, FORCED_SPLIT, FORCED_MOVES };
+enum forced_move { FORCED_FLIP, FORCED_COLLAPSE, FORCED_SPLIT, FORCED_INSERT, FORCED_MOVES };
 
-/* A move the greedy rules refuse, on the edge opposite c (flip, split) or
- * on its corner vertex (collapse onto the next), then the repair, as one
+/* A move the greedy rules refuse, on the edge opposite c (flip, split),
+ * on its corner vertex (collapse onto the next) or in its triangle (the
+ * map-aware remesher: an insertion at the middle circumcentre), then the
+ * repair, as one
  * transaction kept only if the smallest angle of the triangles it
  * changed rose. Returns 1 kept, 0 undone or impossible, -1 out of memory. */
 static int try_forced(remesher *x, enum forced_move kind, int32_t c)
 {
     cm_kmesh *km = &x->km;
-    if (km->tri[c] < 0 || (kind != FORCED_COLLAPSE && km->opp[c] < 0)) return 0;
+    if (km->tri[c] < 0 || (kind != FORCED_COLLAPSE && kind != FORCED_INSERT && km->opp[c] < 0)) return 0;
+    if (kind == FORCED_INSERT && c % 3) return 0; /* once per triangle */
     if (kind == FORCED_COLLAPSE && cm_kmesh_is_boundary(km, km->tri[c])) return 0;
     int32_t around[5] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)],
                          km->opp[c] >= 0 ? km->tri[km->opp[c]] : -1, -1};
@@ -406,7 +417,7 @@ static int try_forced(remesher *x, enum forced_move kind, int32_t c)
     } else if (kind == FORCED_COLLAPSE) {
         done = cm_collapse_try(km, c, &x->star);
     } else {
-        int32_t m = cm_refine_split(km, c);
+        int32_t m = kind == FORCED_SPLIT ? cm_refine_split(km, c) : cm_mid_insert(km, c / 3);
         done = m >= 0 ? 1 : m == CM_SPLIT_NO_FIT ? 0 : -1;
         around[4] = m;
     }
@@ -450,7 +461,8 @@ static cm_status step_out(remesher *x, size_t n)
             if (!cm_kmesh_tri_live(km, worst[i])) continue;
             int m = corners_near(km, worst[i], near);
             for (int kind = 0; kind < FORCED_MOVES && !gained; kind++) {
-                if (kind == FORCED_SPLIT && km->live_v - km->n >= budget) continue;
+                if ((kind == FORCED_SPLIT || kind == FORCED_INSERT) && km->live_v - km->n >= budget) continue;
+                if (kind == FORCED_INSERT && x->o->remesher != CM_REMESHER_MAP) continue;
                 for (int j = 0; j < m && !gained; j++) {
                     int s = try_forced(x, (enum forced_move)kind, near[j]);
                     if (s < 0) return stop_status(x);
@@ -465,14 +477,15 @@ static cm_status step_out(remesher *x, size_t n)
 
 /* ---- map-aware start ----------------------------------------------------------- */
 
-/* The map-aware remesher's weights: the shape term keeps each geometry's
- * triangles from degenerating while the map term leads (before
- * refinement), then both count alike. */
+/* The map-aware remesher's energy (mapopt.h): the shape term keeps each
+ * geometry's triangles from degenerating while the map term leads (before
+ * refinement), then both count alike; the terms as they are (power 1).
+ * Global steps, then one-vertex sweeps. */
 #define CM_MAP_SHAPE_FIRST 0.1
 #define CM_MAP_SHAPE_AFTER 1.0
+#define CM_MAP_POWER 1.0
 #define CM_MAP_ITERATIONS 200
 #define CM_MAP_SWEEPS 20
-#define CM_MAP_POLISH_ROUNDS 4
 /* Middle-metric refinement aims at this share of each triangle's target;
  * it runs in CM_MAP_CYCLES cycles, each ending with the descent on the
  * finer mesh, with an equal share of the budget. */
@@ -482,44 +495,15 @@ static cm_status step_out(remesher *x, size_t n)
  * spend; Algorithm 1 has the rest. */
 #define CM_MAP_BUDGET 0.5
 
-/* CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
-#include <stdio.h>
-static void dbg(remesher *x, const char *what)
-{
-    if (!getenv("CM_MAPDEBUG")) return;
-    cm_kmesh *km = &x->km;
-    double mid = 10, mid2 = 10, min2 = 10; int flat = 0, below = 0;
-    for (int32_t t = 0; t < km->nt; t++)
-        if (cm_kmesh_tri_live(km, t)) {
-            double a = cm_mid_angle(km, km->tri[3 * t], km->tri[3 * t + 1], km->tri[3 * t + 2]);
-            mid = fmin(mid, a);
-            if (km->tkey[t] < 1e-3) { flat++; continue; }
-            if (km->slack[t] < 0) below++;
-            mid2 = fmin(mid2, a), min2 = fmin(min2, km->tkey[t]);
-        }
-    fprintf(stderr, "   nonflat: min %.3f mid %.3f flat %d short %d\n", min2 * 180 / CM_PI, mid2 * 180 / CM_PI, flat, below);
-    cm_mapopt_weights w = {1, 0};
-    fprintf(stderr, "%-14s steiner %d min %.3f mid %.3f mapE %.4g check %d\n", what, km->live_v - km->n,
-            cm_kmesh_min_angle(km) * 180 / CM_PI, mid * 180 / CM_PI, cm_mapopt_energy(km, w) / km->live_t, cm_kmesh_check(km));
-}
-static double envd(const char *name, double dflt) { const char *v = getenv(name); return v ? atof(v) : dflt; }
-#undef CM_MAP_SHARE
-#define CM_MAP_SHARE envd("CM_MAP_SHARE", 1.0)
-#undef CM_MAP_BUDGET
-#define CM_MAP_BUDGET envd("CM_MAP_BUDGET", 0.5)
-#undef CM_MAP_SHAPE_FIRST
-#define CM_MAP_SHAPE_FIRST envd("CM_MAP_SHAPE_FIRST", 0.1)
-#undef CM_MAP_CYCLES
-#define CM_MAP_CYCLES ((int)envd("CM_MAP_CYCLES", 3))
+/* The map-aware start: the descent on the maps' distortion, then cycles
+ * of middle-metric refinement, each followed by the descent on the finer
+ * mesh. CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
 static cm_status map_start(remesher *x, size_t n, cm_remesh_report *rep)
 {
-    dbg(x, "start");
-    cm_mapopt_weights first = {1.0, CM_MAP_SHAPE_FIRST, envd("CM_MAP_POWER", 1)}, after = {1.0, CM_MAP_SHAPE_AFTER, envd("CM_MAP_POWER", 1)};
+    cm_mapopt_weights first = {1.0, CM_MAP_SHAPE_FIRST, CM_MAP_POWER}, after = {1.0, CM_MAP_SHAPE_AFTER, CM_MAP_POWER};
     long budget = (long)(CM_MAP_BUDGET * (double)budget_of(x->o, n)), start = x->km.live_v - x->km.n;
-    long st = cm_mapopt_run(&x->km, first, CM_MAP_ITERATIONS);
-    if (st < 0 || cm_mapopt_local(&x->km, first, CM_MAP_SWEEPS) < 0) return stop_status(x);
-    if (getenv("CM_MAPDEBUG")) fprintf(stderr, "steps %ld\n", st);
-    dbg(x, "mapopt");
+    if (cm_mapopt_run(&x->km, first, CM_MAP_ITERATIONS) < 0 || cm_mapopt_local(&x->km, first, CM_MAP_SWEEPS) < 0)
+        return stop_status(x);
     for (int cycle = 1; cycle <= CM_MAP_CYCLES; cycle++) {
         if (cm_progress_poll(x->progress, CM_STAGE_REMESH, 0.5 * cycle / CM_MAP_CYCLES)) return CM_ERR_CANCELLED;
         long added = cm_mid_refine(&x->km, CM_MAP_SHARE, start + budget * cycle / CM_MAP_CYCLES, after);
@@ -527,32 +511,9 @@ static cm_status map_start(remesher *x, size_t n, cm_remesh_report *rep)
             cm_mapopt_local(&x->km, after, CM_MAP_SWEEPS) < 0)
             return stop_status(x);
         rep->splits += added, x->spent += added;
-        dbg(x, "cycle");
         if (added == 0) break;
     }
     return CM_OK;
-}
-
-/* Descent on the map and shape energy over the whole mesh, then flips +
- * smoothing, as one transaction kept only if the smallest angle rose:
- * a move of every geometry at once, out of the optimum of the
- * one-vertex, one-geometry moves. Repeated while it gains. Returns 0 or
- * -1 (stop). */
-static int map_polish(remesher *x)
-{
-    cm_mapopt_weights w = {1.0, CM_MAP_SHAPE_AFTER, 1.0};
-    for (int round = 0; round < CM_MAP_POLISH_ROUNDS; round++) {
-        if (cm_kmesh_tx_begin(&x->km)) return -1;
-        if (cm_mapopt_local(&x->km, w, CM_MAP_SWEEPS) < 0 || improve_everywhere(x)) {
-            cm_kmesh_tx_commit(&x->km);
-            return -1;
-        }
-        int kept = settle_by(x, CM_PROGRESS);
-        if (getenv("CM_MAPDEBUG")) fprintf(stderr, "polish kept %d min %.3f\n", kept, cm_kmesh_min_angle(&x->km) * 180 / CM_PI);
-        if (kept < 0) return -1;
-        if (kept == 0) break;
-    }
-    return 0;
 }
 
 /* ---- cleanup and coarsening ------------------------------------------------- */
@@ -621,18 +582,13 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
         s = CM_ERR_CANCELLED;
         goto stop;
     }
-    int variant = getenv("CM_MAPVARIANT") ? atoi(getenv("CM_MAPVARIANT")) : 1;
-    if (o->remesher == CM_REMESHER_MAP && (variant & 1)) {
+    if (o->remesher == CM_REMESHER_MAP) {
         if ((s = map_start(&x, n, rep)) != CM_OK) goto stop;
         if (improve_everywhere(&x)) goto oom;
     }
-    dbg(&x, "improve");
-    if (!(o->remesher == CM_REMESHER_MAP && (variant & 8)) && (s = refine(&x, n, rep)) != CM_OK) goto stop;
-    dbg(&x, "refine");
+    if ((s = refine(&x, n, rep)) != CM_OK) goto stop;
     if (improve_everywhere(&x)) goto oom;
-    if (o->remesher == CM_REMESHER_MAP && (variant & 2) && map_polish(&x)) goto oom;
-    if (!(o->remesher == CM_REMESHER_MAP && (variant & 4)) && (s = step_out(&x, n)) != CM_OK) goto stop;
-    dbg(&x, "stepout");
+    if ((s = step_out(&x, n)) != CM_OK) goto stop;
     long late = coarsen(&x, o->min_angle_deg * CM_PI / 180.0);
     if (late < 0 || improve_everywhere(&x)) goto oom;
     rep->collapses += late;
