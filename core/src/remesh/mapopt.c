@@ -1,9 +1,9 @@
 /* Map-distortion descent (mapopt.h). The per-triangle term is MIPS,
  * f(A, B) = |B adj(A)|^2 / (det A det B) for the edge matrices A, B of two
  * geometries (columns: the edges from the first vertex), which is the
- * conformal distortion of the affine map A -> B, symmetric in A and B and
- * blind to scale: the triangle's smallest angles in A and B are close
- * exactly when it is small. Its gradients:
+ * conformal distortion sigma1/sigma2 + sigma2/sigma1 of the affine map
+ * A -> B, symmetric in A and B and blind to scale: 2 exactly when the
+ * triangle has the same shape in both. Its gradients:
  *   df/dA = (2 A adj(B) adj(B)^T - f det(B) adj(A)^T) / (det A det B)
  * and symmetrically for B. */
 #include <math.h>
@@ -48,8 +48,8 @@ static int flat(m2 m) { return !(det(m) > 0); }
 /* f(A, B); the gradients added (times s) to ga, gb when not NULL. */
 static double mips(m2 A, m2 B, double s, m2 *ga, m2 *gb)
 {
+    if (flat(A) || flat(B)) return INFINITY;
     double da = det(A), db = det(B);
-    if (!(da > 0 && db > 0) || flat(A) || flat(B)) return INFINITY;
     m2 aa = adj(A), ab = adj(B);
     double p = da * db, f = norm2(mul(B, aa)) / p;
     if (ga) {
@@ -306,7 +306,11 @@ long cm_mapopt_run(cm_kmesh *km, cm_mapopt_weights w, int iterations)
     mark_flat(&o, o.q);
     lap = laplacian(&o, &cc);
     if (lap) factor = cholmod_analyze(lap, &cc);
-    if (!factor || !cholmod_factorize(lap, factor, &cc) || cc.status == CHOLMOD_OUT_OF_MEMORY) goto done;
+    if (!factor || !cholmod_factorize(lap, factor, &cc) || cc.status != CHOLMOD_OK) {
+        /* no preconditioner (not positive definite in doubles): no steps */
+        steps = !lap || !factor || cc.status == CHOLMOD_OUT_OF_MEMORY ? -1 : 0;
+        goto done;
+    }
     double tri_scratch[6];
     double e0 = energy(&o, o.q, 1);
     steps = 0;

@@ -31,15 +31,18 @@ int32_t cm_mid_insert(cm_kmesh *km, int32_t t);
 long cm_mid_flip_queue(cm_kmesh *km, cm_work *edges);
 
 /* Inserts Steiner vertices while some triangle's middle angle is below
- * share times its target (tkey - slack) and the budget of Steiner
- * vertices (live_v - n) lasts: at the worst triangle's middle circumcentre
- * at the same barycentric coordinates in every geometry (the maps between
- * the geometries do not change), or, when that falls outside, at the
- * midpoint of the interior edge it lies beyond, that vertex then moved
- * by a few Newton steps on the energy w (the midpoint of a sliver's long
- * side is close to its apex); each followed by middle flips, as a
- * transaction undone when the smallest angle (all geometries) of the
- * triangles it changed dropped. Not inside a transaction. Returns the insertions, -1 out of memory. */
+ * share times its target (tkey - slack) and the Steiner vertices (live_v
+ * - n) are fewer than `budget`: at the worst triangle's middle
+ * circumcentre, at the same barycentric coordinates in every geometry
+ * (the maps between the geometries keep), or, when that falls outside,
+ * at the midpoint of the interior edge it lies beyond; the new vertex then
+ * takes a few Newton steps on the energy w (the midpoint of a poor
+ * triangle's long side can be next to its apex) and middle flips follow.
+ * Each insertion is a transaction, undone when the smallest angle (all
+ * geometries) of the triangles it changed dropped; so is the first round
+ * of middle flips over the whole mesh. Triangles thinner than a degree
+ * in some geometry are left to Algorithm 1. Not inside a transaction.
+ * Returns the insertions, -1 out of memory. */
 long cm_mid_refine(cm_kmesh *km, double share, long budget, cm_mapopt_weights w);
 
 #endif
