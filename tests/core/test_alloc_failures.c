@@ -6,8 +6,8 @@
  * own calls (the static library's objects) through the counters below;
  * GMP's and UMFPACK's allocations are their libraries' own and not
  * counted. Run for every allocation of a triangulation with remeshing, a
- * convex morph and a sweep, and of the construction for polygons with
- * holes whose bridges need Steiner bends. */
+ * convex morph and a sweep, the same with the map-aware remesher, and of the construction for polygons with holes whose bridges
+ * need Steiner bends. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -32,6 +32,7 @@ void *__wrap_calloc(size_t count, size_t size) { return should_fail() ? NULL : _
 void *__wrap_realloc(void *p, size_t size) { return should_fail() ? NULL : __real_realloc(p, size); }
 
 #define N 12
+static cm_remesher remesher = CM_REMESHER_GREEDY; /* of run() */
 
 /* One run: triangulate, morph, sweep. Returns the first failing status
  * (CM_OK when everything succeeded); checks every intermediate claim. */
@@ -39,7 +40,10 @@ static cm_status run(const double *const *polygons, char *where, size_t size)
 {
     cm_result *r = NULL;
     size_t counts[2] = {N, N};
-    cm_status s = cm_triangulate_polygons(polygons, counts, 2, NULL, &r);
+    cm_options o;
+    cm_options_init(&o);
+    o.remesher = remesher;
+    cm_status s = cm_triangulate_polygons(polygons, counts, 2, &o, &r);
     /* No handle at all: the one failure that cannot carry a message. */
     snprintf(where, size, "triangulate: %s", r ? cm_result_message(r) : "out of memory (no handle)");
     char why[256] = "";
@@ -125,6 +129,27 @@ static void test_holes(void)
     CHECK(total > 50 && reported > 0);
 }
 
+/* The same with the map-aware remesher. */
+static void test_map_remesher(const double *const *polygons)
+{
+    char where[512];
+    remesher = CM_REMESHER_MAP;
+    calls = 0, fail_at = -1;
+    CHECK_MSG(run(polygons, where, sizeof where) == CM_OK, "map remesher, the run without failures: %s", where);
+    long total = calls, reported = 0;
+    for (long i = 1; i <= total; i++) {
+        calls = 0, fail_at = i;
+        cm_status s = run(polygons, where, sizeof where);
+        if (s == CM_OK) continue;
+        reported++;
+        CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
+                  "map remesher: allocation %ld of %ld failed: status %s, %s", i, total, cm_status_string(s), where);
+    }
+    printf("map remesher: %ld allocations, each failed once: %ld reported out of memory\n", total, reported);
+    CHECK(reported > 0);
+    remesher = CM_REMESHER_GREEDY;
+}
+
 int main(void)
 {
     double a[2 * N], b[2 * N];
@@ -149,6 +174,7 @@ int main(void)
     printf("%ld allocations, each failed once: %ld reported out of memory, %ld absorbed\n", total,
            reported, absorbed);
     CHECK(total > 100 && reported > 0);
+    test_map_remesher(polygons);
     test_holes();
     return check_summary("test_alloc_failures");
 }
