@@ -65,6 +65,7 @@ import os
 import platform
 import re
 import shutil
+import shlex
 import statistics
 import subprocess
 import sys
@@ -237,11 +238,11 @@ def run_measured(cmd, timeout, cwd=None):
                 out.read().decode(errors="replace"), err.read().decode(errors="replace"))
 
 
-def run_compatmesh(cli, pair, mode, workdir, timeout):
+def run_compatmesh(cli, pair, mode, workdir, timeout, extra=()):
     """One compatmesh run: its numbers, or valid False and why."""
     out = os.path.join(workdir, "run")
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [cli, "triangulate", *pair.files, "--out-dir", out]
+    cmd = [cli, "triangulate", *pair.files, "--out-dir", out, *extra]
     if mode != "index":  # index is the default for equal counts, also in older builds
         cmd += ["--correspondence", mode]
     code, cpu, rss, _, err = run_measured(cmd, timeout)
@@ -283,8 +284,8 @@ def measure_pair(pair, builds, modes, cgal, workdir, timeout, flip):
     for mode in modes:
         if mode != "index" and pair.family != "hard":
             continue
-        record["runs"][mode] = {label: run_compatmesh(cli, pair, mode, workdir, timeout)
-                                for label, cli in order}
+        record["runs"][mode] = {label: run_compatmesh(cli, pair, mode, workdir, timeout, extra)
+                                for label, (cli, extra) in order}
     return record
 
 
@@ -452,6 +453,9 @@ def parse_args(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--compatmesh", required=True, help="the compatmesh CLI to judge")
     ap.add_argument("--baseline", help="a second compatmesh CLI, run side by side")
+    ap.add_argument("--compatmesh-args", default="",
+                    help="options added to every triangulate run of --compatmesh, e.g. '--remesher map'")
+    ap.add_argument("--baseline-args", default="", help="the same for --baseline")
     ap.add_argument("--gen-pairs", help="cm_gen_pairs (default: next to --compatmesh)")
     ap.add_argument("--cgal", help="cm_cgal_single (default: next to --compatmesh)")
     ap.add_argument("--no-cgal", action="store_true", help="skip meshing each polygon alone with CGAL")
@@ -511,9 +515,9 @@ def static_row(pair, args, cache):
 
 def main(argv):
     args = parse_args(argv)
-    builds = {"new": args.compatmesh}
+    builds = {"new": (args.compatmesh, shlex.split(args.compatmesh_args))}
     if args.baseline:
-        builds["baseline"] = args.baseline
+        builds["baseline"] = (args.baseline, shlex.split(args.baseline_args))
     cache = BoundCache(args.bound_cache)
     load = os.getloadavg()[0]
     work = tempfile.mkdtemp(prefix="remesh_bench_")
@@ -554,7 +558,8 @@ def main(argv):
                        "machine": machine(), "cores": os.cpu_count(),
                        "command": " ".join(["remesh_bench.py"] + argv), "commit": source_commit(),
                        "load": [load, os.getloadavg()[0]],
-                       "builds": [{"label": k, "path": v, "version": version(v)} for k, v in builds.items()],
+                       "builds": [{"label": k, "path": " ".join([v[0], *v[1]]), "version": version(v[0])}
+                                  for k, v in builds.items()],
                        "cgal": args.cgal, "bound": not args.no_bound, "modes": args.modes},
               "pairs": rows, "summary": summaries, "versus": vs}
     write_markdown(args.out, result)

@@ -68,6 +68,17 @@ static int set_smoothing(triangulation_args *args, const char *command, const ch
     return CLI_EXIT_USAGE;
 }
 
+static int set_remesher(triangulation_args *args, const char *command, const char *name, cli_error *error)
+{
+    if (strcmp(name, "greedy") == 0) args->options.remesher = CM_REMESHER_GREEDY;
+    else if (strcmp(name, "map") == 0) args->options.remesher = CM_REMESHER_MAP;
+    else {
+        cli_error_set(error, "%s: unknown --remesher '%s' (known: greedy, map)", command, name);
+        return CLI_EXIT_USAGE;
+    }
+    return CLI_EXIT_OK;
+}
+
 static int set_correspondence(triangulation_args *args, const char *command, const char *name,
                               cli_error *error)
 {
@@ -185,6 +196,8 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
         return parse_int(command, "area-every", value, &args->options.area_every, error);
     case OPTION_SMOOTHING:
         return set_smoothing(args, command, value, error);
+    case OPTION_REMESHER:
+        return set_remesher(args, command, value, error);
     case OPTION_MAX_ITERATIONS:
         return parse_int(command, "max-iterations", value, &args->options.max_iterations, error);
     case OPTION_CORRESPONDENCE:

@@ -19,6 +19,7 @@ enum {
     OPTION_K_SPLIT,
     OPTION_AREA_EVERY,
     OPTION_SMOOTHING,
+    OPTION_REMESHER,
     OPTION_MAX_ITERATIONS,
     OPTION_MAX_INPUT_BYTES,
     OPTION_CORRESPONDENCE,
@@ -58,6 +59,10 @@ enum {
     {"smoothing", OPTION_SMOOTHING, "NAME",                                   \
      "laplacian, angle, weighted or combined (default):\n"                    \
      "weighted angle-based, Laplacian where it fails"},                       \
+    {"remesher", OPTION_REMESHER, "NAME",                                     \
+     "greedy (default): Algorithm 1 and forced moves; map:\n"                 \
+     "lower the maps' distortion, refine in the metric\n"                     \
+     "halfway between the inputs, then Algorithm 1"},                         \
     {"max-iterations", OPTION_MAX_ITERATIONS, "N",                            \
      "cap on refinement rounds; default 0: none"},                            \
     {"max-input-bytes", OPTION_MAX_INPUT_BYTES, "N",                          \

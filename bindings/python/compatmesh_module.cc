@@ -177,6 +177,8 @@ const std::vector<std::pair<const char *, cm_smoothing>> smoothing_names = {
     {"angle", CM_SMOOTH_ANGLE},
     {"weighted", CM_SMOOTH_WEIGHTED},
     {"combined", CM_SMOOTH_COMBINED}};
+const std::vector<std::pair<const char *, cm_remesher>> remesher_names = {
+    {"greedy", CM_REMESHER_GREEDY}, {"map", CM_REMESHER_MAP}};
 
 [[noreturn]] void raise_overflow(const std::string &message)
 {
@@ -246,6 +248,8 @@ const std::vector<OptionSetter> &option_setters()
       CM_NUMBER_OPTION(area_every),
       {"smoothing",
        [](cm_options &o, py::handle v, Callbacks &) { o.smoothing = enum_from(v, "smoothing", smoothing_names); }},
+      {"remesher",
+       [](cm_options &o, py::handle v, Callbacks &) { o.remesher = enum_from(v, "remesher", remesher_names); }},
       CM_NUMBER_OPTION(max_iterations),
       CM_NUMBER_OPTION(ceiling),
       {"correspondence",
@@ -975,6 +979,9 @@ PYBIND11_MODULE(compatmesh, m)
       .value("ANGLE", CM_SMOOTH_ANGLE)
       .value("WEIGHTED", CM_SMOOTH_WEIGHTED)
       .value("COMBINED", CM_SMOOTH_COMBINED);
+  py::enum_<cm_remesher>(m, "Remesher", "How the remesher improves the first compatible triangulation.")
+      .value("GREEDY", CM_REMESHER_GREEDY)
+      .value("MAP", CM_REMESHER_MAP);
 
   input_error_type = py::exception<InputErrorTag>(m, "InputError", PyExc_ValueError).inc_ref();
   input_error_type.attr("__doc__") =
@@ -1164,6 +1171,9 @@ options: keyword arguments named like the fields of the C struct cm_options,
                     default True, False for the fastest run
     smoothing       compatmesh.Smoothing, its int value, or "laplacian" /
                     "angle" / "weighted" / "combined"
+    remesher        compatmesh.Remesher, its int value, or "greedy" (the
+                    default) / "map" (lower the maps' distortion and refine
+                    in the metric halfway between the polygons first)
     progress        callable(fraction, stage); return True to cancel
     correspondence  "index" (vertex i is vertex i; equal counts; the default
                     when the counts are equal) or "arclength" (normalised

@@ -84,6 +84,18 @@ def test_a_failing_baseline_is_reported_and_fails(tmp_path):
     assert out.read_text().count("**no**: compatmesh: broken on purpose") == len(TINY)
 
 
+def test_build_args_reach_their_side_only(tmp_path):
+    run, out, raw = bench(tmp_path, "--compatmesh-args=--remesher map", "--baseline", CLI,
+                          "--baseline-args=--remesher none")
+    assert run.returncode == 1
+    assert run.stderr.count("(index, baseline) is not valid") == len(TINY)
+    result = json.loads(raw.read_text())
+    assert [b["path"] for b in result["meta"]["builds"]] == [CLI + " --remesher map", CLI + " --remesher none"]
+    for r in result["pairs"]:
+        assert r["runs"]["index"]["new"]["valid"] and not r["runs"]["index"]["baseline"]["valid"]
+    assert "unknown --remesher 'none'" in out.read_text()
+
+
 def test_missing_cgal_is_a_usage_error(tmp_path):
     run = subprocess.run([sys.executable, SCRIPT, "--compatmesh", CLI, "--gen-pairs", GEN,
                           "--cgal", str(tmp_path / "none"), "--out", str(tmp_path / "x.md")],

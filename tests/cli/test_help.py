@@ -4,7 +4,7 @@ import re
 import pytest
 
 TRIANGULATE_OPTIONS = ["--out-dir", "--format", "--method", "--no-remesh", "--min-angle",
-                       "--max-steiner", "--k-split", "--area-every", "--smoothing",
+                       "--max-steiner", "--k-split", "--area-every", "--smoothing", "--remesher",
                        "--max-iterations", "--progress", "--quiet", "--help"]
 
 

@@ -93,6 +93,9 @@ CASES = {
     "unknown_smoothing": ({"a.xy": SQUARE_TEXT, "b.xy": KITE_TEXT},
                           ["a.xy", "b.xy", "--smoothing", "magic"],
                           r"triangulate: unknown --smoothing 'magic'"),
+    "unknown_remesher": ({"a.xy": SQUARE_TEXT, "b.xy": KITE_TEXT},
+                         ["a.xy", "b.xy", "--remesher", "magic"],
+                         r"triangulate: unknown --remesher 'magic' \(known: greedy, map\)"),
     "one_input": ({"a.xy": SQUARE_TEXT}, ["a.xy"], r"triangulate: needs at least two input polygons, got 1"),
     "no_input": ({}, [], r"triangulate: needs at least two input polygons, got 0"),
 }

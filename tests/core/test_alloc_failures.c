@@ -7,9 +7,9 @@
  * GMP's allocations go through the core's functions (base/gmp_memory.h)
  * and are counted too; UMFPACK's are its own and are not. Run for every
  * allocation of a triangulation with remeshing, a convex morph and a
- * sweep, of the overlay construction (exact rational arithmetic in GMP
- * throughout), and of the construction for polygons with holes whose
- * bridges need Steiner bends. */
+ * sweep, the same with the map-aware remesher, of the overlay construction
+ * (exact rational arithmetic in GMP throughout), and of the construction
+ * for polygons with holes whose bridges need Steiner bends. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -39,6 +39,7 @@ void *__wrap_calloc(size_t count, size_t size) { return should_fail() ? NULL : _
 void *__wrap_realloc(void *p, size_t size) { return should_fail() ? NULL : __real_realloc(p, size); }
 
 #define N 12
+static cm_remesher remesher = CM_REMESHER_GREEDY; /* of run() */
 
 /* One run: triangulate, morph, sweep. Returns the first failing status
  * (CM_OK when everything succeeded); checks every intermediate claim. */
@@ -46,7 +47,10 @@ static cm_status run(const double *const *polygons, char *where, size_t size)
 {
     cm_result *r = NULL;
     size_t counts[2] = {N, N};
-    cm_status s = cm_triangulate_polygons(polygons, counts, 2, NULL, &r);
+    cm_options o;
+    cm_options_init(&o);
+    o.remesher = remesher;
+    cm_status s = cm_triangulate_polygons(polygons, counts, 2, &o, &r);
     /* No handle at all: the one failure that cannot carry a message. */
     snprintf(where, size, "triangulate: %s", r ? cm_result_message(r) : "out of memory (no handle)");
     char why[256] = "";
@@ -172,6 +176,27 @@ static void test_gmp(const double *const *polygons)
     CHECK_MSG(inside_gmp > 0, "some failures hit GMP's allocations");
 }
 
+/* The same with the map-aware remesher. */
+static void test_map_remesher(const double *const *polygons)
+{
+    char where[512];
+    remesher = CM_REMESHER_MAP;
+    calls = 0, fail_at = -1;
+    CHECK_MSG(run(polygons, where, sizeof where) == CM_OK, "map remesher, the run without failures: %s", where);
+    long total = calls, reported = 0;
+    for (long i = 1; i <= total; i++) {
+        calls = 0, fail_at = i;
+        cm_status s = run(polygons, where, sizeof where);
+        if (s == CM_OK) continue;
+        reported++;
+        CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
+                  "map remesher: allocation %ld of %ld failed: status %s, %s", i, total, cm_status_string(s), where);
+    }
+    printf("map remesher: %ld allocations, each failed once: %ld reported out of memory\n", total, reported);
+    CHECK(reported > 0);
+    remesher = CM_REMESHER_GREEDY;
+}
+
 int main(void)
 {
     double a[2 * N], b[2 * N];
@@ -197,6 +222,7 @@ int main(void)
            reported, absorbed);
     CHECK(total > 100 && reported > 0);
     test_gmp(polygons);
+    test_map_remesher(polygons);
     test_holes();
     return check_summary("test_alloc_failures");
 }

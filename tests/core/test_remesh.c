@@ -18,11 +18,15 @@
 #include "remesh/collapse.h"
 #include "remesh/criteria.h"
 #include "remesh/flip.h"
+#include "remesh/mapopt.h"
+#include "remesh/maprefine.h"
 #include "remesh/refine.h"
 #include "remesh/remesh.h"
 #include "remesh/smooth.h"
 
 #define DEG (180.0 / CM_PI)
+/* Degrees an affine image may cost against the polygon alone. */
+#define CM_TEST_AFFINE_MARGIN 4.0
 
 /* ---- helpers ------------------------------------------------------------ */
 
@@ -106,6 +110,16 @@ static void random_pair(int seed, int n, double *a, double *b)
 
 /* ---- the property test ------------------------------------------------------ */
 
+/* Map-aware energies: the map term alone, the shape term alone, both. */
+static cm_mapopt_weights map_weights(rp_rng *rng)
+{
+    switch (rp_below(rng, 3)) {
+    case 0: return (cm_mapopt_weights){1.0, 0.0, 1.0};
+    case 1: return (cm_mapopt_weights){0.0, 1.0, 4.0};
+    default: return (cm_mapopt_weights){1.0, 0.1, 1.0};
+    }
+}
+
 /* One random operation; returns 0, -1 out of memory. */
 static int random_operation(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *work)
 {
@@ -113,7 +127,7 @@ static int random_operation(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *w
     int32_t v = (int32_t)rp_below(rng, (uint64_t)km->nv);
     size_t g = (size_t)rp_below(rng, km->k);
     if (km->tri[c] < 0) return 0;
-    switch (rp_below(rng, 9)) {
+    switch (rp_below(rng, 13)) {
     case 0: cm_flip_try(km, c); return 0;
     case 1: cm_flip_if_valid(km, c); return 0;
     case 2: return cm_smooth_vertex(km, g, v, (cm_smoothing)rp_below(rng, 4), (int)rp_below(rng, 2), star) < 0 ? -1 : 0;
@@ -122,6 +136,10 @@ static int random_operation(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *w
     case 5: return cm_refine_step(km, 1 + (long)rp_below(rng, 4), work) < 0 ? -1 : 0;
     case 6: return cm_collapse_try(km, c, star) < 0 ? -1 : 0;
     case 7: return cm_collapse_pass(km, rp_below(rng, 2) ? 0.0 : CM_PI, 2, work) < 0 ? -1 : 0;
+    case 8: return cm_mapopt_local(km, map_weights(rng), 1) < 0 ? -1 : 0;
+    case 9: return km->vc[v] >= 0 && cm_mapopt_vertex(km, map_weights(rng), v, 2, star) < 0 ? -1 : 0;
+    case 10: return cm_flip_queue_all(km, work) || cm_mid_flip_queue(km, work) < 0 ? -1 : 0;
+    case 11: return cm_mid_insert(km, c / 3) == -1 ? -1 : 0;
     default: return cm_kmesh_star(km, km->vc[v] >= 0 ? v : 0, star) == -1 ? -1 : 0;
     }
 }
@@ -176,6 +194,58 @@ static void test_property_operations(int pairs, int operations)
     CHECK_MSG(stale == 0, "%d stale key checks", stale);
     CHECK_MSG(restore == 0, "%d rollbacks did not restore", restore);
     printf("property: %d random meshes x %d operations\n", pairs, operations);
+}
+
+/* The global map descent and the middle-metric refinement (not inside a
+ * transaction, so outside the random operations): on random pairs
+ * refined a little, every accepted state is valid in every geometry, the
+ * boundary stays bit-identical, the keys stay fresh, the energy does not
+ * rise and the refinement never lowers the smallest angle. */
+static void test_map_descent(int pairs)
+{
+    int invalid = 0, moved = 0, stale = 0, rose = 0, stepped = 0, built = 0, dropped = 0;
+    for (int seed = 0; seed < pairs; seed++) {
+        int n = 8 + seed % 30;
+        double *a = polygon((size_t)n), *b = polygon((size_t)n);
+        random_pair(seed, n, a, b);
+        const double *in[2] = {a, b};
+        cm_mesh m = {0};
+        cm_kmesh km;
+        if (construct(in, 2, (size_t)n, &m) || cm_kmesh_build(&km, &m, (size_t)n) != CM_OK) {
+            cm_mesh_clear(&m), free(a), free(b);
+            continue;
+        }
+        built++;
+        cm_kmesh_set_caps(&km, 25 / DEG, NULL, NULL);
+        cm_work work = {0};
+        for (int i = 0; i < 3; i++) CHECK(cm_refine_step(&km, 4, &work) >= 0);
+        cm_work_free(&work);
+        cm_mapopt_weights w = {1.0, seed % 2 ? 0.1 : 1.0, seed % 3 ? 1.0 : 4.0};
+        double before = cm_mapopt_energy(&km, w);
+        long steps = cm_mapopt_run(&km, w, 30);
+        CHECK(steps >= 0);
+        stepped += steps > 0;
+        rose += cm_mapopt_energy(&km, w) > before * (1 + 1e-12);
+        invalid += !cm_kmesh_check(&km);
+        moved += !boundary_intact(&km, in);
+        stale += !keys_fresh(&km);
+        /* the middle-metric refinement: its own transactions */
+        double lo = cm_kmesh_min_angle(&km);
+        CHECK(cm_mid_refine(&km, 1.0, km.live_v - km.n + 20, w) >= 0);
+        invalid += !cm_kmesh_check(&km);
+        moved += !boundary_intact(&km, in);
+        stale += !keys_fresh(&km);
+        dropped += cm_kmesh_min_angle(&km) < lo;
+        cm_kmesh_free(&km), cm_mesh_clear(&m);
+        free(a), free(b);
+    }
+    CHECK_MSG(built == pairs, "%d of %d constructions", built, pairs);
+    CHECK_MSG(invalid == 0 && moved == 0 && stale == 0, "map descent: %d invalid, %d moved boundaries, %d stale",
+              invalid, moved, stale);
+    CHECK_MSG(rose == 0, "map descent: the energy rose on %d meshes", rose);
+    CHECK_MSG(dropped == 0, "middle refinement: the smallest angle dropped on %d meshes", dropped);
+    CHECK_MSG(stepped * 2 >= pairs, "map descent: steps on only %d of %d meshes", stepped, pairs);
+    printf("map descent: %d random meshes, %d took steps\n", pairs, stepped);
 }
 
 /* ---- smoothing and area equalisation ----------------------------------------- */
@@ -426,6 +496,55 @@ static void test_algorithm1_fixtures(void)
     free(f.xy[0]), free(f.xy[1]);
 }
 
+/* Smallest angle over both geometries of the remeshed pair (a, b), -1
+ * on failure; the result checked against the output contract. */
+static double pair_min_angle(const double *a, const double *b, size_t n, cm_remesher remesher)
+{
+    const double *in[2] = {a, b};
+    cm_options o;
+    cm_options_init(&o);
+    o.remesher = remesher;
+    o.min_angle_deg = 32; /* above what either reaches: no early stop */
+    cm_result *r = NULL;
+    double lo = -1;
+    if (cm_triangulate_polygons(in, (size_t[]){n, n}, 2, &o, &r) == CM_OK && rc_valid(r, in, 2, n)) {
+        cm_quality q[2];
+        cm_result_quality(r, 0, &q[0]), cm_result_quality(r, 1, &q[1]);
+        lo = fmin(q[0].min_angle_deg, q[1].min_angle_deg);
+    }
+    cm_result_free(r);
+    return lo;
+}
+
+/* The map-aware remesher on a polygon against a mild affine image of it
+ * (singular values 1.10 and 0.95): the map between them can be that
+ * affine map, which stretches an equilateral triangle of the metric
+ * halfway between them by sqrt(1.10 / 0.95) = 1.08 each way, turning 60
+ * degrees into 56; so the pair should come within a few degrees of the
+ * polygon alone (paired with itself). */
+static void test_map_affine_fixture(void)
+{
+    size_t n = 40;
+    double *u = polygon(n), *s = polygon(n), *image = polygon(n);
+    fill_us(u, s);
+    const double *shapes[2] = {u, s};
+    const char *names[2] = {"U glyph", "S glyph"};
+    for (int i = 0; i < 2; i++) {
+        for (size_t j = 0; j < n; j++)
+            image[2 * j] = 1.1 * shapes[i][2 * j] + 0.05 * shapes[i][2 * j + 1] - 2,
+            image[2 * j + 1] = 0.95 * shapes[i][2 * j + 1] + 1;
+        double alone = pair_min_angle(shapes[i], shapes[i], n, CM_REMESHER_MAP);
+        double pair = pair_min_angle(shapes[i], image, n, CM_REMESHER_MAP);
+        double greedy = pair_min_angle(shapes[i], image, n, CM_REMESHER_GREEDY);
+        CHECK_MSG(alone >= 0 && pair >= 0 && greedy >= 0, "%s: remeshing failed", names[i]);
+        CHECK_MSG(pair >= alone - CM_TEST_AFFINE_MARGIN, "%s vs its affine image: %.2f, alone %.2f", names[i], pair,
+                  alone);
+        printf("map remesher, %s: alone %.2f, vs its affine image %.2f (greedy %.2f)\n", names[i], alone, pair,
+               greedy);
+    }
+    free(u), free(s), free(image);
+}
+
 /* ---- options and the result ------------------------------------------------------ */
 
 static void test_options(void)
@@ -525,10 +644,12 @@ static void test_cancel_and_clockwise(void)
 int main(void)
 {
     test_property_operations(60, 400);
+    test_map_descent(30);
     test_smoothing_variants();
     test_area_equalisation();
     test_refine_keeps_boundary();
     test_algorithm1_fixtures();
+    test_map_affine_fixture();
     test_options();
     test_cancel_and_clockwise();
     return check_summary("test_remesh");

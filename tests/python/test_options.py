@@ -40,6 +40,15 @@ def test_max_steiner_zero_adds_no_vertices(octagon, star):
     assert s["steiner"] <= s["steiner_before_remesh"]
 
 
+@pytest.mark.parametrize("remesher", ["greedy", "map"])
+def test_remesher_by_name_and_enum(octagon, star, remesher):
+    by_name = compatmesh.triangulate([octagon, star], remesher=remesher)
+    by_enum = compatmesh.triangulate([octagon, star], remesher=getattr(compatmesh.Remesher, remesher.upper()))
+    assert np.array_equal(by_name.faces, by_enum.faces)
+    with pytest.raises(ValueError, match="unknown remesher 'lazy'"):
+        compatmesh.triangulate([octagon, star], remesher="lazy")
+
+
 @pytest.mark.parametrize("smoothing", ["laplacian", "angle", "weighted", "combined"])
 def test_smoothing_by_name_and_enum(octagon, star, smoothing):
     by_name = compatmesh.triangulate([octagon, star], smoothing=smoothing)
@@ -50,7 +59,8 @@ def test_smoothing_by_name_and_enum(octagon, star, smoothing):
 def test_numeric_options_reach_the_core(octagon, star):
     compatmesh.triangulate([octagon, star], min_angle_deg=20, k_split=1, area_every=2, max_iterations=5)
     for name, value in [("min_angle_deg", 70), ("k_split", -1), ("max_steiner", -5), ("area_every", -1),
-                        ("max_iterations", -1), ("smoothing", 9), ("method", 99)]:
+                        ("max_iterations", -1), ("smoothing", 9), ("method", 99),
+                        ("remesher", 7)]:
         with pytest.raises(ValueError, match=name) as info:
             compatmesh.triangulate([octagon, star], **{name: value})
         assert info.value.status == "invalid argument"

@@ -106,6 +106,20 @@ typedef enum cm_smoothing {
     CM_SMOOTH_COMBINED       /* weighted angle-based; Laplacian where it fails */
 } cm_smoothing;
 
+/* How the remesher improves the first compatible triangulation. */
+typedef enum cm_remesher {
+    /* Algorithm 1: flips, smoothing and splits, each kept where the
+     * smallest angle around it rose, then forced moves out of local
+     * optima. The default. */
+    CM_REMESHER_GREEDY = 0,
+    /* Map-aware: the Steiner vertices of every geometry first move to
+     * lower the conformal distortion of the maps between the geometries;
+     * vertices are inserted where a triangle is poor in the metric halfway
+     * between them (at the same barycentric coordinates in every geometry,
+     * so the maps keep), then Algorithm 1 finishes. */
+    CM_REMESHER_MAP
+} cm_remesher;
+
 /* Which vertices correspond. */
 typedef enum cm_correspondence {
     /* Vertex i of every polygon corresponds to vertex i; the counts must
@@ -195,6 +209,8 @@ typedef struct cm_options {
      * the input can have, report them, and let the remesher aim at no more
      * than the ceiling; 0: skip it (a few milliseconds at n = 160). */
     int ceiling;
+
+    cm_remesher remesher; /* default CM_REMESHER_GREEDY */
 } cm_options;
 
 /* Fills *options with the defaults. Always call it first, then change the

@@ -32,6 +32,7 @@ void cm_options_init(cm_options *options)
     options->smoothing = CM_SMOOTH_COMBINED;
     options->max_iterations = 0;
     options->ceiling = 1;
+    options->remesher = CM_REMESHER_GREEDY;
 }
 
 /* The remeshing options; a message on r when one is out of range. */
@@ -47,6 +48,8 @@ static cm_status check_remesh_options(cm_result *r, const cm_options *o)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "area_every must be >= 0, got %d", o->area_every);
     if (o->max_iterations < 0)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "max_iterations must be >= 0, got %d", o->max_iterations);
+    if ((unsigned)o->remesher > (unsigned)CM_REMESHER_MAP)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown remesher %d", (int)o->remesher);
     if ((unsigned)o->smoothing > (unsigned)CM_SMOOTH_COMBINED)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown smoothing %d", (int)o->smoothing);
     return CM_OK;

@@ -499,6 +499,41 @@ int32_t cm_kmesh_split(cm_kmesh *km, int32_t c, const double *pts)
     return m;
 }
 
+int32_t cm_kmesh_insert(cm_kmesh *km, int32_t t, const double *pts)
+{
+    int32_t m = new_vertex(km);
+    if (m < 0) return -1;
+    int32_t ta = new_triangle(km);
+    if (ta < 0) {
+        push_free_vertex(km, m);
+        return -1;
+    }
+    int32_t tb = new_triangle(km);
+    if (tb < 0) {
+        push_free_vertex(km, m), push_free_triangle(km, ta);
+        return -1;
+    }
+    for (size_t g = 0; g < km->k; g++) set_position(km, g, m, pts + 2 * g);
+    int32_t c = 3 * t, v0 = km->tri[c], v1 = km->tri[c + 1], v2 = km->tri[c + 2];
+    int32_t o1 = km->opp[c + 1];
+    int32_t a0 = 3 * ta, b0 = 3 * tb;
+    /* (v0 v1 v2) -> (m v1 v2) (v0 m v2) (v0 v1 m): corner i of each new
+     * triangle keeps the edge opposite v_i in the old one. */
+    set_corner(km, c, m);
+    set_corner(km, a0, v0), set_corner(km, a0 + 1, m), set_corner(km, a0 + 2, v2);
+    set_corner(km, b0, v0), set_corner(km, b0 + 1, v1), set_corner(km, b0 + 2, m);
+    link_corners(km, a0 + 1, o1);
+    link_corners(km, b0 + 2, km->opp[c + 2]);
+    link_corners(km, c + 1, a0);       /* edge m v2 */
+    link_corners(km, c + 2, b0);       /* edge v1 m */
+    link_corners(km, a0 + 2, b0 + 1); /* edge v0 m */
+    set_vertex_corner(km, m, c), set_vertex_corner(km, v0, a0);
+    set_vertex_corner(km, v1, c + 1), set_vertex_corner(km, v2, c + 2);
+    km->live_v++, km->live_t += 2;
+    cm_kmesh_touch(km, t), cm_kmesh_touch(km, ta), cm_kmesh_touch(km, tb);
+    return m;
+}
+
 uint32_t cm_kmesh_new_stamp(cm_kmesh *km)
 {
     if (++km->stamp == 0) { /* wrapped: clear the old stamps */

@@ -93,6 +93,10 @@ void cm_kmesh_flip(cm_kmesh *km, int32_t c);
  * doubles, one point per geometry). Returns the new vertex, -1 out of
  * memory. The new vertex's corners: cm_prev(c) is one of them. */
 int32_t cm_kmesh_split(cm_kmesh *km, int32_t c, const double *pts);
+/* Inserts a vertex inside triangle t at the points pts (2k doubles, one
+ * per geometry): t becomes three triangles around it. Returns the new
+ * vertex, -1 out of memory. */
+int32_t cm_kmesh_insert(cm_kmesh *km, int32_t t, const double *pts);
 /* 1 if removing interior vertex tri[c] by moving it onto u = tri[next(c)]
  * keeps the mesh a manifold disk (the link condition). */
 int cm_kmesh_collapse_ok_topology(cm_kmesh *km, int32_t c, const cm_ibuf *star);

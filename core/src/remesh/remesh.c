@@ -28,7 +28,15 @@
  * removal of a Steiner vertex, a split, each followed by the repair) and
  * are kept only when the triangles they changed end up better. What is
  * left after that is beyond local repair (typically a correspondence that
- * forces a strong distortion: bench/correspondence_bound.py measures it). */
+ * forces a strong distortion: bench/correspondence_bound.py measures it).
+ *
+ * The map-aware remesher (CM_REMESHER_MAP) runs a start before the
+ * refinement: the Steiner vertices of every geometry move to lower the
+ * conformal distortion of the maps between the geometries (mapopt), and
+ * vertices go where a triangle is poor in the metric halfway between them
+ * (maprefine), each insertion kept only where no angle dropped; its forced
+ * moves also try an insertion at the middle circumcentre of a short
+ * triangle. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -37,6 +45,8 @@
 #include "remesh/collapse.h"
 #include "remesh/criteria.h"
 #include "remesh/flip.h"
+#include "remesh/mapopt.h"
+#include "remesh/maprefine.h"
 #include "remesh/refine.h"
 #include "remesh/smooth.h"
 #include "base/clock.h"
@@ -72,6 +82,7 @@ typedef struct remesher {
     cm_progress *progress;
     double target; /* radians */
     long flips;
+    long spent;    /* Steiner vertices added before refine() */
 } remesher;
 
 /* ---- edges not to split again --------------------------------------------- */
@@ -346,7 +357,7 @@ static long split_round(remesher *x, long ks, int32_t *cand, long want, long *tr
 static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
 {
     cm_kmesh *km = &x->km;
-    long budget = budget_of(x->o, n), added = 0, attempts = 0, since_best = 0;
+    long budget = budget_of(x->o, n) - x->spent, added = 0, attempts = 0, since_best = 0;
     double best = cm_kmesh_min_angle(km);
     int32_t *cand = NULL;
     while (cm_kmesh_min_slack(km) < 0 && added < budget && since_best < stall_limit(x) &&
@@ -383,16 +394,19 @@ oom:
 
 /* ---- stepping out of local optima ------------------------------------------ */
 
-enum forced_move { FORCED_FLIP, FORCED_COLLAPSE, FORCED_SPLIT, FORCED_MOVES };
+enum forced_move { FORCED_FLIP, FORCED_COLLAPSE, FORCED_SPLIT, FORCED_INSERT, FORCED_MOVES };
 
-/* A move the greedy rules refuse, on the edge opposite c (flip, split) or
- * on its corner vertex (collapse onto the next), then the repair, as one
+/* A move the greedy rules refuse, on the edge opposite c (flip, split),
+ * on its corner vertex (collapse onto the next) or in its triangle (the
+ * map-aware remesher: an insertion at the middle circumcentre), then the
+ * repair, as one
  * transaction kept only if the smallest angle of the triangles it
  * changed rose. Returns 1 kept, 0 undone or impossible, -1 out of memory. */
 static int try_forced(remesher *x, enum forced_move kind, int32_t c)
 {
     cm_kmesh *km = &x->km;
-    if (km->tri[c] < 0 || (kind != FORCED_COLLAPSE && km->opp[c] < 0)) return 0;
+    if (km->tri[c] < 0 || (kind != FORCED_COLLAPSE && kind != FORCED_INSERT && km->opp[c] < 0)) return 0;
+    if (kind == FORCED_INSERT && c % 3) return 0; /* once per triangle */
     if (kind == FORCED_COLLAPSE && cm_kmesh_is_boundary(km, km->tri[c])) return 0;
     int32_t around[5] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)],
                          km->opp[c] >= 0 ? km->tri[km->opp[c]] : -1, -1};
@@ -403,7 +417,7 @@ static int try_forced(remesher *x, enum forced_move kind, int32_t c)
     } else if (kind == FORCED_COLLAPSE) {
         done = cm_collapse_try(km, c, &x->star);
     } else {
-        int32_t m = cm_refine_split(km, c);
+        int32_t m = kind == FORCED_SPLIT ? cm_refine_split(km, c) : cm_mid_insert(km, c / 3);
         done = m >= 0 ? 1 : m == CM_SPLIT_NO_FIT ? 0 : -1;
         around[4] = m;
     }
@@ -447,7 +461,8 @@ static cm_status step_out(remesher *x, size_t n)
             if (!cm_kmesh_tri_live(km, worst[i])) continue;
             int m = corners_near(km, worst[i], near);
             for (int kind = 0; kind < FORCED_MOVES && !gained; kind++) {
-                if (kind == FORCED_SPLIT && km->live_v - km->n >= budget) continue;
+                if ((kind == FORCED_SPLIT || kind == FORCED_INSERT) && km->live_v - km->n >= budget) continue;
+                if (kind == FORCED_INSERT && x->o->remesher != CM_REMESHER_MAP) continue;
                 for (int j = 0; j < m && !gained; j++) {
                     int s = try_forced(x, (enum forced_move)kind, near[j]);
                     if (s < 0) return stop_status(x);
@@ -456,6 +471,47 @@ static cm_status step_out(remesher *x, size_t n)
             }
         }
         if (!gained) break;
+    }
+    return CM_OK;
+}
+
+/* ---- map-aware start ----------------------------------------------------------- */
+
+/* The map-aware remesher's energy (mapopt.h): the shape term keeps each
+ * geometry's triangles from degenerating while the map term leads (before
+ * refinement), then both count alike; the terms as they are (power 1).
+ * Global steps, then one-vertex sweeps. */
+#define CM_MAP_SHAPE_FIRST 0.1
+#define CM_MAP_SHAPE_AFTER 1.0
+#define CM_MAP_POWER 1.0
+#define CM_MAP_ITERATIONS 200
+#define CM_MAP_SWEEPS 20
+/* Middle-metric refinement aims at this share of each triangle's target;
+ * it runs in CM_MAP_CYCLES cycles, each ending with the descent on the
+ * finer mesh, with an equal share of the budget. */
+#define CM_MAP_SHARE 1.0
+#define CM_MAP_CYCLES 3
+/* The share of the Steiner budget the middle-metric refinement may
+ * spend; Algorithm 1 has the rest. */
+#define CM_MAP_BUDGET 0.5
+
+/* The map-aware start: the descent on the maps' distortion, then cycles
+ * of middle-metric refinement, each followed by the descent on the finer
+ * mesh. CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
+static cm_status map_start(remesher *x, size_t n, cm_remesh_report *rep)
+{
+    cm_mapopt_weights first = {1.0, CM_MAP_SHAPE_FIRST, CM_MAP_POWER}, after = {1.0, CM_MAP_SHAPE_AFTER, CM_MAP_POWER};
+    long budget = (long)(CM_MAP_BUDGET * (double)budget_of(x->o, n)), start = x->km.live_v - x->km.n;
+    if (cm_mapopt_run(&x->km, first, CM_MAP_ITERATIONS) < 0 || cm_mapopt_local(&x->km, first, CM_MAP_SWEEPS) < 0)
+        return stop_status(x);
+    for (int cycle = 1; cycle <= CM_MAP_CYCLES; cycle++) {
+        if (cm_progress_poll(x->progress, CM_STAGE_REMESH, 0.5 * cycle / CM_MAP_CYCLES)) return CM_ERR_CANCELLED;
+        long added = cm_mid_refine(&x->km, CM_MAP_SHARE, start + budget * cycle / CM_MAP_CYCLES, after);
+        if (added < 0 || cm_mapopt_run(&x->km, after, CM_MAP_ITERATIONS) < 0 ||
+            cm_mapopt_local(&x->km, after, CM_MAP_SWEEPS) < 0)
+            return stop_status(x);
+        rep->splits += added, x->spent += added;
+        if (added == 0) break;
     }
     return CM_OK;
 }
@@ -525,6 +581,10 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
     if (cm_progress_report(progress, CM_STAGE_REMESH, 0.0)) {
         s = CM_ERR_CANCELLED;
         goto stop;
+    }
+    if (o->remesher == CM_REMESHER_MAP) {
+        if ((s = map_start(&x, n, rep)) != CM_OK) goto stop;
+        if (improve_everywhere(&x)) goto oom;
     }
     if ((s = refine(&x, n, rep)) != CM_OK) goto stop;
     if (improve_everywhere(&x)) goto oom;
