@@ -47,6 +47,7 @@ struct cm_linkpart {
     unsigned char *how, *covered;
     long source; /* of the partition built last, -1 none */
     int max_level; /* pockets beyond this level were not processed */
+    int truncated; /* some were: vertices in them are undetermined */
     long *all;   /* 0..m-1: the root pocket's ids */
     cm_vsource root; /* the polygon's triangulation, re-rooted per source */
     int root_state;  /* 0 not built, 1 built, -1 failed */
@@ -451,11 +452,17 @@ static int run_levels(cm_linkpart *lp, long s, int max_level)
     for (long v = 0; v < lp->m; v++) lp->dist[v] = -1, lp->how[v] = HOW_NONE;
     lp->dist[s] = 0;
     if (add_pocket(lp, lp->all, lp->m, 1, -1, s) < 0) return -1;
-    for (long P = 0; P < lp->npk; P++)
-        if (lp->pk[P].level <= max_level && process_window(lp, P) < 0) {
+    lp->truncated = 0;
+    for (long P = 0; P < lp->npk; P++) {
+        if (lp->pk[P].level > max_level) {
+            lp->truncated = 1;
+            continue;
+        }
+        if (process_window(lp, P) < 0) {
             drop_pockets(lp);
             return -1;
         }
+    }
     lp->source = s, lp->max_level = max_level;
     return 0;
 }
@@ -464,12 +471,12 @@ int cm_link_distances_upto(cm_linkpart *lp, long s, int max_level, int *dist)
 {
     if (run_levels(lp, s, max_level) < 0) return -1;
     memcpy(dist, lp->dist, (size_t)lp->m * sizeof *dist);
-    return 0;
+    return lp->truncated;
 }
 
 int cm_link_distances(cm_linkpart *lp, long s, int *dist)
 {
-    return cm_link_distances_upto(lp, s, INT_MAX, dist);
+    return cm_link_distances_upto(lp, s, INT_MAX, dist) < 0 ? -1 : 0;
 }
 
 /* ---- minimum-link paths --------------------------------------------------- */

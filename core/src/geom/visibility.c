@@ -81,25 +81,51 @@ static void visible_from(const vis_ctx *c, long s, unsigned char *row)
     propagate(c, s, row, top);
 }
 
-int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned char *vis)
+struct cm_visrows {
+    vis_ctx c;
+    int32_t *nbr, *first;
+};
+
+void cm_visrows_free(cm_visrows *v)
+{
+    if (!v) return;
+    free(v->nbr), free(v->first), free(v->c.stack);
+    free(v);
+}
+
+cm_visrows *cm_visrows_create(const double *xy, long m, const int32_t *tri)
 {
     long nt = m - 2;
-    int32_t *nbr = malloc((size_t)(3 * nt) * sizeof *nbr);
-    int32_t *first = malloc((size_t)m * sizeof *first);
+    cm_visrows *v = calloc(1, sizeof *v);
+    if (!v) return NULL;
+    v->nbr = malloc((size_t)(3 * nt) * sizeof *v->nbr);
+    v->first = malloc((size_t)m * sizeof *v->first);
     crossing *stack = malloc((size_t)(nt + 1) * sizeof *stack);
-    int status = -1;
-    if (!nbr || !first || !stack || cm_tri_adjacency(tri, nt, nbr) != 0) goto done;
-    for (long v = 0; v < m; v++) first[v] = -1;
+    v->c = (vis_ctx){xy, m, tri, v->nbr, v->first, stack};
+    if (!v->nbr || !v->first || !stack || cm_tri_adjacency(tri, nt, v->nbr) != 0) {
+        cm_visrows_free(v);
+        return NULL;
+    }
+    for (long i = 0; i < m; i++) v->first[i] = -1;
     for (long t = 0; t < nt; t++)
         for (int i = 0; i < 3; i++)
-            if (tri[3 * t + (i + 1) % 3] == (tri[3 * t + i] + 1) % m) first[tri[3 * t + i]] = (int32_t)(3 * t + i);
-    vis_ctx c = {xy, m, tri, nbr, first, stack};
-    memset(vis, 0, (size_t)m * (size_t)m);
-    for (long s = 0; s < m; s++) visible_from(&c, s, vis + (size_t)s * (size_t)m);
-    status = 0;
-done:
-    free(nbr), free(first), free(stack);
-    return status;
+            if (tri[3 * t + (i + 1) % 3] == (tri[3 * t + i] + 1) % m) v->first[tri[3 * t + i]] = (int32_t)(3 * t + i);
+    return v;
+}
+
+void cm_visrows_row(cm_visrows *v, long s, unsigned char *row)
+{
+    memset(row, 0, (size_t)v->c.m);
+    visible_from(&v->c, s, row);
+}
+
+int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned char *vis)
+{
+    cm_visrows *v = cm_visrows_create(xy, m, tri);
+    if (!v) return -1;
+    for (long s = 0; s < m; s++) cm_visrows_row(v, s, vis + (size_t)s * (size_t)m);
+    cm_visrows_free(v);
+    return 0;
 }
 
 /* ---- the exact segment test ---------------------------------------------- */
