@@ -916,7 +916,11 @@ static int common_step(part *p, item *it, cm_status *s)
     } else if (m <= CM_DP_MAX_VERTICES || (double)m * (double)(chords + m) <= DP_WORK_LIMIT) {
         *s = plan_item(p, it, common);
     } else {
-        int g = greedy_split(p, it, common);
+        /* Too large for the program: one Steiner vertex when the item is
+         * star-shaped in every geometry (what the program's fan would
+         * give), else a balanced split. */
+        int g = fan_face(p, it);
+        if (g == 0) g = greedy_split(p, it, common);
         if (g < 0) *s = no_memory(p);
         done = g != 0;
     }

@@ -51,6 +51,8 @@ struct cm_linkpart {
     long *all;   /* 0..m-1: the root pocket's ids */
     cm_vsource root; /* the polygon's triangulation, re-rooted per source */
     int root_state;  /* 0 not built, 1 built, -1 failed */
+    cm_visrows *rows;   /* visibility from a vertex over that triangulation */
+    unsigned char *row; /* from the current source */
 };
 
 /* ---- set-up ------------------------------------------------------------- */
@@ -70,7 +72,8 @@ cm_linkpart *cm_linkpart_create(const double *xy, long m)
     lp->how = malloc(n);
     lp->covered = malloc(n + 1);
     lp->all = malloc(n * sizeof *lp->all);
-    int ok = lp->xy && lp->pool && lp->dist && lp->via && lp->cone_a && lp->cone_b && lp->how &&
+    lp->row = malloc(n);
+    int ok = lp->row && lp->xy && lp->pool && lp->dist && lp->via && lp->cone_a && lp->cone_b && lp->how &&
              lp->covered && lp->all;
     for (long i = 0; ok && i < m; i++) {
         lp->xy[2 * i] = xy[2 * i], lp->xy[2 * i + 1] = xy[2 * i + 1];
@@ -103,6 +106,8 @@ void cm_linkpart_free(cm_linkpart *lp)
     free(lp->pk), free(lp->support), free(lp->xy), free(lp->dist), free(lp->via);
     free(lp->cone_a), free(lp->cone_b), free(lp->how), free(lp->covered), free(lp->all);
     cm_vsource_clear(&lp->root);
+    cm_visrows_free(lp->rows);
+    free(lp->row);
     cm_xpool_free(lp->pool);
     free(lp);
 }
@@ -391,19 +396,36 @@ static int candidate(const pocket *p, long i)
     return p->source >= 0 ? i != p->source : i > 0 && i < p->k - 1;
 }
 
-/* The root pocket re-roots the cached triangulation of the polygon. */
+/* The root pocket re-roots the cached triangulation of the polygon, and
+ * takes the vertices its source sees from one pass of cone propagation
+ * over it (O(triangles seen), where a walk from every vertex to the
+ * source would cost O(m) each). */
 static int build_root(cm_linkpart *lp, pocket *p)
 {
     if (lp->root_state == 0) {
         int s = cm_vsource_build(&lp->root, lp->pool, lp->all, lp->m, p->source);
         lp->root_state = s == 0 ? 1 : -1;
         if (s < 0) return -1;
+        if (s == 0) {
+            lp->rows = cm_visrows_create(lp->xy, lp->m, lp->root.tri);
+            if (!lp->rows) return -1;
+        }
     } else if (lp->root_state > 0 && cm_vsource_reroot(&lp->root, p->source) != 0) {
         return -1;
     }
     if (lp->root_state < 0) return 1;
+    cm_visrows_row(lp->rows, p->source, lp->row);
     p->vs = lp->root, p->shared = 1;
     return 0;
+}
+
+/* Local vertex i of pocket P sees its source: the cone of sight lines. */
+static int vertex_cone(cm_linkpart *lp, pocket *p, long i, long *a, long *b)
+{
+    if (p->source < 0) return cm_vsource_vertex_cone(&p->vs, i, a, b);
+    if (!lp->row[i]) return 0; /* the root: local i is vertex i */
+    *a = *b = p->source;
+    return 1;
 }
 
 static int process_window(cm_linkpart *lp, long P)
@@ -422,7 +444,7 @@ static int process_window(cm_linkpart *lp, long P)
         p = &lp->pk[P];
         long v = p->ids[i], a, b;
         if (!candidate(p, i) || v >= lp->m || lp->dist[v] >= 0) continue;
-        if (!cm_vsource_vertex_cone(&p->vs, i, &a, &b)) continue;
+        if (!vertex_cone(lp, p, i, &a, &b)) continue;
         reach_vertex(lp, v, p->level, P, HOW_CONE, a, b);
         if (open_windows(lp, P, i, a, b) < 0) return -1;
     }
