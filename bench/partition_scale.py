@@ -87,7 +87,14 @@ def main():
     eo, en = exponents(rows, "old"), exponents(rows, "new")
     print()
     for fam in eo:
-        print(f"- {fam}: CPU time grows as n^{eo[fam]:.2f} (old), n^{en.get(fam, float('nan')):.2f} (new)")
+        steps = []
+        sized = sorted((r for r in rows if family(r["name"]) == fam), key=lambda r: r["n"])
+        for x, y in zip(sized, sized[1:]):
+            e = [math.log(max(y[w]["cpu"], 1e-3) / max(x[w]["cpu"], 1e-3)) / math.log(y["n"] / x["n"])
+                 for w in ("old", "new")]
+            steps.append(f"{x['n']} to {y['n']}: n^{e[0]:.2f} / n^{e[1]:.2f}")
+        print(f"- {fam}: CPU time grows as n^{eo[fam]:.2f} (old), n^{en.get(fam, float('nan')):.2f} (new) "
+              f"over all sizes; old / new by step: {'; '.join(steps)}")
 
 
 if __name__ == "__main__":

@@ -206,7 +206,7 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
     for (size_t g = 0; g < k; g++) {
         const int32_t *t = tris ? tris[g] : tri + 3 * (size_t)m * g;
         if (!tris) {
-            status = cm_polygon_triangulate(xy[g], idx, m, tri + 3 * (size_t)m * g, NULL);
+            status = cm_polygon_ear_clip(xy[g], idx, m, tri + 3 * (size_t)m * g);
             if (status != 0) goto done;
             status = -1;
         }

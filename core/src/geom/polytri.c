@@ -247,6 +247,11 @@ done:
     return status;
 }
 
+int cm_polygon_ear_clip(const double *xy, const int32_t *idx, long m, int32_t *tri_out)
+{
+    return clip_ears(xy, idx, m, tri_out, NULL);
+}
+
 int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t *tri_out,
                            cm_progress *progress)
 {
