@@ -408,7 +408,11 @@ static int build_root(cm_linkpart *lp, pocket *p)
         if (s < 0) return -1;
         if (s == 0) {
             lp->rows = cm_visrows_create(lp->xy, lp->m, lp->root.tri);
-            if (!lp->rows) return -1;
+            if (!lp->rows) {
+                cm_vsource_clear(&lp->root);
+                lp->root_state = 0;
+                return -1;
+            }
         }
     } else if (lp->root_state > 0 && cm_vsource_reroot(&lp->root, p->source) != 0) {
         return -1;
