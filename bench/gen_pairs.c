@@ -1,6 +1,6 @@
 /* cm_gen_pairs: writes the demo and benchmark polygon pairs as .xy files.
  *
- *   cm_gen_pairs --out DIR [--set demo|bench|hard] [--font PATH]
+ *   cm_gen_pairs --out DIR [--set demo|bench|hard|scale] [--font PATH]
  *
  * Each polygon goes to DIR/NAME_a.xy, DIR/NAME_b.xy (and NAME_c.xy for a
  * triple), one "x y" line per vertex, counter-clockwise, vertices in
@@ -19,6 +19,9 @@
  * n = 48 and 160, letters drawn with a fixed seed. Its names say the half:
  * tune_* (two fonts, for tuning) and hold_* (the other fonts and random
  * simple polygons against discs and stars, held out).
+ * The scale set measures the partition's growth: two unrelated random
+ * polygons and two random stars at n = 1,000, 3,000 and 10,000, and two
+ * glyph pairs at n = 160.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -422,6 +425,39 @@ static void bench_set(writer *w)
     }
 }
 
+/* ---- the scale set -------------------------------------------------------- */
+
+/* Two unrelated random simple polygons. */
+static void random_random_pair(writer *w, const char *name, int n, uint64_t seed)
+{
+    polys p;
+    if (polys_alloc(&p, n) == 0 && rp_random_simple(p.xy[0], n, 2 * seed) == 0 &&
+        rp_random_simple(p.xy[1], n, 2 * seed + 1) == 0)
+        emit(w, name, p.xy, 2, n);
+    else
+        report_failure(w, name, "random simple polygon generator failed");
+    polys_free(&p);
+}
+
+/* The partition's growth with n: unrelated random polygons and stars up to
+ * 10,000 vertices, and glyph pairs at n = 160. */
+static void scale_set(writer *w)
+{
+    static const int random_n[] = {1000, 3000, 10000};
+    static const int star_n[] = {1000, 3000, 10000};
+    char name[64];
+    for (int i = 0; i < COUNT(random_n); i++) {
+        snprintf(name, sizeof name, "random_pair_n%d", random_n[i]);
+        random_random_pair(w, name, random_n[i], 5000 + (uint64_t)random_n[i]);
+    }
+    for (int i = 0; i < COUNT(star_n); i++) {
+        snprintf(name, sizeof name, "star_n%d", star_n[i]);
+        star_pair(w, name, star_n[i], (uint64_t)star_n[i]);
+    }
+    glyph_pair(w, "US", 160);
+    glyph_pair(w, "CG", 160);
+}
+
 /* ---- the hard set -------------------------------------------------------- */
 
 #define HARD_FONT_DIR "/usr/share/fonts/"
@@ -549,7 +585,7 @@ static void hard_set(writer *w)
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: cm_gen_pairs --out DIR [--set demo|bench|hard] [--font PATH]\n");
+    fprintf(stderr, "usage: cm_gen_pairs --out DIR [--set demo|bench|hard|scale] [--font PATH]\n");
     return 2;
 }
 
@@ -589,8 +625,8 @@ int main(int argc, char **argv)
         else
             return usage();
     }
-    int demo = strcmp(set, "demo") == 0, hard = strcmp(set, "hard") == 0;
-    if (!out || (!demo && !hard && strcmp(set, "bench") != 0))
+    int demo = strcmp(set, "demo") == 0, hard = strcmp(set, "hard") == 0, scale = strcmp(set, "scale") == 0;
+    if (!out || (!demo && !hard && !scale && strcmp(set, "bench") != 0))
         return usage();
 
     FT_Library lib;
@@ -609,6 +645,8 @@ int main(int argc, char **argv)
         demo_set(&w);
     else if (hard)
         hard_set(&w);
+    else if (scale)
+        scale_set(&w);
     else
         bench_set(&w);
     int closed = fclose(w.list);

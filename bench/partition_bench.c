@@ -238,10 +238,14 @@ static int steinerfree_possible(const pair *p)
         for (size_t i = 0; i < n * n; i++) common[i] &= vis[i];
     }
     cm_sf_plan plan;
-    if (cm_steinerfree_plan(p->n, common, (const double *const *)p->xy, (size_t)p->k, NULL, 0, &plan) == 0) {
+    cm_diagset set;
+    if (cm_diagset_from_matrix(&set, p->n, common) != 0) goto done;
+    cm_diagview view = {&set, NULL};
+    if (cm_steinerfree_plan(p->n, &view, (const double *const *)p->xy, (size_t)p->k, NULL, 0, &plan) == 0) {
         result = plan.cost == 0;
         cm_sf_plan_clear(&plan);
     }
+    cm_diagset_clear(&set);
 done:
     free(common), free(vis), free(tri), free(idx);
     return result;

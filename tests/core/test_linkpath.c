@@ -6,6 +6,7 @@
  * brute-force segment test), symmetry, a returned path with exactly that
  * many links lying strictly inside, and no overestimate (a breadth-first
  * search through sampled interior points can only find longer paths). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -132,7 +133,101 @@ static void check_table(const double *xy, int n, const char *what)
             bad += brute != vis[u * n + v];
         }
     CHECK_MSG(bad == 0, "%s: %d visibility mismatches", what, bad);
+    /* one row at a time, in reverse order, gives the same rows */
+    cm_visrows *rows = cm_visrows_create(xy, n, tri);
+    unsigned char *row = malloc((size_t)n);
+    CHECK(rows && row);
+    for (int u = n - 1; rows && row && u >= 0; u--) {
+        cm_visrows_row(rows, u, row);
+        CHECK_MSG(memcmp(row, vis + (size_t)u * (size_t)n, (size_t)n) == 0, "%s: row %d differs", what, u);
+    }
+    cm_visrows_free(rows);
+    free(row);
     free(tri), free(idx), free(vis);
+}
+
+/* ---- triangulation by ear clipping ---------------------------------------- */
+
+/* tri (local indices, m - 2 triangles) triangulates the polygon ids[0..m-1]
+ * of the pool: every triangle counter-clockwise, every polygon edge in one
+ * triangle and every other edge in two, the areas adding up to the
+ * polygon's; with input points only, the other edges are diagonals by the
+ * brute-force segment test and pairwise do not cross. */
+static int triangulates(cm_xpool *pool, const long *ids, int m, const int32_t *tri, const double *xy)
+{
+    int ok = 1;
+    double area = 0.0, sum = 0.0;
+    for (int i = 0; i < m; i++) {
+        const double *p = cm_xpool_xy(pool, ids[i]), *q = cm_xpool_xy(pool, ids[(i + 1) % m]);
+        area += p[0] * q[1] - q[0] * p[1];
+    }
+    int *uses = calloc((size_t)m * (size_t)m, sizeof *uses);
+    for (int t = 0; ok && t < m - 2; t++) {
+        const int32_t *c = tri + 3 * t;
+        ok = cm_xorient(pool, ids[c[0]], ids[c[1]], ids[c[2]]) > 0;
+        for (int e = 0; e < 3; e++) {
+            int a = c[e], b = c[(e + 1) % 3];
+            uses[(a < b ? a : b) * m + (a < b ? b : a)]++;
+            const double *p = cm_xpool_xy(pool, ids[a]), *q = cm_xpool_xy(pool, ids[b]);
+            sum += p[0] * q[1] - q[0] * p[1];
+        }
+    }
+    for (int a = 0; ok && a < m; a++)
+        for (int b = a + 1; ok && b < m; b++) {
+            int u = uses[a * m + b], edge = b == a + 1 || (a == 0 && b == m - 1);
+            ok = edge ? u == 1 : u == 0 || u == 2;
+            if (ok && !edge && u == 2 && xy) ok = cm_segment_inside(xy, m, a, xy + 2 * a, b, xy + 2 * b);
+            for (int c = 0; ok && xy && !edge && u == 2 && c < m; c++)
+                for (int d = c + 1; ok && d < m; d++)
+                    if (uses[c * m + d] == 2 && c != a && c != b && d != a && d != b)
+                        ok = cm_segments_intersect(xy + 2 * a, xy + 2 * b, xy + 2 * c, xy + 2 * d) == 0;
+        }
+    free(uses);
+    return ok && fabs(sum - area) <= 1e-9 * fabs(area);
+}
+
+static void check_ear_clipping(const double *xy, int m, const char *what)
+{
+    int32_t *tri = malloc(sizeof(int32_t) * 3 * (size_t)m), *idx = malloc(sizeof(int32_t) * (size_t)m);
+    long *ids = malloc(sizeof(long) * (size_t)(m + 1));
+    cm_xpool *pool = cm_xpool_create();
+    for (int i = 0; i < m; i++) idx[i] = i, ids[i] = cm_xpool_add(pool, xy[2 * i], xy[2 * i + 1]);
+    /* the double-coordinate triangulation (ear clipping and flips) */
+    CHECK(cm_polygon_triangulate(xy, idx, m, tri, NULL) == 0);
+    CHECK_MSG(triangulates(pool, ids, m, tri, xy), "%s: cm_polygon_triangulate", what);
+    /* over the pool */
+    CHECK(cm_xtriangulate(pool, ids, m, tri) == 0);
+    CHECK_MSG(triangulates(pool, ids, m, tri, xy), "%s: cm_xtriangulate", what);
+    /* with a constructed point inserted on the edge 0 -> 1 (a flat vertex
+     * with approximate coordinates: tested as a blocker every time) */
+    const double *p0 = xy, *p1 = xy + 2;
+    double mx = 0.5 * (p0[0] + p1[0]), my = 0.5 * (p0[1] + p1[1]), dx = p1[0] - p0[0], dy = p1[1] - p0[1];
+    long a = cm_xpool_add(pool, mx - 0.3 * dy + 0.01 * dx, my + 0.3 * dx + 0.01 * dy);
+    long b = cm_xpool_add(pool, mx + 0.3 * dy, my - 0.3 * dx);
+    long x = cm_xpool_intersect(pool, ids[0], ids[1], a, b);
+    CHECK(x >= 0 && !cm_xpool_is_input(pool, x) && cm_xorient(pool, ids[0], ids[1], x) == 0);
+    memmove(ids + 2, ids + 1, sizeof(long) * (size_t)(m - 1));
+    ids[1] = x;
+    int32_t *tri2 = malloc(sizeof(int32_t) * 3 * (size_t)(m + 1));
+    CHECK(cm_xtriangulate(pool, ids, m + 1, tri2) == 0);
+    CHECK_MSG(triangulates(pool, ids, m + 1, tri2, NULL), "%s: cm_xtriangulate with a constructed point", what);
+    cm_xpool_free(pool);
+    free(tri), free(tri2), free(idx), free(ids);
+}
+
+/* Ear clipping tests an ear only against the reflex vertices in a grid
+ * cell its bounding box covers: against the brute-force checks above. */
+static void test_ear_clipping(void)
+{
+    double xy[2 * 200];
+    for (uint64_t seed = 1; seed <= 12; seed++) {
+        int n = 10 + 15 * (int)seed;
+        if (rp_random_simple(xy, n, 300 + seed) == 0) check_ear_clipping(xy, n, "random");
+        if (rp_star(xy, n, 400 + seed) == 0) check_ear_clipping(xy, n, "star");
+    }
+    if (rp_spiral(xy, 160, 4) == 0) check_ear_clipping(xy, 160, "spiral");
+    if (rp_comb(xy, 200, 12) == 0) check_ear_clipping(xy, 200, "comb");
+    if (rp_disc(xy, 64) == 0) check_ear_clipping(xy, 64, "disc");
 }
 
 static void test_visibility_table(void)
@@ -332,6 +427,7 @@ int main(void)
     test_xpoint();
     test_segment_inside();
     test_visibility_table();
+    test_ear_clipping();
     test_kernel();
     test_weak_visibility();
     test_convex();

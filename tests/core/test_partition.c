@@ -150,6 +150,20 @@ static void test_stars(void)
     }
 }
 
+/* A 10,000-vertex star pair: too large for the Steiner-free program, the
+ * partition (not the whole-input overlay) still finds the one fan. */
+static void test_large_star_pair(void)
+{
+    enum { N = 10000 };
+    double *a = malloc(sizeof(double) * 2 * N), *b = malloc(sizeof(double) * 2 * N);
+    CHECK(a && b && rp_star(a, N, 77) == 0 && rp_star(b, N, 78) == 0);
+    const double *xy[2] = {a, b};
+    size_t fallbacks = 1;
+    long s = run(xy, 2, N, &fallbacks);
+    CHECK_MSG(s >= 0 && s <= 1 && fallbacks == 0, "star pair n=%d: %ld Steiner, %zu fallbacks", N, s, fallbacks);
+    free(a), free(b);
+}
+
 /* Clockwise input is processed reversed and keeps the contract. */
 static void test_clockwise(void)
 {
@@ -278,6 +292,7 @@ int main(void)
     test_brute_force_pairs();
     test_stuck_quad();
     test_stars();
+    test_large_star_pair();
     test_clockwise();
     test_link_splits();
     test_overlay_method();

@@ -26,6 +26,18 @@ static void common_diagonals(const double *a, const double *b, int n, unsigned c
                                 cm_segment_inside(b, n, i, b + 2 * i, j, b + 2 * j);
 }
 
+/* The program on a byte matrix of common diagonals. */
+static int plan_matrix(int n, const unsigned char *common, const double *const *xy, const double *fans,
+                       size_t nfans, cm_sf_plan *plan)
+{
+    cm_diagset set;
+    if (cm_diagset_from_matrix(&set, n, common) != 0) return -1;
+    cm_diagview view = {&set, NULL};
+    int r = cm_steinerfree_plan(n, &view, xy, 2, fans, nfans, plan);
+    cm_diagset_clear(&set);
+    return r;
+}
+
 static double min_angle(const double *p, const double *q, const double *r)
 {
     return cm_triangle_min_angle(p, q, r) * 180.0 / CM_PI;
@@ -79,7 +91,7 @@ static void check_pair(const double *a, const double *b, int n, int *free_pairs)
     common_diagonals(a, b, n, common);
     const double *xy[2] = {a, b};
     cm_sf_plan plan;
-    CHECK(cm_steinerfree_plan(n, common, xy, 2, NULL, 0, &plan) == 0);
+    CHECK(plan_matrix(n, common, xy, NULL, 0, &plan) == 0);
     enumeration e = {n, common, {a, b}, 0, -1.0};
     const int open[1][2] = {{0, n - 1}};
     enumerate(&e, open, 1, 180.0);
@@ -153,7 +165,7 @@ static void test_affine_image(void)
         for (int i = 0; i < n * n; i++) CHECK(common[i] == vb[i]);
         const double *xy[2] = {a, b};
         cm_sf_plan plan;
-        CHECK(cm_steinerfree_plan(n, common, xy, 2, NULL, 0, &plan) == 0);
+        CHECK(plan_matrix(n, common, xy, NULL, 0, &plan) == 0);
         CHECK(plan.cost == 0 && plan.nt == n - 2 && plan.nf == 0);
         cm_sf_plan_clear(&plan);
         free(common), free(vb), free(tri), free(idx);
@@ -179,8 +191,8 @@ static void test_fan(void)
         for (int i = 0; i < n * n; i++) common[i] &= vb[i];
         const double *xy[2] = {a, b}, fan[4] = {ka[0], ka[1], kb[0], kb[1]};
         cm_sf_plan plain, fanned;
-        CHECK(cm_steinerfree_plan(n, common, xy, 2, NULL, 0, &plain) == 0);
-        CHECK(cm_steinerfree_plan(n, common, xy, 2, fan, 1, &fanned) == 0);
+        CHECK(plan_matrix(n, common, xy, NULL, 0, &plain) == 0);
+        CHECK(plan_matrix(n, common, xy, fan, 1, &fanned) == 0);
         CHECK(fanned.cost <= 1 && fanned.cost <= plain.cost);
         if (plain.cost >= 2) {
             merged++;

@@ -21,13 +21,15 @@
  *     number of links; the bends become Steiner vertices shared by both
  *     halves. Among the first valid cuts the one whose halves need the
  *     fewest Steiner vertices (estimated with the program) is taken.
+ *     Faces above LINK_ALL_PAIRS vertices rank only the pairs with one
+ *     end among a bounded number of evenly spread sources.
  * (4) If no cut is valid, the item goes to the overlay construction
  *     (stats fallback_count).
  *
- * Visibility tables: the common-diagonal table of the input serves every
- * item cut from it along diagonals (a diagonal between two vertices of such
- * a sub-polygon is a diagonal of it iff it is one of the input); an item
- * with bends on its boundary gets a table of its own. */
+ * Visibility tables: bit sets of common diagonals (diagset.h). The input's
+ * serves every item cut from it along diagonals (a diagonal between two
+ * vertices of such a sub-polygon is a diagonal of it iff it is one of the
+ * input); an item with bends on its boundary gets a set of its own. */
 #include "construct/partition.h"
 #include "base/buf.h"
 #include "base/clock.h"
@@ -47,17 +49,21 @@
 
 /* Beyond this, the dynamic program's O(m (m + c)) work is skipped. */
 #define DP_WORK_LIMIT 6e7
-/* Stuck faces larger than this go to the overlay construction: the
- * all-pairs link distances would cost too much. */
-#define LINK_MAX_VERTICES 600
+/* Stuck faces up to this size compare all vertex pairs by link distance;
+ * larger ones only the pairs with one end among LINK_WORK / m sources
+ * spread evenly around the face (at least LINK_MIN_SOURCES), which bounds
+ * the distance table at k LINK_WORK entries and the window partitions
+ * built at that many per geometry. */
+#define LINK_ALL_PAIRS 600
+#define LINK_WORK 360000L
+#define LINK_MIN_SOURCES 48
 /* Vertex pairs tried, best first, before giving up on a stuck face; of
  * the valid cuts, this many are compared by what their halves need. */
 #define LINK_MAX_TRIES 40
 #define LINK_EVALUATE 12
 
 typedef struct vtable {
-    long m;
-    unsigned char *common; /* m * m: a diagonal in every geometry */
+    cm_diagset common; /* a diagonal in every geometry */
 } vtable;
 
 typedef struct item {
@@ -170,40 +176,58 @@ static void free_xy(double **l, size_t k)
 
 /* ---- common-diagonal tables ---------------------------------------------- */
 
-static long add_table(part *p, long m, unsigned char *common)
+/* Takes the set (cleared on failure). */
+static long add_table(part *p, cm_diagset *common)
 {
     size_t cap = (size_t)p->cap_tab;
-    if (cm_grow((void **)&p->tab, &cap, (size_t)p->ntab + 1, sizeof *p->tab) != 0) return -1;
+    if (cm_grow((void **)&p->tab, &cap, (size_t)p->ntab + 1, sizeof *p->tab) != 0) {
+        cm_diagset_clear(common);
+        return -1;
+    }
     p->cap_tab = (long)cap;
-    p->tab[p->ntab] = (vtable){m, common};
+    p->tab[p->ntab] = (vtable){*common};
     return p->ntab++;
 }
 
-/* ANDs the visibility of every geometry into common (m * m). tris[g] may
- * be NULL: then geometry g is triangulated here. 0, -1 memory, 1 failed. */
+/* The common diagonals: pairs that see each other in every geometry, one
+ * row of each geometry's visibility at a time (O(k m) memory beside the
+ * set). tris[g] may be NULL: then geometry g is triangulated here. 0, -1
+ * memory, 1 failed (not simple); *common is set up here, cleared on
+ * failure. */
 static int common_table(const double *const *xy, const int32_t *const *tris, size_t k, long m,
-                        unsigned char *common)
+                        cm_diagset *common)
 {
-    size_t mm = (size_t)m * (size_t)m;
-    unsigned char *vis = malloc(mm);
-    int32_t *tri = malloc(3 * (size_t)m * sizeof *tri), *idx = malloc((size_t)m * sizeof *idx);
+    cm_visrows **rows = calloc(k, sizeof *rows);
+    unsigned char *row = malloc((size_t)m * (k + 1));
+    int32_t *tri = tris ? NULL : malloc(3 * (size_t)m * k * sizeof *tri), *idx = malloc((size_t)m * sizeof *idx);
     int status = -1;
-    if (!vis || !tri || !idx) goto done;
+    if (cm_diagset_init(common, m) != 0 || !rows || !row || (!tris && !tri) || !idx) goto done;
     for (long i = 0; i < m; i++) idx[i] = (int32_t)i;
-    memset(common, 1, mm);
     for (size_t g = 0; g < k; g++) {
-        const int32_t *t = tris ? tris[g] : tri;
+        const int32_t *t = tris ? tris[g] : tri + 3 * (size_t)m * g;
         if (!tris) {
-            status = cm_polygon_triangulate(xy[g], idx, m, tri, NULL);
+            status = cm_polygon_ear_clip(xy[g], idx, m, tri + 3 * (size_t)m * g);
             if (status != 0) goto done;
             status = -1;
         }
-        if (cm_visibility_table(xy[g], m, t, vis) != 0) goto done;
-        for (size_t i = 0; i < mm; i++) common[i] &= vis[i];
+        rows[g] = cm_visrows_create(xy[g], m, t);
+        if (!rows[g]) goto done;
+    }
+    unsigned char *all = row + (size_t)m * k;
+    for (long i = 0; i < m; i++) {
+        memset(all, 1, (size_t)m);
+        for (size_t g = 0; g < k; g++) {
+            cm_visrows_row(rows[g], i, row + (size_t)m * g);
+            for (long j = i + 1; j < m; j++) all[j] &= row[(size_t)m * g + (size_t)j];
+        }
+        for (long j = i + 1; j < m; j++)
+            if (all[j]) cm_diagset_add(common, i, j);
     }
     status = 0;
 done:
-    free(vis), free(tri), free(idx);
+    for (size_t g = 0; rows && g < k; g++) cm_visrows_free(rows[g]);
+    if (status != 0) cm_diagset_clear(common);
+    free(rows), free(row), free(tri), free(idx);
     return status;
 }
 
@@ -212,13 +236,12 @@ static cm_status table_for_item(part *p, item *it)
     double t0 = cm_seconds_now();
     long m = it->m;
     double **l = local_xy(p, it);
-    unsigned char *common = malloc((size_t)m * (size_t)m);
+    cm_diagset common = {0, 0, NULL};
     it->tix = malloc((size_t)m * sizeof *it->tix);
-    int s = l && common && it->tix ? common_table((const double *const *)l, NULL, p->k, m, common) : -1;
+    int s = l && it->tix ? common_table((const double *const *)l, NULL, p->k, m, &common) : -1;
     free_xy(l, p->k);
-    if (s == 0) it->table = add_table(p, m, common);
+    if (s == 0) it->table = add_table(p, &common);
     if (s != 0 || it->table < 0) {
-        free(common);
         if (s > 0) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: a sub-polygon is not simple");
         return no_memory(p);
     }
@@ -227,18 +250,10 @@ static cm_status table_for_item(part *p, item *it)
     return CM_OK;
 }
 
-/* The item's m * m common-diagonal matrix in local indices. */
-static unsigned char *local_common(const part *p, const item *it)
+/* The item's common diagonals in local indices: a view of its table. */
+static cm_diagview local_common(const part *p, const item *it)
 {
-    const vtable *t = &p->tab[it->table];
-    long m = it->m;
-    unsigned char *c = malloc((size_t)m * (size_t)m);
-    if (!c) return NULL;
-    for (long i = 0; i < m; i++) {
-        const unsigned char *row = t->common + (size_t)it->tix[i] * (size_t)t->m;
-        for (long j = 0; j < m; j++) c[(size_t)i * (size_t)m + (size_t)j] = row[it->tix[j]];
-    }
-    return c;
+    return (cm_diagview){&p->tab[it->table].common, it->tix};
 }
 
 /* ---- steps ---------------------------------------------------------------- */
@@ -336,7 +351,7 @@ static int apply_plan(part *p, item *it, const cm_sf_plan *plan, const double *f
  * vertices, the same program with fan points (kernel points of the item
  * and of its stuck faces) may merge stuck faces into fans, one Steiner
  * vertex each. */
-static cm_status plan_item(part *p, item *it, const unsigned char *common)
+static cm_status plan_item(part *p, item *it, const cm_diagview *common)
 {
     enum { MAX_FANS = 8 };
     double t0 = cm_seconds_now();
@@ -388,14 +403,14 @@ static int fan_face(part *p, item *it)
 
 /* Cuts along the most balanced common diagonal (the paper's tie-break).
  * Returns 1 if cut, 0 if there is none, -1 out of memory. */
-static int greedy_split(part *p, item *it, const unsigned char *common)
+static int greedy_split(part *p, item *it, const cm_diagview *common)
 {
     long m = it->m;
     for (long span = m / 2; span >= 2; span--) {
         for (long i = 0; i < m; i++) {
             long j = (i + span) % m;
             if (2 * span == m && i >= span) break;
-            if (!common[(size_t)i * (size_t)m + (size_t)j]) continue;
+            if (!cm_diagview_has(common, i, j)) continue;
             long *loc = malloc((size_t)(m + 1) * sizeof *loc), c = 0;
             if (!loc) return -1;
             for (long x = i;; x = (x + 1) % m) { loc[c++] = x; if (x == j) break; }
@@ -413,7 +428,7 @@ static int greedy_split(part *p, item *it, const unsigned char *common)
 
 /* ---- cutting a stuck face along minimum-link paths ------------------------ */
 
-typedef struct { long u, v; int links, balance, sum; } pair;
+typedef struct { long u, v, row; int links, balance, sum; } pair; /* row: of dist */
 
 static int compare_pairs(const void *pa, const void *pb)
 {
@@ -430,23 +445,33 @@ typedef struct {
     item *it;
     double **l;          /* local coordinates per geometry */
     cm_linkpart **lp;    /* per geometry */
-    int *dist;           /* k * m * m */
+    long *src, nsrc;     /* the sources: local vertices, ascending */
+    long *row_of;        /* per vertex: its source row, -1 if not one */
+    int *dist;           /* k * nsrc * m: from each source to every vertex */
 } face_ctx;
 
-/* All pairs (u, v) the size guard allows, best first; *count of them. */
+static int *dist_row(const face_ctx *f, size_t g, long row)
+{
+    return f->dist + ((size_t)g * (size_t)f->nsrc + (size_t)row) * (size_t)f->it->m;
+}
+
+/* The pairs (u, v), u < v, with a source among them that the size guard
+ * allows, best first; *count of them. */
 static pair *rank_pairs(const face_ctx *f, long *count)
 {
     long m = f->it->m;
     size_t k = f->p->k;
-    pair *pairs = malloc((size_t)m * (size_t)m / 2 * sizeof *pairs + sizeof *pairs);
+    pair *pairs = malloc((size_t)f->nsrc * (size_t)m * sizeof *pairs + sizeof *pairs);
     if (!pairs) return NULL;
     *count = 0;
-    for (long u = 0; u < m; u++)
-        for (long v = u + 2; v < m; v++) {
-            if (u == 0 && v == m - 1) continue;
+    for (long r = 0; r < f->nsrc; r++)
+        for (long w = 0; w < m; w++) {
+            long s = f->src[r], u = s < w ? s : w, v = s < w ? w : s;
+            if (v - u < 2 || (u == 0 && v == m - 1)) continue;
+            if (f->row_of[w] >= 0 && f->row_of[w] < r) continue; /* counted from w */
             int links = 0, sum = 0;
             for (size_t g = 0; g < k && links >= 0; g++) {
-                int d = f->dist[((size_t)g * (size_t)m + (size_t)u) * (size_t)m + (size_t)v];
+                int d = dist_row(f, g, r)[w];
                 if (d < 1) links = -1;
                 else links = d > links ? d : links, sum += d;
             }
@@ -454,7 +479,7 @@ static pair *rank_pairs(const face_ctx *f, long *count)
             long s1 = (v - u + 1) + links - 1, s2 = (m - (v - u) + 1) + links - 1;
             if (s1 > m || s2 > m || ((s1 == m || s2 == m) && f->it->repeat)) continue;
             long span = v - u < m - (v - u) ? v - u : m - (v - u);
-            pairs[(*count)++] = (pair){u, v, links, (int)span, sum};
+            pairs[(*count)++] = (pair){u, v, r, links, (int)span, sum};
         }
     qsort(pairs, (size_t)*count, sizeof *pairs, compare_pairs);
     return pairs;
@@ -532,14 +557,15 @@ static const double offsets[] = {0.0, 0.12, -0.12, 0.3, -0.3};
 static long polygon_cost(size_t k, long m, double **xy)
 {
     if (m <= 3) return 0;
-    unsigned char *common = malloc((size_t)m * (size_t)m);
+    cm_diagset common = {0, 0, NULL};
+    cm_diagview view = {&common, NULL};
     double *pos = malloc(2 * k * sizeof *pos);
     int32_t *all = malloc((size_t)m * sizeof *all);
     long cost = -1;
     cm_sf_plan plan;
-    int s = common && pos && all ? common_table((const double *const *)xy, NULL, k, m, common) : -1;
+    int s = pos && all ? common_table((const double *const *)xy, NULL, k, m, &common) : -1;
     if (s > 0) cost = LONG_MAX;
-    if (s == 0 && cm_steinerfree_plan(m, common, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
+    if (s == 0 && cm_steinerfree_plan(m, &view, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
         cost = 0;
         for (long f = 0; f < plan.nf && cost >= 0; f++) {
             long n = plan.face_start[f + 1] - plan.face_start[f];
@@ -553,7 +579,8 @@ static long polygon_cost(size_t k, long m, double **xy)
         }
         cm_sf_plan_clear(&plan);
     }
-    free(common), free(pos), free(all);
+    cm_diagset_clear(&common);
+    free(pos), free(all);
     return cost;
 }
 
@@ -670,7 +697,8 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
         double *path = NULL;
         long nb = 0;
         int links = cm_link_path(f->lp[g], pr->u, pr->v, &path, &nb);
-        int expect = f->dist[((size_t)g * (size_t)m + (size_t)pr->u) * (size_t)m + (size_t)pr->v];
+        long end = f->src[pr->row] == pr->u ? pr->v : pr->u;
+        int expect = dist_row(f, g, pr->row)[end];
         if (links < 0) result = -1;
         else if (links == 0 || links != expect) result = 0;
         else if (cut_choices(f, pr, g, path, nb, search, &c[g]) != 0) result = -1;
@@ -777,28 +805,39 @@ static int cut_face(face_ctx *f)
 static int link_split(part *p, item *it)
 {
     long m = it->m;
-    if (m > LINK_MAX_VERTICES) return 0;
+    long nsrc = m <= LINK_ALL_PAIRS ? m : LINK_WORK / m > LINK_MIN_SOURCES ? LINK_WORK / m : LINK_MIN_SOURCES;
+    if (nsrc > m) nsrc = m;
     double t0 = cm_seconds_now();
-    face_ctx f = {p, it, local_xy(p, it), calloc(p->k, sizeof(cm_linkpart *)),
-                  malloc(p->k * (size_t)m * (size_t)m * sizeof(int))};
-    int result = f.l && f.lp && f.dist ? 0 : -1;
+    face_ctx f = {p, it, local_xy(p, it), calloc(p->k, sizeof(cm_linkpart *)), malloc((size_t)nsrc * sizeof(long)),
+                  nsrc, malloc((size_t)m * sizeof(long)), malloc(p->k * (size_t)nsrc * (size_t)m * sizeof(int))};
+    unsigned char *open = malloc(p->k * (size_t)nsrc);
+    int result = f.l && f.lp && f.src && f.row_of && f.dist && open ? 0 : -1;
+    for (long v = 0; result == 0 && v < m; v++) f.row_of[v] = -1;
+    for (long r = 0; result == 0 && r < nsrc; r++) f.src[r] = r * m / nsrc, f.row_of[f.src[r]] = r;
     for (size_t g = 0; g < p->k && result == 0; g++) {
         f.lp[g] = cm_linkpart_create(f.l[g], m);
         if (!f.lp[g]) result = -1;
     }
     /* Only the smallest largest link distance matters: deeper levels of
-     * the window partitions only when no pair is within the cap. */
+     * the window partitions only when no pair is within the cap, and only
+     * for the sources whose partition went deeper than the cap. */
+    if (open) memset(open, 1, p->k * (size_t)nsrc);
     for (int cap = 2; result == 0; cap = cap < 8 ? 2 * cap : INT_MAX) {
+        long deeper = 0;
         for (size_t g = 0; g < p->k && result == 0; g++)
-            for (long u = 0; u < m && result == 0; u++)
-                if (cm_link_distances_upto(f.lp[g], u, cap,
-                                           f.dist + ((size_t)g * (size_t)m + (size_t)u) * (size_t)m) != 0)
-                    result = -1;
+            for (long r = 0; r < nsrc && result == 0; r++) {
+                if (!open[g * (size_t)nsrc + (size_t)r]) continue;
+                int s = cm_link_distances_upto(f.lp[g], f.src[r], cap, dist_row(&f, g, r));
+                if (s < 0) result = -1;
+                open[g * (size_t)nsrc + (size_t)r] = (unsigned char)(s == 1);
+                deeper += s == 1;
+            }
         if (result == 0) result = cut_face(&f);
-        if (result != 0 || cap == INT_MAX) break;
+        if (result != 0 || cap == INT_MAX || deeper == 0) break;
     }
+    free(open);
     for (size_t g = 0; f.lp && g < p->k; g++) cm_linkpart_free(f.lp[g]);
-    free(f.lp), free(f.dist);
+    free(f.lp), free(f.dist), free(f.src), free(f.row_of);
     free_xy(f.l, p->k);
     p->st->seconds_link += cm_seconds_now() - t0;
     return result;
@@ -869,11 +908,7 @@ done:
 static int common_step(part *p, item *it, cm_status *s)
 {
     long m = it->m;
-    unsigned char *common = local_common(p, it);
-    if (!common) {
-        *s = no_memory(p);
-        return 1;
-    }
+    cm_diagview view = local_common(p, it), *common = &view;
     long chords = cm_steinerfree_count(m, common);
     int done = 1;
     if (chords == 0) {
@@ -881,11 +916,14 @@ static int common_step(part *p, item *it, cm_status *s)
     } else if (m <= CM_DP_MAX_VERTICES || (double)m * (double)(chords + m) <= DP_WORK_LIMIT) {
         *s = plan_item(p, it, common);
     } else {
-        int g = greedy_split(p, it, common);
+        /* Too large for the program: one Steiner vertex when the item is
+         * star-shaped in every geometry (what the program's fan would
+         * give), else a balanced split. */
+        int g = fan_face(p, it);
+        if (g == 0) g = greedy_split(p, it, common);
         if (g < 0) *s = no_memory(p);
         done = g != 0;
     }
-    free(common);
     return done;
 }
 
@@ -915,11 +953,10 @@ static cm_status start(part *p, const double *const *geoms, const int32_t *const
     }
     p->nv = n;
     double t0 = cm_seconds_now();
-    unsigned char *common = malloc(n * n);
-    if (!common || common_table(geoms, tris, k, (long)n, common) != 0 || add_table(p, (long)n, common) < 0) {
-        free(common);
-        return no_memory(p);
-    }
+    cm_diagset common = {0, 0, NULL};
+    int t = common_table(geoms, tris, k, (long)n, &common);
+    if (t > 0) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: the input is not simple");
+    if (t < 0 || add_table(p, &common) < 0) return no_memory(p);
     p->st->seconds_visibility += cm_seconds_now() - t0;
     item root = {malloc(n * sizeof(int32_t)), malloc(n * sizeof(int32_t)), (long)n, 0, 0, 0};
     if (!root.gid || !root.tix) {
@@ -935,7 +972,7 @@ static void part_free(part *p)
     if (p->xy)
         for (size_t g = 0; g < p->k; g++) free(p->xy[g]);
     free(p->xy), free(p->tri);
-    for (long t = 0; t < p->ntab; t++) free(p->tab[t].common);
+    for (long t = 0; t < p->ntab; t++) cm_diagset_clear(&p->tab[t].common);
     free(p->tab);
     for (long i = 0; i < p->top; i++) item_free(&p->stack[i]);
     free(p->stack);

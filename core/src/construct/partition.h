@@ -13,10 +13,10 @@
  * first split along the most balanced common diagonal. */
 #define CM_DP_MAX_VERTICES 300
 
-/* The common-diagonal table of the input takes n^2 bytes: beyond this many
- * vertices the whole input goes to the overlay construction (counted as
- * one fallback). */
-#define CM_PARTITION_MAX_VERTICES 6000
+/* The common-diagonal set of the input takes n^2 / 8 bytes (200 MB at
+ * this size): beyond this many vertices the whole input goes to the
+ * overlay construction (counted as one fallback). */
+#define CM_PARTITION_MAX_VERTICES 40000
 
 typedef struct cm_partition_stats {
     size_t steiner;        /* Steiner vertices of the result */

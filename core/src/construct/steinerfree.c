@@ -44,7 +44,7 @@ typedef struct chains {
 
 typedef struct dp {
     long m;
-    const unsigned char *common;
+    const cm_diagview *common;
     const double *const *xy;
     const double *fans; /* nfans candidates of k points (2 doubles each) */
     size_t k, nfans;
@@ -71,7 +71,7 @@ static int is_link(const dp *d, long a, long b)
 {
     if (b == a + 1) return 1;
     if (a == 0 && b == d->m - 1) return 0; /* the closing edge: the root */
-    return d->common[(size_t)a * (size_t)d->m + (size_t)b] != 0;
+    return cm_diagview_has(d->common, a, b);
 }
 
 /* sin^2 of the smallest angle of the triangle pa, pb, pc. */
@@ -209,9 +209,8 @@ static void extend_chains(dp *d, long i, long l)
 static long row_reach(const dp *d, long i)
 {
     if (i == 0) return d->m - 1;
-    const unsigned char *row = d->common + (size_t)i * (size_t)d->m;
     for (long j = d->m - 1; j > i + 1; j--)
-        if (row[j]) return j;
+        if (cm_diagview_has(d->common, i, j)) return j;
     return i + 1;
 }
 
@@ -371,16 +370,16 @@ void cm_sf_plan_clear(cm_sf_plan *plan)
     memset(plan, 0, sizeof *plan);
 }
 
-long cm_steinerfree_count(long m, const unsigned char *common)
+long cm_steinerfree_count(long m, const cm_diagview *common)
 {
     long count = 0;
     for (long a = 0; a < m; a++)
         for (long b = a + 2; b < m; b++)
-            if (!(a == 0 && b == m - 1)) count += common[(size_t)a * (size_t)m + (size_t)b] != 0;
+            if (!(a == 0 && b == m - 1)) count += cm_diagview_has(common, a, b);
     return count;
 }
 
-int cm_steinerfree_plan(long m, const unsigned char *common, const double *const *xy, size_t k,
+int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *xy, size_t k,
                         const double *fans, size_t nfans, cm_sf_plan *plan)
 {
     memset(plan, 0, sizeof *plan);

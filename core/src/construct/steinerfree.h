@@ -27,6 +27,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "construct/diagset.h"
+
 typedef struct cm_sf_plan {
     long cost;            /* sum over stuck faces of (vertices - 3), plus 1
                              for a fan face; 0 iff Steiner-free */
@@ -42,16 +44,16 @@ typedef struct cm_sf_plan {
 } cm_sf_plan;
 
 /* m >= 3 local vertices 0..m-1 forming a polygon that is simple and
- * counter-clockwise in every geometry; common[i * m + j] != 0 iff (i, j)
- * is a diagonal in every geometry (entries for polygon edges are ignored);
+ * counter-clockwise in every geometry; cm_diagview_has(common, i, j) iff
+ * (i, j) is a diagonal in every geometry (polygon edges are ignored);
  * xy[g] holds the 2m coordinates of geometry g; fans holds nfans fan
  * points, point x of geometry g at fans[2 (x k + g)] (NULL or 0: none).
  * Returns 0, or -1 out of memory. */
-int cm_steinerfree_plan(long m, const unsigned char *common, const double *const *xy, size_t k,
+int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *xy, size_t k,
                         const double *fans, size_t nfans, cm_sf_plan *plan);
 void cm_sf_plan_clear(cm_sf_plan *plan);
 
 /* Number of common diagonals in the table (each counted once). */
-long cm_steinerfree_count(long m, const unsigned char *common);
+long cm_steinerfree_count(long m, const cm_diagview *common);
 
 #endif

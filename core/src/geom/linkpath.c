@@ -47,9 +47,12 @@ struct cm_linkpart {
     unsigned char *how, *covered;
     long source; /* of the partition built last, -1 none */
     int max_level; /* pockets beyond this level were not processed */
+    int truncated; /* some were: vertices in them are undetermined */
     long *all;   /* 0..m-1: the root pocket's ids */
     cm_vsource root; /* the polygon's triangulation, re-rooted per source */
     int root_state;  /* 0 not built, 1 built, -1 failed */
+    cm_visrows *rows;   /* visibility from a vertex over that triangulation */
+    unsigned char *row; /* from the current source */
 };
 
 /* ---- set-up ------------------------------------------------------------- */
@@ -69,7 +72,8 @@ cm_linkpart *cm_linkpart_create(const double *xy, long m)
     lp->how = malloc(n);
     lp->covered = malloc(n + 1);
     lp->all = malloc(n * sizeof *lp->all);
-    int ok = lp->xy && lp->pool && lp->dist && lp->via && lp->cone_a && lp->cone_b && lp->how &&
+    lp->row = malloc(n);
+    int ok = lp->row && lp->xy && lp->pool && lp->dist && lp->via && lp->cone_a && lp->cone_b && lp->how &&
              lp->covered && lp->all;
     for (long i = 0; ok && i < m; i++) {
         lp->xy[2 * i] = xy[2 * i], lp->xy[2 * i + 1] = xy[2 * i + 1];
@@ -102,6 +106,8 @@ void cm_linkpart_free(cm_linkpart *lp)
     free(lp->pk), free(lp->support), free(lp->xy), free(lp->dist), free(lp->via);
     free(lp->cone_a), free(lp->cone_b), free(lp->how), free(lp->covered), free(lp->all);
     cm_vsource_clear(&lp->root);
+    cm_visrows_free(lp->rows);
+    free(lp->row);
     cm_xpool_free(lp->pool);
     free(lp);
 }
@@ -390,19 +396,40 @@ static int candidate(const pocket *p, long i)
     return p->source >= 0 ? i != p->source : i > 0 && i < p->k - 1;
 }
 
-/* The root pocket re-roots the cached triangulation of the polygon. */
+/* The root pocket re-roots the cached triangulation of the polygon, and
+ * takes the vertices its source sees from one pass of cone propagation
+ * over it (O(triangles seen), where a walk from every vertex to the
+ * source would cost O(m) each). */
 static int build_root(cm_linkpart *lp, pocket *p)
 {
     if (lp->root_state == 0) {
         int s = cm_vsource_build(&lp->root, lp->pool, lp->all, lp->m, p->source);
         lp->root_state = s == 0 ? 1 : -1;
         if (s < 0) return -1;
+        if (s == 0) {
+            lp->rows = cm_visrows_create(lp->xy, lp->m, lp->root.tri);
+            if (!lp->rows) {
+                cm_vsource_clear(&lp->root);
+                lp->root_state = 0;
+                return -1;
+            }
+        }
     } else if (lp->root_state > 0 && cm_vsource_reroot(&lp->root, p->source) != 0) {
         return -1;
     }
     if (lp->root_state < 0) return 1;
+    cm_visrows_row(lp->rows, p->source, lp->row);
     p->vs = lp->root, p->shared = 1;
     return 0;
+}
+
+/* Local vertex i of pocket P sees its source: the cone of sight lines. */
+static int vertex_cone(cm_linkpart *lp, pocket *p, long i, long *a, long *b)
+{
+    if (p->source < 0) return cm_vsource_vertex_cone(&p->vs, i, a, b);
+    if (!lp->row[i]) return 0; /* the root: local i is vertex i */
+    *a = *b = p->source;
+    return 1;
 }
 
 static int process_window(cm_linkpart *lp, long P)
@@ -421,7 +448,7 @@ static int process_window(cm_linkpart *lp, long P)
         p = &lp->pk[P];
         long v = p->ids[i], a, b;
         if (!candidate(p, i) || v >= lp->m || lp->dist[v] >= 0) continue;
-        if (!cm_vsource_vertex_cone(&p->vs, i, &a, &b)) continue;
+        if (!vertex_cone(lp, p, i, &a, &b)) continue;
         reach_vertex(lp, v, p->level, P, HOW_CONE, a, b);
         if (open_windows(lp, P, i, a, b) < 0) return -1;
     }
@@ -451,11 +478,17 @@ static int run_levels(cm_linkpart *lp, long s, int max_level)
     for (long v = 0; v < lp->m; v++) lp->dist[v] = -1, lp->how[v] = HOW_NONE;
     lp->dist[s] = 0;
     if (add_pocket(lp, lp->all, lp->m, 1, -1, s) < 0) return -1;
-    for (long P = 0; P < lp->npk; P++)
-        if (lp->pk[P].level <= max_level && process_window(lp, P) < 0) {
+    lp->truncated = 0;
+    for (long P = 0; P < lp->npk; P++) {
+        if (lp->pk[P].level > max_level) {
+            lp->truncated = 1;
+            continue;
+        }
+        if (process_window(lp, P) < 0) {
             drop_pockets(lp);
             return -1;
         }
+    }
     lp->source = s, lp->max_level = max_level;
     return 0;
 }
@@ -464,12 +497,12 @@ int cm_link_distances_upto(cm_linkpart *lp, long s, int max_level, int *dist)
 {
     if (run_levels(lp, s, max_level) < 0) return -1;
     memcpy(dist, lp->dist, (size_t)lp->m * sizeof *dist);
-    return 0;
+    return lp->truncated;
 }
 
 int cm_link_distances(cm_linkpart *lp, long s, int *dist)
 {
-    return cm_link_distances_upto(lp, s, INT_MAX, dist);
+    return cm_link_distances_upto(lp, s, INT_MAX, dist) < 0 ? -1 : 0;
 }
 
 /* ---- minimum-link paths --------------------------------------------------- */

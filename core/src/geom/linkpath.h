@@ -36,7 +36,9 @@ void cm_linkpart_free(cm_linkpart *lp);
 int cm_link_distances(cm_linkpart *lp, long s, int *dist);
 /* The same, building the partition only up to level max_level: dist[v] =
  * -1 for the vertices farther than that (some at max_level + 1 may still
- * get their distance). */
+ * get their distance). Returns 0 when every distance was determined (a
+ * larger max_level gives the same), 1 when some pocket lay beyond
+ * max_level, -1 out of memory. */
 int cm_link_distances_upto(cm_linkpart *lp, long s, int max_level, int *dist);
 
 /* A minimum-link path from vertex u to vertex v: the bends (interior

@@ -1,57 +1,92 @@
 /* Triangulation of one simple polygon: ear clipping, then Lawson flips to
  * the constrained Delaunay triangulation (which maximises the minimum angle
  * over all triangulations of the polygon). Every decision is exact. */
+#include <math.h>
 #include <stdlib.h>
 
 #include "base/error.h"
+#include "geom/pointgrid.h"
 #include "geom/polytri.h"
 #include "base/progress.h"
 #include "geom/predicates.h"
 
 #define P(v) (xy + 2 * (size_t)(v))
 
+/* The ring's vertices that are not strictly convex, in a grid: only they
+ * can block an ear (if the triangle contains a vertex it contains a
+ * reflex one), and only those in the ear's bounding box. */
+typedef struct {
+    const double *xy;
+    const int32_t *idx;
+    long *prev, *next;
+    signed char *convex, *ear;
+    cm_pointgrid grid;
+} ring;
+
 /* Is any vertex of the ring (other than a, b, c) inside or on the closed
- * triangle abc? Only vertices that are not strictly convex can be: if the
- * triangle contains a vertex it contains a reflex one. */
-static int ear_blocked(const double *xy, const int32_t *idx, const long *prev,
-                       const long *next, const signed char *convex, long a, long b,
-                       long c)
+ * triangle abc? */
+static int ear_blocked(const ring *r, long a, long b, long c)
 {
-    for (long v = next[c]; v != a; v = next[v]) {
-        if (convex[v] > 0) continue;
-        const double *p = P(idx[v]);
-        if (cm_orient2d(P(idx[a]), P(idx[b]), p) >= 0 &&
-            cm_orient2d(P(idx[b]), P(idx[c]), p) >= 0 &&
-            cm_orient2d(P(idx[c]), P(idx[a]), p) >= 0)
-            return 1;
+    const double *xy = r->xy, *pa = P(r->idx[a]), *pb = P(r->idx[b]), *pc = P(r->idx[c]);
+    long cells[4];
+    long ncells = cm_pointgrid_range(&r->grid, fmin(pa[0], fmin(pb[0], pc[0])), fmin(pa[1], fmin(pb[1], pc[1])),
+                                     fmax(pa[0], fmax(pb[0], pc[0])), fmax(pa[1], fmax(pb[1], pc[1])), cells);
+    if (ncells > 4 * r->grid.count + 16) { /* a box over most of the grid: walk the ring */
+        for (long v = r->next[c]; v != a; v = r->next[v]) {
+            if (r->convex[v] > 0) continue;
+            const double *p = P(r->idx[v]);
+            if (cm_orient2d(pa, pb, p) >= 0 && cm_orient2d(pb, pc, p) >= 0 && cm_orient2d(pc, pa, p) >= 0)
+                return 1;
+        }
+        return 0;
     }
-    (void)prev;
+    for (long cy = cells[2]; cy <= cells[3]; cy++)
+        for (long cx = cells[0]; cx <= cells[1]; cx++)
+            for (long v = r->grid.head[cy * r->grid.nx + cx]; v >= 0; v = r->grid.next[v]) {
+                if (v == a || v == b || v == c) continue;
+                const double *p = P(r->idx[v]);
+                if (cm_orient2d(pa, pb, p) >= 0 && cm_orient2d(pb, pc, p) >= 0 && cm_orient2d(pc, pa, p) >= 0)
+                    return 1;
+            }
     return 0;
 }
 
-static void update_vertex(const double *xy, const int32_t *idx, const long *prev,
-                          const long *next, signed char *convex, signed char *ear,
-                          long v)
+static void set_turn(ring *r, long v)
 {
-    convex[v] = (signed char)cm_orient2d(P(idx[prev[v]]), P(idx[v]), P(idx[next[v]]));
-    ear[v] = convex[v] > 0 &&
-             !ear_blocked(xy, idx, prev, next, convex, prev[v], v, next[v]);
+    const double *xy = r->xy;
+    r->convex[v] = (signed char)cm_orient2d(P(r->idx[r->prev[v]]), P(r->idx[v]), P(r->idx[r->next[v]]));
+    if (r->convex[v] > 0) cm_pointgrid_remove(&r->grid, v);
+    else if (r->grid.cell[v] < 0) cm_pointgrid_insert(&r->grid, v, P(r->idx[v])[0], P(r->idx[v])[1]);
+}
+
+static void update_vertex(ring *r, long v)
+{
+    set_turn(r, v);
+    r->ear[v] = r->convex[v] > 0 && !ear_blocked(r, r->prev[v], v, r->next[v]);
 }
 
 static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri, cm_progress *progress)
 {
-    long *prev = malloc((size_t)m * sizeof *prev), *next = malloc((size_t)m * sizeof *next);
-    signed char *convex = malloc((size_t)m), *ear = malloc((size_t)m);
+    ring r = {xy, idx, malloc((size_t)m * sizeof(long)), malloc((size_t)m * sizeof(long)), malloc((size_t)m),
+              malloc((size_t)m), .grid = {.head = NULL}};
     int status = -1;
-    if (!prev || !next || !convex || !ear) goto done;
+    double lo[2] = {P(idx[0])[0], P(idx[0])[1]}, hi[2] = {lo[0], lo[1]};
+    long reflex = 0;
+    if (!r.prev || !r.next || !r.convex || !r.ear) goto done;
     for (long i = 0; i < m; i++) {
-        prev[i] = (i + m - 1) % m;
-        next[i] = (i + 1) % m;
+        r.prev[i] = (i + m - 1) % m;
+        r.next[i] = (i + 1) % m;
+        for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], P(idx[i])[c]), hi[c] = fmax(hi[c], P(idx[i])[c]);
     }
-    for (long i = 0; i < m; i++)
-        convex[i] = (signed char)cm_orient2d(P(idx[prev[i]]), P(idx[i]), P(idx[next[i]]));
     for (long i = 0; i < m; i++) {
-        ear[i] = convex[i] > 0 && !ear_blocked(xy, idx, prev, next, convex, prev[i], i, next[i]);
+        r.convex[i] = (signed char)cm_orient2d(P(idx[r.prev[i]]), P(idx[i]), P(idx[r.next[i]]));
+        reflex += r.convex[i] <= 0;
+    }
+    if (cm_pointgrid_init(&r.grid, m, lo, hi, reflex) != 0) goto done;
+    for (long i = 0; i < m; i++)
+        if (r.convex[i] <= 0) cm_pointgrid_insert(&r.grid, i, P(idx[i])[0], P(idx[i])[1]);
+    for (long i = 0; i < m; i++) {
+        r.ear[i] = r.convex[i] > 0 && !ear_blocked(&r, r.prev[i], i, r.next[i]);
         if (cm_progress_check(progress)) {
             status = CM_CANCELLED;
             goto done;
@@ -61,14 +96,14 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
     long remaining = m, v = 0, since_last_clip = 0, t = 0;
     status = 1;
     while (remaining > 3) {
-        if (ear[v]) {
-            long a = prev[v], c = next[v];
+        if (r.ear[v]) {
+            long a = r.prev[v], c = r.next[v];
             tri[3 * t] = idx[a], tri[3 * t + 1] = idx[v], tri[3 * t + 2] = idx[c];
             t++;
-            next[a] = c, prev[c] = a;
+            r.next[a] = c, r.prev[c] = a;
             remaining--;
-            update_vertex(xy, idx, prev, next, convex, ear, a);
-            update_vertex(xy, idx, prev, next, convex, ear, c);
+            update_vertex(&r, a);
+            update_vertex(&r, c);
             since_last_clip = 0;
             v = c;
             if (cm_progress_check(progress)) {
@@ -77,14 +112,15 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
             }
         } else {
             if (++since_last_clip > remaining) goto done; /* no ear: not simple */
-            v = next[v];
+            v = r.next[v];
         }
     }
-    if (cm_orient2d(P(idx[prev[v]]), P(idx[v]), P(idx[next[v]])) <= 0) goto done;
-    tri[3 * t] = idx[prev[v]], tri[3 * t + 1] = idx[v], tri[3 * t + 2] = idx[next[v]];
+    if (cm_orient2d(P(idx[r.prev[v]]), P(idx[v]), P(idx[r.next[v]])) <= 0) goto done;
+    tri[3 * t] = idx[r.prev[v]], tri[3 * t + 1] = idx[v], tri[3 * t + 2] = idx[r.next[v]];
     status = 0;
 done:
-    free(prev), free(next), free(convex), free(ear);
+    free(r.prev), free(r.next), free(r.convex), free(r.ear);
+    cm_pointgrid_clear(&r.grid);
     return status;
 }
 
@@ -101,6 +137,28 @@ static int compare_edge_slots(const void *pa, const void *pb)
     return (x->hi > y->hi) - (x->hi < y->hi);
 }
 
+/* Sorts the edge slots by (lo, hi) with two counting passes when the
+ * vertex values are small (always, for a polygon's local indices). 0 done,
+ * 1 values too large for it, -1 out of memory. */
+static int counting_sort(edge_slot *e, long n)
+{
+    int32_t lo = 0, hi = 0;
+    for (long s = 0; s < n; s++) lo = e[s].lo < lo ? e[s].lo : lo, hi = e[s].hi > hi ? e[s].hi : hi;
+    if (lo < 0 || hi > 4 * n + 64) return 1;
+    long *count = malloc(((size_t)hi + 2) * sizeof *count);
+    edge_slot *t = malloc((size_t)n * sizeof *t);
+    int status = count && t ? 0 : -1;
+    for (int pass = 0; pass < 2 && status == 0; pass++) { /* hi, then lo (stable) */
+        edge_slot *from = pass == 0 ? e : t, *to = pass == 0 ? t : e;
+        for (long v = 0; v <= hi + 1; v++) count[v] = 0;
+        for (long s = 0; s < n; s++) count[(pass == 0 ? from[s].hi : from[s].lo) + 1]++;
+        for (long v = 0; v <= hi; v++) count[v + 1] += count[v];
+        for (long s = 0; s < n; s++) to[count[pass == 0 ? from[s].hi : from[s].lo]++] = from[s];
+    }
+    free(count), free(t);
+    return status;
+}
+
 int cm_tri_adjacency(const int32_t *tri, long nt, int32_t *nbr)
 {
     edge_slot *e = malloc((size_t)(3 * nt + 1) * sizeof *e);
@@ -110,7 +168,12 @@ int cm_tri_adjacency(const int32_t *tri, long nt, int32_t *nbr)
         e[s] = (edge_slot){a < b ? a : b, a < b ? b : a, s};
         nbr[s] = -1;
     }
-    qsort(e, (size_t)(3 * nt), sizeof *e, compare_edge_slots);
+    int sorted = counting_sort(e, 3 * nt);
+    if (sorted < 0) {
+        free(e);
+        return -1;
+    }
+    if (sorted > 0) qsort(e, (size_t)(3 * nt), sizeof *e, compare_edge_slots);
     for (long s = 0; s + 1 < 3 * nt; s++) {
         if (compare_edge_slots(&e[s], &e[s + 1]) != 0) continue;
         nbr[e[s].slot] = (int32_t)(e[s + 1].slot / 3);
@@ -182,6 +245,11 @@ static int make_delaunay(const double *xy, int32_t *tri, long nt, cm_progress *p
 done:
     free(nbr), free(stack), free(queued);
     return status;
+}
+
+int cm_polygon_ear_clip(const double *xy, const int32_t *idx, long m, int32_t *tri_out)
+{
+    return clip_ears(xy, idx, m, tri_out, NULL);
 }
 
 int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t *tri_out,

@@ -16,6 +16,10 @@ struct cm_progress;
 int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t *tri_out,
                            struct cm_progress *progress);
 
+/* The same by ear clipping alone, without the flips: any triangulation,
+ * for uses that only walk it (visibility). 0, CM_NO_MEMORY or 1. */
+int cm_polygon_ear_clip(const double *xy, const int32_t *idx, long m, int32_t *tri_out);
+
 /* Triangle adjacency: nbr[3t + i] is the triangle across the edge opposite
  * corner i of triangle t, -1 on the boundary. 0, or CM_NO_MEMORY. */
 int cm_tri_adjacency(const int32_t *tri, long nt, int32_t *nbr);

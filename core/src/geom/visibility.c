@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geom/pointgrid.h"
 #include "geom/polytri.h"
 #include "geom/predicates.h"
 
@@ -80,25 +81,51 @@ static void visible_from(const vis_ctx *c, long s, unsigned char *row)
     propagate(c, s, row, top);
 }
 
-int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned char *vis)
+struct cm_visrows {
+    vis_ctx c;
+    int32_t *nbr, *first;
+};
+
+void cm_visrows_free(cm_visrows *v)
+{
+    if (!v) return;
+    free(v->nbr), free(v->first), free(v->c.stack);
+    free(v);
+}
+
+cm_visrows *cm_visrows_create(const double *xy, long m, const int32_t *tri)
 {
     long nt = m - 2;
-    int32_t *nbr = malloc((size_t)(3 * nt) * sizeof *nbr);
-    int32_t *first = malloc((size_t)m * sizeof *first);
+    cm_visrows *v = calloc(1, sizeof *v);
+    if (!v) return NULL;
+    v->nbr = malloc((size_t)(3 * nt) * sizeof *v->nbr);
+    v->first = malloc((size_t)m * sizeof *v->first);
     crossing *stack = malloc((size_t)(nt + 1) * sizeof *stack);
-    int status = -1;
-    if (!nbr || !first || !stack || cm_tri_adjacency(tri, nt, nbr) != 0) goto done;
-    for (long v = 0; v < m; v++) first[v] = -1;
+    v->c = (vis_ctx){xy, m, tri, v->nbr, v->first, stack};
+    if (!v->nbr || !v->first || !stack || cm_tri_adjacency(tri, nt, v->nbr) != 0) {
+        cm_visrows_free(v);
+        return NULL;
+    }
+    for (long i = 0; i < m; i++) v->first[i] = -1;
     for (long t = 0; t < nt; t++)
         for (int i = 0; i < 3; i++)
-            if (tri[3 * t + (i + 1) % 3] == (tri[3 * t + i] + 1) % m) first[tri[3 * t + i]] = (int32_t)(3 * t + i);
-    vis_ctx c = {xy, m, tri, nbr, first, stack};
-    memset(vis, 0, (size_t)m * (size_t)m);
-    for (long s = 0; s < m; s++) visible_from(&c, s, vis + (size_t)s * (size_t)m);
-    status = 0;
-done:
-    free(nbr), free(first), free(stack);
-    return status;
+            if (tri[3 * t + (i + 1) % 3] == (tri[3 * t + i] + 1) % m) v->first[tri[3 * t + i]] = (int32_t)(3 * t + i);
+    return v;
+}
+
+void cm_visrows_row(cm_visrows *v, long s, unsigned char *row)
+{
+    memset(row, 0, (size_t)v->c.m);
+    visible_from(&v->c, s, row);
+}
+
+int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned char *vis)
+{
+    cm_visrows *v = cm_visrows_create(xy, m, tri);
+    if (!v) return -1;
+    for (long s = 0; s < m; s++) cm_visrows_row(v, s, vis + (size_t)s * (size_t)m);
+    cm_visrows_free(v);
+    return 0;
 }
 
 /* ---- the exact segment test ---------------------------------------------- */
@@ -225,14 +252,17 @@ int cm_kernel_point(const double *xy, long m, double out[2])
 /* ---- ear clipping over exact points -------------------------------------- */
 
 /* The ring of remaining vertices, their turn (sign of the orientation at
- * the vertex), cached ear flags, and the vertices that are not strictly
- * convex: only those can block an ear, and a vertex never turns from
- * convex back to reflex while ears are cut. */
+ * the vertex) and cached ear flags. Only vertices that are not strictly
+ * convex can block an ear, and a vertex never turns from convex back to
+ * reflex while ears are cut: the input points among them sit in a grid
+ * (only those in an ear's bounding box are tested), the few constructed
+ * points (approximate coordinates) in a list tested every time. */
 typedef struct {
     cm_xpool *pool;
     const long *ids;
     long *prev, *next, *blockers, nblockers;
     signed char *turn, *ear, *gone;
+    cm_pointgrid grid;
 } ear_ctx;
 
 static int xo(const ear_ctx *e, long a, long b, long c)
@@ -240,34 +270,73 @@ static int xo(const ear_ctx *e, long a, long b, long c)
     return cm_xorient(e->pool, e->ids[a], e->ids[b], e->ids[c]);
 }
 
+static int xinside(const ear_ctx *e, long a, long b, long c, long v)
+{
+    return v != a && v != b && v != c && xo(e, a, b, v) >= 0 && xo(e, b, c, v) >= 0 && xo(e, c, a, v) >= 0;
+}
+
 static int xear_blocked(ear_ctx *e, long a, long b, long c)
 {
     long kept = 0;
     int blocked = 0;
-    for (long i = 0; i < e->nblockers; i++) {
+    for (long i = 0; i < e->nblockers; i++) { /* constructed points */
         long v = e->blockers[i];
         if (e->gone[v] || e->turn[v] > 0) continue; /* drop it for good */
         e->blockers[kept++] = v;
-        if (blocked || v == a || v == b || v == c) continue;
-        blocked = xo(e, a, b, v) >= 0 && xo(e, b, c, v) >= 0 && xo(e, c, a, v) >= 0;
+        if (!blocked) blocked = xinside(e, a, b, c, v);
     }
     e->nblockers = kept;
+    if (blocked || e->grid.count == 0) return blocked;
+    /* the triangle's bounding box, widened to hold its exact corners */
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    const long corners[3] = {a, b, c};
+    for (int i = 0; i < 3; i++) {
+        const double *q = cm_xpool_xy(e->pool, e->ids[corners[i]]);
+        int exact = cm_xpool_is_input(e->pool, e->ids[corners[i]]);
+        for (int d = 0; d < 2; d++) {
+            double slack = exact ? 0.0 : 1e-10 * (fabs(q[0]) + fabs(q[1])) + 1e-300;
+            lo[d] = fmin(lo[d], q[d] - slack), hi[d] = fmax(hi[d], q[d] + slack);
+        }
+    }
+    long cells[4];
+    cm_pointgrid_range(&e->grid, lo[0], lo[1], hi[0], hi[1], cells);
+    for (long cy = cells[2]; cy <= cells[3] && !blocked; cy++)
+        for (long cx = cells[0]; cx <= cells[1] && !blocked; cx++)
+            for (long v = e->grid.head[cy * e->grid.nx + cx]; v >= 0 && !blocked; v = e->grid.next[v])
+                blocked = xinside(e, a, b, c, v);
     return blocked;
 }
 
 static void xupdate_vertex(ear_ctx *e, long v)
 {
     e->turn[v] = (signed char)xo(e, e->prev[v], v, e->next[v]);
+    if (e->turn[v] > 0) cm_pointgrid_remove(&e->grid, v);
     e->ear[v] = e->turn[v] > 0 && !xear_blocked(e, e->prev[v], v, e->next[v]);
 }
 
 static int clip_xears(ear_ctx *e, long k, int32_t *tri_out)
 {
-    for (long i = 0; i < k; i++) e->prev[i] = (i + k - 1) % k, e->next[i] = (i + 1) % k, e->gone[i] = 0;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    long reflex = 0;
+    for (long i = 0; i < k; i++) {
+        e->prev[i] = (i + k - 1) % k, e->next[i] = (i + 1) % k, e->gone[i] = 0;
+        const double *q = cm_xpool_xy(e->pool, e->ids[i]);
+        for (int d = 0; d < 2; d++) lo[d] = fmin(lo[d], q[d]), hi[d] = fmax(hi[d], q[d]);
+    }
     e->nblockers = 0;
     for (long i = 0; i < k; i++) {
         e->turn[i] = (signed char)xo(e, e->prev[i], i, e->next[i]);
-        if (e->turn[i] <= 0) e->blockers[e->nblockers++] = i;
+        reflex += e->turn[i] <= 0;
+    }
+    if (cm_pointgrid_init(&e->grid, k, lo, hi, reflex) != 0) return -1;
+    for (long i = 0; i < k; i++) {
+        if (e->turn[i] > 0) continue;
+        if (cm_xpool_is_input(e->pool, e->ids[i])) {
+            const double *q = cm_xpool_xy(e->pool, e->ids[i]);
+            cm_pointgrid_insert(&e->grid, i, q[0], q[1]);
+        } else {
+            e->blockers[e->nblockers++] = i;
+        }
     }
     for (long i = 0; i < k; i++) e->ear[i] = e->turn[i] > 0 && !xear_blocked(e, e->prev[i], i, e->next[i]);
     long remaining = k, v = 0, misses = 0, t = 0;
@@ -281,6 +350,7 @@ static int clip_xears(ear_ctx *e, long k, int32_t *tri_out)
         tri_out[3 * t] = (int32_t)a, tri_out[3 * t + 1] = (int32_t)v, tri_out[3 * t + 2] = (int32_t)c;
         t++;
         e->next[a] = c, e->prev[c] = a, e->gone[v] = 1;
+        cm_pointgrid_remove(&e->grid, v);
         remaining--;
         xupdate_vertex(e, a);
         xupdate_vertex(e, c);
@@ -297,10 +367,11 @@ int cm_xtriangulate(cm_xpool *pool, const long *ids, long k, int32_t *tri_out)
 {
     size_t n = (size_t)k;
     ear_ctx e = {pool, ids, malloc(n * sizeof(long)), malloc(n * sizeof(long)),
-                 malloc(n * sizeof(long)), 0, malloc(n), malloc(n), malloc(n)};
+                 malloc(n * sizeof(long)), 0, malloc(n), malloc(n), malloc(n), .grid = {.head = NULL}};
     int status = -1;
     if (e.prev && e.next && e.blockers && e.turn && e.ear && e.gone) status = clip_xears(&e, k, tri_out);
     free(e.prev), free(e.next), free(e.blockers), free(e.turn), free(e.ear), free(e.gone);
+    cm_pointgrid_clear(&e.grid);
     return status;
 }
 

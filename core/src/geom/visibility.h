@@ -24,6 +24,13 @@
  * from s). Returns 0, or -1 out of memory. */
 int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned char *vis);
 
+/* The same one row at a time, in O(m) memory: create (NULL when out of
+ * memory), then row s into row[0..m-1] as many times as wanted. */
+typedef struct cm_visrows cm_visrows;
+cm_visrows *cm_visrows_create(const double *xy, long m, const int32_t *tri);
+void cm_visrows_row(cm_visrows *v, long s, unsigned char *row);
+void cm_visrows_free(cm_visrows *v);
+
 /* 1 if the open segment ab lies strictly inside the simple counter-clockwise
  * polygon xy[0..m-1]. ia (ib) is the polygon vertex a (b) is, or -1 when a
  * (b) is a point that must itself lie strictly inside. Exact, O(m). */

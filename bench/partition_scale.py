@@ -1,0 +1,101 @@
+#!/usr/bin/python3
+"""The partition's growth with n, two builds side by side in one run.
+
+    partition_scale.py --pairs DIR --old OLD/compatmesh --new NEW/compatmesh [--only SUBSTR]
+
+DIR from `cm_gen_pairs --out DIR --set scale`. Each pair is triangulated
+with `compatmesh triangulate --no-remesh` by both builds, one after the
+other, under /usr/bin/time -v: CPU seconds (user + system), peak resident
+memory, Steiner vertices, overlay fallbacks, smallest angle and validity
+(report.json). Prints a Markdown table, the new/old ratios and the growth
+exponents of CPU time in n per family (least squares on log-log).
+"""
+import argparse
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+
+def run(binary, files, out_dir):
+    cmd = ["/usr/bin/time", "-v", binary, "triangulate", *files, "--no-remesh", "--out-dir", out_dir]
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit(f"partition_scale: {' '.join(cmd)} failed:\n{p.stderr[-2000:]}")
+    user = float(re.search(r"User time \(seconds\): ([\d.]+)", p.stderr).group(1))
+    system = float(re.search(r"System time \(seconds\): ([\d.]+)", p.stderr).group(1))
+    rss = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", p.stderr).group(1))
+    with open(os.path.join(out_dir, "report.json")) as f:
+        r = json.load(f)
+    angle = min(float(m) for m in re.findall(r"min angle ([\d.]+) deg", p.stdout))
+    return {"cpu": user + system, "rss_mb": rss / 1024.0, "steiner": r["steiner"],
+            "fallbacks": r["fallback_count"], "valid": r["valid"], "angle": angle}
+
+
+def family(name):
+    return name.split("_n")[0]
+
+
+def exponents(rows, which):
+    out = {}
+    for fam in sorted({family(r["name"]) for r in rows}):
+        pts = [(math.log(r["n"]), math.log(max(r[which]["cpu"], 1e-3))) for r in rows if family(r["name"]) == fam]
+        if len(pts) < 2:
+            continue
+        mx = sum(x for x, _ in pts) / len(pts)
+        my = sum(y for _, y in pts) / len(pts)
+        sxx = sum((x - mx) ** 2 for x, _ in pts)
+        if sxx > 0:
+            out[fam] = sum((x - mx) * (y - my) for x, y in pts) / sxx
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--pairs", required=True)
+    ap.add_argument("--old", required=True)
+    ap.add_argument("--new", required=True)
+    ap.add_argument("--only", default="")
+    a = ap.parse_args()
+    rows = []
+    with open(os.path.join(a.pairs, "pairs.txt")) as f:
+        for line in f:
+            parts = line.split()
+            if len(parts) < 3 or a.only not in parts[0]:
+                continue
+            name, files = parts[0], [os.path.join(a.pairs, x) for x in parts[1:]]
+            n = int(re.search(r"_n(\d+)", name).group(1))
+            row = {"name": name, "n": n}
+            with tempfile.TemporaryDirectory() as tmp:
+                for which, binary in (("old", a.old), ("new", a.new)):
+                    row[which] = run(binary, files, os.path.join(tmp, which))
+            rows.append(row)
+            o, w = row["old"], row["new"]
+            print(f"{name}: old {o['cpu']:.2f} s {o['rss_mb']:.0f} MB {o['steiner']} St; "
+                  f"new {w['cpu']:.2f} s {w['rss_mb']:.0f} MB {w['steiner']} St", file=sys.stderr)
+    print("| pair | n | old CPU s | new CPU s | new/old | old MB | new MB | old Steiner | new Steiner "
+          "| old fallbacks | new fallbacks | old angle | new angle | valid |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for r in rows:
+        o, w = r["old"], r["new"]
+        print(f"| {r['name']} | {r['n']} | {o['cpu']:.2f} | {w['cpu']:.2f} | {w['cpu'] / max(o['cpu'], 1e-3):.2f} "
+              f"| {o['rss_mb']:.0f} | {w['rss_mb']:.0f} | {o['steiner']} | {w['steiner']} | {o['fallbacks']} "
+              f"| {w['fallbacks']} | {o['angle']:.2f} | {w['angle']:.2f} | {'yes' if o['valid'] and w['valid'] else 'NO'} |")
+    eo, en = exponents(rows, "old"), exponents(rows, "new")
+    print()
+    for fam in eo:
+        steps = []
+        sized = sorted((r for r in rows if family(r["name"]) == fam), key=lambda r: r["n"])
+        for x, y in zip(sized, sized[1:]):
+            e = [math.log(max(y[w]["cpu"], 1e-3) / max(x[w]["cpu"], 1e-3)) / math.log(y["n"] / x["n"])
+                 for w in ("old", "new")]
+            steps.append(f"{x['n']} to {y['n']}: n^{e[0]:.2f} / n^{e[1]:.2f}")
+        print(f"- {fam}: CPU time grows as n^{eo[fam]:.2f} (old), n^{en.get(fam, float('nan')):.2f} (new) "
+              f"over all sizes; old / new by step: {'; '.join(steps)}")
+
+
+if __name__ == "__main__":
+    main()

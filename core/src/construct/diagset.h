@@ -1,0 +1,49 @@
+/* Sets of common diagonals: one bit per vertex pair of a polygon (n^2 / 8
+ * bytes, an eighth of a byte table), and views that read a sub-polygon's
+ * pairs out of its ancestor's set through a map of vertex indices.
+ *
+ * A diagonal between two vertices of a sub-polygon cut from a polygon
+ * along its diagonals is a diagonal of the sub-polygon iff it is one of
+ * the polygon: so every such sub-polygon reads the input's set. */
+#ifndef CM_CONSTRUCT_DIAGSET_H
+#define CM_CONSTRUCT_DIAGSET_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct cm_diagset {
+    long n;
+    size_t stride; /* 64-bit words per row */
+    uint64_t *bits;
+} cm_diagset;
+
+/* An empty set over n vertices. Returns 0 or -1 out of memory. */
+int cm_diagset_init(cm_diagset *s, long n);
+void cm_diagset_clear(cm_diagset *s);
+/* The set of the pairs (i, j) with matrix[i * n + j] != 0. 0 or -1. */
+int cm_diagset_from_matrix(cm_diagset *s, long n, const unsigned char *matrix);
+
+static inline void cm_diagset_add(cm_diagset *s, long i, long j)
+{
+    s->bits[(size_t)i * s->stride + (size_t)j / 64] |= (uint64_t)1 << (j % 64);
+    s->bits[(size_t)j * s->stride + (size_t)i / 64] |= (uint64_t)1 << (i % 64);
+}
+
+static inline int cm_diagset_has(const cm_diagset *s, long i, long j)
+{
+    return (int)(s->bits[(size_t)i * s->stride + (size_t)j / 64] >> (j % 64)) & 1;
+}
+
+/* Sub-polygon vertex i is vertex map[i] of the set's polygon (map NULL:
+ * the identity). */
+typedef struct cm_diagview {
+    const cm_diagset *set;
+    const int32_t *map;
+} cm_diagview;
+
+static inline int cm_diagview_has(const cm_diagview *v, long i, long j)
+{
+    return v->map ? cm_diagset_has(v->set, v->map[i], v->map[j]) : cm_diagset_has(v->set, i, j);
+}
+
+#endif
