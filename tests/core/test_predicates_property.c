@@ -464,7 +464,7 @@ static void check_blend(tally *t, double p[6][2])
 static void test_blend(long rounds)
 {
     rp_rng rng = {0x0f0f0f0f12345678ull};
-    tally small = {0}, flat = {0}, moved = {0}, random = {0};
+    tally small = {0}, flat = {0}, turned = {0}, moved = {0}, random = {0};
     double p[6][2];
     for (long r = 0; r < rounds; r++) {
         /* small lattice triangles (many exact ties), scaled and shifted */
@@ -497,6 +497,25 @@ static void test_blend(long rounds)
         }
         check_blend(&moved, p);
 
+        /* turned half a turn about c: p1 = 2c - p0, so the area is
+         * A0 (1 - 2s)^2, zero at s = 1/2 and M^2 = A0 A1 exactly; c and
+         * the offsets have few bits, so both ends are exact */
+        int ec = random_scale(&rng, 200);
+        for (int k = 0; k < 2; k++) {
+            double c = random_short(&rng, 20, ec);
+            for (int m = 0; m < 3; m++) {
+                double off = random_short(&rng, 20, ec - (int)rp_below(&rng, 30));
+                p[m][k] = c + off;
+                p[3 + m][k] = c - off;
+            }
+        }
+        check_blend(&turned, p);
+        {
+            double *q = &p[rp_below(&rng, 6)][rp_below(&rng, 2)];
+            *q = nudge(&rng, *q);
+        }
+        check_blend(&moved, p);
+
         int lo, hi;
         random_window(&rng, r, 40, &lo, &hi);
         for (int m = 0; m < 6; m++)
@@ -505,7 +524,8 @@ static void test_blend(long rounds)
     }
     report("blend small lattice", &small, 0.5);
     report("blend flat at s = 1/2", &flat, 1.0);
-    report("blend flat moved one ulp", &moved, 0.0);
+    report("blend turned half a turn", &turned, 1.0);
+    report("blend flat or turned, moved one ulp", &moved, 0.0);
     report("blend random", &random, 0.0);
 }
 
