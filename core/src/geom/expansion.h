@@ -4,7 +4,7 @@
  * nonoverlapping and in increasing magnitude, so the last nonzero component
  * carries the sign of the sum.
  *
- * Every operation here is exact under IEEE round-to-nearest-even provided
+ * Every operation here is exact under IEEE round-to-nearest provided
  * nothing overflows and every product's exact value is a multiple of
  * 2^-1074 (its rounding error is then a double). Sums need no such
  * condition: the rounding error of a sum of doubles is always a double.
@@ -69,12 +69,22 @@ static inline void cm_two_two_diff(double a1, double a0, double b1, double b0,
     cm_two_sum(q, t2, &x[3], &x[2]);
 }
 
-/* Sign of an expansion (zeros allowed among its components). */
-static inline int cm_expansion_sign(int n, const double *e)
+/* Sign of an expansion whose components are known nonoverlapping and
+ * increasing in magnitude (zeros allowed): that of the largest nonzero. */
+static inline int cm_expansion_sign_ordered(int n, const double *e)
 {
     while (n > 0 && e[n - 1] == 0.0) n--;
     return n == 0 ? 0 : e[n - 1] > 0.0 ? 1 : -1;
 }
+
+/* Sign of the exact sum e[0] + ... + e[n-1], for the results of the
+ * functions below. Those follow the paper's algorithms, whose outputs are
+ * nonoverlapping under its stated conditions; the sign does not rest on
+ * that: it takes the largest component's sign only when that component
+ * provably outweighs the others, else regrows the components into an
+ * expansion in place (Grow-Expansion, which keeps it nonoverlapping under
+ * any tie-breaking). May reorder e. */
+int cm_expansion_sign(int n, double *e);
 
 /* An approximation of the sum (the components added in increasing
  * magnitude, each addition rounded). */
@@ -86,20 +96,28 @@ double cm_expansion_estimate(int n, const double *e);
  * tie-breaking). e holds n + 1; returns the new length. */
 int cm_expansion_grow(int n, double *e, double b);
 
-/* h = e + f and h = e - f: e grown by each component of f (e an expansion,
- * f any sequence of doubles). h holds elen + flen, distinct from e and f;
- * returns its length. */
+/* h = e + f and h = e - f exactly (Fast-Expansion-Sum: the components
+ * merged by magnitude, Two-Sum along them), zero components dropped. h
+ * holds elen + flen, distinct from e and f; returns its length. */
 int cm_expansion_sum(int elen, const double *e, int flen, const double *f,
                      double *h);
 int cm_expansion_diff(int elen, const double *e, int flen, const double *f,
                       double *h);
 
-/* h = h + sign e f, sign +1 or -1: the two halves of the exact product of
- * every pair of components grown into the expansion h (e and f any
- * sequences of doubles). h holds n + 2 elen flen, distinct from e and f;
- * returns its new length. */
-int cm_expansion_add_product(int n, double *h, int elen, const double *e,
-                             int flen, const double *f, double sign);
+/* h = e * b exactly (Scale-Expansion), zero components dropped; h holds
+ * 2 elen, distinct from e. Returns its length. */
+int cm_expansion_scale(int elen, const double *e, double b, double *h);
+
+/* h = e * f exactly: e scaled by each component of f, the results summed.
+ * h holds 2 elen flen and scratch 2 elen (flen + 1), distinct from each
+ * other and from e and f. Returns the length of h. */
+int cm_expansion_product(int elen, const double *e, int flen, const double *f,
+                         double *h, double *scratch);
+
+/* e in place as an expansion of the same value with fewer components
+ * (Compress: a downward then an upward pass of Two-Sum); returns the new
+ * length. */
+int cm_expansion_compress(int n, double *e);
 
 /* The exact difference a - b as an expansion of one or two components
  * (none if a = b); h holds 2. */

@@ -44,6 +44,7 @@
 #include <limits.h>
 #include <math.h>
 #include <stdint.h>
+#include <string.h>
 
 /* The error bounds count one rounding to double per operation. */
 #if FLT_EVAL_METHOD != 0
@@ -106,6 +107,16 @@ static int all_finite(const double *v, long count)
 
 /* ---- the expansion stages' range ---------------------------------------- */
 
+/* The biased exponent field: |v| in [2^(E - 1023), 2^(E - 1022)) for a
+ * normal v (E from 1 to 2046), E = 0 for zero and subnormals, 2047 for
+ * infinity and NaN. */
+static int biased_exponent(double v)
+{
+    uint64_t bits;
+    memcpy(&bits, &v, sizeof bits);
+    return (int)(bits >> 52 & 0x7ff);
+}
+
 /* A power of two 2^*shift that takes every nonzero v[i] into [2^low,
  * 2^high) as a multiple of 2^low: returns 1 with it, 0 if there is none
  * (the values span more than high - low binades), -1 if a value is not
@@ -114,8 +125,6 @@ static int exact_shift(const double *v, long count, int low, int high,
                        int *shift)
 {
     *shift = 0;
-    /* |v| >= 2^(low + 53): a double's lowest bit is at least 2^-52 |v| */
-    if (all_within(v, count, ldexp(1.0, low + 53), ldexp(1.0, high - 1))) return 1;
     int top = INT_MIN, bottom = INT_MAX;
     for (long i = 0; i < count; i++) {
         if (v[i] == 0.0) continue;
@@ -134,15 +143,26 @@ static int exact_shift(const double *v, long count, int low, int high,
     return 1;
 }
 
-/* out = in * 2^shift for the expansion stages; 0 to go to GMP, -1 if an
- * input is not finite. */
-static int scale_for_exact(const double *in, double *out, int count,
-                           int degree)
+/* out = in * 2^shift for the expansion stages of a determinant of degree
+ * `degree`; 0 to go to GMP, -1 if an input is not finite. */
+static inline int scale_for_exact(const double *in, double *out, int count,
+                                  int degree)
 {
+    const int low = EXACT_LOW(degree), high = EXACT_HIGH(degree);
+    /* Usually every input is 0 or normal with an exponent that keeps its
+     * lowest bit (2^(E - 1075) or above) at or above 2^low and the value
+     * below 2^high as it is. */
+    int as_is = 1;
+    for (int i = 0; i < count; i++) {
+        int e = biased_exponent(in[i]);
+        as_is &= in[i] == 0.0 || (e >= low + 1075 && e <= high + 1022);
+        out[i] = in[i];
+    }
+    if (as_is) return 1;
     int shift;
-    int ok = exact_shift(in, count, EXACT_LOW(degree), EXACT_HIGH(degree), &shift);
-    if (ok == 1)
-        for (int i = 0; i < count; i++) out[i] = shift ? ldexp(in[i], shift) : in[i];
+    int ok = exact_shift(in, count, low, high, &shift);
+    if (ok == 1 && shift != 0)
+        for (int i = 0; i < count; i++) out[i] = ldexp(in[i], shift);
     return ok;
 }
 
@@ -163,8 +183,10 @@ static exact_diff diff_of(double a, double b)
 static int cross_exact(const exact_diff *p, const exact_diff *q,
                        const exact_diff *r, const exact_diff *s, double *h)
 {
-    int n = cm_expansion_add_product(0, h, p->n, p->v, q->n, q->v, 1.0);
-    return cm_expansion_add_product(n, h, r->n, r->v, s->n, s->v, -1.0);
+    double pq[8], rs[8], scratch[2 * 2 * 3];
+    int npq = cm_expansion_product(p->n, p->v, q->n, q->v, pq, scratch);
+    int nrs = cm_expansion_product(r->n, r->v, s->n, s->v, rs, scratch);
+    return cm_expansion_diff(npq, pq, nrs, rs, h);
 }
 
 /* ---- GMP, for inputs spanning too many binades (see the top) ----------- */
@@ -362,9 +384,28 @@ static int blend_positive_gmp(const double *const pts[6])
 
 /* ---- orient2d ------------------------------------------------------------ */
 
+/* Nonzero differences within 2^[-458, 500] have their lowest bits at or
+ * above 2^-510, so the products of two are exact as two doubles and below
+ * 2^1000. */
+#define ORIENT_EXACT_MIN 0x1p-458
+
 static int orient2d_adapt(const double a[2], const double b[2],
                           const double c[2])
 {
+    /* Exact differences (collinear outline points usually have them): the
+     * determinant is l - r with l = l1 + l0, r = r1 + r0 exactly, and
+     * rounding is monotone, so l1 > r1 implies l > r. */
+    double dx[4] = {a[0] - c[0], b[0] - c[0], a[1] - c[1], b[1] - c[1]};
+    if (cm_diff_tail(a[0], c[0], dx[0]) == 0.0 && cm_diff_tail(b[0], c[0], dx[1]) == 0.0 &&
+        cm_diff_tail(a[1], c[1], dx[2]) == 0.0 && cm_diff_tail(b[1], c[1], dx[3]) == 0.0 &&
+        all_within(dx, 4, ORIENT_EXACT_MIN, ORIENT_MAX)) {
+        double l1, l0, r1, r0;
+        cm_two_product(dx[0], dx[3], &l1, &l0);
+        cm_two_product(dx[2], dx[1], &r1, &r0);
+        if (l1 != r1) return l1 > r1 ? 1 : -1;
+        return (l0 > r0) - (l0 < r0);
+    }
+
     const double in[6] = {a[0], a[1], b[0], b[1], c[0], c[1]};
     double v[6];
     int ok = scale_for_exact(in, v, 6, 2);
@@ -383,7 +424,7 @@ static int orient2d_adapt(const double a[2], const double b[2],
     double acxt = cm_diff_tail(v[0], v[4], acx), bcxt = cm_diff_tail(v[2], v[4], bcx);
     double acyt = cm_diff_tail(v[1], v[5], acy), bcyt = cm_diff_tail(v[3], v[5], bcy);
     if (acxt == 0.0 && bcxt == 0.0 && acyt == 0.0 && bcyt == 0.0)
-        return cm_expansion_sign(4, det_b); /* exact differences: exact */
+        return cm_expansion_sign_ordered(4, det_b); /* exact differences: exact */
 
     double errbound = orient_errbound_c * detsum + result_errbound * fabs(det);
     det += (acx * bcyt - acy * bcxt) + (bcy * acxt - bcx * acyt);
@@ -419,18 +460,21 @@ int cm_orient2d(const double a[2], const double b[2], const double c[2])
  * components; h holds 32. */
 static int lifted(int mn, const double *minor, double dx, double dy, double *h)
 {
-    double t[8];
-    int tn = cm_expansion_add_product(0, t, mn, minor, 1, &dx, 1.0);
-    int n = cm_expansion_add_product(0, h, tn, t, 1, &dx, 1.0);
-    tn = cm_expansion_add_product(0, t, mn, minor, 1, &dy, 1.0);
-    return cm_expansion_add_product(n, h, tn, t, 1, &dy, 1.0);
+    double t[8], x2[16], y2[16];
+    int tn = cm_expansion_scale(mn, minor, dx, t);
+    int xn = cm_expansion_scale(tn, t, dx, x2);
+    tn = cm_expansion_scale(mn, minor, dy, t);
+    int yn = cm_expansion_scale(tn, t, dy, y2);
+    return cm_expansion_sum(xn, x2, yn, y2, h);
 }
 
 /* dx^2 + dy^2 exactly; h holds 16. */
 static int lift_exact(const exact_diff *dx, const exact_diff *dy, double *h)
 {
-    int n = cm_expansion_add_product(0, h, dx->n, dx->v, dx->n, dx->v, 1.0);
-    return cm_expansion_add_product(n, h, dy->n, dy->v, dy->n, dy->v, 1.0);
+    double x2[8], y2[8], scratch[2 * 2 * 3];
+    int xn = cm_expansion_product(dx->n, dx->v, dx->n, dx->v, x2, scratch);
+    int yn = cm_expansion_product(dy->n, dy->v, dy->n, dy->v, y2, scratch);
+    return cm_expansion_sum(xn, x2, yn, y2, h);
 }
 
 static int incircle_adapt(const double a[2], const double b[2],
@@ -491,14 +535,16 @@ static int incircle_adapt(const double a[2], const double b[2],
     /* exact: the lifts times the minors of the exact differences */
     exact_diff ex[6];
     for (int i = 0; i < 6; i++) ex[i] = diff_of(v[i], v[6 + i % 2]);
-    double minor[16], lift[16], exact[3 * 512];
-    int en = 0;
+    double minor[16], lift[16], scratch[2 * 16 * 17], term[3][512], sum2[1024], exact[1536];
+    int tn[3];
     for (int r = 0; r < 3; r++) { /* rows a, b, c; minor of the other two */
         const exact_diff *p = &ex[2 * ((r + 1) % 3)], *q = &ex[2 * ((r + 2) % 3)];
-        int mn = cross_exact(&p[0], &q[1], &q[0], &p[1], minor);
-        int ln = lift_exact(&ex[2 * r], &ex[2 * r + 1], lift);
-        en = cm_expansion_add_product(en, exact, ln, lift, mn, minor, 1.0);
+        int mn = cm_expansion_compress(cross_exact(&p[0], &q[1], &q[0], &p[1], minor), minor);
+        int ln = cm_expansion_compress(lift_exact(&ex[2 * r], &ex[2 * r + 1], lift), lift);
+        tn[r] = cm_expansion_product(ln, lift, mn, minor, term[r], scratch);
     }
+    int sn = cm_expansion_sum(tn[0], term[0], tn[1], term[1], sum2);
+    int en = cm_expansion_sum(sn, sum2, tn[2], term[2], exact);
     return cm_expansion_sign(en, exact);
 }
 
@@ -582,7 +628,7 @@ static int polygon_orientation_adapt(const double *xy, long n)
         len = cm_expansion_grow(len, area, lo);
         len = cm_expansion_grow(len, area, hi);
     }
-    return cm_expansion_sign(len, area);
+    return cm_expansion_sign_ordered(len, area);
 }
 
 int cm_polygon_orientation(const double *xy, long n)
@@ -628,17 +674,19 @@ static int orient3d_adapt(const double a[3], const double b[3], const double c[3
     static const int minor_of[3][4] = {{4, 8, 5, 7}, {3, 8, 5, 6}, {3, 7, 4, 6}};
     double u[9];
     for (int i = 0; i < 9; i++) u[i] = v[3 + i] - v[i % 3];
-    double det_b[24], perm = 0.0;
-    int n = 0;
+    double term[3][8], t01[16], det_b[24], perm = 0.0;
+    int tn[3];
     for (int k = 0; k < 3; k++) {
         const int *m = minor_of[k];
         double p1, p0, q1, q0, minor[4];
         cm_two_product(u[m[0]], u[m[1]], &p1, &p0);
         cm_two_product(u[m[2]], u[m[3]], &q1, &q0);
         cm_two_two_diff(p1, p0, q1, q0, minor);
-        n = cm_expansion_add_product(n, det_b, 1, &u[k], 4, minor, k == 1 ? -1.0 : 1.0);
+        tn[k] = cm_expansion_scale(4, minor, u[k], term[k]);
         perm += fabs(u[k]) * (fabs(p1) + fabs(q1));
     }
+    int n01 = cm_expansion_diff(tn[0], term[0], tn[1], term[1], t01);
+    int n = cm_expansion_sum(n01, t01, tn[2], term[2], det_b);
     double det = cm_expansion_estimate(n, det_b);
     if (fabs(det) > orient3d_errbound_b * perm) return sign_of(det);
     int tails_zero = 1;
@@ -647,15 +695,15 @@ static int orient3d_adapt(const double a[3], const double b[3], const double c[3
 
     exact_diff ex[9];
     for (int i = 0; i < 9; i++) ex[i] = diff_of(v[3 + i], v[i % 3]);
-    double exact[3 * 64];
-    int en = 0;
+    double minor[16], scratch[2 * 16 * 3], big[3][64], b01[128], exact[192];
+    int bn[3];
     for (int k = 0; k < 3; k++) {
         const int *m = minor_of[k];
-        double minor[16];
         int mn = cross_exact(&ex[m[0]], &ex[m[1]], &ex[m[2]], &ex[m[3]], minor);
-        en = cm_expansion_add_product(en, exact, ex[k].n, ex[k].v, mn, minor,
-                                      k == 1 ? -1.0 : 1.0);
+        bn[k] = cm_expansion_product(mn, minor, ex[k].n, ex[k].v, big[k], scratch);
     }
+    int bn01 = cm_expansion_diff(bn[0], big[0], bn[1], big[1], b01);
+    int en = cm_expansion_sum(bn01, b01, bn[2], big[2], exact);
     return cm_expansion_sign(en, exact);
 }
 
@@ -695,20 +743,21 @@ static int blend_positive_adapt(const double *const pts[6])
         for (int j = 0; j < 2; j++)
             for (int c = 0; c < 2; c++)
                 d[4 * e + 2 * j + c] = diff_of(v[6 * e + 2 * (j + 1) + c], v[6 * e + c]);
-    double a0[16], a1[16], m2[32];
+    double a0[16], a1[16], m1[16], m2[16], m[32];
     int n0 = cross_exact(&d[0], &d[3], &d[1], &d[2], a0);
     int n1 = cross_exact(&d[4], &d[7], &d[5], &d[6], a1);
     if (cm_expansion_sign(n0, a0) <= 0 || cm_expansion_sign(n1, a1) <= 0) return 0;
-    int nm = cross_exact(&d[0], &d[7], &d[1], &d[6], m2); /* cross(b0-a0, c1-a1) */
-    nm = cm_expansion_add_product(nm, m2, d[4].n, d[4].v, d[3].n, d[3].v, 1.0);
-    nm = cm_expansion_add_product(nm, m2, d[5].n, d[5].v, d[2].n, d[2].v, -1.0);
-    if (cm_expansion_sign(nm, m2) >= 0) return 1;
+    int nm1 = cross_exact(&d[0], &d[7], &d[1], &d[6], m1); /* cross(b0-a0, c1-a1) */
+    int nm2 = cross_exact(&d[4], &d[3], &d[5], &d[2], m2); /* cross(b1-a1, c0-a0) */
+    int nm = cm_expansion_sum(nm1, m1, nm2, m2, m);
+    if (cm_expansion_sign(nm, m) >= 0) return 1;
     /* (2M)^2 < 4 A0 A1; times 4 is exact (no overflow, see the top) */
     for (int i = 0; i < n1; i++) a1[i] *= 4.0;
-    double t[2 * 16 * 16 + 2 * 32 * 32];
-    int tn = cm_expansion_add_product(0, t, n0, a0, n1, a1, 1.0);
-    tn = cm_expansion_add_product(tn, t, nm, m2, nm, m2, -1.0);
-    return cm_expansion_sign(tn, t) > 0;
+    double scratch[2 * 32 * 33], area[512], square[2048], diff[2560];
+    int an = cm_expansion_product(n0, a0, n1, a1, area, scratch);
+    int sn = cm_expansion_product(nm, m, nm, m, square, scratch);
+    int dn = cm_expansion_diff(an, area, sn, square, diff);
+    return cm_expansion_sign(dn, diff) > 0;
 }
 
 int cm_blend_positive(const double a0[2], const double b0[2], const double c0[2],
