@@ -8,6 +8,7 @@
  * degenerate ones rounded onto a line. Each family runs at ordinary, huge
  * and tiny scales. Any sign that differs from the reference fails. */
 #include "check.h"
+#include "geom/expansion.h"
 #include "geom/predicates.h"
 #include "random_polygons.h"
 
@@ -562,9 +563,118 @@ static void test_polygon_orientation(long rounds)
     report("polygon random", &random, 0.0);
 }
 
+/* ---- the expansion module on its own ----------------------------------- */
+
+/* out = v 2^1074, an integer for every finite double */
+static void scaled_integer(mpz_t out, double v)
+{
+    int e = 0;
+    long m = v == 0.0 ? 0 : (long)ldexp(frexp(v, &e), 53);
+    mpz_set_si(out, m);
+    if (m == 0) return;
+    if (e - 53 + 1074 >= 0)
+        mpz_mul_2exp(out, out, (mp_bitcnt_t)(e - 53 + 1074));
+    else
+        mpz_tdiv_q_2exp(out, out, (mp_bitcnt_t)(53 - 1074 - e));
+}
+
+/* out = (e[0] + ... + e[n-1]) 2^1074 (times 2^1074 again if `product`) */
+static void exact_sum(mpz_t out, const double *e, int n)
+{
+    mpz_set_ui(out, 0);
+    for (int i = 0; i < n; i++) {
+        scaled_integer(t0, e[i]);
+        mpz_add(out, out, t0);
+    }
+}
+
+/* Sums, differences, scalings, products and compression keep the exact
+ * value; the sign is that of the exact sum, also for sequences that are
+ * not expansions at all (unordered, overlapping, cancelling), where the
+ * largest-component shortcut does not apply. */
+static void test_expansion_arithmetic(long rounds)
+{
+    rp_rng rng = {0x1357924680aceull};
+    long wrong_value = 0, wrong_sign = 0, regrown = 0, not_shorter = 0;
+    double raw[24], e[25], f[25], h[2 * 25 * 25], scratch[2 * 25 * 26], copy[24];
+    mpz_t want, got;
+    mpz_inits(want, got, NULL);
+    for (long r = 0; r < rounds; r++) {
+        int n = 1 + (int)rp_below(&rng, 24), centre = (int)random_int(&rng, 400);
+        for (int i = 0; i < n; i++) {
+            switch (rp_below(&rng, 4)) {
+            case 0: raw[i] = random_double(&rng, centre - 60, centre); break;
+            case 1: raw[i] = i > 0 ? -raw[rp_below(&rng, (uint64_t)i)] : 1.0; break;
+            case 2: raw[i] = i > 0 ? ldexp(raw[i - 1], -(int)rp_below(&rng, 3)) : 3.0; break;
+            default: raw[i] = random_short(&rng, 8, centre - (int)rp_below(&rng, 120));
+            }
+        }
+        exact_sum(want, raw, n);
+
+        /* the sign of an arbitrary sequence */
+        for (int i = 0; i < n; i++) copy[i] = raw[i];
+        wrong_sign += cm_expansion_sign(n, copy) != mpz_sgn(want);
+        double rest = 0.0;
+        for (int i = 0; i < n - 1; i++) rest += fabs(raw[i]);
+        regrown += fabs(raw[n - 1]) <= rest;
+
+        /* grown from nothing: an expansion, its sign read off the top */
+        int en = 0;
+        for (int i = 0; i < n; i++) en = cm_expansion_grow(en, e, raw[i]);
+        exact_sum(got, e, en);
+        wrong_value += mpz_cmp(got, want) != 0;
+        wrong_sign += cm_expansion_sign_ordered(en, e) != mpz_sgn(want);
+
+        /* compressed */
+        for (int i = 0; i < en; i++) f[i] = e[i];
+        int cn = cm_expansion_compress(en, f);
+        exact_sum(got, f, cn);
+        wrong_value += mpz_cmp(got, want) != 0;
+        not_shorter += cn > en;
+
+        /* a second expansion, then e + f, e - f, e b, e f */
+        int fn = 0, m = 1 + (int)rp_below(&rng, 8);
+        for (int i = 0; i < m; i++)
+            fn = cm_expansion_grow(fn, f, random_double(&rng, centre - 80, centre));
+        mpz_t fe;
+        mpz_init(fe);
+        exact_sum(fe, f, fn);
+        int hn = cm_expansion_sum(en, e, fn, f, h);
+        exact_sum(got, h, hn);
+        mpz_add(t1, want, fe);
+        wrong_value += mpz_cmp(got, t1) != 0;
+        hn = cm_expansion_diff(en, e, fn, f, h);
+        exact_sum(got, h, hn);
+        mpz_sub(t1, want, fe);
+        wrong_value += mpz_cmp(got, t1) != 0;
+        wrong_sign += cm_expansion_sign(hn, h) != mpz_sgn(t1);
+        double b = random_double(&rng, -300, 300);
+        hn = cm_expansion_scale(en, e, b, h);
+        exact_sum(got, h, hn);
+        scaled_integer(t2, b);
+        mpz_mul(t1, want, t2);
+        mpz_mul_2exp(got, got, 1074); /* both sides times 2^2148 */
+        wrong_value += mpz_cmp(got, t1) != 0;
+        hn = cm_expansion_product(en, e, fn, f, h, scratch);
+        exact_sum(got, h, hn);
+        mpz_mul(t1, want, fe);
+        mpz_mul_2exp(got, got, 1074);
+        wrong_value += mpz_cmp(got, t1) != 0;
+        wrong_sign += cm_expansion_sign(hn, h) != mpz_sgn(t1);
+        mpz_clear(fe);
+    }
+    mpz_clears(want, got, NULL);
+    CHECK_MSG(wrong_value == 0, "%ld results with a wrong value", wrong_value);
+    CHECK_MSG(wrong_sign == 0, "%ld wrong signs", wrong_sign);
+    CHECK_MSG(not_shorter == 0, "%ld compressions grew", not_shorter);
+    /* the sequences reach the sign's regrowing branch */
+    CHECK_MSG(regrown > rounds / 10, "only %ld of %ld signs regrown", regrown, rounds);
+}
+
 int main(void)
 {
     ref_init();
+    test_expansion_arithmetic(50000);
     test_orient2d(400000);
     test_incircle(150000);
     test_orient3d(100000);
