@@ -41,9 +41,11 @@ int cm_expansion_sign(int n, double *e)
     if (fabs(e[n - 1]) > rest * (1.0 + 4.0 * (double)n * CM_EPS))
         return e[n - 1] > 0.0 ? 1 : -1;
     /* regrow: after i components the expansion occupies e[0..i-1] at most,
-     * so growing by e[i] (read first) overwrites nothing unread */
+     * so growing by e[i] (read first) overwrites nothing unread; zeros
+     * after it keep the value of e[0..n-1] for the caller */
     int k = 0;
     for (int i = 0; i < n; i++) k = cm_expansion_grow(k, e, e[i]);
+    for (int i = k; i < n; i++) e[i] = 0.0;
     return cm_expansion_sign_ordered(k, e);
 }
 

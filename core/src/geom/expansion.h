@@ -83,7 +83,8 @@ static inline int cm_expansion_sign_ordered(int n, const double *e)
  * that: it takes the largest component's sign only when that component
  * provably outweighs the others, else regrows the components into an
  * expansion in place (Grow-Expansion, which keeps it nonoverlapping under
- * any tie-breaking). May reorder e. */
+ * any tie-breaking). May rewrite e[0..n-1] as another sequence of the
+ * same sum. */
 int cm_expansion_sign(int n, double *e);
 
 /* An approximation of the sum (the components added in increasing
@@ -114,9 +115,9 @@ int cm_expansion_scale(int elen, const double *e, double b, double *h);
 int cm_expansion_product(int elen, const double *e, int flen, const double *f,
                          double *h, double *scratch);
 
-/* e in place as an expansion of the same value with fewer components
- * (Compress: a downward then an upward pass of Two-Sum); returns the new
- * length. */
+/* e in place as an expansion of the same value, no longer and usually
+ * much shorter (Compress: a downward then an upward pass of Two-Sum);
+ * returns the new length. */
 int cm_expansion_compress(int n, double *e);
 
 /* The exact difference a - b as an expansion of one or two components
