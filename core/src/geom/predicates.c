@@ -27,8 +27,9 @@
  * about 2^-106 times a nonzero permanent, stay above 2^-1000. Every
  * magnitude stays below a few dozen times 2^(d (H + 1)) <= 2^940 (2^972 for
  * the polygon's 2^31 terms): no overflow. Inputs spanning more binades than
- * H - L (orient2d about 2^900 between the largest and the smallest nonzero
- * coordinate, incircle about 2^400) have no such scaling and are evaluated
+ * H - L less a mantissa (orient2d about 2^860 between the largest and the
+ * smallest nonzero coordinate, orient3d 2^550, incircle and the blend
+ * 2^400) have no such scaling and are evaluated
  * with GMP integers instead: every finite double is m * 2^e with an integer
  * m, so scaling all inputs of one call by 2^-emin (emin the smallest such
  * e) turns them into integers without changing any sign.
