@@ -157,22 +157,34 @@ static int rollback_restores(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *
     return ok;
 }
 
+/* Random pair number seed (8 to 37 vertices), its construction and the
+ * kmesh on it with a 25 degree cap; 0 on success, else nothing is left
+ * allocated. */
+static int random_kmesh(int seed, double **a, double **b, cm_mesh *m, cm_kmesh *km)
+{
+    int n = 8 + seed % 30;
+    *a = polygon((size_t)n), *b = polygon((size_t)n);
+    random_pair(seed, n, *a, *b);
+    const double *in[2] = {*a, *b};
+    *m = (cm_mesh){0};
+    if (construct(in, 2, (size_t)n, m) || cm_kmesh_build(km, m, (size_t)n) != CM_OK) {
+        cm_mesh_clear(m), free(*a), free(*b);
+        return -1;
+    }
+    cm_kmesh_set_caps(km, 25 / DEG, NULL, NULL);
+    return 0;
+}
+
 static void test_property_operations(int pairs, int operations)
 {
     int invalid = 0, stale = 0, moved = 0, restore = 0, built = 0;
     for (int seed = 0; seed < pairs; seed++) {
-        int n = 8 + seed % 30;
-        double *a = polygon((size_t)n), *b = polygon((size_t)n);
-        random_pair(seed, n, a, b);
-        const double *in[2] = {a, b};
-        cm_mesh m = {0};
+        double *a, *b;
+        cm_mesh m;
         cm_kmesh km;
-        if (construct(in, 2, (size_t)n, &m) || cm_kmesh_build(&km, &m, (size_t)n) != CM_OK) {
-            cm_mesh_clear(&m), free(a), free(b);
-            continue;
-        }
+        if (random_kmesh(seed, &a, &b, &m, &km)) continue;
+        const double *in[2] = {a, b};
         built++;
-        cm_kmesh_set_caps(&km, 25 / DEG, NULL, NULL);
         rp_rng rng = {(uint64_t)seed * 7919};
         cm_ibuf star = {0};
         cm_work work = {0};
@@ -205,18 +217,12 @@ static void test_map_descent(int pairs)
 {
     int invalid = 0, moved = 0, stale = 0, rose = 0, stepped = 0, built = 0, dropped = 0;
     for (int seed = 0; seed < pairs; seed++) {
-        int n = 8 + seed % 30;
-        double *a = polygon((size_t)n), *b = polygon((size_t)n);
-        random_pair(seed, n, a, b);
-        const double *in[2] = {a, b};
-        cm_mesh m = {0};
+        double *a, *b;
+        cm_mesh m;
         cm_kmesh km;
-        if (construct(in, 2, (size_t)n, &m) || cm_kmesh_build(&km, &m, (size_t)n) != CM_OK) {
-            cm_mesh_clear(&m), free(a), free(b);
-            continue;
-        }
+        if (random_kmesh(seed, &a, &b, &m, &km)) continue;
+        const double *in[2] = {a, b};
         built++;
-        cm_kmesh_set_caps(&km, 25 / DEG, NULL, NULL);
         cm_work work = {0};
         for (int i = 0; i < 3; i++) CHECK(cm_refine_step(&km, 4, &work) >= 0);
         cm_work_free(&work);

@@ -460,21 +460,30 @@ void cm_kmesh_flip(cm_kmesh *km, int32_t c)
     cm_kmesh_touch(km, o / 3);
 }
 
-int32_t cm_kmesh_split(cm_kmesh *km, int32_t c, const double *pts)
+/* A new vertex at pts (one point per geometry) and two new triangles, all
+ * or nothing: the vertex, or -1 out of memory. */
+static int32_t new_vertex_and_two_triangles(cm_kmesh *km, const double *pts, int32_t *ta, int32_t *tb)
 {
     int32_t m = new_vertex(km);
     if (m < 0) return -1;
-    int32_t ta = new_triangle(km);
-    if (ta < 0) {
+    *ta = new_triangle(km);
+    if (*ta < 0) {
         push_free_vertex(km, m);
         return -1;
     }
-    int32_t tb = new_triangle(km);
-    if (tb < 0) {
-        push_free_vertex(km, m), push_free_triangle(km, ta);
+    *tb = new_triangle(km);
+    if (*tb < 0) {
+        push_free_vertex(km, m), push_free_triangle(km, *ta);
         return -1;
     }
     for (size_t g = 0; g < km->k; g++) set_position(km, g, m, pts + 2 * g);
+    return m;
+}
+
+int32_t cm_kmesh_split(cm_kmesh *km, int32_t c, const double *pts)
+{
+    int32_t ta, tb, m = new_vertex_and_two_triangles(km, pts, &ta, &tb);
+    if (m < 0) return -1;
     int32_t o = km->opp[c];
     int32_t v0 = km->tri[c], v1 = km->tri[cm_next(c)], v2 = km->tri[cm_prev(c)], v3 = km->tri[o];
     int32_t d = km->opp[cm_next(c)], b = km->opp[cm_next(o)];
@@ -501,19 +510,8 @@ int32_t cm_kmesh_split(cm_kmesh *km, int32_t c, const double *pts)
 
 int32_t cm_kmesh_insert(cm_kmesh *km, int32_t t, const double *pts)
 {
-    int32_t m = new_vertex(km);
+    int32_t ta, tb, m = new_vertex_and_two_triangles(km, pts, &ta, &tb);
     if (m < 0) return -1;
-    int32_t ta = new_triangle(km);
-    if (ta < 0) {
-        push_free_vertex(km, m);
-        return -1;
-    }
-    int32_t tb = new_triangle(km);
-    if (tb < 0) {
-        push_free_vertex(km, m), push_free_triangle(km, ta);
-        return -1;
-    }
-    for (size_t g = 0; g < km->k; g++) set_position(km, g, m, pts + 2 * g);
     int32_t c = 3 * t, v0 = km->tri[c], v1 = km->tri[c + 1], v2 = km->tri[c + 2];
     int32_t o1 = km->opp[c + 1];
     int32_t a0 = 3 * ta, b0 = 3 * tb;
