@@ -1,10 +1,12 @@
 // "Compatible Sweep Between Two Boundaries": the worker behind the filter.
 // Takes two layers with one connectivity (the output of the pairing
 // filter), builds intermediate sections by the core's convex-combination
-// morph and the lateral surface through their boundaries, and checks every section exactly after float rounding:
-// projected onto its best-fitting plane, every triangle keeps its
-// orientation and the boundary stays simple (so the section is an embedded
-// disk, also when the end planes are not parallel and sections bend).
+// morph and the lateral surface through their boundary loops (a ring per
+// loop: the outer one and every hole), and checks every section exactly
+// after float rounding: projected onto its best-fitting plane, every
+// triangle keeps its orientation and the loops stay simple and apart (so
+// the section is an embedded disk, with its holes, also when the end
+// planes are not parallel and sections bend).
 #ifndef FILTER_COMPATMESH_SWEEP_H
 #define FILTER_COMPATMESH_SWEEP_H
 

@@ -123,6 +123,13 @@ static void expect_rebuilt(const char *name, const cm_result *r, const shape *a)
         expect_morph(name, again, a);
     }
     cm_result_free(again);
+    /* The loops given as one boundary: not the mesh's boundary edges. */
+    size_t n = a->n;
+    again = NULL;
+    s = cm_result_from_meshes_loops(xy, 2, &n, 1, nv, cm_result_triangles(r), nt, &again);
+    CHECK_MSG(s != CM_OK && cm_result_num_vertices(again) == 0, "%s: the loops as one boundary: %s", name,
+              cm_status_string(s));
+    cm_result_free(again);
     for (size_t g = 0; g < 2; g++)
         CHECK_MSG(cm_check_geometry_loops(xy[g], a->sizes, a->loops, nv, cm_result_triangles(r), nt, NULL, NULL) ==
                       CM_OK, "%s: geometry %zu refused", name, g);
