@@ -74,6 +74,12 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   polygons.push_back(read_layer(first, first_name, disk[0]));
   polygons.push_back(read_layer(second, second_name, disk[1]));
   const std::string names[2] = {first_name, second_name};
+  // Loop l of one layer is paired with loop l of the other.
+  auto loops = [](std::size_t count) { return std::to_string(count) + (count == 1 ? " boundary loop" : " boundary loops"); };
+  if (polygons[0].num_loops() != polygons[1].num_loops())
+    throw FilterError("layer '" + second_name + "' has " + loops(polygons[1].num_loops()) + " but layer '" +
+                      first_name + "' has " + std::to_string(polygons[0].num_loops()) +
+                      "; need the same number (one outer loop and its holes)");
   for (int g = 0; g < 2; g++)
     if (polygons[g].size() < 3)
       throw FilterError("layer '" + names[g] + "': its boundary has " +
@@ -106,6 +112,12 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   const std::size_t n = stats->n, nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
   const int32_t *tri = cm_result_triangles(r);
   const std::vector<int32_t> triangles(tri, tri + 3 * nt);
+  // The result's loops: its boundary vertices run loop by loop, each on the
+  // input loop it came from.
+  std::vector<std::size_t> loop_of(polygons[0].size()), loop_sizes(polygons[0].num_loops(), 0);
+  for (std::size_t l = 0, v = 0; l < polygons[0].num_loops(); l++)
+    for (std::size_t j = 0; j < polygons[0].loop_sizes[l]; j++) loop_of[v++] = l;
+  for (std::size_t v = 0; v < n; v++) loop_sizes[loop_of[std::size_t(cm_result_boundary_source(r, 0, v, nullptr))]]++;
   for (int g = 0; g < 2; g++) {
     const compatmesh::Boundary &b = polygons[g];
     const double *xy = cm_result_vertices(r, g);
@@ -115,7 +127,7 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
     std::vector<double> xyz;
     for (std::size_t v = 0; v < n; v++) {
       double t = 0;
-      const std::size_t e = std::size_t(cm_result_boundary_source(r, g, v, &t)), f = (e + 1) % b.size();
+      const std::size_t e = std::size_t(cm_result_boundary_source(r, g, v, &t)), f = b.next(e);
       for (int c = 0; c < 3; c++)
         xyz.push_back(t == 0 ? b.xyz[3 * e + c] : b.xyz[3 * e + c] + t * (b.xyz[3 * f + c] - b.xyz[3 * e + c]));
     }
@@ -129,7 +141,7 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
     layer.triangles = triangles;
     layer.quality.assign(nv, 0.0f);
     std::fill(layer.quality.begin() + n, layer.quality.end(), 1.0f);  // 1 marks Steiner vertices
-    std::string problem = check_float_geometry(layer.xyz, n, b.frame, triangles);
+    std::string problem = check_float_geometry(layer.xyz, loop_sizes, b.frame, triangles);
     if (!problem.empty())
       throw FilterError("the compatible triangulation is valid in double precision but not after "
                       "rounding to MeshLab's float coordinates (layer '" + names[g] + "': " +
@@ -144,10 +156,15 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   outcome.log.push_back(std::string("correspondence: ") + correspondence_name(settings.correspondence) +
                         " (" + std::to_string(polygons[0].size()) + " and " +
                         std::to_string(polygons[1].size()) + " input vertices, " + std::to_string(n) +
-                        " on the common boundary, every input vertex kept)");
+                        " on the common boundary, every input vertex kept" +
+                        (stats->holes ? ", loop by loop: the outer loop and " + std::to_string(stats->holes) +
+                                            (stats->holes == 1 ? " hole" : " holes")
+                                      : std::string()) +
+                        ")");
   outcome.log.push_back("compatible triangulation: " + std::to_string(n) + " boundary vertices, " +
                         std::to_string(stats->steiner) + " Steiner vertices (vertex quality 1), " +
-                        std::to_string(nt) + " triangles");
+                        std::to_string(nt) + " triangles" +
+                        (stats->holes ? ", " + std::to_string(stats->holes) + (stats->holes == 1 ? " hole" : " holes") : std::string()));
   outcome.log.push_back("smallest angle: " + degrees(q[0].min_angle_deg) + " deg in '" + first_name +
                         "', " + degrees(q[1].min_angle_deg) + " deg in '" + second_name + "'");
   if (stats->fallback_count > 0)

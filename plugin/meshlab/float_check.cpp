@@ -9,7 +9,7 @@ std::vector<float> round_to_float(const std::vector<double> &xyz)
   return std::vector<float>(xyz.begin(), xyz.end());
 }
 
-std::string check_float_geometry(const std::vector<float> &xyz, std::size_t n,
+std::string check_float_geometry(const std::vector<float> &xyz, const std::vector<std::size_t> &loop_sizes,
                                  const compatmesh::PlaneFrame &frame,
                                  const std::vector<int32_t> &triangles)
 {
@@ -17,8 +17,8 @@ std::string check_float_geometry(const std::vector<float> &xyz, std::size_t n,
   const std::size_t num_vertices = points.size() / 3;
   const std::vector<double> xy = compatmesh::to_plane(frame, points.data(), num_vertices);
   long where = -1, other = -1;
-  cm_status status = cm_check_geometry(xy.data(), n, num_vertices, triangles.data(),
-                                       triangles.size() / 3, &where, &other);
+  cm_status status = cm_check_geometry_loops(xy.data(), loop_sizes.data(), loop_sizes.size(), num_vertices,
+                                             triangles.data(), triangles.size() / 3, &where, &other);
   const std::string w = std::to_string(where), o = std::to_string(other);
   switch (status) {
     case CM_OK: return "";

@@ -16,14 +16,15 @@ namespace compatmesh_plugin {
 std::vector<float> round_to_float(const std::vector<double> &xyz);
 
 // Checks one geometry as MeshLab will store it.
-//   xyz:       3 * num_vertices floats, the boundary polygon first (n
-//              vertices, in order), as in the core's output
+//   xyz:       3 * num_vertices floats, the boundary loops first (one
+//              after another, outer first: loop_sizes[l] vertices each, in
+//              order), as in the core's output
 //   frame:     the plane the triangles are counter-clockwise in
 //   triangles: 3 * num_triangles indices
 // Projects the float points into the plane (in double) and runs
-// cm_check_geometry. Returns "" when valid, else a one-line reason naming
+// cm_check_geometry_loops. Returns "" when valid, else a one-line reason naming
 // the triangle, vertices or edges.
-std::string check_float_geometry(const std::vector<float> &xyz, std::size_t n,
+std::string check_float_geometry(const std::vector<float> &xyz, const std::vector<std::size_t> &loop_sizes,
                                  const compatmesh::PlaneFrame &frame,
                                  const std::vector<int32_t> &triangles);
 

@@ -9,8 +9,9 @@ namespace {
 using OpenMesh::VertexHandle;
 
 // Edges of a face-less layer, directed so that each closed loop is
-// traversed one way (MeshLab's edges have no direction). The adapter then
-// reports several loops. source_index names vertices in messages.
+// traversed one way (MeshLab's edges have no direction); several loops are
+// a polygon with holes for the adapter. source_index names vertices in
+// messages.
 std::vector<std::pair<int, int>> directed_edges(const std::vector<std::pair<int, int>> &edges,
                                                 std::size_t n_vertices,
                                                 const std::vector<int> &source_index)
@@ -26,7 +27,7 @@ std::vector<std::pair<int, int>> directed_edges(const std::vector<std::pair<int,
   for (std::size_t v = 0; v < n_vertices; v++)
     if (!incident[v].empty() && incident[v].size() != 2)
       throw compatmesh::Error(
-          CM_ERR_ARGUMENT, "the edges are not one closed polyline: vertex " +
+          CM_ERR_ARGUMENT, "the edges are not closed polylines: vertex " +
                                std::to_string(source_index[v]) + " has " +
                                (incident[v].size() == 1
                                     ? std::string("one edge (an open end)")

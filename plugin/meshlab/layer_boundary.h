@@ -1,7 +1,8 @@
-// A MeshLab layer read as one planar polygon: the layer is copied into an
-// OpenMesh mesh and read by the OpenMesh adapter, so MeshLab inputs are
-// checked exactly like every other input (one closed polyline, or a disk
-// with one boundary loop; planar).
+// A MeshLab layer read as one planar polygon, with holes or without: the
+// layer is copied into an OpenMesh mesh and read by the OpenMesh adapter,
+// so MeshLab inputs are checked exactly like every other input (closed
+// polylines, or a disk with one boundary loop per hole and one outside;
+// planar; several loops: the largest is the outer one, the holes follow).
 #ifndef FILTER_COMPATMESH_LAYER_BOUNDARY_H
 #define FILTER_COMPATMESH_LAYER_BOUNDARY_H
 
@@ -17,7 +18,7 @@ namespace compatmesh_plugin {
 // The layer as an OpenMesh mesh: vertices in world coordinates (the
 // layer's matrix applied; deleted ones skipped, so indices are compacted), faces, and for a mesh without faces its edges,
 // each directed along the polyline it belongs to (MeshLab's planar sections
-// do not direct them). source_index[i] is the layer's vertex index of
+// do not direct them; each loop gets the direction of its first edge). source_index[i] is the layer's vertex index of
 // OpenMesh vertex i. Throws compatmesh::Error for faces OpenMesh cannot
 // add (non-manifold).
 compatmesh::PolyMesh layer_to_openmesh(const CMeshO &layer, std::vector<int> &source_index);

@@ -29,7 +29,7 @@ Geometry geometry_of(const compatmesh::PolyMesh &mesh)
   return g;
 }
 
-// Vertex order with the boundary loop first (what cm_check_geometry wants),
+// Vertex order with the boundary loops first (what cm_check_geometry_loops wants),
 // and the inverse map.
 void boundary_first(const std::vector<int> &loop, std::size_t nv, std::vector<int> &order,
                     std::vector<int> &position)
@@ -45,7 +45,8 @@ void boundary_first(const std::vector<int> &loop, std::size_t nv, std::vector<in
 
 SectionMorph::SectionMorph(const std::vector<double> &xyz0, const std::vector<double> &xyz1,
                            const std::vector<int32_t> &triangles, const std::vector<int> &boundary,
-                           const std::string &first_name, const std::string &second_name)
+                           const std::vector<std::size_t> &loop_sizes, const std::string &first_name,
+                           const std::string &second_name)
 {
   const std::size_t nv = xyz0.size() / 3, n = boundary.size();
   std::vector<int> position;
@@ -63,7 +64,7 @@ SectionMorph::SectionMorph(const std::vector<double> &xyz0, const std::vector<do
     for (int v : order_) ordered.insert(ordered.end(), &(*layers[g])[3 * v], &(*layers[g])[3 * v + 3]);
     try {
       *frames[g] = compatmesh::fit_plane(ordered.data(), n, compatmesh::kDefaultPlanarityTolerance,
-                                         compatmesh::NormalSign::FollowWinding);
+                                         compatmesh::NormalSign::FollowWinding, loop_sizes[0]);
     } catch (const compatmesh::PlaneError &e) {
       throw FilterError("layer '" + *names[g] + "': " + e.what());
     }
@@ -71,7 +72,8 @@ SectionMorph::SectionMorph(const std::vector<double> &xyz0, const std::vector<do
   }
   const double *geometries[2] = {xy[0].data(), xy[1].data()};
   cm_result *result = nullptr;
-  cm_status s = cm_result_from_meshes(geometries, 2, n, nv, reindexed.data(), reindexed.size() / 3, &result);
+  cm_status s = cm_result_from_meshes_loops(geometries, 2, loop_sizes.data(), loop_sizes.size(), nv,
+                                            reindexed.data(), reindexed.size() / 3, &result);
   result_.reset(result);
   if (s != CM_OK) {
     long g = -1;
@@ -79,7 +81,7 @@ SectionMorph::SectionMorph(const std::vector<double> &xyz0, const std::vector<do
     std::string which = g == 0 ? " (layer '" + first_name + "')" : g == 1 ? " (layer '" + second_name + "')" : "";
     std::string message = "layers '" + first_name + "' and '" + second_name +
                           "' are not a compatible pair" + which + ": " + cm_result_message(result_.get()) +
-                          " (vertex and triangle numbers count the boundary loop first)";
+                          " (vertex and triangle numbers count the boundary loops first)";
     throw FilterError(message);
   }
   // Intrinsic weights: still convex combinations (every section valid),
@@ -143,7 +145,8 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
   boundary_first(loop.source_vertex, nv, order, position);
   std::vector<int32_t> reindexed(g0.triangles.size());
   for (std::size_t i = 0; i < reindexed.size(); i++) reindexed[i] = position[g0.triangles[i]];
-  SectionMorph morph(g0.xyz, g1.xyz, g0.triangles, loop.source_vertex, first_name, second_name);
+  SectionMorph morph(g0.xyz, g1.xyz, g0.triangles, loop.source_vertex, loop.loop_sizes, first_name, second_name);
+  const std::size_t outer = loop.loop_sizes[0];
   progress.report(0.1, "morph");
 
   // Sections keep the first layer's vertex quality (the Steiner flags).
@@ -152,7 +155,7 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
     for (int v : index0) quality.push_back(float(first.vert[v].cQ()));
 
   SweepOutcome outcome;
-  std::vector<std::vector<float>> levels;  // boundary loops of every level, for the lateral surface
+  std::vector<std::vector<float>> levels;  // the boundary loops of every level, for the lateral surface
   auto add_level = [&](const std::vector<float> &xyz) {
     std::vector<float> ring;
     for (int v : loop.source_vertex) ring.insert(ring.end(), &xyz[3 * v], &xyz[3 * v + 3]);
@@ -175,8 +178,8 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
     std::string problem;
     try {
       compatmesh::PlaneFrame frame =
-          compatmesh::fit_plane(ring.data(), n, kAnyBend, compatmesh::NormalSign::FollowWinding);
-      problem = check_float_geometry(ordered, n, frame, reindexed);
+          compatmesh::fit_plane(ring.data(), n, kAnyBend, compatmesh::NormalSign::FollowWinding, outer);
+      problem = check_float_geometry(ordered, loop.loop_sizes, frame, reindexed);
     } catch (const compatmesh::PlaneError &e) {
       problem = e.what();
     }
@@ -194,23 +197,26 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
   }
   add_level(std::vector<float>(g1.xyz.begin(), g1.xyz.end()));
 
-  // Lateral surface: one quad per boundary edge between consecutive levels,
-  // split into two triangles.
+  // Lateral surface: one ring per loop (the outer loop and every hole), one
+  // quad per boundary edge between consecutive levels, split into two
+  // triangles.
   LayerData lateral;
   lateral.label = "lateral surface";
   for (const std::vector<float> &ring : levels) lateral.xyz.insert(lateral.xyz.end(), ring.begin(), ring.end());
-  // Outward whatever the layers' order and the loop's direction: over a
+  // Outward whatever the layers' order and the loops' direction: over a
   // closed surface the flux of x - centre (taken per level, in the level's
-  // own plane) is twice the enclosed volume, so its sign over the lateral
-  // quads says which way they face.
+  // own plane) is twice the enclosed volume, so its sign over the outer
+  // loop's quads says which way they face. Every loop follows the faces
+  // (a hole runs against the outer loop), so the same rule turns each
+  // hole's ring away from the material, into the hole.
   double flux = 0;
   for (std::size_t s = 0; s + 1 < levels.size(); s++) {
     const std::vector<float> &ring = levels[s];
     double centre[3] = {0, 0, 0};
-    for (std::size_t i = 0; i < n; i++)
-      for (int c = 0; c < 3; c++) centre[c] += ring[3 * i + c] / double(n);
-    for (std::size_t i = 0; i < n; i++) {
-      const float *a = &ring[3 * i], *b = &ring[3 * ((i + 1) % n)], *d = &levels[s + 1][3 * i];
+    for (std::size_t i = 0; i < outer; i++)
+      for (int c = 0; c < 3; c++) centre[c] += ring[3 * i + c] / double(outer);
+    for (std::size_t i = 0; i < outer; i++) {
+      const float *a = &ring[3 * i], *b = &ring[3 * loop.next(i)], *d = &levels[s + 1][3 * i];
       double u[3], v[3];
       for (int c = 0; c < 3; c++) u[c] = double(b[c]) - a[c], v[c] = double(d[c]) - a[c];
       const double normal[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
@@ -220,7 +226,7 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
   const bool outward = flux >= 0;
   for (std::size_t s = 0; s + 1 < levels.size(); s++)
     for (std::size_t i = 0; i < n; i++) {
-      int32_t a = int32_t(s * n + i), b = int32_t(s * n + (i + 1) % n);
+      int32_t a = int32_t(s * n + i), b = int32_t(s * n + loop.next(i));
       int32_t c = b + int32_t(n), d = a + int32_t(n);
       if (outward) lateral.triangles.insert(lateral.triangles.end(), {a, b, c, a, c, d});
       else lateral.triangles.insert(lateral.triangles.end(), {a, c, b, a, d, c});
@@ -232,7 +238,8 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
   outcome.log.push_back(std::to_string(sections) + " intermediate sections by convex-combination morph "
                         "(smallest angle " + angle_text + " degrees in the plane), each checked valid after "
                         "float rounding; lateral surface of " +
-                        std::to_string(2 * n * (levels.size() - 1)) + " triangles");
+                        std::to_string(2 * n * (levels.size() - 1)) + " triangles in " +
+                        std::to_string(loop.num_loops()) + (loop.num_loops() == 1 ? " ring" : " rings"));
   return outcome;
 }
 

@@ -1,10 +1,12 @@
 // "Compatible Sweep Between Two Boundaries": the worker behind the filter.
 // Takes two layers with one connectivity (the output of the pairing
 // filter), builds intermediate sections by the core's convex-combination
-// morph and the lateral surface through their boundaries, and checks every section exactly after float rounding:
-// projected onto its best-fitting plane, every triangle keeps its
-// orientation and the boundary stays simple (so the section is an embedded
-// disk, also when the end planes are not parallel and sections bend).
+// morph and the lateral surface through their boundary loops (a ring per
+// loop: the outer one and every hole), and checks every section exactly
+// after float rounding: projected onto its best-fitting plane, every
+// triangle keeps its orientation and the loops stay simple and apart (so
+// the section is an embedded disk, with its holes, also when the end
+// planes are not parallel and sections bend).
 #ifndef FILTER_COMPATMESH_SWEEP_H
 #define FILTER_COMPATMESH_SWEEP_H
 
@@ -25,18 +27,21 @@ namespace compatmesh_plugin {
 
 // The morph between two compatible layers: each layer mapped to 2D in its
 // own plane frame (fit_plane), the pair made a core result
-// (cm_result_from_meshes, checked exactly) and morphed by convex
+// (cm_result_from_meshes_loops, checked exactly; holes are filled by the
+// core's morph and left out of the sections) and morphed by convex
 // combinations with intrinsic weights (cm_morph_create, CM_MORPH_INTRINSIC),
 // so every 2D section is valid by construction, also for layers turned half
 // a turn against each other.
 class SectionMorph {
  public:
   // xyz0, xyz1: 3 * vertices doubles of the two layers; triangles: their
-  // common faces; boundary: the boundary loop (vertex indices, in order).
+  // common faces; boundary: the boundary loops (vertex indices, in order,
+  // one loop after another, the outer loop first: loop_sizes[l] each).
   // Throws FilterError naming the layer, vertex or triangle at fault.
   SectionMorph(const std::vector<double> &xyz0, const std::vector<double> &xyz1,
                const std::vector<int32_t> &triangles, const std::vector<int> &boundary,
-               const std::string &first_name, const std::string &second_name);
+               const std::vector<std::size_t> &loop_sizes, const std::string &first_name,
+               const std::string &second_name);
 
   friend std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_deg);
 

@@ -105,6 +105,45 @@ static void expect_morph(const char *name, const cm_result *r, const shape *a)
     cm_morph_free(m);
 }
 
+/* The result's geometries rebuilt by cm_result_from_meshes_loops (what a
+ * host program that saved them does): accepted, the same holes, morphed
+ * like the original; cm_check_geometry_loops accepts each geometry and
+ * refuses one with a hole vertex moved onto the outer loop. */
+static void expect_rebuilt(const char *name, const cm_result *r, const shape *a)
+{
+    size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r);
+    const double *xy[2] = {cm_result_vertices(r, 0), cm_result_vertices(r, 1)};
+    cm_result *again = NULL;
+    cm_status s = cm_result_from_meshes_loops(xy, 2, a->sizes, a->loops, nv, cm_result_triangles(r), nt, &again);
+    CHECK_MSG(s == CM_OK, "%s: rebuilt: %s", name, cm_result_message(again));
+    if (s == CM_OK) {
+        CHECK_MSG(cm_result_stats(again)->holes == a->loops - 1, "%s: rebuilt with %zu holes", name,
+                  cm_result_stats(again)->holes);
+        CHECK_MSG(cm_result_num_halfedges(again) == cm_result_num_halfedges(r), "%s: rebuilt half-edges", name);
+        expect_morph(name, again, a);
+    }
+    cm_result_free(again);
+    /* The loops given as one boundary: not the mesh's boundary edges. */
+    size_t n = a->n;
+    again = NULL;
+    s = cm_result_from_meshes_loops(xy, 2, &n, 1, nv, cm_result_triangles(r), nt, &again);
+    CHECK_MSG(s != CM_OK && cm_result_num_vertices(again) == 0, "%s: the loops as one boundary: %s", name,
+              cm_status_string(s));
+    cm_result_free(again);
+    for (size_t g = 0; g < 2; g++)
+        CHECK_MSG(cm_check_geometry_loops(xy[g], a->sizes, a->loops, nv, cm_result_triangles(r), nt, NULL, NULL) ==
+                      CM_OK, "%s: geometry %zu refused", name, g);
+    /* The first hole's first vertex moved onto the outer loop's first. */
+    double *moved = malloc(2 * nv * sizeof *moved);
+    if (moved) {
+        memcpy(moved, xy[0], 2 * nv * sizeof *moved);
+        moved[2 * a->sizes[0]] = moved[0], moved[2 * a->sizes[0] + 1] = moved[1];
+        CHECK_MSG(cm_check_geometry_loops(moved, a->sizes, a->loops, nv, cm_result_triangles(r), nt, NULL, NULL) !=
+                      CM_OK, "%s: a hole touching the outer loop passed", name);
+    }
+    free(moved);
+}
+
 /* Runs a fixture and checks everything it states. */
 static void expect_valid(const char *name, const shape *a, const shape *b, int remesh,
                          size_t max_steiner)
@@ -135,6 +174,7 @@ static void expect_valid(const char *name, const shape *a, const shape *b, int r
         printf("%-28s holes %zu  Steiner %zu (construction %zu)  smallest angles %.1f %.1f\n", name,
                st->holes, st->steiner, st->steiner_before_remesh, q0.min_angle_deg, q1.min_angle_deg);
         expect_morph(name, r, a);
+        expect_rebuilt(name, r, a);
     }
     cm_result_free(r);
 }

@@ -550,6 +550,180 @@ def case_gmsh_sections(w):
                                                         [round(m["min_angle_deg"], 1) for m in report["meshes"]]))
 
 
+def boundary_loops(triangles):
+    """The boundary edges (used by one triangle) chained into loops, each
+    following the triangles."""
+    count = {}
+    for t in triangles:
+        for i in range(3):
+            e = (int(t[i]), int(t[(i + 1) % 3]))
+            count[e] = count.get(e, 0) + 1
+    assert all(c == 1 for c in count.values()), "an edge is used twice in one direction"
+    nxt = {a: b for (a, b) in count if (b, a) not in count}
+    loops, left = [], set(nxt)
+    while left:
+        start = min(left)
+        loop, v = [start], nxt[start]
+        while v != start:
+            loop.append(v)
+            v = nxt[v]
+        left -= set(loop)
+        loops.append(loop)
+    return loops
+
+
+def check_layer_with_holes(path, input_loops):
+    """A saved layer of a polygon with holes: every input vertex on the
+    boundary (bit for bit as float), one boundary loop per input loop,
+    every triangle strictly counter-clockwise about the outer loop's normal
+    (exact), Euler characteristic 1 - holes, Steiner flags exactly on the
+    interior vertices. Returns (points, triangles, boundary loops)."""
+    mesh = meshio.read(path)
+    pts = mesh.points.astype(np.float64)
+    tris = mesh.cells_dict["triangle"]
+    q = mesh.point_data.get("quality")
+    loops = boundary_loops(tris)
+    holes = len(input_loops) - 1
+    assert len(loops) == len(input_loops), "%s: %d boundary loops, expected %d" % (path, len(loops), len(input_loops))
+    on_boundary = {tuple(pts[v]) for loop in loops for v in loop}
+    for inp in input_loops:
+        inp32 = np.array(inp, dtype=np.float32).astype(np.float64)
+        missing = [i for i, p in enumerate(inp32) if tuple(p) not in on_boundary]
+        assert not missing, "%s: input vertices %s are not on the boundary" % (path, missing[:5])
+    edges = {frozenset((int(t[i]), int(t[(i + 1) % 3]))) for t in tris for i in range(3)}
+    euler = len(pts) - len(edges) + len(tris)
+    assert euler == 1 - holes, "%s: Euler characteristic %d, expected %d" % (path, euler, 1 - holes)
+    outer = max(loops, key=lambda l: np.linalg.norm(newell_normal(pts[l])))
+    normal = newell_normal(pts[outer])  # the outer loop follows the triangles
+    signs = [exact_cross_dot(pts[a], pts[b], pts[c], normal) for a, b, c in tris]
+    assert all(s > 0 for s in signs), "%s: %d triangles are flat or inverted" % (path, sum(1 for s in signs if s <= 0))
+    interior = set(range(len(pts))) - {v for loop in loops for v in loop}
+    assert q is not None and {i for i in range(len(pts)) if q[i] == 1.0} == interior, "%s: Steiner flags wrong" % path
+    return pts, tris, loops
+
+
+def read_obj_loops(path):
+    """The closed polylines of an OBJ file of `l a b` lines (MeshLab's
+    section output), each in loop order, the loop of largest area first."""
+    points, neighbours = [], {}
+    for line in open(path):
+        t = line.split()
+        if t and t[0] == "v":
+            points.append(tuple(float(x) for x in t[1:4]))
+        elif t and t[0] == "l":
+            a, b = int(t[1]) - 1, int(t[2]) - 1
+            neighbours.setdefault(a, []).append(b)
+            neighbours.setdefault(b, []).append(a)
+    assert len(neighbours) == len(points) and all(len(v) == 2 for v in neighbours.values()), \
+        "%s: not closed polylines" % path
+    loops, left = [], set(neighbours)
+    while left:
+        loop, prev = [min(left)], None
+        while True:
+            nxt = [v for v in neighbours[loop[-1]] if v != prev][0]
+            if nxt == loop[0]:
+                break
+            prev = loop[-1]
+            loop.append(nxt)
+        left -= set(loop)
+        loops.append([points[i] for i in loop])
+    loops.sort(key=lambda l: -np.linalg.norm(newell_normal(np.array(l))))
+    return loops
+
+
+LEVER = "/usr/share/doc/gmsh-doc/converters/stl_to_cartesian/lever.stl.gz"  # Debian package gmsh-doc
+
+
+def case_lever_sections(w):
+    # gmsh-doc's lever.stl, a bracket whose base plate has five bolt holes,
+    # cut by MeshLab's Compute Planar Section across the plate at z = 2 and
+    # by a tilted plane (normal (0.02, 0, 1)) through z = 4: each section is
+    # 6 closed polylines, the plate's outline and its 5 holes. The unchanged
+    # docs/meshlab/pair.mlx pairs them (auto correspondence, loop by loop),
+    # then pair_and_sweep.mlx sweeps the pair: every section keeps the 5
+    # holes and the lateral surface has a ring per loop facing away from
+    # the material (into each hole).
+    import gzip
+    stl = os.path.join(w, "lever.stl")
+    with gzip.open(LEVER) as f:
+        open(stl, "wb").write(f.read())
+    tilted = SECTION.replace('value="2" name="planeAxis"', 'value="3" name="planeAxis"') \
+                    .replace('x="0" y="0" z="1" name="customAxis"', 'x="0.02" y="0" z="1" name="customAxis"')
+    cut = os.path.join(w, "cut.mlx")
+    open(cut, "w").write("<!DOCTYPE FilterScript>\n<FilterScript>\n" + SECTION % 2.0 +
+                         ' <filter name="Change the current layer">\n  <Param type="RichMesh" value="0" name="layer"/>\n </filter>\n' +
+                         tilted % 4.0 + "</FilterScript>\n")
+    code, log = run(w, [stl], cut, {1: "a.obj", 2: "b.obj"})
+    expect_ok(code, log)
+    sections = [read_obj_loops(os.path.join(w, name)) for name in ("a.obj", "b.obj")]
+    for loops in sections:
+        assert len(loops) == 6, "a section has %d loops, expected the outline and 5 holes" % len(loops)
+    os.remove(os.path.join(w, "log.txt"))
+    code, log = run(w, ["a.obj", "b.obj"], os.path.join(DOCS, "pair.mlx"), {2: "pa.ply", 3: "pb.ply"})
+    expect_ok(code, log)
+    assert "the outer loop and 5 holes" in log, log[-2000:]
+    pa, ta, _ = check_layer_with_holes(os.path.join(w, "pa.ply"), sections[0])
+    pb, tb, _ = check_layer_with_holes(os.path.join(w, "pb.ply"), sections[1])
+    assert len(pa) == len(pb) and np.array_equal(ta, tb), "the two layers' faces differ"
+    m = re.search(r"compatible triangulation: (\d+) boundary vertices, (\d+) Steiner vertices", log)
+    angles = re.search(r"smallest angle: ([\d.]+) deg in '[^']*', ([\d.]+) deg", log)
+    assert m and angles, log[-2000:]
+    print("lever sections of %d and %d vertices (6 loops each) paired: %s boundary, %s Steiner vertices, "
+          "%d triangles, smallest angles %s and %s" % (sum(map(len, sections[0])), sum(map(len, sections[1])),
+                                                      m.group(1), m.group(2), len(ta), *angles.groups()))
+
+    # The sweep: three sections, each with the pair's faces and holes, and
+    # the lateral surface.
+    os.remove(os.path.join(w, "log.txt"))
+    outs = {2: "pair_a.ply", 3: "pair_b.ply", 4: "s1.ply", 5: "s2.ply", 6: "s3.ply", 7: "lateral.ply"}
+    code, log = run(w, ["a.obj", "b.obj"], os.path.join(DOCS, "pair_and_sweep.mlx"), outs)
+    expect_ok(code, log)
+    assert "in 6 rings" in log, log[-2000:]
+    n = None
+    for k in (1, 2, 3):
+        mesh = meshio.read(os.path.join(w, "s%d.ply" % k))
+        assert np.array_equal(mesh.cells_dict["triangle"], ta), "section %d: faces differ" % k
+        loops = boundary_loops(ta)
+        pts, _, _ = check_layer_with_holes(os.path.join(w, "s%d.ply" % k),
+                                           [[tuple(mesh.points[v]) for v in l] for l in loops])
+        for l in loops:
+            assert not polygon_self_intersects(pts[l][:, :2]), "section %d: a loop is not simple" % k
+        n = sum(map(len, loops))
+    lateral = meshio.read(os.path.join(w, "lateral.ply"))
+    lt = lateral.cells_dict["triangle"]
+    assert len(lt) == 2 * n * 4, (len(lt), n)
+    # Rings: the lateral surface's parts. Each faces away from the material:
+    # the outline's ring outward (positive flux of the horizontal field from
+    # its centre), every hole's ring into the hole (negative flux).
+    p = lateral.points
+    parent = list(range(len(p)))
+
+    def find(v):
+        while parent[v] != v:
+            parent[v] = parent[parent[v]]
+            v = parent[v]
+        return v
+    for a, b, c in lt:
+        parent[find(b)] = find(a)
+        parent[find(c)] = find(a)
+    rings = {}
+    for t in lt:
+        rings.setdefault(find(int(t[0])), []).append(t)
+    assert len(rings) == 6, "%d rings" % len(rings)
+    signs = []
+    for ring in rings.values():
+        q = p[np.array(ring)]
+        centre = q.reshape(-1, 3).mean(0)
+        normal = 0.5 * np.cross(q[:, 1] - q[:, 0], q[:, 2] - q[:, 0])
+        flux = float(np.sum(normal[:, :2] * (q.mean(1)[:, :2] - centre[:2])))
+        area = float(np.sum(np.linalg.norm(normal, axis=1)))
+        signs.append((area, flux))
+    signs.sort(reverse=True)  # the outline's ring is the largest
+    assert signs[0][1] > 0 and all(f < 0 for _, f in signs[1:]), signs
+    print("lever sweep: 3 sections with 5 holes each valid, lateral surface of %d triangles in 6 rings, "
+          "the outline's facing out and the 5 holes' facing into the holes" % len(lt))
+
+
 def bad_case(w, inputs, message, replacements=()):
     script = script_with(w, "pair.mlx", replacements) if replacements else os.path.join(DOCS, "pair.mlx")
     code, log = run(w, inputs, script, {2: "out_a.ply", 3: "out_b.ply"})
@@ -565,13 +739,14 @@ def good_polyline(w, name="good.ply"):
 def case_bad_open_polyline(w):
     pts = star(10, 1.0, 0.6)
     write_ply(os.path.join(w, "bad.ply"), pts, edges=loop_edges(10)[:-1])
-    bad_case(w, [good_polyline(w), "bad.ply"], "layer 'bad.ply': the edges are not one closed polyline: vertex 0 has one edge (an open end)")
+    bad_case(w, [good_polyline(w), "bad.ply"], "layer 'bad.ply': the edges are not closed polylines: vertex 0 has one edge (an open end)")
 
 
 def case_bad_two_loops(w):
     pts = star(8, 1.0, 0.6) + [(x + 5, y, z) for x, y, z in star(8, 1.0, 0.6)]
     write_ply(os.path.join(w, "bad.ply"), pts, edges=loop_edges(8) + loop_edges(8, 8))
-    bad_case(w, [good_polyline(w), "bad.ply"], "several closed polylines")
+    # Read as an outline with a hole beside it: the core refuses the hole.
+    bad_case(w, ["bad.ply", "bad.ply"], "lies outside")
 
 
 def case_bad_hole(w):
@@ -581,7 +756,9 @@ def case_bad_hole(w):
         j = (i + 1) % 8
         faces += [(i, j, 8 + j), (i, 8 + j, 8 + i)]
     write_ply(os.path.join(w, "bad.ply"), outer + inner, faces=faces)
-    bad_case(w, ["bad.ply", good_polyline(w)], "boundary loops (holes)")
+    # A disk with a hole against a polygon without: one line naming the
+    # layer and both counts.
+    bad_case(w, ["bad.ply", good_polyline(w)], "layer 'good.ply' has 1 boundary loop but layer 'bad.ply' has 2; need the same number")
 
 
 def case_bad_not_planar(w):

@@ -37,7 +37,8 @@ int shared_axis(const double *xyz, std::size_t n)
   return -1;
 }
 
-PlaneFrame coordinate_plane(const double *xyz, std::size_t n, int axis, NormalSign sign)
+PlaneFrame coordinate_plane(const double *xyz, std::size_t n, int axis, NormalSign sign,
+                            std::size_t winding_points)
 {
   // Right-handed order of the two remaining axes: (x, y) for z, (y, z) for x, (z, x) for y.
   int a = (axis + 1) % 3, b = (axis + 2) % 3;
@@ -51,7 +52,7 @@ PlaneFrame coordinate_plane(const double *xyz, std::size_t n, int axis, NormalSi
   frame.u[a] = 1.0;
   frame.v[b] = 1.0;
   frame.normal[axis] = 1.0;
-  if (sign == NormalSign::FollowWinding && newell_vector(xyz, n)[axis] < 0) {
+  if (sign == NormalSign::FollowWinding && newell_vector(xyz, winding_points)[axis] < 0) {
     std::swap(frame.u, frame.v);
     frame.normal[axis] = -1.0;
   }
@@ -85,14 +86,16 @@ std::array<double, 3> PlaneFrame::to_space(double x, double y) const
   return array_of(Vec3(origin.data()) + x * Vec3(u.data()) + y * Vec3(v.data()));
 }
 
-PlaneFrame fit_plane(const double *xyz, std::size_t n, double relative_tolerance, NormalSign sign)
+PlaneFrame fit_plane(const double *xyz, std::size_t n, double relative_tolerance, NormalSign sign,
+                     std::size_t winding_points)
 {
   if (n == 0) return PlaneFrame();
+  if (winding_points == 0 || winding_points > n) winding_points = n;
   for (std::size_t i = 0; i < 3 * n; i++)
     if (!std::isfinite(xyz[i]))
       throw PlaneError("vertex " + std::to_string(i / 3) + " has a coordinate that is not finite", i / 3, true);
   int axis = shared_axis(xyz, n);
-  if (axis >= 0) return coordinate_plane(xyz, n, axis, sign);
+  if (axis >= 0) return coordinate_plane(xyz, n, axis, sign, winding_points);
 
   Vec3 centroid = Vec3::Zero(), low = point(xyz, 0), high = low;
   for (std::size_t i = 0; i < n; i++) {
@@ -114,7 +117,7 @@ PlaneFrame fit_plane(const double *xyz, std::size_t n, double relative_tolerance
 
   bool flip;
   if (sign == NormalSign::FollowWinding) {
-    flip = normal.dot(newell_vector(xyz, n)) < 0;
+    flip = normal.dot(newell_vector(xyz, winding_points)) < 0;
   } else {
     Eigen::Index largest;
     normal.cwiseAbs().maxCoeff(&largest);

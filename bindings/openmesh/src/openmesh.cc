@@ -10,16 +10,40 @@ Error::Error(cm_status status, const std::string &message, long mesh, long verte
 {
 }
 
+std::size_t Boundary::next(std::size_t i) const
+{
+  std::size_t start = 0;
+  for (std::size_t size : loop_sizes) {
+    if (i < start + size) return i + 1 < start + size ? i + 1 : start;
+    start += size;
+  }
+  return size() ? (i + 1) % size() : 0;
+}
+
 Boundary make_boundary(std::vector<double> xyz, std::vector<int> source_vertex,
                        double relative_tolerance, NormalSign sign)
+{
+  const std::size_t n = source_vertex.size();
+  return make_boundary(std::move(xyz), std::move(source_vertex), std::vector<std::size_t>{n},
+                       relative_tolerance, sign);
+}
+
+Boundary make_boundary(std::vector<double> xyz, std::vector<int> source_vertex,
+                       std::vector<std::size_t> loop_sizes, double relative_tolerance,
+                       NormalSign sign)
 {
   const std::size_t n = source_vertex.size();
   if (xyz.size() != 3 * n)
     throw Error(CM_ERR_ARGUMENT, "make_boundary: " + std::to_string(xyz.size()) +
                                      " coordinates for " + std::to_string(n) + " vertices");
+  std::size_t total = 0;
+  for (std::size_t size : loop_sizes) total += size;
+  if (loop_sizes.empty() || total != n)
+    throw Error(CM_ERR_ARGUMENT, "make_boundary: loops of " + std::to_string(total) + " vertices for " +
+                                     std::to_string(n) + " vertices");
   Boundary boundary;
   try {
-    boundary.frame = fit_plane(xyz.data(), n, relative_tolerance, sign);
+    boundary.frame = fit_plane(xyz.data(), n, relative_tolerance, sign, loop_sizes[0]);
   } catch (const PlaneError &e) {
     long vertex = long(e.vertex());
     throw Error(e.not_finite() ? CM_ERR_NOT_FINITE : CM_ERR_ARGUMENT,
@@ -29,6 +53,7 @@ Boundary make_boundary(std::vector<double> xyz, std::vector<int> source_vertex,
   boundary.xy = to_plane(boundary.frame, xyz.data(), n);
   boundary.xyz = std::move(xyz);
   boundary.source_vertex = std::move(source_vertex);
+  boundary.loop_sizes = std::move(loop_sizes);
   return boundary;
 }
 
@@ -37,16 +62,25 @@ ResultPtr triangulate(const std::vector<Boundary> &polygons, const cm_options &o
 {
   std::vector<const double *> coordinates;
   std::vector<std::size_t> counts;
+  std::vector<cm_loops> loops;
+  bool holes = false;
+  counts.reserve(polygons.size());  // pointed into below
   for (const Boundary &polygon : polygons) {
     coordinates.push_back(polygon.xy.data());
     counts.push_back(polygon.size());
+    holes |= polygon.num_loops() > 1;
+    // A Boundary filled by hand may leave loop_sizes empty: one loop.
+    const bool one = polygon.loop_sizes.empty();
+    loops.push_back(cm_loops{polygon.xy.data(), one ? &counts.back() : polygon.loop_sizes.data(),
+                             one ? 1 : polygon.loop_sizes.size()});
   }
   cm_options core_options = options;
   ProgressRelay relay(progress);
   relay.attach(core_options);
   cm_result *raw = nullptr;
-  cm_status status = cm_triangulate_polygons(coordinates.data(), counts.data(), polygons.size(),
-                                             &core_options, &raw);
+  cm_status status = holes ? cm_triangulate_loops(loops.data(), loops.size(), &core_options, &raw)
+                           : cm_triangulate_polygons(coordinates.data(), counts.data(), polygons.size(),
+                                                     &core_options, &raw);
   ResultPtr result(raw);
   relay.rethrow();
   if (!result) throw Error(CM_ERR_NO_MEMORY, "out of memory");

@@ -330,7 +330,8 @@ typedef struct cm_loops {
  * as for cm_triangulate (the loops are never touched). Such a result is
  * morphed and swept like any other (the morph fills every hole with a
  * compatible triangulation of its own, which the sections leave out);
- * cm_check_geometry and cm_result_from_meshes take one boundary loop only. With one loop per
+ * cm_check_geometry_loops and cm_result_from_meshes_loops check and rebuild
+ * such a result from its geometries. With one loop per
  * polygon this is cm_triangulate_polygons. */
 CM_API cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k,
                                       const cm_options *options, cm_result **result);
@@ -406,6 +407,15 @@ CM_API cm_status cm_check_geometry(const double *xy, size_t n, size_t num_vertic
                             const int32_t *triangles, size_t num_triangles,
                             long *where, long *other);
 
+/* The same for a geometry with holes (a result of cm_triangulate_loops):
+ * vertices 0..n-1 are the loops one after another, loop l having
+ * loop_sizes[l] >= 3 vertices (the outer loop first); every triangle must
+ * be strictly counter-clockwise and the loops simple, none touching
+ * another (boundary edge e runs from vertex e to the next of its loop). */
+CM_API cm_status cm_check_geometry_loops(const double *xy, const size_t *loop_sizes, size_t num_loops,
+                                         size_t num_vertices, const int32_t *triangles,
+                                         size_t num_triangles, long *where, long *other);
+
 /* A result from a compatible triangulation built elsewhere (another
  * program, a file), so that it can be morphed and swept. The input is
  * validated exactly, as cm_triangulate validates its own output, and the
@@ -427,6 +437,17 @@ CM_API cm_status cm_check_geometry(const double *xy, size_t n, size_t num_vertic
 CM_API cm_status cm_result_from_meshes(const double *const *xy, size_t k, size_t n,
                                 size_t num_vertices, const int32_t *triangles,
                                 size_t num_triangles, cm_result **result);
+
+/* The same for polygons with holes: vertices 0..n-1 of every geometry are
+ * the loops one after another (loop_sizes[l] vertices each, the outer loop
+ * first; each loop in either direction, the same in every geometry), the
+ * triangles a manifold disk with num_loops - 1 holes bounded by exactly
+ * those loops. The result morphs and sweeps as one of cm_triangulate_loops
+ * does (the morph fills the holes). num_loops == 1 is cm_result_from_meshes. */
+CM_API cm_status cm_result_from_meshes_loops(const double *const *xy, size_t k, const size_t *loop_sizes,
+                                             size_t num_loops, size_t num_vertices,
+                                             const int32_t *triangles, size_t num_triangles,
+                                             cm_result **result);
 
 /* ---- Morphing and sweeping (paper sections 1 and 5) --------------------
  *

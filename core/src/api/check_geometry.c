@@ -2,7 +2,9 @@
  * cm_triangulate: rounded to float by a mesh format, or moved by a morph.
  * With one connectivity, a simple boundary and every triangle strictly
  * counter-clockwise, the triangles tile the polygon without overlap, so
- * these two tests are all validity needs. */
+ * these two tests are all validity needs; with holes, loops that are
+ * each simple and meet no other loop (a hole cannot then leave the outer
+ * loop: the triangles' winding there would be negative). */
 #include "compatmesh/compatmesh.h"
 #include "base/gmp_memory.h"
 #include "geom/polygon_check.h"
@@ -23,10 +25,22 @@ cm_status cm_check_geometry(const double *xy, size_t n, size_t num_vertices,
                             const int32_t *triangles, size_t num_triangles,
                             long *where, long *other)
 {
+    return cm_check_geometry_loops(xy, &n, 1, num_vertices, triangles, num_triangles, where, other);
+}
+
+cm_status cm_check_geometry_loops(const double *xy, const size_t *loop_sizes, size_t num_loops,
+                                  size_t num_vertices, const int32_t *triangles, size_t num_triangles,
+                                  long *where, long *other)
+{
     long w = -1, o = -1;
     cm_status status = CM_OK;
+    size_t n = 0;
     cm_gmp_memory_begin();
-    if (!xy || !triangles || n < 3 || n > num_vertices) {
+    for (size_t l = 0; loop_sizes && l < num_loops; l++) {
+        if (loop_sizes[l] < 3) n = num_vertices + 1; /* refused below */
+        n += loop_sizes[l];
+    }
+    if (!xy || !triangles || !loop_sizes || num_loops == 0 || n < 3 || n > num_vertices) {
         status = CM_ERR_ARGUMENT;
         goto done;
     }
@@ -63,7 +77,8 @@ cm_status cm_check_geometry(const double *xy, size_t n, size_t num_vertices,
         }
     free(sorted);
     if (status != CM_OK) goto done;
-    int found = cm_polygon_find_intersection(xy, (long)n, &w, &o);
+    int found = num_loops == 1 ? cm_polygon_find_intersection(xy, (long)n, &w, &o)
+                               : cm_loops_find_intersection(xy, loop_sizes, num_loops, &w, &o);
     if (found < 0) status = CM_ERR_NO_MEMORY, w = o = -1;
     else if (found > 0) status = CM_ERR_SELF_INTERSECTION;
     else w = o = -1;

@@ -55,10 +55,30 @@ static cm_status geometry_failure(cm_result *r, size_t g, cm_status s, long w, l
     }
 }
 
-static cm_status build_checked(cm_result *r, const double *const *xy, size_t k, size_t n, size_t nv,
-                       const int32_t *triangles, size_t nt)
+/* The direction of loop [first, first + m) that has the material on its
+ * left: forward when some (counter-clockwise) triangle has the loop's
+ * first edge as its own directed edge. The half-edge check then confirms
+ * the whole loop. */
+static int loop_runs_backward(const cm_mesh *m, size_t first)
 {
-    if (!xy || !triangles) return cm_fail(&r->error, CM_ERR_ARGUMENT, "NULL coordinates or triangles");
+    int32_t a = (int32_t)first, b = (int32_t)(first + 1);
+    for (size_t t = 0; t < m->nt; t++)
+        for (int i = 0; i < 3; i++)
+            if (m->tri[3 * t + i] == a && m->tri[3 * t + (i + 1) % 3] == b) return 0;
+    return 1;
+}
+
+static cm_status build_checked(cm_result *r, const double *const *xy, size_t k, const size_t *loop_sizes,
+                       size_t num_loops, size_t nv, const int32_t *triangles, size_t nt)
+{
+    if (!xy || !triangles || !loop_sizes || num_loops == 0)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "NULL coordinates, triangles or loops");
+    size_t n = 0;
+    for (size_t l = 0; l < num_loops; l++) {
+        if (num_loops > 1 && loop_sizes[l] < 3)
+            return cm_fail(&r->error, CM_ERR_ARGUMENT, "loop %zu has %zu vertices; need at least 3", l, loop_sizes[l]);
+        n += loop_sizes[l];
+    }
     if (k < 2) return cm_fail(&r->error, CM_ERR_ARGUMENT, "need at least 2 geometries, got %zu", k);
     if (n < 3 || n > nv)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "boundary of %zu vertices with %zu vertices in all", n, nv);
@@ -81,17 +101,34 @@ static cm_status build_checked(cm_result *r, const double *const *xy, size_t k, 
     r->stats.n = n, r->stats.k = k, r->stats.reversed_input = clockwise;
     for (size_t g = 0; g < k; g++) {
         long w = -1, o = -1;
-        s = cm_check_geometry(r->mesh.xy[g], n, nv, r->mesh.tri, nt, &w, &o);
+        s = cm_check_geometry_loops(r->mesh.xy[g], loop_sizes, num_loops, nv, r->mesh.tri, nt, &w, &o);
         if (s == CM_ERR_NO_MEMORY) return cm_fail(&r->error, s, "out of memory");
         if (s != CM_OK) return geometry_failure(r, g, s, w, o, clockwise);
     }
-    /* Counter-clockwise boundary cycle: reversed for clockwise input. */
+    /* Boundary cycles with the material on their left: one loop is
+     * counter-clockwise (reversed for clockwise input); with holes each
+     * loop's direction is read off the triangles. */
     int32_t *boundary = malloc(n * sizeof *boundary);
-    if (!boundary) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-    for (size_t j = 0; j < n; j++) boundary[j] = (int32_t)(clockwise && j > 0 ? n - j : j);
+    size_t *start = malloc((num_loops + 1) * sizeof *start);
+    if (!boundary || !start) {
+        free(boundary), free(start);
+        return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    }
+    start[0] = 0;
+    for (size_t l = 0; l < num_loops; l++) {
+        size_t first = start[l], m = loop_sizes[l];
+        start[l + 1] = first + m;
+        int backward = num_loops == 1 ? clockwise : loop_runs_backward(&r->mesh, first);
+        for (size_t j = 0; j < m; j++) boundary[first + j] = (int32_t)(first + (backward && j > 0 ? m - j : j));
+    }
     cm_fail_at(&r->error, -1, -1, -1);
-    s = cm_halfedge_build_and_check(r, boundary, NULL, 1);
+    s = cm_halfedge_build_and_check(r, boundary, num_loops > 1 ? start : NULL, num_loops);
     free(boundary);
+    if (s == CM_OK && num_loops > 1) {
+        r->stats.holes = num_loops - 1;
+        r->loop_start = start, r->num_loops = num_loops, start = NULL; /* the morph fills the holes */
+    }
+    free(start);
     if (s == CM_ERR_NO_MEMORY) return cm_fail(&r->error, s, "out of memory");
     if (s != CM_OK) {
         /* Built elsewhere: a topology failure is the caller's input. */
@@ -113,6 +150,14 @@ cm_status cm_result_from_meshes(const double *const *xy, size_t k, size_t n,
                                 size_t num_vertices, const int32_t *triangles,
                                 size_t num_triangles, cm_result **result)
 {
+    return cm_result_from_meshes_loops(xy, k, &n, 1, num_vertices, triangles, num_triangles, result);
+}
+
+cm_status cm_result_from_meshes_loops(const double *const *xy, size_t k, const size_t *loop_sizes,
+                                      size_t num_loops, size_t num_vertices,
+                                      const int32_t *triangles, size_t num_triangles,
+                                      cm_result **result)
+{
     if (!result) return CM_ERR_ARGUMENT;
     cm_gmp_memory_begin();
     cm_result *r = calloc(1, sizeof *r);
@@ -120,7 +165,7 @@ cm_status cm_result_from_meshes(const double *const *xy, size_t k, size_t n,
     if (!r) return CM_ERR_NO_MEMORY;
     cm_error_init(&r->error);
     double t0 = cm_seconds_now();
-    cm_status s = build_checked(r, xy, k, n, num_vertices, triangles, num_triangles);
+    cm_status s = build_checked(r, xy, k, loop_sizes, num_loops, num_vertices, triangles, num_triangles);
     if (s != CM_OK) cm_result_clear_geometry(r);
     else r->stats.seconds_check = cm_seconds_now() - t0;
     return cm_error_close(&r->error, s);

@@ -63,12 +63,15 @@ class PlaneError : public std::invalid_argument {
 //   relative_tolerance: largest distance allowed between a point and the
 //          plane, as a fraction of the bounding-box diagonal
 //   sign:  which way the normal points
+//   winding_points: FollowWinding takes the turn of the closed polygon
+//          through the first winding_points points (0: all n), so that a
+//          polygon with holes, stored outer loop first, follows its outer loop
 // Returns the frame. Throws PlaneError, naming the farthest point, when the
 // points are not planar within the tolerance, or a non-finite point. Fewer than
 // three points or collinear points give some plane through them (the
 // polygon check reports them later).
 PlaneFrame fit_plane(const double *xyz, std::size_t n, double relative_tolerance,
-                     NormalSign sign);
+                     NormalSign sign, std::size_t winding_points = 0);
 
 // The plane coordinates of n points: 2n doubles.
 std::vector<double> to_plane(const PlaneFrame &frame, const double *xyz, std::size_t n);

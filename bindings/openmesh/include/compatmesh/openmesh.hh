@@ -15,22 +15,29 @@
 //   tool.meshes()[0] ...
 //
 // Input meshes (any OpenMesh TriMesh or PolyMesh type; only read, nothing is
-// added to them) give one planar polygon each:
-// - a mesh with faces must be a disk (connected, manifold, one boundary
-//   loop, Euler characteristic 1); its boundary loop is the polygon, in the
-//   direction of the faces, starting at the boundary vertex with the lowest
-//   index. A single polygonal face (an OFF or OBJ file with one face read
-//   into a PolyMesh, or into a TriMesh, which fans it) is such a disk.
-// - a mesh with edges but no faces must be one closed polyline: each edge's
-//   first half-edge (OpenMesh's halfedge_handle(e, 0)) points along it.
+// added to them) give one planar polygon each, with holes or without:
+// - a mesh with faces must be a connected, manifold planar surface: a disk
+//   (one boundary loop, Euler characteristic 1) or a disk with h holes
+//   (h + 1 boundary loops, Euler characteristic 1 - h). Every loop runs in
+//   the direction of the faces. A single polygonal face (an OFF or OBJ
+//   file with one face read into a PolyMesh, or into a TriMesh, which fans
+//   it) is a disk.
+// - a mesh with edges but no faces must be one or more disjoint closed
+//   polylines: each edge's first half-edge (OpenMesh's halfedge_handle(e,
+//   0)) points along its polyline.
 // - a mesh with vertices only is the closed polygon through its vertices in
 //   index order. OpenMesh's OBJ reader drops `l` (polyline) elements and
 //   keeps the vertices in file order, so an OBJ polyline whose `l` line
 //   lists the vertices in order, or an OFF file with 0 faces, reads as this.
+// Several loops are one polygon with holes: the loop of largest area is the
+// outer loop, the others its holes, ordered by their lowest mesh vertex
+// index; every loop starts at its vertex with the lowest index. The core
+// pairs loop l of every polygon with loop l (cm_triangulate_loops).
 // Isolated vertices are ignored when the mesh has edges or faces. The
 // polygon may lie in any plane; see PlaneFrame and NormalSign in plane.hh:
 // meshes with faces keep their face orientation, face-less ones use the
-// canonical normal so their winding reaches the core unchanged.
+// canonical normal so their winding reaches the core unchanged. The plane
+// is fitted to all loops; a face mesh's normal follows its outer loop.
 //
 // Output meshes: one triangle mesh per input, all with the same
 // connectivity. Vertex v, half-edge h and face f of the core's result are
@@ -95,29 +102,41 @@ class Error : public std::runtime_error {
   long mesh_, vertex_, other_vertex_;
 };
 
-// One input polygon, read from a mesh.
+// One input polygon, read from a mesh: its loops one after another, the
+// outer loop first (a polygon without holes has one loop).
 struct Boundary {
   std::vector<double> xyz;         // 3n: the original coordinates, in polygon order
   std::vector<int> source_vertex;  // n: the mesh's vertex index of each polygon vertex
   PlaneFrame frame;                // the polygon's plane
   std::vector<double> xy;          // 2n: the coordinates in that plane
+  std::vector<std::size_t> loop_sizes;  // vertices per loop, outer first; they sum to n
 
   std::size_t size() const { return source_vertex.size(); }
+  std::size_t num_loops() const { return loop_sizes.size(); }
+  // The vertex after vertex i in i's loop.
+  std::size_t next(std::size_t i) const;
 };
 
 // Builds a Boundary from 3D points in polygon order (fits the plane; throws
 // Error when they are not planar within relative_tolerance).
 Boundary make_boundary(std::vector<double> xyz, std::vector<int> source_vertex,
                        double relative_tolerance, NormalSign sign);
+// The same for a polygon with holes: loop_sizes (outer first) split the
+// points into loops; the plane is fitted to all of them, FollowWinding
+// follows the outer loop.
+Boundary make_boundary(std::vector<double> xyz, std::vector<int> source_vertex,
+                       std::vector<std::size_t> loop_sizes, double relative_tolerance,
+                       NormalSign sign);
 
 // Reads the polygon of a mesh (the three forms listed at the top). Throws
-// Error with a message saying what is wrong: several boundary loops (holes),
-// a closed mesh, several parts, a non-manifold vertex, handles, a polyline
-// that branches or is not closed, non-planar points.
+// Error with a message saying what is wrong: a closed mesh, several parts,
+// a non-manifold vertex, handles, a polyline that branches or is not
+// closed, non-planar points.
 template <class Mesh>
 Boundary read_boundary(const Mesh &mesh, double relative_tolerance = kDefaultPlanarityTolerance);
 
-// Runs the core on the polygons. Throws Error with the core's status and
+// Runs the core on the polygons (cm_triangulate_loops when one has holes;
+// all need the same number of loops). Throws Error with the core's status and
 // message (the location translated to the input mesh's vertex) on failure;
 // rethrows what the progress function threw.
 ResultPtr triangulate(const std::vector<Boundary> &polygons, const cm_options &options,

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <string>
 #include <utility>
 
@@ -36,18 +37,17 @@ long count(const Range &range)
   return n;
 }
 
-// The boundary loop of a disk, in the direction of its faces.
+// The boundary loops of a planar surface (a disk, or a disk with holes),
+// each in the direction of its faces, each starting at its lowest index.
 template <class Mesh>
-std::vector<VertexHandle> disk_boundary(const Mesh &mesh)
+std::vector<std::vector<VertexHandle>> face_loops(const Mesh &mesh)
 {
   long used = 0;
-  VertexHandle first;
   for (VertexHandle vh : mesh.vertices()) {
     if (mesh.is_isolated(vh)) continue;
     if (!mesh.is_manifold(vh))
       throw bad_mesh("vertex " + str(vh.idx()) +
-                     " is not manifold (two fans of faces meet there); need a disk");
-    if (!first.is_valid()) first = vh;
+                     " is not manifold (two fans of faces meet there); need a disk, with holes or without");
     used++;
   }
 
@@ -69,7 +69,7 @@ std::vector<VertexHandle> disk_boundary(const Mesh &mesh)
     }
   }
   if (parts > 1)
-    throw bad_mesh("the mesh has " + str(parts) + " connected parts; need one disk");
+    throw bad_mesh("the mesh has " + str(parts) + " connected parts; need one disk, with holes or without");
 
   std::vector<char> seen(mesh.n_halfedges(), 0);
   std::vector<std::vector<VertexHandle>> loops;
@@ -82,27 +82,28 @@ std::vector<VertexHandle> disk_boundary(const Mesh &mesh)
       loop.push_back(mesh.from_vertex_handle(heh));
       heh = mesh.next_halfedge_handle(heh);
     } while (heh != start && heh.is_valid() && loop.size() <= mesh.n_halfedges());
+    // Boundary half-edges run against the faces: reverse to follow them.
+    std::reverse(loop.begin(), loop.end());
+    start_at_lowest(loop);
     loops.push_back(std::move(loop));
   }
   if (loops.empty()) throw bad_mesh("the mesh is closed (no boundary loop); need a disk");
-  if (loops.size() > 1)
-    throw bad_mesh("the mesh has " + str(long(loops.size())) +
-                   " boundary loops (holes); need a disk, which has one");
 
+  // A connected surface with b boundary loops is planar (a disk with b - 1
+  // holes) exactly when its Euler characteristic is 2 - b.
+  const long holes = long(loops.size()) - 1;
   long euler = used - count(mesh.edges()) + count(mesh.faces());
-  if (euler != 1)
-    throw bad_mesh("the mesh is not a disk: its Euler characteristic is " + str(euler) +
-                   " (a disk's is 1), so it has handles");
-
-  // Boundary half-edges run against the faces: reverse to follow them.
-  std::vector<VertexHandle> polygon(loops[0].rbegin(), loops[0].rend());
-  start_at_lowest(polygon);
-  return polygon;
+  if (euler != 1 - holes)
+    throw bad_mesh("the mesh is not a disk" + std::string(holes ? " with holes" : "") +
+                   ": its Euler characteristic is " + str(euler) + " (with " + str(holes + 1) +
+                   " boundary loops it must be " + str(1 - holes) + "), so it has handles");
+  return loops;
 }
 
-// A closed polyline given by edges, each edge's first half-edge pointing along it.
+// Closed polylines given by edges, each edge's first half-edge pointing
+// along its polyline; each loop starts at its lowest index.
 template <class Mesh>
-std::vector<VertexHandle> polyline(const Mesh &mesh)
+std::vector<std::vector<VertexHandle>> polylines(const Mesh &mesh)
 {
   std::vector<HalfedgeHandle> out(mesh.n_vertices());
   std::vector<int> n_out(mesh.n_vertices(), 0), n_in(mesh.n_vertices(), 0);
@@ -114,44 +115,80 @@ std::vector<VertexHandle> polyline(const Mesh &mesh)
     n_out[from.idx()]++;
     n_in[to.idx()]++;
   }
-  long used = 0;
-  VertexHandle first;
   for (VertexHandle vh : mesh.vertices()) {
     int i = vh.idx();
     if (n_out[i] + n_in[i] == 0) continue;
     if (n_out[i] != 1 || n_in[i] != 1)
-      throw bad_mesh("the edges are not one closed polyline: vertex " + str(i) + " has " +
+      throw bad_mesh("the edges are not closed polylines: vertex " + str(i) + " has " +
                      str(n_in[i]) + " incoming and " + str(n_out[i]) +
-                     " outgoing edges (each edge's first half-edge must point along the polyline)");
-    if (!first.is_valid()) first = vh;
-    used++;
+                     " outgoing edges (each edge's first half-edge must point along its polyline)");
   }
-  std::vector<VertexHandle> polygon;
-  VertexHandle vh = first;
-  do {
-    polygon.push_back(vh);
-    vh = mesh.to_vertex_handle(out[vh.idx()]);
-  } while (vh != first);
-  if (long(polygon.size()) != used)
-    throw bad_mesh("the edges form several closed polylines; need one");
-  start_at_lowest(polygon);
-  return polygon;
+  std::vector<char> taken(mesh.n_vertices(), 0);
+  std::vector<std::vector<VertexHandle>> loops;
+  for (VertexHandle first : mesh.vertices()) {
+    if (n_out[first.idx()] == 0 || taken[first.idx()]) continue;
+    std::vector<VertexHandle> loop;
+    VertexHandle vh = first;
+    do {
+      taken[vh.idx()] = 1;
+      loop.push_back(vh);
+      vh = mesh.to_vertex_handle(out[vh.idx()]);
+    } while (vh != first);
+    // Found from its lowest vertex, so it already starts there.
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+// Twice the area of a planar loop in space (the length of Newell's vector).
+template <class Mesh>
+double loop_area(const Mesh &mesh, const std::vector<VertexHandle> &loop)
+{
+  double sum[3] = {0, 0, 0};
+  for (std::size_t i = 0; i < loop.size(); i++) {
+    const auto &p = mesh.point(loop[i]), &q = mesh.point(loop[(i + 1) % loop.size()]);
+    sum[0] += double(p[1]) * q[2] - double(p[2]) * q[1];
+    sum[1] += double(p[2]) * q[0] - double(p[0]) * q[2];
+    sum[2] += double(p[0]) * q[1] - double(p[1]) * q[0];
+  }
+  return std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+}
+
+// The outer loop (largest area; the first of equal ones) first, then the
+// holes by their lowest vertex index: an order that depends on the mesh
+// alone, so two meshes built alike give loops that correspond.
+template <class Mesh>
+void outer_first(const Mesh &mesh, std::vector<std::vector<VertexHandle>> &loops)
+{
+  if (loops.size() < 2) return;
+  std::sort(loops.begin(), loops.end(), [](const std::vector<VertexHandle> &a, const std::vector<VertexHandle> &b) {
+    return a.front().idx() < b.front().idx();
+  });
+  std::size_t outer = 0;
+  double largest = loop_area(mesh, loops[0]);
+  for (std::size_t l = 1; l < loops.size(); l++) {
+    double area = loop_area(mesh, loops[l]);
+    if (area > largest) largest = area, outer = l;
+  }
+  std::rotate(loops.begin(), loops.begin() + outer, loops.begin() + outer + 1);
 }
 
 template <class Mesh>
-Boundary boundary_of(const Mesh &mesh, const std::vector<VertexHandle> &polygon,
+Boundary boundary_of(const Mesh &mesh, const std::vector<std::vector<VertexHandle>> &loops,
                      double relative_tolerance, NormalSign sign)
 {
   std::vector<double> xyz;
   std::vector<int> source;
-  xyz.reserve(3 * polygon.size());
-  source.reserve(polygon.size());
-  for (VertexHandle vh : polygon) {
-    const auto &p = mesh.point(vh);
-    for (int c = 0; c < 3; c++) xyz.push_back(double(p[c]));
-    source.push_back(vh.idx());
+  std::vector<std::size_t> sizes;
+  for (const std::vector<VertexHandle> &loop : loops) {
+    sizes.push_back(loop.size());
+    for (VertexHandle vh : loop) {
+      const auto &p = mesh.point(vh);
+      for (int c = 0; c < 3; c++) xyz.push_back(double(p[c]));
+      source.push_back(vh.idx());
+    }
   }
-  return make_boundary(std::move(xyz), std::move(source), relative_tolerance, sign);
+  return make_boundary(std::move(xyz), std::move(source), std::move(sizes), relative_tolerance, sign);
 }
 
 [[noreturn]] inline void mismatch(const std::string &what)
@@ -164,16 +201,18 @@ Boundary boundary_of(const Mesh &mesh, const std::vector<VertexHandle> &polygon,
 template <class Mesh>
 Boundary read_boundary(const Mesh &mesh, double relative_tolerance)
 {
-  if (mesh.n_faces() > 0)
-    return detail::boundary_of(mesh, detail::disk_boundary(mesh), relative_tolerance,
-                               NormalSign::FollowWinding);
-  std::vector<OpenMesh::VertexHandle> polygon;
-  if (mesh.n_edges() > 0) {
-    polygon = detail::polyline(mesh);
+  std::vector<std::vector<OpenMesh::VertexHandle>> loops;
+  if (mesh.n_faces() > 0) {
+    loops = detail::face_loops(mesh);
+  } else if (mesh.n_edges() > 0) {
+    loops = detail::polylines(mesh);
   } else {
-    for (OpenMesh::VertexHandle vh : mesh.vertices()) polygon.push_back(vh);
+    loops.emplace_back();
+    for (OpenMesh::VertexHandle vh : mesh.vertices()) loops[0].push_back(vh);
   }
-  return detail::boundary_of(mesh, polygon, relative_tolerance, NormalSign::Canonical);
+  detail::outer_first(mesh, loops);
+  return detail::boundary_of(mesh, loops, relative_tolerance,
+                             mesh.n_faces() > 0 ? NormalSign::FollowWinding : NormalSign::Canonical);
 }
 
 template <class Mesh>
@@ -208,7 +247,7 @@ Mesh result_to_mesh(const cm_result *result, std::size_t g, const Boundary *boun
   for (std::size_t v = 0; v < nv; v++) {
     std::array<double, 3> p;
     if (boundary && v < n) {
-      const double *a = &boundary->xyz[3 * edge[v]], *b = &boundary->xyz[3 * ((edge[v] + 1) % boundary->size())];
+      const double *a = &boundary->xyz[3 * edge[v]], *b = &boundary->xyz[3 * boundary->next(std::size_t(edge[v]))];
       for (int c = 0; c < 3; c++) p[c] = along[v] == 0 ? a[c] : a[c] + along[v] * (b[c] - a[c]);
     } else if (boundary)
       p = boundary->frame.to_space(xy[2 * v], xy[2 * v + 1]);
