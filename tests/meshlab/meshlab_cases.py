@@ -489,26 +489,9 @@ SECTION = """ <filter name="Compute Planar Section">
 def read_obj_loop(path):
     """The closed polyline of an OBJ file of `l a b` lines (MeshLab's
     section output: undirected edges in no particular order), in loop order."""
-    points, neighbours = [], {}
-    for line in open(path):
-        t = line.split()
-        if t and t[0] == "v":
-            points.append(tuple(float(x) for x in t[1:4]))
-        elif t and t[0] == "l":
-            a, b = int(t[1]) - 1, int(t[2]) - 1
-            neighbours.setdefault(a, []).append(b)
-            neighbours.setdefault(b, []).append(a)
-    assert len(neighbours) == len(points) and all(len(v) == 2 for v in neighbours.values()), \
-        "%s: not one closed polyline" % path
-    loop, prev = [0], None
-    while True:
-        nxt = [v for v in neighbours[loop[-1]] if v != prev][0]
-        if nxt == 0:
-            break
-        prev = loop[-1]
-        loop.append(nxt)
-    assert len(loop) == len(points), "%s: several loops" % path
-    return [points[i] for i in loop]
+    loops = read_obj_loops(path)
+    assert len(loops) == 1, "%s: several loops" % path
+    return loops[0]
 
 
 def case_gmsh_sections(w):
