@@ -160,13 +160,14 @@ static int poorly_split(const section *lo, const int32_t *c, double split_deg)
 
 /* Checks the prisms between sections lo and lo + 1: *bad is the first
  * triangle whose prism is invalid (blend or, with a splitter, a
- * tetrahedron of its chosen split not positive), or -1; *poor the first
+ * tetrahedron of its chosen split not positive; *tets_only 1 for the
+ * latter), or -1; *poor the first
  * whose split is poor (poorly_split), or -1. With a splitter, lo->split
  * and lo->worst_dihedral are (re)computed. */
 static cm_status check_layer(cm_sweep *w, const cm_morph *m, section *lo, layer_splitter *splitter, long *bad,
-                             long *poor)
+                             int *tets_only, long *poor)
 {
-    *poor = -1;
+    *poor = -1, *tets_only = 0;
     double flattest = 0; /* longest triangle edge of the layer */
     const int32_t *tri = m->result->mesh.tri;
     size_t nv = m->nv;
@@ -194,7 +195,7 @@ static cm_status check_layer(cm_sweep *w, const cm_morph *m, section *lo, layer_
             node_xyz(lo, q[4 * j], nv, a), node_xyz(lo, q[4 * j + 1], nv, b);
             node_xyz(lo, q[4 * j + 2], nv, cc), node_xyz(lo, q[4 * j + 3], nv, d);
             if (cm_orient3d(a, b, cc, d) <= 0) {
-                *bad = (long)t;
+                *bad = (long)t, *tets_only = 1;
                 return CM_OK;
             }
         }
@@ -301,7 +302,8 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
             break;
         }
         long bad, poor;
-        s = check_layer(w, m, secs + i, split, &bad, &poor);
+        int tets_only;
+        s = check_layer(w, m, secs + i, split, &bad, &tets_only, &poor);
         if (s != CM_OK) break;
         /* End of this segment: the next section starts the next one. */
         double s_end = secs[i + 1].g == secs[i].g ? secs[i + 1].s : 1.0;
@@ -312,11 +314,24 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
             i++;
             continue;
         }
+        if (refined == o->max_refine && tets_only) {
+            /* The prism is valid; its triangle is too thin for a split
+             * into three positive tetrahedra at any step the budget allows. */
+            const int32_t *c = m->result->mesh.tri + 3 * (size_t)bad;
+            const double *xy = secs[i].xy;
+            double angle = cm_triangle_min_angle(xy + 2 * (size_t)c[0], xy + 2 * (size_t)c[1], xy + 2 * (size_t)c[2]);
+            s = cm_fail(&w->error, CM_ERR_INTERNAL,
+                        "sweep: the prism of triangle %ld between z = %g and z = %g is valid, but its tetrahedra "
+                        "are not all positive after %zu inserted sections (max_refine): the triangle's smallest "
+                        "angle is %.3g degrees there; sweep into prisms, or remesh to a larger smallest angle",
+                        bad, secs[i].z, secs[i + 1].z, refined, angle * 180.0 / CM_PI);
+            break;
+        }
         if (refined == o->max_refine) {
             s = cm_fail(&w->error, CM_ERR_INTERNAL,
-                     "sweep: the prism of triangle %ld between z = %g and z = %g is not valid along its blend%s "
+                     "sweep: the prism of triangle %ld between z = %g and z = %g is not valid along its blend "
                      "after %zu inserted sections (max_refine)",
-                     bad, secs[i].z, secs[i + 1].z, o->tets ? " or its tetrahedra" : "", refined);
+                     bad, secs[i].z, secs[i + 1].z, refined);
             break;
         }
         if (count == cap) {
