@@ -306,16 +306,22 @@ static void glyph_pair(writer *w, const char *chars, int n)
     glyph_set(w, name, chars, n);
 }
 
+/* Two unrelated polygons of one generator (seeds 2 seed and 2 seed + 1). */
+static void unrelated_pair(writer *w, const char *name, int n, uint64_t seed,
+                           int (*generate)(double *, int, uint64_t), const char *failure)
+{
+    polys p;
+    if (polys_alloc(&p, n) == 0 && generate(p.xy[0], n, 2 * seed) == 0 && generate(p.xy[1], n, 2 * seed + 1) == 0)
+        emit(w, name, p.xy, 2, n);
+    else
+        report_failure(w, name, failure);
+    polys_free(&p);
+}
+
 /* Two unrelated random stars. */
 static void star_pair(writer *w, const char *name, int n, uint64_t seed)
 {
-    polys p;
-    if (polys_alloc(&p, n) == 0 && rp_star(p.xy[0], n, 2 * seed) == 0 &&
-        rp_star(p.xy[1], n, 2 * seed + 1) == 0)
-        emit(w, name, p.xy, 2, n);
-    else
-        report_failure(w, name, "star generator failed");
-    polys_free(&p);
+    unrelated_pair(w, name, n, seed, rp_star, "star generator failed");
 }
 
 /* A star against itself with the correspondence turned by `shift`. */
@@ -430,13 +436,7 @@ static void bench_set(writer *w)
 /* Two unrelated random simple polygons. */
 static void random_random_pair(writer *w, const char *name, int n, uint64_t seed)
 {
-    polys p;
-    if (polys_alloc(&p, n) == 0 && rp_random_simple(p.xy[0], n, 2 * seed) == 0 &&
-        rp_random_simple(p.xy[1], n, 2 * seed + 1) == 0)
-        emit(w, name, p.xy, 2, n);
-    else
-        report_failure(w, name, "random simple polygon generator failed");
-    polys_free(&p);
+    unrelated_pair(w, name, n, seed, rp_random_simple, "random simple polygon generator failed");
 }
 
 /* The partition's growth with n: unrelated random polygons and stars up to

@@ -6,7 +6,7 @@
 
 /* One hole's fill, appended to out (vertices from out->nv on, triangles
  * from out->nt on; out's arrays hold the room). */
-static cm_status append_fill(const cm_result *hole, size_t first, size_t m, cm_mesh *out)
+static void append_fill(const cm_result *hole, size_t first, size_t m, cm_mesh *out)
 {
     size_t nv = cm_result_num_vertices(hole), nt = cm_result_num_triangles(hole);
     for (size_t g = 0; g < out->k; g++)
@@ -17,7 +17,6 @@ static cm_status append_fill(const cm_result *hole, size_t first, size_t m, cm_m
         out->tri[3 * out->nt + j] = (int32_t)(v < m ? first + v : out->nv + v - m);
     }
     out->nv += nv - m, out->nt += nt;
-    return CM_OK;
 }
 
 cm_status cm_fill_holes(const cm_result *r, cm_mesh *out, cm_error *err)
