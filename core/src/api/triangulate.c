@@ -610,12 +610,16 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
     cm_status s = orientation && loop_orientation && start && count && sizes && xy && maps && refined
                       ? CM_OK
                       : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-    if (s == CM_OK) s = cm_input_check_loops(polygons, k, orientation, &r->error);
     int index_split = o->correspondence == CM_CORRESPOND_INDEX;
     size_t *every = NULL;
+    if (s == CM_OK && !index_split) s = cm_input_check_loops(polygons, k, orientation, &r->error);
     if (s == CM_OK && index_split) { /* equal sizes and directions, then vertex i on vertex i */
         int *reversed = malloc(L * sizeof *reversed);
         s = reversed ? cm_input_validate_loops(polygons, k, &r->error, reversed) : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        /* Every polygon runs each loop the same way: outer counter-clockwise
+         * unless reversed, holes clockwise unless reversed. */
+        for (size_t g = 0; s == CM_OK && g < k; g++)
+            for (size_t l = 0; l < L; l++) orientation[g * L + l] = (l == 0) == !reversed[l] ? 1 : -1;
         free(reversed);
         size_t largest = 0;
         for (size_t l = 0; l < L; l++) largest = polygons[0].loop_sizes[l] > largest ? polygons[0].loop_sizes[l] : largest;
