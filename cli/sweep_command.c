@@ -352,6 +352,9 @@ static int sweep(const sweep_args *args, cli_error *error)
             printf("wrote %s (%zu sections, %zu nodes, %zu %s, %s)\n", args->output,
                    cm_sweep_num_sections(sweep), mesh.num_nodes, mesh.num_cells,
                    args->tets ? "tetrahedra" : "prisms", volume_text);
+        if (code == CLI_EXIT_OK && !cli_quiet() && cm_sweep_morph_method(sweep) == CM_MORPH_INTRINSIC)
+            printf("the convex morph needed more inserted sections than max_refine; the sections are the "
+                   "intrinsic morph's (angles and edge lengths interpolated)\n");
         cm_sweep_quality quality;
         cm_sweep_get_quality(sweep, &quality);
         char warning[256] = "";

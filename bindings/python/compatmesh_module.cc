@@ -727,6 +727,7 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
   out["volume"] = cm_sweep_volume(w.get());
   out["height"] = cm_sweep_height(w.get());
   out["height_is_default"] = cm_sweep_height_is_default(w.get()) != 0;
+  out["morph"] = cm_sweep_morph_method(w.get()) == CM_MORPH_INTRINSIC ? "intrinsic" : "convex";
   cm_sweep_quality q;
   cm_sweep_get_quality(w.get(), &q);
   py::dict quality;
@@ -1099,6 +1100,8 @@ Fields, as attributes and by key (s["nodes"]):
   tets         T x 4 int32, positive volume (0 x 4 without tets)
   section_z    S float64, the sections' heights
   volume, height (floats), height_is_default (bool)
+  morph        "convex", or "intrinsic" where the convex morph needed
+               more inserted sections than max_refine
   quality      dict of 3D figures (see sweep()))doc");
   add_mapping(sweep_class, {{"nodes", "N x 3 float64 array; node s * nv + v is vertex v of section s"},
                             {"prisms", "P x 6 int32 array, Gmsh's wedge order"},
@@ -1106,7 +1109,8 @@ Fields, as attributes and by key (s["nodes"]):
                             {"section_z", "S float64 array: the sections' heights"},
                             {"volume", "float: the prisms' total volume"},
                             {"height", "float: first to last section"},
-                            {"height_is_default", "bool: the height came from the polygons' size"}});
+                            {"height_is_default", "bool: the height came from the polygons' size"},
+                            {"morph", "str: the morph whose sections were stacked, convex or intrinsic"}});
   sweep_class
       .def("to_meshio", &sweep_to_meshio, py::arg("cells") = py::none(),
            R"doc(to_meshio(cells=None) -> meshio.Mesh
@@ -1240,7 +1244,8 @@ Returns a Sweep (its fields also by key, as in a dict): nodes (N x 3 float64;
 node s * nv + v is vertex v of section s), prisms (P x 6 int32, Gmsh wedge
 order: bottom counter-clockwise seen from +z, then top), tets (T x 4 int32,
 positive volume; 0 x 4 unless tets), section_z (S float64), volume (the prisms' total), height (first to last section) and
-height_is_default, quality (a dict for the tetrahedra if tets, else the
+height_is_default, morph ("convex", or "intrinsic" where the convex morph
+needed more sections than max_refine), quality (a dict for the tetrahedra if tets, else the
 prisms: min_dihedral_deg, max_dihedral_deg, min_scaled_jacobian,
 max_aspect_ratio, max_prism_flatness = longest triangle edge / prism height,
 flat_prisms = prisms flatter than 1:10); and points (= nodes), cells,

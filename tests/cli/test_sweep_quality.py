@@ -76,6 +76,7 @@ def test_us_tetrahedra_have_no_slivers(cm, tmp_path, gmsh_session, us_pair):
     quality = report["quality"]
     p = read_back(tmp_path / "us.msh", 4, 4)
     assert len(p) == report["cells"] and report["cell_type"] == "tetrahedron"
+    assert report["morph"] == "convex"
     angles = dihedral_angles(p)
     assert angles.min() >= 5.0
     assert quality["min_dihedral_deg"] == pytest.approx(angles.min(), abs=1e-6)

@@ -150,6 +150,7 @@ def test_sweep_default_height_follows_the_size(twisted):
     diagonal = max(np.hypot(*np.ptp(p, axis=0)) for p in big)
     assert s["nodes"][:, 2].min() == 0 and s["nodes"][:, 2].max() == pytest.approx(diagonal, rel=1e-15)
     assert s["height"] == s["nodes"][:, 2].max() and s["height_is_default"]
+    assert s["morph"] == "convex"  # its prisms need no more than max_refine sections
     given = compatmesh.sweep(big, sections=3, height=50.0)
     assert given["height"] == 50.0 and not given["height_is_default"]
 

@@ -551,9 +551,11 @@ typedef struct cm_sweep cm_sweep;
  * top sections; this is checked exactly, and where it fails an
  * intermediate section is inserted (bisecting morph time) up to
  * max_refine times; with options.tets, also where a tetrahedron of the
- * split is not positive. Every section must be valid (a linear morph that
- * inverts fails). Same handle and message conventions as the morph; a
- * failed sweep holds no mesh. */
+ * split is not positive. When a convex-combination morph needs more than
+ * max_refine sections, the sweep is built again from an intrinsic morph of
+ * the same result (cm_sweep_morph_method says which was used). Every
+ * section must be valid (a linear morph that inverts fails). Same handle
+ * and message conventions as the morph; a failed sweep holds no mesh. */
 CM_API cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_sweep **sweep);
 CM_API void cm_sweep_free(cm_sweep *sweep);
 CM_API const char *cm_sweep_message(const cm_sweep *sweep);
@@ -590,6 +592,8 @@ CM_API double cm_sweep_volume(const cm_sweep *sweep);
  * diagonal of the geometries), else 0. */
 CM_API double cm_sweep_height(const cm_sweep *sweep);
 CM_API int cm_sweep_height_is_default(const cm_sweep *sweep);
+/* The method of the morph whose sections the sweep holds. */
+CM_API cm_morph_method cm_sweep_morph_method(const cm_sweep *sweep);
 
 /* A prism is flat when its longest triangle edge (bottom or top) exceeds
  * this many times its height: its tetrahedra have dihedral angles of a few

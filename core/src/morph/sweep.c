@@ -35,6 +35,7 @@ struct cm_sweep {
     double *z, *nodes, volume;
     int32_t *prisms, *tets;
     int default_height;
+    cm_morph_method morph_method; /* of the morph whose sections were used */
     cm_sweep_quality quality;
 };
 
@@ -295,7 +296,9 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
         secs[i].z = j == per ? z1 : between(z0, z1, secs[i].s);
         s = make_section(w, m, &secs[i]);
     }
-    size_t refined = 0;
+    /* Poor splits may spend half of max_refine; invalid cells keep the
+     * rest, so improving shapes early never leaves a later cell invalid. */
+    size_t refined = 0, refined_poor = 0;
     for (size_t i = 0; i + 1 < count && s == CM_OK;) {
         if (cm_progress_report(&progress, CM_STAGE_SWEEP, (double)i / (double)count)) {
             s = cm_fail_status(&w->error, CM_ERR_CANCELLED);
@@ -310,7 +313,7 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
         double s_mid = 0.5 * (secs[i].s + s_end);
         /* Poor splits are improved while refinement and doubles allow;
          * invalid cells must be. */
-        if (bad < 0 && (poor < 0 || refined == o->max_refine || !(s_mid > secs[i].s && s_mid < s_end))) {
+        if (bad < 0 && (poor < 0 || refined_poor >= o->max_refine / 2 || !(s_mid > secs[i].s && s_mid < s_end))) {
             i++;
             continue;
         }
@@ -351,7 +354,7 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
         }
         memmove(secs + i + 2, secs + i + 1, (count - i - 1) * sizeof *secs);
         secs[i + 1] = mid;
-        count++, refined++;
+        count++, refined++, refined_poor += bad < 0;
         s = make_section(w, m, &secs[i + 1]);
     }
     if (s == CM_OK) {
@@ -399,6 +402,35 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
     return s;
 }
 
+/* The convex-combination morph can keep a triangle thin over a long
+ * stretch of time; its prisms (and more so their tetrahedra) then need
+ * more sections than max_refine. The intrinsic morph interpolates each
+ * star's angles and edge lengths, so such a triangle opens up: the sweep
+ * is built again from its sections. The first message is kept when that
+ * fails too. */
+static cm_status retry_intrinsic(cm_sweep *w, cm_morph *morph, const cm_sweep_options *o)
+{
+    cm_morph_options mo;
+    cm_morph_options_init(&mo);
+    mo.method = CM_MORPH_INTRINSIC;
+    mo.progress = o->progress, mo.progress_user = o->progress_user;
+    cm_error first = w->error;
+    cm_morph *alt = NULL;
+    cm_status s = cm_morph_create(morph->result, &mo, &alt);
+    if (s == CM_OK) {
+        cm_error_init(&w->error);
+        s = build_prisms(w, alt, o);
+    }
+    cm_morph_free(alt);
+    if (s == CM_OK) {
+        w->morph_method = CM_MORPH_INTRINSIC;
+        return CM_OK;
+    }
+    if (s == CM_ERR_CANCELLED || s == CM_ERR_NO_MEMORY) return cm_fail_status(&w->error, s);
+    w->error = first;
+    return first.status;
+}
+
 cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_sweep **sweep)
 {
     if (!sweep) return CM_ERR_ARGUMENT;
@@ -409,7 +441,9 @@ cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_s
     if (!morph) return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: morph is NULL");
     if (!morph->result) return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: the morph failed to build (%s)", cm_morph_message(morph));
     cm_status s = check_options(w, morph, options);
+    w->morph_method = morph->method;
     if (s == CM_OK) s = build_prisms(w, morph, options);
+    if (s == CM_ERR_INTERNAL && morph->method == CM_MORPH_CONVEX) s = retry_intrinsic(w, morph, options);
     if (s != CM_OK) {
         free(w->z), free(w->nodes), free(w->prisms), free(w->tets);
         w->z = w->nodes = NULL, w->prisms = w->tets = NULL;
@@ -437,6 +471,7 @@ const int32_t *cm_sweep_tets(const cm_sweep *w) { return w ? w->tets : NULL; }
 double cm_sweep_volume(const cm_sweep *w) { return w ? w->volume : 0.0; }
 double cm_sweep_height(const cm_sweep *w) { return w && w->ns ? w->z[w->ns - 1] - w->z[0] : 0.0; }
 int cm_sweep_height_is_default(const cm_sweep *w) { return w && w->ns ? w->default_height : 0; }
+cm_morph_method cm_sweep_morph_method(const cm_sweep *w) { return w ? w->morph_method : CM_MORPH_CONVEX; }
 
 void cm_sweep_get_quality(const cm_sweep *w, cm_sweep_quality *quality)
 {

@@ -36,7 +36,9 @@
  * vertices go where a triangle is poor in the metric halfway between them
  * (maprefine), each insertion kept only where no angle dropped; its forced
  * moves also try an insertion at the middle circumcentre of a short
- * triangle. */
+ * triangle. When the greedy remesher ends below CM_RESCUE_SHARE of its
+ * aim, the map-aware one runs on the same construction and the better
+ * result is kept. */
 #include <math.h>
 #include <stdlib.h>
 
@@ -64,6 +66,9 @@
  * splits. */
 #define CM_PROGRESS 1e-3
 #define CM_PROGRESS_SHARE 0.03
+/* A greedy result whose smallest angle ends below this share of its aim
+ * is also remeshed by the map-aware remesher. */
+#define CM_RESCUE_SHARE 0.3
 /* The short triangles a round of forced moves looks at. */
 #define CM_STEP_OUT_WORST 8
 
@@ -565,41 +570,61 @@ static void remesher_free(remesher *x)
     free(x->tabu.keys), free(x->tabu.count);
 }
 
+/* One run of the remesher chosen by o on a copy of mesh, the result left
+ * in x->km. CM_OK, CM_ERR_NO_MEMORY, CM_ERR_CANCELLED or CM_ERR_INTERNAL
+ * (the construction is not a triangulated disk). */
+static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg,
+                            cm_progress *progress, cm_remesh_report *rep)
+{
+    x->o = o;
+    x->progress = progress;
+    x->target = fmin(o->min_angle_deg, ceiling_deg) * CM_PI / 180.0;
+    cm_status s = cm_kmesh_build(&x->km, mesh, n);
+    if (s != CM_OK) return s;
+    long removed = set_caps(x, mesh, n, rep) ? -1 : coarsen(x, 0.0);
+    if (removed < 0 || improve_everywhere(x)) return stop_status(x);
+    rep->collapses += removed;
+    if (cm_progress_report(progress, CM_STAGE_REMESH, 0.0)) return CM_ERR_CANCELLED;
+    if (o->remesher == CM_REMESHER_MAP) {
+        if ((s = map_start(x, n, rep)) != CM_OK) return s;
+        if (improve_everywhere(x)) return stop_status(x);
+    }
+    if ((s = refine(x, n, rep)) != CM_OK) return s;
+    if (improve_everywhere(x)) return stop_status(x);
+    if ((s = step_out(x, n)) != CM_OK) return s;
+    long late = coarsen(x, o->min_angle_deg * CM_PI / 180.0);
+    if (late < 0 || improve_everywhere(x)) return stop_status(x);
+    rep->collapses += late;
+    rep->flips = x->flips;
+    rep->min_angle_deg = cm_kmesh_min_angle(&x->km) * 180.0 / CM_PI;
+    return CM_OK;
+}
+
 cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, cm_progress *progress,
                     cm_remesh_report *rep, cm_error *err)
 {
-    remesher x = {0};
-    x.o = o;
-    x.progress = progress;
-    x.target = fmin(o->min_angle_deg, ceiling_deg) * CM_PI / 180.0;
-    cm_status s = cm_kmesh_build(&x.km, mesh, n);
+    remesher x = {0}, y = {0};
+    cm_status s = remesh_run(&x, mesh, n, o, ceiling_deg, progress, rep);
+    /* The greedy remesher can stall far below its aim, typically on a
+     * sliver its local moves cannot reach (a slivered result also makes
+     * the sweep's tetrahedra fail); the map-aware remesher starts the
+     * same construction differently. The better result is kept. */
+    cm_options map = *o;
+    map.remesher = CM_REMESHER_MAP;
+    if (s == CM_OK && o->remesher == CM_REMESHER_GREEDY && rep->min_angle_deg < CM_RESCUE_SHARE * rep->target_deg) {
+        cm_remesh_report again = {0};
+        s = remesh_run(&y, mesh, n, &map, ceiling_deg, progress, &again);
+        if (s == CM_OK && again.min_angle_deg > rep->min_angle_deg) {
+            remesher t = x;
+            x = y, y = t;
+            again.iterations += rep->iterations, again.splits += rep->splits;
+            again.split_attempts += rep->split_attempts;
+            *rep = again;
+            rep->rescued = 1;
+        }
+    }
+    if (s == CM_OK) s = cm_kmesh_write(&x.km, mesh);
+    remesher_free(&x), remesher_free(&y);
     if (s == CM_ERR_INTERNAL) return cm_fail(err, s, "remesh: the construction is not a triangulated disk");
-    if (s != CM_OK) return cm_fail_status(err, s);
-    long removed = set_caps(&x, mesh, n, rep) ? -1 : coarsen(&x, 0.0);
-    if (removed < 0 || improve_everywhere(&x)) goto oom;
-    rep->collapses += removed;
-    if (cm_progress_report(progress, CM_STAGE_REMESH, 0.0)) {
-        s = CM_ERR_CANCELLED;
-        goto stop;
-    }
-    if (o->remesher == CM_REMESHER_MAP) {
-        if ((s = map_start(&x, n, rep)) != CM_OK) goto stop;
-        if (improve_everywhere(&x)) goto oom;
-    }
-    if ((s = refine(&x, n, rep)) != CM_OK) goto stop;
-    if (improve_everywhere(&x)) goto oom;
-    if ((s = step_out(&x, n)) != CM_OK) goto stop;
-    long late = coarsen(&x, o->min_angle_deg * CM_PI / 180.0);
-    if (late < 0 || improve_everywhere(&x)) goto oom;
-    rep->collapses += late;
-    rep->flips = x.flips;
-    rep->min_angle_deg = cm_kmesh_min_angle(&x.km) * 180.0 / CM_PI;
-    s = cm_kmesh_write(&x.km, mesh);
-    remesher_free(&x);
     return s == CM_OK ? CM_OK : cm_fail_status(err, s);
-oom:
-    s = stop_status(&x);
-stop:
-    remesher_free(&x);
-    return cm_fail_status(err, s);
 }
