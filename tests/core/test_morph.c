@@ -261,6 +261,41 @@ static void test_clockwise(void)
     cm_result_free(r);
 }
 
+/* The same compatible pair with its second geometry moved far away
+ * (about 1,000 times its size): the morph runs about each geometry's
+ * centre, so every section is the unmoved pair's section moved by t times
+ * the offset, to within rounding, whatever the method. */
+static void test_translation(void)
+{
+    cm_result *r = fixture_result(FIX_GLYPH, N), *far = NULL;
+    CHECK(r != NULL);
+    if (!r) return;
+    size_t nv = cm_result_num_vertices(r);
+    double *moved = malloc(2 * nv * sizeof *moved), *p = malloc(2 * nv * sizeof *p), *q = malloc(2 * nv * sizeof *q);
+    for (size_t i = 0; moved && i < nv; i++)
+        moved[2 * i] = cm_result_vertices(r, 1)[2 * i] + 4000.0, moved[2 * i + 1] = cm_result_vertices(r, 1)[2 * i + 1] - 3000.0;
+    const double *geoms[2] = {cm_result_vertices(r, 0), moved};
+    CHECK(moved && p && q &&
+          cm_result_from_meshes(geoms, 2, N, nv, cm_result_triangles(r), cm_result_num_triangles(r), &far) == CM_OK);
+    for (int method = CM_MORPH_CONVEX; method <= CM_MORPH_INTRINSIC && p && q && moved; method++) {
+        cm_morph_options mo;
+        cm_morph_options_init(&mo);
+        mo.method = (cm_morph_method)method;
+        cm_morph *m = NULL, *mf = NULL;
+        CHECK(cm_morph_create(r, &mo, &m) == CM_OK && cm_morph_create(far, &mo, &mf) == CM_OK);
+        for (int j = 1; j < 10; j++) {
+            double t = j / 10.0, worst = 0;
+            CHECK(cm_morph_section(m, t, p, NULL, NULL) == CM_OK && cm_morph_section(mf, t, q, NULL, NULL) == CM_OK);
+            for (size_t v = 0; v < nv; v++)
+                worst = fmax(worst, hypot(q[2 * v] - p[2 * v] - 4000.0 * t, q[2 * v + 1] - p[2 * v + 1] + 3000.0 * t));
+            CHECK_MSG(worst < 1e-9, "translation, method %d, t = %g: a vertex is %g off", method, t, worst);
+        }
+        cm_morph_free(m), cm_morph_free(mf);
+    }
+    free(moved), free(p), free(q);
+    cm_result_free(r), cm_result_free(far);
+}
+
 /* Progress: fractions rise within [0, 1]; cancelling half-way leaves a
  * handle that refuses sections. */
 typedef struct progress_log {
@@ -354,6 +389,7 @@ int main(void)
     test_linear();
     test_random_pairs();
     test_clockwise();
+    test_translation();
     test_progress();
     test_bad_arguments();
     return check_summary("test_morph");

@@ -240,30 +240,30 @@ static void test_failures(void)
     CHECK(cm_sweep_num_prisms(w) == 0 && cm_sweep_prisms(w) == NULL);
     cm_sweep_free(w);
 
-    cm_result *spiral = fixture_result(FIX_SPIRAL, N);
-    cm_morph *ms = NULL, *mi = NULL;
+    /* The convex morph's tetrahedra of the three-geometry fixture need 8
+     * inserted sections, the intrinsic morph's 5: with 6 allowed, the sweep
+     * is built from the intrinsic morph; with none, both fail. */
+    cm_result *three = fixture_result(FIX_THREE, N);
+    cm_morph *mc = NULL, *mi = NULL;
     cm_morph_options_init(&mo);
     mo.method = CM_MORPH_INTRINSIC;
-    CHECK(spiral && cm_morph_create(spiral, NULL, &ms) == CM_OK && cm_morph_create(spiral, &mo, &mi) == CM_OK);
-    /* The convex morph's prisms of the spiral need an inserted section to
-     * stay valid; without one, the sweep is built from the intrinsic
-     * morph, whose prisms need none. */
-    o.max_refine = 0;
-    cm_status s = cm_sweep_create(ms, &o, &w);
-    CHECK_MSG(s == CM_OK && cm_sweep_morph_method(w) == CM_MORPH_INTRINSIC, "%s", cm_sweep_message(w));
-    CHECK(cm_sweep_num_sections(w) == o.sections && cm_sweep_volume(w) > 0);
-    cm_sweep_free(w);
-    /* Its tetrahedra need inserted sections in both morphs. */
+    CHECK(three && cm_morph_create(three, NULL, &mc) == CM_OK && cm_morph_create(three, &mo, &mi) == CM_OK);
     o.tets = 1;
-    s = cm_sweep_create(ms, &o, &w);
+    o.max_refine = 6;
+    cm_status s = cm_sweep_create(mc, &o, &w);
+    CHECK_MSG(s == CM_OK && cm_sweep_morph_method(w) == CM_MORPH_INTRINSIC, "%s", cm_sweep_message(w));
+    CHECK(cm_sweep_num_sections(w) > 2 * o.sections - 1 && cm_sweep_volume(w) > 0);
+    cm_sweep_free(w);
+    o.max_refine = 0;
+    s = cm_sweep_create(mc, &o, &w);
     CHECK_MSG(s == CM_ERR_INTERNAL && strstr(cm_sweep_message(w), "max_refine") && cm_sweep_num_tets(w) == 0,
               "%s", cm_sweep_message(w));
     cm_sweep_free(w);
     s = cm_sweep_create(mi, &o, &w);
     CHECK_MSG(s == CM_ERR_INTERNAL && strstr(cm_sweep_message(w), "max_refine"), "%s", cm_sweep_message(w));
     cm_sweep_free(w);
-    cm_morph_free(ms), cm_morph_free(mi);
-    cm_result_free(spiral);
+    cm_morph_free(mc), cm_morph_free(mi);
+    cm_result_free(three);
 
     cm_sweep_options_init(&o);
     o.sections = 1;

@@ -242,6 +242,47 @@ static cm_status build_system(cm_morph *m)
     return CM_OK;
 }
 
+/* Each geometry's centre (cm_morph.centre) and its coordinates about it
+ * (framed->xy, k new arrays). Centring rounds, so a geometry whose
+ * triangles that would fold keeps the origin. */
+static cm_status build_frames(cm_morph *m, const cm_result *result, cm_mesh *framed)
+{
+    const cm_mesh *r = &result->mesh;
+    m->centre = malloc(2 * m->k * sizeof *m->centre);
+    framed->xy = calloc(m->k, sizeof *framed->xy);
+    if (!m->centre || !framed->xy) return cm_fail_status(&m->error, CM_ERR_NO_MEMORY);
+    for (size_t g = 0; g < m->k; g++) {
+        double *xy = framed->xy[g] = malloc(2 * r->nv * sizeof *xy), *c = m->centre + 2 * g;
+        if (!xy) return cm_fail_status(&m->error, CM_ERR_NO_MEMORY);
+        for (int d = 0; d < 2; d++) {
+            double lo = INFINITY, hi = -INFINITY;
+            for (size_t i = d; i < 2 * r->nv; i += 2) lo = fmin(lo, r->xy[g][i]), hi = fmax(hi, r->xy[g][i]);
+            c[d] = 0.5 * lo + 0.5 * hi;
+        }
+        int folds = 0;
+        for (size_t i = 0; i < 2 * r->nv; i++) xy[i] = r->xy[g][i] - c[i % 2];
+        for (size_t t = 0; t < r->nt && !folds; t++)
+            folds = cm_orient2d(xy + 2 * (size_t)r->tri[3 * t], xy + 2 * (size_t)r->tri[3 * t + 1],
+                                xy + 2 * (size_t)r->tri[3 * t + 2]) <= 0;
+        if (folds) {
+            c[0] = c[1] = 0;
+            memcpy(xy, r->xy[g], 2 * r->nv * sizeof *xy);
+        }
+    }
+    return CM_OK;
+}
+
+/* Moves the enclosed mesh's positions (m->pos), found about the centres,
+ * to the centre interpolated linearly between geometries g and g + 1 at
+ * local time s. A translation keeps every orientation; rounding is
+ * checked after. */
+static void leave_frame(cm_morph *m, size_t g, double s)
+{
+    const double *a = m->centre + 2 * g, *b = a + 2;
+    double cx = (1 - s) * a[0] + s * b[0], cy = (1 - s) * a[1] + s * b[1];
+    for (size_t v = 0; v < m->full.nv; v++) m->pos[2 * v] += cx, m->pos[2 * v + 1] += cy;
+}
+
 static cm_status create(cm_morph *m, const cm_result *result, const cm_morph_options *options)
 {
     cm_morph_options defaults;
@@ -261,17 +302,26 @@ static cm_status create(cm_morph *m, const cm_result *result, const cm_morph_opt
     cm_progress progress;
     cm_progress_init(&progress, options->progress, options->progress_user);
     if (cm_progress_report(&progress, CM_STAGE_ENCLOSURE, 0.0)) return cm_fail_status(&m->error, CM_ERR_CANCELLED);
-    cm_status s;
-    if (result->num_loops > 1) {
+    /* The morph runs on the geometries about their own centres (framed, a
+     * shallow copy with its own coordinates), so that sections far apart
+     * do not stretch one annulus across the distance between them, and a
+     * pure translation is morphed as exactly that. */
+    cm_result framed = *result;
+    framed.mesh.xy = NULL;
+    cm_status s = build_frames(m, result, &framed.mesh);
+    if (s == CM_OK && result->num_loops > 1) {
         /* Holes filled: the enclosure sees a disk bounded by the outer loop. */
         cm_result disk = {.n = result->loop_start[1]};
         disk.stats.n = disk.n;
-        s = cm_fill_holes(result, &disk.mesh, &m->error);
+        s = cm_fill_holes(&framed, &disk.mesh, &m->error);
         if (s == CM_OK) s = cm_enclosure_build(&disk, &progress, &m->full, &m->boundary, &m->error);
         cm_mesh_clear(&disk.mesh);
-    } else {
-        s = cm_enclosure_build(result, &progress, &m->full, &m->boundary, &m->error);
+    } else if (s == CM_OK) {
+        s = cm_enclosure_build(&framed, &progress, &m->full, &m->boundary, &m->error);
     }
+    if (framed.mesh.xy)
+        for (size_t g = 0; g < m->k; g++) free(framed.mesh.xy[g]);
+    free(framed.mesh.xy);
     if (s != CM_OK) return s;
     if (cm_progress_report(&progress, CM_STAGE_MORPH_SYSTEM, 0.0)) return cm_fail_status(&m->error, CM_ERR_CANCELLED);
     m->unknown = malloc(m->full.nv * sizeof *m->unknown);
@@ -311,7 +361,7 @@ void cm_morph_free(cm_morph *m)
     if (m->symbolic) umfpack_di_free_symbolic(&m->symbolic);
     free(m->boundary), free(m->unknown), free(m->start), free(m->nbr), free(m->entry);
     free(m->ti), free(m->tj), free(m->map), free(m->tx), free(m->ap), free(m->ai), free(m->ax);
-    free(m->rhs), free(m->sol), free(m->pos);
+    free(m->rhs), free(m->sol), free(m->pos), free(m->centre);
     if (m->corner_shape)
         for (size_t g = 0; g < m->k; g++) free(m->corner_shape[g]);
     free(m->corner_shape), free(m->corner_slot), free(m->weights);
@@ -414,6 +464,7 @@ cm_status cm_morph_section_at(cm_morph *m, size_t g, double s, double *xy, size_
     } else {
         cm_status st = solve_positions(m, g, s);
         if (st != CM_OK) return st;
+        leave_frame(m, g, s);
         /* The annulus around the section and the holes' fills only carry
          * the construction: rounding may fold one of their slivers. The
          * section stays valid if its own triangles are counter-clockwise

@@ -36,6 +36,10 @@ struct cm_morph {
     double *tx, *ax;
     void *symbolic;
     double *rhs, *sol, *pos; /* 2 * nu, 2 * nu, 2 * full.nv */
+    /* Geometry g is morphed about centre[2g .. 2g+1] (k entries of 2):
+     * its bounding-box centre, or the origin where centring would fold a
+     * triangle by rounding. */
+    double *centre;
 };
 
 /* The section at local time s in [0, 1] between geometries g and g + 1
