@@ -165,4 +165,8 @@ int exit_code_for(cm_status status);
 /* "dir/a.xy" -> "a.xy" (borrowed). */
 const char *file_name(const char *path);
 
+/* "dir/a.xy" -> "a" in new memory (free it), NULL if out of memory; a
+ * leading dot is part of the name (".a" -> ".a"). */
+char *file_stem(const char *path);
+
 #endif
