@@ -281,6 +281,9 @@ static void job_done(void *context, size_t index, const worker_result *result)
     if (result->failure) {
         job->exit_code = CLI_EXIT_INTERNAL;
         b->messages[index] = strdup(result->failure);
+    } else if (result->exit_code == CLI_EXIT_INTERRUPTED && result->record_length == 0) {
+        /* Stopped before it started, or by its watchdog: it wrote nothing. */
+        b->messages[index] = strdup("interrupted; nothing written");
     } else if (!read_record(b, index, result->record, result->exit_code)) {
         char message[96];
         snprintf(message, sizeof message, "the job's process ended (exit status %d) without "
