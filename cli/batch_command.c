@@ -309,6 +309,13 @@ static int open_out_dir(const batch_run *b, const char *report, cli_error *error
 {
     int code = staged_output_check(b->out_dir, error);
     if (code != CLI_EXIT_OK) return code;
+    /* An output never replaces an input, nor the list. */
+    const char *list[1] = {b->args->list};
+    code = refuse_input_as_output(report, list, 1, error);
+    for (size_t i = 0; i < b->list.count && code == CLI_EXIT_OK; i++)
+        code = refuse_input_as_output(report, (const char *const *)b->list.entries[i].inputs,
+                                      b->list.entries[i].input_count, error);
+    if (code != CLI_EXIT_OK) return code;
     if (mkdir(b->out_dir, 0777) != 0 && errno != EEXIST) {
         cli_error_set(error, "cannot create %s: %s", b->out_dir, strerror(errno));
         return CLI_EXIT_INTERNAL;
@@ -380,6 +387,10 @@ static int batch(const batch_args *args, cli_error *error)
         cli_error_set(error, "out of memory");
         code = CLI_EXIT_INTERNAL;
     }
+    if (code == CLI_EXIT_OK && interrupted) {
+        cli_error_set(error, "interrupted; nothing written");
+        code = CLI_EXIT_INTERRUPTED;
+    }
     if (code == CLI_EXIT_OK) code = open_out_dir(&b, report, error);
     /* From here the batch only waits for its jobs' processes. */
     if (code == CLI_EXIT_OK) catch_interrupts_without_watchdog();
@@ -392,7 +403,7 @@ static int batch(const batch_args *args, cli_error *error)
                       done, b.list.count);
         code = CLI_EXIT_INTERRUPTED;
     }
-    size_t counts[3];
+    size_t counts[3] = {0, 0, 0};
     int outcome = code == CLI_EXIT_OK ? batch_exit_code(&b, counts) : code;
     if (code == CLI_EXIT_OK)
         code = write_batch_json(&b, report, outcome, seconds_now() - start, error);

@@ -210,6 +210,24 @@ def test_bad_command_line(cm, tmp_path, args, error):
     assert not (tmp_path / "out").exists()
 
 
+@pytest.mark.parametrize("list_name", ["list.txt", "batch.json"])
+def test_batch_json_never_replaces_an_input(cm, tmp_path, list_name):
+    """DIR/batch.json is an input (or the list itself): refused before
+    anything is written or removed."""
+    out = tmp_path / "out"
+    out.mkdir()
+    write_xy(out / "batch.json" if list_name == "list.txt" else tmp_path / "a.xy", SQUARE)
+    write_xy(tmp_path / "b.xy", KITE)
+    first = "batch.json" if list_name == "list.txt" else "../a.xy"
+    (out / list_name).write_text(f"{first} ../b.xy\n")
+    before = snapshot(tmp_path)
+    result = cm("batch", out / list_name, "--out-dir", out)
+    assert result.returncode == 2
+    report = out / "batch.json"
+    assert result.stderr == f"compatmesh: {report} would replace the input {report}; choose another output\n"
+    assert snapshot(tmp_path) == before
+
+
 def test_batch_help(cm):
     result = cm("batch", "--help")
     assert result.returncode == 0 and result.stderr == ""
