@@ -32,7 +32,9 @@ static const option_spec batch_options[] = {
      "jobs run at once, each in its own process (default:\n"
      "the number of online CPUs)"},
     TRIANGULATE_FORMAT_SPEC,
-    TRIANGULATION_OPTION_SPECS,
+    TRIANGULATION_METHOD_SPECS,
+    {"quiet", OPTION_QUIET, NULL,
+     "only failed jobs' lines on stderr, nothing on stdout"},
     {"help", 'h', NULL, "show this help and exit"},
 };
 static const size_t batch_option_count = sizeof batch_options / sizeof batch_options[0];
@@ -131,11 +133,6 @@ static int parse_batch_args(int argc, char **argv, batch_args *args, cli_error *
     code = parse_options(argc, argv, "batch", batch_options, batch_option_count,
                          handle_batch_option, args, error);
     if (code != CLI_EXIT_OK || args->help) return code;
-    if (args->job.tri.progress) {
-        cli_error_set(error, "batch: --progress shows the stages of one run; batch prints "
-                      "a line per finished job");
-        return CLI_EXIT_USAGE;
-    }
     if (!args->list || !args->out_dir) {
         cli_error_set(error, "batch: %s is required (see 'compatmesh batch --help')",
                       !args->list ? "LIST" : "--out-dir DIR");

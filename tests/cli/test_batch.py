@@ -196,7 +196,7 @@ def test_malformed_list_is_one_line_and_writes_nothing(cm, tmp_path, text, line,
      "batch: takes one LIST, got 'list.txt' and 'list.txt' (the inputs of a job go on its line of LIST)"),
     (["list.txt", "-o", "out", "--jobs", "0"], "batch: --jobs needs a whole number in [1, 4096], got '0'"),
     (["list.txt", "-o", "out", "--progress"],
-     "batch: --progress shows the stages of one run; batch prints a line per finished job"),
+     "batch: unknown option '--progress' (see 'compatmesh batch --help')"),
     (["list.txt", "-o", "out", "--pin", "0,1,2"], "list.txt:1: --pin 0,1,2 names 3 vertices for 2 inputs"),
     (["list.txt", "-o", "out", "--format", "stl"], "batch: unknown --format 'stl' (known: off, obj, ply)"),
 ])
