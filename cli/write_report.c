@@ -287,7 +287,8 @@ int write_sweep_report(const char *path, const sweep_report_info *info, cli_erro
     return dump(&t, root, path, error);
 }
 
-const char *batch_job_status(int exit_code)
+/* "ok", "bad_input" or "internal_failure" for a job's exit code. */
+static const char *batch_job_status(int exit_code)
 {
     return exit_code == CLI_EXIT_OK ? "ok" : exit_code == CLI_EXIT_USAGE ? "bad_input"
                                                                       : "internal_failure";

@@ -84,7 +84,4 @@ typedef struct batch_report_info {
 
 int write_batch_report(const char *path, const batch_report_info *info, cli_error *error);
 
-/* "ok", "bad_input" or "internal_failure" for a job's exit code. */
-const char *batch_job_status(int exit_code);
-
 #endif
