@@ -63,3 +63,15 @@ void catch_interrupts(void)
     sigaction(SIGINT, &action, NULL);
     sigaction(SIGTERM, &action, NULL);
 }
+
+void catch_interrupts_without_watchdog(void)
+{
+    if (have_watchdog) timer_delete(watchdog);
+    have_watchdog = 0;
+}
+
+void catch_interrupts_in_child(void)
+{
+    have_watchdog = 0; /* the parent's timer is not the child's */
+    catch_interrupts();
+}

@@ -12,4 +12,12 @@ extern volatile sig_atomic_t writing_output;
 
 void catch_interrupts(void);
 
+/* For a process that only waits for others (batch): a signal just sets
+ * `interrupted`, no watchdog ends the process before its workers are done. */
+void catch_interrupts_without_watchdog(void);
+
+/* In a child after fork(): a watchdog of its own, as timers are not
+ * inherited. */
+void catch_interrupts_in_child(void);
+
 #endif

@@ -1,5 +1,5 @@
 /* compatmesh: the command-line tool's entry point, which hands the
- * arguments to one command (triangulate, morph, sweep). */
+ * arguments to one command (triangulate, morph, sweep, batch). */
 #include <stdio.h>
 #include <string.h>
 
@@ -31,6 +31,7 @@ static const subcommand subcommands[] = {
     {"triangulate", "compatibly triangulate k >= 2 polygons", run_triangulate},
     {"morph", "valid intermediate sections between the polygons", run_morph},
     {"sweep", "the volume between them as a prism/tet mesh (FEA formats)", run_sweep},
+    {"batch", "triangulate many sets of polygons, one per line of a list, in parallel", run_batch},
 };
 static const size_t subcommand_count = sizeof subcommands / sizeof subcommands[0];
 

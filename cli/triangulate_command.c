@@ -8,21 +8,15 @@
 
 #include "cli_common.h"
 #include "commands.h"
-#include "interrupt.h"
 #include "options.h"
-#include "outdir.h"
-#include "progress_line.h"
-#include "triangulation.h"
-#include "write_mesh.h"
-#include "write_report.h"
-#include "write_picture.h"
+#include "triangulate_job.h"
 
 static const option_spec triangulate_options[] = {
     {"out-dir", 'o', "DIR",
      "where the outputs go (required); DIR is created if\n"
      "missing (its parent must exist); files in DIR named\n"
      "like an output are replaced, other files are kept"},
-    {"format", 'f', "FMT", "mesh file format: off (default), obj or ply (ASCII)"},
+    TRIANGULATE_FORMAT_SPEC,
     TRIANGULATION_OPTION_SPECS,
     {"help", 'h', NULL, "show this help and exit"},
 };
@@ -30,9 +24,7 @@ static const size_t triangulate_option_count =
     sizeof triangulate_options / sizeof triangulate_options[0];
 
 typedef struct triangulate_args {
-    triangulation_args tri; /* inputs, method, remesh */
-    const char *out_dir;
-    mesh_format format;
+    triangulate_job job;
     int help;
 } triangulate_args;
 
@@ -40,16 +32,12 @@ static int handle_triangulate_option(void *context, int key, const char *value,
                                      cli_error *error)
 {
     triangulate_args *args = context;
-    int code = triangulation_option(&args->tri, "triangulate", key, value, error);
+    int code = triangulate_job_option(&args->job, "triangulate", key, value, error);
     if (code >= 0) return code;
     switch (key) {
     case 'o':
-        args->out_dir = value;
+        args->job.out_dir = value;
         return CLI_EXIT_OK;
-    case 'f':
-        if (mesh_format_from_name(value, &args->format) == 0) return CLI_EXIT_OK;
-        cli_error_set(error, "triangulate: unknown --format '%s' (known: off, obj, ply)", value);
-        return CLI_EXIT_USAGE;
     case 'h':
         args->help = 1;
         return CLI_EXIT_OK;
@@ -128,224 +116,20 @@ static int parse_triangulate_args(int argc, char **argv, triangulate_args *args,
                                   cli_error *error)
 {
     memset(args, 0, sizeof *args);
-    args->format = MESH_FORMAT_OFF;
-    int code = triangulation_args_init(&args->tri, argc, error);
+    int code = triangulate_job_init(&args->job, argc, error);
     if (code != CLI_EXIT_OK) return code;
     code = parse_options(argc, argv, "triangulate", triangulate_options,
                              triangulate_option_count, handle_triangulate_option,
                              args, error);
     if (code != CLI_EXIT_OK || args->help) return code;
-    code = triangulation_args_check(&args->tri, "triangulate", error);
+    code = triangulation_args_check(&args->job.tri, "triangulate", error);
     if (code != CLI_EXIT_OK) return code;
-    if (!args->out_dir) {
+    if (!args->job.out_dir) {
         cli_error_set(error, "triangulate: --out-dir DIR is required "
                       "(see 'compatmesh triangulate --help')");
         return CLI_EXIT_USAGE;
     }
     return CLI_EXIT_OK;
-}
-
-/* Everything one triangulate run owns, released by triangulate_run_free. */
-typedef struct triangulate_run {
-    const triangulate_args *args;
-    triangulation tri;  /* the polygons read and the core's result */
-    char **stems;       /* output names: input file name without extension */
-    char **mesh_names;  /* STEM.FMT */
-    char **final_paths; /* DIR/STEM.FMT, as reported */
-    staged_output output;
-} triangulate_run;
-
-static void triangulate_run_free(triangulate_run *run)
-{
-    size_t k = run->args->tri.input_count;
-    for (size_t i = 0; i < k; i++) {
-        if (run->stems) free(run->stems[i]);
-        if (run->mesh_names) free(run->mesh_names[i]);
-        if (run->final_paths) free(run->final_paths[i]);
-    }
-    triangulation_free(&run->tri);
-    free(run->stems);
-    free(run->mesh_names);
-    free(run->final_paths);
-    staged_output_discard(&run->output);
-}
-
-/* "dir/a.xy" -> "a"; a leading dot is part of the name (".a" -> ".a"). */
-static char *file_stem(const char *path)
-{
-    const char *name = file_name(path);
-    const char *dot = strrchr(name, '.');
-    size_t length = dot && dot != name ? (size_t)(dot - name) : strlen(name);
-    char *stem = malloc(length + 1);
-    if (stem) {
-        memcpy(stem, name, length);
-        stem[length] = '\0';
-    }
-    return stem;
-}
-
-/* Each input names its output after its stem, so stems must differ. */
-static int make_output_names(triangulate_run *run, cli_error *error)
-{
-    const triangulate_args *args = run->args;
-    const char *extension = mesh_format_name(args->format);
-    for (size_t i = 0; i < args->tri.input_count; i++) {
-        run->stems[i] = file_stem(args->tri.inputs[i]);
-        if (!run->stems[i]) {
-            cli_error_set(error, "out of memory");
-            return CLI_EXIT_INTERNAL;
-        }
-        if (run->stems[i][0] == '\0') {
-            cli_error_set(error, "%s: not a file name", args->tri.inputs[i]);
-            return CLI_EXIT_USAGE;
-        }
-        for (size_t j = 0; j < i; j++) {
-            if (strcmp(run->stems[i], run->stems[j]) == 0) {
-                cli_error_set(error, "%s and %s would both be written to %s.%s; "
-                              "rename one of them", args->tri.inputs[j], args->tri.inputs[i],
-                              run->stems[i], extension);
-                return CLI_EXIT_USAGE;
-            }
-        }
-        size_t size = strlen(run->stems[i]) + strlen(extension) + 2;
-        run->mesh_names[i] = malloc(size);
-        if (!run->mesh_names[i]) {
-            cli_error_set(error, "out of memory");
-            return CLI_EXIT_INTERNAL;
-        }
-        snprintf(run->mesh_names[i], size, "%s.%s", run->stems[i], extension);
-    }
-    return CLI_EXIT_OK;
-}
-
-/* Before any work: no output may replace an input (commit checks again). */
-static int refuse_inputs_early(triangulate_run *run, cli_error *error)
-{
-    const triangulation_args *tri = &run->args->tri;
-    size_t k = tri->input_count;
-    int code = CLI_EXIT_OK;
-    static const char *const extras[] = {"report.json", "preview.svg", "preview.png"};
-    for (size_t i = 0; i < k + 3 && code == CLI_EXIT_OK; i++) {
-        const char *name = i < k ? run->mesh_names[i] : extras[i - k];
-        char *path = path_join(run->args->out_dir, name);
-        if (!path) {
-            cli_error_set(error, "out of memory");
-            return CLI_EXIT_INTERNAL;
-        }
-        code = refuse_input_as_output(path, tri->inputs, k, error);
-        free(path);
-    }
-    return code;
-}
-
-static int stage_file(triangulate_run *run, const char *name, const char **path,
-                      cli_error *error)
-{
-    *path = staged_output_path(&run->output, name);
-    if (*path) return CLI_EXIT_OK;
-    cli_error_set(error, "out of memory");
-    return CLI_EXIT_INTERNAL;
-}
-
-static int write_meshes(triangulate_run *run, cli_error *error)
-{
-    for (size_t g = 0; g < run->args->tri.input_count; g++) {
-        const char *path;
-        int code = stage_file(run, run->mesh_names[g], &path, error);
-        if (code == CLI_EXIT_OK)
-            code = write_mesh(path, run->tri.result, g, run->args->format, error);
-        if (code != CLI_EXIT_OK) return code;
-        run->final_paths[g] = path_join(run->output.target, run->mesh_names[g]);
-        if (!run->final_paths[g]) {
-            cli_error_set(error, "out of memory");
-            return CLI_EXIT_INTERNAL;
-        }
-    }
-    return CLI_EXIT_OK;
-}
-
-static int write_extras(triangulate_run *run, cli_error *error)
-{
-    const char *path;
-    report_info info = {run->tri.result, run->args->tri.method_name, run->args->tri.options.remesh,
-                        run->tri.options.correspondence, run->tri.options.max_edge,
-                        run->tri.seconds_total, run->args->tri.inputs,
-                        (const char *const *)run->final_paths, run->args->tri.options.ceiling};
-    int code = stage_file(run, "report.json", &path, error);
-    if (code == CLI_EXIT_OK) code = write_report(path, &info, error);
-    if (code != CLI_EXIT_OK) return code;
-    const char **names = malloc(run->args->tri.input_count * sizeof *names);
-    if (!names) {
-        cli_error_set(error, "out of memory");
-        return CLI_EXIT_INTERNAL;
-    }
-    for (size_t g = 0; g < run->args->tri.input_count; g++)
-        names[g] = file_name(run->args->tri.inputs[g]);
-    picture pic;
-    code = picture_of_result(&pic, run->tri.result, names, error);
-    free(names);
-    if (code != CLI_EXIT_OK) return code;
-    code = stage_file(run, "preview.svg", &path, error);
-    if (code == CLI_EXIT_OK) code = write_svg(path, &pic, error);
-    if (code == CLI_EXIT_OK) code = stage_file(run, "preview.png", &path, error);
-    if (code == CLI_EXIT_OK) code = write_png(path, &pic, error);
-    picture_free(&pic);
-    return code;
-}
-
-static int write_outputs(triangulate_run *run, cli_error *error)
-{
-    int code = staged_output_begin(&run->output, run->args->out_dir, run->args->tri.inputs,
-                                   run->args->tri.input_count, error);
-    if (code == CLI_EXIT_OK) code = write_meshes(run, error);
-    if (code == CLI_EXIT_OK) code = write_extras(run, error);
-    if (code == CLI_EXIT_OK && interrupted) {
-        cli_error_set(error, "interrupted; nothing written");
-        code = CLI_EXIT_INTERRUPTED;
-    }
-    if (code == CLI_EXIT_OK) code = staged_output_commit(&run->output, error);
-    return code;
-}
-
-static void print_summary(const triangulate_run *run)
-{
-    const cm_stats *stats = cm_result_stats(run->tri.result);
-    for (size_t g = 0; g < run->args->tri.input_count; g++) {
-        cm_quality quality;
-        if (cm_result_quality(run->tri.result, g, &quality) != CM_OK) quality.min_angle_deg = 0;
-        printf("wrote %s (n=%zu, steiner=%zu, min angle %.1f deg)\n", run->final_paths[g],
-               stats->n, stats->steiner, quality.min_angle_deg);
-    }
-    printf("wrote %s/report.json, %s/preview.svg and %s/preview.png\n", run->output.target,
-           run->output.target, run->output.target);
-    const cm_options *o = &run->args->tri.options;
-    if (o->ceiling && stats->ceiling_deg < o->min_angle_deg)
-        printf("no compatible triangulation of %s can have a smallest angle above %.1f degrees "
-               "(target %g)\n", stats->k == 2 ? "this pair" : "these polygons", stats->ceiling_deg,
-               o->min_angle_deg);
-}
-
-static int triangulate(const triangulate_args *args, cli_error *error)
-{
-    size_t k = args->tri.input_count;
-    triangulate_run run = {0};
-    run.args = args;
-    run.stems = calloc(k, sizeof *run.stems);
-    run.mesh_names = calloc(k, sizeof *run.mesh_names);
-    run.final_paths = calloc(k, sizeof *run.final_paths);
-    int code = CLI_EXIT_OK;
-    if (!run.stems || !run.mesh_names || !run.final_paths) {
-        cli_error_set(error, "out of memory");
-        code = CLI_EXIT_INTERNAL;
-    }
-    if (code == CLI_EXIT_OK) code = make_output_names(&run, error);
-    if (code == CLI_EXIT_OK) code = staged_output_check(args->out_dir, error);
-    if (code == CLI_EXIT_OK) code = refuse_inputs_early(&run, error);
-    if (code == CLI_EXIT_OK) code = triangulation_run(&run.tri, &args->tri, error);
-    if (code == CLI_EXIT_OK) code = write_outputs(&run, error);
-    if (code == CLI_EXIT_OK && !cli_quiet()) print_summary(&run);
-    triangulate_run_free(&run);
-    return code;
 }
 
 int run_triangulate(int argc, char **argv)
@@ -354,8 +138,8 @@ int run_triangulate(int argc, char **argv)
     cli_error error = {{0}};
     int code = parse_triangulate_args(argc, argv, &args, &error);
     if (code == CLI_EXIT_OK && args.help) print_triangulate_help(stdout);
-    else if (code == CLI_EXIT_OK) code = triangulate(&args, &error);
+    else if (code == CLI_EXIT_OK) code = triangulate_job_run(&args.job, NULL, &error);
     if (code != CLI_EXIT_OK) cli_print_error(&error);
-    triangulation_args_free(&args.tri);
+    triangulation_args_free(&args.job.tri);
     return code;
 }

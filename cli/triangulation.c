@@ -269,6 +269,19 @@ const char *file_name(const char *path)
     return slash ? slash + 1 : path;
 }
 
+char *file_stem(const char *path)
+{
+    const char *name = file_name(path);
+    const char *dot = strrchr(name, '.');
+    size_t length = dot && dot != name ? (size_t)(dot - name) : strlen(name);
+    char *stem = malloc(length + 1);
+    if (stem) {
+        memcpy(stem, name, length);
+        stem[length] = '\0';
+    }
+    return stem;
+}
+
 static double seconds_now(void)
 {
     struct timespec now;

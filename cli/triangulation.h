@@ -33,8 +33,15 @@ enum {
 };
 
 /* The option_spec entries of the triangulation options, for a command's
- * table (keys 'm' and OPTION_NO_REMESH .. OPTION_QUIET). */
-#define TRIANGULATION_OPTION_SPECS                                            \
+ * table: TRIANGULATION_OPTION_SPECS has them all (keys 'm' and
+ * OPTION_NO_REMESH .. OPTION_QUIET); TRIANGULATION_METHOD_SPECS leaves out
+ * --progress and --quiet, for a command that shows its progress its own way. */
+#define TRIANGULATION_OPTION_SPECS \
+    TRIANGULATION_METHOD_SPECS,    \
+    TRIANGULATION_PROGRESS_SPEC,   \
+    TRIANGULATION_QUIET_SPEC
+
+#define TRIANGULATION_METHOD_SPECS                                            \
     {"method", 'm', "NAME",                                                   \
      "how the first compatible triangulation is built:\n"                     \
      "partition (default): minimum-link paths, few or no\n"                   \
@@ -97,11 +104,15 @@ enum {
     {"no-ceiling", OPTION_NO_CEILING, NULL,                                   \
      "skip the ceiling (the certified largest smallest\n"                    \
      "angle any compatible triangulation can have; a few\n"                  \
-     "ms) and let the remesher aim at the target alone"},       \
+     "ms) and let the remesher aim at the target alone"}
+
+#define TRIANGULATION_PROGRESS_SPEC                                           \
     {"progress", OPTION_PROGRESS, NULL,                                       \
      "show the stage and how far it is on stderr from the\n"                 \
      "start, also when stderr is not a terminal (then as\n"                  \
-     "plain lines: one per stage and per tenth done)"},                       \
+     "plain lines: one per stage and per tenth done)"}
+
+#define TRIANGULATION_QUIET_SPEC                                              \
     {"quiet", OPTION_QUIET, NULL,                                             \
      "no progress on stderr and nothing on stdout\n"                         \
      "(errors and warnings are still printed)"}
@@ -164,5 +175,9 @@ int exit_code_for(cm_status status);
 
 /* "dir/a.xy" -> "a.xy" (borrowed). */
 const char *file_name(const char *path);
+
+/* "dir/a.xy" -> "a" in new memory (free it), NULL if out of memory; a
+ * leading dot is part of the name (".a" -> ".a"). */
+char *file_stem(const char *path);
 
 #endif

@@ -287,3 +287,61 @@ int write_sweep_report(const char *path, const sweep_report_info *info, cli_erro
     set(&t, root, "warnings", info->warning ? text_list(&t, &info->warning, 1) : keep(&t, json_array()));
     return dump(&t, root, path, error);
 }
+
+/* "ok", "bad_input" or "internal_failure" for a job's exit code. */
+static const char *batch_job_status(int exit_code)
+{
+    return exit_code == CLI_EXIT_OK ? "ok" : exit_code == CLI_EXIT_USAGE ? "bad_input"
+                                                                      : "internal_failure";
+}
+
+static json_t *batch_job_entry(tree *t, const batch_job_report *job)
+{
+    int ok = job->exit_code == CLI_EXIT_OK;
+    json_t *entry = keep(t, json_object());
+    set(t, entry, "line", keep(t, json_integer(job->line)));
+    set_text(t, entry, "name", job->name);
+    set_text(t, entry, "out_dir", job->out_dir);
+    set(t, entry, "inputs", text_list(t, job->inputs, job->input_count));
+    set_text(t, entry, "status", batch_job_status(job->exit_code));
+    set(t, entry, "exit_code", keep(t, json_integer(job->exit_code)));
+    set(t, entry, "message", ok ? json_null() : text(t, job->message));
+    set(t, entry, "steiner", ok ? keep(t, json_integer((json_int_t)job->steiner)) : json_null());
+    json_t *angles = ok ? keep(t, json_array()) : json_null();
+    for (size_t g = 0; ok && g < job->input_count; g++)
+        append(t, angles, real(t, "min_angle_deg", job->min_angle_deg[g]));
+    set(t, entry, "min_angle_deg", angles);
+    set_real(t, entry, "cpu_seconds", job->cpu_seconds);
+    return entry;
+}
+
+int write_batch_report(const char *path, const batch_report_info *info, cli_error *error)
+{
+    char version[64];
+    snprintf(version, sizeof version, "%d.%d.%d", CM_VERSION_MAJOR, CM_VERSION_MINOR,
+             CM_VERSION_PATCH);
+    tree t = {0};
+    json_t *root = keep(&t, json_object());
+    set_text(&t, root, "version", version);
+    set_text(&t, root, "list", info->list);
+    set_text(&t, root, "out_dir", info->out_dir);
+    set(&t, root, "workers", keep(&t, json_integer(info->workers)));
+    size_t counts[3] = {0, 0, 0}; /* ok, bad input, internal failure */
+    double cpu = 0;
+    json_t *jobs = keep(&t, json_array());
+    for (size_t i = 0; i < info->job_count; i++) {
+        int code = info->jobs[i].exit_code;
+        counts[code == CLI_EXIT_OK ? 0 : code == CLI_EXIT_USAGE ? 1 : 2]++;
+        cpu += info->jobs[i].cpu_seconds;
+        append(&t, jobs, batch_job_entry(&t, &info->jobs[i]));
+    }
+    set_count(&t, root, "jobs_total", info->job_count);
+    set_count(&t, root, "ok", counts[0]);
+    set_count(&t, root, "bad_input", counts[1]);
+    set_count(&t, root, "internal_failure", counts[2]);
+    set(&t, root, "exit_code", keep(&t, json_integer(info->exit_code)));
+    set_real(&t, root, "cpu_seconds", cpu);
+    set_real(&t, root, "wall_seconds", info->wall_seconds);
+    set(&t, root, "jobs", jobs);
+    return dump(&t, root, path, error);
+}

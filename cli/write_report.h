@@ -56,4 +56,32 @@ typedef struct sweep_report_info {
 
 int write_sweep_report(const char *path, const sweep_report_info *info, cli_error *error);
 
+/* One job of a batch, as it ended. */
+typedef struct batch_job_report {
+    long line;                   /* in the list */
+    const char *name;            /* its folder */
+    const char *out_dir;         /* the output directory it was given */
+    const char *const *inputs;
+    size_t input_count;
+    int exit_code;               /* as `triangulate` would have exited */
+    const char *message;         /* the one-line error; "" on success */
+    size_t steiner;              /* on success */
+    const double *min_angle_deg; /* input_count entries, on success */
+    double cpu_seconds;          /* user + system time of its process */
+} batch_job_report;
+
+/* The batch's batch.json: the list, the workers, the counts by status and
+ * every job in list order. */
+typedef struct batch_report_info {
+    const char *list;
+    const char *out_dir;
+    long workers;
+    int exit_code;
+    double wall_seconds;
+    const batch_job_report *jobs;
+    size_t job_count;
+} batch_report_info;
+
+int write_batch_report(const char *path, const batch_report_info *info, cli_error *error);
+
 #endif

@@ -1,7 +1,10 @@
 #!/bin/sh
 # valgrind memcheck of `compatmesh triangulate` on a few pairs (default
-# options, remeshing included), an OBJ input and a bad input: no memory
-# errors and no definite or indirect leaks in any run (exit 99 otherwise).
+# options, remeshing included), an OBJ input and a bad input, and of
+# `compatmesh batch` (its job processes too: valgrind follows fork, and a
+# job that valgrind faults exits 99, an internal failure of the batch): no
+# memory errors and no definite or indirect leaks in any run (exit 99
+# otherwise).
 #   memcheck_cli.sh COMPATMESH WORK_DIR
 set -eu
 cli=$1 work=$2
@@ -34,3 +37,9 @@ memcheck 0 triangulate pent.obj dart.obj --out-dir out3 --format ply --method ov
 memcheck 2 triangulate square.xy bowtie.xy --out-dir out4
 memcheck 2 triangulate square.xy missing.xy --out-dir out5
 memcheck 1 triangulate square.xy kite.xy --out-dir square.xy/out
+printf 'square.xy kite.xy\npair: c.xy l.xy\n' > jobs.txt
+printf 'square.xy kite.xy\nsquare.xy bowtie.xy\n' > some_bad.txt
+printf 'square.xy missing.xy\n' > malformed.txt
+memcheck 0 batch jobs.txt --out-dir out7 --jobs 2
+memcheck 2 batch some_bad.txt --out-dir out8 --jobs 2
+memcheck 2 batch malformed.txt --out-dir out9
