@@ -243,7 +243,9 @@ typedef struct cm_stats {
      * correspondence_bound_deg). Certified: rounding and discretisation
      * only ever make it higher than the truth, never lower. 60 when
      * nothing binds; all 0 when options.ceiling is 0. The remesher aims at
-     * min(options.min_angle_deg, ceiling_deg). */
+     * min(options.min_angle_deg, ceiling_deg). For polygons with holes the
+     * corner fan alone (over every loop): the correspondence bound's moduli
+     * are those of a simply connected polygon, so it is 60 there. */
     double ceiling_deg;
     /* At boundary vertex i the same m triangles split the corner in every
      * polygon, each angle in [alpha, 180 - 2 alpha]: alpha <= min over i of
@@ -265,7 +267,10 @@ typedef struct cm_stats {
     double correspondence_bound_before_deg;
     double seconds_ceiling;      /* computing the ceiling (both when auto) */
     size_t holes;            /* hole loops per polygon (cm_triangulate_loops) */
-    size_t bridges;          /* chords that cut the holes open */
+    size_t bridges;          /* paths that cut the holes open: two per hole, or
+                                one per hole when the construction that always
+                                succeeds took over (fallback_count 1; the
+                                overlay method takes it from the start) */
 } cm_stats;
 
 /* Quality of one geometry of the result. */
