@@ -26,8 +26,11 @@
  *    triangles (exact tests) is the next; such a segment is made an edge by
  *    re-triangulating the triangles it crosses (geom/looptri.h), and where
  *    that fails every mi is kept as above.
+ *    Lawson flips then make the triangulation constrained Delaunay (loops
+ *    and bridges fixed): valid triangles stay valid.
  *  - The bridges of every geometry get the same number of bends by
- *    splitting their segments.
+ *    splitting their segments (where the four new triangles are roundest:
+ *    a midpoint can land next to another bridge's bend).
  *  - Every loop vertex ends at most one bridge and every bend is on one,
  *    so walking the material's boundary, a bridge taken where it starts,
  *    visits the same cycle (loop vertices, bridge ends and bends twice) in
@@ -36,12 +39,14 @@
  *    (|D| - 2 triangles), which is what the overlay takes; the overlay adds
  *    no vertex on D's boundary, so mapping positions back to vertices
  *    glues the two sides of every bridge.
- *  - Rounding: a bend is a rounded midpoint. Where a triangle around it
- *    comes out not strictly positive (only beside slivers thinner than the
- *    spacing of doubles) the crossed edge is barred and the search runs
- *    again; when no path is left, or the overlay cannot place a vertex,
- *    the result is CM_ERR_PRECISION, never an invalid mesh, and the
- *    caller's exact check sees every result. */
+ *  - Rounding: a bend is a rounded point on an edge. Where a triangle
+ *    around it comes out not strictly positive (only beside slivers
+ *    thinner than the spacing of doubles) the crossed edge is barred and
+ *    the search runs again; when no path is left, or the overlay cannot
+ *    place a vertex, the result is CM_ERR_PRECISION, never an invalid
+ *    mesh, and the caller's exact check sees every result. Straightened
+ *    segments keep clear of the walk's vertices (CLEARANCE), so that no
+ *    sliver the overlay cannot round is made on purpose. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
