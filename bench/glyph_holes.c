@@ -5,6 +5,8 @@
  * 1 - h, areas adding up in rationals).
  *
  *   cm_glyph_holes [--font PATH] [--outer N] [--hole M] [--no-remesh] [--min-good G]
+ *                  [--method partition|overlay] [--auto]
+ *                  [--hole-starts|--starts|--joint-starts]
  *
  * Each glyph's outer contour is resampled by arc length to N points (default
  * 64), each hole to M (default 24), corners kept (glyph_outline.h); the
@@ -13,7 +15,15 @@
  * pair fails or its result is not exactly valid, or when fewer than G pairs
  * (default: 90 % of them) reach a smallest angle of min(15, aim / 3)
  * degrees in both glyphs (aim: the target the input's corners and short
- * edges allow). */
+ * edges allow). --method overlay measures the construction that always
+ * succeeds (one bridge per hole and the overlay) in place of the bridges'
+ * pieces. --auto pairs every loop by the auto correspondence (arc length
+ * from the starts that align the loops best) in place of vertex by vertex
+ * from each contour's resampling start. --hole-starts turns every hole of
+ * the second glyph to the start that a similarity fits best (--starts: every
+ * loop; --joint-starts: the outer loop's, then every hole to the start its
+ * points are nearest to under the outer loop's similarity), then pairs
+ * vertex by vertex. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -55,18 +65,99 @@ static int load(FT_Face face, char c, int outer, int hole, glyph_loops *g)
     return ok ? 0 : -1;
 }
 
+/* Turns every hole of b (and, with outer_too, its outer loop) to the
+ * start that fits the same loop of a best up to rotation, scale and
+ * translation (the least squares residual over all cyclic shifts): each
+ * loop's start chosen, vertex i still on vertex i. */
+static void choose_starts(const glyph_loops *a, glyph_loops *b, int outer_too)
+{
+    for (size_t l = outer_too ? 0 : 1, at = outer_too ? 0 : b->sizes[0]; l < b->loops; at += b->sizes[l++]) {
+        size_t m = b->sizes[l], best = 0;
+        if (a->sizes[l] != m) continue;
+        const double *p = a->xy + 2 * at;
+        double *q = b->xy + 2 * at, pc[2] = {0, 0}, qc[2] = {0, 0}, best_fit = -1;
+        for (size_t i = 0; i < m; i++)
+            for (int c = 0; c < 2; c++) pc[c] += p[2 * i + c] / (double)m, qc[c] += q[2 * i + c] / (double)m;
+        for (size_t shift = 0; shift < m; shift++) { /* |sum p conj(q)|^2 / |q|^2: the part a similarity explains */
+            double re = 0, im = 0, qq = 0, pp = 0;
+            for (size_t i = 0; i < m; i++) {
+                const double *u = p + 2 * i, *v = q + 2 * ((i + shift) % m);
+                double px = u[0] - pc[0], py = u[1] - pc[1], qx = v[0] - qc[0], qy = v[1] - qc[1];
+                re += px * qx + py * qy, im += py * qx - px * qy, qq += qx * qx + qy * qy, pp += px * px + py * py;
+            }
+            double fit = (re * re + im * im) / (qq * pp);
+            if (fit > best_fit) best_fit = fit, best = shift;
+        }
+        double *copy = malloc(2 * m * sizeof *copy);
+        if (!copy) continue;
+        for (size_t i = 0; i < m; i++) copy[2 * i] = q[2 * ((i + best) % m)], copy[2 * i + 1] = q[2 * ((i + best) % m) + 1];
+        memcpy(q, copy, 2 * m * sizeof *q);
+        free(copy);
+    }
+}
+
+/* The outer loop's start as choose_starts chooses it, then every hole
+ * turned to the start its points are nearest to under that one similarity
+ * (the outer loop's): the holes keep their place in the glyph's frame. */
+static void choose_starts_jointly(const glyph_loops *a, glyph_loops *b)
+{
+    choose_starts(a, b, 2);
+    size_t m = b->sizes[0];
+    if (a->sizes[0] != m) return;
+    const double *p = a->xy, *q = b->xy;
+    double pc[2] = {0, 0}, qc[2] = {0, 0}, re = 0, im = 0, pp = 0;
+    for (size_t i = 0; i < m; i++)
+        for (int c = 0; c < 2; c++) pc[c] += p[2 * i + c] / (double)m, qc[c] += q[2 * i + c] / (double)m;
+    for (size_t i = 0; i < m; i++) { /* q - qc = z (p - pc), z = re + i im, least squares */
+        double px = p[2 * i] - pc[0], py = p[2 * i + 1] - pc[1], qx = q[2 * i] - qc[0], qy = q[2 * i + 1] - qc[1];
+        re += px * qx + py * qy, im += px * qy - py * qx, pp += px * px + py * py;
+    }
+    re /= pp, im /= pp;
+    for (size_t l = 1, at = b->sizes[0]; l < b->loops; at += b->sizes[l++]) {
+        size_t h = b->sizes[l], best = 0;
+        if (a->sizes[l] != h) continue;
+        double best_sum = -1, *hq = b->xy + 2 * at;
+        const double *hp = a->xy + 2 * at;
+        for (size_t shift = 0; shift < h; shift++) {
+            double sum = 0;
+            for (size_t i = 0; i < h; i++) {
+                double px = hp[2 * i] - pc[0], py = hp[2 * i + 1] - pc[1];
+                double x = qc[0] + re * px - im * py, y = qc[1] + im * px + re * py;
+                const double *v = hq + 2 * ((i + shift) % h);
+                sum += (x - v[0]) * (x - v[0]) + (y - v[1]) * (y - v[1]);
+            }
+            if (best_sum < 0 || sum < best_sum) best_sum = sum, best = shift;
+        }
+        double *copy = malloc(2 * h * sizeof *copy);
+        if (!copy) continue;
+        for (size_t i = 0; i < h; i++) copy[2 * i] = hq[2 * ((i + best) % h)], copy[2 * i + 1] = hq[2 * ((i + best) % h) + 1];
+        memcpy(hq, copy, 2 * h * sizeof *hq);
+        free(copy);
+    }
+}
+
 int main(int argc, char **argv)
 {
     const char *font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-    int outer = 64, hole = 24, remesh = 1, min_good = -1;
+    int outer = 64, hole = 24, remesh = 1, min_good = -1, overlay = 0;
+    cm_correspondence correspondence = CM_CORRESPOND_INDEX;
+    int starts = 0; /* 1: every hole's start chosen, 2: every loop's, 3: jointly */
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--font") && i + 1 < argc) font = argv[++i];
         else if (!strcmp(argv[i], "--outer") && i + 1 < argc) outer = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--hole") && i + 1 < argc) hole = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--no-remesh")) remesh = 0;
+        else if (!strcmp(argv[i], "--method") && i + 1 < argc && !strcmp(argv[i + 1], "overlay")) overlay = 1, i++;
+        else if (!strcmp(argv[i], "--method") && i + 1 < argc && !strcmp(argv[i + 1], "partition")) i++;
+        else if (!strcmp(argv[i], "--auto")) correspondence = CM_CORRESPOND_AUTO;
+        else if (!strcmp(argv[i], "--hole-starts")) starts = 1;
+        else if (!strcmp(argv[i], "--starts")) starts = 2;
+        else if (!strcmp(argv[i], "--joint-starts")) starts = 3;
         else if (!strcmp(argv[i], "--min-good") && i + 1 < argc) min_good = atoi(argv[++i]);
         else {
-            fprintf(stderr, "usage: cm_glyph_holes [--font PATH] [--outer N] [--hole M] [--no-remesh] [--min-good G]\n");
+            fprintf(stderr, "usage: cm_glyph_holes [--font PATH] [--outer N] [--hole M] [--no-remesh] [--min-good G]\n"
+                            "                      [--method partition|overlay] [--auto]\n"
+                            "                      [--hole-starts|--starts|--joint-starts]\n");
             return 2;
         }
     }
@@ -79,18 +170,37 @@ int main(int argc, char **argv)
     cm_options o;
     cm_options_init(&o);
     o.remesh = remesh;
+    if (overlay) o.method = CM_METHOD_OVERLAY;
+    o.correspondence = correspondence;
     int failed = 0, good_angle = 0, total = 0;
-    printf("%-6s %5s %6s %8s %8s %8s %8s\n", "pair", "holes", "n", "steiner", "angle_a", "angle_b", "aim");
+    printf("%-6s %5s %6s %8s %8s %8s %8s %8s\n", "pair", "holes", "n", "built", "steiner", "angle_a", "angle_b", "aim");
     for (size_t p = 0; p < sizeof pairs / sizeof pairs[0]; p++) {
         glyph_loops g[2] = {{0}, {0}};
         int loaded = load(face, pairs[p][0][0], outer, hole, &g[0]) == 0 &&
                      load(face, pairs[p][1][0], outer, hole, &g[1]) == 0;
+        if (loaded && starts == 3) choose_starts_jointly(&g[0], &g[1]);
+        else if (loaded && starts) choose_starts(&g[0], &g[1], starts == 2);
         cm_loops in[2] = {{g[0].xy, g[0].sizes, g[0].loops}, {g[1].xy, g[1].sizes, g[1].loops}};
         cm_result *r = NULL;
         cm_status s = loaded ? cm_triangulate_loops(in, 2, &o, &r) : CM_ERR_ARGUMENT;
         char why[256] = "";
         size_t n = (size_t)outer + (g[0].loops - 1) * (size_t)hole;
-        int valid = s == CM_OK && rc_check_loops(r, in, 2, why, sizeof why) &&
+        /* With auto the loops are refined (the other glyph's points added on
+         * the edges): checked as the result reports them, loop by loop. */
+        size_t refined_sizes[MAX_LOOPS] = {0};
+        cm_loops refined[2] = {in[0], in[1]};
+        if (s == CM_OK && correspondence == CM_CORRESPOND_AUTO) {
+            n = cm_result_stats(r)->n;
+            for (size_t i = 0; i < n; i++) {
+                double t;
+                long e = cm_result_boundary_source(r, 0, i, &t);
+                size_t l = 0, at = g[0].sizes[0];
+                while (l + 1 < g[0].loops && (size_t)e >= at) at += g[0].sizes[++l];
+                refined_sizes[l]++;
+            }
+            for (int k = 0; k < 2; k++) refined[k] = (cm_loops){cm_result_vertices(r, (size_t)k), refined_sizes, g[0].loops};
+        }
+        int valid = s == CM_OK && rc_check_loops(r, refined, 2, why, sizeof why) &&
                     rc_check_halfedges_holes(r, n, g[0].loops - 1, why, sizeof why);
         total++;
         if (!valid) {
@@ -105,8 +215,8 @@ int main(int argc, char **argv)
             want = want < 15 ? want : 15;
             int good = qa.min_angle_deg >= want && qb.min_angle_deg >= want;
             good_angle += good;
-            printf("%s/%s    %5zu %6zu %8zu %8.1f %8.1f %8.1f%s\n", pairs[p][0], pairs[p][1], st->holes, st->n,
-                   st->steiner, qa.min_angle_deg, qb.min_angle_deg, aim, good ? "" : "  (below min(15, aim/3))");
+            printf("%s/%s    %5zu %6zu %8zu %8zu %8.1f %8.1f %8.1f%s\n", pairs[p][0], pairs[p][1], st->holes, st->n,
+                   st->steiner_before_remesh, st->steiner, qa.min_angle_deg, qb.min_angle_deg, aim, good ? "" : "  (below min(15, aim/3))");
         }
         cm_result_free(r);
         free(g[0].xy), free(g[1].xy);

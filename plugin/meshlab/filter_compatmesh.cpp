@@ -121,6 +121,10 @@ void FilterCompatMesh::initParameterSet(QAction *action, MeshDocument &md, RichP
       break;
     case FP_COMPATIBLE_SWEEP:
       par.addParam(RichInt("Sections", 5, "Sections", "Number of intermediate sections, at least 1."));
+      par.addParam(RichSaveFile("VolumeFile", "", "*.msh", "Volume mesh (.msh)",
+                                "Empty: none. Otherwise the volume between the layers in tetrahedra, every "
+                                "one of positive volume (checked exactly), written as a Gmsh .msh file "
+                                "(format 4.1) for finite-element solvers."));
       break;
   }
 }
@@ -162,7 +166,8 @@ bool FilterCompatMesh::applyFilter(QAction *action, MeshDocument &md, const Rich
       log = std::move(outcome.log);
     } else {
       auto outcome = compatmesh_plugin::compatible_sweep(first->cm, second->cm, first_name, second_name,
-                                                         par.getInt("Sections"), progress);
+                                                         par.getInt("Sections"),
+                                                         par.getSaveFileName("VolumeFile").toStdString(), progress);
       layers = std::move(outcome.layers);
       log = std::move(outcome.log);
     }

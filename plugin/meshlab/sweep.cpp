@@ -3,8 +3,18 @@
 #include "float_check.h"
 #include "layer_boundary.h"
 
+extern "C" {  // gmshc.h declares a C API without saying so to C++
+#include <gmshc.h>
+}
+
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <cerrno>
+#include <dlfcn.h>
+#include <unistd.h>
 
 namespace compatmesh_plugin {
 
@@ -114,9 +124,143 @@ std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_
   return xyz;
 }
 
+SweptVolume swept_volume(SectionMorph &morph, int sections)
+{
+  cm_sweep_options options;
+  cm_sweep_options_init(&options);
+  const double times[2] = {0.0, 1.0};  // z is the morph time
+  options.sections = std::size_t(sections);
+  options.heights = times;
+  options.tets = 1;
+  cm_sweep *sweep = nullptr;
+  cm_status s = cm_sweep_create(morph.morph_.get(), &options, &sweep);
+  compatmesh::SweepPtr owned(sweep);
+  if (s != CM_OK) throw FilterError(std::string("the volume: ") + cm_sweep_message(sweep));
+  SweptVolume volume;
+  const std::size_t count = cm_sweep_num_nodes(sweep);
+  const double *nodes = cm_sweep_nodes(sweep);
+  volume.nodes.resize(3 * count);
+  for (std::size_t i = 0; i < count; i++) {
+    const double x = nodes[3 * i], y = nodes[3 * i + 1], t = nodes[3 * i + 2];
+    const std::array<double, 3> p = morph.frame0_.to_space(x, y), q = morph.frame1_.to_space(x, y);
+    for (int c = 0; c < 3; c++) volume.nodes[3 * i + c] = (1 - t) * p[c] + t * q[c];
+  }
+  volume.tets.assign(cm_sweep_tets(sweep), cm_sweep_tets(sweep) + 4 * cm_sweep_num_tets(sweep));
+  volume.sections = cm_sweep_num_sections(sweep);
+  cm_sweep_quality quality;
+  cm_sweep_get_quality(sweep, &quality);
+  volume.min_dihedral_deg = quality.min_dihedral_deg;
+  long where = -1;
+  s = cm_check_tetrahedra(volume.nodes.data(), count, volume.tets.data(), volume.tets.size() / 4, &where);
+  if (s != CM_OK)
+    throw FilterError("the volume's tetrahedron " + std::to_string(where) +
+                      (s == CM_ERR_ZERO_AREA ? " is flat or inverted" : std::string(" fails: ") + cm_status_string(s)) +
+                      " between the layers' planes; nothing was written");
+  return volume;
+}
+
+namespace {
+
+// Gmsh loaded on first use with its own symbols first (RTLD_DEEPBIND):
+// Gmsh and MeshLab's libmeshlab-common both define a class PluginManager,
+// and bound to MeshLab's, Gmsh crashes in gmshFinalize.
+#define GMSH_FUNCTIONS(X)                                                                         \
+  X(Initialize) X(Finalize) X(ModelAdd) X(ModelAddDiscreteEntity) X(ModelAddPhysicalGroup)          \
+  X(ModelMeshAddElementsByType) X(ModelMeshAddNodes) X(ModelSetPhysicalName) X(OptionSetNumber) X(Write)
+
+struct GmshApi {
+  void *library = nullptr;
+#define GMSH_POINTER(name) decltype(&gmsh##name) name = nullptr;
+  GMSH_FUNCTIONS(GMSH_POINTER)
+#undef GMSH_POINTER
+};
+
+const GmshApi &gmsh_api()
+{
+  static GmshApi api;
+  if (api.library) return api;
+  void *library = dlopen(CM_GMSH_SONAME, RTLD_NOW | RTLD_LOCAL | RTLD_DEEPBIND);
+  if (!library) throw FilterError(std::string("Gmsh could not be loaded: ") + dlerror());
+  GmshApi loaded;
+#define GMSH_SYMBOL(name)                                                                          \
+  if (!(loaded.name = reinterpret_cast<decltype(loaded.name)>(dlsym(library, "gmsh" #name))))     \
+    throw FilterError(std::string(CM_GMSH_SONAME " has no gmsh") + #name);
+  GMSH_FUNCTIONS(GMSH_SYMBOL)
+#undef GMSH_SYMBOL
+  loaded.library = library;
+  api = loaded;
+  return api;
+}
+
+// Gmsh's state is global: one write initialises and finalises it.
+class GmshSession {
+ public:
+  explicit GmshSession(const GmshApi &api) : api_(api)
+  {
+    int ierr = 0;
+    api_.Initialize(0, nullptr, 0, &ierr);
+    if (ierr) throw FilterError("Gmsh could not start");
+    api_.OptionSetNumber("General.Terminal", 0, &ierr);
+  }
+  ~GmshSession()
+  {
+    int ierr = 0;
+    api_.Finalize(&ierr);
+  }
+  GmshSession(const GmshSession &) = delete;
+  GmshSession &operator=(const GmshSession &) = delete;
+
+ private:
+  const GmshApi &api_;
+};
+
+}  // namespace
+
+void write_msh(const SweptVolume &volume, const std::string &path)
+{
+  const std::size_t dot = path.find_last_of('.');
+  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
+  for (char &c : ext) c = char(std::tolower((unsigned char)c));
+  if (ext != "msh") throw FilterError("VolumeFile '" + path + "': expected a .msh file");
+  const std::size_t slash = path.find_last_of('/');
+  std::string temporary = path.substr(0, slash == std::string::npos ? 0 : slash + 1) + ".compatmesh-XXXXXX.msh";
+  int fd = mkstemps(&temporary[0], 4);
+  if (fd < 0) throw FilterError("cannot write '" + path + "': " + std::strerror(errno));
+  close(fd);
+  const std::size_t count = volume.nodes.size() / 3, cells = volume.tets.size() / 4;
+  std::vector<std::size_t> node_tags(count), cell_tags(cells), cell_nodes(volume.tets.size());
+  for (std::size_t i = 0; i < count; i++) node_tags[i] = i + 1;
+  for (std::size_t i = 0; i < cells; i++) cell_tags[i] = i + 1;
+  for (std::size_t i = 0; i < volume.tets.size(); i++) cell_nodes[i] = std::size_t(volume.tets[i]) + 1;
+  int ierr = 0;
+  {
+    const GmshApi &gmsh = gmsh_api();
+    GmshSession session(gmsh);
+    gmsh.OptionSetNumber("Mesh.MshFileVersion", 4.1, &ierr);
+    gmsh.OptionSetNumber("Mesh.Binary", 0, &ierr);
+    // One discrete volume (entity and physical group 1, "sweep"), as the
+    // command line's sweep writes it.
+    gmsh.ModelAdd("compatmesh_sweep", &ierr);
+    if (!ierr) gmsh.ModelAddDiscreteEntity(3, 1, nullptr, 0, &ierr);
+    if (!ierr)
+      gmsh.ModelMeshAddNodes(3, 1, node_tags.data(), count, const_cast<double *>(volume.nodes.data()),  // not written
+                             volume.nodes.size(), nullptr, 0, &ierr);
+    if (!ierr)
+      gmsh.ModelMeshAddElementsByType(1, 4, cell_tags.data(), cells, cell_nodes.data(), cell_nodes.size(), &ierr);
+    int group = 1;
+    if (!ierr) gmsh.ModelAddPhysicalGroup(3, &group, 1, 1, &ierr);
+    if (!ierr) gmsh.ModelSetPhysicalName(3, 1, "sweep", &ierr);
+    if (!ierr) gmsh.Write(temporary.c_str(), &ierr);
+  }
+  if (ierr || std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw FilterError("cannot write '" + path + "'" + (ierr ? ": Gmsh failed" : ": " + std::string(std::strerror(errno))));
+  }
+}
+
 SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
                               const std::string &first_name, const std::string &second_name,
-                              int sections, ThrottledProgress &progress)
+                              int sections, const std::string &volume_file, ThrottledProgress &progress)
 {
   if (sections < 1) throw FilterError("Sections must be at least 1");
   std::vector<int> index0, index1;
@@ -232,6 +376,19 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
       else lateral.triangles.insert(lateral.triangles.end(), {a, c, b, a, d, c});
     }
   outcome.layers.push_back(std::move(lateral));
+  if (!volume_file.empty()) {
+    progress.report(0.95, "volume");
+    // Its sections at the same times as the layers' (more where a cell
+    // needs them): the layers' sections are faces of the volume.
+    const SweptVolume volume = swept_volume(morph, sections + 2);
+    write_msh(volume, volume_file);
+    char dihedral[32];
+    std::snprintf(dihedral, sizeof dihedral, "%.2f", volume.min_dihedral_deg);
+    outcome.log.push_back("volume: " + std::to_string(volume.tets.size() / 4) + " tetrahedra, " +
+                          std::to_string(volume.nodes.size() / 3) + " nodes in " + std::to_string(volume.sections) +
+                          " sections, each positive (exact), smallest dihedral angle " + dihedral +
+                          " degrees, written to " + volume_file);
+  }
   progress.report(1.0, "done");
   char angle_text[32];
   std::snprintf(angle_text, sizeof angle_text, "%.2f", smallest_angle);

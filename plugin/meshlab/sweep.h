@@ -44,6 +44,7 @@ class SectionMorph {
                const std::string &second_name);
 
   friend std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_deg);
+  friend struct SweptVolume swept_volume(SectionMorph &morph, int sections);
 
  private:
   compatmesh::ResultPtr result_;
@@ -62,15 +63,36 @@ class SectionMorph {
 // Throws FilterError if the core reports an invalid section.
 std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_deg);
 
+// The volume between the layers in tetrahedra: the core's sweep of the
+// morph (sections at morph times t, prisms split into 3 tetrahedra, more
+// sections where a cell would not be positive), every node at time t
+// placed as section_at places it, then every tetrahedron checked exactly
+// (cm_check_tetrahedra) where it now is. sections: sections of the sweep,
+// both layers included, >= 2. Throws FilterError.
+struct SweptVolume {
+  std::vector<double> nodes;  // 3 per node
+  std::vector<int32_t> tets;  // 4 per tetrahedron, positive volume
+  std::size_t sections = 0;   // with those the sweep inserted
+  double min_dihedral_deg = 0;
+};
+SweptVolume swept_volume(SectionMorph &morph, int sections);
+
+// Writes the volume as a Gmsh .msh file (format 4.1) through Gmsh's C API,
+// to a temporary file beside path renamed into place when complete. Throws
+// FilterError.
+void write_msh(const SweptVolume &volume, const std::string &path);
+
 struct SweepOutcome {
   std::vector<LayerData> layers;  // the sections, then the lateral surface
   std::vector<std::string> log;
 };
 
-// sections: intermediate sections, >= 1. Throws FilterError.
+// sections: intermediate sections, >= 1. volume_file: "" or a .msh file
+// that receives the swept volume in tetrahedra (swept_volume, write_msh).
+// Throws FilterError.
 SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
                               const std::string &first_name, const std::string &second_name,
-                              int sections, ThrottledProgress &progress);
+                              int sections, const std::string &volume_file, ThrottledProgress &progress);
 
 }  // namespace compatmesh_plugin
 

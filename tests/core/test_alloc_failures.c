@@ -8,8 +8,9 @@
  * and are counted too; UMFPACK's are its own and are not. Run for every
  * allocation of a triangulation with remeshing, a convex morph and a
  * sweep, the same with the map-aware remesher, of the overlay construction
- * (exact rational arithmetic in GMP throughout), and of the construction
- * for polygons with holes whose bridges need Steiner bends. */
+ * (exact rational arithmetic in GMP throughout), and of the constructions
+ * for polygons with holes (bridges that need Steiner bends; one bridge per
+ * hole and the overlay). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -83,6 +84,7 @@ static cm_status run(const double *const *polygons, char *where, size_t size)
 static double annulus[2][2 * (HOLE_OUTER + HOLE_INNER)];
 static const size_t annulus_sizes[2] = {HOLE_OUTER, HOLE_INNER};
 static int bent; /* the last successful run had Steiner vertices (bends) */
+static cm_method holes_method; /* partition: the bridges' pieces; overlay: the construction that always succeeds */
 
 static cm_status run_holes(char *where, size_t size)
 {
@@ -90,6 +92,7 @@ static cm_status run_holes(char *where, size_t size)
     cm_options o; /* the remesher's allocations are the first run's */
     cm_options_init(&o);
     o.remesh = 0;
+    o.method = holes_method;
     cm_result *r = NULL;
     cm_status s = cm_triangulate_loops(in, 2, &o, &r);
     snprintf(where, size, "holes: %s", r ? cm_result_message(r) : "out of memory (no handle)");
@@ -115,25 +118,29 @@ static void test_holes(void)
             double radius = outer ? 1 : 0.6, turn = !outer && g ? CM_PI : 0;
             annulus[g][2 * i] = radius * cos(a + turn), annulus[g][2 * i + 1] = radius * sin(a + turn);
         }
-    char where[512];
-    calls = 0, fail_at = -1;
-    CHECK_MSG(run_holes(where, sizeof where) == CM_OK, "the run without failures: %s", where);
-    CHECK_MSG(strstr(where, "holes: ") && bent, "the turned annulus's bridges bend");
-    long total = calls, reported = 0;
-    /* Every one of the first 1000 (validation, bridges, the first pieces),
-     * then a sample: the pieces' partitions allocate tens of thousands of
-     * times, and their allocations are the hole-free run's above. */
-    for (long i = 1; i <= total; i += i < 1000 ? 1 : 211) {
-        calls = 0, fail_at = i;
-        cm_status s = run_holes(where, sizeof where);
-        if (s == CM_OK) continue;
-        reported++;
-        CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
-                  "holes: allocation %ld of %ld failed: status %s, %s", i, total, cm_status_string(s), where);
+    for (int method = 0; method < 2; method++) {
+        holes_method = method ? CM_METHOD_OVERLAY : CM_METHOD_PARTITION;
+        const char *name = method ? "holes, overlay" : "holes";
+        char where[512];
+        calls = 0, fail_at = -1;
+        CHECK_MSG(run_holes(where, sizeof where) == CM_OK, "%s: the run without failures: %s", name, where);
+        CHECK_MSG(strstr(where, "holes: ") && bent, "the turned annulus's bridges bend");
+        long total = calls, reported = 0;
+        /* Every one of the first 1000 (validation, bridges, the first pieces),
+         * then a sample: the pieces' partitions allocate tens of thousands of
+         * times, and their allocations are the hole-free run's above. */
+        for (long i = 1; i <= total; i += i < 1000 ? 1 : 211) {
+            calls = 0, fail_at = i;
+            cm_status s = run_holes(where, sizeof where);
+            if (s == CM_OK) continue;
+            reported++;
+            CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
+                      "%s: allocation %ld of %ld failed: status %s, %s", name, i, total, cm_status_string(s), where);
+        }
+        printf("%s: %ld allocations, the first 1000 and every 211th failed once: %ld reported out of memory\n",
+               name, total, reported);
+        CHECK(total > 50 && reported > 0);
     }
-    printf("holes: %ld allocations, the first 1000 and every 211th failed once: %ld reported out of memory\n",
-           total, reported);
-    CHECK(total > 50 && reported > 0);
 }
 
 /* The overlay of two stars: its intersection points are GMP rationals, so

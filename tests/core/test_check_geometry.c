@@ -71,5 +71,27 @@ int main(void)
                                 NULL, NULL) == CM_OK);
     }
     cm_result_free(r);
+
+    /* cm_check_tetrahedra: a positive tetrahedron and an inverted one (and
+     * swapped into a positive one), one whose apex is the smallest double
+     * above its base's plane (positive, exactly) and then on it (flat), a
+     * NaN node, an index out of range. */
+    double nodes[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+    int32_t tets[] = {0, 1, 2, 3, 2, 1, 3, 4};
+    long where = -2;
+    CHECK(cm_check_tetrahedra(nodes, 5, tets, 1, &where) == CM_OK && where == -1);
+    CHECK(cm_check_tetrahedra(nodes, 5, tets, 2, &where) == CM_ERR_ZERO_AREA && where == 1); /* 2 1 3 4: inverted */
+    int32_t swapped[] = {0, 1, 2, 3, 1, 2, 3, 4};
+    CHECK(cm_check_tetrahedra(nodes, 5, swapped, 2, &where) == CM_OK);
+    double lifted[15];
+    memcpy(lifted, nodes, sizeof lifted);
+    lifted[11] = 0x1p-1074; /* node 3 just above the plane z = 0: positive, exactly */
+    CHECK(cm_check_tetrahedra(lifted, 5, tets, 1, &where) == CM_OK);
+    lifted[11] = 0;
+    CHECK(cm_check_tetrahedra(lifted, 5, tets, 1, &where) == CM_ERR_ZERO_AREA && where == 0);
+    lifted[11] = 0.0 / 0.0;
+    CHECK(cm_check_tetrahedra(lifted, 5, tets, 1, &where) == CM_ERR_NOT_FINITE && where == 3);
+    int32_t outside[] = {0, 1, 2, 5};
+    CHECK(cm_check_tetrahedra(nodes, 5, outside, 1, &where) == CM_ERR_ARGUMENT && where == 0);
     return check_summary("test_check_geometry");
 }

@@ -617,15 +617,11 @@ def read_obj_loops(path):
 LEVER = "/usr/share/doc/gmsh-doc/converters/stl_to_cartesian/lever.stl.gz"  # Debian package gmsh-doc
 
 
-def case_lever_sections(w):
-    # gmsh-doc's lever.stl, a bracket whose base plate has five bolt holes,
-    # cut by MeshLab's Compute Planar Section across the plate at z = 2 and
-    # by a tilted plane (normal (0.02, 0, 1)) through z = 4: each section is
-    # 6 closed polylines, the plate's outline and its 5 holes. The unchanged
-    # docs/meshlab/pair.mlx pairs them (auto correspondence, loop by loop),
-    # then pair_and_sweep.mlx sweeps the pair: every section keeps the 5
-    # holes and the lateral surface has a ring per loop facing away from
-    # the material (into each hole).
+def cut_lever(w):
+    """gmsh-doc's lever.stl cut by MeshLab's Compute Planar Section across
+    the base plate at z = 2 and by a tilted plane (normal (0.02, 0, 1))
+    through z = 4, saved as a.obj and b.obj; returns their loops (6 each:
+    the plate's outline and its 5 bolt holes)."""
     import gzip
     stl = os.path.join(w, "lever.stl")
     with gzip.open(LEVER) as f:
@@ -642,6 +638,19 @@ def case_lever_sections(w):
     for loops in sections:
         assert len(loops) == 6, "a section has %d loops, expected the outline and 5 holes" % len(loops)
     os.remove(os.path.join(w, "log.txt"))
+    return sections
+
+
+def case_lever_sections(w):
+    # gmsh-doc's lever.stl, a bracket whose base plate has five bolt holes,
+    # cut by MeshLab's Compute Planar Section across the plate at z = 2 and
+    # by a tilted plane (normal (0.02, 0, 1)) through z = 4: each section is
+    # 6 closed polylines, the plate's outline and its 5 holes. The unchanged
+    # docs/meshlab/pair.mlx pairs them (auto correspondence, loop by loop),
+    # then pair_and_sweep.mlx sweeps the pair: every section keeps the 5
+    # holes and the lateral surface has a ring per loop facing away from
+    # the material (into each hole).
+    sections = cut_lever(w)
     code, log = run(w, ["a.obj", "b.obj"], os.path.join(DOCS, "pair.mlx"), {2: "pa.ply", 3: "pb.ply"})
     expect_ok(code, log)
     assert "the outer loop and 5 holes" in log, log[-2000:]
@@ -705,6 +714,62 @@ def case_lever_sections(w):
     assert signs[0][1] > 0 and all(f < 0 for _, f in signs[1:]), signs
     print("lever sweep: 3 sections with 5 holes each valid, lateral surface of %d triangles in 6 rings, "
           "the outline's facing out and the 5 holes' facing into the holes" % len(lt))
+
+
+def case_lever_volume(w):
+    # The lever's two sections (cut_lever: one horizontal, one tilted)
+    # paired by the unchanged pair.mlx and saved, as a user exports the
+    # pair; then the saved pair swept by the sweep filter with its volume
+    # file set. Gmsh reads the .msh and every tetrahedron's Jacobian is
+    # positive at its corners and centre; the volume's end faces are the
+    # layers' faces (the first layer's plane z = 2 holds exactly one node per
+    # layer vertex), and they fill the solid the layers and the lateral
+    # surface bound.
+    import gmsh
+    sections = cut_lever(w)
+    code, log = run(w, ["a.obj", "b.obj"], os.path.join(DOCS, "pair.mlx"), {2: "pa.ply", 3: "pb.ply"})
+    expect_ok(code, log)
+    pa, ta, _ = check_layer_with_holes(os.path.join(w, "pa.ply"), sections[0])
+    check_layer_with_holes(os.path.join(w, "pb.ply"), sections[1])
+    os.remove(os.path.join(w, "log.txt"))
+    volume = os.path.join(w, "lever.msh")
+    script = sweep_only_script(w, [('value="" name="VolumeFile"', 'value="%s" name="VolumeFile"' % volume)])
+    code, log = run(w, ["pa.ply", "pb.ply"], script, {5: "lateral.ply"})
+    expect_ok(code, log)
+    m = re.search(r"volume: (\d+) tetrahedra, (\d+) nodes in (\d+) sections", log)
+    assert m and os.path.exists(volume), log[-2000:]
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.open(volume)
+        types, tags, _ = gmsh.model.mesh.getElements(3)
+        assert list(types) == [4] and len(tags[0]) == int(m.group(1)), (types, m.group(1))
+        points = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.25, 0.25, 0.25]  # corners and centre
+        _, dets, _ = gmsh.model.mesh.getJacobians(4, points)
+        dets = np.array(dets)
+        assert len(dets) == 5 * len(tags[0]) and np.all(dets > 0), "%d of %d Jacobians not positive" % (
+            int(np.sum(dets <= 0)), len(dets))
+        node_tags, coords, _ = gmsh.model.mesh.getNodes()
+        xyz = np.array(coords).reshape(-1, 3)
+        total = float(np.sum(dets[4::5])) / 6  # a linear tetrahedron's volume is det J / 6
+    finally:
+        gmsh.finalize()
+    assert len(node_tags) == int(m.group(2)), (len(node_tags), m.group(2))
+    at_bottom = int(np.sum(np.abs(xyz[:, 2] - 2.0) < 1e-5))
+    assert at_bottom == len(pa), "%d nodes on z = 2, the layer has %d vertices" % (at_bottom, len(pa))
+    # The tetrahedra fill the solid the filter's own layers bound: the two
+    # paired layers and the lateral surface (layer 5), whose enclosed
+    # volume (divergence theorem; the lateral quads' other diagonal and the
+    # layers' float rounding aside) is the tetrahedra's sum.
+    def signed(mesh):
+        p, t = mesh.points.astype(np.float64), mesh.cells_dict["triangle"]
+        return float(np.sum(np.einsum("ij,ij->i", p[t[:, 0]], np.cross(p[t[:, 1]], p[t[:, 2]])))) / 6
+    bounded = signed(meshio.read(os.path.join(w, "lateral.ply"))) + signed(meshio.read(os.path.join(w, "pb.ply"))) \
+        - signed(meshio.read(os.path.join(w, "pa.ply")))
+    assert abs(total - bounded) < 2e-3 * bounded, (total, bounded)
+    print("lever volume: %s tetrahedra, %s nodes, %s sections; Gmsh: all %d Jacobians positive (corners and "
+          "centres, smallest %.3g), volume %.6g (bounded by the layers and the lateral surface: %.6g)"
+          % (m.group(1), m.group(2), m.group(3), len(dets), float(dets.min()), total, bounded))
 
 
 def bad_case(w, inputs, message, replacements=()):
@@ -840,9 +905,12 @@ def case_bad_sweep_folded(w):
     print("rejected with: " + [l for l in log.splitlines() if "Error: " in l][0])
 
 
-def sweep_only_script(w):
+def sweep_only_script(w, replacements=()):
     """pair_and_sweep.mlx without the pairing step, sweeping layers 0 and 1."""
     text = open(os.path.join(DOCS, "pair_and_sweep.mlx")).read()
+    for old, new in replacements:
+        assert old in text, old
+        text = text.replace(old, new, 1)
     sweep_only = text[:text.index(" <filter name=\"Compatible Triangulation")] + \
         text[text.index(" <filter name=\"Compatible Sweep"):]
     sweep_only = sweep_only.replace('value="2" name="FirstMesh"', 'value="0" name="FirstMesh"') \

@@ -243,7 +243,9 @@ typedef struct cm_stats {
      * correspondence_bound_deg). Certified: rounding and discretisation
      * only ever make it higher than the truth, never lower. 60 when
      * nothing binds; all 0 when options.ceiling is 0. The remesher aims at
-     * min(options.min_angle_deg, ceiling_deg). */
+     * min(options.min_angle_deg, ceiling_deg). For polygons with holes the
+     * corner fan alone (over every loop): the correspondence bound's moduli
+     * are those of a simply connected polygon, so it is 60 there. */
     double ceiling_deg;
     /* At boundary vertex i the same m triangles split the corner in every
      * polygon, each angle in [alpha, 180 - 2 alpha]: alpha <= min over i of
@@ -265,7 +267,10 @@ typedef struct cm_stats {
     double correspondence_bound_before_deg;
     double seconds_ceiling;      /* computing the ceiling (both when auto) */
     size_t holes;            /* hole loops per polygon (cm_triangulate_loops) */
-    size_t bridges;          /* chords that cut the holes open */
+    size_t bridges;          /* paths that cut the holes open: two per hole, or
+                                one per hole when the construction that always
+                                succeeds took over (fallback_count 1; the
+                                overlay method takes it from the start) */
 } cm_stats;
 
 /* Quality of one geometry of the result. */
@@ -317,10 +322,16 @@ typedef struct cm_loops {
  * polygon, the loop and the vertex within the loop; the error location's
  * vertex is the index into the polygon's whole xy array.
  *
- * The holes are cut open by straight chords between loop vertices, each
- * valid in every polygon (two per hole, disjoint), into simple pieces that
- * are triangulated as by cm_triangulate and glued along the chords. When no
- * such chords exist the call fails with CM_ERR_INTERNAL and says which hole.
+ * The holes are cut open by paths between loop vertices, each valid in
+ * every polygon (two per hole, disjoint: straight chords, or bent through
+ * Steiner vertices), into simple pieces that are triangulated as by
+ * cm_triangulate and glued along the paths. Where no such paths are found
+ * (or with CM_METHOD_OVERLAY) a construction that succeeds for every valid
+ * input takes over: one bridge per hole, routed in each polygon through its
+ * own triangulation, cuts the polygon open into one disc, the same in every
+ * polygon, which the overlay triangulates compatibly (many more Steiner
+ * vertices; stats.fallback_count 1, stats.bridges one per hole). Only
+ * rounding can make it fail (CM_ERR_PRECISION).
  *
  * The result: the input vertices first, in input order (outer loop, then
  * each hole), bit-identical (with the arc-length correspondences: the
@@ -406,6 +417,15 @@ CM_API cm_status cm_result_quality_before(const cm_result *result, size_t g, cm_
 CM_API cm_status cm_check_geometry(const double *xy, size_t n, size_t num_vertices,
                             const int32_t *triangles, size_t num_triangles,
                             long *where, long *other);
+
+/* Exact validity of a volume mesh: every tetrahedron (4 node indices, as
+ * cm_sweep_tets gives them) has strictly positive volume (orient3d with
+ * exact predicates). nodes: 3 * num_nodes doubles. Returns CM_OK, or
+ * CM_ERR_ZERO_AREA (tetrahedron *where is flat or inverted),
+ * CM_ERR_NOT_FINITE (node *where), CM_ERR_ARGUMENT (bad pointers, an index
+ * out of range: tetrahedron *where). where may be NULL. */
+CM_API cm_status cm_check_tetrahedra(const double *nodes, size_t num_nodes, const int32_t *tets, size_t num_tets,
+                                     long *where);
 
 /* The same for a geometry with holes (a result of cm_triangulate_loops):
  * vertices 0..n-1 are the loops one after another, loop l having

@@ -87,3 +87,28 @@ done:
     if (other) *other = o;
     return status;
 }
+
+cm_status cm_check_tetrahedra(const double *nodes, size_t num_nodes, const int32_t *tets, size_t num_tets,
+                              long *where)
+{
+    long w = -1;
+    cm_status status = CM_OK;
+    cm_gmp_memory_begin();
+    if (!nodes || (!tets && num_tets)) {
+        status = CM_ERR_ARGUMENT;
+        goto done;
+    }
+    for (size_t i = 0; i < 3 * num_nodes && status == CM_OK; i++)
+        if (!isfinite(nodes[i])) status = CM_ERR_NOT_FINITE, w = (long)(i / 3);
+    for (size_t t = 0; t < num_tets && status == CM_OK; t++) {
+        const int32_t *v = tets + 4 * t;
+        for (int c = 0; c < 4; c++)
+            if (v[c] < 0 || (size_t)v[c] >= num_nodes) status = CM_ERR_ARGUMENT, w = (long)t;
+        if (status == CM_OK && cm_orient3d(nodes + 3 * v[0], nodes + 3 * v[1], nodes + 3 * v[2], nodes + 3 * v[3]) <= 0)
+            status = CM_ERR_ZERO_AREA, w = (long)t;
+    }
+done:
+    if (cm_gmp_memory_exhausted() && status == CM_OK) status = CM_ERR_NO_MEMORY;
+    if (where) *where = w;
+    return status;
+}

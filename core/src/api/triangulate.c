@@ -11,6 +11,7 @@
 #include "base/clock.h"
 #include "base/progress.h"
 #include "construct/holes.h"
+#include "construct/holes_overlay.h"
 #include "construct/overlay.h"
 #include "correspond/bound.h"
 #include "correspond/choose.h"
@@ -453,6 +454,8 @@ static cm_status build_pieces(cm_result *r, const double *const *geoms, size_t k
     double *buffer = NULL;
     cm_status s = CM_ERR_NO_MEMORY;
     size_t largest = 0, fallbacks = 0;
+    cm_options piece_options = *o;
+    piece_options.ceiling = 0; /* a piece's ceiling says nothing about the whole */
     for (size_t p = 0; p < pieces->count; p++)
         if (pieces->start[p + 1] - pieces->start[p] > largest) largest = pieces->start[p + 1] - pieces->start[p];
     buffer = malloc(2 * k * largest * sizeof *buffer);
@@ -475,7 +478,7 @@ static cm_status build_pieces(cm_result *r, const double *const *geoms, size_t k
             piece_xy[g] = xy;
         }
         r->stats.fallback_count = 0;
-        s = build_first(r, piece_xy, k, m, 0, o, progress);
+        s = build_first(r, piece_xy, k, m, 0, &piece_options, progress);
         fallbacks += r->stats.fallback_count;
         if (s == CM_OK && cm_holes_glue(&whole, ids, m, &r->mesh) != CM_OK)
             s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
@@ -548,15 +551,38 @@ static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, con
     }
     double t1 = cm_seconds_now();
     r->stats.seconds_validate = t1 - t0;
+    if (o->ceiling) { /* the corner fan, loop by loop; the correspondence bound needs a simply connected polygon */
+        double cap = 60.0;
+        const double **loop_xy = malloc(k * sizeof *loop_xy);
+        if (!loop_xy) goto oom;
+        for (size_t l = 0; l < num_loops; l++) {
+            for (size_t g = 0; g < k; g++) loop_xy[g] = geoms[g] + 2 * start[l];
+            cap = fmin(cap, cm_corner_fan_cap(loop_xy, k, start[l + 1] - start[l]));
+        }
+        free(loop_xy);
+        r->stats.corner_fan_cap_deg = r->stats.ceiling_deg = cap;
+        r->stats.correspondence_bound_deg = 60.0, r->stats.modulus_distortion = 1.0;
+        for (int i = 0; i < 4; i++) r->stats.distortion_quad[i] = -1;
+        r->stats.seconds_ceiling = cm_seconds_now() - t1;
+    }
     if (cm_progress_report(&progress, CM_STAGE_TRIANGULATE, 0.0)) {
         s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
         goto done;
     }
-    s = cm_holes_cut((const double *const *)geoms, k, start, num_loops, &pieces, &r->error);
+    /* The bridges' pieces (few Steiner vertices), else, and for the overlay
+     * method, the construction that always succeeds. */
+    s = o->method == CM_METHOD_OVERLAY ? CM_ERR_INTERNAL
+                                       : cm_holes_cut((const double *const *)geoms, k, start, num_loops, &pieces, &r->error);
     r->stats.bridges = pieces.chords;
     if (s == CM_OK) s = build_pieces(r, (const double *const *)geoms, k, n, &pieces, o, &progress);
+    if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
+        cm_mesh_clear(&r->mesh);
+        r->stats.fallback_count = 1;
+        s = cm_holes_overlay((const double *const *)geoms, k, start, num_loops, &r->mesh, &r->stats.bridges,
+                             &r->error);
+    }
     if (s != CM_OK) goto done;
-    r->stats.seconds_build = cm_seconds_now() - t1;
+    r->stats.seconds_build = cm_seconds_now() - t1 - r->stats.seconds_ceiling;
     r->mesh.loop_start = start, r->mesh.num_loops = num_loops; /* the remesher's boundary */
     s = remesh_stage(r, n, o, &progress);
     r->mesh.loop_start = NULL, r->mesh.num_loops = 0;

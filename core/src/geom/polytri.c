@@ -215,7 +215,8 @@ static int flip_if_illegal(const double *xy, int32_t *tri, int32_t *nbr, long t,
     return 1;
 }
 
-static int make_delaunay(const double *xy, int32_t *tri, long nt, cm_progress *progress)
+static int make_delaunay(const double *xy, int32_t *tri, long nt, int (*fixed)(const void *, int32_t, int32_t),
+                         const void *user, cm_progress *progress)
 {
     int32_t *nbr = malloc((size_t)(3 * nt) * sizeof *nbr);
     long *stack = malloc((size_t)(3 * nt) * sizeof *stack);
@@ -234,6 +235,7 @@ static int make_delaunay(const double *xy, int32_t *tri, long nt, cm_progress *p
         queued[t] = 0;
         for (long i = 0; i < 3; i++) {
             long u = nbr[3 * t + i];
+            if (u >= 0 && fixed && fixed(user, tri[3 * t + (i + 1) % 3], tri[3 * t + (i + 2) % 3])) continue;
             if (u >= 0 && flip_if_illegal(xy, tri, nbr, t, i)) {
                 if (!queued[u]) stack[top++] = u, queued[u] = 1;
                 if (!queued[t]) stack[top++] = t, queued[t] = 1;
@@ -257,5 +259,11 @@ int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t
 {
     int s = clip_ears(xy, idx, m, tri_out, progress);
     if (s != 0) return s;
-    return make_delaunay(xy, tri_out, m - 2, progress);
+    return make_delaunay(xy, tri_out, m - 2, NULL, NULL, progress);
+}
+
+int cm_tri_make_delaunay(const double *xy, int32_t *tri, long nt, int (*fixed)(const void *, int32_t, int32_t),
+                         const void *user)
+{
+    return make_delaunay(xy, tri, nt, fixed, user, NULL);
 }

@@ -20,6 +20,12 @@ int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t
  * for uses that only walk it (visibility). 0, CM_NO_MEMORY or 1. */
 int cm_polygon_ear_clip(const double *xy, const int32_t *idx, long m, int32_t *tri_out);
 
+/* Lawson flips of any triangulation to the constrained Delaunay one: the
+ * edges without a neighbour and those fixed(user, a, b) calls fixed (may be
+ * NULL) stay. 0, or CM_NO_MEMORY. */
+int cm_tri_make_delaunay(const double *xy, int32_t *tri, long nt, int (*fixed)(const void *, int32_t, int32_t),
+                         const void *user);
+
 /* Triangle adjacency: nbr[3t + i] is the triangle across the edge opposite
  * corner i of triangle t, -1 on the boundary. 0, or CM_NO_MEMORY. */
 int cm_tri_adjacency(const int32_t *tri, long nt, int32_t *nbr);
