@@ -439,12 +439,12 @@ static void random_random_pair(writer *w, const char *name, int n, uint64_t seed
     unrelated_pair(w, name, n, seed, rp_random_simple, "random simple polygon generator failed");
 }
 
-/* The partition's growth with n: unrelated random polygons and stars up to
- * 10,000 vertices, and glyph pairs at n = 160. */
+/* The partition's growth with n: unrelated random polygons up to
+ * 10,000 vertices, unrelated stars up to 100,000, and glyph pairs at n = 160. */
 static void scale_set(writer *w)
 {
     static const int random_n[] = {1000, 3000, 10000};
-    static const int star_n[] = {1000, 3000, 10000};
+    static const int star_n[] = {1000, 3000, 10000, 30000, 100000};
     char name[64];
     for (int i = 0; i < COUNT(random_n); i++) {
         snprintf(name, sizeof name, "random_pair_n%d", random_n[i]);
