@@ -48,7 +48,7 @@ static int reserve_vertices(cm_kmesh *km, int32_t need)
     if (resize(&km->vc, c, sizeof *km->vc) || resize(&km->mark, c, sizeof *km->mark) ||
         resize(&km->vcap, c, sizeof *km->vcap) || resize(&km->vdirty, c, 1) || reserve_list(&km->free_v, cap))
         return -1;
-    for (int32_t v = km->cap_v; v < cap; v++) km->vc[v] = -1, km->mark[v] = 0, km->vcap[v] = CM_PI, km->vdirty[v] = 1;
+    for (int32_t v = km->cap_v; v < cap; v++) km->vc[v] = -1, km->mark[v] = 0, km->vcap[v] = CM_PI, km->vdirty[v] = CM_KMESH_ALL_DIRTY;
     km->cap_v = cap;
     return 0;
 }
@@ -169,17 +169,52 @@ static void update_edge(cm_kmesh *km, int32_t c)
         cm_heap_remove(&km->eq, lo);
 }
 
-void cm_kmesh_touch(cm_kmesh *km, int32_t t)
+/* Sets t's key, its slack and its place in the triangle heap. */
+static void set_key_only(cm_kmesh *km, int32_t t, double key)
 {
-    double key = CM_PI;
-    for (size_t g = 0; g < km->k; g++) key = fmin(key, cm_kmesh_tri_angle(km, g, t));
     km->tkey[t] = key;
     km->slack[t] = key - triangle_target(km, t);
-    for (int i = 0; i < 3; i++) km->vdirty[km->tri[3 * t + i]] = 1;
     cm_heap_set(&km->tq, t, km->slack[t]);
+}
+
+/* The same and the candidate entries of its three edges. */
+static void set_key(cm_kmesh *km, int32_t t, double key)
+{
+    set_key_only(km, t, key);
     for (int32_t c = 3 * t; c < 3 * t + 3; c++) update_edge(km, c);
 }
 
+void cm_kmesh_set_dirty(cm_kmesh *km, int32_t v, unsigned dirty)
+{
+    if (km->vdirty[v] == (unsigned char)dirty) return;
+    cm_log_dirty(km, v);
+    km->vdirty[v] = (unsigned char)dirty;
+}
+
+/* Recomputes t's key and marks its vertices dirty in the geometries of
+ * `mask`. */
+static double fresh_key(cm_kmesh *km, int32_t t, unsigned mask)
+{
+    double key = CM_PI;
+    for (size_t g = 0; g < km->k; g++) {
+        double a = cm_kmesh_tri_angle(km, g, t);
+        if (a < key) key = a;
+    }
+    for (int i = 0; i < 3; i++) {
+        int32_t v = km->tri[3 * t + i];
+        cm_kmesh_set_dirty(km, v, km->vdirty[v] | mask);
+    }
+    return key;
+}
+
+void cm_kmesh_touch(cm_kmesh *km, int32_t t)
+{
+    set_key(km, t, fresh_key(km, t, CM_KMESH_ALL_DIRTY));
+}
+
+/* The restored triangles get their saved keys back (the geometry is the
+ * one they were computed on) and the dirty flags their old values: what
+ * the smoothing found optimal before is optimal again. */
 int cm_kmesh_tx_rollback(cm_kmesh *km)
 {
     long nt = cm_log_undo(km);
@@ -187,11 +222,23 @@ int cm_kmesh_tx_rollback(cm_kmesh *km)
     for (long i = 0; i < nt; i++) {
         int32_t t = cm_log_saved_triangle(km->log, (size_t)i);
         if (km->tri[3 * t] >= 0) {
-            cm_kmesh_touch(km, t);
+            set_key(km, t, cm_log_saved_key(km->log, (size_t)i));
             continue;
         }
         cm_heap_remove(&km->tq, t);
         for (int j = 0; j < 3; j++) cm_heap_remove(&km->eq, 3 * t + j);
+    }
+    return 0;
+}
+
+int cm_kmesh_tx_vertices(const cm_kmesh *km, cm_ibuf *out)
+{
+    size_t nt = cm_log_saved_count(km->log);
+    for (size_t i = 0; i < nt; i++) {
+        int32_t t = cm_log_saved_triangle(km->log, i);
+        if (km->tri[3 * t] < 0) continue;
+        for (int j = 0; j < 3; j++)
+            if (cm_ibuf_push(out, km->tri[3 * t + j])) return -1;
     }
     return 0;
 }
@@ -617,7 +664,14 @@ void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const c
 {
     for (size_t i = 0; i < star->n; i++) cm_log_triangle(km, star->a[i] / 3); /* their keys change */
     set_position(km, g, v, p);
-    for (size_t i = 0; i < star->n; i++) cm_kmesh_touch(km, star->a[i] / 3);
+    /* Only geometry g changed. All keys first (an edge's entry depends on
+     * both sides), then each edge once: the link edge opposite c and the
+     * spoke opposite prev(c) (v is interior: the spokes go round). */
+    for (size_t i = 0; i < star->n; i++) {
+        int32_t t = star->a[i] / 3;
+        set_key_only(km, t, fresh_key(km, t, cm_kmesh_dirty_bit(g)));
+    }
+    for (size_t i = 0; i < star->n; i++) update_edge(km, star->a[i]), update_edge(km, cm_prev(star->a[i]));
 }
 
 /* ---- full check ---------------------------------------------------------- */

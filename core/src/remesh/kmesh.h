@@ -46,7 +46,8 @@ typedef struct cm_kmesh {
     double *bcap;          /* n: per boundary edge i -> bnext[i] */
     int32_t *bnext;        /* n: the next vertex along i's boundary loop */
     double *vcap;          /* per vertex: half the corner angle (boundary), pi */
-    unsigned char *vdirty; /* vertex: a triangle around it changed since
+    unsigned char *vdirty; /* vertex: per geometry (cm_kmesh_dirty_bit), a
+                              triangle around it changed there since
                               cm_smooth_optimize last found it optimal */
     uint32_t *mark;        /* scratch vertex stamps */
     uint32_t stamp;
@@ -61,6 +62,9 @@ static inline const double *cm_kmesh_pos(const cm_kmesh *km, size_t g, int32_t v
 }
 static inline int cm_kmesh_is_boundary(const cm_kmesh *km, int32_t v) { return v < km->n; }
 static inline int cm_kmesh_tri_live(const cm_kmesh *km, int32_t t) { return km->tri[3 * t] >= 0; }
+/* Geometry g's bit in vdirty; geometries from the 8th on share the last. */
+#define CM_KMESH_ALL_DIRTY 0xffu
+static inline unsigned cm_kmesh_dirty_bit(size_t g) { return 1u << (g < 7 ? g : 7); }
 
 /* Builds from a compatible triangulation whose vertices 0..n-1 are the
  * counter-clockwise boundary. CM_OK, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL
@@ -81,8 +85,11 @@ long cm_kmesh_star(const cm_kmesh *km, int32_t v, cm_ibuf *corners);
 double cm_kmesh_tri_angle(const cm_kmesh *km, size_t g, int32_t t);
 /* 1 if (a, b, c) is strictly counter-clockwise in geometry g (exact). */
 int cm_kmesh_tri_ok(const cm_kmesh *km, size_t g, int32_t a, int32_t b, int32_t c);
-/* Recomputes t's quality key. */
+/* Recomputes t's quality key; its vertices become dirty in every
+ * geometry. */
 void cm_kmesh_touch(cm_kmesh *km, int32_t t);
+/* Sets vdirty[v] (logged: a rollback restores it). */
+void cm_kmesh_set_dirty(cm_kmesh *km, int32_t v, unsigned dirty);
 /* Length of edge ab in geometry g over that geometry's scale. */
 double cm_kmesh_rel_length(const cm_kmesh *km, size_t g, int32_t a, int32_t b);
 
@@ -104,7 +111,8 @@ int cm_kmesh_collapse_ok_topology(cm_kmesh *km, int32_t c, const cm_ibuf *star);
  * holds v's corners as from cm_kmesh_star. v's slot and the two triangles
  * on the edge die. */
 void cm_kmesh_collapse(cm_kmesh *km, int32_t c, const cm_ibuf *star);
-/* Moves interior vertex v in geometry g and refreshes the keys around it. */
+/* Moves interior vertex v in geometry g and refreshes the keys around it;
+ * its star's vertices become dirty in geometry g. */
 void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const cm_ibuf *star);
 
 /* Transactions: after cm_kmesh_tx_begin every change is logged until
@@ -115,6 +123,11 @@ void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const c
 int cm_kmesh_tx_begin(cm_kmesh *km);
 int cm_kmesh_tx_region(const cm_kmesh *km, double *before, double *after);
 void cm_kmesh_tx_commit(cm_kmesh *km);
+/* Appends the vertices of the live triangles in the slots the open (or
+ * just ended) transaction changed, as they are now: called before and
+ * after a rollback, the vertices whose surroundings it touched. Repeats
+ * are left in. 0, or -1 out of memory. */
+int cm_kmesh_tx_vertices(const cm_kmesh *km, cm_ibuf *out);
 int cm_kmesh_tx_rollback(cm_kmesh *km);
 
 /* Full exact check (tests): adjacency symmetric, every live triangle
