@@ -46,7 +46,7 @@ static int reserve_vertices(cm_kmesh *km, int32_t need)
     for (size_t g = 0; g < km->k; g++)
         if (resize(&km->xy[g], 2 * c, sizeof **km->xy)) return -1;
     if (resize(&km->vc, c, sizeof *km->vc) || resize(&km->mark, c, sizeof *km->mark) ||
-        resize(&km->vcap, c, sizeof *km->vcap) || resize(&km->vdirty, c, 1) || reserve_list(&km->free_v, cap))
+        resize(&km->vcap, c, sizeof *km->vcap) || resize(&km->vdirty, c, sizeof *km->vdirty) || reserve_list(&km->free_v, cap))
         return -1;
     for (int32_t v = km->cap_v; v < cap; v++) km->vc[v] = -1, km->mark[v] = 0, km->vcap[v] = CM_PI, km->vdirty[v] = CM_KMESH_ALL_DIRTY;
     km->cap_v = cap;
@@ -186,9 +186,9 @@ static void set_key(cm_kmesh *km, int32_t t, double key)
 
 void cm_kmesh_set_dirty(cm_kmesh *km, int32_t v, unsigned dirty)
 {
-    if (km->vdirty[v] == (unsigned char)dirty) return;
+    if (km->vdirty[v] == (uint16_t)dirty) return;
     cm_log_dirty(km, v);
-    km->vdirty[v] = (unsigned char)dirty;
+    km->vdirty[v] = (uint16_t)dirty;
 }
 
 /* Recomputes t's key and marks its vertices dirty in the geometries of
@@ -669,7 +669,7 @@ void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const c
      * spoke opposite prev(c) (v is interior: the spokes go round). */
     for (size_t i = 0; i < star->n; i++) {
         int32_t t = star->a[i] / 3;
-        set_key_only(km, t, fresh_key(km, t, cm_kmesh_dirty_bit(g)));
+        set_key_only(km, t, fresh_key(km, t, cm_kmesh_dirty_bit(g, CM_DIRTY_SMOOTH) | cm_kmesh_dirty_bit(g, CM_DIRTY_OPTIMIZE)));
     }
     for (size_t i = 0; i < star->n; i++) update_edge(km, star->a[i]), update_edge(km, cm_prev(star->a[i]));
 }

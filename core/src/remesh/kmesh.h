@@ -46,9 +46,10 @@ typedef struct cm_kmesh {
     double *bcap;          /* n: per boundary edge i -> bnext[i] */
     int32_t *bnext;        /* n: the next vertex along i's boundary loop */
     double *vcap;          /* per vertex: half the corner angle (boundary), pi */
-    unsigned char *vdirty; /* vertex: per geometry (cm_kmesh_dirty_bit), a
-                              triangle around it changed there since
-                              cm_smooth_optimize last found it optimal */
+    uint16_t *vdirty;      /* vertex: per geometry and smoothing step
+                              (cm_kmesh_dirty_bit), a triangle around it
+                              changed there since the step last found
+                              nothing to do */
     uint32_t *mark;        /* scratch vertex stamps */
     uint32_t stamp;
     struct cm_kmesh_log *log; /* undo log, NULL until the first transaction */
@@ -62,9 +63,13 @@ static inline const double *cm_kmesh_pos(const cm_kmesh *km, size_t g, int32_t v
 }
 static inline int cm_kmesh_is_boundary(const cm_kmesh *km, int32_t v) { return v < km->n; }
 static inline int cm_kmesh_tri_live(const cm_kmesh *km, int32_t t) { return km->tri[3 * t] >= 0; }
-/* Geometry g's bit in vdirty; geometries from the 8th on share the last. */
-#define CM_KMESH_ALL_DIRTY 0xffu
-static inline unsigned cm_kmesh_dirty_bit(size_t g) { return 1u << (g < 7 ? g : 7); }
+/* Geometry g's bit in vdirty for the smoothing step `step` (CM_DIRTY_*);
+ * geometries from the 8th on share the last bit, which stays set. */
+#define CM_DIRTY_SMOOTH 0
+#define CM_DIRTY_OPTIMIZE 8
+#define CM_KMESH_ALL_DIRTY 0xffffu
+static inline unsigned cm_kmesh_dirty_bit(size_t g, int step) { return 1u << (step + (g < 7 ? g : 7)); }
+static inline int cm_kmesh_dirty_shared(size_t g) { return g >= 7; }
 
 /* Builds from a compatible triangulation whose vertices 0..n-1 are the
  * counter-clockwise boundary. CM_OK, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL

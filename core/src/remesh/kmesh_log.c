@@ -174,7 +174,7 @@ long cm_log_undo(cm_kmesh *km)
         for (size_t g = 0; g < km->k; g++, d += 2)
             km->xy[g][2 * (size_t)v] = log->pos.a[d], km->xy[g][2 * (size_t)v + 1] = log->pos.a[d + 1];
     }
-    for (size_t i = log->dlog.n / 2; i-- > 0;) km->vdirty[log->dlog.a[2 * i]] = (unsigned char)log->dlog.a[2 * i + 1];
+    for (size_t i = log->dlog.n / 2; i-- > 0;) km->vdirty[log->dlog.a[2 * i]] = (uint16_t)log->dlog.a[2 * i + 1];
     km->nv = log->nv, km->nt = log->nt, km->live_v = log->live_v, km->live_t = log->live_t;
     return (long)nt;
 }
