@@ -48,7 +48,7 @@ static int reserve_vertices(cm_kmesh *km, int32_t need)
     if (resize(&km->vc, c, sizeof *km->vc) || resize(&km->mark, c, sizeof *km->mark) ||
         resize(&km->vcap, c, sizeof *km->vcap) || resize(&km->vdirty, c, sizeof *km->vdirty) || reserve_list(&km->free_v, cap))
         return -1;
-    for (int32_t v = km->cap_v; v < cap; v++) km->vc[v] = -1, km->mark[v] = 0, km->vcap[v] = CM_PI, km->vdirty[v] = CM_KMESH_ALL_DIRTY;
+    for (int32_t v = km->cap_v; v < cap; v++) km->vc[v] = -1, km->mark[v] = 0, km->vcap[v] = CM_PI, km->vdirty[v] = CM_DIRTY_ALL;
     km->cap_v = cap;
     return 0;
 }
@@ -169,18 +169,12 @@ static void update_edge(cm_kmesh *km, int32_t c)
         cm_heap_remove(&km->eq, lo);
 }
 
-/* Sets t's key, its slack and its place in the triangle heap. */
-static void set_key_only(cm_kmesh *km, int32_t t, double key)
+/* Sets t's key, its slack and the heap entries that depend on them. */
+static void set_key(cm_kmesh *km, int32_t t, double key)
 {
     km->tkey[t] = key;
     km->slack[t] = key - triangle_target(km, t);
     cm_heap_set(&km->tq, t, km->slack[t]);
-}
-
-/* The same and the candidate entries of its three edges. */
-static void set_key(cm_kmesh *km, int32_t t, double key)
-{
-    set_key_only(km, t, key);
     for (int32_t c = 3 * t; c < 3 * t + 3; c++) update_edge(km, c);
 }
 
@@ -191,8 +185,7 @@ void cm_kmesh_set_dirty(cm_kmesh *km, int32_t v, unsigned dirty)
     km->vdirty[v] = (uint16_t)dirty;
 }
 
-/* Recomputes t's key and marks its vertices dirty in the geometries of
- * `mask`. */
+/* Recomputes t's key and sets the vdirty bits `mask` of its vertices. */
 static double fresh_key(cm_kmesh *km, int32_t t, unsigned mask)
 {
     double key = CM_PI;
@@ -209,12 +202,15 @@ static double fresh_key(cm_kmesh *km, int32_t t, unsigned mask)
 
 void cm_kmesh_touch(cm_kmesh *km, int32_t t)
 {
-    set_key(km, t, fresh_key(km, t, CM_KMESH_ALL_DIRTY));
+    set_key(km, t, fresh_key(km, t, CM_DIRTY_ALL));
 }
 
 /* The restored triangles get their saved keys back (the geometry is the
- * one they were computed on) and the dirty flags their old values: what
- * the smoothing found optimal before is optimal again. */
+ * one they were computed on) and the dirty bits their old values: where
+ * the smoothing formulas left a vertex in place they would again. The
+ * position search runs again around the undone change, as it always
+ * has: which searches run changes the results, the fixtures' angles
+ * moving either way. */
 int cm_kmesh_tx_rollback(cm_kmesh *km)
 {
     long nt = cm_log_undo(km);
@@ -223,6 +219,7 @@ int cm_kmesh_tx_rollback(cm_kmesh *km)
         int32_t t = cm_log_saved_triangle(km->log, (size_t)i);
         if (km->tri[3 * t] >= 0) {
             set_key(km, t, cm_log_saved_key(km->log, (size_t)i));
+            for (int j = 0; j < 3; j++) km->vdirty[km->tri[3 * t + j]] |= CM_DIRTY_OPTIMIZE;
             continue;
         }
         cm_heap_remove(&km->tq, t);
@@ -664,14 +661,10 @@ void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const c
 {
     for (size_t i = 0; i < star->n; i++) cm_log_triangle(km, star->a[i] / 3); /* their keys change */
     set_position(km, g, v, p);
-    /* Only geometry g changed. All keys first (an edge's entry depends on
-     * both sides), then each edge once: the link edge opposite c and the
-     * spoke opposite prev(c) (v is interior: the spokes go round). */
-    for (size_t i = 0; i < star->n; i++) {
+    for (size_t i = 0; i < star->n; i++) { /* only geometry g changed */
         int32_t t = star->a[i] / 3;
-        set_key_only(km, t, fresh_key(km, t, cm_kmesh_dirty_bit(g, CM_DIRTY_SMOOTH) | cm_kmesh_dirty_bit(g, CM_DIRTY_OPTIMIZE)));
+        set_key(km, t, fresh_key(km, t, cm_dirty_smooth(g) | CM_DIRTY_OPTIMIZE));
     }
-    for (size_t i = 0; i < star->n; i++) update_edge(km, star->a[i]), update_edge(km, cm_prev(star->a[i]));
 }
 
 /* ---- full check ---------------------------------------------------------- */

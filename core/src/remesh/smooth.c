@@ -180,8 +180,7 @@ int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
                                      {-0.7071067811865476, 0.7071067811865476}, {-1, 0},
                                      {-0.7071067811865476, -0.7071067811865476}, {0, -1},
                                      {0.7071067811865476, -0.7071067811865476}};
-    unsigned bit = cm_kmesh_dirty_bit(g, CM_DIRTY_OPTIMIZE);
-    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0 || !(km->vdirty[v] & bit)) return 0;
+    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0 || !(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
     long m = cm_kmesh_star(km, v, star);
     if (m < 0) return m == -1 ? -1 : 0;
     ring r;
@@ -204,7 +203,8 @@ int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
         if (!improved) step *= 0.5;
     }
     if (!(sin2_to_angle(q) > sin2_to_angle(start) + CM_SMOOTH_GAIN)) {
-        if (!cm_kmesh_dirty_shared(g)) cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~bit); /* optimal in g till a change there */
+        if (g + 1 == km->k) /* optimal in every geometry, till a change */
+            cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~CM_DIRTY_OPTIMIZE);
         return 0;
     }
     cm_kmesh_move(km, g, v, best, star);
