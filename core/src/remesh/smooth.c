@@ -90,13 +90,10 @@ int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing metho
     return ring_of(km, g, v, star, &r) ? -1 : target_of(&r, method, out);
 }
 
-/* Smallest angle of v's triangles with v at q, as sin^2 (monotone below
- * 90 degrees, no atan2: this runs for every candidate position). Only
- * values above `floor` matter to the callers: the scan stops at the first
- * triangle at or below it and returns that triangle's value. */
 /* cm_triangle_min_angle_sin2(q, p[i], p[i+1]), the same arithmetic with
- * the link edge's squared length taken from the ring. */
-static inline double ring_sin2(const ring *r, const double q[2], long i)
+ * the link edge's squared length taken from the ring; or, when that is
+ * certainly below `floor` (> 0), floor itself without the division. */
+static inline double ring_sin2(const ring *r, const double q[2], long i, double floor)
 {
     const double *b = r->p[i], *c = r->p[i + 1];
     double abx = b[0] - q[0], aby = b[1] - q[1], cax = q[0] - c[0], cay = q[1] - c[1];
@@ -106,15 +103,21 @@ static inline double ring_sin2(const ring *r, const double q[2], long i)
     else if (lbc <= lca) den = lab * lca;
     else den = lab * lbc;
     if (!(den > CM_ANGLE_SAFE_LO && den < CM_ANGLE_SAFE_HI) && den != 0) return cm_triangle_min_angle_sin2_wide(q, b, c);
+    double bar = floor * den;
+    if (bar > 0x1p-900 && cross * cross < bar * (1 - 0x1p-40)) return floor; /* the rounded quotient is below floor */
     return den > 0 ? cross * cross / den : 0.0;
 }
 
+/* Smallest angle of v's triangles with v at q, as sin^2 (monotone below
+ * 90 degrees, no atan2: this runs for every candidate position). Only
+ * values above `floor` matter to the callers: the scan stops at the first
+ * triangle at or below it and returns a value at or below floor. */
 static double star_sin2_above(ring *r, const double q[2], double floor)
 {
     double lo = 1.0;
     long m = r->m, lo_at = r->worst;
     for (long j = 0, i = r->worst; j < m; j++, i = i + 1 < m ? i + 1 : 0) { /* from the last worst: it fails first */
-        double s = ring_sin2(r, q, i);
+        double s = ring_sin2(r, q, i, floor);
         if (s < lo) lo = s, lo_at = i;
         if (!(lo > floor)) break;
     }
