@@ -228,18 +228,6 @@ int cm_kmesh_tx_rollback(cm_kmesh *km)
     return 0;
 }
 
-int cm_kmesh_tx_vertices(const cm_kmesh *km, cm_ibuf *out)
-{
-    size_t nt = cm_log_saved_count(km->log);
-    for (size_t i = 0; i < nt; i++) {
-        int32_t t = cm_log_saved_triangle(km->log, i);
-        if (km->tri[3 * t] < 0) continue;
-        for (int j = 0; j < 3; j++)
-            if (cm_ibuf_push(out, km->tri[3 * t + j])) return -1;
-    }
-    return 0;
-}
-
 void cm_kmesh_set_caps(cm_kmesh *km, double target, const double *bcap, const double *vcap)
 {
     km->target = target;

@@ -130,11 +130,6 @@ void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const c
 int cm_kmesh_tx_begin(cm_kmesh *km);
 int cm_kmesh_tx_region(const cm_kmesh *km, double *before, double *after);
 void cm_kmesh_tx_commit(cm_kmesh *km);
-/* Appends the vertices of the live triangles in the slots the open (or
- * just ended) transaction changed, as they are now: called before and
- * after a rollback, the vertices whose surroundings it touched. Repeats
- * are left in. 0, or -1 out of memory. */
-int cm_kmesh_tx_vertices(const cm_kmesh *km, cm_ibuf *out);
 int cm_kmesh_tx_rollback(cm_kmesh *km);
 
 /* Full exact check (tests): adjacency symmetric, every live triangle

@@ -184,11 +184,6 @@ int32_t cm_log_saved_triangle(const struct cm_kmesh_log *log, size_t i)
     return log->tsave.a[7 * i];
 }
 
-size_t cm_log_saved_count(const struct cm_kmesh_log *log)
-{
-    return log ? log->tsave.n / 7 : 0;
-}
-
 double cm_log_saved_key(const struct cm_kmesh_log *log, size_t i)
 {
     return log->keys.a[i];

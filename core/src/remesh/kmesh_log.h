@@ -22,8 +22,6 @@ void cm_kmesh_log_free(struct cm_kmesh_log *log);
 long cm_log_undo(cm_kmesh *km);
 /* The i-th triangle slot the open or just undone transaction saved. */
 int32_t cm_log_saved_triangle(const struct cm_kmesh_log *log, size_t i);
-/* How many triangle slots it saved. */
-size_t cm_log_saved_count(const struct cm_kmesh_log *log);
 /* Its key before the transaction (NaN: the slot was dead). */
 double cm_log_saved_key(const struct cm_kmesh_log *log, size_t i);
 

@@ -145,7 +145,7 @@ static int try_move(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring
     double p[2] = {q[0], q[1]};
     /* Just below sin^2 of the angle a smart move must beat: positions at
      * or under it fail the test without the full scan or the asin. */
-    double s = sin(fmin(before + CM_SMOOTH_GAIN, 0.5 * CM_PI)), floor = s * s * (1 - 1e-9);
+    double s = smart ? sin(fmin(before + CM_SMOOTH_GAIN, 0.5 * CM_PI)) : 0, floor = s * s * (1 - 1e-9);
     for (int attempt = 0; attempt < (smart ? CM_SMART_TRIES : 1); attempt++) {
         if (p[0] == c[0] && p[1] == c[1]) return 0;
         double sp = smart ? star_sin2_above(r, p, floor) : 0;
@@ -188,13 +188,16 @@ int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
     if (m < 0) return m == -1 ? -1 : 0;
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
-    double best[2] = {r.c[0], r.c[1]}, q = star_sin2(&r, best), near2 = HUGE_VAL;
-    long nearest = 0;
-    for (long i = 0; i < r.m; i++) { /* the nearest neighbour: one hypot, not m */
+    double best[2] = {r.c[0], r.c[1]}, q = star_sin2(&r, best), near2 = HUGE_VAL, step = HUGE_VAL;
+    for (long i = 0; i < r.m; i++) {
         double dx = r.p[i][0] - best[0], dy = r.p[i][1] - best[1];
-        if (dx * dx + dy * dy < near2) near2 = dx * dx + dy * dy, nearest = i;
+        near2 = fmin(near2, dx * dx + dy * dy);
     }
-    double step = 0.25 * hypot(r.p[nearest][0] - best[0], r.p[nearest][1] - best[1]);
+    for (long i = 0; i < r.m; i++) { /* the distance to the nearest neighbour: hypot only near the least square */
+        double dx = r.p[i][0] - best[0], dy = r.p[i][1] - best[1];
+        if (!(dx * dx + dy * dy > near2 * (1 + 1e-9))) step = fmin(step, hypot(dx, dy));
+    }
+    step *= 0.25;
     double start = q;
     for (int it = 0; it < CM_OPTIMIZE_STEPS && step > 0; it++) {
         int improved = 0;
