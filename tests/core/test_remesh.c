@@ -144,17 +144,50 @@ static int random_operation(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *w
     }
 }
 
-/* After begin, random operations, rollback: the mesh must be as before. */
+/* After begin, random operations, rollback: the mesh must be as before,
+ * and so must the smoothing's dirty bits (all but CM_DIRTY_OPTIMIZE). */
 static int rollback_restores(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *work)
 {
     cm_mesh before = {km->k, 0, 0, calloc(km->k, sizeof(double *)), NULL, NULL, 0};
     cm_mesh after = {km->k, 0, 0, calloc(km->k, sizeof(double *)), NULL, NULL, 0};
-    int ok = before.xy && after.xy && cm_kmesh_write(km, &before) == CM_OK && cm_kmesh_tx_begin(km) == 0;
+    int32_t nv = km->nv;
+    uint16_t *dirty = malloc((size_t)nv * sizeof *dirty);
+    int ok = dirty && before.xy && after.xy && cm_kmesh_write(km, &before) == CM_OK && cm_kmesh_tx_begin(km) == 0;
+    if (dirty) memcpy(dirty, km->vdirty, (size_t)nv * sizeof *dirty);
     for (int i = 0; ok && i < 8; i++) ok = random_operation(km, rng, star, work) == 0;
     ok = ok && cm_kmesh_tx_rollback(km) == 0 && cm_kmesh_write(km, &after) == CM_OK;
-    ok = ok && same_mesh(&before, &after) && keys_fresh(km);
+    ok = ok && same_mesh(&before, &after) && keys_fresh(km) && km->nv == nv;
+    for (int32_t v = 0; ok && v < nv; v++) ok = ((dirty[v] ^ km->vdirty[v]) & ~CM_DIRTY_OPTIMIZE) == 0;
     cm_mesh_clear(&before), cm_mesh_clear(&after);
+    free(dirty);
     return ok;
+}
+
+/* Clears the smoothing bit of every vertex and geometry where the
+ * smoothing formulas leave the vertex in place, as the remesher does.
+ * Returns -1 out of memory. */
+static int settle_smoothing(cm_kmesh *km, cm_ibuf *star)
+{
+    for (int32_t v = km->n; v < km->nv; v++)
+        for (size_t g = 0; g < km->k && km->vc[v] >= 0; g++) {
+            int s = cm_smooth_vertex(km, g, v, CM_SMOOTH_COMBINED, 1, star);
+            if (s < 0) return -1;
+            if (s == 0) km->vdirty[v] &= (uint16_t)~cm_dirty_smooth(g);
+        }
+    return 0;
+}
+
+/* Where a vertex's smoothing bit is clear, the smoothing formulas must
+ * still leave it in place: every change that matters set the bit. Counts
+ * the vertices they would move. */
+static int stale_smoothing_bits(cm_kmesh *km, cm_ibuf *star)
+{
+    int stale = 0;
+    for (int32_t v = km->n; v < km->nv; v++)
+        for (size_t g = 0; g < km->k && km->vc[v] >= 0; g++)
+            if (!(km->vdirty[v] & cm_dirty_smooth(g)))
+                stale += cm_smooth_vertex(km, g, v, CM_SMOOTH_COMBINED, 1, star) == 1;
+    return stale;
 }
 
 /* Random pair number seed (8 to 37 vertices), its construction and the
@@ -177,7 +210,7 @@ static int random_kmesh(int seed, double **a, double **b, cm_mesh *m, cm_kmesh *
 
 static void test_property_operations(int pairs, int operations)
 {
-    int invalid = 0, stale = 0, moved = 0, restore = 0, built = 0;
+    int invalid = 0, stale = 0, moved = 0, restore = 0, built = 0, unflagged = 0;
     for (int seed = 0; seed < pairs; seed++) {
         double *a, *b;
         cm_mesh m;
@@ -195,6 +228,8 @@ static void test_property_operations(int pairs, int operations)
             moved += !boundary_intact(&km, in);
             if (i % 16 == 0) stale += !keys_fresh(&km);
             if (i % 64 == 0) restore += !rollback_restores(&km, &rng, &star, &work);
+            if (i % 32 == 0 && settle_smoothing(&km, &star)) break;
+            if (i % 32 == 31) unflagged += stale_smoothing_bits(&km, &star);
         }
         cm_ibuf_free(&star), cm_work_free(&work);
         cm_kmesh_free(&km), cm_mesh_clear(&m);
@@ -205,6 +240,7 @@ static void test_property_operations(int pairs, int operations)
     CHECK_MSG(moved == 0, "%d operations moved a boundary vertex", moved);
     CHECK_MSG(stale == 0, "%d stale key checks", stale);
     CHECK_MSG(restore == 0, "%d rollbacks did not restore", restore);
+    CHECK_MSG(unflagged == 0, "%d vertices moved by the smoothing though their bit said nothing changed", unflagged);
     printf("property: %d random meshes x %d operations\n", pairs, operations);
 }
 

@@ -46,9 +46,9 @@ static int reserve_vertices(cm_kmesh *km, int32_t need)
     for (size_t g = 0; g < km->k; g++)
         if (resize(&km->xy[g], 2 * c, sizeof **km->xy)) return -1;
     if (resize(&km->vc, c, sizeof *km->vc) || resize(&km->mark, c, sizeof *km->mark) ||
-        resize(&km->vcap, c, sizeof *km->vcap) || resize(&km->vdirty, c, 1) || reserve_list(&km->free_v, cap))
+        resize(&km->vcap, c, sizeof *km->vcap) || resize(&km->vdirty, c, sizeof *km->vdirty) || reserve_list(&km->free_v, cap))
         return -1;
-    for (int32_t v = km->cap_v; v < cap; v++) km->vc[v] = -1, km->mark[v] = 0, km->vcap[v] = CM_PI, km->vdirty[v] = 1;
+    for (int32_t v = km->cap_v; v < cap; v++) km->vc[v] = -1, km->mark[v] = 0, km->vcap[v] = CM_PI, km->vdirty[v] = CM_DIRTY_ALL;
     km->cap_v = cap;
     return 0;
 }
@@ -169,17 +169,48 @@ static void update_edge(cm_kmesh *km, int32_t c)
         cm_heap_remove(&km->eq, lo);
 }
 
-void cm_kmesh_touch(cm_kmesh *km, int32_t t)
+/* Sets t's key, its slack and the heap entries that depend on them. */
+static void set_key(cm_kmesh *km, int32_t t, double key)
 {
-    double key = CM_PI;
-    for (size_t g = 0; g < km->k; g++) key = fmin(key, cm_kmesh_tri_angle(km, g, t));
     km->tkey[t] = key;
     km->slack[t] = key - triangle_target(km, t);
-    for (int i = 0; i < 3; i++) km->vdirty[km->tri[3 * t + i]] = 1;
     cm_heap_set(&km->tq, t, km->slack[t]);
     for (int32_t c = 3 * t; c < 3 * t + 3; c++) update_edge(km, c);
 }
 
+void cm_kmesh_set_dirty(cm_kmesh *km, int32_t v, unsigned dirty)
+{
+    if (km->vdirty[v] == (uint16_t)dirty) return;
+    cm_log_dirty(km, v);
+    km->vdirty[v] = (uint16_t)dirty;
+}
+
+/* Recomputes t's key and sets the vdirty bits `mask` of its vertices. */
+static double fresh_key(cm_kmesh *km, int32_t t, unsigned mask)
+{
+    double key = CM_PI;
+    for (size_t g = 0; g < km->k; g++) {
+        double a = cm_kmesh_tri_angle(km, g, t);
+        if (a < key) key = a;
+    }
+    for (int i = 0; i < 3; i++) {
+        int32_t v = km->tri[3 * t + i];
+        cm_kmesh_set_dirty(km, v, km->vdirty[v] | mask);
+    }
+    return key;
+}
+
+void cm_kmesh_touch(cm_kmesh *km, int32_t t)
+{
+    set_key(km, t, fresh_key(km, t, CM_DIRTY_ALL));
+}
+
+/* The restored triangles get their saved keys back (the geometry is the
+ * one they were computed on) and the dirty bits their old values: where
+ * the smoothing formulas left a vertex in place they would again. The
+ * position search runs again around the undone change, as it always
+ * has: which searches run changes the results, the fixtures' angles
+ * moving either way. */
 int cm_kmesh_tx_rollback(cm_kmesh *km)
 {
     long nt = cm_log_undo(km);
@@ -187,7 +218,8 @@ int cm_kmesh_tx_rollback(cm_kmesh *km)
     for (long i = 0; i < nt; i++) {
         int32_t t = cm_log_saved_triangle(km->log, (size_t)i);
         if (km->tri[3 * t] >= 0) {
-            cm_kmesh_touch(km, t);
+            set_key(km, t, cm_log_saved_key(km->log, (size_t)i));
+            for (int j = 0; j < 3; j++) km->vdirty[km->tri[3 * t + j]] |= CM_DIRTY_OPTIMIZE;
             continue;
         }
         cm_heap_remove(&km->tq, t);
@@ -617,7 +649,10 @@ void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const c
 {
     for (size_t i = 0; i < star->n; i++) cm_log_triangle(km, star->a[i] / 3); /* their keys change */
     set_position(km, g, v, p);
-    for (size_t i = 0; i < star->n; i++) cm_kmesh_touch(km, star->a[i] / 3);
+    for (size_t i = 0; i < star->n; i++) { /* only geometry g changed */
+        int32_t t = star->a[i] / 3;
+        set_key(km, t, fresh_key(km, t, cm_dirty_smooth(g) | CM_DIRTY_OPTIMIZE));
+    }
 }
 
 /* ---- full check ---------------------------------------------------------- */

@@ -46,8 +46,8 @@ typedef struct cm_kmesh {
     double *bcap;          /* n: per boundary edge i -> bnext[i] */
     int32_t *bnext;        /* n: the next vertex along i's boundary loop */
     double *vcap;          /* per vertex: half the corner angle (boundary), pi */
-    unsigned char *vdirty; /* vertex: a triangle around it changed since
-                              cm_smooth_optimize last found it optimal */
+    uint16_t *vdirty;      /* vertex: what changed around it since the
+                              smoothing last found nothing to do (CM_DIRTY_*) */
     uint32_t *mark;        /* scratch vertex stamps */
     uint32_t stamp;
     struct cm_kmesh_log *log; /* undo log, NULL until the first transaction */
@@ -61,6 +61,16 @@ static inline const double *cm_kmesh_pos(const cm_kmesh *km, size_t g, int32_t v
 }
 static inline int cm_kmesh_is_boundary(const cm_kmesh *km, int32_t v) { return v < km->n; }
 static inline int cm_kmesh_tri_live(const cm_kmesh *km, int32_t t) { return km->tri[3 * t] >= 0; }
+/* vdirty bits. cm_dirty_smooth(g): a triangle around the vertex changed
+ * in geometry g since the smoothing formulas last left it in place there
+ * (geometries from the 8th on share one bit, which stays set).
+ * CM_DIRTY_OPTIMIZE: a triangle around it changed in any geometry, or a
+ * transaction changing one was undone, since cm_smooth_optimize last
+ * found it optimal. */
+#define CM_DIRTY_OPTIMIZE 0x100u
+#define CM_DIRTY_ALL 0x1ffu
+static inline unsigned cm_dirty_smooth(size_t g) { return 1u << (g < 7 ? g : 7); }
+static inline int cm_dirty_smooth_shared(size_t g) { return g >= 7; }
 
 /* Builds from a compatible triangulation whose vertices 0..n-1 are the
  * counter-clockwise boundary. CM_OK, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL
@@ -81,8 +91,10 @@ long cm_kmesh_star(const cm_kmesh *km, int32_t v, cm_ibuf *corners);
 double cm_kmesh_tri_angle(const cm_kmesh *km, size_t g, int32_t t);
 /* 1 if (a, b, c) is strictly counter-clockwise in geometry g (exact). */
 int cm_kmesh_tri_ok(const cm_kmesh *km, size_t g, int32_t a, int32_t b, int32_t c);
-/* Recomputes t's quality key. */
+/* Recomputes t's quality key; its vertices become dirty (CM_DIRTY_ALL). */
 void cm_kmesh_touch(cm_kmesh *km, int32_t t);
+/* Sets vdirty[v] (logged: a rollback restores it). */
+void cm_kmesh_set_dirty(cm_kmesh *km, int32_t v, unsigned dirty);
 /* Length of edge ab in geometry g over that geometry's scale. */
 double cm_kmesh_rel_length(const cm_kmesh *km, size_t g, int32_t a, int32_t b);
 
@@ -104,11 +116,14 @@ int cm_kmesh_collapse_ok_topology(cm_kmesh *km, int32_t c, const cm_ibuf *star);
  * holds v's corners as from cm_kmesh_star. v's slot and the two triangles
  * on the edge die. */
 void cm_kmesh_collapse(cm_kmesh *km, int32_t c, const cm_ibuf *star);
-/* Moves interior vertex v in geometry g and refreshes the keys around it. */
+/* Moves interior vertex v in geometry g and refreshes the keys around it;
+ * its star's vertices become dirty for the smoothing in g and for
+ * cm_smooth_optimize. */
 void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const cm_ibuf *star);
 
 /* Transactions: after cm_kmesh_tx_begin every change is logged until
- * commit or rollback; rollback restores the mesh exactly. tx_region gives
+ * commit or rollback; rollback restores the mesh exactly (vdirty too, but
+ * for CM_DIRTY_OPTIMIZE, set around the undone change). tx_region gives
  * the smallest tkey over the triangles the transaction changed, before
  * and after. begin returns 0 or -1 out of memory; region and rollback
  * return -1 when the log ran out of memory (the changes then stay). */

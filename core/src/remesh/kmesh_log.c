@@ -22,6 +22,7 @@ struct cm_kmesh_log {
     cm_dbuf keys;            /* tkey per saved triangle (NaN: was dead) */
     cm_dbuf pos;             /* 2k per saved vertex */
     cm_ibuf flog;            /* free-list operations, 4 * value + kind */
+    cm_ibuf dlog;            /* vdirty changes, 2 per change: v, old value */
     int32_t nv, nt, live_v, live_t;
 };
 
@@ -96,6 +97,12 @@ fail:
     log->failed = 1;
 }
 
+void cm_log_dirty(cm_kmesh *km, int32_t v)
+{
+    if (logging(km) && (cm_ibuf_push(&km->log->dlog, v) || cm_ibuf_push(&km->log->dlog, km->vdirty[v])))
+        km->log->failed = 1;
+}
+
 void cm_log_free_list(cm_kmesh *km, int32_t value, int kind)
 {
     if (logging(km) && cm_ibuf_push(&km->log->flog, 4 * value + kind)) km->log->failed = 1;
@@ -111,7 +118,7 @@ int cm_kmesh_tx_begin(cm_kmesh *km)
         log->id = 1;
     }
     log->active = 1, log->failed = 0;
-    log->tsave.n = log->vsave.n = log->flog.n = 0, log->keys.n = log->pos.n = 0;
+    log->tsave.n = log->vsave.n = log->flog.n = log->dlog.n = 0, log->keys.n = log->pos.n = 0;
     log->nv = km->nv, log->nt = km->nt, log->live_v = km->live_v, log->live_t = km->live_t;
     return 0;
 }
@@ -167,6 +174,7 @@ long cm_log_undo(cm_kmesh *km)
         for (size_t g = 0; g < km->k; g++, d += 2)
             km->xy[g][2 * (size_t)v] = log->pos.a[d], km->xy[g][2 * (size_t)v + 1] = log->pos.a[d + 1];
     }
+    for (size_t i = log->dlog.n / 2; i-- > 0;) km->vdirty[log->dlog.a[2 * i]] = (uint16_t)log->dlog.a[2 * i + 1];
     km->nv = log->nv, km->nt = log->nt, km->live_v = log->live_v, km->live_t = log->live_t;
     return (long)nt;
 }
@@ -176,10 +184,15 @@ int32_t cm_log_saved_triangle(const struct cm_kmesh_log *log, size_t i)
     return log->tsave.a[7 * i];
 }
 
+double cm_log_saved_key(const struct cm_kmesh_log *log, size_t i)
+{
+    return log->keys.a[i];
+}
+
 void cm_kmesh_log_free(struct cm_kmesh_log *log)
 {
     if (!log) return;
     free(log->tseen), free(log->vseen), free(log->keys.a), free(log->pos.a);
-    cm_ibuf_free(&log->tsave), cm_ibuf_free(&log->vsave), cm_ibuf_free(&log->flog);
+    cm_ibuf_free(&log->tsave), cm_ibuf_free(&log->vsave), cm_ibuf_free(&log->flog), cm_ibuf_free(&log->dlog);
     free(log);
 }

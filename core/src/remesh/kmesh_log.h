@@ -11,14 +11,18 @@ enum { CM_LOG_POP_V, CM_LOG_PUSH_V, CM_LOG_POP_T, CM_LOG_PUSH_T };
 
 void cm_log_triangle(cm_kmesh *km, int32_t t);
 void cm_log_vertex(cm_kmesh *km, int32_t v);
+/* Before km->vdirty[v] changes. */
+void cm_log_dirty(cm_kmesh *km, int32_t v);
 void cm_log_free_list(cm_kmesh *km, int32_t value, int kind);
 void cm_kmesh_log_free(struct cm_kmesh_log *log);
-/* Restores every saved triangle slot, vertex and free list and ends the
+/* Restores every saved triangle slot, vertex, dirty flag and free list and ends the
  * transaction. Returns the number of saved triangles (their keys and heap
  * entries are stale: the caller refreshes them), 0 outside a transaction,
  * -1 when the log ran out of memory (the changes then stay). */
 long cm_log_undo(cm_kmesh *km);
 /* The i-th triangle slot the open or just undone transaction saved. */
 int32_t cm_log_saved_triangle(const struct cm_kmesh_log *log, size_t i);
+/* Its key before the transaction (NaN: the slot was dead). */
+double cm_log_saved_key(const struct cm_kmesh_log *log, size_t i);
 
 #endif

@@ -171,13 +171,17 @@ static int near_short(remesher *x, int32_t v)
     return 0;
 }
 
-/* Smooths v in every geometry. Returns 1 if it moved, -1 out of memory. */
+/* Smooths v in every geometry. Returns 1 if it moved, -1 out of memory.
+ * Where the smoothing formulas left v in place and nothing around it has
+ * changed in that geometry since, they would leave it again: skipped. */
 static int smooth_one(remesher *x, int32_t v)
 {
     cm_kmesh *km = &x->km;
     int moved = 0;
     for (size_t g = 0; g < km->k; g++) {
-        int s = cm_smooth_vertex(km, g, v, x->o->smoothing, 1, &x->star);
+        unsigned bit = cm_dirty_smooth(g);
+        int s = km->vdirty[v] & bit ? cm_smooth_vertex(km, g, v, x->o->smoothing, 1, &x->star) : 0;
+        if (s == 0 && !cm_dirty_smooth_shared(g)) cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~bit);
         if (s == 0 && near_short(x, v)) s = cm_smooth_optimize(km, g, v, &x->star);
         if (s < 0) return -1;
         moved |= s;

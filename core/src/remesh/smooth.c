@@ -16,11 +16,13 @@
 /* Vertices of higher degree are left where they are. */
 #define CM_SMOOTH_MAX_DEGREE 128
 
-/* v's link polygon in geometry g, counter-clockwise. */
+/* v's link polygon in geometry g, counter-clockwise; p[m] repeats p[0]. */
 typedef struct ring {
     const double *c;                      /* v itself */
-    const double *p[CM_SMOOTH_MAX_DEGREE];
+    const double *p[CM_SMOOTH_MAX_DEGREE + 1];
+    double link2[CM_SMOOTH_MAX_DEGREE];   /* |p[i+1] - p[i]|^2: the same for every trial point */
     long m;
+    long worst;                           /* triangle (p[i], p[i+1]) last found smallest */
 } ring;
 
 static int ring_of(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring *r)
@@ -29,6 +31,12 @@ static int ring_of(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star,
     if (r->m < 3 || r->m > CM_SMOOTH_MAX_DEGREE) return -1;
     r->c = cm_kmesh_pos(km, g, v);
     for (long i = 0; i < r->m; i++) r->p[i] = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[i])]);
+    r->p[r->m] = r->p[0];
+    for (long i = 0; i < r->m; i++) {
+        double dx = r->p[i + 1][0] - r->p[i][0], dy = r->p[i + 1][1] - r->p[i][1];
+        r->link2[i] = dx * dx + dy * dy;
+    }
+    r->worst = 0;
     return 0;
 }
 
@@ -82,19 +90,47 @@ int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing metho
     return ring_of(km, g, v, star, &r) ? -1 : target_of(&r, method, out);
 }
 
+/* cm_triangle_min_angle_sin2(q, p[i], p[i+1]), the same arithmetic with
+ * the link edge's squared length taken from the ring; or, when that is
+ * certainly below `floor` (> 0), floor itself without the division. */
+static inline double ring_sin2(const ring *r, const double q[2], long i, double floor)
+{
+    const double *b = r->p[i], *c = r->p[i + 1];
+    double abx = b[0] - q[0], aby = b[1] - q[1], cax = q[0] - c[0], cay = q[1] - c[1];
+    double lab = abx * abx + aby * aby, lbc = r->link2[i], lca = cax * cax + cay * cay;
+    double cross = abx * cay - aby * cax, den;
+    if (lab <= lbc && lab <= lca) den = lbc * lca;
+    else if (lbc <= lca) den = lab * lca;
+    else den = lab * lbc;
+    if (!(den > CM_ANGLE_SAFE_LO && den < CM_ANGLE_SAFE_HI) && den != 0) return cm_triangle_min_angle_sin2_wide(q, b, c);
+    double bar = floor * den;
+    if (bar > 0x1p-900 && cross * cross < bar * (1 - 0x1p-40)) return floor; /* the rounded quotient is below floor */
+    return den > 0 ? cross * cross / den : 0.0;
+}
+
 /* Smallest angle of v's triangles with v at q, as sin^2 (monotone below
- * 90 degrees, no atan2: this runs for every candidate position). */
-static double star_sin2(const ring *r, const double q[2])
+ * 90 degrees, no atan2: this runs for every candidate position). Only
+ * values above `floor` matter to the callers: the scan stops at the first
+ * triangle at or below it and returns a value at or below floor. */
+static double star_sin2_above(ring *r, const double q[2], double floor)
 {
     double lo = 1.0;
-    for (long i = 0; i < r->m; i++) lo = fmin(lo, cm_triangle_min_angle_sin2(q, r->p[i], r->p[(i + 1) % r->m]));
+    long m = r->m, lo_at = r->worst;
+    for (long j = 0, i = r->worst; j < m; j++, i = i + 1 < m ? i + 1 : 0) { /* from the last worst: it fails first */
+        double s = ring_sin2(r, q, i, floor);
+        if (s < lo) lo = s, lo_at = i;
+        if (!(lo > floor)) break;
+    }
+    r->worst = lo_at;
     return lo;
 }
+
+static double star_sin2(ring *r, const double q[2]) { return star_sin2_above(r, q, -1.0); }
 
 static int star_valid(const ring *r, const double q[2])
 {
     for (long i = 0; i < r->m; i++)
-        if (cm_orient2d(q, r->p[i], r->p[(i + 1) % r->m]) <= 0) return 0;
+        if (cm_orient2d(q, r->p[i], r->p[i + 1]) <= 0) return 0;
     return 1;
 }
 
@@ -102,14 +138,18 @@ static double sin2_to_angle(double s) { return asin(sqrt(fmin(1.0, fmax(0.0, s))
 
 /* Tries q (and, if smart, points between v and q): moves v to the first
  * acceptable one. Returns 1 if moved. */
-static int try_move(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, const ring *r,
+static int try_move(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring *r,
                     const double q[2], int smart, double before)
 {
     const double *c = r->c;
     double p[2] = {q[0], q[1]};
+    /* Just below sin^2 of the angle a smart move must beat: positions at
+     * or under it fail the test without the full scan or the asin. */
+    double s = smart ? sin(fmin(before + CM_SMOOTH_GAIN, 0.5 * CM_PI)) : 0, floor = s * s * (1 - 1e-9);
     for (int attempt = 0; attempt < (smart ? CM_SMART_TRIES : 1); attempt++) {
         if (p[0] == c[0] && p[1] == c[1]) return 0;
-        if ((!smart || sin2_to_angle(star_sin2(r, p)) > before + CM_SMOOTH_GAIN) && star_valid(r, p)) {
+        double sp = smart ? star_sin2_above(r, p, floor) : 0;
+        if ((!smart || (sp > floor && sin2_to_angle(sp) > before + CM_SMOOTH_GAIN)) && star_valid(r, p)) {
             cm_kmesh_move(km, g, v, p, star);
             return 1;
         }
@@ -143,27 +183,34 @@ int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
                                      {-0.7071067811865476, 0.7071067811865476}, {-1, 0},
                                      {-0.7071067811865476, -0.7071067811865476}, {0, -1},
                                      {0.7071067811865476, -0.7071067811865476}};
-    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0 || !km->vdirty[v]) return 0;
+    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0 || !(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
     long m = cm_kmesh_star(km, v, star);
     if (m < 0) return m == -1 ? -1 : 0;
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
-    double best[2] = {r.c[0], r.c[1]}, q = star_sin2(&r, best), step = HUGE_VAL;
-    for (long i = 0; i < r.m; i++)
-        step = fmin(step, hypot(r.p[i][0] - best[0], r.p[i][1] - best[1]));
+    double best[2] = {r.c[0], r.c[1]}, q = star_sin2(&r, best), near2 = HUGE_VAL, step = HUGE_VAL;
+    for (long i = 0; i < r.m; i++) {
+        double dx = r.p[i][0] - best[0], dy = r.p[i][1] - best[1];
+        near2 = fmin(near2, dx * dx + dy * dy);
+    }
+    for (long i = 0; i < r.m; i++) { /* the distance to the nearest neighbour: hypot only near the least square */
+        double dx = r.p[i][0] - best[0], dy = r.p[i][1] - best[1];
+        if (!(dx * dx + dy * dy > near2 * (1 + 1e-9))) step = fmin(step, hypot(dx, dy));
+    }
     step *= 0.25;
     double start = q;
     for (int it = 0; it < CM_OPTIMIZE_STEPS && step > 0; it++) {
         int improved = 0;
         for (int d = 0; d < 8; d++) {
             double p[2] = {best[0] + step * dir[d][0], best[1] + step * dir[d][1]};
-            double qp = star_sin2(&r, p);
+            double qp = star_sin2_above(&r, p, q);
             if (qp > q && star_valid(&r, p)) q = qp, best[0] = p[0], best[1] = p[1], improved = 1;
         }
         if (!improved) step *= 0.5;
     }
     if (!(sin2_to_angle(q) > sin2_to_angle(start) + CM_SMOOTH_GAIN)) {
-        if (g + 1 == km->k) km->vdirty[v] = 0; /* optimal in every geometry, till a change */
+        if (g + 1 == km->k) /* optimal in every geometry, till a change */
+            cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~CM_DIRTY_OPTIMIZE);
         return 0;
     }
     cm_kmesh_move(km, g, v, best, star);
