@@ -626,10 +626,11 @@ done:
  * under the similarity fitted to the outer loops in correspondence (a hole
  * aligned on its own may turn against the outer loop and twist the map
  * around it), then the hole by arc length from there. The caller's pins
- * are refused: they would have to name loops. CM_CORRESPOND_INDEX with max_edge comes here too, as pins at every
- * vertex of each loop. The refined loops then take the index pipeline, and r->boundary
- * maps every boundary vertex to its input edge, numbered in the polygon's
- * whole array (the edge from a vertex to the next of its loop). */
+ * are refused: they would have to name loops. CM_CORRESPOND_INDEX with
+ * max_edge comes here too, as pins at every vertex of each loop. The
+ * refined loops then take the index pipeline, and r->boundary maps every
+ * boundary vertex to its input edge, numbered in the polygon's whole array
+ * (the edge from a vertex to the next of its loop). */
 static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o)
 {
     if (o->num_pins)
