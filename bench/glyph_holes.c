@@ -17,9 +17,10 @@
  * degrees in both glyphs (aim: the target the input's corners and short
  * edges allow). --method overlay measures the construction that always
  * succeeds (one bridge per hole and the overlay) in place of the bridges'
- * pieces. --auto pairs every loop by the auto correspondence (arc length
- * from the starts that align the loops best) in place of vertex by vertex
- * from each contour's resampling start. --hole-starts turns every hole of
+ * pieces. --auto pairs every loop by the library's auto correspondence
+ * (arc length from the outer loop's best aligned start and every hole's
+ * start chosen under the outer loops' similarity) in place of vertex by
+ * vertex from each contour's resampling start. --hole-starts turns every hole of
  * the second glyph to the start that a similarity fits best (--starts: every
  * loop; --joint-starts: the outer loop's, then every hole to the start its
  * points are nearest to under the outer loop's similarity), then pairs

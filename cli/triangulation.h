@@ -83,7 +83,9 @@ enum {
      "on its edges (the default with --pin); auto:\n"                         \
      "arc length from the starts that align the inputs\n"                     \
      "best up to a similarity (the default when the\n"                        \
-     "counts differ)"},                                                       \
+     "counts differ; with holes the outer loop's start\n"                      \
+     "so, every hole's where its points lie nearest\n"                        \
+     "under the outer loops' similarity)"},                                   \
     {"pin", OPTION_PIN, "I,J[,K...]",                                         \
      "arclength: vertex I of the first input corresponds\n"                   \
      "to vertex J of the second, ... (0-based, in file\n"                     \

@@ -2,6 +2,7 @@
  * with its message and location, and fixtures that state what they expect
  * (valid, hole count, Euler characteristic 1 - h, a Steiner bound), each
  * result checked exactly by result_check.h (areas in rationals). */
+#include <complex.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -520,6 +521,59 @@ static void test_arclength_loops(void)
         }
 }
 
+/* Auto chooses a hole's start jointly with the outer loop. An egg with a
+ * regular 12-gon hole, and its image under a similarity (scale 2, turned
+ * 100 degrees, moved) renumbered from outer vertex 3, whose hole is the
+ * image of the 24-gon through the 12-gon's vertices, numbered so that
+ * vertex 19 is the image of the 12-gon's vertex 0. Aligned on its own, a
+ * regular hole fits every start alike; under the outer loops' similarity
+ * only vertex 19 lies on it. Expected: valid, and the boundary vertex that
+ * is the first polygon's hole vertex 0 (input vertex 20) is input vertex
+ * 39 of the second, with or without remeshing. */
+static void test_auto_hole_starts(void)
+{
+    const double pi = 3.14159265358979323846, turn = 100 * pi / 180;
+    const double complex scale = 2 * cexp(I * turn), shift = 5 + 3 * I;
+    shape a = {0}, b = {0};
+    double complex egg[20], hole[24];
+    for (size_t i = 0; i < 20; i++) {
+        double t = 2 * pi * (double)i / 20;
+        egg[i] = cos(t) * (1 + 0.3 * cos(t)) + 0.7 * I * sin(t);
+    }
+    for (size_t i = 0; i < 24; i++) hole[i] = 0.3 + 0.1 * I + 0.2 * cexp(-I * 2 * pi * (double)i / 24);
+    begin_loop(&a), begin_loop(&b);
+    for (size_t i = 0; i < 20; i++) {
+        double complex w = scale * egg[(i + 3) % 20] + shift;
+        add_point(&a, creal(egg[i]), cimag(egg[i])), add_point(&b, creal(w), cimag(w));
+    }
+    begin_loop(&a), begin_loop(&b);
+    for (size_t i = 0; i < 12; i++) add_point(&a, creal(hole[2 * i]), cimag(hole[2 * i]));
+    for (size_t i = 0; i < 24; i++) {
+        double complex w = scale * hole[(i + 5) % 24] + shift;
+        add_point(&b, creal(w), cimag(w));
+    }
+    for (int remesh = 0; remesh < 2; remesh++) {
+        cm_options o;
+        cm_options_init(&o);
+        o.correspondence = CM_CORRESPOND_AUTO, o.remesh = remesh;
+        cm_loops in[2] = {loops_of(&a), loops_of(&b)};
+        cm_result *r = NULL;
+        cm_status st = cm_triangulate_loops(in, 2, &o, &r);
+        CHECK_MSG(st == CM_OK, "auto hole starts: %s", cm_result_message(r));
+        long paired = -2;
+        for (size_t i = 0; st == CM_OK && i < cm_result_stats(r)->n; i++) {
+            double t0, t1;
+            if (cm_result_boundary_source(r, 0, i, &t0) == 20 && t0 == 0) {
+                paired = cm_result_boundary_source(r, 1, i, &t1);
+                if (t1 != 0) paired = -1;
+            }
+        }
+        CHECK_MSG(paired == 39, "remesh %d: hole vertex 0 of the first polygon paired with %ld of the second, "
+                                "not 39", remesh, paired);
+        cm_result_free(r);
+    }
+}
+
 /* Without holes the loops call is cm_triangulate_polygons, bit for bit. */
 static void test_hole_free_same(void)
 {
@@ -552,5 +606,6 @@ int main(void)
     test_turned_hole();
     test_fallback();
     test_arclength_loops();
+    test_auto_hole_starts();
     return check_summary("test_holes");
 }

@@ -314,9 +314,11 @@ typedef struct cm_loops {
  * With CM_CORRESPOND_INDEX (loops of the same sizes, each running the same
  * way in every polygon) vertex i of a loop corresponds to vertex i; with
  * CM_CORRESPOND_ARCLENGTH or _AUTO every loop is paired as a polygon
- * without holes would be (loops of any sizes and directions; starts
- * chosen per loop for auto, pin_corners_deg and max_edge per loop; explicit
- * pins are refused), and cm_result_boundary_source says where each
+ * without holes would be (loops of any sizes and directions;
+ * pin_corners_deg and max_edge per loop; explicit pins are refused; auto
+ * chooses the outer loop's start as without holes and every hole's as the
+ * vertex whose points lie nearest to polygon 0's hole carried by the
+ * outer loops' least-squares similarity), and cm_result_boundary_source says where each
  * boundary vertex lies. The holes must lie strictly inside the outer loop,
  * outside each other, and no loop may touch another. Failures of validation name the
  * polygon, the loop and the vertex within the loop; the error location's

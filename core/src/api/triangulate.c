@@ -286,15 +286,22 @@ static cm_status bound_before(cm_result *r, const double *const *polygons, const
  * the max_edge split. every_vertex: the index correspondence, as pins at
  * every vertex. whole: a whole polygon, whose pins the caller gave and
  * whose bound before the choice is reported; 0 for one loop of polygons
- * with holes. */
+ * with holes. hole_starts: for auto, the starts chosen for a hole (k input
+ * vertices), taken in place of the loop's own choice; else NULL. */
 static cm_status correspond_boundary(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
                                      const int *orientation, const cm_options *o, const size_t *every_vertex,
-                                     int whole, cm_boundary_map *out)
+                                     int whole, const size_t *hole_starts, cm_boundary_map *out)
 {
     cm_status s = CM_OK;
     const size_t *pins = every_vertex ? every_vertex : whole ? o->pins : NULL;
     size_t num_pins = every_vertex ? counts[0] : whole ? o->num_pins : 0, *chosen = NULL;
     size_t *affine = NULL;
+    if (hole_starts && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0) {
+        chosen = malloc(k * sizeof *chosen);
+        if (!chosen) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        memcpy(chosen, hole_starts, k * sizeof *chosen);
+        pins = chosen, num_pins = 1;
+    }
     if (o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && !(o->pin_corners_deg > 0)) {
         /* Affine images of one another: vertex to vertex, no distortion. */
         int found = 0;
@@ -351,7 +358,7 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
     size_t *merged_counts = k ? malloc(k * sizeof *merged_counts) : NULL;
     cm_status s = !k || (orientation && merged_counts) ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
-    if (s == CM_OK) s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, 1, &r->boundary);
+    if (s == CM_OK) s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, 1, NULL, &r->boundary);
     if (s == CM_OK) {
         for (size_t g = 0; g < k; g++) merged_counts[g] = r->boundary.n;
         s = run_pipeline(r, (const double *const *)r->boundary.xy, merged_counts, k, o);
@@ -613,12 +620,17 @@ done:
 
 /* CM_CORRESPOND_ARCLENGTH and _AUTO for polygons with holes: loop l of
  * every polygon corresponds to loop l, and within each loop as for a
- * polygon without holes (starts chosen for auto, corner pins and max_edge
- * per loop). The caller's pins are refused: they would have to name
- * loops. CM_CORRESPOND_INDEX with max_edge comes here too, as pins at every
- * vertex of each loop. The refined loops then take the index pipeline, and r->boundary
- * maps every boundary vertex to its input edge, numbered in the polygon's
- * whole array (the edge from a vertex to the next of its loop). */
+ * polygon without holes (corner pins and max_edge per loop). Auto chooses
+ * the outer loop's start as for a polygon without holes, and every hole's
+ * jointly with it: the start whose points lie nearest to polygon 0's hole
+ * under the similarity fitted to the outer loops in correspondence (a hole
+ * aligned on its own may turn against the outer loop and twist the map
+ * around it), then the hole by arc length from there. The caller's pins
+ * are refused: they would have to name loops. CM_CORRESPOND_INDEX with
+ * max_edge comes here too, as pins at every vertex of each loop. The
+ * refined loops then take the index pipeline, and r->boundary maps every
+ * boundary vertex to its input edge, numbered in the polygon's whole array
+ * (the edge from a vertex to the next of its loop). */
 static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o)
 {
     if (o->num_pins)
@@ -658,12 +670,23 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         for (size_t l = 0; l < L; l++) start[g * (L + 1) + l + 1] = start[g * (L + 1) + l] + polygons[g].loop_sizes[l];
     }
     size_t n = 0;
+    int joint = o->correspondence == CM_CORRESPOND_AUTO;
+    double *similarity = NULL;
+    size_t *hole_starts = NULL;
+    if (s == CM_OK && joint && (!(similarity = malloc(4 * k * sizeof *similarity)) ||
+                                !(hole_starts = malloc(k * sizeof *hole_starts))))
+        s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     for (size_t l = 0; s == CM_OK && l < L; l++) {
         for (size_t g = 0; g < k; g++) {
             xy[g] = polygons[g].xy + 2 * start[g * (L + 1) + l];
             count[g] = polygons[g].loop_sizes[l], loop_orientation[g] = orientation[g * L + l];
         }
-        s = correspond_boundary(r, xy, count, k, loop_orientation, o, every, 0, &maps[l]);
+        if (joint && l == 1) cm_correspond_outer_similarity(&maps[0], similarity);
+        if (joint && l > 0)
+            s = cm_correspond_choose_hole_starts(xy, count, k, loop_orientation, similarity, hole_starts, &r->error);
+        if (s == CM_OK)
+            s = correspond_boundary(r, xy, count, k, loop_orientation, o, every, 0, joint && l ? hole_starts : NULL,
+                                    &maps[l]);
         if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
             char detail[sizeof r->error.message];
             snprintf(detail, sizeof detail, "%s", r->error.message);
@@ -704,7 +727,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
     }
     for (size_t l = 0; maps && l < L; l++) cm_boundary_map_clear(&maps[l]);
     free(orientation), free(loop_orientation), free(start), free(count), free(sizes), free(xy), free(maps), free(refined);
-    free(every);
+    free(every), free(similarity), free(hole_starts);
     return s;
 }
 

@@ -15,16 +15,15 @@
 #define SAMPLES 64
 #define COARSE_CANDIDATES 256
 
-/* SAMPLES points evenly spaced by arc length from counter-clockwise vertex
- * start, centred. arc: cumulative lengths along the counter-clockwise
- * order from vertex 0 (n + 1 entries). */
-static void sample(const double *xy, size_t n, int reversed, const double *arc, size_t start,
-                   double complex *out)
+/* m points evenly spaced by arc length from counter-clockwise vertex
+ * start. arc: cumulative lengths along the counter-clockwise order from
+ * vertex 0 (n + 1 entries). */
+static void sample_m(const double *xy, size_t n, int reversed, const double *arc, size_t start, size_t m,
+                     double complex *out)
 {
     double total = arc[n];
-    double complex mean = 0;
-    for (int j = 0; j < SAMPLES; j++) {
-        double s = fmod(arc[start] + total * j / SAMPLES, total);
+    for (size_t j = 0; j < m; j++) {
+        double s = fmod(arc[start] + total * (double)j / (double)m, total);
         size_t lo = 0, hi = n; /* the edge c -> c + 1 with arc[c] <= s < arc[c + 1] */
         while (hi - lo > 1) {
             size_t mid = (lo + hi) / 2;
@@ -34,8 +33,16 @@ static void sample(const double *xy, size_t n, int reversed, const double *arc, 
         const double *a = xy + 2 * cm_ccw_input(lo, n, reversed), *b = xy + 2 * cm_ccw_input((lo + 1) % n, n, reversed);
         double length = arc[lo + 1] - arc[lo], t = length > 0 ? (s - arc[lo]) / length : 0;
         out[j] = (a[0] + t * (b[0] - a[0])) + I * (a[1] + t * (b[1] - a[1]));
-        mean += out[j];
     }
+}
+
+/* SAMPLES points as sample_m, centred. */
+static void sample(const double *xy, size_t n, int reversed, const double *arc, size_t start,
+                   double complex *out)
+{
+    sample_m(xy, n, reversed, arc, start, SAMPLES, out);
+    double complex mean = 0;
+    for (int j = 0; j < SAMPLES; j++) mean += out[j];
     mean /= SAMPLES;
     for (int j = 0; j < SAMPLES; j++) out[j] -= mean;
 }
@@ -86,6 +93,90 @@ cm_status cm_correspond_choose_starts(const double *const *polygons, const size_
         free(arc);
     }
     return CM_OK;
+}
+
+void cm_correspond_outer_similarity(const cm_boundary_map *outer, double *similarity)
+{
+    size_t n = outer->n;
+    const double *p = outer->xy[0];
+    double complex pc = 0;
+    for (size_t i = 0; i < n; i++) pc += p[2 * i] + I * p[2 * i + 1];
+    pc /= (double)n;
+    for (size_t g = 0; g < outer->k; g++) {
+        const double *q = outer->xy[g];
+        double complex qc = 0, pq = 0;
+        double pp = 0;
+        for (size_t i = 0; i < n; i++) qc += q[2 * i] + I * q[2 * i + 1];
+        qc /= (double)n;
+        for (size_t i = 0; i < n; i++) { /* q - qc = a (p - pc), least squares */
+            double complex u = p[2 * i] + I * p[2 * i + 1] - pc, v = q[2 * i] + I * q[2 * i + 1] - qc;
+            pq += conj(u) * v, pp += creal(u * conj(u));
+        }
+        double complex a = pp > 0 ? pq / pp : 1, b = qc - a * pc;
+        similarity[4 * g] = creal(a), similarity[4 * g + 1] = cimag(a);
+        similarity[4 * g + 2] = creal(b), similarity[4 * g + 3] = cimag(b);
+    }
+}
+
+#define HOLE_SAMPLES_MAX 1024
+
+/* Sum of squared distances from the m points of a loop sampled from
+ * counter-clockwise vertex start to target (w: room for m points). */
+static double distance_from(const double *xy, size_t n, int reversed, const double *arc, size_t start,
+                            const double complex *target, size_t m, double complex *w)
+{
+    sample_m(xy, n, reversed, arc, start, m, w);
+    double sum = 0;
+    for (size_t j = 0; j < m; j++) {
+        double complex e = w[j] - target[j];
+        sum += creal(e * conj(e));
+    }
+    return sum;
+}
+
+cm_status cm_correspond_choose_hole_starts(const double *const *holes, const size_t *counts, size_t k,
+                                           const int *orientation, const double *similarity, size_t *pins,
+                                           cm_error *err)
+{
+    size_t m = 0;
+    for (size_t g = 0; g < k; g++) m = counts[g] > m ? counts[g] : m;
+    m = m < HOLE_SAMPLES_MAX ? m : HOLE_SAMPLES_MAX;
+    double complex *z = malloc(m * sizeof *z), *w = malloc(m * sizeof *w), *mapped = malloc(m * sizeof *mapped);
+    double *arc = cm_arc_lengths(holes[0], counts[0], orientation[0] < 0, 0);
+    cm_status s = z && w && mapped && arc ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
+    if (s == CM_OK) sample_m(holes[0], counts[0], orientation[0] < 0, arc, 0, m, z);
+    free(arc), arc = NULL;
+    pins[0] = cm_ccw_input(0, counts[0], orientation[0] < 0);
+    for (size_t g = 1; s == CM_OK && g < k; g++) {
+        size_t n = counts[g];
+        int reversed = orientation[g] < 0;
+        double complex a = similarity[4 * g] + I * similarity[4 * g + 1];
+        double complex b = similarity[4 * g + 2] + I * similarity[4 * g + 3];
+        for (size_t j = 0; j < m; j++) mapped[j] = a * z[j] + b;
+        if (!(arc = cm_arc_lengths(holes[g], n, reversed, 0))) {
+            s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+            break;
+        }
+        /* Coarse: every vertex, or COARSE_CANDIDATES of them; then the
+         * neighbourhood of the best. */
+        size_t stride = n > COARSE_CANDIDATES ? n / COARSE_CANDIDATES : 1, best = 0;
+        double best_sum = HUGE_VAL;
+        for (size_t c = 0; c < n; c += stride) {
+            double sum = distance_from(holes[g], n, reversed, arc, c, mapped, m, w);
+            if (sum < best_sum) best_sum = sum, best = c;
+        }
+        size_t centre = best;
+        for (size_t d = 1; stride > 1 && d < stride; d++)
+            for (int side = -1; side <= 1; side += 2) {
+                size_t c = (centre + n + (size_t)side * d) % n;
+                double sum = distance_from(holes[g], n, reversed, arc, c, mapped, m, w);
+                if (sum < best_sum) best_sum = sum, best = c;
+            }
+        pins[g] = cm_ccw_input(best, n, reversed);
+        free(arc), arc = NULL;
+    }
+    free(z), free(w), free(mapped);
+    return s;
 }
 
 #define AFFINE_MAX_VERTICES 4096

@@ -4,6 +4,7 @@
 #define CM_CORRESPOND_CHOOSE_H
 
 #include "base/error.h"
+#include "correspond/arclength.h"
 
 /* pins (k entries, input numbering): pins[0] = 0, and for every other
  * polygon the vertex to start its arc length from so that the two
@@ -15,6 +16,27 @@
  * cm_input_check_polygons. */
 cm_status cm_correspond_choose_starts(const double *const *polygons, const size_t *counts, size_t k,
                                       const int *orientation, size_t *pins, cm_error *err);
+
+/* For polygons with holes: similarity (4 per polygon: a then b, complex,
+ * re and im) such that b + a z, z on polygon 0's outer loop, is the
+ * least-squares image on polygon g's outer loop over the outer loops'
+ * corresponding boundary vertices (centroid to centroid). Polygon 0's is
+ * the identity up to rounding. */
+void cm_correspond_outer_similarity(const cm_boundary_map *outer, double *similarity);
+
+/* pins (k entries, input numbering) for one hole of polygons with holes,
+ * jointly with the outer loop: pins[0] polygon 0's first vertex; for every
+ * other polygon the vertex to start the hole's arc length from whose
+ * points lie nearest (sum of squared distances) to polygon 0's hole points
+ * mapped by the outer loops' similarity, both sampled at equal normalised
+ * arc length (as many points as the larger loop has vertices, at most
+ * 1024). A hole chosen on its own may turn against the outer loop; this
+ * way the holes keep their place in the frame the outer loops set.
+ * Candidates as cm_correspond_choose_starts. orientation as from
+ * cm_input_check_loops for this hole. */
+cm_status cm_correspond_choose_hole_starts(const double *const *holes, const size_t *counts, size_t k,
+                                           const int *orientation, const double *similarity, size_t *pins,
+                                           cm_error *err);
 
 /* Polygons of one count that are affine images of polygon 0 up to where
  * they start: if for every polygon g some start makes its vertices, walked
