@@ -242,9 +242,19 @@ static cm_status build_system(cm_morph *m)
     return CM_OK;
 }
 
+/* Triangles [first, last) of tri not strictly counter-clockwise in xy. */
+static size_t count_inverted(const int32_t *tri, size_t first, size_t last, const double *xy)
+{
+    size_t bad = 0;
+    for (size_t t = first; t < last; t++)
+        bad += cm_orient2d(xy + 2 * (size_t)tri[3 * t], xy + 2 * (size_t)tri[3 * t + 1],
+                           xy + 2 * (size_t)tri[3 * t + 2]) <= 0;
+    return bad;
+}
+
 /* Each geometry's centre (cm_morph.centre) and its coordinates about it
- * (framed->xy, k new arrays). Centring rounds, so a geometry whose
- * triangles that would fold keeps the origin. */
+ * (framed->xy, k new arrays). Centring rounds, so a geometry that it
+ * would fold keeps the origin. */
 static cm_status build_frames(cm_morph *m, const cm_result *result, cm_mesh *framed)
 {
     const cm_mesh *r = &result->mesh;
@@ -259,12 +269,8 @@ static cm_status build_frames(cm_morph *m, const cm_result *result, cm_mesh *fra
             for (size_t i = d; i < 2 * r->nv; i += 2) lo = fmin(lo, r->xy[g][i]), hi = fmax(hi, r->xy[g][i]);
             c[d] = 0.5 * lo + 0.5 * hi;
         }
-        int folds = 0;
         for (size_t i = 0; i < 2 * r->nv; i++) xy[i] = r->xy[g][i] - c[i % 2];
-        for (size_t t = 0; t < r->nt && !folds; t++)
-            folds = cm_orient2d(xy + 2 * (size_t)r->tri[3 * t], xy + 2 * (size_t)r->tri[3 * t + 1],
-                                xy + 2 * (size_t)r->tri[3 * t + 2]) <= 0;
-        if (folds) {
+        if (count_inverted(r->tri, 0, r->nt, xy)) {
             c[0] = c[1] = 0;
             memcpy(xy, r->xy[g], 2 * r->nv * sizeof *xy);
         }
@@ -407,16 +413,6 @@ static cm_status solve_positions(cm_morph *m, size_t g, double s)
         m->pos[2 * v + 1] = row < 0 ? fixed[2 * v + 1] : m->sol[m->nu + row];
     }
     return CM_OK;
-}
-
-/* Triangles [first, last) of tri not strictly counter-clockwise in xy. */
-static size_t count_inverted(const int32_t *tri, size_t first, size_t last, const double *xy)
-{
-    size_t bad = 0;
-    for (size_t t = first; t < last; t++)
-        bad += cm_orient2d(xy + 2 * (size_t)tri[3 * t], xy + 2 * (size_t)tri[3 * t + 1],
-                           xy + 2 * (size_t)tri[3 * t + 2]) <= 0;
-    return bad;
 }
 
 /* Exactly: do the section's boundary loops cross or touch (a, b: the first

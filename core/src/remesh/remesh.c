@@ -209,10 +209,12 @@ static long smooth_queued(remesher *x)
 }
 
 /* Why a step returned -1. */
-static cm_status stop_status(const remesher *x)
+static cm_status stop_status_of(const cm_progress *progress)
 {
-    return x->progress && x->progress->cancelled ? CM_ERR_CANCELLED : CM_ERR_NO_MEMORY;
+    return progress && progress->cancelled ? CM_ERR_CANCELLED : CM_ERR_NO_MEMORY;
 }
+
+static cm_status stop_status(const remesher *x) { return stop_status_of(x->progress); }
 
 /* Flips and smoothing, alternated until neither changes anything or the
  * sweeps run out: both only ever raise local smallest angles. Returns 0,
@@ -546,24 +548,28 @@ static long coarsen(remesher *x, double threshold)
     return total;
 }
 
-static int set_caps(remesher *x, const cm_mesh *mesh, size_t n, cm_remesh_report *rep)
+/* The boundary's caps (criteria.h), edge caps with their margin: bcap[0 .. n),
+ * vcap = bcap + n. O(n^2), so computed once for every run. NULL: out of
+ * memory or cancelled. */
+static double *boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress)
 {
     double *bcap = malloc(2 * n * sizeof *bcap);
-    if (!bcap) return -1;
-    double *vcap = bcap + n;
-    if (cm_boundary_caps(mesh, n, x->progress, bcap, vcap)) {
+    if (!bcap) return NULL;
+    if (cm_boundary_caps(mesh, n, progress, bcap, bcap + n)) {
         free(bcap);
-        return -1;
+        return NULL;
     }
+    for (size_t i = 0; i < n; i++) bcap[i] *= CM_EDGE_CAP_MARGIN;
+    return bcap;
+}
+
+static void set_caps(remesher *x, const double *bcap, size_t n, cm_remesh_report *rep)
+{
+    const double *vcap = bcap + n;
     double lo = x->target;
-    for (size_t i = 0; i < n; i++) {
-        bcap[i] *= CM_EDGE_CAP_MARGIN;
-        lo = fmin(lo, fmin(bcap[i], vcap[i]));
-    }
+    for (size_t i = 0; i < n; i++) lo = fmin(lo, fmin(bcap[i], vcap[i]));
     cm_kmesh_set_caps(&x->km, x->target, bcap, vcap);
     rep->target_deg = lo * 180.0 / CM_PI;
-    free(bcap);
-    return 0;
 }
 
 static void remesher_free(remesher *x)
@@ -574,18 +580,20 @@ static void remesher_free(remesher *x)
     free(x->tabu.keys), free(x->tabu.count);
 }
 
-/* One run of the remesher chosen by o on a copy of mesh, the result left
- * in x->km. CM_OK, CM_ERR_NO_MEMORY, CM_ERR_CANCELLED or CM_ERR_INTERNAL
- * (the construction is not a triangulated disk). */
-static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg,
-                            cm_progress *progress, cm_remesh_report *rep)
+/* One run of the remesher chosen by o on a copy of mesh, with the
+ * boundary's caps bcap (boundary_caps), the result left in x->km. CM_OK,
+ * CM_ERR_NO_MEMORY, CM_ERR_CANCELLED or CM_ERR_INTERNAL (the construction
+ * is not a triangulated disk). */
+static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const double *bcap, const cm_options *o,
+                            double ceiling_deg, cm_progress *progress, cm_remesh_report *rep)
 {
     x->o = o;
     x->progress = progress;
     x->target = fmin(o->min_angle_deg, ceiling_deg) * CM_PI / 180.0;
     cm_status s = cm_kmesh_build(&x->km, mesh, n);
     if (s != CM_OK) return s;
-    long removed = set_caps(x, mesh, n, rep) ? -1 : coarsen(x, 0.0);
+    set_caps(x, bcap, n, rep);
+    long removed = coarsen(x, 0.0);
     if (removed < 0 || improve_everywhere(x)) return stop_status(x);
     rep->collapses += removed;
     if (cm_progress_report(progress, CM_STAGE_REMESH, 0.0)) return CM_ERR_CANCELLED;
@@ -608,25 +616,27 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
                     cm_remesh_report *rep, cm_error *err)
 {
     remesher x = {0}, y = {0};
-    cm_status s = remesh_run(&x, mesh, n, o, ceiling_deg, progress, rep);
+    double *bcap = boundary_caps(mesh, n, progress);
+    if (!bcap) return cm_fail_status(err, stop_status_of(progress));
+    cm_status s = remesh_run(&x, mesh, n, bcap, o, ceiling_deg, progress, rep);
     /* The greedy remesher can stall far below its aim, typically on a
      * sliver its local moves cannot reach (a slivered result also makes
      * the sweep's tetrahedra fail); the map-aware remesher starts the
      * same construction differently. The better result is kept. */
-    cm_options map = *o;
-    map.remesher = CM_REMESHER_MAP;
     if (s == CM_OK && o->remesher == CM_REMESHER_GREEDY && rep->min_angle_deg < CM_RESCUE_SHARE * rep->target_deg) {
+        cm_options map = *o;
+        map.remesher = CM_REMESHER_MAP;
         cm_remesh_report again = {0};
-        s = remesh_run(&y, mesh, n, &map, ceiling_deg, progress, &again);
+        s = remesh_run(&y, mesh, n, bcap, &map, ceiling_deg, progress, &again);
         if (s == CM_OK && again.min_angle_deg > rep->min_angle_deg) {
             remesher t = x;
             x = y, y = t;
             again.iterations += rep->iterations, again.splits += rep->splits;
             again.split_attempts += rep->split_attempts;
             *rep = again;
-            rep->rescued = 1;
         }
     }
+    free(bcap);
     if (s == CM_OK) s = cm_kmesh_write(&x.km, mesh);
     remesher_free(&x), remesher_free(&y);
     if (s == CM_ERR_INTERNAL) return cm_fail(err, s, "remesh: the construction is not a triangulated disk");

@@ -14,8 +14,6 @@ typedef struct cm_remesh_report {
     long splits, split_attempts, collapses, flips;
     double target_deg;    /* the lowest triangle target after the boundary caps */
     double min_angle_deg; /* smallest angle of the result, all geometries */
-    int rescued;          /* the greedy result fell below 0.3 of its aim and
-                             the map-aware remesher's, better, is kept */
 } cm_remesh_report;
 
 /* Algorithm 1 on mesh (polygon vertices 0..n-1 counter-clockwise, each
