@@ -58,6 +58,46 @@ static double residual(const double complex *z, const double complex *w)
     return left / ww;
 }
 
+/* One loop's candidate starts, scored against a target (SAMPLES centred
+ * points for the Procrustes fit, or m points in place for the holes). */
+typedef struct start_search {
+    const double *xy;
+    size_t n;
+    int reversed;
+    const double *arc;
+    const double complex *target;
+    size_t m;
+    double complex *w; /* scratch for m (or SAMPLES) points */
+} start_search;
+
+typedef double (*start_cost)(const start_search *q, size_t start);
+
+/* The counter-clockwise start of least cost: every vertex, or
+ * COARSE_CANDIDATES of them, then the neighbourhood of the best. */
+static size_t best_start(const start_search *q, start_cost cost)
+{
+    size_t n = q->n, stride = n > COARSE_CANDIDATES ? n / COARSE_CANDIDATES : 1, best = 0;
+    double best_cost = HUGE_VAL;
+    for (size_t c = 0; c < n; c += stride) {
+        double e = cost(q, c);
+        if (e < best_cost) best_cost = e, best = c;
+    }
+    size_t centre = best;
+    for (size_t d = 1; stride > 1 && d < stride; d++)
+        for (int side = -1; side <= 1; side += 2) {
+            size_t c = (centre + n + (size_t)side * d) % n;
+            double e = cost(q, c);
+            if (e < best_cost) best_cost = e, best = c;
+        }
+    return best;
+}
+
+static double procrustes_cost(const start_search *q, size_t start)
+{
+    sample(q->xy, q->n, q->reversed, q->arc, start, q->w);
+    return residual(q->target, q->w);
+}
+
 cm_status cm_correspond_choose_starts(const double *const *polygons, const size_t *counts, size_t k,
                                       const int *orientation, size_t *pins, cm_error *err)
 {
@@ -72,23 +112,8 @@ cm_status cm_correspond_choose_starts(const double *const *polygons, const size_
         int reversed = orientation[g] < 0;
         double *arc = cm_arc_lengths(polygons[g], n, reversed, 0);
         if (!arc) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-        /* Coarse: every vertex, or COARSE_CANDIDATES of them; then the
-         * neighbourhood of the best. */
-        size_t stride = n > COARSE_CANDIDATES ? n / COARSE_CANDIDATES : 1, best = 0;
-        double best_left = HUGE_VAL;
-        for (size_t c = 0; c < n; c += stride) {
-            sample(polygons[g], n, reversed, arc, c, w);
-            double left = residual(z, w);
-            if (left < best_left) best_left = left, best = c;
-        }
-        size_t centre = best;
-        for (size_t d = 1; stride > 1 && d < stride; d++)
-            for (int side = -1; side <= 1; side += 2) {
-                size_t c = (centre + n + (size_t)side * d) % n;
-                sample(polygons[g], n, reversed, arc, c, w);
-                double left = residual(z, w);
-                if (left < best_left) best_left = left, best = c;
-            }
+        start_search q = {polygons[g], n, reversed, arc, z, SAMPLES, w};
+        size_t best = best_start(&q, procrustes_cost);
         pins[g] = cm_ccw_input(best, n, reversed);
         free(arc);
     }
@@ -120,15 +145,14 @@ void cm_correspond_outer_similarity(const cm_boundary_map *outer, double *simila
 
 #define HOLE_SAMPLES_MAX 1024
 
-/* Sum of squared distances from the m points of a loop sampled from
- * counter-clockwise vertex start to target (w: room for m points). */
-static double distance_from(const double *xy, size_t n, int reversed, const double *arc, size_t start,
-                            const double complex *target, size_t m, double complex *w)
+/* Sum of squared distances from the m points of the loop sampled from
+ * counter-clockwise vertex start to the target. */
+static double distance_cost(const start_search *q, size_t start)
 {
-    sample_m(xy, n, reversed, arc, start, m, w);
+    sample_m(q->xy, q->n, q->reversed, q->arc, start, q->m, q->w);
     double sum = 0;
-    for (size_t j = 0; j < m; j++) {
-        double complex e = w[j] - target[j];
+    for (size_t j = 0; j < q->m; j++) {
+        double complex e = q->w[j] - q->target[j];
         sum += creal(e * conj(e));
     }
     return sum;
@@ -157,21 +181,8 @@ cm_status cm_correspond_choose_hole_starts(const double *const *holes, const siz
             s = cm_fail_status(err, CM_ERR_NO_MEMORY);
             break;
         }
-        /* Coarse: every vertex, or COARSE_CANDIDATES of them; then the
-         * neighbourhood of the best. */
-        size_t stride = n > COARSE_CANDIDATES ? n / COARSE_CANDIDATES : 1, best = 0;
-        double best_sum = HUGE_VAL;
-        for (size_t c = 0; c < n; c += stride) {
-            double sum = distance_from(holes[g], n, reversed, arc, c, mapped, m, w);
-            if (sum < best_sum) best_sum = sum, best = c;
-        }
-        size_t centre = best;
-        for (size_t d = 1; stride > 1 && d < stride; d++)
-            for (int side = -1; side <= 1; side += 2) {
-                size_t c = (centre + n + (size_t)side * d) % n;
-                double sum = distance_from(holes[g], n, reversed, arc, c, mapped, m, w);
-                if (sum < best_sum) best_sum = sum, best = c;
-            }
+        start_search q = {holes[g], n, reversed, arc, mapped, m, w};
+        size_t best = best_start(&q, distance_cost);
         pins[g] = cm_ccw_input(best, n, reversed);
         free(arc), arc = NULL;
     }
