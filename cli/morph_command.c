@@ -291,10 +291,6 @@ static int write_outputs(morph_run *run, cli_error *error)
         code = write_morph_report(report, &info, error);
     }
     if (code == CLI_EXIT_OK) code = write_pictures(run, svg, png, error);
-    if (code == CLI_EXIT_OK && interrupted) {
-        cli_error_set(error, "interrupted; nothing written");
-        code = CLI_EXIT_INTERRUPTED;
-    }
     if (code == CLI_EXIT_OK) code = staged_output_commit(&run->output, error);
     return code;
 }

@@ -234,6 +234,10 @@ static int commit_into_existing_directory(staged_output *out, cli_error *error)
 
 int staged_output_commit(staged_output *out, cli_error *error)
 {
+    if (interrupted) { /* a signal while the files were written: none is moved */
+        cli_error_set(error, "interrupted; nothing written");
+        return CLI_EXIT_INTERRUPTED;
+    }
     struct stat info;
     if (stat(out->target, &info) != 0) {
         if (errno != ENOENT) {

@@ -37,7 +37,8 @@ const char *staged_output_path(staged_output *out, const char *name);
 
 /* Moves every requested file into target, creating target if missing;
  * files of the same name are replaced, other files in target are kept.
- * Refused, before anything is moved, when a file would replace an input.
+ * Refused, before anything is moved, when a file would replace an input,
+ * or when SIGINT/SIGTERM arrived (CLI_EXIT_INTERRUPTED).
  * report.json is the set's manifest: an old one is removed before the
  * first move and the new one moved in last, so a report.json always
  * describes the files beside it, even if the run is killed midway. */

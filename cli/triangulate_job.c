@@ -6,7 +6,6 @@
 
 #include <compatmesh/compatmesh.h>
 
-#include "interrupt.h"
 #include "outdir.h"
 #include "picture.h"
 #include "progress_line.h"
@@ -170,10 +169,6 @@ static int write_outputs(triangulate_run *run, cli_error *error)
                                    run->args->tri.input_count, error);
     if (code == CLI_EXIT_OK) code = write_meshes(run, error);
     if (code == CLI_EXIT_OK) code = write_extras(run, error);
-    if (code == CLI_EXIT_OK && interrupted) {
-        cli_error_set(error, "interrupted; nothing written");
-        code = CLI_EXIT_INTERRUPTED;
-    }
     if (code == CLI_EXIT_OK) code = staged_output_commit(&run->output, error);
     return code;
 }
