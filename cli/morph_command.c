@@ -231,7 +231,8 @@ static int write_frames(morph_run *run, cli_error *error)
 }
 
 /* frames.svg and frames.png, one picture drawn into both. */
-static int write_pictures(morph_run *run, const char *svg, const char *png, cli_error *error)
+static int write_frame_pictures(morph_run *run, const char *svg, const char *png,
+                                cli_error *error)
 {
     size_t frames = run->args->frames;
     const cm_result *result = run->tri.result;
@@ -257,8 +258,7 @@ static int write_pictures(morph_run *run, const char *svg, const char *png, cli_
                              (const char *const *)captions, frames};
     picture pic;
     code = picture_of_meshes(&pic, &meshes, error);
-    if (code == CLI_EXIT_OK) code = write_svg(svg, &pic, error);
-    if (code == CLI_EXIT_OK) code = write_png(png, &pic, error);
+    if (code == CLI_EXIT_OK) code = write_pictures(svg, png, &pic, error);
     picture_free(&pic);
 done:
     if (captions)
@@ -290,7 +290,7 @@ static int write_outputs(morph_run *run, cli_error *error)
                                   run->t, run->min_angle_deg, run->inverted};
         code = write_morph_report(report, &info, error);
     }
-    if (code == CLI_EXIT_OK) code = write_pictures(run, svg, png, error);
+    if (code == CLI_EXIT_OK) code = write_frame_pictures(run, svg, png, error);
     if (code == CLI_EXIT_OK) code = staged_output_commit(&run->output, error);
     return code;
 }

@@ -155,10 +155,10 @@ static int write_extras(triangulate_run *run, cli_error *error)
     code = picture_of_result(&pic, run->tri.result, names, error);
     free(names);
     if (code != CLI_EXIT_OK) return code;
-    code = stage_file(run, "preview.svg", &path, error);
-    if (code == CLI_EXIT_OK) code = write_svg(path, &pic, error);
+    const char *svg = NULL;
+    code = stage_file(run, "preview.svg", &svg, error);
     if (code == CLI_EXIT_OK) code = stage_file(run, "preview.png", &path, error);
-    if (code == CLI_EXIT_OK) code = write_png(path, &pic, error);
+    if (code == CLI_EXIT_OK) code = write_pictures(svg, path, &pic, error);
     picture_free(&pic);
     return code;
 }
