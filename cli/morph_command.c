@@ -16,7 +16,12 @@
 #include "write_report.h"
 #include "write_picture.h"
 
-enum { OPTION_MORPH = OPTION_TRIANGULATION_END, MAX_FRAMES = 1000 };
+enum {
+    OPTION_MORPH = OPTION_TRIANGULATION_END,
+    OPTION_PICTURE_FRAMES,
+    MAX_FRAMES = 1000,
+    DEFAULT_PICTURE_FRAMES = 12
+};
 
 static const option_spec morph_options[] = {
     {"out-dir", 'o', "DIR",
@@ -30,6 +35,10 @@ static const option_spec morph_options[] = {
      "frame valid; linear: straight vertex paths, for\n"
      "comparison (inverted triangles are counted)"},
     {"format", 'f', "FMT", "frame file format: off (default), obj or ply"},
+    {"picture-frames", OPTION_PICTURE_FRAMES, "N",
+     "frames drawn in frames.svg/png, 2 to 1000 (default\n"
+     "12): evenly spaced, the first and the last among\n"
+     "them; all frames when N is at least --frames"},
     TRIANGULATION_OPTION_SPECS,
     {"help", 'h', NULL, "show this help and exit"},
 };
@@ -38,7 +47,7 @@ static const size_t morph_option_count = sizeof morph_options / sizeof morph_opt
 typedef struct morph_args {
     triangulation_args tri;
     const char *out_dir;
-    size_t frames;
+    size_t frames, picture_frames;
     cm_morph_method morph;
     const char *morph_name;
     mesh_format format;
@@ -56,13 +65,14 @@ static int handle_morph_option(void *context, int key, const char *value, cli_er
         args->out_dir = value;
         return CLI_EXIT_OK;
     case 'n':
+    case OPTION_PICTURE_FRAMES:
         count = parse_whole_number(value, 2, MAX_FRAMES);
         if (count < 0) {
-            cli_error_set(error, "morph: --frames '%s' is not a whole number from 2 to %d",
-                          value, MAX_FRAMES);
+            cli_error_set(error, "morph: --%s '%s' is not a whole number from 2 to %d",
+                          key == 'n' ? "frames" : "picture-frames", value, MAX_FRAMES);
             return CLI_EXIT_USAGE;
         }
-        args->frames = (size_t)count;
+        *(key == 'n' ? &args->frames : &args->picture_frames) = (size_t)count;
         return CLI_EXIT_OK;
     case OPTION_MORPH:
         if (strcmp(value, "convex") == 0) args->morph = CM_MORPH_CONVEX;
@@ -104,7 +114,8 @@ static void print_morph_help(FILE *out)
           "only when everything succeeded:\n"
           "  DIR/frame_000.FMT ...  one section per frame, all with the same faces\n"
           "                         (those of the triangulation), z = 0\n"
-          "  DIR/frames.svg         the frames side by side\n"
+          "  DIR/frames.svg         the frames side by side (--picture-frames of\n"
+          "                         them)\n"
           "  DIR/frames.png         the same picture as PNG (cairo draws both)\n"
           "  DIR/report.json        counts, morph, and per frame: file, t,\n"
           "                         min_angle_deg, inverted (triangles not strictly\n"
@@ -122,6 +133,7 @@ static int parse_morph_args(int argc, char **argv, morph_args *args, cli_error *
 {
     memset(args, 0, sizeof *args);
     args->frames = 11;
+    args->picture_frames = DEFAULT_PICTURE_FRAMES;
     args->morph = CM_MORPH_CONVEX;
     args->morph_name = "convex";
     args->format = MESH_FORMAT_OFF;
@@ -230,11 +242,14 @@ static int write_frames(morph_run *run, cli_error *error)
     return CLI_EXIT_OK;
 }
 
-/* frames.svg and frames.png, one picture drawn into both. */
+/* frames.svg and frames.png, one picture drawn into both: --picture-frames
+ * evenly spaced frames, since drawing is most of a long morph's cost and a
+ * picture of hundreds of panels shows nothing more. */
 static int write_frame_pictures(morph_run *run, const char *svg, const char *png,
                                 cli_error *error)
 {
-    size_t frames = run->args->frames;
+    size_t all = run->args->frames;
+    size_t frames = run->args->picture_frames < all ? run->args->picture_frames : all;
     const cm_result *result = run->tri.result;
     size_t vertices = cm_result_num_vertices(result);
     const double **xy = malloc(frames * sizeof *xy);
@@ -244,14 +259,15 @@ static int write_frame_pictures(morph_run *run, const char *svg, const char *png
         cli_error_set(error, "out of memory");
         goto done;
     }
-    for (size_t f = 0; f < frames; f++) {
-        xy[f] = run->xy + 2 * f * vertices;
-        captions[f] = malloc(64);
-        if (!captions[f]) {
+    for (size_t p = 0; p < frames; p++) {
+        size_t f = (p * (all - 1) + (frames - 1) / 2) / (frames - 1); /* rounded */
+        xy[p] = run->xy + 2 * f * vertices;
+        captions[p] = malloc(64);
+        if (!captions[p]) {
             cli_error_set(error, "out of memory");
             goto done;
         }
-        snprintf(captions[f], 64, "t = %.3f, %zu inverted", run->t[f], run->inverted[f]);
+        snprintf(captions[p], 64, "t = %.3f, %zu inverted", run->t[f], run->inverted[f]);
     }
     picture_meshes meshes = {cm_result_triangles(result), cm_result_num_triangles(result),
                              cm_result_stats(result)->n, vertices, xy,

@@ -102,6 +102,7 @@ def test_three_inputs_pass_through_the_middle_one(cm, tmp_path):
 @pytest.mark.parametrize("args, code, words", [
     (("--frames", "1"), 2, "--frames '1'"),
     (("--frames", "x"), 2, "--frames 'x'"),
+    (("--picture-frames", "1"), 2, "--picture-frames '1' is not a whole number from 2 to 1000"),
     (("--morph", "bezier"), 2, "unknown --morph 'bezier'"),
     (("--format", "stl"), 2, "unknown --format 'stl'"),
 ])
@@ -168,10 +169,24 @@ def test_frames_in_other_formats(cm, tmp_path, fmt):
 
 def test_many_frames_wrap_into_rows(cm, tmp_path):
     write_pair(tmp_path, twisted_pair())
-    result = cm("morph", "a.xy", "b.xy", "--frames", 60, "-o", "out", "--quiet")
+    result = cm("morph", "a.xy", "b.xy", "--frames", 60, "--picture-frames", 60, "-o", "out",
+                "--quiet")
     assert result.returncode == 0, result.stderr
     out = tmp_path / "out"
     svg = check_pictures(out / "frames.png", out / "frames.svg")
     assert len(paths_of(svg, stroke=BOUNDARY)) == 60
     # 60 panels at least 240 pixels wide do not fit in one 8192-pixel row.
     assert int(svg.get("width")[:-2]) <= 8192 and int(svg.get("height")[:-2]) > 2 * 420
+
+
+def test_picture_shows_evenly_spaced_frames(cm, tmp_path):
+    """Of 60 frames the picture draws 12 by default; every frame is still
+    written."""
+    write_pair(tmp_path, twisted_pair())
+    result = cm("morph", "a.xy", "b.xy", "--frames", 60, "-o", "out", "--quiet")
+    assert result.returncode == 0, result.stderr
+    out = tmp_path / "out"
+    assert len(list(out.glob("frame_*.off"))) == 60
+    svg = check_pictures(out / "frames.png", out / "frames.svg")
+    panels = paths_of(svg, stroke=BOUNDARY)
+    assert len(panels) == 12
