@@ -5,26 +5,30 @@
  * 1 - h, areas adding up in rationals).
  *
  *   cm_glyph_holes [--font PATH] [--outer N] [--hole M] [--no-remesh] [--min-good G]
- *                  [--method partition|overlay] [--auto]
- *                  [--hole-starts|--starts|--joint-starts]
+ *                  [--method partition|overlay] [--auto] [--fixtures] [--markdown]
+ *                  [--dump DIR] [--hole-starts|--starts|--joint-starts]
  *
  * Each glyph's outer contour is resampled by arc length to N points (default
  * 64), each hole to M (default 24), corners kept (glyph_outline.h); the
  * holes pair up top to bottom. Prints one line per pair (Steiner vertices,
- * smallest angles, the remesher's aim) and a summary; exit status 1 when a
- * pair fails or its result is not exactly valid, or when fewer than G pairs
- * (default: 90 % of them) reach a smallest angle of min(15, aim / 3)
- * degrees in both glyphs (aim: the target the input's corners and short
- * edges allow). --method overlay measures the construction that always
- * succeeds (one bridge per hole and the overlay) in place of the bridges'
- * pieces. --auto pairs every loop by the library's auto correspondence
- * (arc length from the outer loop's best aligned start and every hole's
- * start chosen under the outer loops' similarity) in place of vertex by
- * vertex from each contour's resampling start. --hole-starts turns every hole of
- * the second glyph to the start that a similarity fits best (--starts: every
- * loop; --joint-starts: the outer loop's, then every hole to the start its
- * points are nearest to under the outer loop's similarity), then pairs
- * vertex by vertex. */
+ * smallest angles, the smallest input corner c, the remesher's aim) and a
+ * summary; exit status 1 when a pair fails or its result is not exactly
+ * valid, or when fewer than G pairs (default: 90 % of them) reach a
+ * smallest angle of min(15, c / 3) degrees in both polygons. --fixtures
+ * runs the pairs with holes of tests/core (hole_fixtures.h) in place of the
+ * glyphs, each by the command line's default correspondence (index, auto
+ * where the loops' sizes differ). --markdown prints the rows of
+ * bench/holes_table.py; --dump writes every pair's loops as DIR/<pair>_a.xy
+ * and _b.xy for the command line's pictures. --method overlay measures the
+ * construction that always succeeds (one bridge per hole and the overlay)
+ * in place of the bridges' pieces. --auto pairs every loop by the library's
+ * auto correspondence (arc length from the outer loop's best aligned start
+ * and every hole's start chosen under the outer loops' similarity) in place
+ * of vertex by vertex from each contour's resampling start. --hole-starts
+ * turns every hole of the second glyph to the start that a similarity fits
+ * best (--starts: every loop; --joint-starts: the outer loop's, then every
+ * hole to the start its points are nearest to under the outer loop's
+ * similarity), then pairs vertex by vertex. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -163,14 +167,37 @@ static double smallest_corner(const cm_loops *in, size_t count)
     return c;
 }
 
+/* Writes a pair's loops as dir/<name>_a.xy and _b.xy ('>' between loops,
+ * what the command line reads), for its pictures. */
+static void dump_pair(const char *dir, const char *name, const cm_loops in[2])
+{
+    for (int k = 0; k < 2; k++) {
+        char path[512], clean[64];
+        size_t j = 0;
+        for (const char *c = name; *c && j + 1 < sizeof clean; c++) clean[j++] = *c == '/' || *c == ' ' || *c == ',' ? '_' : *c;
+        clean[j] = 0;
+        snprintf(path, sizeof path, "%s/%s_%c.xy", dir, clean, "ab"[k]);
+        FILE *f = fopen(path, "w");
+        if (!f) {
+            fprintf(stderr, "cm_glyph_holes: cannot write %s\n", path);
+            continue;
+        }
+        for (size_t l = 0, at = 0; l < in[k].num_loops; at += in[k].loop_sizes[l++]) {
+            fprintf(f, "> %s\n", l ? "hole" : "outer loop");
+            for (size_t i = at; i < at + in[k].loop_sizes[l]; i++) fprintf(f, "%.17g %.17g\n", in[k].xy[2 * i], in[k].xy[2 * i + 1]);
+        }
+        fclose(f);
+    }
+}
+
 /* What run_pair measured. */
 typedef struct pair_outcome {
     int valid, good;
 } pair_outcome;
 
 /* Triangulates one pair, checks it exactly and prints its row: plain, or
- * a Markdown row (source, pair, mode, holes, n, c, floor, Steiner, smallest
- * angles, valid, floor reached). good: both meshes reach min(15, c / 3). */
+ * a Markdown row (source, pair, mode, holes, n, c, floor, the remesher's
+ * aim, Steiner, smallest angles, valid, floor reached). good: both meshes reach min(15, c / 3). */
 static pair_outcome run_pair(const char *source, const char *name, const cm_loops in[2], const cm_options *o,
                              int markdown)
 {
@@ -202,7 +229,7 @@ static pair_outcome run_pair(const char *source, const char *name, const cm_loop
     double c = smallest_corner(in, 2), floor = c / 3 < 15 ? c / 3 : 15;
     if (!out.valid) {
         if (markdown)
-            printf("| %s | %s | %s | %zu | | %.1f | %.2f | | | **no**: %s | no |\n", source, name, mode, loops - 1, c,
+            printf("| %s | %s | %s | %zu | | %.1f | %.2f | | | | **no**: %s | no |\n", source, name, mode, loops - 1, c,
                    floor, s == CM_OK ? why : cm_result_message(r));
         else
             printf("%s   FAILED: %s %s\n", name, cm_status_string(s), s == CM_OK ? why : cm_result_message(r));
@@ -214,8 +241,9 @@ static pair_outcome run_pair(const char *source, const char *name, const cm_loop
     cm_result_quality(r, 0, &qa), cm_result_quality(r, 1, &qb);
     out.good = o->remesh && qa.min_angle_deg >= floor && qb.min_angle_deg >= floor;
     if (markdown)
-        printf("| %s | %s | %s | %zu | %zu | %.1f | %.2f | %zu | %.1f / %.1f | yes | %s |\n", source, name, mode,
-               st->holes, st->n, c, floor, st->steiner, qa.min_angle_deg, qb.min_angle_deg, out.good ? "yes" : "**no**");
+        printf("| %s | %s | %s | %zu | %zu | %.1f | %.2f | %.1f | %zu | %.1f / %.1f | yes | %s |\n", source, name, mode,
+               st->holes, st->n, c, floor, st->remesh_aim_deg, st->steiner, qa.min_angle_deg, qb.min_angle_deg,
+               out.good ? "yes" : "**no**");
     else
         printf("%-6s %5zu %6zu %8zu %8zu %8.1f %8.1f %8.1f %8.1f%s\n", name, st->holes, st->n, st->steiner_before_remesh,
                st->steiner, qa.min_angle_deg, qb.min_angle_deg, c, o->remesh ? st->remesh_aim_deg : 0,
@@ -228,6 +256,7 @@ int main(int argc, char **argv)
 {
     const char *font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
     int outer = 64, hole = 24, remesh = 1, min_good = -1, overlay = 0, fixtures = 0, markdown = 0, forced = 0;
+    const char *dump = NULL;
     cm_correspondence correspondence = CM_CORRESPOND_INDEX;
     int starts = 0; /* 1: every hole's start chosen, 2: every loop's, 3: jointly */
     for (int i = 1; i < argc; i++) {
@@ -243,10 +272,12 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--joint-starts")) starts = 3;
         else if (!strcmp(argv[i], "--fixtures")) fixtures = 1;
         else if (!strcmp(argv[i], "--markdown")) markdown = 1;
+        else if (!strcmp(argv[i], "--dump") && i + 1 < argc) dump = argv[++i];
         else if (!strcmp(argv[i], "--min-good") && i + 1 < argc) min_good = atoi(argv[++i]);
         else {
             fprintf(stderr, "usage: cm_glyph_holes [--font PATH] [--outer N] [--hole M] [--no-remesh] [--min-good G]\n"
                             "                      [--method partition|overlay] [--auto] [--fixtures] [--markdown]\n"
+                            "                      [--dump DIR]\n"
                             "                      [--hole-starts|--starts|--joint-starts]\n");
             return 2;
         }
@@ -272,6 +303,7 @@ int main(int argc, char **argv)
             /* the command line's and the Python module's default: index, auto where loop sizes differ */
             o.correspondence = forced ? correspondence : differ ? CM_CORRESPOND_AUTO : CM_CORRESPOND_INDEX;
             cm_loops in[2] = {{a.xy, a.sizes, a.loops}, {b.xy, b.sizes, b.loops}};
+            if (dump) dump_pair(dump, list[f].name, in);
             pair_outcome po = run_pair("test_holes.c", list[f].name, in, &o, markdown);
             total++, failed += !po.valid, good_angle += po.good;
         }
@@ -296,6 +328,7 @@ int main(int argc, char **argv)
                 printf("%s   FAILED: glyph not loaded\n", name);
             } else {
                 cm_loops in[2] = {{g[0].xy, g[0].sizes, g[0].loops}, {g[1].xy, g[1].sizes, g[1].loops}};
+                if (dump) dump_pair(dump, name, in);
                 pair_outcome po = run_pair("glyphs", name, in, &o, markdown);
                 failed += !po.valid, good_angle += po.good;
             }

@@ -40,8 +40,8 @@ ALSO = {
     "square/disc": "; tests/cli/test_holes.py, tests/python/test_holes.py (index)",
     "square/disc, sizes differ": "; tests/cli/test_holes.py, tests/python/test_holes.py (auto)",
 }
-HEADER = ("| source | pair | mode | holes | n | c | min(15, c/3) | Steiner | min angle (deg) | valid | "
-          "reaches min(15, c/3) |\n|---|---|---|---:|---:|---:|---:|---:|---|---|---|")
+HEADER = ("| source | pair | mode | holes | n | c | min(15, c/3) | aim | Steiner | min angle (deg) | valid | "
+          "reaches min(15, c/3) |\n|---|---|---|---:|---:|---:|---:|---:|---:|---|---|---|")
 
 
 def test_module(directory, name):
@@ -61,12 +61,12 @@ def smallest_corner(polygons):
                for loops in polygons for l, loop in enumerate(loops) for a in corner_angles(loop))
 
 
-def row(source, name, mode, polygons, steiner, angles, n):
+def row(source, name, mode, polygons, steiner, angles, n, aim):
     c = smallest_corner(polygons)
     floor = quality_aims(c)[1]
     good = all(a >= floor for a in angles)
-    return "| %s | %s | %s | %d | %d | %.1f | %.2f | %d | %s | yes | %s |" % (
-        source, name, mode, len(polygons[0]) - 1, n, c, floor, steiner,
+    return "| %s | %s | %s | %d | %d | %.1f | %.2f | %s | %d | %s | yes | %s |" % (
+        source, name, mode, len(polygons[0]) - 1, n, c, floor, "" if aim is None else "%.1f" % aim, steiner,
         " / ".join("%.1f" % a for a in angles), "yes" if good else "**no**")
 
 
@@ -101,12 +101,12 @@ def cli_row(build, work):
     run = subprocess.run([os.path.join(build, "bin", "compatmesh"), "triangulate", "a.xy", "b.xy", "--out-dir", out],
                          cwd=work, capture_output=True, text=True)
     if run.returncode != 0:
-        return "| tests/cli/test_holes.py | plate, sheared and turned | index | | | | | | | **no**: %s | no |" % (
+        return "| tests/cli/test_holes.py | plate, sheared and turned | index | | | | | | | | **no**: %s | no |" % (
             run.stderr.strip())
     report = json.load(open(os.path.join(out, "report.json")))
     assert report["valid"]
     return row("tests/cli/test_holes.py", "plate, sheared and turned", report["correspondence"], [PLATE, PLATE_MOVED],
-               report["steiner"], [m["min_angle_deg"] for m in report["meshes"]], report["n"])
+               report["steiner"], [m["min_angle_deg"] for m in report["meshes"]], report["n"], report["remesh_aim_deg"])
 
 
 def python_row(build):
@@ -118,7 +118,8 @@ def python_row(build):
     moved = [loop.tolist() for loop in PLATE_MOVED]
     result = compatmesh.triangulate([plate, moved])
     return row("tests/python/test_holes.py", "plate, sheared and moved", "index", [plate, moved],
-               result.stats["steiner"], [q["min_angle_deg"] for q in result.stats["quality"]], result.stats["n"])
+               result.stats["steiner"], [q["min_angle_deg"] for q in result.stats["quality"]], result.stats["n"],
+               result.stats["remesh_aim_deg"])
 
 
 def meshlab_row(build, work):
@@ -133,11 +134,11 @@ def meshlab_row(build, work):
     m = re.search(r"compatible triangulation: (\d+) boundary vertices, (\d+) Steiner vertices", log)
     angles = re.search(r"smallest angle: ([\d.]+) deg in '[^']*', ([\d.]+) deg", log)
     if code != 0 or not m or not angles:
-        return "| tests/meshlab (lever_sections, lever_volume) | lever sections | auto | | | | | | | **no** | no |"
+        return "| tests/meshlab (lever_sections, lever_volume) | lever sections | auto | | | | | | | | **no** | no |"
     # x and y: the cuts are across the plate, one tilted by 0.02 (corners change by less than 0.01 degree)
     polygons = [[[p[:2] for p in loop] for loop in s] for s in sections]
     return row("tests/meshlab (lever_sections, lever_volume)", "lever.stl sections", "auto", polygons,
-               int(m.group(2)), [float(a) for a in angles.groups()], int(m.group(1)))
+               int(m.group(2)), [float(a) for a in angles.groups()], int(m.group(1)), None)
 
 
 def main(argv):
