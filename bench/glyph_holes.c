@@ -5,32 +5,38 @@
  * 1 - h, areas adding up in rationals).
  *
  *   cm_glyph_holes [--font PATH] [--outer N] [--hole M] [--no-remesh] [--min-good G]
- *                  [--method partition|overlay] [--auto]
- *                  [--hole-starts|--starts|--joint-starts]
+ *                  [--method partition|overlay] [--auto] [--fixtures] [--markdown]
+ *                  [--dump DIR] [--hole-starts|--starts|--joint-starts]
  *
  * Each glyph's outer contour is resampled by arc length to N points (default
  * 64), each hole to M (default 24), corners kept (glyph_outline.h); the
  * holes pair up top to bottom. Prints one line per pair (Steiner vertices,
- * smallest angles, the remesher's aim) and a summary; exit status 1 when a
- * pair fails or its result is not exactly valid, or when fewer than G pairs
- * (default: 90 % of them) reach a smallest angle of min(15, aim / 3)
- * degrees in both glyphs (aim: the target the input's corners and short
- * edges allow). --method overlay measures the construction that always
- * succeeds (one bridge per hole and the overlay) in place of the bridges'
- * pieces. --auto pairs every loop by the library's auto correspondence
- * (arc length from the outer loop's best aligned start and every hole's
- * start chosen under the outer loops' similarity) in place of vertex by
- * vertex from each contour's resampling start. --hole-starts turns every hole of
- * the second glyph to the start that a similarity fits best (--starts: every
- * loop; --joint-starts: the outer loop's, then every hole to the start its
- * points are nearest to under the outer loop's similarity), then pairs
- * vertex by vertex. */
+ * smallest angles, the smallest input corner c, the remesher's aim) and a
+ * summary; exit status 1 when a pair fails or its result is not exactly
+ * valid, or when fewer than G pairs (default: 90 % of them) reach a
+ * smallest angle of min(15, c / 3) degrees in both polygons. --fixtures
+ * runs the pairs with holes of tests/core (hole_fixtures.h) in place of the
+ * glyphs, each by the command line's default correspondence (index, auto
+ * where the loops' sizes differ). --markdown prints the rows of
+ * bench/holes_table.py; --dump writes every pair's loops as DIR/<pair>_a.xy
+ * and _b.xy for the command line's pictures. --method overlay measures the
+ * construction that always succeeds (one bridge per hole and the overlay)
+ * in place of the bridges' pieces. --auto pairs every loop by the library's
+ * auto correspondence (arc length from the outer loop's best aligned start
+ * and every hole's start chosen under the outer loops' similarity) in place
+ * of vertex by vertex from each contour's resampling start. --hole-starts
+ * turns every hole of the second glyph to the start that a similarity fits
+ * best (--starts: every loop; --joint-starts: the outer loop's, then every
+ * hole to the start its points are nearest to under the outer loop's
+ * similarity), then pairs vertex by vertex. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "compatmesh/compatmesh.h"
 #include "glyph_outline.h"
+#include "hole_fixtures.h"
 #include "result_check.h"
 
 #define MAX_LOOPS 8
@@ -137,10 +143,120 @@ static void choose_starts_jointly(const glyph_loops *a, glyph_loops *b)
     }
 }
 
+/* The smallest corner of the material over every loop of both polygons
+ * (degrees): a hole's corner is the outside of its loop. */
+static double smallest_corner(const cm_loops *in, size_t count)
+{
+    double c = 360;
+    for (size_t g = 0; g < count; g++)
+        for (size_t l = 0, at = 0; l < in[g].num_loops; at += in[g].loop_sizes[l++]) {
+            size_t m = in[g].loop_sizes[l];
+            const double *xy = in[g].xy + 2 * at;
+            double area2 = 0;
+            for (size_t i = 0; i < m; i++)
+                area2 += xy[2 * i] * xy[2 * ((i + 1) % m) + 1] - xy[2 * ((i + 1) % m)] * xy[2 * i + 1];
+            double side = (area2 > 0) == (l == 0) ? 1 : -1; /* +1: the material on the left */
+            for (size_t i = 0; i < m; i++) {
+                const double *p = xy + 2 * ((i + m - 1) % m), *q = xy + 2 * i, *r = xy + 2 * ((i + 1) % m);
+                double ux = q[0] - p[0], uy = q[1] - p[1], vx = r[0] - q[0], vy = r[1] - q[1];
+                double turn = atan2(ux * vy - uy * vx, ux * vx + uy * vy) * 180 / 3.14159265358979323846;
+                double corner = 180 - side * turn;
+                if (corner < c) c = corner;
+            }
+        }
+    return c;
+}
+
+/* Writes a pair's loops as dir/<name>_a.xy and _b.xy ('>' between loops,
+ * what the command line reads), for its pictures. */
+static void dump_pair(const char *dir, const char *name, const cm_loops in[2])
+{
+    for (int k = 0; k < 2; k++) {
+        char path[512], clean[64];
+        size_t j = 0;
+        for (const char *c = name; *c && j + 1 < sizeof clean; c++) clean[j++] = *c == '/' || *c == ' ' || *c == ',' ? '_' : *c;
+        clean[j] = 0;
+        snprintf(path, sizeof path, "%s/%s_%c.xy", dir, clean, "ab"[k]);
+        FILE *f = fopen(path, "w");
+        if (!f) {
+            fprintf(stderr, "cm_glyph_holes: cannot write %s\n", path);
+            continue;
+        }
+        for (size_t l = 0, at = 0; l < in[k].num_loops; at += in[k].loop_sizes[l++]) {
+            fprintf(f, "> %s\n", l ? "hole" : "outer loop");
+            for (size_t i = at; i < at + in[k].loop_sizes[l]; i++) fprintf(f, "%.17g %.17g\n", in[k].xy[2 * i], in[k].xy[2 * i + 1]);
+        }
+        fclose(f);
+    }
+}
+
+/* What run_pair measured. */
+typedef struct pair_outcome {
+    int valid, good;
+} pair_outcome;
+
+/* Triangulates one pair, checks it exactly and prints its row: plain, or
+ * a Markdown row (source, pair, mode, holes, n, c, floor, the remesher's
+ * aim, Steiner, smallest angles, valid, floor reached). good: both meshes reach min(15, c / 3). */
+static pair_outcome run_pair(const char *source, const char *name, const cm_loops in[2], const cm_options *o,
+                             int markdown)
+{
+    pair_outcome out = {0, 0};
+    cm_result *r = NULL;
+    cm_status s = cm_triangulate_loops(in, 2, o, &r);
+    char why[256] = "";
+    size_t loops = in[0].num_loops, n = 0;
+    for (size_t l = 0; l < loops; l++) n += in[0].loop_sizes[l];
+    /* Auto and arc length refine the loops (the other polygon's points
+     * added on the edges): checked as the result reports them, loop by loop. */
+    size_t refined_sizes[HF_MAX_LOOPS] = {0};
+    cm_loops refined[2] = {in[0], in[1]};
+    if (s == CM_OK && o->correspondence != CM_CORRESPOND_INDEX) {
+        n = cm_result_stats(r)->n;
+        for (size_t i = 0; i < n; i++) {
+            double t;
+            long e = cm_result_boundary_source(r, 0, i, &t);
+            size_t l = 0, at = in[0].loop_sizes[0];
+            while (l + 1 < loops && (size_t)e >= at) at += in[0].loop_sizes[++l];
+            refined_sizes[l]++;
+        }
+        for (int k = 0; k < 2; k++) refined[k] = (cm_loops){cm_result_vertices(r, (size_t)k), refined_sizes, loops};
+    }
+    out.valid = s == CM_OK && rc_check_loops(r, refined, 2, why, sizeof why) &&
+                rc_check_halfedges_holes(r, n, loops - 1, why, sizeof why);
+    const char *mode = o->correspondence == CM_CORRESPOND_AUTO ? "auto" :
+                       o->correspondence == CM_CORRESPOND_ARCLENGTH ? "arclength" : "index";
+    double c = smallest_corner(in, 2), floor = c / 3 < 15 ? c / 3 : 15;
+    if (!out.valid) {
+        if (markdown)
+            printf("| %s | %s | %s | %zu | | %.1f | %.2f | | | | **no**: %s | no |\n", source, name, mode, loops - 1, c,
+                   floor, s == CM_OK ? why : cm_result_message(r));
+        else
+            printf("%s   FAILED: %s %s\n", name, cm_status_string(s), s == CM_OK ? why : cm_result_message(r));
+        cm_result_free(r);
+        return out;
+    }
+    const cm_stats *st = cm_result_stats(r);
+    cm_quality qa, qb;
+    cm_result_quality(r, 0, &qa), cm_result_quality(r, 1, &qb);
+    out.good = o->remesh && qa.min_angle_deg >= floor && qb.min_angle_deg >= floor;
+    if (markdown)
+        printf("| %s | %s | %s | %zu | %zu | %.1f | %.2f | %.1f | %zu | %.1f / %.1f | yes | %s |\n", source, name, mode,
+               st->holes, st->n, c, floor, st->remesh_aim_deg, st->steiner, qa.min_angle_deg, qb.min_angle_deg,
+               out.good ? "yes" : "**no**");
+    else
+        printf("%-6s %5zu %6zu %8zu %8zu %8.1f %8.1f %8.1f %8.1f%s\n", name, st->holes, st->n, st->steiner_before_remesh,
+               st->steiner, qa.min_angle_deg, qb.min_angle_deg, c, o->remesh ? st->remesh_aim_deg : 0,
+               out.good || !o->remesh ? "" : "  (below min(15, c/3))");
+    cm_result_free(r);
+    return out;
+}
+
 int main(int argc, char **argv)
 {
     const char *font = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
-    int outer = 64, hole = 24, remesh = 1, min_good = -1, overlay = 0;
+    int outer = 64, hole = 24, remesh = 1, min_good = -1, overlay = 0, fixtures = 0, markdown = 0, forced = 0;
+    const char *dump = NULL;
     cm_correspondence correspondence = CM_CORRESPOND_INDEX;
     int starts = 0; /* 1: every hole's start chosen, 2: every loop's, 3: jointly */
     for (int i = 1; i < argc; i++) {
@@ -150,23 +266,21 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--no-remesh")) remesh = 0;
         else if (!strcmp(argv[i], "--method") && i + 1 < argc && !strcmp(argv[i + 1], "overlay")) overlay = 1, i++;
         else if (!strcmp(argv[i], "--method") && i + 1 < argc && !strcmp(argv[i + 1], "partition")) i++;
-        else if (!strcmp(argv[i], "--auto")) correspondence = CM_CORRESPOND_AUTO;
+        else if (!strcmp(argv[i], "--auto")) correspondence = CM_CORRESPOND_AUTO, forced = 1;
         else if (!strcmp(argv[i], "--hole-starts")) starts = 1;
         else if (!strcmp(argv[i], "--starts")) starts = 2;
         else if (!strcmp(argv[i], "--joint-starts")) starts = 3;
+        else if (!strcmp(argv[i], "--fixtures")) fixtures = 1;
+        else if (!strcmp(argv[i], "--markdown")) markdown = 1;
+        else if (!strcmp(argv[i], "--dump") && i + 1 < argc) dump = argv[++i];
         else if (!strcmp(argv[i], "--min-good") && i + 1 < argc) min_good = atoi(argv[++i]);
         else {
             fprintf(stderr, "usage: cm_glyph_holes [--font PATH] [--outer N] [--hole M] [--no-remesh] [--min-good G]\n"
-                            "                      [--method partition|overlay] [--auto]\n"
+                            "                      [--method partition|overlay] [--auto] [--fixtures] [--markdown]\n"
+                            "                      [--dump DIR]\n"
                             "                      [--hole-starts|--starts|--joint-starts]\n");
             return 2;
         }
-    }
-    FT_Library lib;
-    FT_Face face;
-    if (FT_Init_FreeType(&lib) || FT_New_Face(lib, font, 0, &face)) {
-        fprintf(stderr, "cm_glyph_holes: cannot load %s (Debian package fonts-dejavu-core)\n", font);
-        return 1;
     }
     cm_options o;
     cm_options_init(&o);
@@ -174,59 +288,60 @@ int main(int argc, char **argv)
     if (overlay) o.method = CM_METHOD_OVERLAY;
     o.correspondence = correspondence;
     int failed = 0, good_angle = 0, total = 0;
-    printf("%-6s %5s %6s %8s %8s %8s %8s %8s\n", "pair", "holes", "n", "built", "steiner", "angle_a", "angle_b", "aim");
-    for (size_t p = 0; p < sizeof pairs / sizeof pairs[0]; p++) {
-        glyph_loops g[2] = {{0}, {0}};
-        int loaded = load(face, pairs[p][0][0], outer, hole, &g[0]) == 0 &&
-                     load(face, pairs[p][1][0], outer, hole, &g[1]) == 0;
-        if (loaded && starts == 3) choose_starts_jointly(&g[0], &g[1]);
-        else if (loaded && starts) choose_starts(&g[0], &g[1], starts == 2);
-        cm_loops in[2] = {{g[0].xy, g[0].sizes, g[0].loops}, {g[1].xy, g[1].sizes, g[1].loops}};
-        cm_result *r = NULL;
-        cm_status s = loaded ? cm_triangulate_loops(in, 2, &o, &r) : CM_ERR_ARGUMENT;
-        char why[256] = "";
-        size_t n = (size_t)outer + (g[0].loops - 1) * (size_t)hole;
-        /* With auto the loops are refined (the other glyph's points added on
-         * the edges): checked as the result reports them, loop by loop. */
-        size_t refined_sizes[MAX_LOOPS] = {0};
-        cm_loops refined[2] = {in[0], in[1]};
-        if (s == CM_OK && correspondence == CM_CORRESPOND_AUTO) {
-            n = cm_result_stats(r)->n;
-            for (size_t i = 0; i < n; i++) {
-                double t;
-                long e = cm_result_boundary_source(r, 0, i, &t);
-                size_t l = 0, at = g[0].sizes[0];
-                while (l + 1 < g[0].loops && (size_t)e >= at) at += g[0].sizes[++l];
-                refined_sizes[l]++;
+    if (!markdown)
+        printf("%-6s %5s %6s %8s %8s %8s %8s %8s %8s\n", "pair", "holes", "n", "built", "steiner", "angle_a", "angle_b",
+               "c", "aim");
+    if (fixtures) {
+        const hole_fixture *list;
+        size_t count = hole_fixture_list(&list);
+        for (size_t f = 0; f < count; f++) {
+            static shape a, b;
+            memset(&a, 0, sizeof a), memset(&b, 0, sizeof b);
+            list[f].build(&a, &b);
+            int differ = a.loops != b.loops;
+            for (size_t l = 0; l < a.loops && l < b.loops; l++) differ |= a.sizes[l] != b.sizes[l];
+            /* the command line's and the Python module's default: index, auto where loop sizes differ */
+            o.correspondence = forced ? correspondence : differ ? CM_CORRESPOND_AUTO : CM_CORRESPOND_INDEX;
+            cm_loops in[2] = {{a.xy, a.sizes, a.loops}, {b.xy, b.sizes, b.loops}};
+            if (dump) dump_pair(dump, list[f].name, in);
+            pair_outcome po = run_pair("test_holes.c", list[f].name, in, &o, markdown);
+            total++, failed += !po.valid, good_angle += po.good;
+        }
+    } else {
+        FT_Library lib;
+        FT_Face face;
+        if (FT_Init_FreeType(&lib) || FT_New_Face(lib, font, 0, &face)) {
+            fprintf(stderr, "cm_glyph_holes: cannot load %s (Debian package fonts-dejavu-core)\n", font);
+            return 1;
+        }
+        for (size_t p = 0; p < sizeof pairs / sizeof pairs[0]; p++) {
+            glyph_loops g[2] = {{0}, {0}};
+            int loaded = load(face, pairs[p][0][0], outer, hole, &g[0]) == 0 &&
+                         load(face, pairs[p][1][0], outer, hole, &g[1]) == 0;
+            if (loaded && starts == 3) choose_starts_jointly(&g[0], &g[1]);
+            else if (loaded && starts) choose_starts(&g[0], &g[1], starts == 2);
+            char name[16];
+            snprintf(name, sizeof name, "%s/%s", pairs[p][0], pairs[p][1]);
+            total++;
+            if (!loaded) {
+                failed++;
+                printf("%s   FAILED: glyph not loaded\n", name);
+            } else {
+                cm_loops in[2] = {{g[0].xy, g[0].sizes, g[0].loops}, {g[1].xy, g[1].sizes, g[1].loops}};
+                if (dump) dump_pair(dump, name, in);
+                pair_outcome po = run_pair("glyphs", name, in, &o, markdown);
+                failed += !po.valid, good_angle += po.good;
             }
-            for (int k = 0; k < 2; k++) refined[k] = (cm_loops){cm_result_vertices(r, (size_t)k), refined_sizes, g[0].loops};
+            free(g[0].xy), free(g[1].xy);
         }
-        int valid = s == CM_OK && rc_check_loops(r, refined, 2, why, sizeof why) &&
-                    rc_check_halfedges_holes(r, n, g[0].loops - 1, why, sizeof why);
-        total++;
-        if (!valid) {
-            failed++;
-            printf("%s/%s   FAILED: %s %s\n", pairs[p][0], pairs[p][1], loaded ? cm_status_string(s) : "glyph not loaded",
-                   s == CM_OK ? why : cm_result_message(r));
-        } else {
-            const cm_stats *st = cm_result_stats(r);
-            cm_quality qa, qb;
-            cm_result_quality(r, 0, &qa), cm_result_quality(r, 1, &qb);
-            double aim = remesh ? st->remesh_aim_deg : 0, want = aim < 45 ? aim / 3 : 15;
-            want = want < 15 ? want : 15;
-            int good = qa.min_angle_deg >= want && qb.min_angle_deg >= want;
-            good_angle += good;
-            printf("%s/%s    %5zu %6zu %8zu %8zu %8.1f %8.1f %8.1f%s\n", pairs[p][0], pairs[p][1], st->holes, st->n,
-                   st->steiner_before_remesh, st->steiner, qa.min_angle_deg, qb.min_angle_deg, aim, good ? "" : "  (below min(15, aim/3))");
-        }
-        cm_result_free(r);
-        free(g[0].xy), free(g[1].xy);
+        FT_Done_Face(face);
+        FT_Done_FreeType(lib);
     }
-    printf("cm_glyph_holes: %d pairs, %d valid, %d failed", total, total - failed, failed);
-    if (remesh) printf(", %d with smallest angle >= min(15, aim/3)", good_angle);
-    printf("\n");
-    FT_Done_Face(face);
-    FT_Done_FreeType(lib);
+    if (!markdown) {
+        printf("cm_glyph_holes: %d pairs, %d valid, %d failed", total, total - failed, failed);
+        if (remesh) printf(", %d with smallest angle >= min(15, c/3)", good_angle);
+        printf("\n");
+    }
     if (min_good < 0) min_good = (9 * total + 9) / 10;
     return failed || (remesh && good_angle < min_good) ? 1 : 0;
 }

@@ -120,15 +120,17 @@ PLATE = [square(0, 0, 2, 24)] + [circle(cx, cy, 0.45, 10, -1)
                                  for cx, cy in ((-1, -1), (1, -0.8), (0, 1))]
 
 
+# The plate sheared and turned by 0.5 radians.
+PLATE_MOVED = [[(math.cos(0.5) * (x + 0.4 * y) - math.sin(0.5) * y,
+                 math.sin(0.5) * (x + 0.4 * y) + math.cos(0.5) * y) for x, y in loop] for loop in PLATE]
+
+
 def test_plate_three_bolt_holes(cm, tmp_path):
-    c, s = math.cos(0.5), math.sin(0.5)
-    moved = [[(c * (x + 0.4 * y) - s * y, s * (x + 0.4 * y) + c * y) for x, y in loop]
-             for loop in PLATE]
     (tmp_path / "plate.xy").write_text(xy_text(PLATE))
-    (tmp_path / "moved.xy").write_text(xy_text(moved))
+    (tmp_path / "moved.xy").write_text(xy_text(PLATE_MOVED))
     result = cm("triangulate", "plate.xy", "moved.xy", "--out-dir", "out")
     assert result.returncode == 0, result.stderr
-    check_output(tmp_path / "out", ["plate", "moved"], [PLATE, moved], 3)
+    check_output(tmp_path / "out", ["plate", "moved"], [PLATE, PLATE_MOVED], 3)
 
 
 def bad(cm, tmp_path, a_loops, b_text, pattern, *extra):

@@ -23,7 +23,7 @@ void *__gmp_default_allocate(size_t); /* exported by libgmp, not declared */
 
 #include "base/gmp_memory.h"
 #include "check.h"
-#include "geom/angle.h"
+#include "hole_fixtures.h"
 #include "random_polygons.h"
 #include "result_check.h"
 
@@ -79,16 +79,13 @@ static cm_status run(const double *const *polygons, char *where, size_t size)
 }
 
 /* Annuli, the hole turned half a turn in the second (bent bridges). */
-#define HOLE_OUTER 12
-#define HOLE_INNER 6
-static double annulus[2][2 * (HOLE_OUTER + HOLE_INNER)];
-static const size_t annulus_sizes[2] = {HOLE_OUTER, HOLE_INNER};
+static shape annulus[2];
 static int bent; /* the last successful run had Steiner vertices (bends) */
 static cm_method holes_method; /* partition: the bridges' pieces; overlay: the construction that always succeeds */
 
 static cm_status run_holes(char *where, size_t size)
 {
-    cm_loops in[2] = {{annulus[0], annulus_sizes, 2}, {annulus[1], annulus_sizes, 2}};
+    cm_loops in[2] = {{annulus[0].xy, annulus[0].sizes, 2}, {annulus[1].xy, annulus[1].sizes, 2}};
     cm_options o; /* the remesher's allocations are the first run's */
     cm_options_init(&o);
     o.remesh = 0;
@@ -111,13 +108,7 @@ static cm_status run_holes(char *where, size_t size)
 
 static void test_holes(void)
 {
-    for (int g = 0; g < 2; g++)
-        for (int i = 0; i < HOLE_OUTER + HOLE_INNER; i++) {
-            int outer = i < HOLE_OUTER;
-            double a = outer ? 2 * CM_PI * i / HOLE_OUTER : -2 * CM_PI * (i - HOLE_OUTER) / HOLE_INNER;
-            double radius = outer ? 1 : 0.6, turn = !outer && g ? CM_PI : 0;
-            annulus[g][2 * i] = radius * cos(a + turn), annulus[g][2 * i + 1] = radius * sin(a + turn);
-        }
+    hf_turned_hole_small(&annulus[0], &annulus[1]);
     for (int method = 0; method < 2; method++) {
         holes_method = method ? CM_METHOD_OVERLAY : CM_METHOD_PARTITION;
         const char *name = method ? "holes, overlay" : "holes";

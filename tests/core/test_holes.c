@@ -2,57 +2,14 @@
  * with its message and location, and fixtures that state what they expect
  * (valid, hole count, Euler characteristic 1 - h, a Steiner bound), each
  * result checked exactly by result_check.h (areas in rationals). */
-#include <complex.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
 #include "compatmesh/compatmesh.h"
+#include "hole_fixtures.h"
 #include "result_check.h"
-
-#define MAX_LOOPS 8
-#define MAX_VERTICES 512
-
-/* One polygon with holes under construction. */
-typedef struct shape {
-    double xy[2 * MAX_VERTICES];
-    size_t sizes[MAX_LOOPS], loops, n;
-} shape;
-
-static void add_point(shape *s, double x, double y)
-{
-    s->xy[2 * s->n] = x, s->xy[2 * s->n + 1] = y;
-    s->n++, s->sizes[s->loops - 1]++;
-}
-
-static void begin_loop(shape *s) { s->sizes[s->loops++] = 0; }
-
-/* A circle of m points, counter-clockwise (dir 1) or clockwise (-1). */
-static void add_circle(shape *s, double cx, double cy, double radius, size_t m, int dir)
-{
-    begin_loop(s);
-    for (size_t i = 0; i < m; i++) {
-        double a = dir * 2 * 3.14159265358979323846 * (double)i / (double)m;
-        add_point(s, cx + radius * cos(a), cy + radius * sin(a));
-    }
-}
-
-/* An axis-aligned square of side 2 h around (cx, cy), m points (m a
- * multiple of 4), from its lower left corner, either way. */
-static void add_square(shape *s, double cx, double cy, double h, size_t m, int dir)
-{
-    begin_loop(s);
-    size_t side = m / 4;
-    double corners[5][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}};
-    if (dir < 0) corners[1][0] = -1, corners[1][1] = 1, corners[3][0] = 1, corners[3][1] = -1;
-    for (size_t c = 0; c < 4; c++)
-        for (size_t i = 0; i < side; i++) {
-            double t = (double)i / (double)side;
-            add_point(s, cx + h * ((1 - t) * corners[c][0] + t * corners[c + 1][0]),
-                      cy + h * ((1 - t) * corners[c][1] + t * corners[c + 1][1]));
-        }
-}
 
 static cm_loops loops_of(const shape *s)
 {
@@ -206,18 +163,12 @@ static void expect_valid(const char *name, const shape *a, const shape *b, int r
 static void test_square_and_disc(void)
 {
     shape a = {0}, b = {0};
-    add_square(&a, 0, 0, 1, 16, 1);
-    add_square(&a, 0, 0, 0.4, 8, -1);
-    add_circle(&b, 0, 0, 1, 16, 1);
-    add_circle(&b, 0.3, 0.2, 0.35, 8, -1);
+    hf_square_disc(&a, &b);
     expect_valid("square/disc", &a, &b, 0, 40);
     expect_valid("square/disc remeshed", &a, &b, 1, 2 * a.n + 100);
     /* Holes given counter-clockwise, outer clockwise: normalised. */
     shape c = {0}, d = {0};
-    add_square(&c, 0, 0, 1, 16, -1);
-    add_square(&c, 0, 0, 0.4, 8, 1);
-    add_circle(&d, 0, 0, 1, 16, -1);
-    add_circle(&d, 0.3, 0.2, 0.35, 8, 1);
+    hf_square_disc_reversed(&c, &d);
     expect_valid("square/disc reversed loops", &c, &d, 0, 40);
 }
 
@@ -226,17 +177,7 @@ static void test_square_and_disc(void)
 static void test_plate(void)
 {
     shape a = {0}, b = {0};
-    add_square(&a, 0, 0, 2, 24, 1);
-    double centres[3][2] = {{-1, -1}, {1, -0.8}, {0, 1}};
-    for (int h = 0; h < 3; h++) add_circle(&a, centres[h][0], centres[h][1], 0.45, 10, -1);
-    b = a;
-    double c = cos(0.5), s = sin(0.5);
-    for (size_t i = 0; i < b.n; i++) {
-        double x = a.xy[2 * i], y = a.xy[2 * i + 1];
-        if (i >= 24) x += 0.15 * centres[(i - 24) / 10][0], y += 0.1; /* holes moved apart */
-        x += 0.4 * y; /* shear */
-        b.xy[2 * i] = c * x - s * y, b.xy[2 * i + 1] = s * x + c * y;
-    }
+    hf_plate(&a, &b);
     expect_valid("plate", &a, &b, 0, 60);
     expect_valid("plate remeshed", &a, &b, 1, 2 * a.n + 100);
 }
@@ -250,10 +191,7 @@ static void test_plate(void)
 static void test_turned_hole(void)
 {
     shape a = {0}, b = {0};
-    add_circle(&a, 0, 0, 1, 24, 1);
-    add_circle(&a, 0, 0, 0.6, 12, -1);
-    b = a;
-    for (size_t i = 24; i < 36; i++) b.xy[2 * i] = -a.xy[2 * i], b.xy[2 * i + 1] = -a.xy[2 * i + 1];
+    hf_turned_hole(&a, &b);
     cm_loops in[2] = {loops_of(&a), loops_of(&b)};
     cm_options o;
     cm_options_init(&o);
@@ -266,23 +204,9 @@ static void test_turned_hole(void)
     expect_valid("turned hole remeshed", &a, &b, 1, 2 * a.n + 100);
     /* two holes, both turned */
     shape c = {0}, d = {0};
-    add_circle(&c, 0, 0, 1, 32, 1);
-    add_circle(&c, -0.45, 0, 0.3, 10, -1);
-    add_circle(&c, 0.45, 0, 0.3, 10, -1);
-    d = c;
-    for (size_t i = 32; i < 52; i++) {
-        double cx = i < 42 ? -0.45 : 0.45;
-        d.xy[2 * i] = 2 * cx - c.xy[2 * i], d.xy[2 * i + 1] = -c.xy[2 * i + 1];
-    }
+    hf_two_turned_holes(&c, &d);
     expect_valid("two turned holes", &c, &d, 0, 200);
     expect_valid("two turned holes remeshed", &c, &d, 1, 2 * c.n + 100);
-}
-
-/* A triangle hole (clockwise) of circumradius r around (cx, cy), turned by a. */
-static void add_triangle(shape *s, double cx, double cy, double r, double a)
-{
-    begin_loop(s);
-    for (int i = 0; i < 3; i++) add_point(s, cx + r * cos(a - 2.0944 * i), cy + r * sin(a - 2.0944 * i));
 }
 
 /* Inputs where the bridges' pieces cannot be built, so the construction
@@ -293,53 +217,27 @@ static void add_triangle(shape *s, double cx, double cy, double r, double a)
  * overlay's, quadratic in the cut's size, measured with a margin). */
 static void test_fallback(void)
 {
-    /* Five triangle holes in a four-cornered square, in a row in one
-     * polygon and on a circle, turned, in the other: the pieces need two
-     * paths per hole that share no vertex, 20 ends among 19 vertices. */
+    /* Five triangle holes (hole_fixtures.h): 20 path ends among 19 vertices. */
     shape a = {0}, b = {0};
-    begin_loop(&a);
-    add_point(&a, 0, 0), add_point(&a, 10, 0), add_point(&a, 10, 10), add_point(&a, 0, 10);
-    b = a;
-    for (int h = 0; h < 5; h++) {
-        add_triangle(&a, 1.5 + 1.75 * h, 5, 0.6, 0);
-        add_triangle(&b, 5 + 3 * cos(1.2566 * h), 5 + 3 * sin(1.2566 * h), 0.6, 1.0 + h);
-    }
+    hf_five_triangles(&a, &b);
     expect_built("five triangle holes", &a, &b, 0, 120, FALLBACK);
     expect_built("five triangle holes remeshed", &a, &b, 1, 2 * a.n + 100, FALLBACK);
-    /* A small hole right of a central one in one polygon and left of it in
-     * the other: the central hole's shortest common chords, up and down,
-     * leave the small hole in the right piece of one and the left piece of
-     * the other, where no path from it is inside the material in both. */
+    /* A small hole on swapped sides of a central one: no path from it is
+     * inside the material in both. */
     shape c = {0}, d = {0};
-    add_square(&c, 0, 0, 1, 8, 1);
-    add_square(&c, 0, 0, 0.3, 4, -1);
-    d = c;
-    add_triangle(&c, 0.65, 0, 0.15, 0);
-    add_triangle(&d, -0.65, 0, 0.15, 0);
+    hf_swapped_sides(&c, &d);
     expect_built("holes on swapped sides", &c, &d, 0, 180, FALLBACK);
     expect_built("holes on swapped sides remeshed", &c, &d, 1, 2 * c.n + 100, FALLBACK);
-    /* Seven round holes on a grid in a disc, their places permuted in the
-     * other polygon, through the overlay method: the bridges of one
-     * polygon's tree run between holes that are far apart in the other. */
+    /* Seven round holes, their places permuted, through the overlay method. */
     shape e = {0}, f = {0};
-    add_circle(&e, 0, 0, 2, 40, 1);
-    f = e;
-    double places[7][2] = {{-1, -0.6}, {0, -0.6}, {1, -0.6}, {-1, 0.6}, {0, 0.6}, {1, 0.6}, {0, 1.4}};
-    int order[7] = {5, 3, 6, 0, 2, 4, 1};
-    for (int h = 0; h < 7; h++) {
-        add_circle(&e, places[h][0], places[h][1], 0.25, 6, -1);
-        add_circle(&f, places[order[h]][0], places[order[h]][1], 0.25, 6, -1);
-    }
+    hf_seven_permuted(&e, &f);
     /* the raw overlay of two unrelated cuts is thousands of slivers: not
      * morphed here (slow), its remeshed result is */
     expect_built_morphed("seven holes permuted", &e, &f, 0, 3000, OVERLAY, 0);
     expect_built("seven holes permuted remeshed", &e, &f, 1, 450, OVERLAY);
     /* The overlay method takes it for any input: the fixtures above. */
     shape g = {0}, h = {0};
-    add_square(&g, 0, 0, 1, 16, 1);
-    add_square(&g, 0, 0, 0.4, 8, -1);
-    add_circle(&h, 0, 0, 1, 16, 1);
-    add_circle(&h, 0.3, 0.2, 0.35, 8, -1);
+    hf_square_disc(&g, &h);
     expect_built("square/disc, overlay", &g, &h, 0, 200, OVERLAY);
     expect_built("square/disc, overlay remeshed", &g, &h, 1, 2 * g.n + 100, OVERLAY);
 }
@@ -451,13 +349,9 @@ static size_t input_loop(const shape *s, long v, size_t *start, size_t *size)
  * sizes) splits the edges the same way, loop by loop. */
 static void test_arclength_loops(void)
 {
-    shape a = {0}, b = {0}, c = {0};
-    add_square(&a, 0, 0, 1, 16, 1);
-    add_square(&a, 0.1, 0, 0.4, 8, -1);
-    add_circle(&b, 0, 0, 1, 23, -1); /* the other way round: normalised */
-    add_circle(&b, 0.3, 0.2, 0.35, 11, 1);
-    add_circle(&c, 0, 0, 1, 16, 1);
-    add_circle(&c, 0.3, 0.2, 0.35, 8, -1);
+    shape a = {0}, b = {0}, c = {0}, unused = {0};
+    hf_sizes_differ(&a, &b); /* b the other way round: normalised */
+    hf_square_disc(&unused, &c);
     cm_correspondence modes[3] = {CM_CORRESPOND_ARCLENGTH, CM_CORRESPOND_AUTO, CM_CORRESPOND_INDEX};
     for (int mode = 0; mode < 3; mode++)
         for (int remesh = 0; remesh < 2; remesh++) {
@@ -532,26 +426,8 @@ static void test_arclength_loops(void)
  * 39 of the second, with or without remeshing. */
 static void test_auto_hole_starts(void)
 {
-    const double pi = 3.14159265358979323846, turn = 100 * pi / 180;
-    const double complex scale = 2 * cexp(I * turn), shift = 5 + 3 * I;
     shape a = {0}, b = {0};
-    double complex egg[20], hole[24];
-    for (size_t i = 0; i < 20; i++) {
-        double t = 2 * pi * (double)i / 20;
-        egg[i] = cos(t) * (1 + 0.3 * cos(t)) + 0.7 * I * sin(t);
-    }
-    for (size_t i = 0; i < 24; i++) hole[i] = 0.3 + 0.1 * I + 0.2 * cexp(-I * 2 * pi * (double)i / 24);
-    begin_loop(&a), begin_loop(&b);
-    for (size_t i = 0; i < 20; i++) {
-        double complex w = scale * egg[(i + 3) % 20] + shift;
-        add_point(&a, creal(egg[i]), cimag(egg[i])), add_point(&b, creal(w), cimag(w));
-    }
-    begin_loop(&a), begin_loop(&b);
-    for (size_t i = 0; i < 12; i++) add_point(&a, creal(hole[2 * i]), cimag(hole[2 * i]));
-    for (size_t i = 0; i < 24; i++) {
-        double complex w = scale * hole[(i + 5) % 24] + shift;
-        add_point(&b, creal(w), cimag(w));
-    }
+    hf_egg(&a, &b);
     for (int remesh = 0; remesh < 2; remesh++) {
         cm_options o;
         cm_options_init(&o);

@@ -56,12 +56,14 @@ def test_square_and_disc():
     assert min(q["min_angle_deg"] for q in result.stats["quality"]) >= 20
 
 
+# A plate with three bolt holes and its sheared, moved copy.
+PLATE = [square(2, 24)] + [circle(x, y, 0.45, 10, -1) for x, y in ((-1, -1), (1, -0.8), (0, 1))]
+PLATE_MOVED = [loop @ np.array([[1.0, 0.4], [0.0, 1.0]]).T + [0.3, -0.1] for loop in PLATE]
+
+
 def test_plate_three_holes_as_lists():
-    plate = [square(2, 24)] + [circle(x, y, 0.45, 10, -1) for x, y in ((-1, -1), (1, -0.8), (0, 1))]
-    shear = np.array([[1.0, 0.4], [0.0, 1.0]])
-    moved = [loop @ shear.T + [0.3, -0.1] for loop in plate]
-    result = compatmesh.triangulate([[loop.tolist() for loop in plate], tuple(moved)], remesh=False)
-    check(result, [plate, moved])
+    result = compatmesh.triangulate([[loop.tolist() for loop in PLATE], tuple(PLATE_MOVED)], remesh=False)
+    check(result, [PLATE, PLATE_MOVED])
 
 
 def test_bad_input_names_polygon_and_loop():

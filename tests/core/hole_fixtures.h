@@ -1,0 +1,232 @@
+/* The pairs of polygons with holes that tests/core/test_holes.c (and
+ * test_alloc_failures.c) check,
+ * built in one place so that bench/glyph_holes.c (--fixtures) measures the
+ * same pairs: each pair's loops, outer loop first, and the builders. */
+#ifndef CM_HOLE_FIXTURES_H
+#define CM_HOLE_FIXTURES_H
+
+#include <complex.h>
+#include <math.h>
+#include <stddef.h>
+
+#define HF_MAX_LOOPS 8
+#define HF_MAX_VERTICES 512
+
+/* One polygon with holes under construction. */
+typedef struct shape {
+    double xy[2 * HF_MAX_VERTICES];
+    size_t sizes[HF_MAX_LOOPS], loops, n;
+} shape;
+
+static inline void add_point(shape *s, double x, double y)
+{
+    s->xy[2 * s->n] = x, s->xy[2 * s->n + 1] = y;
+    s->n++, s->sizes[s->loops - 1]++;
+}
+
+static inline void begin_loop(shape *s) { s->sizes[s->loops++] = 0; }
+
+/* A circle of m points, counter-clockwise (dir 1) or clockwise (-1). */
+static inline void add_circle(shape *s, double cx, double cy, double radius, size_t m, int dir)
+{
+    begin_loop(s);
+    for (size_t i = 0; i < m; i++) {
+        double a = dir * 2 * 3.14159265358979323846 * (double)i / (double)m;
+        add_point(s, cx + radius * cos(a), cy + radius * sin(a));
+    }
+}
+
+/* An axis-aligned square of side 2 h around (cx, cy), m points (m a
+ * multiple of 4), from its lower left corner, either way. */
+static inline void add_square(shape *s, double cx, double cy, double h, size_t m, int dir)
+{
+    begin_loop(s);
+    size_t side = m / 4;
+    double corners[5][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {-1, -1}};
+    if (dir < 0) corners[1][0] = -1, corners[1][1] = 1, corners[3][0] = 1, corners[3][1] = -1;
+    for (size_t c = 0; c < 4; c++)
+        for (size_t i = 0; i < side; i++) {
+            double t = (double)i / (double)side;
+            add_point(s, cx + h * ((1 - t) * corners[c][0] + t * corners[c + 1][0]),
+                      cy + h * ((1 - t) * corners[c][1] + t * corners[c + 1][1]));
+        }
+}
+
+/* A triangle hole (clockwise) of circumradius r around (cx, cy), turned by a. */
+static inline void add_triangle(shape *s, double cx, double cy, double r, double a)
+{
+    begin_loop(s);
+    for (int i = 0; i < 3; i++) add_point(s, cx + r * cos(a - 2.0944 * i), cy + r * sin(a - 2.0944 * i));
+}
+
+/* A square with a square hole against a disc with an off-centre round hole. */
+static inline void hf_square_disc(shape *a, shape *b)
+{
+    add_square(a, 0, 0, 1, 16, 1);
+    add_square(a, 0, 0, 0.4, 8, -1);
+    add_circle(b, 0, 0, 1, 16, 1);
+    add_circle(b, 0.3, 0.2, 0.35, 8, -1);
+}
+
+/* The same with the holes given counter-clockwise, the outer loops clockwise. */
+static inline void hf_square_disc_reversed(shape *a, shape *b)
+{
+    add_square(a, 0, 0, 1, 16, -1);
+    add_square(a, 0, 0, 0.4, 8, 1);
+    add_circle(b, 0, 0, 1, 16, -1);
+    add_circle(b, 0.3, 0.2, 0.35, 8, 1);
+}
+
+/* A plate with 3 bolt holes against a rotated, sheared copy with the holes
+ * moved apart. */
+static inline void hf_plate(shape *a, shape *b)
+{
+    add_square(a, 0, 0, 2, 24, 1);
+    double centres[3][2] = {{-1, -1}, {1, -0.8}, {0, 1}};
+    for (int h = 0; h < 3; h++) add_circle(a, centres[h][0], centres[h][1], 0.45, 10, -1);
+    *b = *a;
+    double c = cos(0.5), s = sin(0.5);
+    for (size_t i = 0; i < b->n; i++) {
+        double x = a->xy[2 * i], y = a->xy[2 * i + 1];
+        if (i >= 24) x += 0.15 * centres[(i - 24) / 10][0], y += 0.1; /* holes moved apart */
+        x += 0.4 * y; /* shear */
+        b->xy[2 * i] = c * x - s * y, b->xy[2 * i + 1] = s * x + c * y;
+    }
+}
+
+/* An annulus (outer radius 1, m points; hole radius 0.6, h points) whose
+ * hole is turned half a turn in the second polygon (hole vertex i sits
+ * opposite where it was): no straight chord from the hole to the outer loop
+ * is inside the material in both. */
+static inline void hf_turned_annulus(shape *a, shape *b, size_t m, size_t h)
+{
+    add_circle(a, 0, 0, 1, m, 1);
+    add_circle(a, 0, 0, 0.6, h, -1);
+    *b = *a;
+    for (size_t i = m; i < m + h; i++) b->xy[2 * i] = -a->xy[2 * i], b->xy[2 * i + 1] = -a->xy[2 * i + 1];
+}
+
+static inline void hf_turned_hole(shape *a, shape *b) { hf_turned_annulus(a, b, 24, 12); }
+
+static inline void hf_turned_hole_small(shape *a, shape *b) { hf_turned_annulus(a, b, 12, 6); }
+
+/* Two holes in a disc, each turned half a turn about its centre. */
+static inline void hf_two_turned_holes(shape *a, shape *b)
+{
+    add_circle(a, 0, 0, 1, 32, 1);
+    add_circle(a, -0.45, 0, 0.3, 10, -1);
+    add_circle(a, 0.45, 0, 0.3, 10, -1);
+    *b = *a;
+    for (size_t i = 32; i < 52; i++) {
+        double cx = i < 42 ? -0.45 : 0.45;
+        b->xy[2 * i] = 2 * cx - a->xy[2 * i], b->xy[2 * i + 1] = -a->xy[2 * i + 1];
+    }
+}
+
+/* Five triangle holes in a four-cornered square, in a row in one polygon
+ * and on a circle, turned, in the other: the bridges' pieces need two paths
+ * per hole that share no vertex, 20 ends among 19 vertices. */
+static inline void hf_five_triangles(shape *a, shape *b)
+{
+    begin_loop(a);
+    add_point(a, 0, 0), add_point(a, 10, 0), add_point(a, 10, 10), add_point(a, 0, 10);
+    *b = *a;
+    for (int h = 0; h < 5; h++) {
+        add_triangle(a, 1.5 + 1.75 * h, 5, 0.6, 0);
+        add_triangle(b, 5 + 3 * cos(1.2566 * h), 5 + 3 * sin(1.2566 * h), 0.6, 1.0 + h);
+    }
+}
+
+/* A small hole right of a central one in one polygon and left of it in the
+ * other: the central hole's shortest common chords, up and down, leave the
+ * small hole in the right piece of one and the left piece of the other,
+ * where no path from it is inside the material in both. */
+static inline void hf_swapped_sides(shape *a, shape *b)
+{
+    add_square(a, 0, 0, 1, 8, 1);
+    add_square(a, 0, 0, 0.3, 4, -1);
+    *b = *a;
+    add_triangle(a, 0.65, 0, 0.15, 0);
+    add_triangle(b, -0.65, 0, 0.15, 0);
+}
+
+/* Seven round holes on a grid in a disc, their places permuted in the
+ * other polygon: the bridges of one polygon's tree run between holes that
+ * are far apart in the other. */
+static inline void hf_seven_permuted(shape *a, shape *b)
+{
+    add_circle(a, 0, 0, 2, 40, 1);
+    *b = *a;
+    double places[7][2] = {{-1, -0.6}, {0, -0.6}, {1, -0.6}, {-1, 0.6}, {0, 0.6}, {1, 0.6}, {0, 1.4}};
+    int order[7] = {5, 3, 6, 0, 2, 4, 1};
+    for (int h = 0; h < 7; h++) {
+        add_circle(a, places[h][0], places[h][1], 0.25, 6, -1);
+        add_circle(b, places[order[h]][0], places[order[h]][1], 0.25, 6, -1);
+    }
+}
+
+/* A square with an off-centre square hole (16 + 8 vertices) against a disc
+ * with an off-centre round hole of other sizes (23 + 11), the disc's loops
+ * the other way round: loops of different sizes. */
+static inline void hf_sizes_differ(shape *a, shape *b)
+{
+    add_square(a, 0, 0, 1, 16, 1);
+    add_square(a, 0.1, 0, 0.4, 8, -1);
+    add_circle(b, 0, 0, 1, 23, -1);
+    add_circle(b, 0.3, 0.2, 0.35, 11, 1);
+}
+
+/* An egg with a regular 12-gon hole, and its image under a similarity
+ * (scale 2, turned 100 degrees, moved) renumbered from outer vertex 3,
+ * whose hole is the image of the 24-gon through the 12-gon's vertices,
+ * numbered so that vertex 19 is the image of the 12-gon's vertex 0. */
+static inline void hf_egg(shape *a, shape *b)
+{
+    const double pi = 3.14159265358979323846, turn = 100 * pi / 180;
+    const double complex scale = 2 * cexp(I * turn), shift = 5 + 3 * I;
+    double complex egg[20], hole[24];
+    for (size_t i = 0; i < 20; i++) {
+        double t = 2 * pi * (double)i / 20;
+        egg[i] = cos(t) * (1 + 0.3 * cos(t)) + 0.7 * I * sin(t);
+    }
+    for (size_t i = 0; i < 24; i++) hole[i] = 0.3 + 0.1 * I + 0.2 * cexp(-I * 2 * pi * (double)i / 24);
+    begin_loop(a), begin_loop(b);
+    for (size_t i = 0; i < 20; i++) {
+        double complex w = scale * egg[(i + 3) % 20] + shift;
+        add_point(a, creal(egg[i]), cimag(egg[i])), add_point(b, creal(w), cimag(w));
+    }
+    begin_loop(a), begin_loop(b);
+    for (size_t i = 0; i < 12; i++) add_point(a, creal(hole[2 * i]), cimag(hole[2 * i]));
+    for (size_t i = 0; i < 24; i++) {
+        double complex w = scale * hole[(i + 5) % 24] + shift;
+        add_point(b, creal(w), cimag(w));
+    }
+}
+
+/* Every pair test_holes.c triangulates, once each (the overlay-method run of
+ * square/disc is the same pair). */
+typedef struct hole_fixture {
+    const char *name;
+    void (*build)(shape *, shape *);
+} hole_fixture;
+
+static inline size_t hole_fixture_list(const hole_fixture **list)
+{
+    static const hole_fixture fixtures[] = {
+        {"square/disc", hf_square_disc},
+        {"square/disc reversed loops", hf_square_disc_reversed},
+        {"plate", hf_plate},
+        {"turned hole", hf_turned_hole},
+        {"turned hole, 12 + 6 (test_alloc_failures.c)", hf_turned_hole_small},
+        {"two turned holes", hf_two_turned_holes},
+        {"five triangle holes", hf_five_triangles},
+        {"holes on swapped sides", hf_swapped_sides},
+        {"seven holes permuted", hf_seven_permuted},
+        {"square/disc, sizes differ", hf_sizes_differ},
+        {"egg, hole renumbered", hf_egg},
+    };
+    *list = fixtures;
+    return sizeof fixtures / sizeof fixtures[0];
+}
+
+#endif
