@@ -156,6 +156,7 @@ double cm_kmesh_split_score(const cm_kmesh *km, int32_t c)
  * beside it still falls short of its target. */
 static void update_edge(cm_kmesh *km, int32_t c)
 {
+    if (km->eq_dropped) return;
     int32_t o = km->opp[c];
     if (o < 0) {
         cm_heap_remove(&km->eq, c);
@@ -241,6 +242,12 @@ void cm_kmesh_set_caps(cm_kmesh *km, double target, const double *bcap, const do
     for (int32_t t = 0; t < km->nt; t++) /* neighbours' slack is final now */
         if (cm_kmesh_tri_live(km, t))
             for (int32_t c = 3 * t; c < 3 * t + 3; c++) update_edge(km, c);
+}
+
+void cm_kmesh_drop_candidates(cm_kmesh *km)
+{
+    while (cm_heap_pop(&km->eq) >= 0) {}
+    km->eq_dropped = 1;
 }
 
 double cm_kmesh_min_angle(const cm_kmesh *km)

@@ -42,6 +42,7 @@ typedef struct cm_kmesh {
     double *slack;         /* triangle: tkey minus its target */
     cm_heap tq;            /* live triangles by slack */
     cm_heap eq;            /* candidate edges (smaller corner) by -score */
+    int eq_dropped;        /* eq emptied and no longer kept */
     double target;         /* radians; 0 until cm_kmesh_set_caps */
     double *bcap;          /* n: per boundary edge i -> bnext[i] */
     int32_t *bnext;        /* n: the next vertex along i's boundary loop */
@@ -148,6 +149,10 @@ double cm_kmesh_min_angle(const cm_kmesh *km);
  * edge i -> i+1 should reach min(target, bcap[i]), one at corner i
  * min(target, vcap[i]) (n entries each, radians; NULL: no cap). */
 void cm_kmesh_set_caps(cm_kmesh *km, double target, const double *bcap, const double *vcap);
+/* Ends the refinement: the candidate heap is emptied and no longer kept,
+ * so cm_refine_candidates finds none (keeping it costs a score, with a
+ * square root, per edge of every changed triangle). */
+void cm_kmesh_drop_candidates(cm_kmesh *km);
 /* Split score of eq. (5) of the interior edge opposite c: the largest
  * relative length over geometries over alpha_min(e)^2. */
 double cm_kmesh_split_score(const cm_kmesh *km, int32_t c);

@@ -41,6 +41,7 @@
  * result is kept. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "remesh/remesh.h"
 #include "remesh/areaeq.h"
@@ -71,8 +72,13 @@
 #define CM_RESCUE_SHARE 0.3
 /* The short triangles a round of forced moves looks at. */
 #define CM_STEP_OUT_WORST 8
+/* A forced move whose repair ends this close below its start (radians,
+ * about 0.1 degrees) gets a second repair before the decision: each
+ * distinct move runs once per round (step_out), and such a move was
+ * often kept on a later try before. */
+#define CM_FORCED_CLOSE 0.002
 
-typedef struct tabu_set { /* vertex pairs -> undone splits */
+typedef struct tabu_set { /* keys (vertex pairs, forced moves) -> counts */
     uint64_t *keys;       /* 0: empty slot */
     unsigned char *count;
     size_t cap, used;
@@ -83,6 +89,7 @@ typedef struct remesher {
     cm_work verts, edges;
     cm_ibuf star, batch;
     tabu_set tabu;
+    tabu_set tried; /* forced moves undone since the mesh last changed */
     const cm_options *o;
     cm_progress *progress;
     double target; /* radians */
@@ -105,11 +112,16 @@ static size_t tabu_slot(const tabu_set *t, uint64_t key)
     return i;
 }
 
-static int tabu_count(const tabu_set *t, int32_t a, int32_t b)
+static int tabu_count_key(const tabu_set *t, uint64_t key)
 {
     if (!t->cap) return 0;
-    size_t i = tabu_slot(t, pair_key(a, b));
+    size_t i = tabu_slot(t, key);
     return t->keys[i] ? t->count[i] : 0;
+}
+
+static int tabu_count(const tabu_set *t, int32_t a, int32_t b)
+{
+    return tabu_count_key(t, pair_key(a, b));
 }
 
 static int tabu_grow(tabu_set *t)
@@ -132,14 +144,24 @@ static int tabu_grow(tabu_set *t)
     return 0;
 }
 
-static int tabu_add(tabu_set *t, int32_t a, int32_t b, int times)
+static int tabu_add_key(tabu_set *t, uint64_t key, int times)
 {
     if (2 * (t->used + 1) > t->cap && tabu_grow(t)) return -1;
-    uint64_t key = pair_key(a, b);
     size_t i = tabu_slot(t, key);
     if (!t->keys[i]) t->keys[i] = key, t->count[i] = 0, t->used++;
     t->count[i] = (unsigned char)(t->count[i] + times > 200 ? 200 : t->count[i] + times);
     return 0;
+}
+
+static int tabu_add(tabu_set *t, int32_t a, int32_t b, int times)
+{
+    return tabu_add_key(t, pair_key(a, b), times);
+}
+
+static void tabu_clear(tabu_set *t)
+{
+    if (t->cap) memset(t->keys, 0, t->cap * sizeof *t->keys);
+    t->used = 0;
 }
 
 /* ---- flips and smoothing -------------------------------------------------- */
@@ -410,9 +432,9 @@ enum forced_move { FORCED_FLIP, FORCED_COLLAPSE, FORCED_SPLIT, FORCED_INSERT, FO
 /* A move the greedy rules refuse, on the edge opposite c (flip, split),
  * on its corner vertex (collapse onto the next) or in its triangle (the
  * map-aware remesher: an insertion at the middle circumcentre), then the
- * repair, as one
- * transaction kept only if the smallest angle of the triangles it
- * changed rose. Returns 1 kept, 0 undone or impossible, -1 out of memory. */
+ * repair (twice when the first ends close to a gain), as one transaction
+ * kept only if the smallest angle of the triangles it changed rose.
+ * Returns 1 kept, 0 undone or impossible, -1 out of memory. */
 static int try_forced(remesher *x, enum forced_move kind, int32_t c)
 {
     cm_kmesh *km = &x->km;
@@ -436,11 +458,30 @@ static int try_forced(remesher *x, enum forced_move kind, int32_t c)
         cm_kmesh_tx_commit(km); /* nothing changed */
         return done;
     }
-    for (int i = 0; i < 5; i++)
-        if (around[i] >= 0 && km->vc[around[i]] >= 0 && queue_around(x, around[i]))
+    for (int pass = 0; pass < 2; pass++) { /* the second: close to a gain (CM_FORCED_CLOSE) */
+        for (int i = 0; i < 5; i++)
+            if (around[i] >= 0 && km->vc[around[i]] >= 0 && queue_around(x, around[i]))
+                return cm_kmesh_tx_commit(km), -1;
+        double before, after;
+        if (improve(x, CM_IMPROVE_SWEEPS) || cm_kmesh_tx_region(km, &before, &after))
             return cm_kmesh_tx_commit(km), -1;
-    if (improve(x, CM_IMPROVE_SWEEPS)) return cm_kmesh_tx_commit(km), -1;
+        if (after >= before + CM_PROGRESS || after < before - CM_FORCED_CLOSE) break;
+    }
     return settle_by(x, CM_PROGRESS);
+}
+
+/* What a forced move changes, as a key: the edge for a flip or a split
+ * (either of its corners names it), the directed edge for a collapse (the
+ * vertex removed, the one it moves onto), the triangle (its first corner's
+ * directed edge) for an insertion. */
+static uint64_t forced_key(const cm_kmesh *km, enum forced_move kind, int32_t c)
+{
+    uint64_t a = (uint32_t)km->tri[c], b = (uint32_t)km->tri[cm_next(c)];
+    if (kind == FORCED_FLIP || kind == FORCED_SPLIT) {
+        uint64_t p = (uint32_t)km->tri[cm_next(c)], q = (uint32_t)km->tri[cm_prev(c)];
+        a = p < q ? p : q, b = p < q ? q : p;
+    }
+    return ((uint64_t)kind << 62 | a << 31 | b) + 1;
 }
 
 /* The corners of triangle t and of its neighbours (up to 12). */
@@ -468,6 +509,11 @@ static cm_status step_out(remesher *x, size_t n)
         if (cm_progress_poll(x->progress, CM_STAGE_REMESH, 1.0)) return CM_ERR_CANCELLED;
         int32_t nw = cm_heap_smallest(&km->tq, CM_STEP_OUT_WORST, 0.0, worst, work);
         int gained = 0;
+        /* An undone move leaves the mesh exactly as it was (but for the
+         * position search's flags), so till a move is kept each distinct
+         * move runs once: neighbouring worst triangles, and the two
+         * corners of one edge, name the same move again. */
+        tabu_clear(&x->tried);
         for (int32_t i = 0; i < nw && !gained; i++) {
             if (!cm_kmesh_tri_live(km, worst[i])) continue;
             int m = corners_near(km, worst[i], near);
@@ -475,8 +521,11 @@ static cm_status step_out(remesher *x, size_t n)
                 if ((kind == FORCED_SPLIT || kind == FORCED_INSERT) && km->live_v - km->n >= budget) continue;
                 if (kind == FORCED_INSERT && x->o->remesher != CM_REMESHER_MAP) continue;
                 for (int j = 0; j < m && !gained; j++) {
+                    if (km->tri[near[j]] < 0) continue;
+                    uint64_t key = forced_key(km, (enum forced_move)kind, near[j]);
+                    if (tabu_count_key(&x->tried, key)) continue;
                     int s = try_forced(x, (enum forced_move)kind, near[j]);
-                    if (s < 0) return stop_status(x);
+                    if (s < 0 || (s == 0 && tabu_add_key(&x->tried, key, 1))) return stop_status(x);
                     gained = s;
                 }
             }
@@ -578,6 +627,7 @@ static void remesher_free(remesher *x)
     cm_work_free(&x->verts), cm_work_free(&x->edges);
     cm_ibuf_free(&x->star), cm_ibuf_free(&x->batch);
     free(x->tabu.keys), free(x->tabu.count);
+    free(x->tried.keys), free(x->tried.count);
 }
 
 /* One run of the remesher chosen by o on a copy of mesh, with the
@@ -602,6 +652,7 @@ static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const do
         if (improve_everywhere(x)) return stop_status(x);
     }
     if ((s = refine(x, n, rep)) != CM_OK) return s;
+    cm_kmesh_drop_candidates(&x->km); /* no split after this one picks from them */
     if (improve_everywhere(x)) return stop_status(x);
     if ((s = step_out(x, n)) != CM_OK) return s;
     long late = coarsen(x, o->min_angle_deg * CM_PI / 180.0);

@@ -136,6 +136,27 @@ static int star_valid(const ring *r, const double q[2])
 
 static double sin2_to_angle(double s) { return asin(sqrt(fmin(1.0, fmax(0.0, s)))); }
 
+/* Is a smallest angle of `want` radians out of v's reach? Wherever v
+ * goes in its kernel, its two triangles at link vertex p_i split the link
+ * polygon's angle there, so the smallest angle stays below half the
+ * smallest link angle: a move that must reach more is not looked for.
+ * Only link angles clearly below 2 want count (cosines compared squared,
+ * with a margin for the rounding). */
+static int out_of_reach(const ring *r, double want)
+{
+    double a2 = 2 * want - 1e-9;
+    if (!(a2 > 0 && a2 < 0.5 * CM_PI)) return 0;
+    double c = cos(a2), c2 = c * c * (1 + 1e-12);
+    for (long i = 0; i < r->m; i++) {
+        const double *p = r->p[i], *pn = r->p[i + 1], *pp = r->p[i ? i - 1 : r->m - 1];
+        double ux = pn[0] - p[0], uy = pn[1] - p[1], wx = pp[0] - p[0], wy = pp[1] - p[1];
+        double cross = ux * wy - uy * wx, dot = ux * wx + uy * wy;
+        if (cross > 0 && dot > 0 && dot * dot > c2 * (ux * ux + uy * uy) * (wx * wx + wy * wy))
+            return 1;
+    }
+    return 0;
+}
+
 /* Tries q (and, if smart, points between v and q): moves v to the first
  * acceptable one. Returns 1 if moved. */
 static int try_move(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring *r,
@@ -167,11 +188,20 @@ int cm_smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
     double before = smart ? sin2_to_angle(star_sin2(&r, r.c)) : 0;
+    if (smart && out_of_reach(&r, before + CM_SMOOTH_GAIN)) return 0;
     double q[2];
     if (target_of(&r, method, q) == 0 && try_move(km, g, v, star, &r, q, smart, before)) return 1;
     if (method != CM_SMOOTH_COMBINED) return 0;
     laplacian_target(&r, q);
     return try_move(km, g, v, star, &r, q, smart, before);
+}
+
+/* The search found no gain for v in geometry g. Returns 0. */
+static int no_gain(cm_kmesh *km, size_t g, int32_t v)
+{
+    if (g + 1 == km->k) /* optimal in every geometry, till a change */
+        cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~CM_DIRTY_OPTIMIZE);
+    return 0;
 }
 
 /* Steps of the pattern search below. */
@@ -188,7 +218,8 @@ int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
     if (m < 0) return m == -1 ? -1 : 0;
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
-    double best[2] = {r.c[0], r.c[1]}, q = star_sin2(&r, best), near2 = HUGE_VAL, step = HUGE_VAL;
+    double best[2] = {r.c[0], r.c[1]}, q = star_sin2(&r, best), start = q, near2 = HUGE_VAL, step = HUGE_VAL;
+    if (out_of_reach(&r, sin2_to_angle(start) + CM_SMOOTH_GAIN)) return no_gain(km, g, v);
     for (long i = 0; i < r.m; i++) {
         double dx = r.p[i][0] - best[0], dy = r.p[i][1] - best[1];
         near2 = fmin(near2, dx * dx + dy * dy);
@@ -198,7 +229,6 @@ int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
         if (!(dx * dx + dy * dy > near2 * (1 + 1e-9))) step = fmin(step, hypot(dx, dy));
     }
     step *= 0.25;
-    double start = q;
     for (int it = 0; it < CM_OPTIMIZE_STEPS && step > 0; it++) {
         int improved = 0;
         for (int d = 0; d < 8; d++) {
@@ -208,11 +238,7 @@ int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
         }
         if (!improved) step *= 0.5;
     }
-    if (!(sin2_to_angle(q) > sin2_to_angle(start) + CM_SMOOTH_GAIN)) {
-        if (g + 1 == km->k) /* optimal in every geometry, till a change */
-            cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~CM_DIRTY_OPTIMIZE);
-        return 0;
-    }
+    if (!(sin2_to_angle(q) > sin2_to_angle(start) + CM_SMOOTH_GAIN)) return no_gain(km, g, v);
     cm_kmesh_move(km, g, v, best, star);
     return 1;
 }
