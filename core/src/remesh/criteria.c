@@ -10,9 +10,12 @@
  * enters at h = d / (1 - 2|s| / L), a ratio of linear functions along each
  * polygon edge, so only the ends of its clipped pieces matter. */
 #include <math.h>
+#include <stdlib.h>
 
 #include "remesh/criteria.h"
 #include "remesh/kmesh.h"
+#include "base/error.h"
+#include "geom/boxtree.h"
 
 static double corner_angle(const double *a, const double *b, const double *c)
 {
@@ -65,19 +68,93 @@ static double segment_entry(const frame *f, const double *p, const double *q, in
     return h;
 }
 
-static double edge_cap(const cm_mesh *mesh, const double *xy, size_t n, size_t i)
+static frame frame_of(const double *a, const double *b)
+{
+    double L = hypot(b[0] - a[0], b[1] - a[1]);
+    return (frame){0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), (b[0] - a[0]) / L, (b[1] - a[1]) / L, 0.5 * L};
+}
+
+/* Segment e (from vertex e) against edge i -> j's frame. */
+static double entry_of(const cm_mesh *mesh, const double *xy, size_t n, const frame *f, size_t i,
+                       size_t j, size_t e)
+{
+    size_t e1 = cm_loops_next(mesh->loop_start, n, e);
+    return segment_entry(f, xy + 2 * e, xy + 2 * e1, e == i || e == j, e1 == i || e1 == j);
+}
+
+static double cap_of(const frame *f, double h) { return atan2(2 * h, 2 * f->half); }
+
+double cm_edge_cap_scan(const cm_mesh *mesh, const double *xy, size_t n, size_t i)
 {
     size_t j = cm_loops_next(mesh->loop_start, n, i);
-    const double *a = xy + 2 * i, *b = xy + 2 * j;
-    double L = hypot(b[0] - a[0], b[1] - a[1]);
-    frame f = {0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), (b[0] - a[0]) / L, (b[1] - a[1]) / L, 0.5 * L};
-    double h = L * sqrt(3.0) / 2; /* equilateral: no need to look higher */
+    frame f = frame_of(xy + 2 * i, xy + 2 * j);
+    double h = f.half * sqrt(3.0); /* equilateral: no need to look higher */
+    for (size_t e = 0; e < n; e++)
+        if (e != i) h = fmin(h, entry_of(mesh, xy, n, &f, i, j, e));
+    return cap_of(&f, h);
+}
+
+/* ---- the indexed search ----------------------------------------------------- */
+
+typedef struct search {
+    const cm_mesh *mesh;
+    const double *xy;
+    size_t n, i, j;
+    frame f;
+    double h, pad;
+} search;
+
+/* The box around T(h), padded: a segment outside it lies a distance
+ * `pad` outside T(h), so its entry height, rounding included, is not below
+ * h and the minimum cannot change. */
+static void region_box(const search *s, double q[4])
+{
+    const double *a = s->xy + 2 * s->i, *b = s->xy + 2 * s->j;
+    double tx = s->f.mx - s->h * s->f.uy, ty = s->f.my + s->h * s->f.ux; /* the apex */
+    q[0] = fmin(fmin(a[0], b[0]), tx) - s->pad, q[1] = fmin(fmin(a[1], b[1]), ty) - s->pad;
+    q[2] = fmax(fmax(a[0], b[0]), tx) + s->pad, q[3] = fmax(fmax(a[1], b[1]), ty) + s->pad;
+}
+
+static int visit_segment(void *ctx, int32_t e, double q[4])
+{
+    search *s = ctx;
+    if ((size_t)e == s->i) return 0;
+    double h = entry_of(s->mesh, s->xy, s->n, &s->f, s->i, s->j, (size_t)e);
+    if (h < s->h) s->h = h, region_box(s, q);
+    return 0;
+}
+
+/* cm_edge_cap_scan through the segments' tree: the same minimum of the
+ * same entries (a minimum does not depend on their order), only the
+ * segments near T(h) examined, h shrinking as they are. */
+static double edge_cap(const cm_mesh *mesh, const cm_boxtree *tree, const double *xy, size_t n,
+                       size_t i)
+{
+    size_t j = cm_loops_next(mesh->loop_start, n, i);
+    search s = {mesh, xy, n, i, j, frame_of(xy + 2 * i, xy + 2 * j), 0, 0};
+    s.h = s.f.half * sqrt(3.0);
+    s.pad = 1e-9 * (2 * s.f.half + fabs(s.f.mx) + fabs(s.f.my));
+    size_t p = cm_loops_prev(mesh->loop_start, n, i); /* the neighbours first: h drops fast */
+    s.h = fmin(s.h, fmin(entry_of(mesh, xy, n, &s.f, i, j, p), entry_of(mesh, xy, n, &s.f, i, j, j)));
+    double q[4];
+    region_box(&s, q);
+    cm_boxtree_query(tree, q, visit_segment, &s);
+    return cap_of(&s.f, s.h);
+}
+
+/* The tree of the loops' segments of one geometry. */
+static int segment_tree(const cm_mesh *mesh, const double *xy, size_t n, cm_boxtree *tree)
+{
+    double *box = malloc(4 * n * sizeof *box);
+    if (!box) return CM_NO_MEMORY;
     for (size_t e = 0; e < n; e++) {
-        if (e == i) continue;
-        size_t e1 = cm_loops_next(mesh->loop_start, n, e);
-        h = fmin(h, segment_entry(&f, xy + 2 * e, xy + 2 * e1, e == i || e == j, e1 == i || e1 == j));
+        const double *p = xy + 2 * e, *q = xy + 2 * cm_loops_next(mesh->loop_start, n, e);
+        box[4 * e] = fmin(p[0], q[0]), box[4 * e + 1] = fmin(p[1], q[1]);
+        box[4 * e + 2] = fmax(p[0], q[0]), box[4 * e + 3] = fmax(p[1], q[1]);
     }
-    return atan2(2 * h, L);
+    int s = cm_boxtree_build(tree, box, n) ? CM_NO_MEMORY : 0;
+    free(box);
+    return s;
 }
 
 int cm_boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double *bcap,
@@ -86,13 +163,19 @@ int cm_boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, doubl
     for (size_t i = 0; i < n; i++) bcap[i] = vcap[i] = CM_PI;
     for (size_t g = 0; g < mesh->k; g++) {
         const double *xy = mesh->xy[g];
+        cm_boxtree tree;
+        if (segment_tree(mesh, xy, n, &tree)) return CM_NO_MEMORY;
         for (size_t i = 0; i < n; i++) {
-            if (cm_progress_check(progress)) return CM_CANCELLED;
-            bcap[i] = fmin(bcap[i], edge_cap(mesh, xy, n, i));
+            if (cm_progress_check(progress)) {
+                cm_boxtree_free(&tree);
+                return CM_CANCELLED;
+            }
+            bcap[i] = fmin(bcap[i], edge_cap(mesh, &tree, xy, n, i));
             double c = corner_angle(xy + 2 * cm_loops_prev(mesh->loop_start, n, i), xy + 2 * i,
                                     xy + 2 * cm_loops_next(mesh->loop_start, n, i));
             vcap[i] = fmin(vcap[i], 0.5 * c);
         }
+        cm_boxtree_free(&tree);
     }
     return 0;
 }

@@ -549,7 +549,7 @@ static long coarsen(remesher *x, double threshold)
 }
 
 /* The boundary's caps (criteria.h), edge caps with their margin: bcap[0 .. n),
- * vcap = bcap + n. O(n^2), so computed once for every run. NULL: out of
+ * vcap = bcap + n. Computed once, for every run. NULL: out of
  * memory or cancelled. */
 static double *boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress)
 {
