@@ -41,6 +41,7 @@
  * result is kept. */
 #include <math.h>
 #include <stdlib.h>
+#include <stdio.h>
 
 #include "remesh/remesh.h"
 #include "remesh/areaeq.h"
@@ -383,6 +384,7 @@ static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
         if (kept == CM_NO_MEMORY) goto oom;
         if (kept == CM_NO_CANDIDATES) break;
         added += kept, rep->splits += kept, rep->iterations++;
+        if (getenv("CMDBG")) fprintf(stderr, "round %zu ks %ld kept %ld tried %ld minslack %.3g minang %.3g since %ld live_t %d\n", rep->iterations, ks, kept, attempts, cm_kmesh_min_slack(km), cm_kmesh_min_angle(km), since_best, km->live_t);
         double now = cm_kmesh_min_angle(km);
         if (now > best + fmin(CM_PROGRESS, CM_PROGRESS_SHARE * best)) best = now, since_best = 0;
         else since_best += kept > 0 ? kept : 1;
