@@ -551,18 +551,18 @@ static long coarsen(remesher *x, double threshold)
 }
 
 /* The boundary's caps (criteria.h), edge caps with their margin: bcap[0 .. n),
- * vcap = bcap + n. Computed once, for every run. NULL: out of
- * memory or cancelled. */
-static double *boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress)
+ * vcap = bcap + n, in *out. Computed once, for every run. */
+static cm_status boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double **out)
 {
-    double *bcap = malloc(2 * n * sizeof *bcap);
-    if (!bcap) return NULL;
-    if (cm_boundary_caps(mesh, n, progress, bcap, bcap + n)) {
-        free(bcap);
-        return NULL;
+    double *bcap = *out = malloc(2 * n * sizeof *bcap);
+    if (!bcap) return CM_ERR_NO_MEMORY;
+    int s = cm_boundary_caps(mesh, n, progress, bcap, bcap + n);
+    if (s) {
+        free(bcap), *out = NULL;
+        return s == CM_CAPS_NOT_TRIANGULATED ? CM_ERR_INTERNAL : s == CM_CANCELLED ? CM_ERR_CANCELLED : CM_ERR_NO_MEMORY;
     }
     for (size_t i = 0; i < n; i++) bcap[i] *= CM_EDGE_CAP_MARGIN;
-    return bcap;
+    return CM_OK;
 }
 
 static void set_caps(remesher *x, const double *bcap, size_t n, cm_remesh_report *rep)
@@ -618,9 +618,9 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
                     cm_remesh_report *rep, cm_error *err)
 {
     remesher x = {0}, y = {0};
-    double *bcap = boundary_caps(mesh, n, progress);
-    if (!bcap) return cm_fail_status(err, stop_status_of(progress));
-    cm_status s = remesh_run(&x, mesh, n, bcap, o, ceiling_deg, progress, rep);
+    double *bcap;
+    cm_status s = boundary_caps(mesh, n, progress, &bcap);
+    if (s == CM_OK) s = remesh_run(&x, mesh, n, bcap, o, ceiling_deg, progress, rep);
     /* The greedy remesher can stall far below its aim, typically on a
      * sliver its local moves cannot reach (a slivered result also makes
      * the sweep's tetrahedra fail); the map-aware remesher starts the
