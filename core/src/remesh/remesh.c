@@ -23,7 +23,8 @@
  * changed went down, so refinement never makes the mesh worse; an edge
  * whose split was undone twice is not tried again. Refinement stops at the
  * target, the Steiner budget, the round cap, or when the smallest angle
- * has stopped rising. The greedy operations then sit in a local optimum;
+ * has stopped rising and the triangles short of their aim have stopped
+ * falling in number. The greedy operations then sit in a local optimum;
  * forced moves step back from it (a flip the angle rule refuses, the
  * removal of a Steiner vertex, a split, each followed by the repair) and
  * are kept only when the triangles they changed end up better. What is
@@ -67,6 +68,16 @@
  * splits. */
 #define CM_PROGRESS 1e-3
 #define CM_PROGRESS_SHARE 0.03
+/* Rounds of at least CM_IDLE_ROUND_MIN splits also stop it after
+ * CM_IDLE_ROUNDS of them in a row that neither raised the smallest angle
+ * nor left fewer triangles short of their aim than ever before: where what
+ * falls short cannot be helped (a sliver at a corner the ceiling binds),
+ * the splits kept as harmless only add vertices, and at 1 % of a large
+ * mesh's triangles per round the stall limit (about n / 4 splits) would
+ * let that go on for rounds of thousands. Smaller rounds leave it to the
+ * stall limit. */
+#define CM_IDLE_ROUNDS 16
+#define CM_IDLE_ROUND_MIN 16
 /* A greedy result whose smallest angle ends below this share of its aim
  * is also remeshed by the map-aware remesher. */
 #define CM_RESCUE_SHARE 0.3
@@ -365,15 +376,24 @@ static long split_round(remesher *x, long ks, int32_t *cand, long want, long *tr
     return nc == 0 ? CM_NO_CANDIDATES : kept;
 }
 
+/* Live triangles short of their aim. */
+static long short_count(const cm_kmesh *km)
+{
+    long count = 0;
+    for (int32_t t = 0; t < km->nt; t++) count += cm_kmesh_tri_live(km, t) && km->slack[t] < 0;
+    return count;
+}
+
 /* CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
 static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
 {
     cm_kmesh *km = &x->km;
     long budget = budget_of(x->o, n) - x->spent, added = 0, attempts = 0, since_best = 0;
+    long fewest = short_count(km), idle = 0;
     double best = cm_kmesh_min_angle(km);
     int32_t *cand = NULL;
     while (cm_kmesh_min_slack(km) < 0 && added < budget && since_best < stall_limit(x) &&
-           attempts < 4 * budget + 100 &&
+           idle < CM_IDLE_ROUNDS && attempts < 4 * budget + 100 &&
            (x->o->max_iterations <= 0 || rep->iterations < (size_t)x->o->max_iterations)) {
         long ks = round_size(x), want = 4 * ks + 8;
         if (ks > budget - added) ks = budget - added;
@@ -386,6 +406,9 @@ static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
         added += kept, rep->splits += kept, rep->iterations++;
         if (getenv("CMDBG")) fprintf(stderr, "round %zu ks %ld kept %ld tried %ld minslack %.3g minang %.3g since %ld live_t %d\n", rep->iterations, ks, kept, attempts, cm_kmesh_min_slack(km), cm_kmesh_min_angle(km), since_best, km->live_t);
         double now = cm_kmesh_min_angle(km);
+        long shorts = short_count(km);
+        idle = now > best || shorts < fewest || round_size(x) < CM_IDLE_ROUND_MIN ? 0 : idle + 1;
+        fewest = shorts < fewest ? shorts : fewest;
         if (now > best + fmin(CM_PROGRESS, CM_PROGRESS_SHARE * best)) best = now, since_best = 0;
         else since_best += kept > 0 ? kept : 1;
         if (x->o->area_every > 0 && rep->iterations % (size_t)x->o->area_every == 0 &&
