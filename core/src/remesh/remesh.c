@@ -42,7 +42,6 @@
  * result is kept. */
 #include <math.h>
 #include <stdlib.h>
-#include <stdio.h>
 
 #include "remesh/remesh.h"
 #include "remesh/areaeq.h"
@@ -404,13 +403,13 @@ static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
         if (kept == CM_NO_MEMORY) goto oom;
         if (kept == CM_NO_CANDIDATES) break;
         added += kept, rep->splits += kept, rep->iterations++;
-        if (getenv("CMDBG")) fprintf(stderr, "round %zu ks %ld kept %ld tried %ld minslack %.3g minang %.3g since %ld live_t %d\n", rep->iterations, ks, kept, attempts, cm_kmesh_min_slack(km), cm_kmesh_min_angle(km), since_best, km->live_t);
         double now = cm_kmesh_min_angle(km);
         long shorts = short_count(km);
-        idle = now > best || shorts < fewest || round_size(x) < CM_IDLE_ROUND_MIN ? 0 : idle + 1;
-        fewest = shorts < fewest ? shorts : fewest;
-        if (now > best + fmin(CM_PROGRESS, CM_PROGRESS_SHARE * best)) best = now, since_best = 0;
+        int rose = now > best + fmin(CM_PROGRESS, CM_PROGRESS_SHARE * best);
+        if (rose) best = now, since_best = 0;
         else since_best += kept > 0 ? kept : 1;
+        idle = rose || shorts < fewest || round_size(x) < CM_IDLE_ROUND_MIN ? 0 : idle + 1;
+        fewest = shorts < fewest ? shorts : fewest;
         if (x->o->area_every > 0 && rep->iterations % (size_t)x->o->area_every == 0 &&
             try_area_equalisation(x))
             goto oom;
