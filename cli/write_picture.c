@@ -23,43 +23,75 @@ static void set_colour(cairo_t *cr, uint32_t rgb)
                          (rgb & 0xff) / 255.0);
 }
 
+/* Segments per cairo path in the PNG. Rasterising one path costs more
+ * than linearly in its segments once they crowd the pixels (tens of
+ * thousands of mesh edges in a panel: seconds), while many short paths
+ * cost each about its own bounding box; so the PNG draws a layer as paths
+ * of at most this many segments. Filled sub-paths are never cut; a
+ * round-jointed stroke is cut anywhere, the round caps at the cut covering
+ * the join. The SVG, text that costs the same either way, keeps one path
+ * per layer (0: no limit). */
+#define PNG_PATH_SEGMENTS 32
+
+static void paint_path(cairo_t *cr, const style_paint *paint)
+{
+    if (paint->filled) cairo_fill(cr);
+    else cairo_stroke(cr);
+}
+
 /* A dot is a zero-length round-capped sub-path, which cairo strokes as a
  * disc of the line width. */
-static void draw_layer(cairo_t *cr, const picture *pic, const picture_layer *layer)
+static void draw_layer(cairo_t *cr, const picture *pic, const picture_layer *layer, size_t path_segments)
 {
     const style_paint *paint = &picture_styles[layer->style];
-    cairo_new_path(cr);
-    for (size_t i = layer->first; i < layer->first + layer->count; i++) {
-        const path_step *step = &pic->steps[i];
-        switch (step->kind) {
-        case STEP_MOVE: cairo_move_to(cr, step->x, step->y); break;
-        case STEP_LINE: cairo_line_to(cr, step->x, step->y); break;
-        case STEP_CLOSE: cairo_close_path(cr); break;
-        case STEP_DOT:
-            cairo_move_to(cr, step->x, step->y);
-            cairo_line_to(cr, step->x, step->y);
-            break;
-        }
-    }
     set_colour(cr, paint->rgb);
-    if (paint->filled) {
-        cairo_fill(cr);
-        return;
-    }
     cairo_set_line_width(cr, paint->width);
     cairo_set_line_cap(cr, paint->round ? CAIRO_LINE_CAP_ROUND : CAIRO_LINE_CAP_BUTT);
     cairo_set_line_join(cr, paint->round ? CAIRO_LINE_JOIN_ROUND : CAIRO_LINE_JOIN_MITER);
-    cairo_stroke(cr);
+    cairo_new_path(cr);
+    size_t segments = 0;
+    double sx = 0, sy = 0, px = 0, py = 0; /* the sub-path's start, the current point */
+    int cut = 0;                           /* the open sub-path was cut */
+    for (size_t i = layer->first; i < layer->first + layer->count; i++) {
+        const path_step *step = &pic->steps[i];
+        int starts = step->kind == STEP_MOVE || step->kind == STEP_DOT;
+        if (path_segments && segments >= path_segments && (starts || (step->kind == STEP_LINE && !paint->filled && paint->round))) {
+            paint_path(cr, paint);
+            segments = 0;
+            if (!starts) cairo_move_to(cr, px, py), cut = 1;
+        }
+        switch (step->kind) {
+        case STEP_MOVE:
+            cairo_move_to(cr, step->x, step->y);
+            sx = px = step->x, sy = py = step->y, cut = 0;
+            break;
+        case STEP_LINE:
+            cairo_line_to(cr, step->x, step->y);
+            px = step->x, py = step->y, segments++;
+            break;
+        case STEP_CLOSE: /* a cut sub-path closes to where it began */
+            if (cut) cairo_line_to(cr, sx, sy);
+            else cairo_close_path(cr);
+            px = sx, py = sy, segments++;
+            break;
+        case STEP_DOT:
+            cairo_move_to(cr, step->x, step->y);
+            cairo_line_to(cr, step->x, step->y);
+            px = sx = step->x, py = sy = step->y, cut = 0, segments++;
+            break;
+        }
+    }
+    paint_path(cr, paint);
 }
 
 /* The one drawing path of both formats: white background, the layers in
  * order, then the captions. */
-static void draw_picture(cairo_t *cr, const picture *pic, double scale)
+static void draw_picture(cairo_t *cr, const picture *pic, double scale, size_t path_segments)
 {
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
     cairo_scale(cr, scale, scale);
-    for (size_t l = 0; l < pic->layer_count; l++) draw_layer(cr, pic, &pic->layers[l]);
+    for (size_t l = 0; l < pic->layer_count; l++) draw_layer(cr, pic, &pic->layers[l], path_segments);
     cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
     cairo_set_font_size(cr, PICTURE_FONT_PIXELS);
     cairo_set_source_rgb(cr, 0, 0, 0);
@@ -95,7 +127,7 @@ static int write_svg(const char *path, const picture *pic, cli_error *error)
         cairo_svg_surface_create_for_stream(write_to_file, file, pic->width, pic->height);
     cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PX);
     cairo_t *cr = cairo_create(surface);
-    draw_picture(cr, pic, 1.0);
+    draw_picture(cr, pic, 1.0, 0);
     cairo_status_t status = drawn(cr, surface);
     cairo_surface_finish(surface);
     if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
@@ -176,7 +208,7 @@ static int write_png(const char *path, const picture *pic, cli_error *error)
     cairo_surface_t *surface = cairo_image_surface_create(
         CAIRO_FORMAT_RGB24, (int)ceil(scale * pic->width), (int)ceil(scale * pic->height));
     cairo_t *cr = cairo_create(surface);
-    draw_picture(cr, pic, scale);
+    draw_picture(cr, pic, scale, PNG_PATH_SEGMENTS);
     cairo_status_t status = drawn(cr, surface);
     int code = CLI_EXIT_INTERNAL;
     if (status != CAIRO_STATUS_SUCCESS) {

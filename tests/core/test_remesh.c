@@ -10,6 +10,7 @@
 #include "check.h"
 #include "compatmesh/compatmesh.h"
 #include "remesh/kmesh.h"
+#include "geom/looptri.h"
 #include "geom/predicates.h"
 #include "random_mesh.h"
 #include "random_polygons.h"
@@ -401,6 +402,104 @@ static void test_refine_keeps_boundary(void)
     free(a), free(b);
 }
 
+/* ---- the boundary caps ------------------------------------------------------- */
+
+/* cm_boundary_caps on mesh equals, bit for bit, the smallest over the
+ * geometries of the scan of every segment. Returns the mismatches. */
+static int caps_mismatches(const cm_mesh *m, size_t n, const char *what)
+{
+    double *bcap = malloc(2 * n * sizeof *bcap);
+    int bad = 0;
+    if (!bcap || cm_boundary_caps(m, n, NULL, bcap, bcap + n) != 0) {
+        CHECK_MSG(0, "%s: cm_boundary_caps failed", what);
+        free(bcap);
+        return 1;
+    }
+    for (size_t i = 0; i < n; i++) {
+        double scan = CM_PI;
+        for (size_t g = 0; g < m->k; g++) scan = fmin(scan, cm_edge_cap_scan(m, m->xy[g], n, i));
+        if (scan != bcap[i] && bad++ < 3)
+            fprintf(stderr, "%s: edge %zu: cap %.17g, scan %.17g\n", what, i, bcap[i], scan);
+    }
+    CHECK_MSG(bad == 0, "%s: %d edge caps differ from the scan", what, bad);
+    free(bcap);
+    return bad;
+}
+
+/* The constrained Delaunay triangulation of one polygon's loops as a
+ * one-geometry mesh over xy. 0, or -1. */
+static int loops_mesh(double *xy, size_t n, const size_t *starts, size_t loops, double **geom, cm_mesh *m)
+{
+    *m = (cm_mesh){.k = 1, .nv = n, .nt = n + 2 * (loops - 1) - 2, .xy = geom, .loop_start = starts,
+                   .num_loops = loops};
+    geom[0] = xy;
+    m->tri = malloc(3 * m->nt * sizeof *m->tri);
+    if (m->tri && cm_loops_triangulate(xy, starts, loops, m->tri) == 0) return 0;
+    free(m->tri), m->tri = NULL;
+    return -1;
+}
+
+static void test_boundary_caps(void)
+{
+    /* By hand: a 2 x 1 box with a notch down to (1, 0.5) in its top. On
+     * the bottom edge the notch's tip enters the isosceles triangle first,
+     * at height 0.5 (above the edge's midpoint): cap atan(2 * 0.5 / 2). A
+     * side edge's equilateral triangle fits: 60 degrees. The notch's tip
+     * is a reflex corner of 270 degrees: vcap 135. */
+    double notch[14] = {0, 0, 2, 0, 2, 1, 1.5, 1, 1, 0.5, 0.5, 1, 0, 1}, *geom[1], bcap[14];
+    size_t one[2] = {0, 7};
+    cm_mesh m;
+    CHECK(loops_mesh(notch, 7, one, 1, geom, &m) == 0);
+    CHECK(cm_boundary_caps(&m, 7, NULL, bcap, bcap + 7) == 0);
+    CHECK_MSG(fabs(bcap[0] - atan(0.5)) < 1e-15, "bottom edge cap %.17g", bcap[0] * DEG);
+    CHECK_MSG(fabs(bcap[1] - CM_PI / 3) < 1e-15, "side edge cap %.17g", bcap[1] * DEG);
+    CHECK_MSG(fabs(bcap[7 + 4] - 0.75 * CM_PI) < 1e-15, "notch vcap %.17g", bcap[7 + 4] * DEG);
+    caps_mismatches(&m, 7, "notched box");
+    free(m.tri);
+    m.tri = NULL, m.nt = 0; /* no triangles: no walk */
+    CHECK(cm_boundary_caps(&m, 7, NULL, bcap, bcap + 7) == CM_CAPS_NOT_TRIANGULATED);
+
+    /* Random simple polygons, stars and combs: each alone (constrained
+     * Delaunay) and two unrelated ones through the construction (long
+     * skinny triangles, Steiner vertices). */
+    int mismatched = 0;
+    for (int shape = 0; shape < 3; shape++) {
+        const char *name = shape == 0 ? "random" : shape == 1 ? "star" : "comb";
+        size_t n = shape == 0 ? 300 : shape == 1 ? 1500 : 600;
+        double *a = polygon(n), *b = polygon(n);
+        int made = shape == 0   ? rp_random_simple(a, (int)n, 11) || rp_random_simple(b, (int)n, 12)
+                   : shape == 1 ? rp_star(a, (int)n, 13) || rp_star(b, (int)n, 14)
+                                : rp_comb(a, (int)n, 25) || rp_comb(b, (int)n, 7);
+        CHECK_MSG(made == 0, "%s: not generated", name);
+        size_t loop[2] = {0, n};
+        if (made == 0 && loops_mesh(a, n, loop, 1, geom, &m) == 0) {
+            mismatched += caps_mismatches(&m, n, name);
+            free(m.tri);
+        }
+        const double *in[2] = {a, b};
+        cm_mesh two = {0};
+        CHECK_MSG(made == 0 && construct(in, 2, n, &two) == 0, "%s: no construction", name);
+        if (made == 0 && two.tri) mismatched += caps_mismatches(&two, n, name);
+        cm_mesh_clear(&two), free(a), free(b);
+    }
+
+    /* Holes: a star with two clockwise star holes near its centre, the
+     * loops read through loop_start. */
+    size_t outer = 500, hole = 60, n = outer + 2 * hole, starts[4] = {0, outer, outer + hole, n};
+    double *xy = polygon(n);
+    CHECK(rp_star(xy, (int)outer, 21) == 0);
+    for (int h = 0; h < 2; h++) {
+        double *p = xy + 2 * (outer + h * hole);
+        CHECK(rp_star(p, (int)hole, 22 + (uint64_t)h) == 0);
+        for (size_t i = 0; i < hole; i++) p[2 * i] = 0.08 * p[2 * i] + (h ? 0.12 : -0.12), p[2 * i + 1] *= 0.08;
+        rp_reverse(p, 0, (int)hole - 1);
+    }
+    CHECK(loops_mesh(xy, n, starts, 3, geom, &m) == 0);
+    if (m.tri) mismatched += caps_mismatches(&m, n, "star with holes");
+    free(m.tri), free(xy);
+    printf("boundary caps: equal to the scan on %s\n", mismatched ? "NOT all shapes" : "all shapes");
+}
+
 /* ---- Algorithm 1 on fixtures ---------------------------------------------------- */
 
 /* DejaVu Sans "U" and "S" outlines resampled to 40 points (bench/gen_pairs),
@@ -690,6 +789,7 @@ int main(void)
     test_smoothing_variants();
     test_area_equalisation();
     test_refine_keeps_boundary();
+    test_boundary_caps();
     test_algorithm1_fixtures();
     test_map_affine_fixture();
     test_options();

@@ -20,9 +20,20 @@
  * bcap[i], the best smallest angle of an isosceles triangle on boundary
  * edge i -> i+1 that fits inside the polygon (a boundary edge is never
  * split, so its triangle can do no better, near enough); vcap[i], half the
- * corner angle at vertex i (a corner split in two). O(n^2): 0, or
- * CM_CANCELLED. */
+ * corner angle at vertex i (a corner split in two). Each edge examines
+ * only the boundary segments near its triangle, found by a walk through
+ * mesh's triangles (the construction, valid in every geometry), so about
+ * linear time when the triangles near the boundary are few per edge:
+ * 0, CM_NO_MEMORY, CM_CANCELLED or CM_CAPS_NOT_TRIANGULATED (a boundary
+ * edge in no triangle). */
+#define CM_CAPS_NOT_TRIANGULATED (-2)
 int cm_boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double *bcap,
                      double *vcap);
+
+/* The edge cap of boundary edge i (unscaled, radians) in geometry xy
+ * (the n boundary vertices of mesh's loops) by examining every boundary
+ * segment, O(n), triangles not needed: the reference cm_boundary_caps
+ * equals bit for bit. */
+double cm_edge_cap_scan(const cm_mesh *mesh, const double *xy, size_t n, size_t i);
 
 #endif

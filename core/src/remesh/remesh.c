@@ -23,7 +23,8 @@
  * changed went down, so refinement never makes the mesh worse; an edge
  * whose split was undone twice is not tried again. Refinement stops at the
  * target, the Steiner budget, the round cap, or when the smallest angle
- * has stopped rising. The greedy operations then sit in a local optimum;
+ * has stopped rising and the triangles short of their aim have stopped
+ * falling in number. The greedy operations then sit in a local optimum;
  * forced moves step back from it (a flip the angle rule refuses, the
  * removal of a Steiner vertex, a split, each followed by the repair) and
  * are kept only when the triangles they changed end up better. What is
@@ -67,6 +68,16 @@
  * splits. */
 #define CM_PROGRESS 1e-3
 #define CM_PROGRESS_SHARE 0.03
+/* Rounds of at least CM_IDLE_ROUND_MIN splits also stop it after
+ * CM_IDLE_ROUNDS of them in a row that neither raised the smallest angle
+ * nor left fewer triangles short of their aim than ever before: where what
+ * falls short cannot be helped (a sliver at a corner the ceiling binds),
+ * the splits kept as harmless only add vertices, and at 1 % of a large
+ * mesh's triangles per round the stall limit (about n / 4 splits) would
+ * let that go on for rounds of thousands. Smaller rounds leave it to the
+ * stall limit. */
+#define CM_IDLE_ROUNDS 16
+#define CM_IDLE_ROUND_MIN 16
 /* A greedy result whose smallest angle ends below this share of its aim
  * is also remeshed by the map-aware remesher. */
 #define CM_RESCUE_SHARE 0.3
@@ -386,15 +397,24 @@ static long split_round(remesher *x, long ks, int32_t *cand, long want, long *tr
     return nc == 0 ? CM_NO_CANDIDATES : kept;
 }
 
+/* Live triangles short of their aim. */
+static long short_count(const cm_kmesh *km)
+{
+    long count = 0;
+    for (int32_t t = 0; t < km->nt; t++) count += cm_kmesh_tri_live(km, t) && km->slack[t] < 0;
+    return count;
+}
+
 /* CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
 static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
 {
     cm_kmesh *km = &x->km;
     long budget = budget_of(x->o, n) - x->spent, added = 0, attempts = 0, since_best = 0;
+    long fewest = short_count(km), idle = 0;
     double best = cm_kmesh_min_angle(km);
     int32_t *cand = NULL;
     while (cm_kmesh_min_slack(km) < 0 && added < budget && since_best < stall_limit(x) &&
-           attempts < 4 * budget + 100 &&
+           idle < CM_IDLE_ROUNDS && attempts < 4 * budget + 100 &&
            (x->o->max_iterations <= 0 || rep->iterations < (size_t)x->o->max_iterations)) {
         long ks = round_size(x), want = 4 * ks + 8;
         if (ks > budget - added) ks = budget - added;
@@ -406,8 +426,12 @@ static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
         if (kept == CM_NO_CANDIDATES) break;
         added += kept, rep->splits += kept, rep->iterations++;
         double now = cm_kmesh_min_angle(km);
-        if (now > best + fmin(CM_PROGRESS, CM_PROGRESS_SHARE * best)) best = now, since_best = 0;
+        long shorts = short_count(km);
+        int rose = now > best + fmin(CM_PROGRESS, CM_PROGRESS_SHARE * best);
+        if (rose) best = now, since_best = 0;
         else since_best += kept > 0 ? kept : 1;
+        idle = rose || shorts < fewest || round_size(x) < CM_IDLE_ROUND_MIN ? 0 : idle + 1;
+        fewest = shorts < fewest ? shorts : fewest;
         if (x->o->area_every > 0 && rep->iterations % (size_t)x->o->area_every == 0 &&
             try_area_equalisation(x))
             goto oom;
@@ -598,18 +622,18 @@ static long coarsen(remesher *x, double threshold)
 }
 
 /* The boundary's caps (criteria.h), edge caps with their margin: bcap[0 .. n),
- * vcap = bcap + n. O(n^2), so computed once for every run. NULL: out of
- * memory or cancelled. */
-static double *boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress)
+ * vcap = bcap + n, in *out. Computed once, for every run. */
+static cm_status boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double **out)
 {
-    double *bcap = malloc(2 * n * sizeof *bcap);
-    if (!bcap) return NULL;
-    if (cm_boundary_caps(mesh, n, progress, bcap, bcap + n)) {
-        free(bcap);
-        return NULL;
+    double *bcap = *out = malloc(2 * n * sizeof *bcap);
+    if (!bcap) return CM_ERR_NO_MEMORY;
+    int s = cm_boundary_caps(mesh, n, progress, bcap, bcap + n);
+    if (s) {
+        free(bcap), *out = NULL;
+        return s == CM_CAPS_NOT_TRIANGULATED ? CM_ERR_INTERNAL : s == CM_CANCELLED ? CM_ERR_CANCELLED : CM_ERR_NO_MEMORY;
     }
     for (size_t i = 0; i < n; i++) bcap[i] *= CM_EDGE_CAP_MARGIN;
-    return bcap;
+    return CM_OK;
 }
 
 static void set_caps(remesher *x, const double *bcap, size_t n, cm_remesh_report *rep)
@@ -667,9 +691,9 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
                     cm_remesh_report *rep, cm_error *err)
 {
     remesher x = {0}, y = {0};
-    double *bcap = boundary_caps(mesh, n, progress);
-    if (!bcap) return cm_fail_status(err, stop_status_of(progress));
-    cm_status s = remesh_run(&x, mesh, n, bcap, o, ceiling_deg, progress, rep);
+    double *bcap;
+    cm_status s = boundary_caps(mesh, n, progress, &bcap);
+    if (s == CM_OK) s = remesh_run(&x, mesh, n, bcap, o, ceiling_deg, progress, rep);
     /* The greedy remesher can stall far below its aim, typically on a
      * sliver its local moves cannot reach (a slivered result also makes
      * the sweep's tetrahedra fail); the map-aware remesher starts the
