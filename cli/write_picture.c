@@ -41,7 +41,8 @@ static void paint_path(cairo_t *cr, const style_paint *paint)
 
 /* A dot is a zero-length round-capped sub-path, which cairo strokes as a
  * disc of the line width. */
-static void draw_layer(cairo_t *cr, const picture *pic, const picture_layer *layer, size_t path_segments)
+static void draw_layer(cairo_t *cr, const picture *pic, const picture_layer *layer,
+                       size_t path_segments)
 {
     const style_paint *paint = &picture_styles[layer->style];
     set_colour(cr, paint->rgb);
@@ -55,7 +56,8 @@ static void draw_layer(cairo_t *cr, const picture *pic, const picture_layer *lay
     for (size_t i = layer->first; i < layer->first + layer->count; i++) {
         const path_step *step = &pic->steps[i];
         int starts = step->kind == STEP_MOVE || step->kind == STEP_DOT;
-        if (path_segments && segments >= path_segments && (starts || (step->kind == STEP_LINE && !paint->filled && paint->round))) {
+        int cuttable = starts || (step->kind == STEP_LINE && !paint->filled && paint->round);
+        if (path_segments && segments >= path_segments && cuttable) {
             paint_path(cr, paint);
             segments = 0;
             if (!starts) cairo_move_to(cr, px, py), cut = 1;
