@@ -258,7 +258,10 @@ def test_signal_leaves_only_complete_folders(compatmesh_path, tmp_path, signum):
         first = process.stderr.readline()
         assert " ok: " in first, first
         process.send_signal(signum)
-        _, rest = process.communicate(timeout=60)
+        # Read through the same buffered stream as the first line: lines
+        # already buffered with it would be missed by communicate().
+        rest = process.stderr.read()
+        process.wait(timeout=60)
     finally:
         process.kill()
     assert process.returncode == 130, rest
