@@ -588,9 +588,23 @@ static int between_collinear(const double a[2], const double b[2],
     return !cm_point_less(p, lo) && !cm_point_less(hi, p);
 }
 
+/* Both ends of ab strictly below both ends of cd along axis x (0) or y
+ * (1): then the segments share no point. Exact comparisons; false when a
+ * coordinate is NaN, leaving that case to the predicates. */
+static int strictly_below(const double a[2], const double b[2], const double c[2],
+                          const double d[2], int x)
+{
+    return a[x] < c[x] && a[x] < d[x] && b[x] < c[x] && b[x] < d[x];
+}
+
 int cm_segments_intersect(const double a[2], const double b[2],
                           const double c[2], const double d[2])
 {
+    /* Most segment pairs a polygon scan meets are far apart: disjoint
+     * bounding boxes settle them without a predicate. */
+    if (strictly_below(a, b, c, d, 0) || strictly_below(c, d, a, b, 0) ||
+        strictly_below(a, b, c, d, 1) || strictly_below(c, d, a, b, 1))
+        return 0;
     int abc = cm_orient2d(a, b, c), abd = cm_orient2d(a, b, d);
     int cda = cm_orient2d(c, d, a), cdb = cm_orient2d(c, d, b);
     if (abc * abd < 0 && cda * cdb < 0) return 1;
