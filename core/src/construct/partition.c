@@ -448,6 +448,9 @@ typedef struct {
     long *src, nsrc;     /* the sources: local vertices, ascending */
     long *row_of;        /* per vertex: its source row, -1 if not one */
     int *dist;           /* k * nsrc * m: from each source to every vertex */
+    cm_diagset *own;     /* k: the face's diagonals in each geometry, for
+                            the halves of its cuts; NULL until needed */
+    int own_state;       /* 0 not yet, 1 done, -1 not available */
 } face_ctx;
 
 static int *dist_row(const face_ctx *f, size_t g, long row)
@@ -589,14 +592,69 @@ typedef struct {
     long *cost;           /* [choice_0 + per_g * (choice_1 + ...)], -2 unknown */
 } cut_memo;
 
-/* The half's common diagonals (AND over the geometries of the memo's
- * sets, computed when missing from xy). 0, -1 memory, 1 not simple. */
-static int half_common(cut_memo *memo, size_t k, int half, const long *pick, long m, double **xy, cm_diagset *common)
+/* The face's own diagonals in every geometry (once per face). 1, 0 not
+ * available (then the halves get tables of their own), -1 memory. */
+static int face_diagonals(face_ctx *f)
 {
+    size_t k = f->p->k;
+    if (f->own_state == 0) {
+        f->own = calloc(k, sizeof *f->own);
+        if (!f->own) return -1;
+        f->own_state = 1;
+        for (size_t g = 0; g < k && f->own_state == 1; g++) {
+            int s = common_table((const double *const *)&f->l[g], NULL, 1, f->it->m, &f->own[g]);
+            if (s < 0) return -1;
+            if (s > 0) f->own_state = -1;
+        }
+    }
+    return f->own_state == 1;
+}
+
+/* The diagonals of a half h[0..size-1] of the face in geometry g: the
+ * face's chain from vertex `from` (h[0]) to h[nc - 1], then the bends
+ * back to h[0] (the path P). The half lies inside the face, so two chain
+ * vertices other than the path's ends span a diagonal of the half iff
+ * they span one of the face and their segment misses P (both ends lie off
+ * P, so only the open segment can touch it). Every other pair is tested
+ * on the half directly. Exact, as the tables are. 0 or -1 memory. */
+static int half_diagonals(const face_ctx *f, size_t g, long from, long nc, const double *h, long size,
+                          cm_diagset *set)
+{
+    long m = f->it->m;
+    if (cm_diagset_init(set, size) != 0) return -1;
+    for (long i = 0; i < size; i++)
+        for (long j = i + 2; j < size; j++) {
+            if (i == 0 && j == size - 1) continue; /* an edge */
+            int inner = i >= 1 && j <= nc - 2, chain = j <= nc - 1, seen;
+            /* chain vertices that do not see each other in the face do
+             * not in the half either */
+            seen = !chain || cm_diagset_has(&f->own[g], (from + i) % m, (from + j) % m);
+            if (seen && inner) {
+                for (long e = nc - 1; seen && e < size; e++) /* the path's links */
+                    seen = cm_segments_intersect(h + 2 * i, h + 2 * j, h + 2 * e, h + 2 * ((e + 1) % size)) == 0;
+            } else if (seen) {
+                seen = cm_segment_inside(h, size, i, h + 2 * i, j, h + 2 * j);
+            }
+            if (seen) cm_diagset_add(set, i, j);
+        }
+    return 0;
+}
+
+/* The half's common diagonals (AND over the geometries of the memo's
+ * sets, computed when missing from xy: derived from the face's when the
+ * cut has bends, else a table of its own). 0, -1 memory, 1 not simple. */
+static int half_common(face_ctx *f, cut_memo *memo, const pair *pr, int half, const long *pick, long m,
+                       double **xy, cm_diagset *common)
+{
+    size_t k = f->p->k;
+    long from = half == 0 ? pr->u : pr->v, nc = m - (pr->links - 1);
+    int derive = pr->links >= 2 ? face_diagonals(f) : 0;
+    if (derive < 0) return -1;
     for (size_t g = 0; g < k; g++) {
         size_t at = ((size_t)half * k + g) * (size_t)memo->per_g + (size_t)pick[g];
         if (memo->state[at] == 0) {
-            int s = common_table((const double *const *)&xy[g], NULL, 1, m, &memo->diag[at]);
+            int s = derive ? half_diagonals(f, g, from, nc, xy[g], m, &memo->diag[at])
+                           : common_table((const double *const *)&xy[g], NULL, 1, m, &memo->diag[at]);
             if (s < 0) return -1;
             memo->state[at] = s == 0 ? 1 : 2;
         }
@@ -614,7 +672,7 @@ static int half_common(cut_memo *memo, size_t k, int half, const long *pick, lon
 
 /* Sum of the halves' stuck costs for the cut u -> bends -> v, bends[g]
  * being choice pick[g] of geometry g. */
-static long cut_cost(const face_ctx *f, const pair *pr, double **bends, const long *pick, cut_memo *memo)
+static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pick, cut_memo *memo)
 {
     size_t k = f->p->k;
     long m = f->it->m, nb = pr->links - 1, total = 0, key = 0;
@@ -643,7 +701,7 @@ static long cut_cost(const face_ctx *f, const pair *pr, double **bends, const lo
         long c = bad ? -1 : 0;
         if (!bad && size > 3) {
             cm_diagset common = {0, 0, NULL};
-            int s = half_common(memo, k, half, pick, size, xy, &common);
+            int s = half_common(f, memo, pr, half, pick, size, xy, &common);
             c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(k, size, xy, &common);
             cm_diagset_clear(&common);
         }
@@ -860,7 +918,7 @@ static int link_split(part *p, item *it)
     if (nsrc > m) nsrc = m;
     double t0 = cm_seconds_now();
     face_ctx f = {p, it, local_xy(p, it), calloc(p->k, sizeof(cm_linkpart *)), malloc((size_t)nsrc * sizeof(long)),
-                  nsrc, malloc((size_t)m * sizeof(long)), malloc(p->k * (size_t)nsrc * (size_t)m * sizeof(int))};
+                  nsrc, malloc((size_t)m * sizeof(long)), malloc(p->k * (size_t)nsrc * (size_t)m * sizeof(int)), NULL, 0};
     unsigned char *open = malloc(p->k * (size_t)nsrc);
     int result = f.l && f.lp && f.src && f.row_of && f.dist && open ? 0 : -1;
     for (long v = 0; result == 0 && v < m; v++) f.row_of[v] = -1;
@@ -888,6 +946,8 @@ static int link_split(part *p, item *it)
     }
     free(open);
     for (size_t g = 0; f.lp && g < p->k; g++) cm_linkpart_free(f.lp[g]);
+    for (size_t g = 0; f.own && g < p->k; g++) cm_diagset_clear(&f.own[g]);
+    free(f.own);
     free(f.lp), free(f.dist), free(f.src), free(f.row_of);
     free_xy(f.l, p->k);
     p->st->seconds_link += cm_seconds_now() - t0;
