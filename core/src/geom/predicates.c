@@ -605,8 +605,12 @@ int cm_segments_intersect(const double a[2], const double b[2],
     if (strictly_below(a, b, c, d, 0) || strictly_below(c, d, a, b, 0) ||
         strictly_below(a, b, c, d, 1) || strictly_below(c, d, a, b, 1))
         return 0;
+    /* c and d strictly on one side of line ab (or a and b of line cd):
+     * no common point, whatever the other two tests say. */
     int abc = cm_orient2d(a, b, c), abd = cm_orient2d(a, b, d);
+    if (abc * abd > 0) return 0;
     int cda = cm_orient2d(c, d, a), cdb = cm_orient2d(c, d, b);
+    if (cda * cdb > 0) return 0;
     if (abc * abd < 0 && cda * cdb < 0) return 1;
     if ((abc == 0 && between_collinear(a, b, c)) ||
         (abd == 0 && between_collinear(a, b, d)) ||

@@ -160,6 +160,10 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
 {
     if (a[0] == b[0] && a[1] == b[1]) return 0;
     if (ia >= 0 && ib >= 0 && adjacent(m, ia, ib)) return 0;
+    /* the constant-time conditions first: a segment leaving outward needs
+     * no scan */
+    if (ia >= 0 && !leaves_inward(xy, m, ia, b)) return 0;
+    if (ib >= 0 && !leaves_inward(xy, m, ib, a)) return 0;
     for (long i = 0; i < m; i++) {
         long j = (i + 1) % m;
         const double *e0 = xy + 2 * i, *e1 = xy + 2 * j;
@@ -173,8 +177,6 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
         }
         if (cm_segments_intersect(a, b, e0, e1) != 0) return 0;
     }
-    if (ia >= 0 && !leaves_inward(xy, m, ia, b)) return 0;
-    if (ib >= 0 && !leaves_inward(xy, m, ib, a)) return 0;
     if (ia < 0 && ib < 0) {
         /* No contact with the boundary: inside iff a is inside. */
         long crossings = 0;
