@@ -477,6 +477,55 @@ static void test_segments_intersect(void)
     CHECK(segments(1e-300, 0, 3e-300, 0, 2e-300, 0, 2e-300, 1e-310) == 2);
 }
 
+/* Every pair of segments with ends on a 4 x 4 integer grid (collinear,
+ * touching, overlapping, with bounding boxes that only touch), scaled by
+ * 2^scale, against the textbook classification in integer arithmetic:
+ * 1 proper crossing, 2 a common point otherwise, 0 none. */
+static long cross_sign(const long *a, const long *b, const long *c)
+{
+    long v = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    return (v > 0) - (v < 0);
+}
+
+static int on_collinear(const long *a, const long *b, const long *p)
+{
+    return p[0] >= (a[0] < b[0] ? a[0] : b[0]) && p[0] <= (a[0] > b[0] ? a[0] : b[0]) &&
+           p[1] >= (a[1] < b[1] ? a[1] : b[1]) && p[1] <= (a[1] > b[1] ? a[1] : b[1]);
+}
+
+static int ref_segments(const long *a, const long *b, const long *c, const long *d)
+{
+    long o1 = cross_sign(a, b, c), o2 = cross_sign(a, b, d), o3 = cross_sign(c, d, a), o4 = cross_sign(c, d, b);
+    if (o1 * o2 < 0 && o3 * o4 < 0) return 1;
+    if ((o1 == 0 && on_collinear(a, b, c)) || (o2 == 0 && on_collinear(a, b, d)) ||
+        (o3 == 0 && on_collinear(c, d, a)) || (o4 == 0 && on_collinear(c, d, b)))
+        return 2;
+    return 0;
+}
+
+static void test_segments_grid(int scale)
+{
+    long p[16][2];
+    for (int i = 0; i < 16; i++) p[i][0] = i % 4, p[i][1] = i / 4;
+    long mismatches = 0, counts[3] = {0, 0, 0};
+    for (int a = 0; a < 16; a++)
+        for (int b = 0; b < 16; b++)
+            for (int c = 0; c < 16; c++)
+                for (int d = 0; d < 16; d++) {
+                    double x[4][2];
+                    const int at[4] = {a, b, c, d};
+                    for (int i = 0; i < 4; i++)
+                        x[i][0] = ldexp((double)p[at[i]][0], scale), x[i][1] = ldexp((double)p[at[i]][1], scale);
+                    int want = ref_segments(p[a], p[b], p[c], p[d]);
+                    mismatches += cm_segments_intersect(x[0], x[1], x[2], x[3]) != want;
+                    counts[want]++;
+                }
+    CHECK_MSG(mismatches == 0, "scale 2^%d: %ld of 65536", scale, mismatches);
+    /* all three outcomes occur often */
+    CHECK_MSG(counts[0] > 10000 && counts[1] > 1000 && counts[2] > 10000, "scale 2^%d: %ld %ld %ld", scale,
+              counts[0], counts[1], counts[2]);
+}
+
 /* ---- polygon orientation ------------------------------------------------ */
 
 static void test_polygon_orientation(void)
@@ -556,6 +605,9 @@ int main(void)
     test_incircle_partial_underflow();
     test_grid_symmetries();
     test_segments_intersect();
+    test_segments_grid(0);
+    test_segments_grid(-1000);
+    test_segments_grid(1000);
     test_polygon_orientation();
     return check_summary("test_predicates");
 }

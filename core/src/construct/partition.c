@@ -448,6 +448,9 @@ typedef struct {
     long *src, nsrc;     /* the sources: local vertices, ascending */
     long *row_of;        /* per vertex: its source row, -1 if not one */
     int *dist;           /* k * nsrc * m: from each source to every vertex */
+    cm_diagset *own;     /* k: the face's diagonals in each geometry, for
+                            the halves of its cuts; NULL until needed */
+    int own_state;       /* 0 not yet, 1 done, -1 not available */
 } face_ctx;
 
 static int *dist_row(const face_ctx *f, size_t g, long row)
@@ -550,22 +553,18 @@ fail:
 static const double offsets[] = {0.0, 0.12, -0.12, 0.3, -0.3};
 #define NOFFSETS (sizeof offsets / sizeof offsets[0])
 
-/* Estimated Steiner vertices of a polygon given by k coordinate arrays:
- * its Steiner-free plan, each stuck face counted 1 if it is star-shaped in
- * every geometry (a fan) and (vertices - 3) otherwise, or 1 if the whole
- * polygon is star-shaped. -1 out of memory, LONG_MAX if not simple. */
-static long polygon_cost(size_t k, long m, double **xy)
+/* Estimated Steiner vertices of a polygon given by k coordinate arrays
+ * and its common diagonals: its Steiner-free plan, each stuck face counted
+ * 1 if it is star-shaped in every geometry (a fan) and (vertices - 3)
+ * otherwise, or 1 if the whole polygon is star-shaped. -1 out of memory. */
+static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common)
 {
-    if (m <= 3) return 0;
-    cm_diagset common = {0, 0, NULL};
-    cm_diagview view = {&common, NULL};
+    cm_diagview view = {common, NULL};
     double *pos = malloc(2 * k * sizeof *pos);
     int32_t *all = malloc((size_t)m * sizeof *all);
     long cost = -1;
     cm_sf_plan plan;
-    int s = pos && all ? common_table((const double *const *)xy, NULL, k, m, &common) : -1;
-    if (s > 0) cost = LONG_MAX;
-    if (s == 0 && cm_steinerfree_plan(m, &view, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
+    if (pos && all && cm_steinerfree_plan(m, &view, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
         cost = 0;
         for (long f = 0; f < plan.nf && cost >= 0; f++) {
             long n = plan.face_start[f + 1] - plan.face_start[f];
@@ -579,16 +578,106 @@ static long polygon_cost(size_t k, long m, double **xy)
         }
         cm_sf_plan_clear(&plan);
     }
-    cm_diagset_clear(&common);
     free(pos), free(all);
     return cost;
 }
 
-/* Sum of the halves' stuck costs for the cut u -> bends -> v. */
-static long cut_cost(const face_ctx *f, const pair *pr, double **bends)
+/* What the search over a cut's choices has computed: each half's
+ * diagonals in each geometry for each choice of that geometry's bends
+ * (they depend on nothing else), and the cost of each combination. */
+typedef struct {
+    long per_g;           /* choices per geometry slot (the most of any) */
+    cm_diagset *diag;     /* [(half * k + g) * per_g + choice] */
+    signed char *state;   /* same index: 0 not yet, 1 done, 2 not simple */
+    long *cost;           /* [choice_0 + per_g * (choice_1 + ...)], -2 unknown */
+} cut_memo;
+
+/* The face's own diagonals in every geometry (once per face). 1, 0 not
+ * available (then the halves get tables of their own), -1 memory. */
+static int face_diagonals(face_ctx *f)
 {
     size_t k = f->p->k;
-    long m = f->it->m, nb = pr->links - 1, total = 0;
+    if (f->own_state == 0) {
+        f->own = calloc(k, sizeof *f->own);
+        if (!f->own) return -1;
+        f->own_state = 1;
+        for (size_t g = 0; g < k && f->own_state == 1; g++) {
+            int s = common_table((const double *const *)&f->l[g], NULL, 1, f->it->m, &f->own[g]);
+            if (s < 0) return -1;
+            if (s > 0) f->own_state = -1;
+        }
+    }
+    return f->own_state == 1;
+}
+
+/* The diagonals of a half h[0..size-1] of the face in geometry g: the
+ * face's chain from vertex `from` (h[0]) to h[nc - 1], then the bends
+ * back to h[0] (the path P). The half lies inside the face, so two chain
+ * vertices other than the path's ends span a diagonal of the half iff
+ * they span one of the face and their segment misses P (both ends lie off
+ * P, so only the open segment can touch it). Every other pair is tested
+ * on the half directly. Exact, as the tables are. 0 or -1 memory. */
+static int half_diagonals(const face_ctx *f, size_t g, long from, long nc, const double *h, long size,
+                          cm_diagset *set)
+{
+    long m = f->it->m;
+    if (cm_diagset_init(set, size) != 0) return -1;
+    for (long i = 0; i < size; i++)
+        for (long j = i + 2; j < size; j++) {
+            if (i == 0 && j == size - 1) continue; /* an edge */
+            int inner = i >= 1 && j <= nc - 2, chain = j <= nc - 1, seen;
+            /* chain vertices that do not see each other in the face do
+             * not in the half either */
+            seen = !chain || cm_diagset_has(&f->own[g], (from + i) % m, (from + j) % m);
+            if (seen && inner) {
+                for (long e = nc - 1; seen && e < size; e++) /* the path's links */
+                    seen = cm_segments_intersect(h + 2 * i, h + 2 * j, h + 2 * e, h + 2 * ((e + 1) % size)) == 0;
+            } else if (seen) {
+                seen = cm_segment_inside(h, size, i, h + 2 * i, j, h + 2 * j);
+            }
+            if (seen) cm_diagset_add(set, i, j);
+        }
+    return 0;
+}
+
+/* The half's common diagonals (AND over the geometries of the memo's
+ * sets, computed when missing from xy: derived from the face's when the
+ * cut has bends, else a table of its own). 0, -1 memory, 1 not simple. */
+static int half_common(face_ctx *f, cut_memo *memo, const pair *pr, int half, const long *pick, long m,
+                       double **xy, cm_diagset *common)
+{
+    size_t k = f->p->k;
+    long from = half == 0 ? pr->u : pr->v, nc = m - (pr->links - 1);
+    int derive = pr->links >= 2 ? face_diagonals(f) : 0;
+    if (derive < 0) return -1;
+    for (size_t g = 0; g < k; g++) {
+        size_t at = ((size_t)half * k + g) * (size_t)memo->per_g + (size_t)pick[g];
+        if (memo->state[at] == 0) {
+            int s = derive ? half_diagonals(f, g, from, nc, xy[g], m, &memo->diag[at])
+                           : common_table((const double *const *)&xy[g], NULL, 1, m, &memo->diag[at]);
+            if (s < 0) return -1;
+            memo->state[at] = s == 0 ? 1 : 2;
+        }
+        if (memo->state[at] == 2) return 1;
+    }
+    if (cm_diagset_init(common, m) != 0) return -1;
+    size_t words = common->stride * (size_t)m;
+    for (size_t w = 0; w < words; w++) {
+        uint64_t bits = ~(uint64_t)0;
+        for (size_t g = 0; g < k; g++) bits &= memo->diag[((size_t)half * k + g) * (size_t)memo->per_g + (size_t)pick[g]].bits[w];
+        common->bits[w] = bits;
+    }
+    return 0;
+}
+
+/* Sum of the halves' stuck costs for the cut u -> bends -> v, bends[g]
+ * being choice pick[g] of geometry g. */
+static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pick, cut_memo *memo)
+{
+    size_t k = f->p->k;
+    long m = f->it->m, nb = pr->links - 1, total = 0, key = 0;
+    for (size_t g = k; g-- > 0;) key = key * memo->per_g + pick[g];
+    if (memo->cost[key] != -2) return memo->cost[key];
     double **xy = calloc(k, sizeof *xy);
     if (!xy) return -1;
     for (int half = 0; half < 2 && total >= 0 && total < LONG_MAX; half++) {
@@ -609,11 +698,18 @@ static long cut_cost(const face_ctx *f, const pair *pr, double **bends)
                 xy[g][2 * n] = bends[g][2 * b], xy[g][2 * n + 1] = bends[g][2 * b + 1], n++;
             }
         }
-        long c = bad ? -1 : polygon_cost(k, size, xy);
+        long c = bad ? -1 : 0;
+        if (!bad && size > 3) {
+            cm_diagset common = {0, 0, NULL};
+            int s = half_common(f, memo, pr, half, pick, size, xy, &common);
+            c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(k, size, xy, &common);
+            cm_diagset_clear(&common);
+        }
         total = c < 0 ? -1 : c == LONG_MAX ? LONG_MAX : total + c;
         for (size_t g = 0; g < k; g++) free(xy[g]), xy[g] = NULL;
     }
     free(xy);
+    if (total >= 0) memo->cost[key] = total;
     return total;
 }
 
@@ -691,8 +787,9 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
     long m = f->it->m, want = pr->links - 1, per = 2 * want;
     int search = m <= REFINE_SEARCH_MAX;
     choices *c = calloc(k, sizeof *c);
-    long *pick = calloc(k, sizeof *pick), best = LONG_MAX;
-    int result = c && pick ? 1 : -1;
+    long *pick = calloc(k, sizeof *pick), *cur = calloc(k, sizeof *cur), best = LONG_MAX;
+    cut_memo memo = {0, NULL, NULL, NULL};
+    int result = c && pick && cur ? 1 : -1;
     for (size_t g = 0; g < k && result == 1; g++) {
         double *path = NULL;
         long nb = 0;
@@ -706,17 +803,29 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
         free(path);
     }
     for (size_t g = 0; g < k && result == 1; g++) bends[g] = c[g].bends; /* views while searching */
-    if (result == 1 && search) best = cut_cost(f, pr, bends);
+    if (result == 1 && search) {
+        size_t combos = 1;
+        for (size_t g = 0; g < k; g++) memo.per_g = c[g].count > memo.per_g ? c[g].count : memo.per_g;
+        for (size_t g = 0; g < k; g++) combos *= (size_t)memo.per_g;
+        memo.diag = calloc(2 * k * (size_t)memo.per_g, sizeof *memo.diag);
+        memo.state = calloc(2 * k * (size_t)memo.per_g, sizeof *memo.state);
+        memo.cost = malloc(combos * sizeof *memo.cost);
+        for (size_t i = 0; memo.cost && i < combos; i++) memo.cost[i] = -2;
+        if (!memo.diag || !memo.state || !memo.cost) result = -1;
+    }
+    if (result == 1 && search) best = cut_cost(f, pr, bends, cur, &memo);
     for (int pass = 0; pass < 2 && result == 1 && search && best > 0; pass++)
         for (size_t g = 0; g < k && best > 0; g++)
             for (long i = 0; i < c[g].count && best > 0; i++) {
                 if (i == pick[g]) continue;
-                bends[g] = c[g].bends + per * i;
-                long cost_i = cut_cost(f, pr, bends);
+                bends[g] = c[g].bends + per * i, cur[g] = i;
+                long cost_i = cut_cost(f, pr, bends, cur, &memo);
                 if (cost_i < 0) result = -1;
                 if (cost_i >= 0 && cost_i < best) best = cost_i, pick[g] = i;
-                bends[g] = c[g].bends + per * pick[g];
+                bends[g] = c[g].bends + per * pick[g], cur[g] = pick[g];
             }
+    for (size_t i = 0; memo.diag && i < 2 * k * (size_t)memo.per_g; i++) cm_diagset_clear(&memo.diag[i]);
+    free(memo.diag), free(memo.state), free(memo.cost), free(cur);
     /* hand over copies of the picked choices */
     for (size_t g = 0; g < k; g++) {
         double *b = result == 1 ? malloc(sizeof(double) * (size_t)(per > 0 ? per : 1)) : NULL;
@@ -809,7 +918,7 @@ static int link_split(part *p, item *it)
     if (nsrc > m) nsrc = m;
     double t0 = cm_seconds_now();
     face_ctx f = {p, it, local_xy(p, it), calloc(p->k, sizeof(cm_linkpart *)), malloc((size_t)nsrc * sizeof(long)),
-                  nsrc, malloc((size_t)m * sizeof(long)), malloc(p->k * (size_t)nsrc * (size_t)m * sizeof(int))};
+                  nsrc, malloc((size_t)m * sizeof(long)), malloc(p->k * (size_t)nsrc * (size_t)m * sizeof(int)), NULL, 0};
     unsigned char *open = malloc(p->k * (size_t)nsrc);
     int result = f.l && f.lp && f.src && f.row_of && f.dist && open ? 0 : -1;
     for (long v = 0; result == 0 && v < m; v++) f.row_of[v] = -1;
@@ -837,6 +946,8 @@ static int link_split(part *p, item *it)
     }
     free(open);
     for (size_t g = 0; f.lp && g < p->k; g++) cm_linkpart_free(f.lp[g]);
+    for (size_t g = 0; f.own && g < p->k; g++) cm_diagset_clear(&f.own[g]);
+    free(f.own);
     free(f.lp), free(f.dist), free(f.src), free(f.row_of);
     free_xy(f.l, p->k);
     p->st->seconds_link += cm_seconds_now() - t0;

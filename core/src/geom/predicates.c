@@ -58,7 +58,6 @@
 /* Shewchuk's bounds (section 4): A for the double evaluation, B for the
  * exact determinant of rounded differences, C for its first-order
  * correction, plus the rounding of the corrected result. */
-static const double orient_errbound = (3.0 + 16.0 * CM_EPS) * CM_EPS;
 static const double orient_errbound_b = (2.0 + 12.0 * CM_EPS) * CM_EPS;
 static const double orient_errbound_c = (9.0 + 64.0 * CM_EPS) * CM_EPS * CM_EPS;
 static const double incircle_errbound = (10.0 + 96.0 * CM_EPS) * CM_EPS;
@@ -390,8 +389,7 @@ static int blend_positive_gmp(const double *const pts[6])
  * 2^1000. */
 #define ORIENT_EXACT_MIN 0x1p-458
 
-static int orient2d_adapt(const double a[2], const double b[2],
-                          const double c[2])
+int cm_orient2d_adaptive(const double a[2], const double b[2], const double c[2])
 {
     /* Exact differences (collinear outline points usually have them): the
      * determinant is l - r with l = l1 + l0, r = r1 + r0 exactly, and
@@ -438,22 +436,12 @@ static int orient2d_adapt(const double a[2], const double b[2],
     return cm_expansion_sign(n, exact);
 }
 
-int cm_orient2d(const double a[2], const double b[2], const double c[2])
+int cm_orient2d_compiled(const double a[2], const double b[2], const double c[2])
 {
-    double acx = a[0] - c[0], bcx = b[0] - c[0];
-    double acy = a[1] - c[1], bcy = b[1] - c[1];
-    double diff[4] = {acx, bcx, acy, bcy};
-    /* Differences 0 or within 2^[-500, 500]: products 0 or within
-     * 2^[-1000, 1000], so nothing below overflows or underflows. */
-    if (all_within(diff, 4, ORIENT_MIN, ORIENT_MAX)) {
-        double detleft = acx * bcy;
-        double detright = acy * bcx;
-        double det = detleft - detright;
-        double errbound = orient_errbound * (fabs(detleft) + fabs(detright));
-        if (fabs(det) > errbound) return sign_of(det);
-    }
-    return orient2d_adapt(a, b, c);
+    int s = cm_orient2d_filter(a, b, c);
+    return s != 2 ? s : cm_orient2d_adaptive(a, b, c);
 }
+
 
 /* ---- incircle ------------------------------------------------------------ */
 
@@ -588,11 +576,29 @@ static int between_collinear(const double a[2], const double b[2],
     return !cm_point_less(p, lo) && !cm_point_less(hi, p);
 }
 
+/* Both ends of ab strictly below both ends of cd along axis x (0) or y
+ * (1): then the segments share no point. Exact comparisons; false when a
+ * coordinate is NaN, leaving that case to the predicates. */
+static int strictly_below(const double a[2], const double b[2], const double c[2],
+                          const double d[2], int x)
+{
+    return a[x] < c[x] && a[x] < d[x] && b[x] < c[x] && b[x] < d[x];
+}
+
 int cm_segments_intersect(const double a[2], const double b[2],
                           const double c[2], const double d[2])
 {
+    /* Most segment pairs a polygon scan meets are far apart: disjoint
+     * bounding boxes settle them without a predicate. */
+    if (strictly_below(a, b, c, d, 0) || strictly_below(c, d, a, b, 0) ||
+        strictly_below(a, b, c, d, 1) || strictly_below(c, d, a, b, 1))
+        return 0;
+    /* c and d strictly on one side of line ab (or a and b of line cd):
+     * no common point, whatever the other two tests say. */
     int abc = cm_orient2d(a, b, c), abd = cm_orient2d(a, b, d);
+    if (abc * abd > 0) return 0;
     int cda = cm_orient2d(c, d, a), cdb = cm_orient2d(c, d, b);
+    if (cda * cdb > 0) return 0;
     if (abc * abd < 0 && cda * cdb < 0) return 1;
     if ((abc == 0 && between_collinear(a, b, c)) ||
         (abd == 0 && between_collinear(a, b, d)) ||

@@ -5,11 +5,58 @@
 #ifndef CM_PREDICATES_H
 #define CM_PREDICATES_H
 
+#include <float.h>
+#include <math.h>
+
 /* Unit roundoff of IEEE double with round-to-nearest. */
 #define CM_EPS 0x1p-53
 
+/* cm_orient2d's floating-point filter (Shewchuk's bound A): the sign, or
+ * 2 when the bound cannot decide. Its error bound counts one rounding per
+ * operation: it is only inline where no compiler may fuse a*b - c*d (see
+ * CM_ORIENT2D_INLINE), else it runs inside predicates.c. */
+static inline int cm_orient2d_filter(const double a[2], const double b[2], const double c[2])
+{
+#ifdef __clang__
+#pragma STDC FP_CONTRACT OFF
+#endif
+    double acx = a[0] - c[0], bcx = b[0] - c[0], acy = a[1] - c[1], bcy = b[1] - c[1];
+    double m0 = fabs(acx), m1 = fabs(bcx), m2 = fabs(acy), m3 = fabs(bcy);
+    /* Differences 0 or within 2^[-500, 500]: products 0 or within
+     * 2^[-1000, 1000], so nothing below overflows or underflows. */
+    if ((m0 == 0.0 || (m0 >= 0x1p-500 && m0 <= 0x1p+500)) && (m1 == 0.0 || (m1 >= 0x1p-500 && m1 <= 0x1p+500)) &&
+        (m2 == 0.0 || (m2 >= 0x1p-500 && m2 <= 0x1p+500)) && (m3 == 0.0 || (m3 >= 0x1p-500 && m3 <= 0x1p+500))) {
+        double detleft = acx * bcy, detright = acy * bcx, det = detleft - detright;
+        double errbound = (3.0 + 16.0 * CM_EPS) * CM_EPS * (fabs(detleft) + fabs(detright));
+        if (fabs(det) > errbound) return (det > 0.0) - (det < 0.0);
+    }
+    return 2;
+}
+
+/* The stages after the filter (any input; exact). */
+int cm_orient2d_adaptive(const double a[2], const double b[2], const double c[2]);
+/* Filter and stages, compiled in predicates.c. */
+int cm_orient2d_compiled(const double a[2], const double b[2], const double c[2]);
+
+/* The filter inline (it decides almost every call of the geometric loops)
+ * only where products are rounded separately: clang (the pragma above),
+ * or GCC compiling ISO C (fp-contract off), with doubles evaluated in
+ * double precision. */
+#if FLT_EVAL_METHOD == 0 && !defined(__cplusplus) && \
+    (defined(__clang__) || (defined(__GNUC__) && defined(__STRICT_ANSI__)))
+#define CM_ORIENT2D_INLINE 1
+#endif
+
 /* +1 if a, b, c turn counter-clockwise, -1 clockwise, 0 collinear. */
-int cm_orient2d(const double a[2], const double b[2], const double c[2]);
+static inline int cm_orient2d(const double a[2], const double b[2], const double c[2])
+{
+#ifdef CM_ORIENT2D_INLINE
+    int s = cm_orient2d_filter(a, b, c);
+    return s != 2 ? s : cm_orient2d_adaptive(a, b, c);
+#else
+    return cm_orient2d_compiled(a, b, c);
+#endif
+}
 
 /* +1 if d lies strictly inside the circle through a, b, c (given
  * counter-clockwise), -1 outside, 0 on it. */

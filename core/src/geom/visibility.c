@@ -160,8 +160,18 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
 {
     if (a[0] == b[0] && a[1] == b[1]) return 0;
     if (ia >= 0 && ib >= 0 && adjacent(m, ia, ib)) return 0;
+    /* the constant-time conditions first: a segment leaving outward needs
+     * no scan */
+    if (ia >= 0 && !leaves_inward(xy, m, ia, b)) return 0;
+    if (ib >= 0 && !leaves_inward(xy, m, ib, a)) return 0;
+    /* ab's box: edges entirely to one side of it cannot meet ab (exact
+     * comparisons, the test cm_segments_intersect starts with, here
+     * without the call; skipped for NaN coordinates) */
+    const double lo[2] = {a[0] < b[0] ? a[0] : b[0], a[1] < b[1] ? a[1] : b[1]};
+    const double hi[2] = {a[0] < b[0] ? b[0] : a[0], a[1] < b[1] ? b[1] : a[1]};
+    int boxed = a[0] == a[0] && a[1] == a[1] && b[0] == b[0] && b[1] == b[1];
     for (long i = 0; i < m; i++) {
-        long j = (i + 1) % m;
+        long j = i + 1 < m ? i + 1 : 0;
         const double *e0 = xy + 2 * i, *e1 = xy + 2 * j;
         if (ia == i || ia == j) {
             if (!edge_touches_only_at_end(a, b, ia == i ? e1 : e0)) return 0;
@@ -171,15 +181,16 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
             if (!edge_touches_only_at_end(b, a, ib == i ? e1 : e0)) return 0;
             continue;
         }
+        if (boxed && ((e0[0] < lo[0] && e1[0] < lo[0]) || (e0[0] > hi[0] && e1[0] > hi[0]) ||
+                      (e0[1] < lo[1] && e1[1] < lo[1]) || (e0[1] > hi[1] && e1[1] > hi[1])))
+            continue;
         if (cm_segments_intersect(a, b, e0, e1) != 0) return 0;
     }
-    if (ia >= 0 && !leaves_inward(xy, m, ia, b)) return 0;
-    if (ib >= 0 && !leaves_inward(xy, m, ib, a)) return 0;
     if (ia < 0 && ib < 0) {
         /* No contact with the boundary: inside iff a is inside. */
         long crossings = 0;
         for (long i = 0; i < m; i++) {
-            const double *e0 = xy + 2 * i, *e1 = xy + 2 * ((i + 1) % m);
+            const double *e0 = xy + 2 * i, *e1 = xy + 2 * (i + 1 < m ? i + 1 : 0);
             int up = e0[1] <= a[1] && e1[1] > a[1], down = e1[1] <= a[1] && e0[1] > a[1];
             if (up && cm_orient2d(e0, e1, a) > 0) crossings++;
             if (down && cm_orient2d(e0, e1, a) < 0) crossings++;
