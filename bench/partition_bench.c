@@ -527,7 +527,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "cm_partition_bench: cannot write %s: %s\n", out, strerror(errno));
         return 1;
     }
-    fprintf(f, "# Partition vs overlay\n\n");
+    fprintf(f, "# The partition against the overlay and against CGAL\n\n");
     char date[32] = "";
     time_t now = time(NULL);
     strftime(date, sizeof date, "%Y-%m-%d", gmtime(&now));
