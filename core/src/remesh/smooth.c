@@ -204,121 +204,15 @@ static int no_gain(cm_kmesh *km, size_t g, int32_t v)
     return 0;
 }
 
-/* The position search: a few max-min steps. Each linearises the smallest
- * angles of v's star at the current point (closed-form gradients in q) and
- * maximises the smallest linearised angle over a square trust region (a
- * 2-D LP solved exactly: its optimum is a box corner, a point where two
- * linearised angles meet the box's edge, or one where three meet); the
- * step is halved till the true smallest angle (sin^2, as the other
- * searches) strictly gains at a position valid by the exact predicates. */
-#define CM_LP_ANGLES 3
-#define CM_LP_STEPS 4
-#define CM_LP_HALVINGS 4
-
-/* One angle of triangle (q, p[i], p[i+1]): corner s (0 at q, 1 at p[i],
- * 2 at p[i+1]), cross and dot products of its sides (angle atan2(cr, dot)). */
-typedef struct lin { double a, gx, gy, cr, dot; long i; int s; } lin;
-
-/* Angle x smaller than angle y, both in (0, pi): cotangents compared
- * without a division. */
-static inline int lin_below(const lin *x, const lin *y) { return x->dot * y->cr > y->dot * x->cr; }
-
-/* x's angle and its gradient in q. */
-static void lin_grad(const ring *r, const double q[2], lin *x)
-{
-    const double *b = r->p[x->i], *c = r->p[x->i + 1];
-    double ux = b[0] - q[0], uy = b[1] - q[1], wx = c[0] - q[0], wy = c[1] - q[1];
-    double ex = c[0] - b[0], ey = c[1] - b[1], le = r->link2[x->i], cr = x->cr;
-    double db = -(ux * ex + uy * ey), dc = ex * wx + ey * wy, nb = (ux * ux + uy * uy) * le, nc = (wx * wx + wy * wy) * le;
-    double bx = (-db * ey - cr * ex) / nb, by = (db * ex - cr * ey) / nb; /* angle at p[i] */
-    double cx = (-dc * ey + cr * ex) / nc, cy = (dc * ex + cr * ey) / nc; /* angle at p[i+1] */
-    x->a = atan2(cr, x->dot);
-    if (x->s == 1) x->gx = bx, x->gy = by;
-    else if (x->s == 2) x->gx = cx, x->gy = cy;
-    else x->gx = -(bx + cx), x->gy = -(by + cy); /* the three sum to pi */
-}
-
-static double lin_min(const lin *c, int n, double dx, double dy)
-{
-    double t = HUGE_VAL;
-    for (int j = 0; j < n; j++) t = fmin(t, c[j].a + c[j].gx * dx + c[j].gy * dy);
-    return t;
-}
-
-static void lp_try(const lin *c, int n, double dx, double dy, double d[2], double *best)
-{
-    double t = lin_min(c, n, dx, dy);
-    if (t > *best) *best = t, d[0] = dx, d[1] = dy;
-}
-
-/* max over |dx|, |dy| <= h of min_j a_j + g_j . d; d is set only where it
- * beats *best. */
-static void lp_step(const lin *c, int n, double h, double d[2], double *best)
-{
-    for (int j = 0; j < n; j++)
-        lp_try(c, n, c[j].gx >= 0 ? h : -h, c[j].gy >= 0 ? h : -h, d, best);
-    for (int i = 0; i < n; i++)
-        for (int j = i + 1; j < n; j++) { /* nx dx + ny dy = rr: angles i and j equal */
-            double nx = c[i].gx - c[j].gx, ny = c[i].gy - c[j].gy, rr = c[j].a - c[i].a;
-            for (int e = -1; e <= 1; e += 2) {
-                if (ny != 0) {
-                    double y = (rr - nx * e * h) / ny;
-                    if (fabs(y) <= h) lp_try(c, n, e * h, y, d, best);
-                }
-                if (nx != 0) {
-                    double x = (rr - ny * e * h) / nx;
-                    if (fabs(x) <= h) lp_try(c, n, x, e * h, d, best);
-                }
-            }
-            for (int k = j + 1; k < n; k++) { /* and k */
-                double mx = c[i].gx - c[k].gx, my = c[i].gy - c[k].gy, rk = c[k].a - c[i].a;
-                double det = nx * my - ny * mx;
-                if (det == 0) continue;
-                double x = (rr * my - ny * rk) / det, y = (nx * rk - rr * mx) / det;
-                if (fabs(x) <= h && fabs(y) <= h) lp_try(c, n, x, y, d, best);
-            }
-        }
-}
-
-/* Moves best[] by max-min steps from a trust region of half-width h;
- * q is sin^2 of the smallest angle at best[], raised as it gains. */
-static void lp_search(ring *r, double best[2], double *q, double h)
-{
-    for (int it = 0; it < CM_LP_STEPS; it++) {
-        lin c[CM_LP_ANGLES];
-        int n = 0;
-        for (long i = 0; i < r->m; i++) { /* the smallest angles, sorted */
-            const double *b = r->p[i], *e = r->p[i + 1];
-            double ux = b[0] - best[0], uy = b[1] - best[1], wx = e[0] - best[0], wy = e[1] - best[1];
-            double ex = e[0] - b[0], ey = e[1] - b[1], cr = ux * wy - uy * wx;
-            double dots[3] = {ux * wx + uy * wy, -(ux * ex + uy * ey), ex * wx + ey * wy};
-            for (int s = 0; s < 3; s++) {
-                lin x = {0, 0, 0, cr, dots[s], i, s};
-                int at = n;
-                if (n == CM_LP_ANGLES) {
-                    if (!lin_below(&x, &c[n - 1])) continue;
-                    at = n - 1;
-                } else n++;
-                while (at > 0 && lin_below(&x, &c[at - 1])) c[at] = c[at - 1], at--;
-                c[at] = x;
-            }
-        }
-        for (int s = 0; s < n; s++) lin_grad(r, best, &c[s]);
-        double d[2] = {0, 0}, t = c[0].a;
-        lp_step(c, n, h, d, &t);
-        if (!(t > c[0].a)) return; /* stationary for the linearised angles */
-        int moved = 0;
-        for (int k = 0; k < CM_LP_HALVINGS && !moved; k++, d[0] *= 0.5, d[1] *= 0.5) {
-            double p[2] = {best[0] + d[0], best[1] + d[1]};
-            double qp = star_sin2_above(r, p, *q);
-            if (qp > *q && star_valid(r, p)) *q = qp, best[0] = p[0], best[1] = p[1], moved = 1;
-        }
-        if (!moved) return; /* the linearisation misleads here even at 1/8 of the step */
-    }
-}
+/* Steps of the pattern search below. */
+#define CM_OPTIMIZE_STEPS 10
 
 int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
 {
+    static const double dir[8][2] = {{1, 0}, {0.7071067811865476, 0.7071067811865476}, {0, 1},
+                                     {-0.7071067811865476, 0.7071067811865476}, {-1, 0},
+                                     {-0.7071067811865476, -0.7071067811865476}, {0, -1},
+                                     {0.7071067811865476, -0.7071067811865476}};
     if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0 || !(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
     long m = cm_kmesh_star(km, v, star);
     if (m < 0) return m == -1 ? -1 : 0;
@@ -334,7 +228,16 @@ int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
         double dx = r.p[i][0] - best[0], dy = r.p[i][1] - best[1];
         if (!(dx * dx + dy * dy > near2 * (1 + 1e-9))) step = fmin(step, hypot(dx, dy));
     }
-    lp_search(&r, best, &q, 0.25 * step);
+    step *= 0.25;
+    for (int it = 0; it < CM_OPTIMIZE_STEPS && step > 0; it++) {
+        int improved = 0;
+        for (int d = 0; d < 8; d++) {
+            double p[2] = {best[0] + step * dir[d][0], best[1] + step * dir[d][1]};
+            double qp = star_sin2_above(&r, p, q);
+            if (qp > q && star_valid(&r, p)) q = qp, best[0] = p[0], best[1] = p[1], improved = 1;
+        }
+        if (!improved) step *= 0.5;
+    }
     if (!(sin2_to_angle(q) > sin2_to_angle(start) + CM_SMOOTH_GAIN)) return no_gain(km, g, v);
     cm_kmesh_move(km, g, v, best, star);
     return 1;
