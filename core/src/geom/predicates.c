@@ -68,8 +68,6 @@ static const double orient3d_errbound_b = (3.0 + 28.0 * CM_EPS) * CM_EPS;
 static const double result_errbound = (3.0 + 8.0 * CM_EPS) * CM_EPS;
 
 /* Bounds on the magnitude of the filters' inputs; see the callers. */
-#define ORIENT_MIN 0x1p-500
-#define ORIENT_MAX 0x1p+500
 #define INCIRCLE_MIN 0x1p-200
 #define INCIRCLE_MAX 0x1p+200
 #define ORIENT3D_MIN 0x1p-300
@@ -79,17 +77,10 @@ static const double result_errbound = (3.0 + 8.0 * CM_EPS) * CM_EPS;
 #define EXACT_LOW(d) (-892 / (d))
 #define EXACT_HIGH(d) (940 / (d) - 1)
 
-/* True if v is zero or min <= |v| <= max (false for NaN and infinity). */
-static int magnitude_within(double v, double min, double max)
-{
-    double m = fabs(v);
-    return m == 0.0 || (m >= min && m <= max);
-}
-
 static int all_within(const double *v, long count, double min, double max)
 {
     for (long i = 0; i < count; i++)
-        if (!magnitude_within(v[i], min, max)) return 0;
+        if (!cm_magnitude_within(v[i], min, max)) return 0;
     return 1;
 }
 
@@ -397,7 +388,7 @@ int cm_orient2d_adaptive(const double a[2], const double b[2], const double c[2]
     double dx[4] = {a[0] - c[0], b[0] - c[0], a[1] - c[1], b[1] - c[1]};
     if (cm_diff_tail(a[0], c[0], dx[0]) == 0.0 && cm_diff_tail(b[0], c[0], dx[1]) == 0.0 &&
         cm_diff_tail(a[1], c[1], dx[2]) == 0.0 && cm_diff_tail(b[1], c[1], dx[3]) == 0.0 &&
-        all_within(dx, 4, ORIENT_EXACT_MIN, ORIENT_MAX)) {
+        all_within(dx, 4, ORIENT_EXACT_MIN, CM_ORIENT_MAX)) {
         double l1, l0, r1, r0;
         cm_two_product(dx[0], dx[3], &l1, &l0);
         cm_two_product(dx[2], dx[1], &r1, &r0);
@@ -441,7 +432,6 @@ int cm_orient2d_compiled(const double a[2], const double b[2], const double c[2]
     int s = cm_orient2d_filter(a, b, c);
     return s != 2 ? s : cm_orient2d_adaptive(a, b, c);
 }
-
 
 /* ---- incircle ------------------------------------------------------------ */
 
@@ -652,7 +642,7 @@ int cm_polygon_orientation(const double *xy, long n)
         int in_range = 1;
         for (long i = 0; i < n && in_range; i++) {
             const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % n);
-            in_range = all_within(p, 2, ORIENT_MIN, ORIENT_MAX);
+            in_range = all_within(p, 2, CM_ORIENT_MIN, CM_ORIENT_MAX);
             double left = p[0] * q[1], right = q[0] * p[1];
             sum += left - right;
             absolute += fabs(left) + fabs(right);
@@ -773,7 +763,7 @@ int cm_blend_positive(const double a0[2], const double b0[2], const double c0[2]
     const double *pts[6] = {a0, b0, c0, a1, b1, c1};
     double d[8] = {b0[0] - a0[0], b0[1] - a0[1], c0[0] - a0[0], c0[1] - a0[1],
                    b1[0] - a1[0], b1[1] - a1[1], c1[0] - a1[0], c1[1] - a1[1]};
-    if (all_within(d, 8, ORIENT_MIN, ORIENT_MAX)) {
+    if (all_within(d, 8, CM_ORIENT_MIN, CM_ORIENT_MAX)) {
         /* Filter: each cross product has relative error below 4 CM_EPS of
          * its permanent (two roundings of the differences, products, sum);
          * decide only with a wide margin, else go exact. */

@@ -11,6 +11,19 @@
 /* Unit roundoff of IEEE double with round-to-nearest. */
 #define CM_EPS 0x1p-53
 
+/* Bounds on the magnitude of orient2d's differences: 0 or within these,
+ * products are 0 or within 2^[-1000, 1000], so nothing overflows or
+ * underflows. */
+#define CM_ORIENT_MIN 0x1p-500
+#define CM_ORIENT_MAX 0x1p+500
+
+/* True if v is zero or min <= |v| <= max (false for NaN and infinity). */
+static inline int cm_magnitude_within(double v, double min, double max)
+{
+    double m = fabs(v);
+    return m == 0.0 || (m >= min && m <= max);
+}
+
 /* cm_orient2d's floating-point filter (Shewchuk's bound A): the sign, or
  * 2 when the bound cannot decide. Its error bound counts one rounding per
  * operation: it is only inline where no compiler may fuse a*b - c*d (see
@@ -21,11 +34,10 @@ static inline int cm_orient2d_filter(const double a[2], const double b[2], const
 #pragma STDC FP_CONTRACT OFF
 #endif
     double acx = a[0] - c[0], bcx = b[0] - c[0], acy = a[1] - c[1], bcy = b[1] - c[1];
-    double m0 = fabs(acx), m1 = fabs(bcx), m2 = fabs(acy), m3 = fabs(bcy);
-    /* Differences 0 or within 2^[-500, 500]: products 0 or within
-     * 2^[-1000, 1000], so nothing below overflows or underflows. */
-    if ((m0 == 0.0 || (m0 >= 0x1p-500 && m0 <= 0x1p+500)) && (m1 == 0.0 || (m1 >= 0x1p-500 && m1 <= 0x1p+500)) &&
-        (m2 == 0.0 || (m2 >= 0x1p-500 && m2 <= 0x1p+500)) && (m3 == 0.0 || (m3 >= 0x1p-500 && m3 <= 0x1p+500))) {
+    if (cm_magnitude_within(acx, CM_ORIENT_MIN, CM_ORIENT_MAX) &&
+        cm_magnitude_within(bcx, CM_ORIENT_MIN, CM_ORIENT_MAX) &&
+        cm_magnitude_within(acy, CM_ORIENT_MIN, CM_ORIENT_MAX) &&
+        cm_magnitude_within(bcy, CM_ORIENT_MIN, CM_ORIENT_MAX)) {
         double detleft = acx * bcy, detright = acy * bcx, det = detleft - detright;
         double errbound = (3.0 + 16.0 * CM_EPS) * CM_EPS * (fabs(detleft) + fabs(detright));
         if (fabs(det) > errbound) return (det > 0.0) - (det < 0.0);
