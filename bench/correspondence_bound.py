@@ -8,17 +8,19 @@ prints: bound_deg K quadruple (one line; bound_deg is 60 when nothing binds)
 Why it holds. A compatible triangulation of polygons A and B defines a
 piecewise-linear homeomorphism f: A -> B that takes vertex i to vertex i.
 On each triangle f is affine; if every triangle has all angles >= alpha
-in both geometries, each affine piece has dilatation at most D(alpha)^2,
-where D(alpha) is the largest dilatation of an affine map from the
-equilateral triangle onto a triangle with angles >= alpha. For the map
-from the equilateral triangle onto a triangle T, K + 1/K = (2/sqrt(3))
-(cot A + cot B + cot C), largest over the allowed angles at (alpha,
-alpha, pi - 2 alpha). So f is D(alpha)^2-quasiconformal, and no
+in both geometries, each affine piece has dilatation at most K(alpha),
+the largest dilatation of an affine map between two triangles whose
+angles are all >= alpha: the dilatation between triangle shapes is exp of
+their hyperbolic distance (a triangle 0, 1, z as the point z of the upper
+half-plane), and the region of shapes with angles >= alpha has its
+diameter between two of its corners, the triangles (alpha, alpha, pi - 2
+alpha) and (alpha, pi - 2 alpha, alpha) (core/src/correspond/bound.c has
+the proof). So f is K(alpha)-quasiconformal, and no
 quasiconformal map distorts the conformal modulus of a quadrilateral by
 more than its dilatation: for the quadrilateral Q(a, b, c, d) (the
 polygon with four marked vertices a < b < c < d), M(f(Q)) <= K M(Q) and
 M(Q) <= K M(f(Q)). Any marked quadruple whose moduli in A and B differ by
-a factor r > D(alpha)^2 thus rules out alpha.
+a factor r > K(alpha) thus rules out alpha.
 
 The moduli are computed by linear finite elements (on compatmesh's mesh
 of each polygon alone, refined; scipy solves): M(Q) is the Dirichlet
@@ -148,11 +150,13 @@ def assemble(xy, tri):
 
 
 def dilatation_bound(alpha):
-    """D(alpha)^2: the largest dilatation of an affine map between two
-    triangles whose angles are all at least alpha (radians)."""
-    s = (2 / math.sqrt(3)) * (2 / math.tan(alpha) - 1 / math.tan(2 * alpha))
-    d = 0.5 * (s + math.sqrt(max(s * s - 4, 0.0)))
-    return d * d
+    """K(alpha): the largest dilatation of an affine map between two
+    triangles whose angles are all at least alpha (radians), vertex to
+    vertex: exp of the hyperbolic distance between the shapes 1/2 + i
+    tan(alpha) / 2 and 1 + cos 2 alpha + i sin 2 alpha."""
+    x, u, v = 0.5 + math.cos(2 * alpha), math.sin(2 * alpha), 0.5 * math.tan(alpha)
+    mu = math.sqrt((x * x + (u - v) ** 2) / (x * x + (u + v) ** 2))
+    return (1 + mu) / (1 - mu)
 
 
 def angle_bound(K):

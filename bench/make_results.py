@@ -239,7 +239,7 @@ def header(run_dir, pairs, failures, version, verdicts, alone_aim, beyond):
         "vertices, can have a smallest angle above its bound "
         "(`bench/correspondence_bound.py`: the correspondence forces a modulus "
         "distortion K somewhere, and triangles with angles of at least alpha in "
-        "both polygons allow at most D(alpha)^2). The bound is below the aim on "
+        "both polygons allow at most K(alpha), the largest dilatation between two such triangles). The bound is below the aim on "
         "%d of %d pairs: %s. On those the aim cannot be reached; on the other "
         "%d pairs compatmesh reaches it on %d." % (
             len(beyond[0]), len(verdicts), ", ".join(beyond[0]) or "none",

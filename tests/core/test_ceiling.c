@@ -31,7 +31,7 @@ static void rectangle_modulus(double w, double h)
 /* A 3 x 1 rectangle against the unit square, corners corresponding: the
  * only quadrilateral has moduli 3 and 1, so the certified distortion is at
  * most 3 (a lower bound on the true ratio) and, the finite elements being
- * within 6 % each way, at least 3 / 1.06^2; the bound is the angle D^-1
+ * within 6 % each way, at least 3 / 1.06^2; the bound is the angle K^-1
  * gives for it; the corner fan at four right angles is 45. */
 static void rectangle_against_square(void)
 {
@@ -58,6 +58,53 @@ static void dilatation_formula(void)
         CHECK_MSG(back >= deg && back < deg + 1e-6, "%g -> K %g -> %g", deg, K, back);
     }
     CHECK(cm_bound_angle(1.0) == 60.0 && cm_bound_angle(0.5) == 60.0);
+}
+
+/* The triangle with angles a at 0 and b at 1, first side (0,0)-(1,0). */
+static void triangle_with_angles(double a, double b, double t[6])
+{
+    double r = sin(b) / sin(a + b);
+    t[0] = 0, t[1] = 0, t[2] = 1, t[3] = 0, t[4] = r * cos(a), t[5] = r * sin(a);
+}
+
+/* Dilatation (singular value ratio) of the affine map taking triangle p
+ * onto triangle q, vertex to vertex. */
+static double affine_dilatation(const double p[6], const double q[6])
+{
+    double P[4] = {p[2] - p[0], p[4] - p[0], p[3] - p[1], p[5] - p[1]};
+    double Q[4] = {q[2] - q[0], q[4] - q[0], q[3] - q[1], q[5] - q[1]};
+    double det = P[0] * P[3] - P[1] * P[2];
+    double inv[4] = {P[3] / det, -P[1] / det, -P[2] / det, P[0] / det};
+    double A[4] = {Q[0] * inv[0] + Q[1] * inv[2], Q[0] * inv[1] + Q[1] * inv[3],
+                   Q[2] * inv[0] + Q[3] * inv[2], Q[2] * inv[1] + Q[3] * inv[3]};
+    double f = A[0] * A[0] + A[1] * A[1] + A[2] * A[2] + A[3] * A[3], d = fabs(A[0] * A[3] - A[1] * A[2]);
+    double k = f / d; /* K + 1 / K */
+    return 0.5 * (k + sqrt(fmax(k * k - 4, 0.0)));
+}
+
+/* cm_bound_dilatation(alpha) is reached between the triangles (alpha,
+ * alpha, 180 - 2 alpha) and (alpha, 180 - 2 alpha, alpha), and no pair of
+ * triangles with all angles >= alpha exceeds it. */
+static void dilatation_is_the_largest_between_triangles(void)
+{
+    rp_rng rng = {7};
+    for (double deg = 5; deg <= 55; deg += 10) {
+        double alpha = deg * PI / 180, K = cm_bound_dilatation(alpha), p[6], q[6];
+        triangle_with_angles(alpha, alpha, p);
+        triangle_with_angles(alpha, PI - 2 * alpha, q);
+        CHECK_MSG(fabs(affine_dilatation(p, q) / K - 1) < 1e-9, "%g: corners %.9g, K %.9g", deg, affine_dilatation(p, q), K);
+        double worst = 0;
+        for (int i = 0; i < 20000; i++) {
+            double t[2][6];
+            for (int j = 0; j < 2; j++) {
+                double a = alpha + rp_uniform(&rng) * (PI - 3 * alpha);
+                double b = alpha + rp_uniform(&rng) * (PI - 2 * alpha - a);
+                triangle_with_angles(a, b, t[j]);
+            }
+            worst = fmax(worst, affine_dilatation(t[0], t[1]));
+        }
+        CHECK_MSG(worst <= K * (1 + 1e-9) && worst > 0.5 * K, "%g: random pairs reach %.9g, K %.9g", deg, worst, K);
+    }
 }
 
 /* Interior angle in degrees at vertex i, computed independently of bound.c. */
@@ -198,6 +245,7 @@ int main(void)
     rectangle_modulus(1, 5);
     rectangle_against_square();
     dilatation_formula();
+    dilatation_is_the_largest_between_triangles();
     for (uint64_t seed = 1; seed <= 3; seed++) affine_image(seed);
     never_below_reached();
     cancels();

@@ -253,9 +253,11 @@ typedef struct cm_stats {
      * m) / 2), theta_i the corner angles in degrees. */
     double corner_fan_cap_deg;
     /* A compatible triangulation with all angles >= alpha is a
-     * D(alpha)^2-quasiconformal map between the polygons, so it cannot
-     * change the conformal modulus of any four marked boundary vertices by
-     * more than D(alpha)^2: the largest alpha allowed by the modulus ratio
+     * K(alpha)-quasiconformal map between the polygons (K(alpha): the
+     * largest dilatation of an affine map between two triangles with all
+     * angles >= alpha), so it cannot change the conformal modulus of any
+     * four marked boundary vertices by more than K(alpha): the largest
+     * alpha allowed by the modulus ratio
      * modulus_distortion, certified by finite elements (lower bound over
      * upper bound) on a quadruple found by a fast search. */
     double correspondence_bound_deg;

@@ -13,13 +13,13 @@
  * piecewise-linear homeomorphism f: A -> B taking boundary vertex i to
  * vertex i. On each triangle f is affine; if every triangle has all angles
  * >= alpha in both geometries, each piece has dilatation at most
- * D(alpha)^2, D(alpha) the largest dilatation of an affine map from the
- * equilateral triangle onto a triangle with angles >= alpha (K + 1/K =
- * (2 / sqrt 3)(cot A + cot B + cot C), largest at (alpha, alpha, 180 - 2
- * alpha)). A K-quasiconformal map changes the conformal modulus M of a
- * quadrilateral (the polygon with four marked boundary vertices) by a
- * factor of at most K. A quadruple whose moduli in A and B differ by r >
- * D(alpha)^2 thus rules out alpha.
+ * K(alpha), the largest dilatation of an affine map between two triangles
+ * whose angles are all >= alpha (cm_bound_dilatation says why it is the
+ * distance between two corners of the region of such triangle shapes). A
+ * K-quasiconformal map changes the conformal modulus M of a quadrilateral
+ * (the polygon with four marked boundary vertices) by a factor of at most
+ * K. A quadruple whose moduli in A and B differ by r > K(alpha) thus rules
+ * out alpha.
  *
  * The moduli are certified by linear finite elements on a mesh of each
  * polygon alone (its constrained Delaunay triangulation split into four
@@ -73,11 +73,29 @@
 
 /* ---- the caps' formulas ---------------------------------------------------- */
 
+/* Write a triangle with vertices 0, 1 and z (Im z > 0); its shape is z,
+ * a point of the hyperbolic upper half-plane. The affine map between the
+ * triangles z1 and z2 fixing 0 and 1 has Beltrami coefficient of modulus
+ * |z2 - z1| / |z2 - conj z1|, so its dilatation is exp of the hyperbolic
+ * distance between z1 and z2. The shapes whose angles are all >= alpha
+ * form a region bounded by three arcs: arg z = alpha, arg (z - 1) = 180 -
+ * alpha, and the circle arc through 0 and 1 where the angle at z is alpha.
+ * Each arc is an equidistant curve of a geodesic (the lines Re z = 0 and
+ * Re z = 1, the half-circle on [0, 1]), and along such a curve the cosh of
+ * the distance to a fixed point is a cosh(s - s0) - b with a > 0 in the
+ * arc length s of the geodesic, so it is largest at the ends of an arc. A
+ * point's distance to a fixed point is therefore largest over the region
+ * at one of its three corners, and (applied twice) the region's diameter
+ * is the distance between two corners: the triangles (alpha, alpha, 180 -
+ * 2 alpha) and (alpha, 180 - 2 alpha, alpha), z1 = 1/2 + i tan(alpha) / 2
+ * and z2 = 1 + cos 2 alpha + i sin 2 alpha. For large K this is about 3/4
+ * of D(alpha)^2, the square of the largest dilatation from the
+ * equilateral triangle, which two maps through it would give. */
 double cm_bound_dilatation(double alpha)
 {
-    double s = (2 / sqrt(3.0)) * (2 / tan(alpha) - 1 / tan(2 * alpha));
-    double d = 0.5 * (s + sqrt(fmax(s * s - 4, 0.0)));
-    return d * d;
+    double x = 0.5 + cos(2 * alpha), u = sin(2 * alpha), v = 0.5 * tan(alpha);
+    double mu = sqrt((x * x + (u - v) * (u - v)) / (x * x + (u + v) * (u + v)));
+    return (1 + mu) / (1 - mu);
 }
 
 double cm_bound_angle(double K)

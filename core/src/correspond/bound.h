@@ -4,7 +4,7 @@
  * - the corner fan: at a boundary vertex the same triangles split the
  *   corner in every polygon;
  * - the correspondence bound: a compatible triangulation whose angles are
- *   all at least alpha is a D(alpha)^2-quasiconformal map between the
+ *   all at least alpha is a K(alpha)-quasiconformal map between the
  *   polygons, so it cannot change the conformal modulus of a quadrilateral
  *   (four marked boundary vertices) by more than that factor. */
 #ifndef CM_CORRESPOND_BOUND_H
@@ -38,8 +38,8 @@ double cm_corner_fan_cap(const double *const *geoms, size_t k, size_t n);
 cm_status cm_bound_compute(const double *const *geoms, const int32_t *const *tris, size_t k,
                            size_t n, cm_progress *progress, cm_bound *out, cm_error *err);
 
-/* D(alpha)^2: the largest dilatation of an affine map between two
- * triangles whose angles are all at least alpha (radians). */
+/* K(alpha): the largest dilatation of an affine map between two triangles
+ * whose angles are all at least alpha (radians), vertex to vertex. */
 double cm_bound_dilatation(double alpha);
 /* The largest alpha, in degrees, with cm_bound_dilatation(alpha) >= K
  * (rounded up: never below the exact value); 60 for K <= 1. */
