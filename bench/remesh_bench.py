@@ -21,7 +21,8 @@ Modes: `index` runs each pair as written (the hard family's correspondence
 is then arc length); `auto` (`--correspondence auto`, hard family only) lets
 compatmesh choose the correspondence. c, fan, bound and T are those of the
 pair as written in both modes: in `auto`, /T above 1 is what the choice of
-correspondence bought.
+correspondence bought. `index` never splits a boundary edge (the paper's
+contract: interior Steiner vertices only), so its T is capped by edge too.
 
 Per pair, from the input alone:
   c        the smallest interior corner over the polygons (degrees)
@@ -33,7 +34,12 @@ Per pair, from the input alone:
   bound    bench/correspondence_bound.py: no compatible triangulation of the
            pair has a smallest angle above it (with the distortion K it comes
            from); cached by the pair's content (--bound-cache)
-  T        min(25, c / 2, fan, bound): the target a remesher can be held to
+  edge     the boundary-edge cap (edge_cap below): with boundary edges never
+           split, a triangle on edge ab whose base angles are at least alpha
+           contains the isosceles triangle on ab of base angle alpha, which no
+           boundary point may enter; the smallest over both polygons
+  T        min(25, c / 2, fan, bound), and in index mode also edge: the
+           target a remesher can be held to
 Per pair, build and mode (every run interleaved with the others and with
 CGAL, so machine load hits all alike):
   angle    the smallest angle over all output meshes; /T its ratio to T
@@ -61,6 +67,7 @@ import concurrent.futures
 import datetime
 import hashlib
 import json
+import math
 import os
 import platform
 import re
@@ -71,6 +78,8 @@ import subprocess
 import sys
 import tempfile
 import time
+
+import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stl_sections  # noqa: E402
@@ -152,6 +161,55 @@ def corner_fan_cap(theta):
 def fan_cap(polygons):
     """The corner-fan cap (degrees) of polygons in index correspondence."""
     return min(corner_fan_cap(theta) for theta in zip(*(corner_angles(p) for p in polygons)))
+
+
+def edge_cap(points):
+    """The largest alpha (degrees) a triangle on some boundary edge of this
+    polygon can have as its smallest angle when boundary edges are never
+    split (index mode): a triangle on edge ab whose base angles are both at
+    least alpha contains the isosceles triangle on ab of base angle alpha,
+    and no boundary point may lie inside it. So alpha is at most atan(2 h /
+    |ab|), h the lowest height of that isosceles triangle that a boundary
+    point enters, over every edge. (core/src/remesh/criteria.c computes the
+    same cap for the remesher's aim.)"""
+    xy = np.asarray(points, dtype=float)
+    if sum(xy[i - 1, 0] * xy[i, 1] - xy[i, 0] * xy[i - 1, 1] for i in range(len(xy))) < 0:
+        xy = xy[::-1]  # counter-clockwise: the inside is left of each edge
+    n, best = len(xy), 90.0
+    p, q = xy, np.roll(xy, -1, axis=0)  # segment e runs from p[e] to q[e]
+    for i in range(n):
+        a, b = xy[i], xy[(i + 1) % n]
+        half = 0.5 * math.hypot(*(b - a))
+        u = (b - a) / (2 * half)
+        m = 0.5 * (a + b)
+
+        def coords(pts):  # along the edge from its midpoint, and inward
+            r = pts - m
+            return r @ u, r @ np.array([-u[1], u[0]])
+
+        s0, d0 = coords(p)
+        s1, d1 = coords(q)
+        sd, dd = s1 - s0, d1 - d0
+        # the segment's parameter range inside the strip d > 0, |s| < half;
+        # ends shared with the edge are approached, not taken
+        t0 = np.where(np.isin(np.arange(n), (i, (i + 1) % n)), 1e-7, 0.0)
+        t1 = np.where(np.isin((np.arange(n) + 1) % n, (i, (i + 1) % n)), 1 - 1e-7, 1.0)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            for alpha, beta in ((d0, dd), (half - s0, -sd), (half + s0, sd)):
+                lim = -alpha / beta
+                t0 = np.where(beta > 0, np.maximum(t0, lim), t0)
+                t1 = np.where(beta < 0, np.minimum(t1, lim), t1)
+                t1 = np.where((beta == 0) & ~(alpha > 0), -1.0, t1)
+            kink = np.where(sd != 0, -s0 / sd, -1.0)
+        h = np.full(n, np.inf)
+        for t in (t0, t1, np.where((kink > t0) & (kink < t1), kink, t0)):
+            s, d = s0 + t * sd, d0 + t * dd
+            room = 1 - np.abs(s) / half
+            h = np.minimum(h, np.where((d > 0) & (room > 0), d / np.where(room > 0, room, 1), np.inf))
+        h[i] = np.inf
+        h = np.where(t0 <= t1, h, np.inf)
+        best = min(best, math.degrees(math.atan2(2 * h.min(), 2 * half)))
+    return best
 
 
 def smallest_corner(polygons):
@@ -363,7 +421,7 @@ def angle(value):
 
 def pair_table(rows, mode, labels):
     """The Markdown table of one mode."""
-    head = ["pair", "half", "n", "c", "fan", "bound (K)", "T"]
+    head = ["pair", "half", "n", "c", "fan", "bound (K)", "edge", "T"]
     for label in labels:
         p = "" if len(labels) == 1 else label + " "
         head += [p + "angle", p + "/T", p + "<20 %", p + "Steiner", p + "St/CGAL", p + "CPU s",
@@ -377,7 +435,8 @@ def pair_table(rows, mode, labels):
             continue
         bound = "-" if r["bound_deg"] is None else "%s (%.3g)" % (angle(r["bound_deg"]), r["K"])
         cgal = r["cgal"]
-        cells = [r["name"], r["half"], str(r["n"]), angle(r["c"]), angle(r["fan"]), bound, angle(r["T"]),
+        cells = [r["name"], r["half"], str(r["n"]), angle(r["c"]), angle(r["fan"]), bound,
+                 angle(r["edge"]), angle(target_of(r, mode)),
                  "-" if not cgal else cgal.get("error") or " / ".join(map(str, cgal["steiner"]))]
         for label in labels:
             x = r["runs"][mode][label]
@@ -429,7 +488,8 @@ def write_markdown(path, result):
              "simple polygons against discs and stars, and planar sections of Gmsh's STL models "
              "(`bench/stl_sections.py`) held out; n = 48 and 160, arc-length "
              "correspondence from the bottom-left point), next to the bench set "
-             "(`cm_gen_pairs --set bench`). T = min(25, c/2, fan, bound)%s." % (
+             "(`cm_gen_pairs --set bench`). T = min(25, c/2, fan, bound), and edge too in "
+             "index mode (boundary edges never split)%s." % (
                  "" if meta["bound"] else " (bound skipped: --no-bound)"), ""]
     lines += ["- Date: %s; machine: %s, %d cores; load average %.1f at the start, %.1f at the end "
               "(CPU seconds are measured, not wall time)" % (meta["date"], meta["machine"], meta["cores"],
@@ -508,9 +568,15 @@ def static_row(pair, args, cache):
     bound = cache.get(pair) if not args.no_bound else {}
     b = bound.get("bound_deg")
     target = min(TARGET_CAP, c / 2, fan, b if b is not None else 60)
+    edge = min(edge_cap(p) for p in pair.polygons)
     return {"name": pair.name, "family": pair.family, "half": pair.half, "n": pair.n,
             "key": content_key(pair.files), "c": c, "fan": fan, "bound_deg": b, "K": bound.get("K"),
-            "T": target}
+            "edge": edge, "T": target, "T_index": min(target, edge)}
+
+
+def target_of(row, mode):
+    """T of a pair in a mode: index runs keep every boundary edge whole."""
+    return row["T_index"] if mode == "index" else row["T"]
 
 
 def main(argv):
@@ -538,12 +604,12 @@ def main(argv):
             row.update(measure_pair(pair, builds, args.modes, args.cgal, work, args.timeout, i % 2 == 1))
             for mode, runs in row["runs"].items():
                 for run in runs.values():
-                    derive(run, row["T"], row["cgal"])
+                    derive(run, target_of(row, mode), row["cgal"])
                 if args.baseline:
                     row.setdefault("versus", {})[mode] = versus(runs["new"], runs["baseline"])
             rows.append(row)
             new = next(iter(row["runs"].values()))["new"]
-            print("[%d/%d] %s T %.1f: %s" % (i + 1, len(pairs), pair.name, row["T"],
+            print("[%d/%d] %s T %.1f: %s" % (i + 1, len(pairs), pair.name, row["T_index"],
                   "%.2f deg, %d Steiner, %.3g s" % (new["min_angle_deg"], new["steiner"], new["cpu_s"])
                   if new["valid"] else "INVALID: " + new.get("error", "")), flush=True)
     finally:

@@ -3,6 +3,7 @@ script run on three tiny pairs (no bound, no CGAL: both have their own
 checks), with the same build as its own baseline and with a baseline that
 fails."""
 import json
+import math
 import os
 import subprocess
 import sys
@@ -38,6 +39,18 @@ def test_fan_cap_is_the_worst_corner():
     assert rb.fan_cap([square, kite]) == pytest.approx(worst) and worst < 45
 
 
+def test_edge_cap_by_hand():
+    # a 4 x 1 box: the tallest isosceles triangle on a long edge has height
+    # 1 (the opposite edge), so its base angles are at most atan(2 / 4); the
+    # short edges allow atan(2 * 4 / 1)
+    box = [(0, 0), (4, 0), (4, 1), (0, 1)]
+    assert rb.edge_cap(box) == pytest.approx(math.degrees(math.atan(0.5)))
+    assert rb.edge_cap(box[::-1]) == pytest.approx(rb.edge_cap(box))
+    # a spike from the bottom up to (2, 0.9), 0.1 under the top edge's middle
+    spike = [(0, 0), (1.9, 0), (2, 0.9), (2.1, 0), (4, 0), (4, 1), (0, 1)]
+    assert rb.edge_cap(spike) == pytest.approx(math.degrees(math.atan(2 * 0.1 / 4)))
+
+
 def bench(tmp_path, *extra):
     out, raw = tmp_path / "out.md", tmp_path / "out.json"
     run = subprocess.run([sys.executable, SCRIPT, "--compatmesh", CLI, "--gen-pairs", GEN,
@@ -54,10 +67,13 @@ def test_tiny_pairs_against_themselves(tmp_path):
     assert sorted(r["name"] for r in result["pairs"]) == sorted(TINY)
     for r in result["pairs"]:
         assert 0 < r["T"] <= 25 and r["T"] <= r["c"] / 2 and r["bound_deg"] is None
+        assert r["T_index"] == min(r["T"], r["edge"])
         for label in ("new", "baseline"):
             x = r["runs"]["index"][label]
             assert x["valid"] and x["exit"] == 0, (r["name"], x)
-            assert 0 < x["min_angle_deg"] <= 60 and x["to_T"] == pytest.approx(x["min_angle_deg"] / r["T"])
+            # index mode keeps every boundary edge: no triangle beats the edge cap
+            assert x["min_angle_deg"] <= r["edge"] * (1 + 1e-9)
+            assert 0 < x["min_angle_deg"] <= 60 and x["to_T"] == pytest.approx(x["min_angle_deg"] / r["T_index"])
             assert len(x["under20_pct"]) == 2 and x["cpu_s"] > 0 and x["rss_mb"] > 0
         # the same deterministic build on both sides
         assert r["versus"]["index"]["angle"] == 1 and r["versus"]["index"]["steiner"] in (1, None)
