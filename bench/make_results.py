@@ -56,10 +56,11 @@ def read_cgal(run_dir):
     cgal.tsv, when the bench could run CGAL."""
     cgal = {}
     for name, _, result in tsv_rows(run_dir, "cgal.tsv"):
-        words = result.split()
+        words = result.split()  # "key value" pairs, or "failed"
+        fields = dict(zip(words[::2], words[1::2])) if len(words) % 2 == 0 else {}
         value = None
-        if len(words) == 8:
-            value = (int(words[1]), int(words[3]), float(words[7]))
+        if {"steiner", "boundary_steiner", "min_angle_deg"} <= fields.keys():
+            value = (int(fields["steiner"]), int(fields["boundary_steiner"]), float(fields["min_angle_deg"]))
         cgal.setdefault(name, []).append(value)
     return cgal
 

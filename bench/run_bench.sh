@@ -75,15 +75,10 @@ else
 fi
 
 # The correspondence bound: the largest smallest angle any compatible
-# triangulation of the pair can have (bound.tsv: pair, bound line).
-while read -r name files; do
-    [ -n "$name" ] || continue
-    set --
-    for f in $files; do set -- "$@" "$input/$f"; done
-    line=$(timeout "$limit" "$python" "$src/bench/correspondence_bound.py" "$cli" "$@" </dev/null 2>/dev/null) ||
-        line="failed"
-    printf '%s\t%s\n' "$name" "$line" >>"$bench/bound.tsv"
-done <"$input/pairs.txt"
+# triangulation of the pair can have (bound.tsv: pair, bound line), from
+# the bound cache remesh_bench.py shares (computed where missing).
+"$python" "$src/bench/cached_bounds.py" "$cli" "$input" "$bench/bound.tsv" "$limit" ||
+    { echo "bench: cached_bounds.py failed" >&2; exit 1; }
 
 # Each polygon alone (paired with itself): what remeshing reaches without
 # the correspondence to honour (alone.tsv: pair, file, smallest angle).
