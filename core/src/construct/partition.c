@@ -64,6 +64,8 @@
 
 typedef struct vtable {
     cm_diagset common; /* a diagonal in every geometry */
+    long base;         /* stack height under the item it was built for:
+                          once the stack is back there, no item reads it */
 } vtable;
 
 typedef struct item {
@@ -76,6 +78,7 @@ typedef struct item {
 
 typedef struct part {
     size_t k, n;
+    long table_limit; /* items above this size get no table */
     double **xy;
     size_t nv, cap_v;
     int32_t *tri;
@@ -137,13 +140,14 @@ static int push_item(part *p, item it)
 /* A sub-item of it on the local vertices loc[0..m-1]. */
 static int push_sub(part *p, const item *it, const long *loc, long m, int stuck)
 {
-    item c = {malloc((size_t)m * sizeof(int32_t)), malloc((size_t)m * sizeof(int32_t)), m,
+    item c = {malloc((size_t)m * sizeof(int32_t)), it->tix ? malloc((size_t)m * sizeof(int32_t)) : NULL, m,
               it->table, m == it->m ? it->repeat : 0, stuck};
-    if (!c.gid || !c.tix) {
+    if (!c.gid || (it->tix && !c.tix)) {
         item_free(&c);
         return -1;
     }
-    for (long i = 0; i < m; i++) c.gid[i] = it->gid[loc[i]], c.tix[i] = it->tix[loc[i]];
+    for (long i = 0; i < m; i++) c.gid[i] = it->gid[loc[i]];
+    for (long i = 0; it->tix && i < m; i++) c.tix[i] = it->tix[loc[i]];
     return push_item(p, c);
 }
 
@@ -185,39 +189,63 @@ static long add_table(part *p, cm_diagset *common)
         return -1;
     }
     p->cap_tab = (long)cap;
-    p->tab[p->ntab] = (vtable){*common};
+    p->tab[p->ntab] = (vtable){*common, p->top};
     return p->ntab++;
+}
+
+/* Visibility rows of each geometry of a polygon (the rows read the
+ * triangulations, kept here when made here). */
+typedef struct rowset {
+    cm_visrows **rows;
+    int32_t *tri;
+    size_t k;
+} rowset;
+
+static void close_rows(rowset *r)
+{
+    for (size_t g = 0; r->rows && g < r->k; g++) cm_visrows_free(r->rows[g]);
+    free(r->rows), free(r->tri);
+    r->rows = NULL, r->tri = NULL;
+}
+
+/* The rows of a polygon of m vertices. tris[g] may be NULL: then geometry
+ * g is triangulated here. 0, -1 memory, 1 failed (not simple); *r is
+ * closed on failure. */
+static int open_rows(const double *const *xy, const int32_t *const *tris, size_t k, long m, rowset *r)
+{
+    r->k = k, r->rows = calloc(k, sizeof *r->rows);
+    r->tri = tris ? NULL : malloc(3 * (size_t)m * k * sizeof *r->tri);
+    int32_t *idx = malloc((size_t)m * sizeof *idx);
+    int status = r->rows && (tris || r->tri) && idx ? 0 : -1;
+    for (long i = 0; status == 0 && i < m; i++) idx[i] = (int32_t)i;
+    for (size_t g = 0; status == 0 && g < k; g++) {
+        const int32_t *t = tris ? tris[g] : r->tri + 3 * (size_t)m * g;
+        if (!tris) status = cm_polygon_ear_clip(xy[g], idx, m, r->tri + 3 * (size_t)m * g);
+        if (status == 0 && !(r->rows[g] = cm_visrows_create(xy[g], m, t))) status = -1;
+    }
+    free(idx);
+    if (status != 0) close_rows(r);
+    return status;
 }
 
 /* The common diagonals: pairs that see each other in every geometry, one
  * row of each geometry's visibility at a time (O(k m) memory beside the
- * set). tris[g] may be NULL: then geometry g is triangulated here. 0, -1
- * memory, 1 failed (not simple); *common is set up here, cleared on
- * failure. */
+ * set). tris as for open_rows. 0, -1 memory, 1 failed (not simple);
+ * *common is set up here, cleared on failure. */
 static int common_table(const double *const *xy, const int32_t *const *tris, size_t k, long m,
                         cm_diagset *common)
 {
-    cm_visrows **rows = calloc(k, sizeof *rows);
+    rowset r = {NULL, NULL, k};
     unsigned char *row = malloc((size_t)m * (k + 1));
-    int32_t *tri = tris ? NULL : malloc(3 * (size_t)m * k * sizeof *tri), *idx = malloc((size_t)m * sizeof *idx);
-    int status = -1;
-    if (cm_diagset_init(common, m) != 0 || !rows || !row || (!tris && !tri) || !idx) goto done;
-    for (long i = 0; i < m; i++) idx[i] = (int32_t)i;
-    for (size_t g = 0; g < k; g++) {
-        const int32_t *t = tris ? tris[g] : tri + 3 * (size_t)m * g;
-        if (!tris) {
-            status = cm_polygon_ear_clip(xy[g], idx, m, tri + 3 * (size_t)m * g);
-            if (status != 0) goto done;
-            status = -1;
-        }
-        rows[g] = cm_visrows_create(xy[g], m, t);
-        if (!rows[g]) goto done;
-    }
+    int status = open_rows(xy, tris, k, m, &r);
+    if (status != 0) goto done;
+    status = -1;
+    if (!row || cm_diagset_init(common, m) != 0) goto done;
     unsigned char *all = row + (size_t)m * k;
     for (long i = 0; i < m; i++) {
         memset(all, 1, (size_t)m);
         for (size_t g = 0; g < k; g++) {
-            cm_visrows_row(rows[g], i, row + (size_t)m * g);
+            cm_visrows_row(r.rows[g], i, row + (size_t)m * g);
             for (long j = i + 1; j < m; j++) all[j] &= row[(size_t)m * g + (size_t)j];
         }
         for (long j = i + 1; j < m; j++)
@@ -225,9 +253,9 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
     }
     status = 0;
 done:
-    for (size_t g = 0; rows && g < k; g++) cm_visrows_free(rows[g]);
     if (status != 0) cm_diagset_clear(common);
-    free(rows), free(row), free(tri), free(idx);
+    close_rows(&r);
+    free(row);
     return status;
 }
 
@@ -401,6 +429,22 @@ static int fan_face(part *p, item *it)
     return r;
 }
 
+/* Cuts the item along its diagonal (i, j): both halves onto the stack,
+ * reading the item's table (or, without one, needing their own). 0 or
+ * -1. */
+static int split_diagonal(part *p, const item *it, long i, long j)
+{
+    long m = it->m, *loc = malloc((size_t)(m + 1) * sizeof *loc), c = 0;
+    if (!loc) return -1;
+    for (long x = i;; x = (x + 1) % m) { loc[c++] = x; if (x == j) break; }
+    int bad = push_sub(p, it, loc, c, 0);
+    c = 0;
+    for (long x = j;; x = (x + 1) % m) { loc[c++] = x; if (x == i) break; }
+    bad = bad || push_sub(p, it, loc, c, 0);
+    free(loc);
+    return bad ? -1 : 0;
+}
+
 /* Cuts along the most balanced common diagonal (the paper's tie-break).
  * Returns 1 if cut, 0 if there is none, -1 out of memory. */
 static int greedy_split(part *p, item *it, const cm_diagview *common)
@@ -411,19 +455,52 @@ static int greedy_split(part *p, item *it, const cm_diagview *common)
             long j = (i + span) % m;
             if (2 * span == m && i >= span) break;
             if (!cm_diagview_has(common, i, j)) continue;
-            long *loc = malloc((size_t)(m + 1) * sizeof *loc), c = 0;
-            if (!loc) return -1;
-            for (long x = i;; x = (x + 1) % m) { loc[c++] = x; if (x == j) break; }
-            int bad = push_sub(p, it, loc, c, 0);
-            c = 0;
-            for (long x = j;; x = (x + 1) % m) { loc[c++] = x; if (x == i) break; }
-            bad = bad || push_sub(p, it, loc, c, 0);
-            free(loc);
             p->st->greedy_splits++;
-            return bad ? -1 : 1;
+            return split_diagonal(p, it, i, j) == 0 ? 1 : -1;
         }
     }
     return 0;
+}
+
+/* ---- items too large for a table ------------------------------------------ */
+
+/* Sources of a sampled split. */
+#define SAMPLE_SOURCES 64
+
+/* Cuts an item without a table along the most balanced common diagonal
+ * from SAMPLE_SOURCES evenly spread vertices (one visibility row per
+ * source and geometry, O(k m) each); the halves get tables of their own
+ * or, still too large, another sampled split. Returns 1 if cut, 0 if no
+ * source has a common diagonal, -1 out of memory, 2 not simple. */
+static int sampled_split(part *p, item *it)
+{
+    double t0 = cm_seconds_now();
+    long m = it->m, best = 1, bi = -1, bj = -1;
+    size_t k = p->k;
+    double **l = local_xy(p, it);
+    unsigned char *row = malloc(2 * (size_t)m), *all = row ? row + m : NULL;
+    rowset r = {NULL, NULL, k};
+    int s = l && row ? open_rows((const double *const *)l, NULL, k, m, &r) : -1;
+    for (long q = 0; s == 0 && q < SAMPLE_SOURCES && 2 * best < m; q++) {
+        long i = (long)((double)q * (double)m / SAMPLE_SOURCES);
+        memset(all, 1, (size_t)m);
+        for (size_t g = 0; g < k; g++) {
+            cm_visrows_row(r.rows[g], i, row);
+            for (long j = 0; j < m; j++) all[j] &= row[j];
+        }
+        for (long j = 0; j < m; j++) {
+            long span = (j - i + m) % m, balance = span < m - span ? span : m - span;
+            if (all[j] && balance > best) best = balance, bi = i, bj = j;
+        }
+    }
+    close_rows(&r);
+    free_xy(l, k);
+    free(row);
+    p->st->seconds_visibility += cm_seconds_now() - t0;
+    if (s != 0) return s > 0 ? 2 : -1;
+    if (bi < 0) return 0;
+    p->st->sampled_splits++;
+    return split_diagonal(p, it, bi, bj) == 0 ? 1 : -1;
 }
 
 /* ---- cutting a stuck face along minimum-link paths ------------------------ */
@@ -1038,10 +1115,23 @@ static int common_step(part *p, item *it, cm_status *s)
     return done;
 }
 
+/* An item above the table limit: one fan when it is star-shaped in every
+ * geometry (what common_step tries first at any size near the limit),
+ * else a sampled split, else the overlay. */
+static cm_status large_step(part *p, item *it)
+{
+    int cut = fan_face(p, it);
+    if (cut == 0) cut = sampled_split(p, it);
+    if (cut == 2) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: a sub-polygon is not simple");
+    if (cut < 0) return no_memory(p);
+    return cut ? CM_OK : fallback(p, it);
+}
+
 static cm_status process_item(part *p, item *it)
 {
     if (it->m == 3)
         return add_item_triangle(p, it, 0, 1, 2) == 0 ? CM_OK : no_memory(p);
+    if (it->table < 0 && it->m > p->table_limit) return large_step(p, it);
     cm_status s = CM_OK;
     if (it->table < 0 && (s = table_for_item(p, it)) != CM_OK) return s;
     if (!it->stuck && common_step(p, it, &s)) return s;
@@ -1063,6 +1153,12 @@ static cm_status start(part *p, const double *const *geoms, const int32_t *const
         memcpy(p->xy[g], geoms[g], 2 * n * sizeof(double));
     }
     p->nv = n;
+    if ((long)n > p->table_limit) { /* no table: large_step */
+        item root = {malloc(n * sizeof(int32_t)), NULL, (long)n, -1, 0, 0};
+        if (!root.gid) return no_memory(p);
+        for (size_t i = 0; i < n; i++) root.gid[i] = (int32_t)i;
+        return push_item(p, root) == 0 ? CM_OK : no_memory(p);
+    }
     double t0 = cm_seconds_now();
     cm_diagset common = {0, 0, NULL};
     int t = common_table(geoms, tris, k, (long)n, &common);
@@ -1089,26 +1185,22 @@ static void part_free(part *p)
     free(p->stack);
 }
 
-cm_status cm_partition(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
-                       cm_progress *progress, cm_mesh *out, cm_partition_stats *stats,
-                       cm_error *err)
+cm_status cm_partition_limited(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
+                               long table_limit, cm_progress *progress, cm_mesh *out,
+                               cm_partition_stats *stats, cm_error *err)
 {
     part p;
     memset(&p, 0, sizeof p);
     memset(stats, 0, sizeof *stats);
-    p.k = k, p.n = n, p.st = stats, p.err = err, p.progress = progress;
-    if (n > CM_PARTITION_MAX_VERTICES) {
-        size_t centroids = 0;
-        stats->fallback_count = 1;
-        cm_status s = cm_overlay(geoms, tris, k, n, out, &centroids, err);
-        if (s == CM_OK) stats->steiner = out->nv - n;
-        return s;
-    }
+    p.k = k, p.n = n, p.table_limit = table_limit, p.st = stats, p.err = err, p.progress = progress;
     cm_status s = start(&p, geoms, tris);
     while (s == CM_OK && p.top > 0) {
         item it = p.stack[--p.top];
         s = process_item(&p, &it);
         item_free(&it);
+        /* Tables no item on the stack reads any more (an item's table
+         * serves only the items cut from it, all above its base). */
+        while (p.ntab > 0 && p.tab[p.ntab - 1].base >= p.top) cm_diagset_clear(&p.tab[--p.ntab].common);
         if (s == CM_OK && cm_progress_poll(progress, CM_STAGE_PARTITION, 0.0))
             s = cm_fail_status(err, CM_ERR_CANCELLED);
     }
@@ -1119,4 +1211,11 @@ cm_status cm_partition(const double *const *geoms, const int32_t *const *tris, s
     }
     part_free(&p);
     return s;
+}
+
+cm_status cm_partition(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
+                       cm_progress *progress, cm_mesh *out, cm_partition_stats *stats,
+                       cm_error *err)
+{
+    return cm_partition_limited(geoms, tris, k, n, CM_PARTITION_MAX_VERTICES, progress, out, stats, err);
 }
