@@ -467,31 +467,47 @@ static int greedy_split(part *p, item *it, const cm_diagview *common)
 /* Sources of a sampled split. */
 #define SAMPLE_SOURCES 64
 
+/* The most balanced common diagonal at vertex i better than *best (its
+ * balance, the shorter side's span): updates *best and *bj. row, all: m
+ * bytes each. */
+static void best_at(const rowset *r, long m, long i, unsigned char *row, unsigned char *all, long *best, long *bj)
+{
+    memset(all, 1, (size_t)m);
+    for (size_t g = 0; g < r->k; g++) {
+        cm_visrows_row(r->rows[g], i, row);
+        for (long j = 0; j < m; j++) all[j] &= row[j];
+    }
+    *bj = -1;
+    for (long j = 0; j < m; j++) {
+        long span = (j - i + m) % m, balance = span < m - span ? span : m - span;
+        if (all[j] && balance > *best) *best = balance, *bj = j;
+    }
+}
+
 /* Cuts an item without a table along the most balanced common diagonal
  * from SAMPLE_SOURCES evenly spread vertices (one visibility row per
- * source and geometry, O(k m) each); the halves get tables of their own
- * or, still too large, another sampled split. Returns 1 if cut, 0 if no
- * source has a common diagonal, -1 out of memory, 2 not simple. */
+ * source and geometry, O(k m) each), or when none of them has one, from
+ * every vertex; the halves get tables of their own or, still too large,
+ * another sampled split. Returns 1 if cut, 0 if there is no common
+ * diagonal, -1 out of memory, 2 not simple. */
 static int sampled_split(part *p, item *it)
 {
     double t0 = cm_seconds_now();
     long m = it->m, best = 1, bi = -1, bj = -1;
     size_t k = p->k;
     double **l = local_xy(p, it);
-    unsigned char *row = malloc(2 * (size_t)m), *all = row ? row + m : NULL;
+    unsigned char *row = malloc(2 * (size_t)m);
     rowset r = {NULL, NULL, k};
     int s = l && row ? open_rows((const double *const *)l, NULL, k, m, &r) : -1;
     for (long q = 0; s == 0 && q < SAMPLE_SOURCES && 2 * best < m; q++) {
-        long i = (long)((double)q * (double)m / SAMPLE_SOURCES);
-        memset(all, 1, (size_t)m);
-        for (size_t g = 0; g < k; g++) {
-            cm_visrows_row(r.rows[g], i, row);
-            for (long j = 0; j < m; j++) all[j] &= row[j];
-        }
-        for (long j = 0; j < m; j++) {
-            long span = (j - i + m) % m, balance = span < m - span ? span : m - span;
-            if (all[j] && balance > best) best = balance, bi = i, bj = j;
-        }
+        long i = (long)((double)q * (double)m / SAMPLE_SOURCES), j;
+        best_at(&r, m, i, row, row + m, &best, &j);
+        if (j >= 0) bi = i, bj = j;
+    }
+    for (long i = 0; s == 0 && bi < 0 && i < m; i++) {
+        long j;
+        best_at(&r, m, i, row, row + m, &best, &j);
+        if (j >= 0) bi = i, bj = j;
     }
     close_rows(&r);
     free_xy(l, k);
