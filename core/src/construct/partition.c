@@ -29,7 +29,12 @@
  * Visibility tables: bit sets of common diagonals (diagset.h). The input's
  * serves every item cut from it along diagonals (a diagonal between two
  * vertices of such a sub-polygon is a diagonal of it iff it is one of the
- * input); an item with bends on its boundary gets a set of its own. */
+ * input); an item with bends on its boundary gets a set of its own. A set
+ * is built only when needed: an item large enough that the steps try the
+ * fan first tries it before its set, and an item above the table limit
+ * (CM_PARTITION_MAX_VERTICES) gets none: it is split along the most
+ * balanced common diagonal seen from spread vertices until the pieces
+ * are small enough. */
 #include "construct/partition.h"
 #include "base/buf.h"
 #include "base/clock.h"
@@ -74,6 +79,7 @@ typedef struct item {
     long m, table; /* table -1: needs a table of its own */
     int repeat;    /* has the size of the polygon it was cut from */
     int stuck;     /* known to have no common diagonal */
+    int fanless;   /* known not to be star-shaped in some geometry */
 } item;
 
 typedef struct part {
@@ -141,7 +147,7 @@ static int push_item(part *p, item it)
 static int push_sub(part *p, const item *it, const long *loc, long m, int stuck)
 {
     item c = {malloc((size_t)m * sizeof(int32_t)), it->tix ? malloc((size_t)m * sizeof(int32_t)) : NULL, m,
-              it->table, m == it->m ? it->repeat : 0, stuck};
+              it->table, m == it->m ? it->repeat : 0, stuck, 0};
     if (!c.gid || (it->tix && !c.tix)) {
         item_free(&c);
         return -1;
@@ -426,6 +432,14 @@ static int fan_face(part *p, item *it)
     if (r == 1 && emit_fan(p, it, f, it->m, rows) != 0) r = -1;
     free_xy(l, k);
     free(pos), free(rows), free(f);
+    return r;
+}
+
+/* fan_face once per item. */
+static int try_fan(part *p, item *it)
+{
+    int r = it->fanless ? 0 : fan_face(p, it);
+    it->fanless = r == 0;
     return r;
 }
 
@@ -939,7 +953,7 @@ static int split_along(part *p, const item *it, const pair *pr, const long *stei
     for (int half = 0; half < 2; half++) {
         long from = half == 0 ? pr->u : pr->v, to = half == 0 ? pr->v : pr->u;
         long size = (to - from + m) % m + 1 + nb;
-        item c = {malloc((size_t)size * sizeof(int32_t)), NULL, size, -1, size == m, 0};
+        item c = {malloc((size_t)size * sizeof(int32_t)), NULL, size, -1, size == m, 0, 0};
         if (!c.gid) return -1;
         long n = 0;
         for (long x = from;; x = (x + 1) % m) {
@@ -1123,7 +1137,7 @@ static int common_step(part *p, item *it, cm_status *s)
         /* Too large for the program: one Steiner vertex when the item is
          * star-shaped in every geometry (what the program's fan would
          * give), else a balanced split. */
-        int g = fan_face(p, it);
+        int g = try_fan(p, it);
         if (g == 0) g = greedy_split(p, it, common);
         if (g < 0) *s = no_memory(p);
         done = g != 0;
@@ -1132,11 +1146,10 @@ static int common_step(part *p, item *it, cm_status *s)
 }
 
 /* An item above the table limit: one fan when it is star-shaped in every
- * geometry (what common_step tries first at any size near the limit),
- * else a sampled split, else the overlay. */
+ * geometry, else a sampled split, else the overlay. */
 static cm_status large_step(part *p, item *it)
 {
-    int cut = fan_face(p, it);
+    int cut = try_fan(p, it);
     if (cut == 0) cut = sampled_split(p, it);
     if (cut == 2) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: a sub-polygon is not simple");
     if (cut < 0) return no_memory(p);
@@ -1147,11 +1160,17 @@ static cm_status process_item(part *p, item *it)
 {
     if (it->m == 3)
         return add_item_triangle(p, it, 0, 1, 2) == 0 ? CM_OK : no_memory(p);
+    if (it->table < 0 && (double)it->m * (double)it->m > DP_WORK_LIMIT) {
+        /* At this size the steps below try the fan first whatever the
+         * table holds: before the table, the same result without it. */
+        int fan = try_fan(p, it);
+        if (fan != 0) return fan > 0 ? CM_OK : no_memory(p);
+    }
     if (it->table < 0 && it->m > p->table_limit) return large_step(p, it);
     cm_status s = CM_OK;
     if (it->table < 0 && (s = table_for_item(p, it)) != CM_OK) return s;
     if (!it->stuck && common_step(p, it, &s)) return s;
-    int cut = fan_face(p, it);
+    int cut = try_fan(p, it);
     if (cut == 0) cut = link_split(p, it);
     if (cut < 0) return no_memory(p);
     return cut ? CM_OK : fallback(p, it);
@@ -1169,8 +1188,8 @@ static cm_status start(part *p, const double *const *geoms, const int32_t *const
         memcpy(p->xy[g], geoms[g], 2 * n * sizeof(double));
     }
     p->nv = n;
-    if ((long)n > p->table_limit) { /* no table: large_step */
-        item root = {malloc(n * sizeof(int32_t)), NULL, (long)n, -1, 0, 0};
+    if ((long)n > p->table_limit || (double)n * (double)n > DP_WORK_LIMIT) { /* the table later, if needed */
+        item root = {malloc(n * sizeof(int32_t)), NULL, (long)n, -1, 0, 0, 0};
         if (!root.gid) return no_memory(p);
         for (size_t i = 0; i < n; i++) root.gid[i] = (int32_t)i;
         return push_item(p, root) == 0 ? CM_OK : no_memory(p);
@@ -1181,7 +1200,7 @@ static cm_status start(part *p, const double *const *geoms, const int32_t *const
     if (t > 0) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: the input is not simple");
     if (t < 0 || add_table(p, &common) < 0) return no_memory(p);
     p->st->seconds_visibility += cm_seconds_now() - t0;
-    item root = {malloc(n * sizeof(int32_t)), malloc(n * sizeof(int32_t)), (long)n, 0, 0, 0};
+    item root = {malloc(n * sizeof(int32_t)), malloc(n * sizeof(int32_t)), (long)n, 0, 0, 0, 0};
     if (!root.gid || !root.tix) {
         item_free(&root);
         return no_memory(p);
