@@ -478,8 +478,11 @@ static int greedy_split(part *p, item *it, const cm_diagview *common)
 
 /* ---- items too large for a table ------------------------------------------ */
 
-/* Sources of a sampled split. */
+/* Sources of a sampled split; when none of them has a common diagonal,
+ * up to SAMPLE_MORE further ones are looked at (a piece with common
+ * diagonals that few is often stuck, for the overlay, anyway). */
 #define SAMPLE_SOURCES 64
+#define SAMPLE_MORE 1024
 
 /* The most balanced common diagonal at vertex i better than *best (its
  * balance, the shorter side's span): updates *best and *bj. row, all: m
@@ -500,10 +503,10 @@ static void best_at(const rowset *r, long m, long i, unsigned char *row, unsigne
 
 /* Cuts an item without a table along the most balanced common diagonal
  * from SAMPLE_SOURCES evenly spread vertices (one visibility row per
- * source and geometry, O(k m) each), or when none of them has one, from
- * every vertex; the halves get tables of their own or, still too large,
- * another sampled split. Returns 1 if cut, 0 if there is no common
- * diagonal, -1 out of memory, 2 not simple. */
+ * source and geometry, O(k m) each), or when none of them has one, the
+ * first one from SAMPLE_MORE others; the halves get tables of their own
+ * or, still too large, another sampled split. Returns 1 if cut, 0 if none
+ * was seen, -1 out of memory, 2 not simple. */
 static int sampled_split(part *p, item *it)
 {
     double t0 = cm_seconds_now();
@@ -518,8 +521,9 @@ static int sampled_split(part *p, item *it)
         best_at(&r, m, i, row, row + m, &best, &j);
         if (j >= 0) bi = i, bj = j;
     }
-    for (long i = 0; s == 0 && bi < 0 && i < m; i++) {
-        long j;
+    long more = m < SAMPLE_MORE ? m : SAMPLE_MORE;
+    for (long q = 0; s == 0 && bi < 0 && q < more; q++) {
+        long i = (long)((double)q * (double)m / (double)more + 0.5) % m, j;
         best_at(&r, m, i, row, row + m, &best, &j);
         if (j >= 0) bi = i, bj = j;
     }
