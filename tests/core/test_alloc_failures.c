@@ -10,7 +10,8 @@
  * sweep, the same with the map-aware remesher, of the overlay construction
  * (exact rational arithmetic in GMP throughout), and of the constructions
  * for polygons with holes (bridges that need Steiner bends; one bridge per
- * hole and the overlay). */
+ * hole and the overlay), and of the partition's steps for inputs above its
+ * table limit (lowered: the fan, sampled splits). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -21,7 +22,11 @@
 
 void *__gmp_default_allocate(size_t); /* exported by libgmp, not declared */
 
+#include "api/halfedge.h"
+#include "api/result.h"
 #include "base/gmp_memory.h"
+#include "construct/partition.h"
+#include "geom/polytri.h"
 #include "check.h"
 #include "hole_fixtures.h"
 #include "random_polygons.h"
@@ -195,6 +200,53 @@ static void test_map_remesher(const double *const *polygons)
     remesher = CM_REMESHER_GREEDY;
 }
 
+/* The partition with its table limit lowered to 12 on pairs of 40
+ * vertices: a star pair (one fan without a table) and an exact affine pair
+ * (sampled splits, then tables); each allocation fails once. */
+static void test_above_table_limit(void)
+{
+    enum { M = 40 };
+    double a[2 * M], b[2 * M];
+    int32_t idx[M], ta[3 * (M - 2)], tb[3 * (M - 2)], *tris[2] = {ta, tb};
+    for (int i = 0; i < M; i++) idx[i] = i;
+    for (int pair = 0; pair < 2; pair++) {
+        if (pair == 0) {
+            CHECK(rp_star(a, M, 5) == 0 && rp_star(b, M, 6) == 0);
+        } else {
+            CHECK(rp_random_simple(a, M, 7) == 0);
+            for (int i = 0; i < M; i++) b[2 * i] = a[2 * i] - 0.5 * a[2 * i + 1], b[2 * i + 1] = 0.5 * a[2 * i] + a[2 * i + 1];
+        }
+        const double *xy[2] = {a, b};
+        CHECK(cm_polygon_triangulate(a, idx, M, ta, NULL) == 0 && cm_polygon_triangulate(b, idx, M, tb, NULL) == 0);
+        long total = -1, reported = 0;
+        for (long i = 0; i <= total || total < 0; i++) {
+            paused = 1;
+            cm_result *r = calloc(1, sizeof *r);
+            cm_partition_stats st;
+            paused = 0;
+            calls = 0, fail_at = i ? i : -1;
+            cm_status s = cm_partition_limited(xy, (const int32_t *const *)tris, 2, M, 12, NULL, &r->mesh, &st, &r->error);
+            paused = 1;
+            r->n = M;
+            CHECK_MSG(s == CM_OK ? cm_halfedge_build_and_check(r, idx, NULL, 1) == CM_OK
+                                 : s == CM_ERR_NO_MEMORY && strstr(r->error.message, "out of memory"),
+                      "partition above the limit, pair %d, allocation %ld failed: status %s, %s", pair, i,
+                      cm_status_string(s), r->error.message);
+            if (i == 0) {
+                CHECK_MSG(s == CM_OK && (pair == 0 ? st.fans == 1 && st.sampled_splits == 0 : st.sampled_splits >= 2),
+                          "pair %d without failures: %zu fans, %zu sampled splits", pair, st.fans, st.sampled_splits);
+                total = calls;
+            }
+            reported += s != CM_OK;
+            cm_result_free(r);
+            paused = 0;
+        }
+        printf("partition above the table limit, pair %d: %ld allocations, each failed once: %ld reported out of memory\n",
+               pair, total, reported);
+        CHECK(reported > 0);
+    }
+}
+
 int main(void)
 {
     double a[2 * N], b[2 * N];
@@ -222,5 +274,6 @@ int main(void)
     test_gmp(polygons);
     test_map_remesher(polygons);
     test_holes();
+    test_above_table_limit();
     return check_summary("test_alloc_failures");
 }

@@ -206,6 +206,56 @@ static void test_link_splits(void)
     CHECK(splits > 10);
 }
 
+/* Partitions through the internal entry with the given table limit; 1 if
+ * the result is valid (checked from its arrays). */
+static int partition_limited(const double *const *xy, int n, long limit, cm_partition_stats *st)
+{
+    int32_t *tris[2] = {malloc(sizeof(int32_t) * 3 * (size_t)(n - 2)), malloc(sizeof(int32_t) * 3 * (size_t)(n - 2))};
+    int32_t *idx = malloc(sizeof(int32_t) * (size_t)n);
+    cm_result *r = calloc(1, sizeof *r);
+    CHECK(tris[0] && tris[1] && idx && r);
+    for (int i = 0; i < n; i++) idx[i] = i;
+    for (int g = 0; g < 2; g++) CHECK(cm_polygon_triangulate(xy[g], idx, n, tris[g], NULL) == 0);
+    CHECK(cm_partition_limited(xy, (const int32_t *const *)tris, 2, (size_t)n, limit, NULL, &r->mesh, st,
+                               &r->error) == CM_OK);
+    r->n = (size_t)n;
+    int ok = cm_halfedge_build_and_check(r, idx, NULL, 1) == CM_OK;
+    cm_result_free(r);
+    free(tris[0]), free(tris[1]), free(idx);
+    return ok;
+}
+
+/* Inputs above the table limit (lowered here). A star pair is fanned from
+ * one Steiner vertex without a table. An exact affine pair (every
+ * diagonal common) is split in halves by sampled splits until the pieces
+ * get tables, and stays Steiner-free. Random pairs are split along common
+ * diagonals seen from spread vertices and stay valid without the
+ * overlay. */
+static void test_above_table_limit(void)
+{
+    enum { N = 1200 };
+    double *a = malloc(sizeof(double) * 2 * N), *b = malloc(sizeof(double) * 2 * N);
+    CHECK(a && b && rp_star(a, N, 31) == 0 && rp_star(b, N, 32) == 0);
+    const double *xy[2] = {a, b};
+    cm_partition_stats st;
+    CHECK(partition_limited(xy, N, 300, &st));
+    CHECK_MSG(st.steiner == 1 && st.fans == 1 && st.sampled_splits == 0 && st.fallback_count == 0,
+              "star pair above the limit: %zu Steiner, %zu fans", st.steiner, st.fans);
+    CHECK(rp_random_simple(a, N, 5) == 0);
+    for (int i = 0; i < N; i++) b[2 * i] = 0.5 * a[2 * i] - a[2 * i + 1] + 1, b[2 * i + 1] = 0.75 * a[2 * i] + 0.5 * a[2 * i + 1];
+    CHECK(partition_limited(xy, N, 250, &st));
+    CHECK_MSG(st.steiner == 0 && st.sampled_splits >= 3 && st.fallback_count == 0,
+              "affine pair above the limit: %zu Steiner, %zu sampled splits", st.steiner, st.sampled_splits);
+    for (uint64_t seed = 1; seed <= 3; seed += 2) {
+        CHECK(rp_random_simple(a, N, seed) == 0 && rp_random_simple(b, N, seed + 40) == 0);
+        CHECK_MSG(partition_limited(xy, N, 600, &st), "random pair %llu above the limit", (unsigned long long)seed);
+        CHECK_MSG(st.sampled_splits > 0 && st.fallback_count == 0 && st.steiner < N,
+                  "random pair %llu: %zu sampled splits, %zu Steiner, %zu fallbacks", (unsigned long long)seed,
+                  st.sampled_splits, st.steiner, st.fallback_count);
+    }
+    free(a), free(b);
+}
+
 /* ---- the property test ----------------------------------------------------- */
 
 /* A square with n/4 points per side (collinear runs), vertex 0 a corner. */
@@ -295,6 +345,7 @@ int main(void)
     test_large_star_pair();
     test_clockwise();
     test_link_splits();
+    test_above_table_limit();
     test_overlay_method();
     test_property();
     return check_summary("test_partition");

@@ -29,7 +29,12 @@
  * Visibility tables: bit sets of common diagonals (diagset.h). The input's
  * serves every item cut from it along diagonals (a diagonal between two
  * vertices of such a sub-polygon is a diagonal of it iff it is one of the
- * input); an item with bends on its boundary gets a set of its own. */
+ * input); an item with bends on its boundary gets a set of its own. A set
+ * is built only when needed: an item large enough that the steps try the
+ * fan first tries it before its set, and an item above the table limit
+ * (CM_PARTITION_MAX_VERTICES) gets none: it is split along the most
+ * balanced common diagonal seen from spread vertices until the pieces
+ * are small enough. */
 #include "construct/partition.h"
 #include "base/buf.h"
 #include "base/clock.h"
@@ -64,6 +69,8 @@
 
 typedef struct vtable {
     cm_diagset common; /* a diagonal in every geometry */
+    long base;         /* stack height under the item it was built for:
+                          once the stack is back there, no item reads it */
 } vtable;
 
 typedef struct item {
@@ -72,10 +79,12 @@ typedef struct item {
     long m, table; /* table -1: needs a table of its own */
     int repeat;    /* has the size of the polygon it was cut from */
     int stuck;     /* known to have no common diagonal */
+    int fanless;   /* known not to be star-shaped in some geometry */
 } item;
 
 typedef struct part {
     size_t k, n;
+    long table_limit; /* items above this size get no table */
     double **xy;
     size_t nv, cap_v;
     int32_t *tri;
@@ -137,13 +146,14 @@ static int push_item(part *p, item it)
 /* A sub-item of it on the local vertices loc[0..m-1]. */
 static int push_sub(part *p, const item *it, const long *loc, long m, int stuck)
 {
-    item c = {malloc((size_t)m * sizeof(int32_t)), malloc((size_t)m * sizeof(int32_t)), m,
-              it->table, m == it->m ? it->repeat : 0, stuck};
-    if (!c.gid || !c.tix) {
+    item c = {malloc((size_t)m * sizeof(int32_t)), it->tix ? malloc((size_t)m * sizeof(int32_t)) : NULL, m,
+              it->table, m == it->m ? it->repeat : 0, stuck, 0};
+    if (!c.gid || (it->tix && !c.tix)) {
         item_free(&c);
         return -1;
     }
-    for (long i = 0; i < m; i++) c.gid[i] = it->gid[loc[i]], c.tix[i] = it->tix[loc[i]];
+    for (long i = 0; i < m; i++) c.gid[i] = it->gid[loc[i]];
+    for (long i = 0; it->tix && i < m; i++) c.tix[i] = it->tix[loc[i]];
     return push_item(p, c);
 }
 
@@ -185,39 +195,63 @@ static long add_table(part *p, cm_diagset *common)
         return -1;
     }
     p->cap_tab = (long)cap;
-    p->tab[p->ntab] = (vtable){*common};
+    p->tab[p->ntab] = (vtable){*common, p->top};
     return p->ntab++;
+}
+
+/* Visibility rows of each geometry of a polygon (the rows read the
+ * triangulations, kept here when made here). */
+typedef struct rowset {
+    cm_visrows **rows;
+    int32_t *tri;
+    size_t k;
+} rowset;
+
+static void close_rows(rowset *r)
+{
+    for (size_t g = 0; r->rows && g < r->k; g++) cm_visrows_free(r->rows[g]);
+    free(r->rows), free(r->tri);
+    r->rows = NULL, r->tri = NULL;
+}
+
+/* The rows of a polygon of m vertices. tris[g] may be NULL: then geometry
+ * g is triangulated here. 0, -1 memory, 1 failed (not simple); *r is
+ * closed on failure. */
+static int open_rows(const double *const *xy, const int32_t *const *tris, size_t k, long m, rowset *r)
+{
+    r->k = k, r->rows = calloc(k, sizeof *r->rows);
+    r->tri = tris ? NULL : malloc(3 * (size_t)m * k * sizeof *r->tri);
+    int32_t *idx = malloc((size_t)m * sizeof *idx);
+    int status = r->rows && (tris || r->tri) && idx ? 0 : -1;
+    for (long i = 0; status == 0 && i < m; i++) idx[i] = (int32_t)i;
+    for (size_t g = 0; status == 0 && g < k; g++) {
+        const int32_t *t = tris ? tris[g] : r->tri + 3 * (size_t)m * g;
+        if (!tris) status = cm_polygon_ear_clip(xy[g], idx, m, r->tri + 3 * (size_t)m * g);
+        if (status == 0 && !(r->rows[g] = cm_visrows_create(xy[g], m, t))) status = -1;
+    }
+    free(idx);
+    if (status != 0) close_rows(r);
+    return status;
 }
 
 /* The common diagonals: pairs that see each other in every geometry, one
  * row of each geometry's visibility at a time (O(k m) memory beside the
- * set). tris[g] may be NULL: then geometry g is triangulated here. 0, -1
- * memory, 1 failed (not simple); *common is set up here, cleared on
- * failure. */
+ * set). tris as for open_rows. 0, -1 memory, 1 failed (not simple);
+ * *common is set up here, cleared on failure. */
 static int common_table(const double *const *xy, const int32_t *const *tris, size_t k, long m,
                         cm_diagset *common)
 {
-    cm_visrows **rows = calloc(k, sizeof *rows);
+    rowset r = {NULL, NULL, k};
     unsigned char *row = malloc((size_t)m * (k + 1));
-    int32_t *tri = tris ? NULL : malloc(3 * (size_t)m * k * sizeof *tri), *idx = malloc((size_t)m * sizeof *idx);
-    int status = -1;
-    if (cm_diagset_init(common, m) != 0 || !rows || !row || (!tris && !tri) || !idx) goto done;
-    for (long i = 0; i < m; i++) idx[i] = (int32_t)i;
-    for (size_t g = 0; g < k; g++) {
-        const int32_t *t = tris ? tris[g] : tri + 3 * (size_t)m * g;
-        if (!tris) {
-            status = cm_polygon_ear_clip(xy[g], idx, m, tri + 3 * (size_t)m * g);
-            if (status != 0) goto done;
-            status = -1;
-        }
-        rows[g] = cm_visrows_create(xy[g], m, t);
-        if (!rows[g]) goto done;
-    }
+    int status = open_rows(xy, tris, k, m, &r);
+    if (status != 0) goto done;
+    status = -1;
+    if (!row || cm_diagset_init(common, m) != 0) goto done;
     unsigned char *all = row + (size_t)m * k;
     for (long i = 0; i < m; i++) {
         memset(all, 1, (size_t)m);
         for (size_t g = 0; g < k; g++) {
-            cm_visrows_row(rows[g], i, row + (size_t)m * g);
+            cm_visrows_row(r.rows[g], i, row + (size_t)m * g);
             for (long j = i + 1; j < m; j++) all[j] &= row[(size_t)m * g + (size_t)j];
         }
         for (long j = i + 1; j < m; j++)
@@ -225,9 +259,9 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
     }
     status = 0;
 done:
-    for (size_t g = 0; rows && g < k; g++) cm_visrows_free(rows[g]);
     if (status != 0) cm_diagset_clear(common);
-    free(rows), free(row), free(tri), free(idx);
+    close_rows(&r);
+    free(row);
     return status;
 }
 
@@ -401,6 +435,30 @@ static int fan_face(part *p, item *it)
     return r;
 }
 
+/* fan_face once per item. */
+static int try_fan(part *p, item *it)
+{
+    int r = it->fanless ? 0 : fan_face(p, it);
+    it->fanless = r == 0;
+    return r;
+}
+
+/* Cuts the item along its diagonal (i, j): both halves onto the stack,
+ * reading the item's table (or, without one, needing their own). 0 or
+ * -1. */
+static int split_diagonal(part *p, const item *it, long i, long j)
+{
+    long m = it->m, *loc = malloc((size_t)(m + 1) * sizeof *loc), c = 0;
+    if (!loc) return -1;
+    for (long x = i;; x = (x + 1) % m) { loc[c++] = x; if (x == j) break; }
+    int bad = push_sub(p, it, loc, c, 0);
+    c = 0;
+    for (long x = j;; x = (x + 1) % m) { loc[c++] = x; if (x == i) break; }
+    bad = bad || push_sub(p, it, loc, c, 0);
+    free(loc);
+    return bad ? -1 : 0;
+}
+
 /* Cuts along the most balanced common diagonal (the paper's tie-break).
  * Returns 1 if cut, 0 if there is none, -1 out of memory. */
 static int greedy_split(part *p, item *it, const cm_diagview *common)
@@ -411,19 +469,72 @@ static int greedy_split(part *p, item *it, const cm_diagview *common)
             long j = (i + span) % m;
             if (2 * span == m && i >= span) break;
             if (!cm_diagview_has(common, i, j)) continue;
-            long *loc = malloc((size_t)(m + 1) * sizeof *loc), c = 0;
-            if (!loc) return -1;
-            for (long x = i;; x = (x + 1) % m) { loc[c++] = x; if (x == j) break; }
-            int bad = push_sub(p, it, loc, c, 0);
-            c = 0;
-            for (long x = j;; x = (x + 1) % m) { loc[c++] = x; if (x == i) break; }
-            bad = bad || push_sub(p, it, loc, c, 0);
-            free(loc);
             p->st->greedy_splits++;
-            return bad ? -1 : 1;
+            return split_diagonal(p, it, i, j) == 0 ? 1 : -1;
         }
     }
     return 0;
+}
+
+/* ---- items too large for a table ------------------------------------------ */
+
+/* Sources of a sampled split; when none of them has a common diagonal,
+ * up to SAMPLE_MORE further ones are looked at (a piece with common
+ * diagonals that few is often stuck, for the overlay, anyway). */
+#define SAMPLE_SOURCES 64
+#define SAMPLE_MORE 1024
+
+/* The most balanced common diagonal at vertex i better than *best (its
+ * balance, the shorter side's span): updates *best and *bj. row, all: m
+ * bytes each. */
+static void best_at(const rowset *r, long m, long i, unsigned char *row, unsigned char *all, long *best, long *bj)
+{
+    memset(all, 1, (size_t)m);
+    for (size_t g = 0; g < r->k; g++) {
+        cm_visrows_row(r->rows[g], i, row);
+        for (long j = 0; j < m; j++) all[j] &= row[j];
+    }
+    *bj = -1;
+    for (long j = 0; j < m; j++) {
+        long span = (j - i + m) % m, balance = span < m - span ? span : m - span;
+        if (all[j] && balance > *best) *best = balance, *bj = j;
+    }
+}
+
+/* Cuts an item without a table along the most balanced common diagonal
+ * from SAMPLE_SOURCES evenly spread vertices (one visibility row per
+ * source and geometry, O(k m) each), or when none of them has one, the
+ * first one from SAMPLE_MORE others; the halves get tables of their own
+ * or, still too large, another sampled split. Returns 1 if cut, 0 if none
+ * was seen, -1 out of memory, 2 not simple. */
+static int sampled_split(part *p, item *it)
+{
+    double t0 = cm_seconds_now();
+    long m = it->m, best = 1, bi = -1, bj = -1;
+    size_t k = p->k;
+    double **l = local_xy(p, it);
+    unsigned char *row = malloc(2 * (size_t)m);
+    rowset r = {NULL, NULL, k};
+    int s = l && row ? open_rows((const double *const *)l, NULL, k, m, &r) : -1;
+    for (long q = 0; s == 0 && q < SAMPLE_SOURCES && 2 * best < m; q++) {
+        long i = (long)((double)q * (double)m / SAMPLE_SOURCES), j;
+        best_at(&r, m, i, row, row + m, &best, &j);
+        if (j >= 0) bi = i, bj = j;
+    }
+    long more = m < SAMPLE_MORE ? m : SAMPLE_MORE;
+    for (long q = 0; s == 0 && bi < 0 && q < more; q++) {
+        long i = (long)((double)q * (double)m / (double)more + 0.5) % m, j;
+        best_at(&r, m, i, row, row + m, &best, &j);
+        if (j >= 0) bi = i, bj = j;
+    }
+    close_rows(&r);
+    free_xy(l, k);
+    free(row);
+    p->st->seconds_visibility += cm_seconds_now() - t0;
+    if (s != 0) return s > 0 ? 2 : -1;
+    if (bi < 0) return 0;
+    p->st->sampled_splits++;
+    return split_diagonal(p, it, bi, bj) == 0 ? 1 : -1;
 }
 
 /* ---- cutting a stuck face along minimum-link paths ------------------------ */
@@ -846,7 +957,7 @@ static int split_along(part *p, const item *it, const pair *pr, const long *stei
     for (int half = 0; half < 2; half++) {
         long from = half == 0 ? pr->u : pr->v, to = half == 0 ? pr->v : pr->u;
         long size = (to - from + m) % m + 1 + nb;
-        item c = {malloc((size_t)size * sizeof(int32_t)), NULL, size, -1, size == m, 0};
+        item c = {malloc((size_t)size * sizeof(int32_t)), NULL, size, -1, size == m, 0, 0};
         if (!c.gid) return -1;
         long n = 0;
         for (long x = from;; x = (x + 1) % m) {
@@ -1030,7 +1141,7 @@ static int common_step(part *p, item *it, cm_status *s)
         /* Too large for the program: one Steiner vertex when the item is
          * star-shaped in every geometry (what the program's fan would
          * give), else a balanced split. */
-        int g = fan_face(p, it);
+        int g = try_fan(p, it);
         if (g == 0) g = greedy_split(p, it, common);
         if (g < 0) *s = no_memory(p);
         done = g != 0;
@@ -1038,14 +1149,32 @@ static int common_step(part *p, item *it, cm_status *s)
     return done;
 }
 
+/* An item above the table limit: one fan when it is star-shaped in every
+ * geometry, else a sampled split, else the overlay. */
+static cm_status large_step(part *p, item *it)
+{
+    int cut = try_fan(p, it);
+    if (cut == 0) cut = sampled_split(p, it);
+    if (cut == 2) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: a sub-polygon is not simple");
+    if (cut < 0) return no_memory(p);
+    return cut ? CM_OK : fallback(p, it);
+}
+
 static cm_status process_item(part *p, item *it)
 {
     if (it->m == 3)
         return add_item_triangle(p, it, 0, 1, 2) == 0 ? CM_OK : no_memory(p);
+    if (it->table < 0 && (double)it->m * (double)it->m > DP_WORK_LIMIT) {
+        /* At this size the steps below try the fan first whatever the
+         * table holds: before the table, the same result without it. */
+        int fan = try_fan(p, it);
+        if (fan != 0) return fan > 0 ? CM_OK : no_memory(p);
+    }
+    if (it->table < 0 && it->m > p->table_limit) return large_step(p, it);
     cm_status s = CM_OK;
     if (it->table < 0 && (s = table_for_item(p, it)) != CM_OK) return s;
     if (!it->stuck && common_step(p, it, &s)) return s;
-    int cut = fan_face(p, it);
+    int cut = try_fan(p, it);
     if (cut == 0) cut = link_split(p, it);
     if (cut < 0) return no_memory(p);
     return cut ? CM_OK : fallback(p, it);
@@ -1063,13 +1192,19 @@ static cm_status start(part *p, const double *const *geoms, const int32_t *const
         memcpy(p->xy[g], geoms[g], 2 * n * sizeof(double));
     }
     p->nv = n;
+    if ((long)n > p->table_limit || (double)n * (double)n > DP_WORK_LIMIT) { /* the table later, if needed */
+        item root = {malloc(n * sizeof(int32_t)), NULL, (long)n, -1, 0, 0, 0};
+        if (!root.gid) return no_memory(p);
+        for (size_t i = 0; i < n; i++) root.gid[i] = (int32_t)i;
+        return push_item(p, root) == 0 ? CM_OK : no_memory(p);
+    }
     double t0 = cm_seconds_now();
     cm_diagset common = {0, 0, NULL};
     int t = common_table(geoms, tris, k, (long)n, &common);
     if (t > 0) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: the input is not simple");
     if (t < 0 || add_table(p, &common) < 0) return no_memory(p);
     p->st->seconds_visibility += cm_seconds_now() - t0;
-    item root = {malloc(n * sizeof(int32_t)), malloc(n * sizeof(int32_t)), (long)n, 0, 0, 0};
+    item root = {malloc(n * sizeof(int32_t)), malloc(n * sizeof(int32_t)), (long)n, 0, 0, 0, 0};
     if (!root.gid || !root.tix) {
         item_free(&root);
         return no_memory(p);
@@ -1089,26 +1224,22 @@ static void part_free(part *p)
     free(p->stack);
 }
 
-cm_status cm_partition(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
-                       cm_progress *progress, cm_mesh *out, cm_partition_stats *stats,
-                       cm_error *err)
+cm_status cm_partition_limited(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
+                               long table_limit, cm_progress *progress, cm_mesh *out,
+                               cm_partition_stats *stats, cm_error *err)
 {
     part p;
     memset(&p, 0, sizeof p);
     memset(stats, 0, sizeof *stats);
-    p.k = k, p.n = n, p.st = stats, p.err = err, p.progress = progress;
-    if (n > CM_PARTITION_MAX_VERTICES) {
-        size_t centroids = 0;
-        stats->fallback_count = 1;
-        cm_status s = cm_overlay(geoms, tris, k, n, out, &centroids, err);
-        if (s == CM_OK) stats->steiner = out->nv - n;
-        return s;
-    }
+    p.k = k, p.n = n, p.table_limit = table_limit, p.st = stats, p.err = err, p.progress = progress;
     cm_status s = start(&p, geoms, tris);
     while (s == CM_OK && p.top > 0) {
         item it = p.stack[--p.top];
         s = process_item(&p, &it);
         item_free(&it);
+        /* Tables no item on the stack reads any more (an item's table
+         * serves only the items cut from it, all above its base). */
+        while (p.ntab > 0 && p.tab[p.ntab - 1].base >= p.top) cm_diagset_clear(&p.tab[--p.ntab].common);
         if (s == CM_OK && cm_progress_poll(progress, CM_STAGE_PARTITION, 0.0))
             s = cm_fail_status(err, CM_ERR_CANCELLED);
     }
@@ -1119,4 +1250,11 @@ cm_status cm_partition(const double *const *geoms, const int32_t *const *tris, s
     }
     part_free(&p);
     return s;
+}
+
+cm_status cm_partition(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
+                       cm_progress *progress, cm_mesh *out, cm_partition_stats *stats,
+                       cm_error *err)
+{
+    return cm_partition_limited(geoms, tris, k, n, CM_PARTITION_MAX_VERTICES, progress, out, stats, err);
 }

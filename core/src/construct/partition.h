@@ -13,9 +13,11 @@
  * first split along the most balanced common diagonal. */
 #define CM_DP_MAX_VERTICES 300
 
-/* The common-diagonal set of the input takes n^2 / 8 bytes (200 MB at
- * this size): beyond this many vertices the whole input goes to the
- * overlay construction (counted as one fallback). */
+/* A common-diagonal set takes m^2 / 8 bytes (200 MB at this size): a
+ * sub-polygon above this many vertices gets none. It is fanned from one
+ * Steiner vertex when star-shaped in every geometry, else split along the
+ * most balanced common diagonal seen from a few spread vertices (the
+ * overlay construction takes it only when none of them has one). */
 #define CM_PARTITION_MAX_VERTICES 40000
 
 typedef struct cm_partition_stats {
@@ -25,6 +27,7 @@ typedef struct cm_partition_stats {
     size_t steinerfree;    /* of those, sub-polygons triangulated without
                               Steiner vertices */
     size_t greedy_splits;  /* splits along a balanced common diagonal */
+    size_t sampled_splits; /* of sub-polygons too large for a table */
     size_t link_splits;    /* splits along minimum-link paths with bends */
     size_t fans;           /* faces triangulated from one Steiner vertex */
     double seconds_visibility, seconds_dp, seconds_link, seconds_fallback;
@@ -39,5 +42,11 @@ typedef struct cm_partition_stats {
 cm_status cm_partition(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
                        cm_progress *progress, cm_mesh *out, cm_partition_stats *stats,
                        cm_error *err);
+
+/* The same with another table limit in place of CM_PARTITION_MAX_VERTICES
+ * (the tests reach the large-input steps at small sizes). */
+cm_status cm_partition_limited(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
+                               long table_limit, cm_progress *progress, cm_mesh *out,
+                               cm_partition_stats *stats, cm_error *err);
 
 #endif
