@@ -658,7 +658,7 @@ void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const c
     set_position(km, g, v, p);
     for (size_t i = 0; i < star->n; i++) { /* only geometry g changed */
         int32_t t = star->a[i] / 3;
-        set_key(km, t, fresh_key(km, t, cm_dirty_smooth(g) | CM_DIRTY_OPTIMIZE));
+        set_key(km, t, fresh_key(km, t, cm_dirty_smooth(g) | cm_dirty_search(g) | CM_DIRTY_OPTIMIZE));
     }
 }
 

@@ -67,11 +67,17 @@ static inline int cm_kmesh_tri_live(const cm_kmesh *km, int32_t t) { return km->
  * (geometries from the 8th on share one bit, which stays set).
  * CM_DIRTY_OPTIMIZE: a triangle around it changed in any geometry, or a
  * transaction changing one was undone, since cm_smooth_optimize last
- * found it optimal. */
+ * found it optimal. cm_dirty_search(g): a triangle around it changed in
+ * geometry g since cm_smooth_optimize last found no gain there (from the
+ * 7th geometry on one shared bit, which stays set): the search depends on
+ * the star in g alone, so while the bit is clear it would find none
+ * again. */
 #define CM_DIRTY_OPTIMIZE 0x100u
-#define CM_DIRTY_ALL 0x1ffu
+#define CM_DIRTY_ALL 0xffffu
 static inline unsigned cm_dirty_smooth(size_t g) { return 1u << (g < 7 ? g : 7); }
 static inline int cm_dirty_smooth_shared(size_t g) { return g >= 7; }
+static inline unsigned cm_dirty_search(size_t g) { return 1u << (9 + (g < 6 ? g : 6)); }
+static inline int cm_dirty_search_shared(size_t g) { return g >= 6; }
 
 /* Builds from a compatible triangulation whose vertices 0..n-1 are the
  * counter-clockwise boundary. CM_OK, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL

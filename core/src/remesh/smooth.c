@@ -199,8 +199,10 @@ int cm_smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int
 /* The search found no gain for v in geometry g. Returns 0. */
 static int no_gain(cm_kmesh *km, size_t g, int32_t v)
 {
-    if (g + 1 == km->k) /* optimal in every geometry, till a change */
-        cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~CM_DIRTY_OPTIMIZE);
+    unsigned dirty = km->vdirty[v];
+    if (!cm_dirty_search_shared(g)) dirty &= ~cm_dirty_search(g); /* till its star in g changes */
+    if (g + 1 == km->k) dirty &= ~CM_DIRTY_OPTIMIZE; /* optimal in every geometry, till a change */
+    cm_kmesh_set_dirty(km, v, dirty);
     return 0;
 }
 
@@ -214,6 +216,7 @@ int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
                                      {-0.7071067811865476, -0.7071067811865476}, {0, -1},
                                      {0.7071067811865476, -0.7071067811865476}};
     if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0 || !(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
+    if (!(km->vdirty[v] & cm_dirty_search(g))) return no_gain(km, g, v); /* its star in g is as it found none */
     long m = cm_kmesh_star(km, v, star);
     if (m < 0) return m == -1 ? -1 : 0;
     ring r;
