@@ -229,6 +229,19 @@ int cm_kmesh_tx_rollback(cm_kmesh *km)
     return 0;
 }
 
+int cm_kmesh_tx_vertices(const cm_kmesh *km, cm_ibuf *out)
+{
+    long nt = cm_log_saved_count(km->log);
+    if (nt < 0) return -1;
+    for (long i = 0; i < nt; i++) {
+        int32_t t = cm_log_saved_triangle(km->log, (size_t)i);
+        if (km->tri[3 * t] >= 0)
+            for (int j = 0; j < 3; j++)
+                if (cm_ibuf_push(out, km->tri[3 * t + j])) return -1;
+    }
+    return 0;
+}
+
 void cm_kmesh_set_caps(cm_kmesh *km, double target, const double *bcap, const double *vcap)
 {
     km->target = target;

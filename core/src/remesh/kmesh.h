@@ -138,6 +138,11 @@ int cm_kmesh_tx_begin(cm_kmesh *km);
 int cm_kmesh_tx_region(const cm_kmesh *km, double *before, double *after);
 void cm_kmesh_tx_commit(cm_kmesh *km);
 int cm_kmesh_tx_rollback(cm_kmesh *km);
+/* Appends to out the vertices of the live triangles in the slots the last
+ * transaction changed (after its commit or rollback: as they are now;
+ * repeats possible). Returns 0, or -1 out of memory or when the log ran
+ * out of it. */
+int cm_kmesh_tx_vertices(const cm_kmesh *km, cm_ibuf *out);
 
 /* Full exact check (tests): adjacency symmetric, every live triangle
  * counter-clockwise in every geometry, boundary edges exactly i -> bnext[i].
