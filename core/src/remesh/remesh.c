@@ -216,30 +216,32 @@ static int queue_around(remesher *x, int32_t v)
     return cm_kmesh_is_boundary(km, v) ? 0 : cm_work_push(&x->verts, v);
 }
 
-/* Is a triangle around v among the furthest from its target, short of
- * it by at least half the worst shortfall? (uses x->star) The position
- * search is worth its cost there. */
-static int near_short(remesher *x, int32_t v)
+/* Is a triangle around v (its star in x->star) among the furthest from
+ * its target, short of it by at least half the worst shortfall? The
+ * position search is worth its cost there. */
+static int near_short(remesher *x)
 {
     double gate = fmin(0.0, 0.5 * cm_kmesh_min_slack(&x->km));
-    long m = cm_kmesh_star(&x->km, v, &x->star);
-    for (long i = 0; i < m; i++)
+    for (size_t i = 0; i < x->star.n; i++)
         if (x->km.slack[x->star.a[i] / 3] < gate) return 1;
     return 0;
 }
 
-/* Smooths v in every geometry. Returns 1 if it moved, -1 out of memory.
- * Where the smoothing formulas left v in place and nothing around it has
- * changed in that geometry since, they would leave it again: skipped. */
+/* Smooths interior live v in every geometry. Returns 1 if it moved, -1
+ * out of memory. Where the smoothing formulas left v in place and nothing
+ * around it has changed in that geometry since, they would leave it
+ * again: skipped. Moves keep v's star, so it is found once. */
 static int smooth_one(remesher *x, int32_t v)
 {
     cm_kmesh *km = &x->km;
+    long m = cm_kmesh_star(km, v, &x->star);
+    if (m < 0) return m == -1 ? -1 : 0;
     int moved = 0;
     for (size_t g = 0; g < km->k; g++) {
         unsigned bit = cm_dirty_smooth(g);
-        int s = km->vdirty[v] & bit ? cm_smooth_vertex(km, g, v, x->o->smoothing, 1, &x->star) : 0;
+        int s = km->vdirty[v] & bit ? cm_smooth_vertex_star(km, g, v, x->o->smoothing, 1, &x->star) : 0;
         if (s == 0 && !cm_dirty_smooth_shared(g)) cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~bit);
-        if (s == 0 && near_short(x, v)) s = cm_smooth_optimize(km, g, v, &x->star);
+        if (s == 0 && near_short(x)) s = cm_smooth_optimize_star(km, g, v, &x->star);
         if (s < 0) return -1;
         moved |= s;
     }

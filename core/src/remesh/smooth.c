@@ -195,6 +195,12 @@ int cm_smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int
     if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0) return 0;
     long m = cm_kmesh_star(km, v, star);
     if (m < 0) return m == -1 ? -1 : 0;
+    return cm_smooth_vertex_star(km, g, v, method, smart, star);
+}
+
+int cm_smooth_vertex_star(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
+                          const cm_ibuf *star)
+{
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
     double before = smart ? sin2_to_angle(star_sin2(&r, r.c)) : 0;
@@ -221,14 +227,21 @@ static int no_gain(cm_kmesh *km, size_t g, int32_t v)
 
 int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
 {
-    static const double dir[8][2] = {{1, 0}, {0.7071067811865476, 0.7071067811865476}, {0, 1},
-                                     {-0.7071067811865476, 0.7071067811865476}, {-1, 0},
-                                     {-0.7071067811865476, -0.7071067811865476}, {0, -1},
-                                     {0.7071067811865476, -0.7071067811865476}};
     if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0 || !(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
     if (!(km->vdirty[v] & cm_dirty_search(g))) return no_gain(km, g, v); /* its star in g is as it found none */
     long m = cm_kmesh_star(km, v, star);
     if (m < 0) return m == -1 ? -1 : 0;
+    return cm_smooth_optimize_star(km, g, v, star);
+}
+
+int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star)
+{
+    static const double dir[8][2] = {{1, 0}, {0.7071067811865476, 0.7071067811865476}, {0, 1},
+                                     {-0.7071067811865476, 0.7071067811865476}, {-1, 0},
+                                     {-0.7071067811865476, -0.7071067811865476}, {0, -1},
+                                     {0.7071067811865476, -0.7071067811865476}};
+    if (!(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
+    if (!(km->vdirty[v] & cm_dirty_search(g))) return no_gain(km, g, v); /* its star in g is as it found none */
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
     double best[2] = {r.c[0], r.c[1]}, q = star_sin2(&r, best), start = q, near2 = HUGE_VAL, step = HUGE_VAL;
