@@ -39,6 +39,8 @@ typedef struct cm_kmesh {
     cm_ibuf free_v, free_t;
     double *scale;         /* per geometry: sqrt(polygon area), for lengths */
     double *tkey;          /* triangle: smallest angle over geometries */
+    double *tang;          /* k per triangle: its smallest angle in each
+                              geometry; the first NaN when not known */
     double *slack;         /* triangle: tkey minus its target */
     cm_heap tq;            /* live triangles by slack */
     cm_heap eq;            /* candidate edges (smaller corner) by -score */

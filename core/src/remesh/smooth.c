@@ -19,7 +19,7 @@
 /* v's link polygon in geometry g, counter-clockwise; p[m] repeats p[0]. */
 typedef struct ring {
     const double *c;                      /* v itself */
-    const double *p[CM_SMOOTH_MAX_DEGREE + 1];
+    double p[CM_SMOOTH_MAX_DEGREE + 1][2]; /* copied: the scans read them in order */
     double link2[CM_SMOOTH_MAX_DEGREE];   /* |p[i+1] - p[i]|^2: the same for every trial point */
     long m;
     long worst;                           /* triangle (p[i], p[i+1]) last found smallest */
@@ -30,8 +30,10 @@ static int ring_of(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star,
     r->m = (long)star->n;
     if (r->m < 3 || r->m > CM_SMOOTH_MAX_DEGREE) return -1;
     r->c = cm_kmesh_pos(km, g, v);
-    for (long i = 0; i < r->m; i++) r->p[i] = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[i])]);
-    r->p[r->m] = r->p[0];
+    for (long i = 0; i <= r->m; i++) {
+        const double *q = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[i < r->m ? i : 0])]);
+        r->p[i][0] = q[0], r->p[i][1] = q[1];
+    }
     for (long i = 0; i < r->m; i++) {
         double dx = r->p[i + 1][0] - r->p[i][0], dy = r->p[i + 1][1] - r->p[i][1];
         r->link2[i] = dx * dx + dy * dy;
