@@ -114,15 +114,21 @@ static inline double ring_sin2(const ring *r, const double q[2], long i, double 
  * 90 degrees, no atan2: this runs for every candidate position). Only
  * values above `floor` matter to the callers: the scan stops at the first
  * triangle at or below it and returns a value at or below floor. */
-static double star_sin2_above(ring *r, const double q[2], double floor)
+static inline double star_sin2_above(ring *r, const double q[2], double floor)
 {
     double lo = 1.0;
-    long m = r->m, lo_at = r->worst;
-    for (long j = 0, i = r->worst; j < m; j++, i = i + 1 < m ? i + 1 : 0) { /* from the last worst: it fails first */
+    long m = r->m, w = r->worst, lo_at = w;
+    for (long i = w; i < m; i++) { /* from the last worst: it fails first */
+        double s = ring_sin2(r, q, i, floor);
+        if (s < lo) lo = s, lo_at = i;
+        if (!(lo > floor)) goto done;
+    }
+    for (long i = 0; i < w; i++) {
         double s = ring_sin2(r, q, i, floor);
         if (s < lo) lo = s, lo_at = i;
         if (!(lo > floor)) break;
     }
+done:
     r->worst = lo_at;
     return lo;
 }
