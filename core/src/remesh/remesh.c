@@ -84,9 +84,9 @@
 /* The short triangles a round of forced moves looks at. */
 #define CM_STEP_OUT_WORST 8
 /* A forced move whose repair ends this close below its start (radians,
- * about 0.1 degrees) gets a second repair before the decision: each
- * distinct move runs once per round (step_out), and such a move was
- * often kept on a later try before. */
+ * about 0.1 degrees) gets a second repair before the decision: an
+ * undone move is not tried again till the mesh near it changes
+ * (step_out), and such a move was often kept on a later try before. */
 #define CM_FORCED_CLOSE 0.002
 
 typedef struct tabu_set { /* keys (vertex pairs, forced moves) -> counts */
