@@ -72,7 +72,11 @@ static int keys_fresh(const cm_kmesh *km)
             continue;
         }
         double key = CM_PI;
-        for (size_t g = 0; g < km->k; g++) key = fmin(key, cm_kmesh_tri_angle(km, g, t));
+        const double *tang = km->tang + (size_t)t * km->k; /* the per-geometry angles, where known */
+        for (size_t g = 0; g < km->k; g++) {
+            key = fmin(key, cm_kmesh_tri_angle(km, g, t));
+            if (!isnan(tang[0]) && tang[g] != cm_kmesh_tri_angle(km, g, t)) return 0;
+        }
         if (key != km->tkey[t] || !cm_heap_contains(&km->tq, t)) return 0;
         for (int32_t c = 3 * t; c < 3 * t + 3; c++) {
             int32_t o = km->opp[c];
@@ -782,8 +786,36 @@ static void test_cancel_and_clockwise(void)
     free(a), free(b);
 }
 
+/* cm_triangle_min_angle_above decides as cm_triangle_min_angle's value
+ * compared with the bound: bounds at the angle itself and a few ulps
+ * either side, random ones, slivers, and coordinates near 1e-200 and
+ * 1e200 (the long double path). */
+static void test_min_angle_above(int count)
+{
+    rp_rng rng = {20261124};
+    int mismatches = 0, near = 0;
+    for (int i = 0; i < count; i++) {
+        double scale = i % 7 == 0 ? 1e-200 : i % 7 == 1 ? 1e200 : 1.0, p[3][2];
+        for (int j = 0; j < 3; j++)
+            for (int d = 0; d < 2; d++) p[j][d] = scale * (rp_uniform(&rng) - 0.5);
+        if (i % 5 == 0) /* a sliver: the third point near the first two's line */
+            for (int d = 0; d < 2; d++) p[2][d] = 0.3 * p[0][d] + 0.7 * p[1][d] + scale * 1e-9 * rp_uniform(&rng);
+        double a = cm_triangle_min_angle(p[0], p[1], p[2]), bound;
+        switch (i % 4) {
+        case 0: bound = a; break;
+        case 1: bound = nextafter(nextafter(a, 0.0), 0.0); break;
+        case 2: bound = nextafter(a, 1.0); break;
+        default: bound = rp_uniform(&rng) * 1.2; break;
+        }
+        near += i % 4 != 3;
+        mismatches += cm_triangle_min_angle_above(p[0], p[1], p[2], bound, tan(bound)) != (a > bound);
+    }
+    CHECK(near > 0 && mismatches == 0);
+}
+
 int main(void)
 {
+    test_min_angle_above(40000);
     test_property_operations(60, 400);
     test_map_descent(30);
     test_smoothing_variants();

@@ -17,7 +17,7 @@ int cm_grow(void **p, size_t *cap, size_t need, size_t elem)
     return 0;
 }
 
-int cm_ibuf_push(cm_ibuf *b, int32_t x)
+int cm_ibuf_push_grow(cm_ibuf *b, int32_t x)
 {
     if (b->n == b->cap) {
         size_t cap = b->cap ? 2 * b->cap : 32;
@@ -35,7 +35,7 @@ void cm_ibuf_free(cm_ibuf *b)
     b->a = NULL, b->n = b->cap = 0;
 }
 
-int cm_work_push(cm_work *w, int32_t id)
+int cm_work_push_grow(cm_work *w, int32_t id)
 {
     if ((size_t)id >= w->cap) {
         size_t cap = w->cap ? w->cap : 64;

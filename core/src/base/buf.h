@@ -15,7 +15,15 @@ typedef struct cm_ibuf {
     size_t n, cap;
 } cm_ibuf;
 
-int cm_ibuf_push(cm_ibuf *b, int32_t x); /* 0, or CM_NO_MEMORY */
+/* cm_ibuf_push when b is full. */
+int cm_ibuf_push_grow(cm_ibuf *b, int32_t x);
+/* 0, or CM_NO_MEMORY. Inline: the remesher's work lists push in every step. */
+static inline int cm_ibuf_push(cm_ibuf *b, int32_t x)
+{
+    if (b->n == b->cap) return cm_ibuf_push_grow(b, x);
+    b->a[b->n++] = x;
+    return 0;
+}
 void cm_ibuf_free(cm_ibuf *b);
 
 /* A work list of ids (vertices or corners) without duplicates. */
@@ -25,7 +33,16 @@ typedef struct cm_work {
     size_t cap;
 } cm_work;
 
-int cm_work_push(cm_work *w, int32_t id); /* 0, or CM_NO_MEMORY */
+/* cm_work_push when id is beyond w->cap. */
+int cm_work_push_grow(cm_work *w, int32_t id);
+static inline int cm_work_push(cm_work *w, int32_t id) /* 0, or CM_NO_MEMORY */
+{
+    if ((size_t)id >= w->cap) return cm_work_push_grow(w, id);
+    if (w->queued[id]) return 0;
+    int s = cm_ibuf_push(&w->items, id);
+    if (!s) w->queued[id] = 1;
+    return s;
+}
 int32_t cm_work_pop(cm_work *w);          /* -1 when empty */
 void cm_work_free(cm_work *w);
 

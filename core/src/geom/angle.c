@@ -40,19 +40,42 @@ static double min_angle_wide(const double a[2], const double b[2], const double 
     return (double)atan2l(area2, dot);
 }
 
-double cm_triangle_min_angle(const double a[2], const double b[2], const double c[2])
+/* The smallest angle as atan2(*area2, *dot); 0 outside the safe range
+ * (the caller then takes min_angle_wide). */
+static int min_angle_terms(const double a[2], const double b[2], const double c[2], double *area2, double *dot)
 {
     double abx = b[0] - a[0], aby = b[1] - a[1];
     double bcx = c[0] - b[0], bcy = c[1] - b[1];
     double cax = a[0] - c[0], cay = a[1] - c[1];
     double lab = abx * abx + aby * aby, lbc = bcx * bcx + bcy * bcy, lca = cax * cax + cay * cay;
-    if (!in_safe_range(lab + lbc + lca)) return min_angle_wide(a, b, c);
-    double area2 = fabs(abx * cay - aby * cax);
-    double dot;
-    if (lab <= lbc && lab <= lca) dot = -(cax * bcx + cay * bcy);      /* at c */
-    else if (lbc <= lca) dot = -(abx * cax + aby * cay);               /* at a */
-    else dot = -(bcx * abx + bcy * aby);                               /* at b */
-    return atan2(area2, dot);
+    if (!in_safe_range(lab + lbc + lca)) return 0;
+    *area2 = fabs(abx * cay - aby * cax);
+    if (lab <= lbc && lab <= lca) *dot = -(cax * bcx + cay * bcy);      /* at c */
+    else if (lbc <= lca) *dot = -(abx * cax + aby * cay);               /* at a */
+    else *dot = -(bcx * abx + bcy * aby);                               /* at b */
+    return 1;
+}
+
+double cm_triangle_min_angle(const double a[2], const double b[2], const double c[2])
+{
+    double area2, dot;
+    return min_angle_terms(a, b, c, &area2, &dot) ? atan2(area2, dot) : min_angle_wide(a, b, c);
+}
+
+int cm_triangle_min_angle_above(const double a[2], const double b[2], const double c[2], double bound,
+                                double tan_bound)
+{
+    double area2, dot;
+    if (!min_angle_terms(a, b, c, &area2, &dot)) return min_angle_wide(a, b, c) > bound;
+    /* The smallest angle is at most 60 degrees, so dot > 0 but for a
+     * degenerate triangle; atan2 and tan are off by an ulp or two, far
+     * inside the margin. */
+    if (dot > 0) {
+        double edge = dot * tan_bound;
+        if (area2 > edge * (1 + 1e-9)) return 1;
+        if (area2 < edge * (1 - 1e-9)) return 0;
+    }
+    return atan2(area2, dot) > bound;
 }
 
 double cm_triangle_max_angle(const double a[2], const double b[2], const double c[2])

@@ -11,6 +11,12 @@ double cm_angle_at(const double p[2], const double q[2], const double r[2]);
 /* Smallest angle (radians) of triangle abc, the one opposite the shortest
  * edge; 0 for a degenerate one. */
 double cm_triangle_min_angle(const double a[2], const double b[2], const double c[2]);
+/* 1 when cm_triangle_min_angle(a, b, c) > bound, exactly as that
+ * comparison, for bound in [0, pi/2) and tan_bound = tan(bound): the
+ * tangents decide without the atan2 unless they are within rounding of
+ * each other. */
+int cm_triangle_min_angle_above(const double a[2], const double b[2], const double c[2], double bound,
+                                double tan_bound);
 /* Largest angle (radians) of triangle abc. */
 double cm_triangle_max_angle(const double a[2], const double b[2], const double c[2]);
 /* Squared lengths inside [2^-1000, 2^1000] neither overflow nor underflow

@@ -10,13 +10,16 @@ int cm_flip_try(cm_kmesh *km, int32_t c)
     int32_t o = km->opp[c];
     if (o < 0 || km->tri[c] < 0) return 0;
     int32_t v0 = km->tri[c], v1 = km->tri[cm_next(c)], v2 = km->tri[cm_prev(c)], v3 = km->tri[o];
-    double before = fmin(km->tkey[c / 3], km->tkey[o / 3]), after = CM_PI;
-    for (size_t g = 0; g < km->k && after > before + CM_ANGLE_EPS; g++) {
+    /* Every new triangle's smallest angle must beat the pair's by eps
+     * (their keys are smallest angles over the geometries). */
+    double bound = fmin(km->tkey[c / 3], km->tkey[o / 3]) + CM_ANGLE_EPS, tan_bound = tan(bound);
+    for (size_t g = 0; g < km->k; g++) {
         const double *p0 = cm_kmesh_pos(km, g, v0), *p1 = cm_kmesh_pos(km, g, v1),
                      *p2 = cm_kmesh_pos(km, g, v2), *p3 = cm_kmesh_pos(km, g, v3);
-        after = fmin(after, fmin(cm_triangle_min_angle(p0, p1, p3), cm_triangle_min_angle(p3, p2, p0)));
+        if (!cm_triangle_min_angle_above(p0, p1, p3, bound, tan_bound) ||
+            !cm_triangle_min_angle_above(p3, p2, p0, bound, tan_bound))
+            return 0;
     }
-    if (!(after > before + CM_ANGLE_EPS)) return 0;
     /* Exact: both new triangles counter-clockwise = quad strictly convex. */
     for (size_t g = 0; g < km->k; g++)
         if (!cm_kmesh_tri_ok(km, g, v0, v1, v3) || !cm_kmesh_tri_ok(km, g, v3, v2, v0)) return 0;

@@ -60,10 +60,11 @@ static int reserve_triangles(cm_kmesh *km, int32_t need)
     size_t c = (size_t)cap;
     if (resize(&km->tri, 3 * c, sizeof *km->tri) || resize(&km->opp, 3 * c, sizeof *km->opp) ||
         resize(&km->tkey, c, sizeof *km->tkey) || resize(&km->slack, c, sizeof *km->slack) ||
+        resize(&km->tang, c * km->k, sizeof *km->tang) ||
         cm_heap_reserve(&km->tq, cap) || cm_heap_reserve(&km->eq, 3 * cap) || reserve_list(&km->free_t, cap))
         return -1;
     for (int32_t i = 3 * km->cap_t; i < 3 * cap; i++) km->tri[i] = -1, km->opp[i] = -1;
-    for (int32_t t = km->cap_t; t < cap; t++) km->tkey[t] = CM_PI, km->slack[t] = 0;
+    for (int32_t t = km->cap_t; t < cap; t++) km->tkey[t] = CM_PI, km->slack[t] = 0, km->tang[(size_t)t * km->k] = NAN;
     km->cap_t = cap;
     return 0;
 }
@@ -112,7 +113,7 @@ void cm_kmesh_free(cm_kmesh *km)
     if (km->xy)
         for (size_t g = 0; g < km->k; g++) free(km->xy[g]);
     free(km->xy), free(km->tri), free(km->opp), free(km->vc), free(km->scale);
-    free(km->tkey), free(km->slack), free(km->mark), free(km->bcap), free(km->bnext), free(km->vcap), free(km->vdirty);
+    free(km->tkey), free(km->tang), free(km->slack), free(km->mark), free(km->bcap), free(km->bnext), free(km->vcap), free(km->vdirty);
     cm_ibuf_free(&km->free_v), cm_ibuf_free(&km->free_t);
     cm_heap_free(&km->tq), cm_heap_free(&km->eq);
     memset(km, 0, sizeof *km);
@@ -186,13 +187,16 @@ void cm_kmesh_set_dirty(cm_kmesh *km, int32_t v, unsigned dirty)
     km->vdirty[v] = (uint16_t)dirty;
 }
 
-/* Recomputes t's key and sets the vdirty bits `mask` of its vertices. */
-static double fresh_key(cm_kmesh *km, int32_t t, unsigned mask)
+/* Recomputes t's key (its angle in geometry `only`, the others as known,
+ * when only < k and they are; else all) and sets the vdirty bits `mask`
+ * of its vertices. */
+static double fresh_key(cm_kmesh *km, int32_t t, size_t only, unsigned mask)
 {
-    double key = CM_PI;
+    double key = CM_PI, *tang = km->tang + (size_t)t * km->k;
+    int known = only < km->k && !isnan(tang[0]);
     for (size_t g = 0; g < km->k; g++) {
-        double a = cm_kmesh_tri_angle(km, g, t);
-        if (a < key) key = a;
+        if (!known || g == only) tang[g] = cm_kmesh_tri_angle(km, g, t);
+        if (tang[g] < key) key = tang[g];
     }
     for (int i = 0; i < 3; i++) {
         int32_t v = km->tri[3 * t + i];
@@ -203,7 +207,7 @@ static double fresh_key(cm_kmesh *km, int32_t t, unsigned mask)
 
 void cm_kmesh_touch(cm_kmesh *km, int32_t t)
 {
-    set_key(km, t, fresh_key(km, t, CM_DIRTY_ALL));
+    set_key(km, t, fresh_key(km, t, km->k, CM_DIRTY_ALL));
 }
 
 /* The restored triangles get their saved keys back (the geometry is the
@@ -220,11 +224,25 @@ int cm_kmesh_tx_rollback(cm_kmesh *km)
         int32_t t = cm_log_saved_triangle(km->log, (size_t)i);
         if (km->tri[3 * t] >= 0) {
             set_key(km, t, cm_log_saved_key(km->log, (size_t)i));
+            km->tang[(size_t)t * km->k] = NAN; /* its geometry may be restored */
             for (int j = 0; j < 3; j++) km->vdirty[km->tri[3 * t + j]] |= CM_DIRTY_OPTIMIZE;
             continue;
         }
         cm_heap_remove(&km->tq, t);
         for (int j = 0; j < 3; j++) cm_heap_remove(&km->eq, 3 * t + j);
+    }
+    return 0;
+}
+
+int cm_kmesh_tx_vertices(const cm_kmesh *km, cm_ibuf *out)
+{
+    long nt = cm_log_saved_count(km->log);
+    if (nt < 0) return -1;
+    for (long i = 0; i < nt; i++) {
+        int32_t t = cm_log_saved_triangle(km->log, (size_t)i);
+        if (km->tri[3 * t] >= 0)
+            for (int j = 0; j < 3; j++)
+                if (cm_ibuf_push(out, km->tri[3 * t + j])) return -1;
     }
     return 0;
 }
@@ -658,7 +676,7 @@ void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const c
     set_position(km, g, v, p);
     for (size_t i = 0; i < star->n; i++) { /* only geometry g changed */
         int32_t t = star->a[i] / 3;
-        set_key(km, t, fresh_key(km, t, cm_dirty_smooth(g) | CM_DIRTY_OPTIMIZE));
+        set_key(km, t, fresh_key(km, t, g, cm_dirty_smooth(g) | cm_dirty_search(g) | CM_DIRTY_OPTIMIZE));
     }
 }
 

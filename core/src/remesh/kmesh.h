@@ -39,6 +39,8 @@ typedef struct cm_kmesh {
     cm_ibuf free_v, free_t;
     double *scale;         /* per geometry: sqrt(polygon area), for lengths */
     double *tkey;          /* triangle: smallest angle over geometries */
+    double *tang;          /* k per triangle: its smallest angle in each
+                              geometry; the first NaN when not known */
     double *slack;         /* triangle: tkey minus its target */
     cm_heap tq;            /* live triangles by slack */
     cm_heap eq;            /* candidate edges (smaller corner) by -score */
@@ -67,11 +69,17 @@ static inline int cm_kmesh_tri_live(const cm_kmesh *km, int32_t t) { return km->
  * (geometries from the 8th on share one bit, which stays set).
  * CM_DIRTY_OPTIMIZE: a triangle around it changed in any geometry, or a
  * transaction changing one was undone, since cm_smooth_optimize last
- * found it optimal. */
+ * found it optimal. cm_dirty_search(g): a triangle around it changed in
+ * geometry g since cm_smooth_optimize last found no gain there (from the
+ * 7th geometry on one shared bit, which stays set): the search depends on
+ * the star in g alone, so while the bit is clear it would find none
+ * again. */
 #define CM_DIRTY_OPTIMIZE 0x100u
-#define CM_DIRTY_ALL 0x1ffu
+#define CM_DIRTY_ALL 0xffffu
 static inline unsigned cm_dirty_smooth(size_t g) { return 1u << (g < 7 ? g : 7); }
 static inline int cm_dirty_smooth_shared(size_t g) { return g >= 7; }
+static inline unsigned cm_dirty_search(size_t g) { return 1u << (9 + (g < 6 ? g : 6)); }
+static inline int cm_dirty_search_shared(size_t g) { return g >= 6; }
 
 /* Builds from a compatible triangulation whose vertices 0..n-1 are the
  * counter-clockwise boundary. CM_OK, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL
@@ -132,6 +140,11 @@ int cm_kmesh_tx_begin(cm_kmesh *km);
 int cm_kmesh_tx_region(const cm_kmesh *km, double *before, double *after);
 void cm_kmesh_tx_commit(cm_kmesh *km);
 int cm_kmesh_tx_rollback(cm_kmesh *km);
+/* Appends to out the vertices of the live triangles in the slots the last
+ * transaction changed (after its commit or rollback: as they are now;
+ * repeats possible). Returns 0, or -1 out of memory or when the log ran
+ * out of it. */
+int cm_kmesh_tx_vertices(const cm_kmesh *km, cm_ibuf *out);
 
 /* Full exact check (tests): adjacency symmetric, every live triangle
  * counter-clockwise in every geometry, boundary edges exactly i -> bnext[i].

@@ -179,6 +179,11 @@ long cm_log_undo(cm_kmesh *km)
     return (long)nt;
 }
 
+long cm_log_saved_count(const struct cm_kmesh_log *log)
+{
+    return !log ? 0 : log->failed ? -1 : (long)(log->tsave.n / 7);
+}
+
 int32_t cm_log_saved_triangle(const struct cm_kmesh_log *log, size_t i)
 {
     return log->tsave.a[7 * i];

@@ -20,6 +20,9 @@ void cm_kmesh_log_free(struct cm_kmesh_log *log);
  * entries are stale: the caller refreshes them), 0 outside a transaction,
  * -1 when the log ran out of memory (the changes then stay). */
 long cm_log_undo(cm_kmesh *km);
+/* The number of triangle slots the open or last transaction saved, -1
+ * when its log ran out of memory. */
+long cm_log_saved_count(const struct cm_kmesh_log *log);
 /* The i-th triangle slot the open or just undone transaction saved. */
 int32_t cm_log_saved_triangle(const struct cm_kmesh_log *log, size_t i);
 /* Its key before the transaction (NaN: the slot was dead). */

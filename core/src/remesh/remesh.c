@@ -86,23 +86,38 @@
 /* The short triangles a round of forced moves looks at. */
 #define CM_STEP_OUT_WORST 8
 /* A forced move whose repair ends this close below its start (radians,
- * about 0.1 degrees) gets a second repair before the decision: each
- * distinct move runs once per round (step_out), and such a move was
- * often kept on a later try before. */
+ * about 0.1 degrees) gets a second repair before the decision: an
+ * undone move is not tried again till the mesh near it changes
+ * (step_out), and such a move was often kept on a later try before. */
 #define CM_FORCED_CLOSE 0.002
 
 typedef struct tabu_set { /* keys (vertex pairs, forced moves) -> counts */
     uint64_t *keys;       /* 0: empty slot */
-    unsigned char *count;
+    uint32_t *count;
     size_t cap, used;
 } tabu_set;
+
+/* Forced moves undone in step_out, with where they acted: the vertices
+ * of the triangles their transaction changed and of the move's own
+ * triangles. Such a move runs again only once a kept move has changed
+ * the mesh within a ring of those vertices: till then it meets what it
+ * met before. */
+typedef struct failed_moves {
+    tabu_set at;      /* move key -> its entry + 1 */
+    cm_ibuf entries;  /* 3 per entry: epoch when undone, offset and length in region */
+    cm_ibuf region;
+    uint32_t *changed; /* vertex -> epoch of the last kept move within a ring of it */
+    size_t cap;
+    uint32_t epoch;
+} failed_moves;
 
 typedef struct remesher {
     cm_kmesh km;
     cm_work verts, edges;
     cm_ibuf star, batch;
     tabu_set tabu;
-    tabu_set tried; /* forced moves undone since the mesh last changed */
+    failed_moves failed;
+    cm_ibuf around;
     const cm_options *o;
     cm_progress *progress;
     double target; /* radians */
@@ -125,7 +140,7 @@ static size_t tabu_slot(const tabu_set *t, uint64_t key)
     return i;
 }
 
-static int tabu_count_key(const tabu_set *t, uint64_t key)
+static uint32_t tabu_count_key(const tabu_set *t, uint64_t key)
 {
     if (!t->cap) return 0;
     size_t i = tabu_slot(t, key);
@@ -141,7 +156,7 @@ static int tabu_grow(tabu_set *t)
 {
     size_t cap = t->cap ? 2 * t->cap : 256;
     uint64_t *keys = calloc(cap, sizeof *keys);
-    unsigned char *count = calloc(cap, 1);
+    uint32_t *count = calloc(cap, sizeof *count);
     if (!keys || !count) {
         free(keys), free(count);
         return -1;
@@ -157,13 +172,22 @@ static int tabu_grow(tabu_set *t)
     return 0;
 }
 
-static int tabu_add_key(tabu_set *t, uint64_t key, int times)
+/* Sets key's count to count(old) (a new key: old = 0). */
+static int tabu_set_key(tabu_set *t, uint64_t key, uint32_t (*count)(uint32_t, uint32_t), uint32_t arg)
 {
     if (2 * (t->used + 1) > t->cap && tabu_grow(t)) return -1;
     size_t i = tabu_slot(t, key);
     if (!t->keys[i]) t->keys[i] = key, t->count[i] = 0, t->used++;
-    t->count[i] = (unsigned char)(t->count[i] + times > 200 ? 200 : t->count[i] + times);
+    t->count[i] = count(t->count[i], arg);
     return 0;
+}
+
+static uint32_t count_up(uint32_t old, uint32_t times) { return old + times > 200 ? 200 : old + times; }
+static uint32_t count_is(uint32_t old, uint32_t value) { return (void)old, value; }
+
+static int tabu_add_key(tabu_set *t, uint64_t key, int times)
+{
+    return tabu_set_key(t, key, count_up, (uint32_t)times);
 }
 
 static int tabu_add(tabu_set *t, int32_t a, int32_t b, int times)
@@ -194,30 +218,32 @@ static int queue_around(remesher *x, int32_t v)
     return cm_kmesh_is_boundary(km, v) ? 0 : cm_work_push(&x->verts, v);
 }
 
-/* Is a triangle around v among the furthest from its target, short of
- * it by at least half the worst shortfall? (uses x->star) The position
- * search is worth its cost there. */
-static int near_short(remesher *x, int32_t v)
+/* Is a triangle around v (its star in x->star) among the furthest from
+ * its target, short of it by at least half the worst shortfall? The
+ * position search is worth its cost there. */
+static int near_short(remesher *x)
 {
     double gate = fmin(0.0, 0.5 * cm_kmesh_min_slack(&x->km));
-    long m = cm_kmesh_star(&x->km, v, &x->star);
-    for (long i = 0; i < m; i++)
+    for (size_t i = 0; i < x->star.n; i++)
         if (x->km.slack[x->star.a[i] / 3] < gate) return 1;
     return 0;
 }
 
-/* Smooths v in every geometry. Returns 1 if it moved, -1 out of memory.
- * Where the smoothing formulas left v in place and nothing around it has
- * changed in that geometry since, they would leave it again: skipped. */
+/* Smooths interior live v in every geometry. Returns 1 if it moved, -1
+ * out of memory. Where the smoothing formulas left v in place and nothing
+ * around it has changed in that geometry since, they would leave it
+ * again: skipped. Moves keep v's star, so it is found once. */
 static int smooth_one(remesher *x, int32_t v)
 {
     cm_kmesh *km = &x->km;
+    long m = cm_kmesh_star(km, v, &x->star);
+    if (m < 0) return m == -1 ? -1 : 0;
     int moved = 0;
     for (size_t g = 0; g < km->k; g++) {
         unsigned bit = cm_dirty_smooth(g);
-        int s = km->vdirty[v] & bit ? cm_smooth_vertex(km, g, v, x->o->smoothing, 1, &x->star) : 0;
+        int s = km->vdirty[v] & bit ? cm_smooth_vertex_star(km, g, v, x->o->smoothing, 1, &x->star) : 0;
         if (s == 0 && !cm_dirty_smooth_shared(g)) cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~bit);
-        if (s == 0 && near_short(x, v)) s = cm_smooth_optimize(km, g, v, &x->star);
+        if (s == 0 && near_short(x)) s = cm_smooth_optimize_star(km, g, v, &x->star);
         if (s < 0) return -1;
         moved |= s;
     }
@@ -523,6 +549,70 @@ static int corners_near(const cm_kmesh *km, int32_t t, int32_t *out)
     return m;
 }
 
+static int grow_changed(failed_moves *f, size_t need)
+{
+    if (need <= f->cap) return 0;
+    size_t cap = f->cap ? f->cap : 256;
+    while (cap < need) cap *= 2;
+    uint32_t *a = realloc(f->changed, cap * sizeof *a);
+    if (!a) return -1;
+    memset(a + f->cap, 0, (cap - f->cap) * sizeof *a);
+    f->changed = a, f->cap = cap;
+    return 0;
+}
+
+/* Was the move `key` undone, and has no kept move changed the mesh near
+ * where it acted since? */
+static int still_failed(const failed_moves *f, uint64_t key)
+{
+    uint32_t e = tabu_count_key(&f->at, key);
+    if (!e) return 0;
+    const int32_t *entry = f->entries.a + 3 * (e - 1), *v = f->region.a + entry[1];
+    for (int32_t i = 0; i < entry[2]; i++)
+        if ((size_t)v[i] < f->cap && f->changed[v[i]] > (uint32_t)entry[0]) return 0;
+    return 1;
+}
+
+/* Records the move on corner c just undone (or impossible): where it
+ * acted, as the mesh is again. 0 or -1 out of memory. */
+static int remember_failed(remesher *x, uint64_t key, int32_t c)
+{
+    failed_moves *f = &x->failed;
+    cm_kmesh *km = &x->km;
+    size_t off = f->region.n;
+    if (cm_kmesh_tx_vertices(km, &f->region)) return -1;
+    for (int i = 0; i < 3; i++)
+        if (cm_ibuf_push(&f->region, km->tri[3 * (c / 3) + i])) return -1;
+    if (km->opp[c] >= 0 && cm_ibuf_push(&f->region, km->tri[km->opp[c]])) return -1;
+    size_t e = f->entries.n / 3;
+    if (cm_ibuf_push(&f->entries, (int32_t)f->epoch) || cm_ibuf_push(&f->entries, (int32_t)off) ||
+        cm_ibuf_push(&f->entries, (int32_t)(f->region.n - off)))
+        return -1;
+    return tabu_set_key(&f->at, key, count_is, (uint32_t)e + 1);
+}
+
+/* After a kept move: the vertices of the triangles it changed and their
+ * neighbours get a new epoch. 0 or -1 out of memory. */
+static int mark_changed(remesher *x)
+{
+    failed_moves *f = &x->failed;
+    cm_kmesh *km = &x->km;
+    x->around.n = 0;
+    if (cm_kmesh_tx_vertices(km, &x->around) || grow_changed(f, (size_t)km->nv)) return -1;
+    f->epoch++;
+    for (size_t i = 0; i < x->around.n; i++) {
+        int32_t v = x->around.a[i];
+        long m = cm_kmesh_star(km, v, &x->star);
+        if (m < 0) return -1;
+        f->changed[v] = f->epoch;
+        for (long j = 0; j < m; j++) {
+            int32_t c = x->star.a[j];
+            f->changed[km->tri[cm_next(c)]] = f->changed[km->tri[cm_prev(c)]] = f->epoch;
+        }
+    }
+    return 0;
+}
+
 /* Forced moves around the worst short triangles, the first that gains
  * kept, until none gains, stall_limit() rounds have run or (splits) the
  * budget is spent. CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
@@ -531,15 +621,17 @@ static cm_status step_out(remesher *x, size_t n)
     cm_kmesh *km = &x->km;
     int32_t worst[CM_STEP_OUT_WORST], work[2 * CM_STEP_OUT_WORST], near[12];
     long budget = budget_of(x->o, n);
+    failed_moves *f = &x->failed;
+    tabu_clear(&f->at);
+    f->entries.n = f->region.n = 0;
     for (long round = 0; round < stall_limit(x) && cm_kmesh_min_slack(km) < 0; round++) {
         if (cm_progress_poll(x->progress, CM_STAGE_REMESH, 1.0)) return CM_ERR_CANCELLED;
         int32_t nw = cm_heap_smallest(&km->tq, CM_STEP_OUT_WORST, 0.0, worst, work);
         int gained = 0;
-        /* An undone move leaves the mesh exactly as it was (but for the
-         * position search's flags), so till a move is kept each distinct
-         * move runs once: neighbouring worst triangles, and the two
-         * corners of one edge, name the same move again. */
-        tabu_clear(&x->tried);
+        /* An undone move leaves the mesh as it was (but for the position
+         * search's flags), so each distinct move runs once till a kept
+         * move changes the mesh near it: neighbouring worst triangles,
+         * and the two corners of one edge, name the same move again. */
         for (int32_t i = 0; i < nw && !gained; i++) {
             if (!cm_kmesh_tri_live(km, worst[i])) continue;
             int m = corners_near(km, worst[i], near);
@@ -549,9 +641,10 @@ static cm_status step_out(remesher *x, size_t n)
                 for (int j = 0; j < m && !gained; j++) {
                     if (km->tri[near[j]] < 0) continue;
                     uint64_t key = forced_key(km, (enum forced_move)kind, near[j]);
-                    if (tabu_count_key(&x->tried, key)) continue;
+                    if (still_failed(f, key)) continue;
                     int s = try_forced(x, (enum forced_move)kind, near[j]);
-                    if (s < 0 || (s == 0 && tabu_add_key(&x->tried, key, 1))) return stop_status(x);
+                    if (s < 0 || (s == 0 && remember_failed(x, key, near[j])) || (s > 0 && mark_changed(x)))
+                        return stop_status(x);
                     gained = s;
                 }
             }
@@ -653,7 +746,8 @@ static void remesher_free(remesher *x)
     cm_work_free(&x->verts), cm_work_free(&x->edges);
     cm_ibuf_free(&x->star), cm_ibuf_free(&x->batch);
     free(x->tabu.keys), free(x->tabu.count);
-    free(x->tried.keys), free(x->tried.count);
+    free(x->failed.at.keys), free(x->failed.at.count), free(x->failed.changed);
+    cm_ibuf_free(&x->failed.entries), cm_ibuf_free(&x->failed.region), cm_ibuf_free(&x->around);
 }
 
 /* One run of the remesher chosen by o on a copy of mesh, with the

@@ -19,7 +19,7 @@
 /* v's link polygon in geometry g, counter-clockwise; p[m] repeats p[0]. */
 typedef struct ring {
     const double *c;                      /* v itself */
-    const double *p[CM_SMOOTH_MAX_DEGREE + 1];
+    double p[CM_SMOOTH_MAX_DEGREE + 1][2]; /* copied: the scans read them in order */
     double link2[CM_SMOOTH_MAX_DEGREE];   /* |p[i+1] - p[i]|^2: the same for every trial point */
     long m;
     long worst;                           /* triangle (p[i], p[i+1]) last found smallest */
@@ -30,8 +30,10 @@ static int ring_of(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star,
     r->m = (long)star->n;
     if (r->m < 3 || r->m > CM_SMOOTH_MAX_DEGREE) return -1;
     r->c = cm_kmesh_pos(km, g, v);
-    for (long i = 0; i < r->m; i++) r->p[i] = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[i])]);
-    r->p[r->m] = r->p[0];
+    for (long i = 0; i <= r->m; i++) {
+        const double *q = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[i < r->m ? i : 0])]);
+        r->p[i][0] = q[0], r->p[i][1] = q[1];
+    }
     for (long i = 0; i < r->m; i++) {
         double dx = r->p[i + 1][0] - r->p[i][0], dy = r->p[i + 1][1] - r->p[i][1];
         r->link2[i] = dx * dx + dy * dy;
@@ -112,25 +114,41 @@ static inline double ring_sin2(const ring *r, const double q[2], long i, double 
  * 90 degrees, no atan2: this runs for every candidate position). Only
  * values above `floor` matter to the callers: the scan stops at the first
  * triangle at or below it and returns a value at or below floor. */
-static double star_sin2_above(ring *r, const double q[2], double floor)
+static inline double star_sin2_above(ring *r, const double q[2], double floor)
 {
     double lo = 1.0;
-    long m = r->m, lo_at = r->worst;
-    for (long j = 0, i = r->worst; j < m; j++, i = i + 1 < m ? i + 1 : 0) { /* from the last worst: it fails first */
+    long m = r->m, w = r->worst, lo_at = w;
+    for (long i = w; i < m; i++) { /* from the last worst: it fails first */
+        double s = ring_sin2(r, q, i, floor);
+        if (s < lo) lo = s, lo_at = i;
+        if (!(lo > floor)) goto done;
+    }
+    for (long i = 0; i < w; i++) {
         double s = ring_sin2(r, q, i, floor);
         if (s < lo) lo = s, lo_at = i;
         if (!(lo > floor)) break;
     }
+done:
     r->worst = lo_at;
     return lo;
 }
 
 static double star_sin2(ring *r, const double q[2]) { return star_sin2_above(r, q, -1.0); }
 
+/* Is v at q strictly inside its link polygon's kernel (every triangle
+ * counter-clockwise)? Exact: a triangle whose determinant clears its
+ * rounding by a wide margin (products far from overflow and underflow;
+ * 1e-12 relative, thousands of times orient2d's own error bound, fused
+ * multiply-add or not) needs no exact predicate. */
 static int star_valid(const ring *r, const double q[2])
 {
-    for (long i = 0; i < r->m; i++)
-        if (cm_orient2d(q, r->p[i], r->p[i + 1]) <= 0) return 0;
+    for (long i = 0; i < r->m; i++) {
+        const double *b = r->p[i], *c = r->p[i + 1];
+        double left = (b[0] - q[0]) * (c[1] - q[1]), right = (b[1] - q[1]) * (c[0] - q[0]);
+        double size = fabs(left) + fabs(right);
+        if (size > 0x1p-900 && size < 0x1p900 && left - right > 1e-12 * size) continue;
+        if (cm_orient2d(q, b, c) <= 0) return 0;
+    }
     return 1;
 }
 
@@ -185,6 +203,12 @@ int cm_smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int
     if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0) return 0;
     long m = cm_kmesh_star(km, v, star);
     if (m < 0) return m == -1 ? -1 : 0;
+    return cm_smooth_vertex_star(km, g, v, method, smart, star);
+}
+
+int cm_smooth_vertex_star(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
+                          const cm_ibuf *star)
+{
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
     double before = smart ? sin2_to_angle(star_sin2(&r, r.c)) : 0;
@@ -199,8 +223,10 @@ int cm_smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int
 /* The search found no gain for v in geometry g. Returns 0. */
 static int no_gain(cm_kmesh *km, size_t g, int32_t v)
 {
-    if (g + 1 == km->k) /* optimal in every geometry, till a change */
-        cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~CM_DIRTY_OPTIMIZE);
+    unsigned dirty = km->vdirty[v];
+    if (!cm_dirty_search_shared(g)) dirty &= ~cm_dirty_search(g); /* till its star in g changes */
+    if (g + 1 == km->k) dirty &= ~CM_DIRTY_OPTIMIZE; /* optimal in every geometry, till a change */
+    cm_kmesh_set_dirty(km, v, dirty);
     return 0;
 }
 
@@ -209,13 +235,21 @@ static int no_gain(cm_kmesh *km, size_t g, int32_t v)
 
 int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
 {
+    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0 || !(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
+    if (!(km->vdirty[v] & cm_dirty_search(g))) return no_gain(km, g, v); /* its star in g is as it found none */
+    long m = cm_kmesh_star(km, v, star);
+    if (m < 0) return m == -1 ? -1 : 0;
+    return cm_smooth_optimize_star(km, g, v, star);
+}
+
+int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star)
+{
     static const double dir[8][2] = {{1, 0}, {0.7071067811865476, 0.7071067811865476}, {0, 1},
                                      {-0.7071067811865476, 0.7071067811865476}, {-1, 0},
                                      {-0.7071067811865476, -0.7071067811865476}, {0, -1},
                                      {0.7071067811865476, -0.7071067811865476}};
-    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0 || !(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
-    long m = cm_kmesh_star(km, v, star);
-    if (m < 0) return m == -1 ? -1 : 0;
+    if (!(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
+    if (!(km->vdirty[v] & cm_dirty_search(g))) return no_gain(km, g, v); /* its star in g is as it found none */
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
     double best[2] = {r.c[0], r.c[1]}, q = star_sin2(&r, best), start = q, near2 = HUGE_VAL, step = HUGE_VAL;

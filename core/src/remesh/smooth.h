@@ -13,6 +13,10 @@
  * star is scratch. */
 int cm_smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
                      cm_ibuf *star);
+/* cm_smooth_vertex for interior live v with its star given (corners from
+ * cm_kmesh_star). */
+int cm_smooth_vertex_star(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
+                          const cm_ibuf *star);
 /* The position `method` proposes for Steiner vertex v in geometry g, from
  * its star (corners from cm_kmesh_star). Returns 0, or -1 when undefined. */
 int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing method,
@@ -22,6 +26,8 @@ int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing metho
  * fallback when the smoothing formulas are stuck near a bad triangle.
  * Returns 1 moved, 0 not, -1 out of memory. */
 int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star);
+/* cm_smooth_optimize for interior live v with its star given. */
+int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star);
 /* One sweep over all Steiner vertices in every geometry. Returns the number
  * of moves, -1 out of memory. */
 long cm_smooth_pass(cm_kmesh *km, cm_smoothing method, int smart);
