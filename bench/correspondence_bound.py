@@ -4,11 +4,13 @@ distortion the vertex correspondence forces. Polygons may have holes
 ('>' lines between the loops, outer loop first; loop j of each polygon
 corresponds to loop j).
 
-usage: correspondence_bound.py COMPATMESH A.xy B.xy [C.xy ...]
+usage: correspondence_bound.py COMPATMESH A.xy B.xy [C.xy ...] [--twist]
 prints: bound_deg K family (one line; bound_deg is 60 when nothing binds;
 family: the quadruple a,b,c,d without holes, else the two sides E/F of the
 curve family, each "o" or "hN" (the outer loop or hole N, whole) or
-"o:i-j" / "hN:i-j" (its arc from vertex i to vertex j))
+"o:i-j" / "hN:i-j" (its arc from vertex i to vertex j), "@twist" after
+it when the bound is a hole's twist, below; --twist (two polygons with
+holes) adds that search, about 10 s a hole)
 
 Why it holds. A compatible triangulation of polygons A and B defines a
 piecewise-linear homeomorphism f: A -> B that takes vertex i to vertex i.
@@ -58,6 +60,14 @@ mesh of each polygon alone, refined; scipy solves):
 The ratio used is a lower bound over an upper bound, so the bound stays
 on the safe side of the discretisation.
 
+A family of all the curves from E to F does not see how a hole turns
+against the outer loop (a half turn of the hole gives the facing arcs a
+capacity a few times that of the opposite ones, not more). With --twist
+every hole is also bounded by the curves that wind around it a given
+number of times, in the covering that records the winding; which number
+the map takes to which is not fixed by the correspondence, so the bound
+is the least over all of them (twist_bound).
+
 The family is found by a search: without holes, a coarse search over
 quadruples of evenly spaced vertices and a local search around the best;
 with holes also every pair of loops (whole, or arcs between a few evenly
@@ -91,6 +101,12 @@ COARSE_MARKS = 10
 # With holes: marks per loop for the arcs the search tries, and how many of
 # its best families are moved mark by mark and certified.
 OUTER_MARKS, HOLE_MARKS, CERTIFIED = 6, 4, 4
+# The twist search: the mesh the windows copy (at least this many
+# triangles), the periods of the outer arc's lift tried (-P..P), and the
+# turns tau checked one by one (|tau| <= R; the rest together).
+TWIST_SEARCH_TRIANGLES, TWIST_PERIODS, TWIST_RANGE = 250, 2, 1
+# The twist search's hole arcs start at this many evenly spaced vertices.
+TWIST_STARTS = 8
 
 
 class Polygon:
@@ -127,9 +143,12 @@ class Polygon:
         self._mesh(xy, tri, loops, min_triangles)
 
     def _mesh(self, xy, tri, loops, min_triangles):
+        # per split, each old edge's midpoint: to carry chains of edges over
+        self.midpoints = []
         while len(tri) < min_triangles:
             flat = [e for loop in loops for e in loop]
-            xy, tri, flat = subdivide(xy, tri, flat)
+            xy, tri, flat, midpoints = subdivide(xy, tri, flat)
+            self.midpoints.append(midpoints)
             it = iter(flat)
             loops = [[next(it) for _ in loop] for loop in loops]
         self.xy, self.tri, self.loop_edges = xy, tri, loops
@@ -213,37 +232,9 @@ class Polygon:
             return self.energy(self.side(neumann[0][0]), self.side(neumann[1][0]))
         jump = np.zeros(self.tri.shape)  # psi - phi per triangle corner
         if E[0] != F[0]:
-            jump = self.cut_jump(E, F)
-        # phi = T x + phi0 over the unknowns x: free nodes, free constants
-        phi0 = np.zeros(self.nodes)
-        column = np.full(self.nodes, -1)
-        constants = 0
-        for s, value in neumann:
-            nodes, offset = self.neumann_offsets(s, jump)
-            if value is None:
-                column[nodes] = self.nodes + constants
-                constants += 1
-            else:
-                column[nodes] = -2
-                phi0[nodes] = value
-            phi0[nodes] -= offset
-        free_nodes = np.flatnonzero(column == -1)
-        column[free_nodes] = free_nodes
-        # psi only changes by a constant if no value is fixed: pin one unknown
-        if not any(value is not None for _, value in neumann):
-            pinned = self.nodes if constants else free_nodes[0]
-            column[column == pinned] = -2
-        used = np.unique(column[column >= 0])
-        rows = np.flatnonzero(column >= 0)
-        T = scipy.sparse.csr_matrix((np.ones(len(rows)), (rows, np.searchsorted(used, column[rows]))),
-                                    shape=(self.nodes, len(used)))
-        K = self.stiffness
-        g = np.zeros(self.nodes)
-        np.add.at(g, self.tri, np.einsum("tij,tj->ti", self.local, jump))
-        A = (T.T @ K @ T).tocsc()
-        x = scipy.sparse.linalg.spsolve(A, -(T.T @ (K @ phi0 + g)))
-        psi = (T @ x + phi0)[self.tri] + jump
-        return float(np.einsum("ti,tij,tj->", psi, self.local, psi))
+            jump, _ = self.cut_jump(E, F)
+        groups = [(*self.neumann_offsets(side, jump), value) for side, value in neumann]
+        return least_energy(self.tri, self.local, self.stiffness, groups, jump)
 
     def neumann_offsets(self, s, jump):
         """The nodes of a Neumann arc and, per node, psi - phi on the
@@ -277,17 +268,20 @@ class Polygon:
                         self._boundary_triangle[e] = t
         return self._boundary_triangle
 
-    def cut_jump(self, E, F):
-        """psi - phi per triangle corner for a cut from E's loop to F's: 1 at
-        the cut's nodes on the triangles of one side, 0 elsewhere. The cut
-        is the shortest chain of edges through interior nodes from an end
-        of E (any node of a whole loop) to an end of F."""
-        ends = []
-        for loop, i, j in (E, F):
-            if i is None:
-                ends.append(self.side((loop, None, None)))
-            else:
-                ends.append(np.array([self.loop_edges[loop][i][0], self.loop_edges[loop][j][0]]))
+    def carried(self, path):
+        """A chain of edges of the mesh this one was refined from, as a chain
+        of this one's edges."""
+        for midpoints in self.midpoints:
+            path = [path[0]] + [w for u, v in zip(path, path[1:]) for w in (midpoints[(min(u, v), max(u, v))], v)]
+        return path
+
+    def shortest_cut(self, E, F, ends=None):
+        """The shortest chain of edges through interior nodes from an end of
+        E (any node of a whole loop) to an end of F, or between the given
+        sets of nodes."""
+        if ends is None:
+            ends = [self.side(s) if s[1] is None else
+                    np.array([self.loop_edges[s[0]][s[1]][0], self.loop_edges[s[0]][s[2]][0]]) for s in (E, F)]
         boundary = np.zeros(self.nodes, dtype=bool)
         boundary[np.concatenate([e for loop in self.loop_edges for e in loop])] = True
         allowed = ~boundary
@@ -304,6 +298,18 @@ class Polygon:
         path = [target]
         while pred[path[-1]] >= 0:
             path.append(pred[path[-1]])
+        path.reverse()
+        return path
+
+    def cut_jump(self, E, F, flip=False, ends=None, path=None):
+        """psi - phi per triangle corner for a cut from E's loop to F's: 1 at
+        the cut's nodes on the triangles of one side (the other if flip), 0
+        elsewhere; and the cut's nodes from E's loop to F's. The cut is the
+        shortest chain of edges through interior nodes from an end of E (any
+        node of a whole loop) to an end of F, or between the given ends, or
+        the given path."""
+        if path is None:
+            path = self.shortest_cut(E, F, ends)
         on_cut = set(path)
         cut_edges = {frozenset(e) for e in zip(path, path[1:])}
         # triangles around the cut, joined across their edges at a cut node
@@ -322,21 +328,185 @@ class Polygon:
                 neighbours[ts[1]].append(ts[0])
         first = frozenset(path[:2])
         left, right = [t for t in star if first <= set(self.tri[t])]
-        side = {left}
-        stack = [left]
-        while stack:
-            for s in neighbours[stack.pop()]:
-                if s not in side:
-                    side.add(s)
-                    stack.append(s)
-        if right in side:
-            raise RuntimeError("the cut between loops %d and %d does not split its star" % (E[0], F[0]))
+        sides = []
+        for seed in (left, right):
+            side, stack = {seed}, [seed]
+            while stack:
+                for s in neighbours[stack.pop()]:
+                    if s not in side:
+                        side.add(s)
+                        stack.append(s)
+            sides.append(side)
+        if sides[0] & sides[1] or len(sides[0]) + len(sides[1]) != len(star):
+            raise RuntimeError("the cut between loops %d and %d does not split its star in two" % (E[0], F[0]))
+        side = sides[1 if flip else 0]
         jump = np.zeros(self.tri.shape)
         for t in side:
             for k in range(3):
                 if self.tri[t, k] in on_cut:
                     jump[t, k] = 1.0
-        return jump
+        return jump, path
+
+
+class Window:
+    """2m + 1 copies of a polygon's mesh, cut along a chain of edges from a
+    hole to the outer loop, glued in a row, copy k's side of the cut where
+    psi jumps to copy k + 1's other side: a piece of the covering space in
+    which a curve's lift records how often it winds around the hole. The
+    copies are numbered so that walking once forward along the outer loop
+    moves one copy up."""
+
+    def __init__(self, poly, hole, m, path=None):
+        """The cut: `path` (a chain of nodes), or the shortest from the hole's
+        vertex 0 to the outer loop's; a window on a refinement follows the
+        same cut (carried), so that the copies are numbered alike."""
+        self.poly, self.hole, self.m = poly, hole, m
+        zero = [np.array([poly.loop_edges[loop][0][0]]) for loop in (hole, 0)]
+        for flip in (False, True):
+            self.jump, self.path = poly.cut_jump((hole, None, None), (0, None, None), flip, zero, path)
+            path = self.path
+            self.s = self.jump.astype(np.int64)
+            if self.turn(0) == 1:
+                break
+        # which way a walk forward along the hole turns (the same in every
+        # polygon whose loops run the same ways)
+        self.hole_turn = self.turn(hole)
+        N = poly.nodes
+        raw = np.concatenate([(k + m + self.s) * N + poly.tri for k in range(-m, m + 1)])
+        self.index = np.full((2 * m + 2) * N, -1)
+        used, tri = np.unique(raw, return_inverse=True)
+        self.index[used] = np.arange(len(used))
+        self.tri = tri.reshape(-1, 3)
+        self.local = np.tile(poly.local, (2 * m + 1, 1, 1))
+        self.stiffness = assemble(self.tri, self.local, len(used))
+        # the window's two ends: the cut's first side in copy -m, its second in copy m
+        self.ends = [self.index[np.array(self.path) + (k + m) * N] for k in (-m, m + 1)]
+        pairs = np.sort(np.concatenate([self.tri[:, [0, 1]], self.tri[:, [1, 2]], self.tri[:, [2, 0]]]), axis=1)
+        edges, count = np.unique(pairs, axis=0, return_counts=True)
+        self.boundary = edges[count == 1]
+
+    def walk(self, loop, copy, count):
+        """The lifted boundary segments (raw node numbers: copy * nodes + node,
+        copies from -m) of `count` edges of a loop forward from its vertex 0,
+        the first segment in `copy`; per polygon edge a list, and the copy
+        the walk ends in."""
+        poly, edges, c = self.poly, [], copy
+        chains = poly.loop_edges[loop]
+        for e in range(count):
+            chain, segments = chains[e % len(chains)], []
+            for v, w in zip(chain, chain[1:]):
+                t = poly.boundary_triangle[frozenset((v, w))]
+                corners = list(poly.tri[t])
+                sv, sw = self.s[t, corners.index(v)], self.s[t, corners.index(w)]
+                if segments or edges:
+                    c -= sv  # continue from the node the last segment ended at
+                segments.append(((c + sv + self.m) * poly.nodes + v, (c + sw + self.m) * poly.nodes + w))
+                c += sw
+            edges.append(segments)
+        return edges, c
+
+    def turn(self, loop):
+        """How many copies one walk forward around a loop moves."""
+        edges, _ = self.walk(loop, 0, self.poly.sizes[loop] + 1)
+        return (edges[-1][0][0] - edges[0][0][0]) // self.poly.nodes
+
+    def lift(self, side, period, clip=False):
+        """The lift of an arc (loop, i, j) whose vertex i is reached from
+        vertex 0's lift in `period` (copy) walking forward: its segments as
+        window nodes; None where it leaves the window or touches its ends
+        (with clip: the segments inside the window, maybe none)."""
+        loop, i, j = side
+        m = self.poly.sizes[loop]
+        edges, _ = self.walk(loop, period, i + (j - i) % m)
+        raw = np.array([p for segments in edges[i:] for p in segments])
+        inside = ((raw >= 0) & (raw < len(self.index))).all(axis=1)
+        inside[inside] = (self.index[raw[inside]] >= 0).all(axis=1)
+        if clip:
+            return self.index[raw[inside]].reshape(-1, 2)
+        if not inside.all():
+            return None
+        nodes = self.index[raw]
+        if np.isin(nodes, np.concatenate(self.ends)).any():
+            return None
+        return nodes
+
+    def capacity_range(self, E, F, union=False, upper_only=False):
+        """[lower, upper] bounds of the capacity of the curves joining the
+        lift E to the lift F in the covering (segment arrays); with union,
+        F a list of lifts and the upper bound alone, of the curves joining E
+        to any of them or to anything beyond the window's ends."""
+        zero = np.unique(E)
+        if union:
+            one = np.unique(np.concatenate([np.ravel(f) for f in F] + self.ends))
+            if np.isin(zero, one).any():
+                raise RuntimeError("E touches a lift of F or the window's ends")
+            return 0.0, least_energy(self.tri, self.local, self.stiffness, [(zero, 0, 0.0), (one, 0, 1.0)])
+        one = np.unique(F)
+        ends = [(end, 0, None) for end in self.ends]
+        upper = least_energy(self.tri, self.local, self.stiffness, [(zero, 0, 0.0), (one, 0, 1.0)] + ends)
+        if upper_only:
+            return 0.0, upper
+        # the dual: psi 0 on the boundary after E, 1 before it, a free
+        # constant on every other piece of the boundary (other holes)
+        taken = {frozenset(e) for e in np.concatenate([E, F])}
+        rest = [e for e in self.boundary if frozenset(e) not in taken]
+        parent = {}
+
+        def root(v):
+            while parent.setdefault(v, v) != v:
+                v = parent[v]
+            return v
+        for u, v in rest:
+            parent[root(u)] = root(v)
+        pieces = {}
+        for u, v in rest:
+            pieces.setdefault(root(u), set()).update((u, v))
+        after, before = root(E[-1][1]), root(E[0][0])
+        if after == before:
+            raise RuntimeError("E and F are not on one boundary cycle of the window")
+        groups = [(np.array(sorted(nodes)), 0, 0.0 if r == after else 1.0 if r == before else None)
+                  for r, nodes in pieces.items()]
+        lower = 1.0 / least_energy(self.tri, self.local, self.stiffness, groups)
+        return lower, upper
+
+
+def least_energy(tri, local, stiffness, groups, jump=None):
+    """The least P1 energy of psi = phi + jump (jump: per triangle corner,
+    a cut's unit jump, or none) over continuous phi, with psi tied on each
+    group (nodes, psi - phi there, value): to the value, or where the value
+    is None to one free constant for all the group's nodes; phi free
+    elsewhere. Without a given value psi is pinned at one unknown."""
+    nodes = stiffness.shape[0]
+    if jump is None:
+        jump = np.zeros(tri.shape)
+    # phi = T x + phi0 over the unknowns x: free nodes, free constants
+    phi0 = np.zeros(nodes)
+    column = np.full(nodes, -1)
+    constants = 0
+    for group, offset, value in groups:
+        if value is None:
+            column[group] = nodes + constants
+            constants += 1
+        else:
+            column[group] = -2
+            phi0[group] = value
+        phi0[group] -= offset
+    free_nodes = np.flatnonzero(column == -1)
+    column[free_nodes] = free_nodes
+    # psi only changes by a constant if no value is fixed: pin one unknown
+    if not any(value is not None for _, _, value in groups):
+        pinned = nodes if constants else free_nodes[0]
+        column[column == pinned] = -2
+    used = np.unique(column[column >= 0])
+    rows = np.flatnonzero(column >= 0)
+    T = scipy.sparse.csr_matrix((np.ones(len(rows)), (rows, np.searchsorted(used, column[rows]))),
+                                shape=(nodes, len(used)))
+    g = np.zeros(nodes)
+    np.add.at(g, tri, np.einsum("tij,tj->ti", local, jump))
+    A = (T.T @ stiffness @ T).tocsc()
+    x = scipy.sparse.linalg.spsolve(A, -(T.T @ (stiffness @ phi0 + g)))
+    psi = (T @ x + phi0)[tri] + jump
+    return float(np.einsum("ti,tij,tj->", psi, local, psi))
 
 
 def subdivide(xy, tri, edges):
@@ -357,7 +527,7 @@ def subdivide(xy, tri, edges):
         for u, v in zip(e, e[1:]):
             chain += [index[(min(u, v), max(u, v))], v]
         new_edges.append(chain)
-    return new_xy, new_tri, new_edges
+    return new_xy, new_tri, new_edges, index
 
 
 def local_stiffness(xy, tri):
@@ -438,9 +608,15 @@ def best_quadruple(polys):
     return best_q
 
 
-def certified_ratio(polys, q):
-    ranges = [p.modulus_range(q) for p in polys]
+def certified_family(polys, family):
+    """The largest certified capacity ratio of a family between polygons."""
+    ranges = [p.capacity_range(family) for p in polys]
     return max(lo_i / hi_j for lo_i, _ in ranges for _, hi_j in ranges)
+
+
+def certified_ratio(polys, q):
+    a, b, c, d = q
+    return certified_family(polys, ((0, a, b), (0, c, d)))
 
 
 def arcs(m, marks, loop):
@@ -511,9 +687,11 @@ def improve(polys, family, ratio):
     return family, ratio
 
 
-def best_with_holes(coarse):
-    """The certified ratio and the family of the best few a search on the
-    coarse meshes finds, every family certified on the fine mesh."""
+def best_with_holes(rough, twist=False):
+    """The certified ratio and the family's name, of the best few a search
+    on the coarse meshes finds, every family certified on the fine mesh;
+    with twist, also every hole's twist_bound (the name ends in "@twist")."""
+    coarse = [p.refined(SEARCH_TRIANGLES) for p in rough]
     polys = [p.refined(MIN_TRIANGLES) for p in coarse]
     found = []
     q = best_quadruple(coarse)
@@ -523,11 +701,119 @@ def best_with_holes(coarse):
     best, best_family = 0.0, None
     for r, family in found[:CERTIFIED]:
         family, _ = improve(coarse, family, r)
-        ranges = [p.capacity_range(family) for p in polys]
-        K = max(lo_i / hi_j for lo_i, _ in ranges for _, hi_j in ranges)
+        K = certified_family(polys, family)
         if K > best:
-            best, best_family = K, family
+            best, best_family = K, family_name(family)
+    if twist and len(polys) == 2:
+        for hole in range(1, len(polys[0].sizes)):
+            K, family = twist_bound(rough, coarse, hole)
+            if K > best:
+                best, best_family = K, family_name(family) + "@twist"
     return best, best_family
+
+
+def twist_sides(polys, hole):
+    """The arcs the twist search pairs: half of the hole from each of up to
+    TWIST_STARTS evenly spaced vertices against the outer arc facing it,
+    or its complement, as seen from the hole's centre in each polygon; and
+    half of the hole against a quarter or a half of the outer loop, from
+    four evenly spaced marks each."""
+    sizes = polys[0].sizes
+    m, n = sizes[hole], sizes[0]
+    marks = [[round(i * size / 4) % size for i in range(4)] for size in (m, n)]
+    families = {((hole, marks[0][i], marks[0][(i + 2) % 4]), (0, marks[1][j], marks[1][(j + k) % 4]))
+                for i in range(4) for j in range(4) for k in (1, 2)}
+    for start in sorted({round(k * m / TWIST_STARTS) % m for k in range(TWIST_STARTS)}):
+        E = (hole, start, (start + m // 2) % m)
+        for p in polys:
+            outer = p.xy[:n]
+            centre = p.xy[sum(sizes[:hole]):sum(sizes[:hole + 1])].mean(axis=0)
+            angle = np.arctan2(*(outer - centre).T[::-1])
+            ends = []
+            for v in E[1:]:
+                x, y = p.xy[sum(sizes[:hole]) + v] - centre
+                ends.append(int(np.argmin(np.abs(np.angle(np.exp(1j * (angle - math.atan2(y, x))))))))
+            if ends[0] != ends[1]:
+                families.update({(E, (0, ends[0], ends[1])), (E, (0, ends[1], ends[0]))})
+    return sorted(families)
+
+
+def twist_bound(coarse, polys, hole):
+    """A certified dilatation from the turn of a hole against the outer
+    loop, and its witness.
+
+    f lifts to the coverings in which a curve records how often it winds
+    around the hole (Window), commuting with their deck shifts, and takes
+    the lift E_0 of a hole arc E and the lift F_d of an outer arc F (F's
+    vertex reached from vertex 0's lift in period d, E's from period 0)
+    to E_0 and F_(d + tau) in B's covering, up to a deck shift, for one
+    integer tau that the correspondence does not fix (it counts whole
+    turns of the hole against the outer loop). f's lift is K-qc, so for
+    that tau every family gives K >= C_A(E_0, F_d) / C_B(E_0, F_(d + tau))
+    and the reverse, the capacities in the coverings, which a window
+    bounds: from above, u fixed on E_0 and F_d and a free constant on each
+    end of the window (extended by it beyond); from below, a flow inside
+    the window, psi 0 and 1 on the boundary on either side of E_0 (the
+    window's ends included), free constants on other holes. For |tau| >
+    TWIST_RANGE: C_B(E_0, F_(d + tau)) is at most the capacity of the
+    curves from E_0 to every F_b with |b - d| > TWIST_RANGE or beyond the
+    window's ends (u = 1 on all of them), and the same with A and B
+    swapped. K is at least the least over tau of the best family's."""
+    sizes = coarse[0].sizes
+    span = TWIST_PERIODS
+    windows = [Window(p, hole, span + 2) for p in coarse]
+    if windows[0].hole_turn != windows[1].hole_turn:
+        raise RuntimeError("hole %d runs the other way against the outer loop" % hole)
+    estimates = []  # (family, upper bound per period d in A, in B)
+    for family in twist_sides(coarse, hole):
+        E, F = family
+        caps = []
+        for w in windows:
+            e = w.lift(E, 0)
+            lifts = [w.lift(F, d) for d in range(-span, span + 1)]
+            if e is None or any(f is None for f in lifts):
+                break
+            caps.append([w.capacity_range(e, f, upper_only=True)[1] for f in lifts])
+        if len(caps) == 2:
+            estimates.append((family, caps))
+    if not estimates:
+        return 1.0, None
+    fine = [Window(p, hole, span + 2, p.carried(w.path)) for p, w in zip(polys, windows)]
+
+    def certified(family, d, shift):
+        """max of lo_A / hi_B and lo_B / hi_A, A at period d, B at d + shift."""
+        E, F = family
+        (la, ha), (lb, hb) = [w.capacity_range(w.lift(E, 0), w.lift(F, p)) for w, p in zip(fine, (d, d + shift))]
+        return max(la / hb, lb / ha)
+
+    def union(family, d, source, ws):
+        """lo (hi on the rough windows) in window `source` at period d over
+        hi of the other's union."""
+        E, F = family
+        w, other = ws[source], ws[1 - source]
+        lo, hi = w.capacity_range(w.lift(E, 0), w.lift(F, d), upper_only=ws is windows)
+        far = [other.lift(F, b, clip=True) for b in range(-2 * span - 4, 2 * span + 5) if abs(b - d) > TWIST_RANGE]
+        return (hi if ws is windows else lo) / other.capacity_range(other.lift(E, 0), far, union=True)[1]
+
+    periods = range(-span, span + 1)
+    worst, witness = math.inf, None
+    for shift in range(-TWIST_RANGE, TWIST_RANGE + 1):
+        ranked = sorted(((max(ca[d + span] / cb[d + shift + span], cb[d + shift + span] / ca[d + span]), f, d)
+                         for f, (ca, cb) in estimates for d in periods if d + shift in periods), reverse=True)
+        best = max((certified(f, d, shift), f) for _, f, d in ranked[:2])
+        if best[0] < worst:
+            worst, witness = best
+    # every |tau| > TWIST_RANGE at once: a family's lift against all far lifts
+    ranked = sorted(((caps[src][d + span] / max(caps[1 - src][b + span] for b in periods
+                                                   if abs(b - d) > TWIST_RANGE), f, d, src)
+                     for f, caps in estimates for d in periods for src in (0, 1)
+                     if any(abs(b - d) > TWIST_RANGE for b in periods)), reverse=True)
+    # the proxy above ranks, the unions on the rough windows choose
+    ranked = sorted(((union(f, d, src, windows), f, d, src) for _, f, d, src in ranked[:6]), reverse=True)
+    best = max((union(f, d, src, fine), f) for _, f, d, src in ranked[:2])
+    if best[0] < worst:
+        worst, witness = best
+    return worst, witness
 
 
 def family_name(family):
@@ -539,8 +825,10 @@ def main(argv):
     if len(argv) < 4:
         print(next(l for l in __doc__.splitlines() if l.startswith("usage")), file=sys.stderr)
         return 2
+    twist = "--twist" in argv
+    argv = [a for a in argv if a != "--twist"]
     with tempfile.TemporaryDirectory() as workdir:
-        polys = [Polygon(argv[1], path, workdir, SEARCH_TRIANGLES) for path in argv[2:]]
+        polys = [Polygon(argv[1], path, workdir, TWIST_SEARCH_TRIANGLES) for path in argv[2:]]
     if any(p.sizes != polys[0].sizes for p in polys):
         print("correspondence_bound.py: the loops' sizes differ: %s" % " against ".join(
             ",".join(map(str, p.sizes)) for p in polys), file=sys.stderr)
@@ -550,8 +838,7 @@ def main(argv):
         q = best_quadruple(polys)
         K, name = certified_ratio(polys, q), ",".join(map(str, q))
     else:
-        K, family = best_with_holes(polys)
-        name = family_name(family)
+        K, name = best_with_holes(polys, twist)
     print("%.3f %.4g %s" % (angle_bound(K), K, name))
     return 0
 

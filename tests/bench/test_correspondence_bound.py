@@ -236,3 +236,44 @@ def test_offset_hole_against_a_concentric_one(tmp_path):
         lo, hi = (s, hi) if left + right > 0 else (lo, s)
     exact = ring_capacity(right, 1) / ring_capacity(0.3, 1)
     assert ring > 1.1 and ring == pytest.approx(exact, rel=0.03)
+
+
+# The twist: the curves that wind around a hole a given number of times,
+# in the covering that records the winding, the least over every number
+# of turns the map may add.
+
+def twist_of(tmp_path, loops_a, loops_b):
+    paths = [write_loops(tmp_path / "ta.xy", loops_a), write_loops(tmp_path / "tb.xy", loops_b)]
+    rough = [cb.Polygon(CLI, p, str(tmp_path), cb.TWIST_SEARCH_TRIANGLES) for p in paths]
+    return cb.twist_bound(rough, [p.refined(cb.SEARCH_TRIANGLES) for p in rough], 1)
+
+
+# an outer loop and an off-centre hole, no symmetry between them
+LOPSIDED = [[(0, 0), (3, 0), (3.5, 1.5), (2.5, 3), (0.3, 2.6)],
+            regular(1.2, 1.3, 0.5, 8)[::-1]]
+
+
+def test_twist_of_a_polygon_against_itself_binds_nothing(tmp_path):
+    # also what fails if A's and B's coverings were numbered opposite ways
+    K, _ = twist_of(tmp_path, LOPSIDED, LOPSIDED)
+    assert K <= 1.0 + 1e-9
+
+
+def test_twist_never_exceeds_an_affine_maps_dilatation(tmp_path):
+    # the affine stretch by 1.6 is a compatible map of dilatation 1.6
+    stretched = [[(1.6 * x, y) for x, y in loop] for loop in LOPSIDED]
+    K, _ = twist_of(tmp_path, LOPSIDED, stretched)
+    assert 1.0 < K <= 1.6
+
+
+def test_a_hole_turned_half_a_turn(tmp_path):
+    # the fixture of tests/core: every map turns the hole by half a turn;
+    # the curves from a hole arc to an outer arc, all together, distort by
+    # a few times at most, the winding ones by more
+    outer, hole = regular(0, 0, 1, 24), regular(0, 0, 0.6, 12)[::-1]
+    turned = [(-x, -y) for x, y in hole]
+    K, family = twist_of(tmp_path, [outer, hole], [outer, turned])
+    paths = [write_loops(tmp_path / "a.xy", [outer, hole]), write_loops(tmp_path / "b.xy", [outer, turned])]
+    polys = [cb.Polygon(CLI, p, str(tmp_path), cb.SEARCH_TRIANGLES) for p in paths]
+    plain = max(cb.certified_family(polys, f) for f in (family, ((1, 0, 6), (0, 0, 12)), ((1, 3, 9), (0, 6, 18))))
+    assert K > 2 * plain and K > 10
