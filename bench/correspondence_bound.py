@@ -275,13 +275,11 @@ class Polygon:
             path = [path[0]] + [w for u, v in zip(path, path[1:]) for w in (midpoints[(min(u, v), max(u, v))], v)]
         return path
 
-    def shortest_cut(self, E, F, ends=None):
+    def shortest_cut(self, E, F):
         """The shortest chain of edges through interior nodes from an end of
-        E (any node of a whole loop) to an end of F, or between the given
-        sets of nodes."""
-        if ends is None:
-            ends = [self.side(s) if s[1] is None else
-                    np.array([self.loop_edges[s[0]][s[1]][0], self.loop_edges[s[0]][s[2]][0]]) for s in (E, F)]
+        E (any node of a whole loop) to an end of F."""
+        ends = [self.side(s) if s[1] is None else
+                np.array([self.loop_edges[s[0]][s[1]][0], self.loop_edges[s[0]][s[2]][0]]) for s in (E, F)]
         boundary = np.zeros(self.nodes, dtype=bool)
         boundary[np.concatenate([e for loop in self.loop_edges for e in loop])] = True
         allowed = ~boundary
@@ -301,15 +299,13 @@ class Polygon:
         path.reverse()
         return path
 
-    def cut_jump(self, E, F, flip=False, ends=None, path=None):
+    def cut_jump(self, E, F, flip=False, path=None):
         """psi - phi per triangle corner for a cut from E's loop to F's: 1 at
         the cut's nodes on the triangles of one side (the other if flip), 0
         elsewhere; and the cut's nodes from E's loop to F's. The cut is the
-        shortest chain of edges through interior nodes from an end of E (any
-        node of a whole loop) to an end of F, or between the given ends, or
-        the given path."""
+        given path or the shortest_cut."""
         if path is None:
-            path = self.shortest_cut(E, F, ends)
+            path = self.shortest_cut(E, F)
         on_cut = set(path)
         cut_edges = {frozenset(e) for e in zip(path, path[1:])}
         # triangles around the cut, joined across their edges at a cut node
@@ -357,13 +353,12 @@ class Window:
     moves one copy up."""
 
     def __init__(self, poly, hole, m, path=None):
-        """The cut: `path` (a chain of nodes), or the shortest from the hole's
-        vertex 0 to the outer loop's; a window on a refinement follows the
-        same cut (carried), so that the copies are numbered alike."""
+        """The cut: `path` (a chain of nodes), or the shortest from the hole
+        to the outer loop; a window on a refinement follows the same cut
+        (carried), so that the copies are numbered alike."""
         self.poly, self.hole, self.m = poly, hole, m
-        zero = [np.array([poly.loop_edges[loop][0][0]]) for loop in (hole, 0)]
         for flip in (False, True):
-            self.jump, self.path = poly.cut_jump((hole, None, None), (0, None, None), flip, zero, path)
+            self.jump, self.path = poly.cut_jump((hole, None, None), (0, None, None), flip, path=path)
             path = self.path
             self.s = self.jump.astype(np.int64)
             if self.turn(0) == 1:
