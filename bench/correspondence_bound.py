@@ -60,13 +60,16 @@ mesh of each polygon alone, refined; scipy solves):
 The ratio used is a lower bound over an upper bound, so the bound stays
 on the safe side of the discretisation.
 
-A family of all the curves from E to F does not see how a hole turns
-against the outer loop (a half turn of the hole gives the facing arcs a
-capacity a few times that of the opposite ones, not more). With --twist
+A family of all the curves from E to F sees a hole's turn against the
+outer loop only weakly: a half turn of the hole gives facing arcs a
+capacity a few times that of opposite ones (the curves go round either
+side), not the square of the turn over the ring's width. With --twist
 every hole is also bounded by the curves that wind around it a given
 number of times, in the covering that records the winding; which number
 the map takes to which is not fixed by the correspondence, so the bound
-is the least over all of them (twist_bound).
+is the least over all of them (twist_bound). It needs the map to keep
+the orientation: the loops run the same ways in both polygons (as the
+command line requires).
 
 The family is found by a search: without holes, a coarse search over
 quadruples of evenly spaced vertices and a local search around the best;
@@ -738,12 +741,17 @@ def twist_bound(coarse, polys, hole):
     loop, and its witness.
 
     f lifts to the coverings in which a curve records how often it winds
-    around the hole (Window), commuting with their deck shifts, and takes
-    the lift E_0 of a hole arc E and the lift F_d of an outer arc F (F's
-    vertex reached from vertex 0's lift in period d, E's from period 0)
-    to E_0 and F_(d + tau) in B's covering, up to a deck shift, for one
-    integer tau that the correspondence does not fix (it counts whole
-    turns of the hole against the outer loop). f's lift is K-qc, so for
+    around the hole (Window; f keeps the hole and the orientation, so it
+    keeps the winding), commuting with the shift by one copy (in both a
+    forward walk around the outer loop moves one copy up). On the lifted
+    outer loop f's lift takes the lifts of vertex i to lifts of vertex i,
+    in order, so it moves every one by the same number of periods; on the
+    lifted hole likewise, by another. So it takes the lift E_0 of a hole
+    arc E and the lift F_d of an outer arc F (F's first vertex reached
+    from vertex 0's lift in period d walking forward, E's from period 0)
+    to E_0 and F_(d + tau) in B's covering, up to a shift, for one integer
+    tau, the same for every E and F, that the correspondence does not fix
+    (whole turns of the hole against the outer loop). f's lift is K-qc, so for
     that tau every family gives K >= C_A(E_0, F_d) / C_B(E_0, F_(d + tau))
     and the reverse, the capacities in the coverings, which a window
     bounds: from above, u fixed on E_0 and F_d and a free constant on each
@@ -754,7 +762,6 @@ def twist_bound(coarse, polys, hole):
     curves from E_0 to every F_b with |b - d| > TWIST_RANGE or beyond the
     window's ends (u = 1 on all of them), and the same with A and B
     swapped. K is at least the least over tau of the best family's."""
-    sizes = coarse[0].sizes
     span = TWIST_PERIODS
     windows = [Window(p, hole, span + 2) for p in coarse]
     if windows[0].hole_turn != windows[1].hole_turn:

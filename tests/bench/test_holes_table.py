@@ -6,8 +6,6 @@ import os
 import subprocess
 import sys
 
-import pytest
-
 SCRIPT = os.path.join(os.path.dirname(__file__), "..", "..", "bench", "holes_table.py")
 
 
@@ -17,7 +15,7 @@ def test_table():
     assert run.returncode == 0, run.stderr
     rows = [line.split(" | ") for line in run.stdout.splitlines() if line.startswith("| ") and "---" not in line]
     header, rows = rows[0], rows[1:]
-    assert header[1] == "pair" and header[5] == "c"
+    assert header[1] == "pair" and header[5] == "c" and header[9] == "bound"
     # 12 glyph pairs twice, 11 of tests/core, the command line's and Python's plates
     assert len(rows) == 12 * 2 + 11 + 2
     assert all(r[-2] == "yes" for r in rows), [r[1] for r in rows if r[-2] != "yes"]
@@ -31,6 +29,7 @@ def test_table():
     assert c["five triangle holes"] == 90.0  # a triangle hole's corner in the material is 300
     for r in rows:
         assert float(r[6]) == round(min(15, float(r[5]) / 3), 2)
+        assert r[9] == ""  # the bounds only with --bounds
 
 
 def test_auto_pair_reads_the_correspondence_back(tmp_path):
