@@ -118,14 +118,25 @@ def source_revision():
     return rev + (" with local changes" if dirty else "")
 
 
-def read_xy(path):
-    points = []
+def read_loops(path):
+    """The loops of an .xy polygon, outer loop first: a line beginning with
+    '>' ends a loop (the command line's format)."""
+    loops = [[]]
     with open(path) as f:
         for line in f:
+            if line.startswith(">"):
+                if loops[-1]:
+                    loops.append([])
+                continue
             line = line.split("#")[0].replace(",", " ").split()
             if line:
-                points.append((float(line[0]), float(line[1])))
-    return points
+                loops[-1].append((float(line[0]), float(line[1])))
+    return [loop for loop in loops if loop]
+
+
+def read_xy(path):
+    """The points of an .xy polygon without holes."""
+    return read_loops(path)[0]
 
 
 def corner_angles(points):
