@@ -81,6 +81,7 @@ class Polygon:
         while len(tri) < MIN_TRIANGLES:
             xy, tri, edges = subdivide(xy, tri, edges)
         self.edge_nodes = [np.array(e) for e in edges]
+        self.xy, self.tri = xy, tri
         self.stiffness = assemble(xy, tri)
         self.nodes = len(xy)
 
