@@ -24,8 +24,8 @@ The correspondence sigma: s_A -> s_B is then blended with arc length,
 sigma_t = t sigma_conformal + (1 - t) sigma_linear, where sigma_linear is
 linear in arc length between anchors: no anchors (one shift, the mean
 offset of sigma_conformal) or the corners of polygon 0 turning by more
-than 45 degrees, matched conformally. Variant geo-tT instead blends in the
-stretch: d sigma / d s_A = (conformal stretch)^T, normalised.
+than 45 degrees, matched conformally. Variants geo-tT (automorphism by
+stretch) and geoP-tT (by procrustes) instead blend in the stretch: d sigma / d s_A = (conformal stretch)^T, normalised.
 Both polygons keep all their vertices (bit-identical, counter-clockwise,
 vertex 0 of polygon 0 first) and get the other's vertices at their images
 on their edges; a vertex whose image lies within half the parameter gap to
@@ -229,8 +229,9 @@ def blended(corr, t, anchors):
 
 def merge(A, B, grid, sigma):
     """Two polygons of one count: A's vertices and B's at their images."""
-    lifted_grid = np.concatenate([grid - 1, grid, grid + 1])
-    lifted_sigma = np.concatenate([sigma - 1, sigma, sigma + 1])
+    turns = range(-3, 4)  # sigma may start turns away from 0
+    lifted_grid = np.concatenate([grid + k for k in turns])
+    lifted_sigma = np.concatenate([sigma + k for k in turns])
     sa_of_b = np.interp(B.vertex_s, lifted_sigma, lifted_grid) % 1.0
     sb_of_a = np.interp(A.vertex_s, np.append(grid, 1.0), np.append(sigma, sigma[0] + 1.0))
     entries = [(A.vertex_s[i], 0, i) for i in range(A.n)] + [(sa_of_b[j], 1, j) for j in range(B.n)]
@@ -305,7 +306,7 @@ def measure(cli, name, files, variants):
         corrs = {}
         for v in variants:
             objective, t, anchors = variant_spec(v)
-            objective = "stretch" if objective == "geo" else objective
+            objective = {"geo": "stretch", "geoP": "procrustes"}.get(objective, objective)
             if objective not in corrs:
                 corrs[objective] = Correspondence(disks[0], disks[1], objective)
             c = corrs[objective]
