@@ -15,6 +15,7 @@
 #include "construct/overlay.h"
 #include "correspond/bound.h"
 #include "correspond/choose.h"
+#include "correspond/conformal.h"
 #include "correspond/corners.h"
 #include "correspond/split.h"
 #include "construct/partition.h"
@@ -280,6 +281,23 @@ static cm_status bound_before(cm_result *r, const double *const *polygons, const
     return s;
 }
 
+/* The conformal correspondence's boundaries into out (*found = 0 when it
+ * cannot be had, out then untouched). */
+static cm_status conformal(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
+                           const int *orientation, cm_boundary_map *out, int *found)
+{
+    size_t total = 0;
+    for (size_t g = 0; g < k; g++) total += counts[g];
+    double *all = malloc(total * sizeof *all), **params = malloc(k * sizeof *params);
+    cm_status s = all && params ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    for (size_t g = 0, at = 0; s == CM_OK && g < k; at += counts[g], g++) params[g] = all + at;
+    if (s == CM_OK) s = cm_correspond_conformal(polygons, counts, k, orientation, params, found, &r->error);
+    if (s == CM_OK && *found)
+        s = cm_correspond_params(polygons, counts, k, orientation, (const double *const *)params, out, &r->error);
+    free(all), free(params);
+    return s;
+}
+
 /* The boundaries in correspondence for CM_CORRESPOND_ARCLENGTH and _AUTO,
  * of k polygons each checked on its own (orientation as found): for auto,
  * the starts chosen where none are pinned; then the common refinement and
@@ -309,6 +327,19 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
         s = affine ? cm_correspond_affine_shift(polygons, counts, k, orientation, affine, &found, &r->error)
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         if (found) pins = affine, num_pins = counts[0];
+    }
+    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && whole &&
+        !(o->pin_corners_deg > 0)) {
+        /* Polygons without holes: the conformal correspondence. */
+        int found = 0;
+        s = conformal(r, polygons, counts, k, orientation, out, &found);
+        if (s == CM_OK && found) {
+            if (o->ceiling) s = bound_before(r, polygons, counts, k, orientation);
+            if (s == CM_OK && o->max_edge > 0)
+                s = cm_boundary_map_split(out, polygons, counts, orientation, o->max_edge, &r->error);
+            free(affine);
+            return s;
+        }
     }
     if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0) {
         chosen = malloc(k * sizeof *chosen);
