@@ -2,7 +2,9 @@
 
 usage: conformal_correspondence.py --compatmesh BIN [--gen-pairs BIN]
            [--variants NAME,...] [--only REGEX] [--max-n N] [--jobs N]
-           [--json FILE]
+           [--json FILE] [--baseline BIN] [--script-bound]
+
+With --variants '' only compatmesh's own auto runs (beside --baseline's).
 
 Every polygon is mapped conformally onto the unit disk: on a fine mesh of
 it (compatmesh's triangulation of the polygon paired with itself, split
@@ -266,7 +268,9 @@ def ccw(points):
     return points if signed_area(points) > 0 else [points[0]] + points[:0:-1]
 
 
-def run(cli, files, workdir, extra):
+def run(cli, files, workdir, extra, script_bound=False):
+    """One compatmesh run; script_bound: also bench/correspondence_bound.py
+    on the boundaries in correspondence it wrote."""
     out = os.path.join(workdir, "out")
     shutil.rmtree(out, ignore_errors=True)
     proc = subprocess.run([cli, "triangulate", *files, "--out-dir", out, *extra],
@@ -276,9 +280,21 @@ def run(cli, files, workdir, extra):
         return {"valid": False, "error": (proc.stderr.strip().splitlines() or ["?"])[-1]}
     r = json.load(open(path))
     ceiling = r.get("ceiling", {})
-    return {"valid": bool(r["valid"]), "angle": min(m["min_angle_deg"] for m in r["meshes"]),
-            "steiner": r["steiner"], "n": r["n"], "bound": ceiling.get("correspondence_bound_deg"),
-            "fan": ceiling.get("corner_fan_cap_deg")}
+    result = {"valid": bool(r["valid"]), "angle": min(m["min_angle_deg"] for m in r["meshes"]),
+              "steiner": r["steiner"], "n": r["n"], "bound": ceiling.get("correspondence_bound_deg"),
+              "fan": ceiling.get("corner_fan_cap_deg")}
+    if script_bound:
+        boundaries = []
+        for g, f in enumerate(files):
+            stem = os.path.splitext(os.path.basename(f))[0]
+            lines = open(os.path.join(out, stem + ".off")).read().split("\n")
+            boundaries.append(os.path.join(workdir, "boundary%d.xy" % g))
+            with open(boundaries[-1], "w") as b:
+                b.writelines(" ".join(line.split()[:2]) + "\n" for line in lines[2:2 + r["n"]])
+        bound = subprocess.run([sys.executable, os.path.join(HERE, "correspondence_bound.py"), cli, *boundaries],
+                               capture_output=True, text=True)
+        result["script_bound"] = float(bound.stdout.split()[0]) if bound.returncode == 0 else None
+    return result
 
 
 def variant_spec(name):
@@ -293,10 +309,14 @@ def variant_spec(name):
     return objective, t, anchors
 
 
-def measure(cli, name, files, variants):
+def measure(cli, name, files, variants, baseline=None, script_bound=False):
     row = {"pair": name}
     with tempfile.TemporaryDirectory() as workdir:
-        row["auto"] = run(cli, files, workdir, ["--correspondence", "auto"])
+        row["auto"] = run(cli, files, workdir, ["--correspondence", "auto"], script_bound)
+        if baseline:
+            row["baseline auto"] = run(baseline, files, workdir, ["--correspondence", "auto"], script_bound)
+        if not variants:
+            return row
         points = [ccw(read_xy(f)) for f in files]
         try:
             disks = [Disk(cli, p, workdir) for p in points]
@@ -341,30 +361,35 @@ def main(argv):
     ap.add_argument("--max-n", type=int, default=10 ** 9)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--json")
+    ap.add_argument("--baseline", help="another compatmesh whose auto runs beside")
+    ap.add_argument("--script-bound", action="store_true",
+                    help="the auto runs' bound also by bench/correspondence_bound.py")
     args = ap.parse_args(argv[1:])
     cli = os.path.abspath(args.compatmesh)
     gen = args.gen_pairs or os.path.join(os.path.dirname(cli), "cm_gen_pairs")
-    variants = args.variants.split(",")
+    variants = [v for v in args.variants.split(",") if v]
+    baseline = os.path.abspath(args.baseline) if args.baseline else None
     rows = []
     with tempfile.TemporaryDirectory() as workdir:
         todo = [(n, f) for n, f in pairs(gen, workdir)
                 if (not args.only or re.search(args.only, n)) and len(read_xy(f[0])) <= args.max_n
                 and len(f) == 2]
         with concurrent.futures.ProcessPoolExecutor(args.jobs) as ex:
-            futures = [ex.submit(measure, cli, n, f, variants) for n, f in todo]
+            futures = [ex.submit(measure, cli, n, f, variants, baseline, args.script_bound) for n, f in todo]
             for fut in futures:
                 row = fut.result()
                 rows.append(row)
                 line = [row["pair"]]
-                for v in ["auto"] + variants:
+                for v in ["auto"] + (["baseline auto"] if baseline else []) + variants:
                     r = row.get(v)
                     if r is None:
                         line.append("%s: %s" % (v, row.get("error", "?")))
                     elif not r["valid"]:
                         line.append("%s: invalid (%s)" % (v, r.get("error")))
                     else:
-                        line.append("%s: %.1f deg %d St n %d bound %.1f" % (v, r["angle"], r["steiner"], r["n"],
-                                                                          r["bound"] or 60))
+                        line.append("%s: %.1f deg %d St n %d bound %.1f%s" % (
+                            v, r["angle"], r["steiner"], r["n"], r["bound"] or 60,
+                            " script %.1f" % r["script_bound"] if r.get("script_bound") else ""))
                 print(" | ".join(line), flush=True)
     if args.json:
         json.dump(rows, open(args.json, "w"), indent=1)

@@ -306,6 +306,12 @@ static cm_status start_at_shared(cm_boundary_map *out, int *shared, cm_error *er
     return CM_OK;
 }
 
+static int by_value(const void *pa, const void *pb)
+{
+    double a = *(const double *)pa, b = *(const double *)pb;
+    return (a > b) - (a < b);
+}
+
 /* Walks of the given parameters, each less shift[g] (modulo 1). */
 static cm_status param_walks(const double *const *polygons, const size_t *counts, size_t k, const int *orientation,
                              const double *const *params, const double *shift, walk *walks, cm_error *err)
@@ -350,6 +356,22 @@ cm_status cm_correspond_params(const double *const *polygons, const size_t *coun
     double *shift = calloc(k, sizeof *shift);
     cm_status s = walks && shift ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
     int shared = 0;
+    /* The merge does not join across the end of the parameter range: all
+     * parameters are turned to put the end in the middle of the widest gap
+     * between them. */
+    size_t total = 0;
+    for (size_t g = 0; g < k; g++) total += counts[g];
+    double *all = s == CM_OK ? malloc(total * sizeof *all) : NULL;
+    if (s == CM_OK && !all) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+    if (all) {
+        for (size_t g = 0, at = 0; g < k; at += counts[g], g++) memcpy(all + at, params[g], counts[g] * sizeof *all);
+        qsort(all, total, sizeof *all, by_value);
+        double gap = all[0] + 1.0 - all[total - 1], middle = 0.5 * (all[total - 1] + all[0] + 1.0);
+        for (size_t x = 1; x < total; x++)
+            if (all[x] - all[x - 1] > gap) gap = all[x] - all[x - 1], middle = 0.5 * (all[x] + all[x - 1]);
+        for (size_t g = 0; g < k; g++) shift[g] = middle - floor(middle);
+        free(all);
+    }
     /* Twice at most: as given, then, when no vertex is every polygon's,
      * each polygon turned so that its vertex nearest to 0 is there. */
     for (int pass = 0; s == CM_OK && !shared && pass < 2; pass++) {

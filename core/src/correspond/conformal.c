@@ -15,16 +15,17 @@
 /* The mesh of each polygon is split into four until it has this many
  * triangles. */
 #define MIN_TRIANGLES 4000
-/* Samples of sigma along polygon 0: for the automorphism search, and for
- * the correspondence it gives. */
+/* Points evenly spaced on the circle that the automorphism search
+ * compares the arc lengths at. */
 #define SEARCH_SAMPLES 512
-#define SAMPLES 2048
 /* The search: starting rotations, and Nelder-Mead's iterations and
  * tolerances (on the parameters and on the criterion). */
-#define ROTATIONS 16
-#define ITERATIONS 400
-#define XTOL 1e-4
-#define FTOL 1e-7
+#define ROTATIONS 256
+#define GOLDEN_STEPS 48
+/* The barycentre's iteration: at most this many steps, until the mean is
+ * below the tolerance. */
+#define BALANCE_ITERATIONS 200
+#define BALANCE_TOLERANCE 1e-9
 /* Stretches below this are taken as this (doubles resolve no less). */
 #define STRETCH_FLOOR 1e-12
 
@@ -41,6 +42,8 @@ static void disk_free(disk *d)
     free(d->s), free(d->theta);
     memset(d, 0, sizeof *d);
 }
+
+static void balance(disk *d);
 
 static cm_status disk_build(const double *input, size_t n, int reversed, disk *d, int *usable, cm_error *err)
 {
@@ -63,7 +66,14 @@ static cm_status disk_build(const double *input, size_t n, int reversed, disk *d
         d->theta = malloc((nb + 1) * sizeof *d->theta);
         w = malloc(nb * sizeof *w);
         if (!d->s || !d->theta || !w) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
-        if (s == CM_OK) s = cm_fe_harmonic_measure(&m, cm_fe_deepest(&m, n, sample, ns), 1, w, err);
+        /* seen from the deepest of all interior nodes: a similar polygon's
+         * mesh is the similar image, and its deepest node the same */
+        long *inner = s == CM_OK ? malloc((size_t)m.nv * sizeof *inner) : NULL, ni = 0;
+        if (s == CM_OK && !inner) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+        for (long v = 0; inner && v < m.nv; v++)
+            if (!m.fixed[v]) inner[ni++] = v;
+        if (s == CM_OK) s = cm_fe_harmonic_measure(&m, cm_fe_deepest(&m, n, inner, ni), 1, w, err);
+        free(inner);
         if (s == CM_OK) {
             double acc = 0, first = PI * w[0];
             d->s[0] = 0;
@@ -78,12 +88,45 @@ static cm_status disk_build(const double *input, size_t n, int reversed, disk *d
             double total = d->s[nb];
             for (size_t j = 0; j <= nb; j++) d->s[j] /= total;
             d->s[nb] = 1.0, d->theta[nb] = 2 * PI;
+            balance(d);
         }
     }
     free(xy), free(w);
     cm_fe_free(&m);
     if (s != CM_OK || !*usable) disk_free(d);
     return s;
+}
+
+/* The disk turned by the automorphism that puts the barycentre of arc
+ * length at the centre (Douady-Earle: sum of s-weights times points on
+ * the circle = 0), so that two polygons' disks agree up to a rotation when
+ * the polygons are similar, whichever interior node each was seen from;
+ * by halving steps towards the mean, composed. Angles stay from 0 at
+ * vertex 0, non-decreasing. */
+static void balance(disk *d)
+{
+    size_t nb = d->nb;
+    double complex a = 0;
+    for (int it = 0; it < BALANCE_ITERATIONS; it++) {
+        double complex mean = 0;
+        for (size_t j = 0; j < nb; j++) {
+            double complex w = cexp(I * d->theta[j]);
+            double weight = 0.5 * ((j + 1 < nb ? d->s[j + 1] : 1.0) - (j ? d->s[j - 1] : d->s[nb - 1] - 1.0));
+            mean += weight * (w - a) / (1 - conj(a) * w);
+        }
+        if (cabs(mean) < BALANCE_TOLERANCE) break;
+        double complex b = 0.5 * mean;
+        a = (b + a) / (1 + conj(a) * b);
+    }
+    double prev = 0, first = 0;
+    for (size_t j = 0; j < nb; j++) {
+        double complex w = cexp(I * d->theta[j]);
+        double t = carg((w - a) / (1 - conj(a) * w));
+        if (j == 0) first = t;
+        t = j ? prev + fmax(0.0, remainder(t - prev, 2 * PI)) : t;
+        d->theta[j] = t - first, prev = t;
+    }
+    for (size_t j = 1; j < nb; j++) d->theta[j] = fmin(fmax(d->theta[j], d->theta[j - 1]), 2 * PI);
 }
 
 /* The largest j < len with a[j] <= x (a non-decreasing, a[0] <= x). */
@@ -107,142 +150,115 @@ static double lookup(const double *xs, const double *ys, size_t len, double x)
     return dx > 0 ? ys[j] + (x - xs[j]) / dx * (ys[j + 1] - ys[j]) : ys[j];
 }
 
-/* The search's view of one pair: polygon 0's sample points on the circle
- * and the disk of polygon g. */
+/* The search's view of one pair: m angles evenly spaced on the circle, as
+ * points, polygon 0's arc length there, and the disk of polygon g. */
 typedef struct search {
-    const double complex *w0;
+    const double complex *w;
+    const double *s0;
     size_t m;
     const disk *g;
-    double *sigma; /* m: scratch, then the result */
 } search;
 
-/* sigma at the m samples under the automorphism x = (z, rho), a = z / (1 +
- * |z|) (any z is a point of the disk): polygon 0's angle, moved onto
- * polygon g's circle, read as g's arc length, lifted to increase. */
-static void correspond(const search *q, const double *x)
+/* How far the correspondence is from arc length with polygon g's disk
+ * turned by rho onto polygon 0's: the variance, over the circle, of
+ * polygon g's arc length less polygon 0's at the same point (lifted).
+ * Zero for a similar copy turned right. */
+static double cost(const search *q, double rho)
 {
-    double complex z = x[0] + I * x[1], a = z / (1 + cabs(z)), turn = cexp(-I * x[2]);
-    double prev = 0;
+    double prev = 0, sum = 0, sum2 = 0;
     for (size_t i = 0; i < q->m; i++) {
-        double complex w = q->w0[i] * turn;
-        double t = carg((w + a) / (1 + conj(a) * w));
+        double t = carg(q->w[i] * cexp(-I * rho));
         if (i == 0) t = t < 0 ? t + 2 * PI : t;
         else t = prev + remainder(t - prev, 2 * PI);
         prev = t;
         double turns = floor(t / (2 * PI));
-        q->sigma[i] = turns + lookup(q->g->theta, q->g->s, q->g->nb, t - 2 * PI * turns);
+        double d = turns + lookup(q->g->theta, q->g->s, q->g->nb, t - 2 * PI * turns) - q->s0[i];
+        sum += d, sum2 += d * d;
     }
+    double mean = sum / (double)q->m;
+    return sum2 / (double)q->m - mean * mean;
 }
 
-/* Mean square log stretch of sigma (the crowding it forces). */
-static double stretch_cost(const search *q, const double *x)
+/* The turn of least cost: the best of ROTATIONS evenly spaced, then
+ * golden-section search around it (the cost is V-shaped at a similar
+ * copy's turn). */
+static double best_turn(const search *q)
 {
-    correspond(q, x);
-    double sum = 0;
-    for (size_t i = 0; i < q->m; i++) {
-        double d = (i + 1 < q->m ? q->sigma[i + 1] : q->sigma[0] + 1) - q->sigma[i];
-        double l = log(fmax(d, STRETCH_FLOOR) * (double)q->m);
-        sum += l * l;
+    double best = 0, best_cost = HUGE_VAL;
+    for (int r = 0; r < ROTATIONS; r++) {
+        double rho = 2 * PI * r / ROTATIONS, c = cost(q, rho);
+        if (c < best_cost) best_cost = c, best = rho;
     }
-    return sum / (double)q->m;
+    const double golden = 0.5 * (sqrt(5.0) - 1);
+    double lo = best - 2 * PI / ROTATIONS, hi = best + 2 * PI / ROTATIONS;
+    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo), f1 = cost(q, x1), f2 = cost(q, x2);
+    for (int it = 0; it < GOLDEN_STEPS; it++) {
+        if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = cost(q, x1);
+        else lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = cost(q, x2);
+    }
+    double mid = f1 < f2 ? x1 : x2;
+    return fmin(f1, f2) < best_cost ? mid : best;
 }
 
-/* Nelder-Mead on stretch_cost from x (3 parameters; the simplex and
- * coefficients of scipy's default). x receives the best vertex; returns
- * its cost. */
-static double nelder_mead(const search *q, double *x)
+static int by_value(const void *a, const void *b)
 {
-    enum { N = 3 };
-    double p[N + 1][N], f[N + 1], c[N], r[N], e[N];
-    for (int v = 0; v <= N; v++) {
-        memcpy(p[v], x, sizeof p[v]);
-        if (v) p[v][v - 1] = p[v][v - 1] != 0 ? 1.05 * p[v][v - 1] : 0.00025;
-        f[v] = stretch_cost(q, p[v]);
-    }
-    for (int it = 0; it < ITERATIONS; it++) {
-        /* order by cost */
-        for (int v = 1; v <= N; v++)
-            for (int u = v; u > 0 && f[u] < f[u - 1]; u--) {
-                double t = f[u];
-                f[u] = f[u - 1], f[u - 1] = t;
-                for (int j = 0; j < N; j++) t = p[u][j], p[u][j] = p[u - 1][j], p[u - 1][j] = t;
-            }
-        double xs = 0, fs = 0;
-        for (int v = 1; v <= N; v++) {
-            fs = fmax(fs, fabs(f[v] - f[0]));
-            for (int j = 0; j < N; j++) xs = fmax(xs, fabs(p[v][j] - p[0][j]));
-        }
-        if (xs <= XTOL && fs <= FTOL) break;
-        for (int j = 0; j < N; j++) {
-            c[j] = 0;
-            for (int v = 0; v < N; v++) c[j] += p[v][j] / N;
-            r[j] = 2 * c[j] - p[N][j];
-        }
-        double fr = stretch_cost(q, r);
-        if (fr < f[0]) {
-            for (int j = 0; j < N; j++) e[j] = 3 * c[j] - 2 * p[N][j];
-            double fe = stretch_cost(q, e);
-            if (fe < fr) memcpy(p[N], e, sizeof e), f[N] = fe;
-            else memcpy(p[N], r, sizeof r), f[N] = fr;
-            continue;
-        }
-        if (fr < f[N - 1]) {
-            memcpy(p[N], r, sizeof r), f[N] = fr;
-            continue;
-        }
-        int outside = fr < f[N];
-        for (int j = 0; j < N; j++) e[j] = outside ? 1.5 * c[j] - 0.5 * p[N][j] : 0.5 * c[j] + 0.5 * p[N][j];
-        double fc = stretch_cost(q, e);
-        if (outside ? fc <= fr : fc < f[N]) {
-            memcpy(p[N], e, sizeof e), f[N] = fc;
-            continue;
-        }
-        for (int v = 1; v <= N; v++) { /* shrink towards the best */
-            for (int j = 0; j < N; j++) p[v][j] = p[0][j] + 0.5 * (p[v][j] - p[0][j]);
-            f[v] = stretch_cost(q, p[v]);
-        }
-    }
-    int best = 0;
-    for (int v = 1; v <= N; v++)
-        if (f[v] < f[best]) best = v;
-    memcpy(x, p[best], sizeof p[best]);
-    return f[best];
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
 }
 
-/* Polygon 0's m sample points (evenly spaced by arc length) on its circle. */
-static void circle_samples(const disk *d0, size_t m, double complex *w0)
+/* The tempered parameter of a disk's boundary nodes (nb + 1 values from 0
+ * to 1): the running integral of (d theta / d s)^CM_CONFORMAL_POWER over
+ * arc length, normalised. A part the conformal map crowds by e^-x is
+ * crowded by e^-x/4; a similar copy gets the same parameter. */
+static void tempered(const disk *d, const double *theta, double *p)
 {
-    for (size_t i = 0; i < m; i++) w0[i] = cexp(I * lookup(d0->s, d0->theta, d0->nb, (double)i / (double)m));
+    p[0] = 0;
+    for (size_t j = 0; j < d->nb; j++) {
+        double ds = d->s[j + 1] - d->s[j], density = ds > 0 ? (theta[j + 1] - theta[j]) / (2 * PI * ds) : 1.0;
+        p[j + 1] = p[j] + pow(fmax(density, STRETCH_FLOOR), CM_CONFORMAL_POWER) * ds;
+    }
+    double total = p[d->nb];
+    for (size_t j = 0; j <= d->nb; j++) p[j] /= total;
+    p[d->nb] = 1.0;
 }
 
-/* params of polygon g: its vertices' places on polygon 0 under sigma
- * (SAMPLES values along polygon 0, lifted, increasing) tempered to the
- * power CM_CONFORMAL_POWER. */
-static cm_status place(const double *xy, size_t n, int reversed, double *sigma, double *params, cm_error *err)
+/* params of polygon g (counter-clockwise positions): where its vertices
+ * sit on polygon 0 when both are read by their tempered parameters, g's
+ * disk turned onto polygon 0's by the automorphism x. */
+static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, double *params, cm_error *err)
 {
-    const size_t m = SAMPLES;
-    double *cum = malloc((m + 1) * sizeof *cum), *arc = cm_arc_lengths(xy, n, reversed, 0);
-    if (!cum || !arc) {
-        free(cum), free(arc);
+    size_t nb = dg->nb, levels = nb / n;
+    double *theta = malloc((nb + 1) * sizeof *theta), *p0 = malloc((d0->nb + 1) * sizeof *p0);
+    double *pg = malloc((nb + 1) * sizeof *pg);
+    if (!theta || !p0 || !pg) {
+        free(theta), free(p0), free(pg);
         return cm_fail_status(err, CM_ERR_NO_MEMORY);
     }
-    cum[0] = 0;
-    for (size_t i = 0; i < m; i++) {
-        double d = (i + 1 < m ? sigma[i + 1] : sigma[0] + 1) - sigma[i];
-        cum[i + 1] = cum[i] + pow(fmax(d * (double)m, STRETCH_FLOOR), CM_CONFORMAL_POWER);
+    /* g's nodes on polygon 0's circle */
+    for (size_t j = 0; j <= nb; j++) theta[j] = dg->theta[j] + rho;
+    tempered(d0, d0->theta, p0);
+    tempered(dg, theta, pg);
+    /* g's vertex 0 lands at polygon 0's tempered parameter `from`: the
+     * median over g's nodes of where each lands less its own parameter
+     * (one node alone may sit in a crowded stretch whose angles doubles
+     * cannot tell apart) */
+    double *offset = theta; /* reused: nb values */
+    double base = 0;
+    for (size_t j = 0; j < nb; j++) {
+        double t = theta[j] - 2 * PI * floor(theta[j] / (2 * PI));
+        double o = lookup(d0->s, p0, d0->nb, lookup(d0->theta, d0->s, d0->nb, t)) - pg[j];
+        if (j == 0) base = o;
+        offset[j] = remainder(o - base, 1.0);
     }
-    double offset = 0, total = cum[m];
-    for (size_t i = 0; i <= m; i++) cum[i] /= total;
-    for (size_t i = 0; i < m; i++) offset += (sigma[i] - cum[i]) / (double)m;
-    for (size_t i = 0; i <= m; i++) cum[i] += offset; /* tempered sigma, cum[m] = cum[0] + 1 */
+    qsort(offset, nb, sizeof *offset, by_value);
+    double from = base + offset[nb / 2];
     for (size_t c = 0; c < n; c++) {
-        double s = arc[c] / arc[n];
-        s -= floor(s - cum[0]); /* lifted into [cum[0], cum[0] + 1) */
-        size_t i = below(cum, m, s);
-        double u = ((double)i + (s - cum[i]) / (cum[i + 1] - cum[i])) / (double)m;
+        double q = from + pg[c * levels];
+        q -= floor(q);
+        double u = lookup(p0, d0->s, d0->nb, q);
         params[c] = u < 1.0 ? u : nextafter(1.0, 0.0);
     }
-    free(cum), free(arc);
+    free(theta), free(p0), free(pg);
     return CM_OK;
 }
 
@@ -251,9 +267,8 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
 {
     *found = 0;
     disk *disks = calloc(k, sizeof *disks);
-    double complex *w0 = malloc(SAMPLES * sizeof *w0);
-    double *sigma = malloc(SAMPLES * sizeof *sigma);
-    cm_status s = disks && w0 && sigma ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
+    double complex *w0 = malloc(SEARCH_SAMPLES * sizeof *w0);
+    cm_status s = disks && w0 ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
     int usable = 1;
     for (size_t g = 0; s == CM_OK && usable && g < k; g++)
         s = disk_build(polygons[g], counts[g], orientation[g] < 0, &disks[g], &usable, err);
@@ -263,22 +278,20 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
         for (size_t c = 0; arc && c < counts[0]; c++) params[0][c] = arc[c] / arc[counts[0]];
         free(arc);
     }
-    for (size_t g = 1; s == CM_OK && usable && g < k; g++) {
-        search coarse = {w0, SEARCH_SAMPLES, &disks[g], sigma};
-        circle_samples(&disks[0], SEARCH_SAMPLES, w0);
-        double best[3] = {0, 0, 0}, best_cost = HUGE_VAL;
-        for (int r = 0; r < ROTATIONS; r++) {
-            double x[3] = {0, 0, 2 * PI * r / ROTATIONS};
-            double cost = nelder_mead(&coarse, x);
-            if (cost < best_cost) best_cost = cost, memcpy(best, x, sizeof best);
-        }
-        search fine = {w0, SAMPLES, &disks[g], sigma};
-        circle_samples(&disks[0], SAMPLES, w0);
-        correspond(&fine, best);
-        s = place(polygons[g], counts[g], orientation[g] < 0, sigma, params[g], err);
+    double *s0 = malloc(SEARCH_SAMPLES * sizeof *s0);
+    if (s == CM_OK && !s0) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+    for (size_t i = 0; s == CM_OK && usable && i < SEARCH_SAMPLES; i++) {
+        double t = 2 * PI * (double)i / SEARCH_SAMPLES;
+        w0[i] = cexp(I * t);
+        s0[i] = lookup(disks[0].theta, disks[0].s, disks[0].nb, t);
     }
+    for (size_t g = 1; s == CM_OK && usable && g < k; g++) {
+        search q = {w0, s0, SEARCH_SAMPLES, &disks[g]};
+        s = place(&disks[0], &disks[g], best_turn(&q), counts[g], params[g], err);
+    }
+    free(s0);
     if (s == CM_OK) *found = usable;
     for (size_t g = 0; disks && g < k; g++) disk_free(&disks[g]);
-    free(disks), free(w0), free(sigma);
+    free(disks), free(w0);
     return s;
 }
