@@ -5,7 +5,8 @@
  * start vertex finds the identity, and bad pins are clear errors. The
  * conformal correspondence (CM_CORRESPOND_AUTO without holes) finds the
  * identity between a polygon and a similar copy too, also when the copy
- * has its edges split. */
+ * has its edges split; CM_CORRESPOND_SIMILARITY keeps the similarity
+ * choice. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -280,6 +281,41 @@ static void test_auto_conformal_identity(void)
     cm_result_free(r);
 }
 
+/* CM_CORRESPOND_SIMILARITY keeps the similarity choice for polygons
+ * without holes: a spiky star against its similar copy with every edge
+ * split (where the conformal map crowds the spikes) pairs by arc length
+ * from the start the fit finds, a's vertex j on the copy's vertex 2 (j -
+ * SHIFT) and the copy's midpoints on a's. */
+static void test_similarity_mode(void)
+{
+    enum { N = 40, SHIFT = 9 };
+    double a[2 * N], c[2 * N], b[4 * N];
+    CHECK(rp_star(a, N, 81) == 0);
+    similar_copy(a, N, SHIFT, c);
+    for (int i = 0; i < N; i++) {
+        const double *p = c + 2 * i, *q = c + 2 * ((i + 1) % N);
+        b[4 * i] = p[0], b[4 * i + 1] = p[1];
+        b[4 * i + 2] = 0.5 * (p[0] + q[0]), b[4 * i + 3] = 0.5 * (p[1] + q[1]);
+    }
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = CM_CORRESPOND_SIMILARITY, o.remesh = 0;
+    const double *in[2] = {a, b};
+    size_t counts[2] = {N, 2 * N};
+    cm_result *r = NULL;
+    CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r) == CM_OK, "%s", cm_result_message(r));
+    if (cm_result_status(r) == CM_OK) {
+        CHECK_MSG(cm_result_stats(r)->n == 2 * N, "%zu boundary", cm_result_stats(r)->n);
+        for (size_t i = 0; i < cm_result_stats(r)->n; i++) {
+            double ta, tb;
+            long ea = cm_result_boundary_source(r, 0, i, &ta), eb = cm_result_boundary_source(r, 1, i, &tb);
+            CHECK_MSG(tb == 0 && ea == (eb / 2 + SHIFT) % N && (eb % 2 ? fabs(ta - 0.5) < 1e-9 : ta == 0),
+                      "vertex %zu: a's %ld at %g, copy's %ld at %g", i, ea, ta, eb, tb);
+        }
+    }
+    cm_result_free(r);
+}
+
 int main(void)
 {
     test_different_counts();
@@ -289,5 +325,6 @@ int main(void)
     test_bad_pins();
     test_conformal_similar_copy();
     test_auto_conformal_identity();
+    test_similarity_mode();
     return check_summary("test_correspondence");
 }

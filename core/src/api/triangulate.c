@@ -244,7 +244,7 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
 
 static cm_status check_correspondence_options(cm_result *r, const cm_options *o)
 {
-    if ((unsigned)o->correspondence > (unsigned)CM_CORRESPOND_AUTO)
+    if ((unsigned)o->correspondence > (unsigned)CM_CORRESPOND_SIMILARITY)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown correspondence %d", (int)o->correspondence);
     if (o->num_pins && !o->pins) return cm_fail(&r->error, CM_ERR_ARGUMENT, "num_pins is %zu but pins is NULL", o->num_pins);
     if (o->num_pins && o->correspondence == CM_CORRESPOND_INDEX)
@@ -262,6 +262,12 @@ static cm_status check_correspondence_options(cm_result *r, const cm_options *o)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "max_edge is %g; expected 0 (off) or a positive length",
                        o->max_edge);
     return CM_OK;
+}
+
+/* CM_CORRESPOND_AUTO and _SIMILARITY: the correspondence is chosen. */
+static int chosen_mode(const cm_options *o)
+{
+    return o->correspondence == CM_CORRESPOND_AUTO || o->correspondence == CM_CORRESPOND_SIMILARITY;
 }
 
 /* The correspondence bound of arc length from every polygon's first
@@ -314,13 +320,13 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
     const size_t *pins = every_vertex ? every_vertex : whole ? o->pins : NULL;
     size_t num_pins = every_vertex ? counts[0] : whole ? o->num_pins : 0, *chosen = NULL;
     size_t *affine = NULL;
-    if (hole_starts && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0) {
+    if (hole_starts && chosen_mode(o) && num_pins == 0) {
         chosen = malloc(k * sizeof *chosen);
         if (!chosen) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         memcpy(chosen, hole_starts, k * sizeof *chosen);
         pins = chosen, num_pins = 1;
     }
-    if (o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && !(o->pin_corners_deg > 0)) {
+    if (chosen_mode(o) && num_pins == 0 && !(o->pin_corners_deg > 0)) {
         /* Affine images of one another: vertex to vertex, no distortion. */
         int found = 0;
         affine = malloc(counts[0] * k * sizeof *affine);
@@ -341,7 +347,7 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
             return s;
         }
     }
-    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0) {
+    if (s == CM_OK && chosen_mode(o) && num_pins == 0) {
         chosen = malloc(k * sizeof *chosen);
         s = chosen ? cm_correspond_choose_starts(polygons, counts, k, orientation, chosen, &r->error)
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
@@ -701,7 +707,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         for (size_t l = 0; l < L; l++) start[g * (L + 1) + l + 1] = start[g * (L + 1) + l] + polygons[g].loop_sizes[l];
     }
     size_t n = 0;
-    int joint = o->correspondence == CM_CORRESPOND_AUTO;
+    int joint = chosen_mode(o);
     double *similarity = NULL;
     size_t *hole_starts = NULL;
     if (s == CM_OK && joint && (!(similarity = malloc(4 * k * sizeof *similarity)) ||

@@ -1,6 +1,5 @@
 /* The conformal correspondence (conformal.h). The measurements behind its
- * choices (the power, the automorphism's criterion) are in
- * bench/CORRESPONDENCE.md. */
+ * choices (the power, the balancing) are in bench/CORRESPONDENCE.md. */
 #include "correspond/conformal.h"
 
 #include <complex.h>
@@ -15,11 +14,10 @@
 /* The mesh of each polygon is split into four until it has this many
  * triangles. */
 #define MIN_TRIANGLES 4000
-/* Points evenly spaced on the circle that the automorphism search
- * compares the arc lengths at. */
+/* The rotation search: the points evenly spaced on the circle it compares
+ * the arc lengths at, the evenly spaced turns it tries, and the golden-
+ * section steps that refine the best. */
 #define SEARCH_SAMPLES 512
-/* The search: starting rotations, and Nelder-Mead's iterations and
- * tolerances (on the parameters and on the criterion). */
 #define ROTATIONS 256
 #define GOLDEN_STEPS 48
 /* The barycentre's iteration: at most this many steps, until the mean is

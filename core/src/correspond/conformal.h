@@ -11,21 +11,26 @@
  * vertex 0), params[g][c] in [0, 1): where the vertex sits on polygon 0's
  * boundary, as a share of its perimeter counter-clockwise from its vertex 0
  * (polygon 0's own vertices at their arc length). params: k arrays of
- * counts[g] doubles, filled. *found = 0 (params untouched beyond use as
- * scratch) when a polygon's mesh has a triangle of no area in doubles, and
- * the caller chooses some other way. orientation as from
- * cm_input_check_polygons.
+ * counts[g] doubles, filled. *found = 0 (params left partly written) when
+ * a polygon's mesh has a triangle of no area in doubles, and the caller
+ * chooses some other way. orientation as from cm_input_check_polygons.
  *
  * How: on a mesh of each polygon alone (fe.h), the harmonic measure seen
- * from its deepest node puts the boundary on the unit circle. Between
- * polygon 0 and polygon g the automorphism w -> e^(i rho) (w - a) / (1 -
- * conj(a) w) is chosen (Nelder-Mead from evenly spaced rotations) that
- * makes the correspondence sigma: s_0 -> s_g of normalised arc lengths
- * stretch least: the mean square of log(d s_g / d s_0). The conformal
- * stretch of a long thin part is exponentially small, beyond doubles and
- * beyond any mesh, so the correspondence used has stretch (d sigma / d
- * s_0)^CM_CONFORMAL_POWER (normalised, from 1e-12 up): it keeps where the
- * conformal map sends each part and tempers how much it crowds it. */
+ * from its deepest node puts the boundary on the unit circle (the boundary
+ * values of a conformal map onto the disk). Each disk is turned by the
+ * automorphism that puts the barycentre of arc length at the centre
+ * (Douady-Earle), which spreads every polygon's crowding evenly around the
+ * circle and leaves two similar polygons' disks one rotation apart; the
+ * rotation between polygon 0's disk and polygon g's is the one under
+ * which the two arc lengths at each point of the circle differ least
+ * (variance over the circle). A conformal map crowds a long thin part by
+ * a factor exponential in its length over its width, beyond doubles and
+ * beyond any mesh, so the polygons are matched not by angle but by a
+ * tempered parameter: the running integral of (d angle / d arc
+ * length)^CM_CONFORMAL_POWER, normalised, which keeps the order and place
+ * of the parts the conformal map sees and takes the power of its
+ * crowding; a similar copy gets the same parameter. The power and the
+ * rest were chosen by measurement (bench/CORRESPONDENCE.md). */
 #define CM_CONFORMAL_POWER 0.25
 cm_status cm_correspond_conformal(const double *const *polygons, const size_t *counts, size_t k,
                                   const int *orientation, double *const *params, int *found, cm_error *err);
