@@ -239,8 +239,10 @@ static void test_conformal_similar_copy(void)
 /* Through the API: the copy with every edge split at its midpoint (the
  * same polygon, 2N vertices, meshed differently) pairs a's vertex j with
  * the copy's vertex 2 (j - SHIFT) and puts the copy's midpoints near a's
- * (the affine shortcut needs equal counts, so this is the conformal path);
- * nothing to distort, no Steiner vertex. */
+ * (the affine shortcut needs equal counts; auto takes the conformal
+ * correspondence or the similarity choice, whichever allows the higher
+ * ceiling, and both are the identity here); nothing to distort, no
+ * Steiner vertex. */
 static void test_auto_conformal_identity(void)
 {
     enum { N = 40, SHIFT = 7 };

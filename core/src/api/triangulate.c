@@ -304,6 +304,43 @@ static cm_status conformal(cm_result *r, const double *const *polygons, const si
     return s;
 }
 
+/* The certified ceiling (the lower of the corner-fan cap and the
+ * correspondence bound) of boundaries in correspondence. */
+static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *deg)
+{
+    cm_bound b;
+    cm_status s = cm_bound_compute((const double *const *)map->xy, NULL, map->k, map->n, NULL, &b, &r->error);
+    *deg = fmin(b.corner_fan_deg, b.correspondence_deg);
+    return s;
+}
+
+/* CM_CORRESPOND_AUTO for polygons without holes or pins: the conformal
+ * correspondence, or the similarity choice where that allows the higher
+ * ceiling (a polygon whose corners the similarity fit pairs corner to
+ * corner, a disc that would take another polygon's crowding whole);
+ * *found = 0 when the conformal one cannot be had (out then untouched). */
+static cm_status auto_whole(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
+                            const int *orientation, cm_boundary_map *out, int *found)
+{
+    cm_status s = conformal(r, polygons, counts, k, orientation, out, found);
+    if (s != CM_OK || !*found) return s;
+    cm_boundary_map similar = {0};
+    size_t *starts = malloc(k * sizeof *starts);
+    double conformal_deg = 0, similar_deg = 0;
+    s = starts ? cm_correspond_choose_starts(polygons, counts, k, orientation, starts, &r->error)
+               : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, starts, 1, &similar, &r->error);
+    if (s == CM_OK) s = ceiling_of(r, out, &conformal_deg);
+    if (s == CM_OK) s = ceiling_of(r, &similar, &similar_deg);
+    if (s == CM_OK && similar_deg > conformal_deg) {
+        cm_boundary_map t = *out;
+        *out = similar, similar = t;
+    }
+    cm_boundary_map_clear(&similar);
+    free(starts);
+    return s;
+}
+
 /* The boundaries in correspondence for CM_CORRESPOND_ARCLENGTH and _AUTO,
  * of k polygons each checked on its own (orientation as found): for auto,
  * the starts chosen where none are pinned; then the common refinement and
@@ -336,9 +373,9 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
     }
     if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && whole &&
         !(o->pin_corners_deg > 0)) {
-        /* Polygons without holes: the conformal correspondence. */
+        /* Polygons without holes: conformal or similarity (auto_whole). */
         int found = 0;
-        s = conformal(r, polygons, counts, k, orientation, out, &found);
+        s = auto_whole(r, polygons, counts, k, orientation, out, &found);
         if (s == CM_OK && found) {
             if (o->ceiling) s = bound_before(r, polygons, counts, k, orientation);
             if (s == CM_OK && o->max_edge > 0)
