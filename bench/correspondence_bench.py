@@ -4,6 +4,8 @@ an arbitrary start costs with plain arc length, and what auto recovers,
 against the pair's own designed index correspondence.
 
 usage: correspondence_bench.py BUILD_DIR OUT.md
+
+OUT.md is rewritten up to its first '## ' section; the sections are kept.
 """
 import json
 import os
@@ -51,6 +53,11 @@ def main(argv):
             rows.append((name, shift, cells))
     def cell(c):
         return "failed" if c is None else f"{c[0]:.1f} deg, {c[1]} St, n {c[2]}"
+    # sections after the table (## headings) are kept
+    kept = ""
+    if os.path.exists(target):
+        text = open(target).read()
+        kept = text[text.index("\n## "):] if "\n## " in text else ""
     with open(target, "w") as out:
         out.write("# Choosing the correspondence\n\n"
                   "`bench/correspondence_bench.py` (seeded): each pair's second polygon renumbered from a\n"
@@ -66,6 +73,7 @@ def main(argv):
             return v[len(v) // 2] if v else float("nan")
         out.write(f"\nMedian smallest angle: index {median(0):.1f}, arclength {median(1):.1f}, "
                   f"auto {median(2):.1f} degrees over {len(rows)} pairs.\n")
+        out.write(kept)
     print(f"wrote {target}")
     return 0
 

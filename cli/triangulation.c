@@ -85,8 +85,9 @@ static int set_correspondence(triangulation_args *args, const char *command, con
     if (strcmp(name, "index") == 0) args->options.correspondence = CM_CORRESPOND_INDEX;
     else if (strcmp(name, "arclength") == 0) args->options.correspondence = CM_CORRESPOND_ARCLENGTH;
     else if (strcmp(name, "auto") == 0) args->options.correspondence = CM_CORRESPOND_AUTO;
+    else if (strcmp(name, "similarity") == 0) args->options.correspondence = CM_CORRESPOND_SIMILARITY;
     else {
-        cli_error_set(error, "%s: unknown --correspondence '%s' (known: index, arclength, auto)", command, name);
+        cli_error_set(error, "%s: unknown --correspondence '%s' (known: index, arclength, auto, similarity)", command, name);
         return CLI_EXIT_USAGE;
     }
     args->correspondence_given = 1;

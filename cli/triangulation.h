@@ -80,12 +80,15 @@ enum {
      "counts; the default when the counts are equal);\n"                      \
      "arclength: normalised arc length between pins, each\n"                  \
      "input keeping its vertices and getting the others'\n"                   \
-     "on its edges (the default with --pin); auto:\n"                         \
-     "arc length from the starts that align the inputs\n"                     \
-     "best up to a similarity (the default when the\n"                        \
-     "counts differ; with holes the outer loop's start\n"                      \
-     "so, every hole's where its points lie nearest\n"                        \
-     "under the outer loops' similarity)"},                                   \
+     "on its edges (the default with --pin); auto (the\n"                     \
+     "default when the counts differ), with arclength's\n"                    \
+     "output: conformal, the inputs' maps onto the disk\n"                    \
+     "made to agree, their crowding tempered; with\n"                        \
+     "--pin-corners or holes, arc length from the starts\n"                   \
+     "that align the inputs best up to a similarity\n"                       \
+     "(every hole's where its points lie nearest under\n"                    \
+     "the outer loops' similarity); similarity: that for\n"                  \
+     "all inputs"},                                                           \
     {"pin", OPTION_PIN, "I,J[,K...]",                                         \
      "arclength: vertex I of the first input corresponds\n"                   \
      "to vertex J of the second, ... (0-based, in file\n"                     \

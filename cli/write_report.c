@@ -205,7 +205,7 @@ static json_t *mesh_entry(tree *t, const report_info *info, size_t g)
 
 int write_report(const char *path, const report_info *info, cli_error *error)
 {
-    static const char *const correspondence[] = {"index", "arclength", "auto"};
+    static const char *const correspondence[] = {"index", "arclength", "auto", "similarity"};
     tree t = {0};
     const cm_stats *stats = cm_result_stats(info->result);
     json_t *root = head(&t, stats);

@@ -171,7 +171,8 @@ Enum enum_from(py::handle value, const char *option,
 const std::vector<std::pair<const char *, cm_method>> method_names = {
     {"overlay", CM_METHOD_OVERLAY}, {"partition", CM_METHOD_PARTITION}};
 const std::vector<std::pair<const char *, cm_correspondence>> correspondence_names = {
-    {"index", CM_CORRESPOND_INDEX}, {"arclength", CM_CORRESPOND_ARCLENGTH}, {"auto", CM_CORRESPOND_AUTO}};
+    {"index", CM_CORRESPOND_INDEX}, {"arclength", CM_CORRESPOND_ARCLENGTH}, {"auto", CM_CORRESPOND_AUTO},
+    {"similarity", CM_CORRESPOND_SIMILARITY}};
 const std::vector<std::pair<const char *, cm_smoothing>> smoothing_names = {
     {"laplacian", CM_SMOOTH_LAPLACIAN},
     {"angle", CM_SMOOTH_ANGLE},
@@ -974,7 +975,8 @@ PYBIND11_MODULE(compatmesh, m)
   py::enum_<cm_correspondence>(m, "Correspondence", "Which vertices of the polygons correspond.")
       .value("INDEX", CM_CORRESPOND_INDEX)
       .value("ARCLENGTH", CM_CORRESPOND_ARCLENGTH)
-      .value("AUTO", CM_CORRESPOND_AUTO);
+      .value("AUTO", CM_CORRESPOND_AUTO)
+      .value("SIMILARITY", CM_CORRESPOND_SIMILARITY);
   py::enum_<cm_smoothing>(m, "Smoothing", "Vertex smoothing in the remesher.")
       .value("LAPLACIAN", CM_SMOOTH_LAPLACIAN)
       .value("ANGLE", CM_SMOOTH_ANGLE)
@@ -1183,9 +1185,12 @@ options: keyword arguments named like the fields of the C struct cm_options,
                     when the counts are equal) or "arclength" (normalised
                     arc length between pins; each polygon keeps its vertices
                     and gets the others' on its edges; the default with
-                    pins), "auto" (arc length
-                    from the starts that align the polygons best up to a
-                    similarity; the default when the counts differ), or a
+                    pins), "auto" (the default when the counts differ;
+                    output as arclength: conformal, the polygons' maps onto
+                    the disk made to agree, their crowding tempered; with
+                    pin_corners_deg or holes, arc length from the starts
+                    that align the polygons best up to a similarity),
+                    "similarity" (that alignment for all polygons), or a
                     compatmesh.Correspondence
     pins            arclength: a sequence of tuples, one vertex per polygon,
                     that correspond (default: the first vertices)

@@ -52,7 +52,8 @@ std::vector<std::size_t> parse_pins(const std::string &text, const compatmesh::B
 
 const char *correspondence_name(cm_correspondence c)
 {
-  return c == CM_CORRESPOND_INDEX ? "index" : c == CM_CORRESPOND_ARCLENGTH ? "arc length" : "auto";
+  return c == CM_CORRESPOND_INDEX ? "index" : c == CM_CORRESPOND_ARCLENGTH ? "arc length"
+         : c == CM_CORRESPOND_AUTO ? "auto" : "similarity";
 }
 
 std::string degrees(double value)

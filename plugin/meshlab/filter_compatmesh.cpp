@@ -102,12 +102,15 @@ void FilterCompatMesh::initParameterSet(QAction *action, MeshDocument &md, RichP
                            "0: no refinement."));
       par.addParam(RichBool("Remesh", true, "Remesh",
                             "Improve angles by flips, smoothing and splits applied to both layers at once."));
-      par.addParam(RichEnum("Correspondence", 2, QStringList() << "index" << "arc length" << "auto",
+      par.addParam(RichEnum("Correspondence", 2, QStringList() << "index" << "arc length" << "auto" << "similarity",
                             "Correspondence",
                             "Which boundary points correspond. index: vertex i of one layer is vertex i "
                             "of the other (equal counts, same direction). arc length: normalised arc "
-                            "length between the pins (or from each boundary's first vertex). auto: arc "
-                            "length from the start and direction that align the boundaries best. With "
+                            "length between the pins (or from each boundary's first vertex). auto: "
+                            "conformal, both boundaries mapped onto the disk and made to agree, thin "
+                            "parts' crowding tempered (with holes: arc length from the start and "
+                            "direction that align the boundaries best). similarity: that alignment for "
+                            "boundaries without holes too. With "
                             "arc length and auto the counts may differ: every input vertex is kept and "
                             "the other boundary's vertices are added on its edges."));
       par.addParam(RichString("Pins", "", "Pins",
@@ -153,9 +156,10 @@ bool FilterCompatMesh::applyFilter(QAction *action, MeshDocument &md, const Rich
       settings.min_angle_deg = par.getFloat("MinAngle");
       settings.max_steiner = par.getInt("MaxSteiner");
       settings.remesh = par.getBool("Remesh");
-      const cm_correspondence modes[] = {CM_CORRESPOND_INDEX, CM_CORRESPOND_ARCLENGTH, CM_CORRESPOND_AUTO};
+      const cm_correspondence modes[] = {CM_CORRESPOND_INDEX, CM_CORRESPOND_ARCLENGTH, CM_CORRESPOND_AUTO,
+                                         CM_CORRESPOND_SIMILARITY};
       const int mode = par.getEnum("Correspondence");
-      if (mode < 0 || mode > 2) return fail("Correspondence: unknown value " + QString::number(mode));
+      if (mode < 0 || mode > 3) return fail("Correspondence: unknown value " + QString::number(mode));
       settings.correspondence = modes[mode];
       settings.pins = par.getString("Pins").toStdString();
       settings.max_edge = par.getFloat("MaxEdge");

@@ -59,7 +59,7 @@ def test_pins_are_honoured(cm, tmp_path):
     (["--pin", "0,0", "--pin", "3,4", "--pin", "5,4"], "b.xy:5: pins 1 and 2 both pin vertex 4 of polygon 1"),
     (["--correspondence", "index"], "with --correspondence index the vertices correspond by index"),
     (["--correspondence", "index", "--pin", "0,0"], "--pin needs --correspondence arclength"),
-    (["--correspondence", "nearest"], "unknown --correspondence 'nearest' (known: index, arclength, auto)"),
+    (["--correspondence", "nearest"], "unknown --correspondence 'nearest' (known: index, arclength, auto, similarity)"),
 ])
 def test_bad_pins_and_modes(cm, tmp_path, args, message):
     pair(tmp_path, 20, 31)

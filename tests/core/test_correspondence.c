@@ -2,13 +2,19 @@
  * different vertex counts and orientations pair, every polygon keeps its
  * own vertices bit-identical in order, added points lie on its edges, pins
  * are honoured, a polygon against a similar copy of itself with another
- * start vertex finds the identity, and bad pins are clear errors. */
+ * start vertex finds the identity, and bad pins are clear errors. The
+ * conformal correspondence (CM_CORRESPOND_AUTO without holes) finds the
+ * identity between a polygon and a similar copy too, also when the copy
+ * has its edges split; CM_CORRESPOND_SIMILARITY keeps the similarity
+ * choice. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "check.h"
 #include "compatmesh/compatmesh.h"
+#include "correspond/arclength.h"
+#include "correspond/conformal.h"
 #include "random_polygons.h"
 
 /* Every input vertex of every polygon is a boundary vertex, bit-identical,
@@ -178,6 +184,140 @@ static void test_bad_pins(void)
     cm_result_free(r);
 }
 
+/* b: a turned by 2.1 rad, halved and moved, renumbered from a's vertex
+ * shift. */
+static void similar_copy(const double *a, int n, int shift, double *b)
+{
+    double c = cos(2.1) * 0.5, s = sin(2.1) * 0.5;
+    for (int i = 0; i < n; i++) {
+        const double *p = a + 2 * ((i + shift) % n);
+        b[2 * i] = c * p[0] - s * p[1] + 4.0, b[2 * i + 1] = s * p[0] + c * p[1] - 2.0;
+    }
+}
+
+static int orientation_of(const double *xy, int n)
+{
+    double area = 0;
+    for (int i = 0; i < n; i++) {
+        const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % n);
+        area += p[0] * q[1] - q[0] * p[1];
+    }
+    return area > 0 ? 1 : -1;
+}
+
+/* The conformal correspondence itself: a similar copy maps vertex to
+ * vertex (one boundary vertex each, no point added), every vertex at its
+ * own place on polygon 0 to well within the snapping distance. */
+static void test_conformal_similar_copy(void)
+{
+    enum { N = 40, SHIFT = 13 };
+    double a[2 * N], b[2 * N], pa[N], pb[N];
+    CHECK(rp_star(a, N, 79) == 0);
+    similar_copy(a, N, SHIFT, b);
+    const double *in[2] = {a, b};
+    double *params[2] = {pa, pb};
+    size_t counts[2] = {N, N};
+    int orientation[2] = {orientation_of(a, N), orientation_of(b, N)}, found = 0;
+    cm_error err = {0};
+    CHECK(cm_correspond_conformal(in, counts, 2, orientation, params, &found, &err) == CM_OK && found);
+    for (int i = 0; found && i < N; i++) {
+        /* counter-clockwise position c of b is a's vertex c + SHIFT when
+         * both run counter-clockwise */
+        size_t cb = orientation[1] > 0 ? (size_t)i : (size_t)((N - i) % N);
+        size_t ca = orientation[0] > 0 ? (cb + SHIFT) % N : (N - (cb + SHIFT) % N) % N;
+        double gap = fabs(pb[cb] - pa[ca]);
+        CHECK_MSG(fmin(gap, 1 - gap) < 1e-3, "vertex %d: %g against %g", i, pb[cb], pa[ca]);
+    }
+    cm_boundary_map map;
+    CHECK(cm_correspond_params(in, counts, 2, orientation, (const double *const *)params, &map, &err) == CM_OK);
+    CHECK_MSG(map.n == N, "%zu boundary vertices", map.n);
+    for (size_t i = 0; i < map.n && map.n == N; i++)
+        CHECK(map.t[0][i] == 0 && map.t[1][i] == 0 && map.edge[0][i] == (map.edge[1][i] + SHIFT) % N);
+    cm_boundary_map_clear(&map);
+}
+
+/* Through the API: the copy with every edge split at its midpoint (the
+ * same polygon, 2N vertices, meshed differently) pairs a's vertex j with
+ * the copy's vertex 2 (j - SHIFT) and puts the copy's midpoints near a's
+ * (the affine shortcut needs equal counts; auto takes the conformal
+ * correspondence or the similarity choice, whichever allows the higher
+ * ceiling, and both are the identity here); nothing to distort, no
+ * Steiner vertex. */
+static void test_auto_conformal_identity(void)
+{
+    enum { N = 40, SHIFT = 7 };
+    double a[2 * N], c[2 * N], b[4 * N];
+    for (int i = 0; i < N; i++) { /* a three-lobed outline: crowding mild enough to resolve on any mesh */
+        double phi = 2 * 3.14159265358979323846 * i / N, r = 1 + 0.4 * cos(3 * phi) + 0.05 * sin(7 * phi);
+        a[2 * i] = r * cos(phi), a[2 * i + 1] = r * sin(phi);
+    }
+    similar_copy(a, N, SHIFT, c);
+    for (int i = 0; i < N; i++) {
+        const double *p = c + 2 * i, *q = c + 2 * ((i + 1) % N);
+        b[4 * i] = p[0], b[4 * i + 1] = p[1];
+        b[4 * i + 2] = 0.5 * (p[0] + q[0]), b[4 * i + 3] = 0.5 * (p[1] + q[1]);
+    }
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = CM_CORRESPOND_AUTO, o.remesh = 0;
+    const double *in[2] = {a, b};
+    size_t counts[2] = {N, 2 * N};
+    cm_result *r = NULL;
+    CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r) == CM_OK, "%s", cm_result_message(r));
+    if (cm_result_status(r) == CM_OK) {
+        CHECK_MSG(cm_result_stats(r)->n == 2 * N && cm_result_stats(r)->steiner == 0, "%zu boundary, %zu Steiner",
+                  cm_result_stats(r)->n, cm_result_stats(r)->steiner);
+        CHECK(contract_holds(r, in, counts, 2));
+        for (size_t i = 0; i < cm_result_stats(r)->n; i++) {
+            double ta, tb;
+            long ea = cm_result_boundary_source(r, 0, i, &ta), eb = cm_result_boundary_source(r, 1, i, &tb);
+            CHECK_MSG(tb == 0, "boundary vertex %zu is not the copy's own", i);
+            if (eb % 2 == 0) /* the copy's vertex: a's */
+                CHECK_MSG(ta == 0 && ea == (eb / 2 + SHIFT) % N, "vertex %zu: a's %ld (t %g), copy's %ld", i, ea, ta,
+                          eb);
+            else /* the copy's midpoint: near a's */
+                CHECK_MSG(ea == (eb / 2 + SHIFT) % N && fabs(ta - 0.5) < 0.05, "vertex %zu: a's %ld at %g, copy's %ld",
+                          i, ea, ta, eb);
+        }
+    }
+    cm_result_free(r);
+}
+
+/* CM_CORRESPOND_SIMILARITY keeps the similarity choice for polygons
+ * without holes: a spiky star against its similar copy with every edge
+ * split (where the conformal map crowds the spikes) pairs by arc length
+ * from the start the fit finds, a's vertex j on the copy's vertex 2 (j -
+ * SHIFT) and the copy's midpoints on a's. */
+static void test_similarity_mode(void)
+{
+    enum { N = 40, SHIFT = 9 };
+    double a[2 * N], c[2 * N], b[4 * N];
+    CHECK(rp_star(a, N, 81) == 0);
+    similar_copy(a, N, SHIFT, c);
+    for (int i = 0; i < N; i++) {
+        const double *p = c + 2 * i, *q = c + 2 * ((i + 1) % N);
+        b[4 * i] = p[0], b[4 * i + 1] = p[1];
+        b[4 * i + 2] = 0.5 * (p[0] + q[0]), b[4 * i + 3] = 0.5 * (p[1] + q[1]);
+    }
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = CM_CORRESPOND_SIMILARITY, o.remesh = 0;
+    const double *in[2] = {a, b};
+    size_t counts[2] = {N, 2 * N};
+    cm_result *r = NULL;
+    CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r) == CM_OK, "%s", cm_result_message(r));
+    if (cm_result_status(r) == CM_OK) {
+        CHECK_MSG(cm_result_stats(r)->n == 2 * N, "%zu boundary", cm_result_stats(r)->n);
+        for (size_t i = 0; i < cm_result_stats(r)->n; i++) {
+            double ta, tb;
+            long ea = cm_result_boundary_source(r, 0, i, &ta), eb = cm_result_boundary_source(r, 1, i, &tb);
+            CHECK_MSG(tb == 0 && ea == (eb / 2 + SHIFT) % N && (eb % 2 ? fabs(ta - 0.5) < 1e-9 : ta == 0),
+                      "vertex %zu: a's %ld at %g, copy's %ld at %g", i, ea, ta, eb, tb);
+        }
+    }
+    cm_result_free(r);
+}
+
 int main(void)
 {
     test_different_counts();
@@ -185,5 +325,8 @@ int main(void)
     test_auto_finds_the_start();
     test_pins_are_honoured();
     test_bad_pins();
+    test_conformal_similar_copy();
+    test_auto_conformal_identity();
+    test_similarity_mode();
     return check_summary("test_correspondence");
 }

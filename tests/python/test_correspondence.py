@@ -95,3 +95,21 @@ def test_affine_image_is_the_identity():
     r = compatmesh.triangulate([a, b], correspondence="auto", remesh=False)
     assert r.stats["n"] == 15 and r.stats["steiner"] == 0
     assert list(r.boundary_source[1]["edge"]) == [(i - 4) % 15 for i in range(15)]
+
+
+def test_similarity_mode():
+    # A ring against a turned, scaled copy with every edge split: the
+    # similarity choice pairs them by arc length from the start it finds,
+    # the copy's even vertices on the ring's own (by name or enum alike).
+    a = ring(12)
+    turned = np.roll(0.5 * a @ np.array([[0.6, -0.8], [0.8, 0.6]]).T + [2.0, 1.0], -5, axis=0)
+    b = np.empty((24, 2))
+    b[0::2], b[1::2] = turned, 0.5 * (turned + np.roll(turned, -1, axis=0))
+    for mode in ("similarity", compatmesh.Correspondence.SIMILARITY):
+        r = compatmesh.triangulate([a, b], correspondence=mode, remesh=False)
+        assert r.stats["n"] == 24
+        ea, eb = r.boundary_source[0]["edge"], r.boundary_source[1]["edge"]
+        assert (r.boundary_source[1]["t"] == 0).all()
+        even = eb % 2 == 0
+        assert (r.boundary_source[0]["t"][even] == 0).all()
+        assert list(ea[even]) == [(e // 2 + 5) % 12 for e in eb[even]]

@@ -133,11 +133,24 @@ typedef enum cm_correspondence {
      * clockwise from the first pin (cm_result_boundary_source says where
      * each boundary vertex comes from). */
     CM_CORRESPOND_ARCLENGTH,
-    /* Arc length as above, from starts chosen where none are pinned: the
-     * start of every polygon (against polygon 0's first vertex) whose
-     * arc-length points are closest to a similar image of polygon 0's
-     * (least squares over rotation, scale and translation). */
-    CM_CORRESPOND_AUTO
+    /* Chosen where nothing is pinned, with the output of ARCLENGTH (every
+     * polygon keeps its vertices and gets the others' on its edges; the
+     * boundary starts at a vertex of every polygon where there is one).
+     * Polygons without holes: the conformal correspondence, each polygon
+     * mapped onto the disk by its harmonic measure, the disks balanced
+     * and turned to agree, the crowding of thin parts tempered (stretch
+     * to the power 1/4), or the similarity choice below where that allows
+     * the higher certified ceiling. With pins: ARCLENGTH between them. With
+     * pin_corners_deg, and for polygons with holes: arc length from the
+     * start of every polygon (against polygon 0's first vertex)
+     * whose arc-length points are closest to a similar image of polygon
+     * 0's (least squares over rotation, scale and translation). */
+    CM_CORRESPOND_AUTO,
+    /* That similarity choice for every input (AUTO's for all polygons
+     * before the conformal one): better where the conformal map crowds
+     * beyond what tempering saves, such as a spiral against a disk
+     * (bench/CORRESPONDENCE.md). */
+    CM_CORRESPOND_SIMILARITY
 } cm_correspondence;
 
 typedef struct cm_options {
@@ -264,8 +277,8 @@ typedef struct cm_stats {
     double modulus_distortion;   /* that certified ratio K >= 1 */
     long distortion_quad[4];     /* its four boundary vertices, -1 when K == 1 */
     /* CM_CORRESPOND_AUTO without pins: the correspondence bound of arc
-     * length from the first vertex of every polygon, before the starts were
-     * chosen (what the choice bought); 0 otherwise. */
+     * length from the first vertex of every polygon, before the
+     * correspondence was chosen (what the choice bought); 0 otherwise. */
     double correspondence_bound_before_deg;
     double seconds_ceiling;      /* computing the ceiling (both when auto) */
     size_t holes;            /* hole loops per polygon (cm_triangulate_loops) */

@@ -15,6 +15,7 @@
 #include "construct/overlay.h"
 #include "correspond/bound.h"
 #include "correspond/choose.h"
+#include "correspond/conformal.h"
 #include "correspond/corners.h"
 #include "correspond/split.h"
 #include "construct/partition.h"
@@ -243,7 +244,7 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
 
 static cm_status check_correspondence_options(cm_result *r, const cm_options *o)
 {
-    if ((unsigned)o->correspondence > (unsigned)CM_CORRESPOND_AUTO)
+    if ((unsigned)o->correspondence > (unsigned)CM_CORRESPOND_SIMILARITY)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown correspondence %d", (int)o->correspondence);
     if (o->num_pins && !o->pins) return cm_fail(&r->error, CM_ERR_ARGUMENT, "num_pins is %zu but pins is NULL", o->num_pins);
     if (o->num_pins && o->correspondence == CM_CORRESPOND_INDEX)
@@ -263,6 +264,12 @@ static cm_status check_correspondence_options(cm_result *r, const cm_options *o)
     return CM_OK;
 }
 
+/* CM_CORRESPOND_AUTO and _SIMILARITY: the correspondence is chosen. */
+static int chosen_mode(const cm_options *o)
+{
+    return o->correspondence == CM_CORRESPOND_AUTO || o->correspondence == CM_CORRESPOND_SIMILARITY;
+}
+
 /* The correspondence bound of arc length from every polygon's first
  * vertex, for CM_CORRESPOND_AUTO to report what its choice bought. */
 static cm_status bound_before(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
@@ -277,6 +284,60 @@ static cm_status bound_before(cm_result *r, const double *const *polygons, const
     if (s == CM_OK) r->stats.correspondence_bound_before_deg = b.correspondence_deg;
     cm_boundary_map_clear(&from_first);
     r->stats.seconds_ceiling += cm_seconds_now() - t;
+    return s;
+}
+
+/* The conformal correspondence's boundaries into out (*found = 0 when it
+ * cannot be had, out then untouched). */
+static cm_status conformal(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
+                           const int *orientation, cm_boundary_map *out, int *found)
+{
+    size_t total = 0;
+    for (size_t g = 0; g < k; g++) total += counts[g];
+    double *all = malloc(total * sizeof *all), **params = malloc(k * sizeof *params);
+    cm_status s = all && params ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    for (size_t g = 0, at = 0; s == CM_OK && g < k; at += counts[g], g++) params[g] = all + at;
+    if (s == CM_OK) s = cm_correspond_conformal(polygons, counts, k, orientation, params, found, &r->error);
+    if (s == CM_OK && *found)
+        s = cm_correspond_params(polygons, counts, k, orientation, (const double *const *)params, out, &r->error);
+    free(all), free(params);
+    return s;
+}
+
+/* The certified ceiling (the lower of the corner-fan cap and the
+ * correspondence bound) of boundaries in correspondence. */
+static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *deg)
+{
+    cm_bound b;
+    cm_status s = cm_bound_compute((const double *const *)map->xy, NULL, map->k, map->n, NULL, &b, &r->error);
+    *deg = fmin(b.corner_fan_deg, b.correspondence_deg);
+    return s;
+}
+
+/* CM_CORRESPOND_AUTO for polygons without holes or pins: the conformal
+ * correspondence, or the similarity choice where that allows the higher
+ * ceiling (a polygon whose corners the similarity fit pairs corner to
+ * corner, a disc that would take another polygon's crowding whole);
+ * *found = 0 when the conformal one cannot be had (out then untouched). */
+static cm_status auto_whole(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
+                            const int *orientation, cm_boundary_map *out, int *found)
+{
+    cm_status s = conformal(r, polygons, counts, k, orientation, out, found);
+    if (s != CM_OK || !*found) return s;
+    cm_boundary_map similar = {0};
+    size_t *starts = malloc(k * sizeof *starts);
+    double conformal_deg = 0, similar_deg = 0;
+    s = starts ? cm_correspond_choose_starts(polygons, counts, k, orientation, starts, &r->error)
+               : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, starts, 1, &similar, &r->error);
+    if (s == CM_OK) s = ceiling_of(r, out, &conformal_deg);
+    if (s == CM_OK) s = ceiling_of(r, &similar, &similar_deg);
+    if (s == CM_OK && similar_deg > conformal_deg) {
+        cm_boundary_map t = *out;
+        *out = similar, similar = t;
+    }
+    cm_boundary_map_clear(&similar);
+    free(starts);
     return s;
 }
 
@@ -296,13 +357,13 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
     const size_t *pins = every_vertex ? every_vertex : whole ? o->pins : NULL;
     size_t num_pins = every_vertex ? counts[0] : whole ? o->num_pins : 0, *chosen = NULL;
     size_t *affine = NULL;
-    if (hole_starts && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0) {
+    if (hole_starts && chosen_mode(o) && num_pins == 0) {
         chosen = malloc(k * sizeof *chosen);
         if (!chosen) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         memcpy(chosen, hole_starts, k * sizeof *chosen);
         pins = chosen, num_pins = 1;
     }
-    if (o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && !(o->pin_corners_deg > 0)) {
+    if (chosen_mode(o) && num_pins == 0 && !(o->pin_corners_deg > 0)) {
         /* Affine images of one another: vertex to vertex, no distortion. */
         int found = 0;
         affine = malloc(counts[0] * k * sizeof *affine);
@@ -310,7 +371,20 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         if (found) pins = affine, num_pins = counts[0];
     }
-    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0) {
+    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && whole &&
+        !(o->pin_corners_deg > 0)) {
+        /* Polygons without holes: conformal or similarity (auto_whole). */
+        int found = 0;
+        s = auto_whole(r, polygons, counts, k, orientation, out, &found);
+        if (s == CM_OK && found) {
+            if (o->ceiling) s = bound_before(r, polygons, counts, k, orientation);
+            if (s == CM_OK && o->max_edge > 0)
+                s = cm_boundary_map_split(out, polygons, counts, orientation, o->max_edge, &r->error);
+            free(affine);
+            return s;
+        }
+    }
+    if (s == CM_OK && chosen_mode(o) && num_pins == 0) {
         chosen = malloc(k * sizeof *chosen);
         s = chosen ? cm_correspond_choose_starts(polygons, counts, k, orientation, chosen, &r->error)
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
@@ -670,7 +744,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         for (size_t l = 0; l < L; l++) start[g * (L + 1) + l + 1] = start[g * (L + 1) + l] + polygons[g].loop_sizes[l];
     }
     size_t n = 0;
-    int joint = o->correspondence == CM_CORRESPOND_AUTO;
+    int joint = chosen_mode(o);
     double *similarity = NULL;
     size_t *hole_starts = NULL;
     if (s == CM_OK && joint && (!(similarity = malloc(4 * k * sizeof *similarity)) ||

@@ -184,18 +184,27 @@ static cm_status merge(const walk *walks, size_t k, double **u, long **own, size
 static void fill(const walk *w, const double *u, const long *own, size_t n, size_t pins, double *xy,
                  int32_t *edge, double *t)
 {
-    size_t i = 0, at = 0, next = 0; /* w's vertex at or before j, where it and the next were merged */
+    /* w's first and last vertex on the merged boundary: before the first
+     * (a polygon not pinned at the start), its last vertex one period back
+     * is the one before */
+    size_t first = 0, last = n - 1;
+    while (own[first] < 0) first++;
+    while (own[last] < 0) last--;
+    /* w's vertex at or before j, where it and the next were merged, and
+     * their parameters */
+    size_t i = (size_t)own[last], next = first;
+    double u_at = u[last] - (double)pins;
     for (size_t j = 0; j < n; j++) {
         if (own[j] >= 0) {
-            i = (size_t)own[j], at = j;
+            i = (size_t)own[j], u_at = u[j];
             for (next = j + 1; next < n && own[next] < 0;) next++;
             const double *a = walk_point(w, i);
             xy[2 * j] = a[0], xy[2 * j + 1] = a[1];
             edge[j] = (int32_t)walk_vertex(w, i), t[j] = 0.0;
             continue;
         }
-        double u_next = next < n ? u[next] : (double)pins;
-        double s = (u[j] - u[at]) / (u_next - u[at]);
+        double u_next = next < n ? u[next] : u[first] + (double)pins;
+        double s = (u[j] - u_at) / (u_next - u_at);
         /* Input numbering: a clockwise polygon's edge runs from vertex i + 1
          * back to i. The point is computed from the (edge, t) reported, so
          * P[e] + t (P[e + 1] - P[e]) gives it back bit for bit. */
@@ -206,6 +215,8 @@ static void fill(const walk *w, const double *u, const long *own, size_t n, size
         xy[2 * j + 1] = a[1] + t[j] * (b[1] - a[1]);
     }
 }
+
+static cm_status refine(const walk *walks, size_t k, size_t num_pins, cm_boundary_map *out, cm_error *err);
 
 cm_status cm_correspond_arclength(const double *const *polygons, const size_t *counts, size_t k,
                                   const int *orientation, const size_t *pins, size_t num_pins,
@@ -220,8 +231,6 @@ cm_status cm_correspond_arclength(const double *const *polygons, const size_t *c
     }
     walk *walks = calloc(k, sizeof *walks);
     size_t *offset = malloc(num_pins * k * sizeof *offset);
-    double *u = NULL;
-    long *own = NULL;
     cm_status s = walks && offset ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
     for (size_t g = 0; s == CM_OK && g < k; g++) {
         walks[g] = (walk){polygons[g], counts[g], orientation[g] < 0, 0, malloc((counts[g] + 1) * sizeof(double))};
@@ -229,10 +238,22 @@ cm_status cm_correspond_arclength(const double *const *polygons, const size_t *c
     }
     if (s == CM_OK) s = order_pins(pins, num_pins, k, walks, offset, err);
     for (size_t g = 0; s == CM_OK && g < k; g++) s = parametrise(&walks[g], offset + g, k, num_pins, g, err);
+    if (s == CM_OK) s = refine(walks, k, num_pins, out, err);
+    if (walks)
+        for (size_t g = 0; g < k; g++) free(walks[g].param);
+    free(walks), free(offset), free(zeros);
+    return s;
+}
+
+/* The common refinement of the parametrised walks into out. */
+static cm_status refine(const walk *walks, size_t k, size_t num_pins, cm_boundary_map *out, cm_error *err)
+{
+    double *u = NULL;
+    long *own = NULL;
     size_t n = 0;
     size_t total = 0;
-    for (size_t g = 0; g < k; g++) total += counts[g];
-    if (s == CM_OK) s = merge(walks, k, &u, &own, &n, err);
+    for (size_t g = 0; g < k; g++) total += walks[g].n;
+    cm_status s = merge(walks, k, &u, &own, &n, err);
     if (s == CM_OK) {
         out->k = k, out->n = n;
         out->xy = calloc(k, sizeof *out->xy);
@@ -248,8 +269,129 @@ cm_status cm_correspond_arclength(const double *const *polygons, const size_t *c
         else fill(&walks[g], u, own + g * total, n, num_pins, out->xy[g], out->edge[g], out->t[g]);
     }
     if (s != CM_OK) cm_boundary_map_clear(out);
+    free(u), free(own);
+    return s;
+}
+
+/* The boundary rotated to start at the first vertex that is an input
+ * vertex of every polygon (as a pinned refinement does), when there is
+ * one (*shared = 1): then every polygon's points run from one of its own
+ * vertices. */
+static cm_status start_at_shared(cm_boundary_map *out, int *shared, cm_error *err)
+{
+    size_t n = out->n, at = 0;
+    for (; at < n; at++) {
+        size_t g = 0;
+        while (g < out->k && out->t[g][at] == 0.0) g++;
+        if (g == out->k) break;
+    }
+    *shared = at < n;
+    if (at == 0 || at == n) return CM_OK;
+    double *xy = malloc(2 * n * sizeof *xy), *t = malloc(n * sizeof *t);
+    int32_t *edge = malloc(n * sizeof *edge);
+    if (!xy || !t || !edge) {
+        free(xy), free(t), free(edge);
+        return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    }
+    for (size_t g = 0; g < out->k; g++) {
+        for (size_t j = 0; j < n; j++) {
+            size_t from = (j + at) % n;
+            xy[2 * j] = out->xy[g][2 * from], xy[2 * j + 1] = out->xy[g][2 * from + 1];
+            edge[j] = out->edge[g][from], t[j] = out->t[g][from];
+        }
+        memcpy(out->xy[g], xy, 2 * n * sizeof *xy);
+        memcpy(out->edge[g], edge, n * sizeof *edge), memcpy(out->t[g], t, n * sizeof *t);
+    }
+    free(xy), free(t), free(edge);
+    return CM_OK;
+}
+
+static int by_value(const void *pa, const void *pb)
+{
+    double a = *(const double *)pa, b = *(const double *)pb;
+    return (a > b) - (a < b);
+}
+
+/* Walks of the given parameters, each less shift[g] (modulo 1). */
+static cm_status param_walks(const double *const *polygons, const size_t *counts, size_t k, const int *orientation,
+                             const double *const *params, const double *shift, walk *walks, cm_error *err)
+{
+    for (size_t g = 0; g < k; g++) {
+        size_t n = counts[g], start = 0;
+        walk *w = &walks[g];
+        double *shifted = malloc(n * sizeof *shifted);
+        *w = (walk){polygons[g], n, orientation[g] < 0, 0, malloc((n + 1) * sizeof(double))};
+        if (!w->param || !shifted) {
+            free(shifted);
+            return cm_fail_status(err, CM_ERR_NO_MEMORY);
+        }
+        for (size_t c = 0; c < n; c++) {
+            double p = params[g][c] - shift[g];
+            shifted[c] = p < 0 ? p + 1.0 : p;
+            if (shifted[c] >= 1.0) shifted[c] = 0.0; /* -tiny + 1 rounded up */
+            if (shifted[c] < shifted[start]) start = c;
+        }
+        w->start = start;
+        for (size_t i = 0; i < n; i++) { /* from the least, nudged to increase */
+            double p = shifted[(start + i) % n];
+            w->param[i] = i && p <= w->param[i - 1] ? nextafter(w->param[i - 1], INFINITY) : p;
+        }
+        free(shifted);
+        w->param[n] = w->param[0] + 1.0;
+        if (!(w->param[n - 1] < w->param[n]) || !(w->param[0] >= 0) || !isfinite(w->param[n])) {
+            cm_fail_at(err, (long)g, (long)walk_vertex(w, n - 1), -1);
+            return cm_fail(err, CM_ERR_ARGUMENT, "polygon %zu: the correspondence cannot separate vertex %zu from "
+                           "its neighbours (edges too short against the perimeter)", g, walk_vertex(w, n - 1));
+        }
+    }
+    return CM_OK;
+}
+
+cm_status cm_correspond_params(const double *const *polygons, const size_t *counts, size_t k,
+                               const int *orientation, const double *const *params, cm_boundary_map *out,
+                               cm_error *err)
+{
+    memset(out, 0, sizeof *out);
+    walk *walks = calloc(k, sizeof *walks);
+    double *shift = calloc(k, sizeof *shift);
+    cm_status s = walks && shift ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
+    int shared = 0;
+    /* The merge does not join across the end of the parameter range: all
+     * parameters are turned to put the end in the middle of the widest gap
+     * between them. */
+    size_t total = 0;
+    for (size_t g = 0; g < k; g++) total += counts[g];
+    double *all = s == CM_OK ? malloc(total * sizeof *all) : NULL;
+    if (s == CM_OK && !all) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+    if (all) {
+        for (size_t g = 0, at = 0; g < k; at += counts[g], g++) memcpy(all + at, params[g], counts[g] * sizeof *all);
+        qsort(all, total, sizeof *all, by_value);
+        double gap = all[0] + 1.0 - all[total - 1], middle = 0.5 * (all[total - 1] + all[0] + 1.0);
+        for (size_t x = 1; x < total; x++)
+            if (all[x] - all[x - 1] > gap) gap = all[x] - all[x - 1], middle = 0.5 * (all[x] + all[x - 1]);
+        for (size_t g = 0; g < k; g++) shift[g] = middle - floor(middle);
+        free(all);
+    }
+    /* Twice at most: as given, then, when no vertex is every polygon's,
+     * each polygon turned so that its vertex nearest to 0 is there. */
+    for (int pass = 0; s == CM_OK && !shared && pass < 2; pass++) {
+        if (pass) {
+            cm_boundary_map_clear(out);
+            for (size_t g = 0; g < k; g++) {
+                free(walks[g].param), walks[g].param = NULL;
+                for (size_t c = 0; c < counts[g]; c++) {
+                    double p = params[g][c], d = p < 0.5 ? p : p - 1.0;
+                    if (c == 0 || fabs(d) < fabs(shift[g])) shift[g] = d;
+                }
+            }
+        }
+        s = param_walks(polygons, counts, k, orientation, params, shift, walks, err);
+        if (s == CM_OK) s = refine(walks, k, 1, out, err);
+        if (s == CM_OK) s = start_at_shared(out, &shared, err);
+    }
+    if (s != CM_OK) cm_boundary_map_clear(out);
     if (walks)
         for (size_t g = 0; g < k; g++) free(walks[g].param);
-    free(walks), free(offset), free(u), free(own), free(zeros);
+    free(walks), free(shift);
     return s;
 }

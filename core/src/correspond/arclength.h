@@ -42,4 +42,17 @@ cm_status cm_correspond_arclength(const double *const *polygons, const size_t *c
                                   const int *orientation, const size_t *pins, size_t num_pins,
                                   cm_boundary_map *out, cm_error *err);
 
+/* The common refinement as cm_correspond_arclength's (same merge, same
+ * output), with every vertex's parameter given: params[g][c] in [0, 1) for
+ * counter-clockwise position c of polygon g (c = 0 its input vertex 0),
+ * increasing along the polygon from wherever it is least (cyclically).
+ * The boundary starts at the first vertex that is every polygon's own;
+ * where the given parameters leave none, each polygon is turned to put
+ * its vertex nearest to 0 there (joined at 0). Parameters that round
+ * together are nudged apart by an ulp; ones that cannot be are
+ * CM_ERR_ARGUMENT naming the polygon and vertex. */
+cm_status cm_correspond_params(const double *const *polygons, const size_t *counts, size_t k,
+                               const int *orientation, const double *const *params, cm_boundary_map *out,
+                               cm_error *err);
+
 #endif

@@ -50,9 +50,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <cholmod.h>
 
-#include "geom/polytri.h"
+#include "correspond/fe.h"
 
 #define CM_BOUND_PI 3.14159265358979323846
 /* The finite element mesh of each polygon is split into four until it has
@@ -136,287 +135,13 @@ double cm_corner_fan_cap(const double *const *geoms, size_t k, size_t n)
     return fmin(60.0, cap * (1 + 1e-9));
 }
 
-/* ---- finite element mesh of one polygon ------------------------------------ */
-
-typedef struct fe_mesh {
-    long nv, nt;
-    double *xy;      /* 2 nv */
-    int32_t *tri;    /* 3 nt, counter-clockwise */
-    long nb;         /* boundary nodes: n << levels */
-    int32_t *bnode;  /* boundary nodes in order, bnode[i << levels] = vertex i */
-    int levels;
-    /* stiffness matrix, upper triangle by columns (kx), and the matrix
-     * being solved (a: the same pattern, fixed rows and columns replaced
-     * by the identity), its analysis (CHOLMOD) */
-    cholmod_common cc;
-    int started;
-    cholmod_sparse *a;
-    double *kx;
-    cholmod_factor *factor;
-    unsigned char *fixed;
-    double *u, *rhs;
-} fe_mesh;
-
-static void fe_free(fe_mesh *m)
-{
-    free(m->xy), free(m->tri), free(m->bnode);
-    if (m->started) {
-        cholmod_free_sparse(&m->a, &m->cc);
-        cholmod_free_factor(&m->factor, &m->cc);
-        cholmod_finish(&m->cc);
-    }
-    free(m->kx), free(m->fixed), free(m->u), free(m->rhs);
-    memset(m, 0, sizeof *m);
-}
-
-/* Every triangle split into four at its edge midpoints (one new node per
- * edge, found through an open-addressing table of edge keys). */
-static int fe_split(fe_mesh *m)
-{
-    size_t cap = 16;
-    while (cap < 4 * (size_t)m->nt + 8) cap *= 2;
-    uint64_t *key = malloc(cap * sizeof *key);
-    int32_t *mid = malloc(cap * sizeof *mid);
-    long edges_max = 3 * m->nt; /* at most, before sharing */
-    double *xy = malloc(2 * (size_t)(m->nv + edges_max) * sizeof *xy);
-    int32_t *tri = malloc(12 * (size_t)m->nt * sizeof *tri);
-    int32_t *bnode = malloc(2 * (size_t)m->nb * sizeof *bnode);
-    if (!key || !mid || !xy || !tri || !bnode) {
-        free(key), free(mid), free(xy), free(tri), free(bnode);
-        return CM_NO_MEMORY;
-    }
-    memset(key, 0xff, cap * sizeof *key);
-    memcpy(xy, m->xy, 2 * (size_t)m->nv * sizeof *xy);
-    long nv = m->nv;
-#define MIDPOINT(out, a, b)                                                                   \
-    do {                                                                                      \
-        int32_t lo_ = (a) < (b) ? (a) : (b), hi_ = (a) < (b) ? (b) : (a);                     \
-        uint64_t k_ = ((uint64_t)(uint32_t)lo_ << 32) | (uint32_t)hi_;                        \
-        size_t h_ = (size_t)((k_ * 0x9E3779B97F4A7C15ull) >> 17) & (cap - 1);                 \
-        while (key[h_] != UINT64_MAX && key[h_] != k_) h_ = (h_ + 1) & (cap - 1);             \
-        if (key[h_] == UINT64_MAX) {                                                          \
-            key[h_] = k_, mid[h_] = (int32_t)nv;                                              \
-            xy[2 * nv] = 0.5 * (m->xy[2 * lo_] + m->xy[2 * hi_]);                             \
-            xy[2 * nv + 1] = 0.5 * (m->xy[2 * lo_ + 1] + m->xy[2 * hi_ + 1]);                 \
-            nv++;                                                                             \
-        }                                                                                     \
-        (out) = mid[h_];                                                                      \
-    } while (0)
-    for (long t = 0; t < m->nt; t++) {
-        int32_t a = m->tri[3 * t], b = m->tri[3 * t + 1], c = m->tri[3 * t + 2], ab, bc, ca;
-        MIDPOINT(ab, a, b);
-        MIDPOINT(bc, b, c);
-        MIDPOINT(ca, c, a);
-        int32_t *o = tri + 12 * t;
-        o[0] = a, o[1] = ab, o[2] = ca;
-        o[3] = ab, o[4] = b, o[5] = bc;
-        o[6] = ca, o[7] = bc, o[8] = c;
-        o[9] = ab, o[10] = bc, o[11] = ca;
-    }
-    for (long j = 0; j < m->nb; j++) {
-        int32_t a = m->bnode[j], b = m->bnode[(j + 1) % m->nb], ab;
-        MIDPOINT(ab, a, b);
-        bnode[2 * j] = a, bnode[2 * j + 1] = ab;
-    }
-#undef MIDPOINT
-    free(key), free(mid);
-    free(m->xy), free(m->tri), free(m->bnode);
-    m->xy = xy, m->tri = tri, m->bnode = bnode;
-    m->nv = nv, m->nt *= 4, m->nb *= 2, m->levels++;
-    return 0;
-}
-
-/* Twice the signed area and the opposite-edge vectors of triangle t. */
-static double fe_tri(const fe_mesh *m, long t, double d[3][2])
-{
-    const int32_t *v = m->tri + 3 * t;
-    for (int i = 0; i < 3; i++) {
-        const double *p = m->xy + 2 * v[(i + 1) % 3], *q = m->xy + 2 * v[(i + 2) % 3];
-        d[i][0] = q[0] - p[0], d[i][1] = q[1] - p[1];
-    }
-    return d[0][0] * d[1][1] - d[0][1] * d[1][0];
-}
-
-static cm_status chol_status(fe_mesh *m, cm_error *err)
-{
-    if (m->cc.status == CHOLMOD_OUT_OF_MEMORY) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-    return cm_fail(err, CM_ERR_INTERNAL, "correspondence bound: CHOLMOD failed (status %d)", m->cc.status);
-}
-
-/* a's values: the stiffness, with fixed rows and columns the identity. */
-static void fe_fill(fe_mesh *m)
-{
-    const int *ap = m->a->p, *ai = m->a->i;
-    double *ax = m->a->x;
-    for (int j = 0; j < (int)m->nv; j++)
-        for (int p = ap[j]; p < ap[j + 1]; p++) {
-            int i = ai[p];
-            ax[p] = m->fixed[i] || m->fixed[j] ? (i == j) : m->kx[p];
-        }
-}
-
-/* Compressed columns of the upper triangle of the stiffness matrix from
- * the triangles (duplicates summed). 0 or CM_NO_MEMORY. */
-static int fe_assemble(fe_mesh *m, int *usable)
-{
-    /* column counts over the pairs i <= j of every triangle, then fill */
-    int *count = calloc((size_t)m->nv + 1, sizeof *count), *next = NULL;
-    int *ti = NULL;
-    double *tx = NULL;
-    size_t nz = 6 * (size_t)m->nt;
-    if (!count) return CM_NO_MEMORY;
-    ti = malloc(nz * sizeof *ti), tx = malloc(nz * sizeof *tx), next = malloc(((size_t)m->nv + 1) * sizeof *next);
-    int *tcol = malloc(nz * sizeof *tcol);
-    int status = ti && tx && next && tcol ? 0 : CM_NO_MEMORY;
-    size_t e = 0;
-    for (long t = 0; t < m->nt && !status; t++) {
-        double d[3][2], a2 = fe_tri(m, t, d);
-        if (!(a2 > 0) || !isfinite(a2)) {
-            *usable = 0;
-            break;
-        }
-        for (int i = 0; i < 3; i++)
-            for (int j = 0; j < 3; j++) {
-                int r = m->tri[3 * t + i], c = m->tri[3 * t + j];
-                if (r > c) continue;
-                ti[e] = r, tcol[e] = c;
-                tx[e++] = (d[i][0] * d[j][0] + d[i][1] * d[j][1]) / (2 * a2);
-                count[c + 1]++;
-            }
-    }
-    if (!status && *usable) {
-        for (long c = 0; c < m->nv; c++) count[c + 1] += count[c];
-        /* bucket by column, then merge duplicate rows in each column */
-        int *ri = malloc(e * sizeof *ri);
-        double *rx = malloc(e * sizeof *rx);
-        int *mark = malloc((size_t)m->nv * sizeof *mark);
-        if (!ri || !rx || !mark) status = CM_NO_MEMORY;
-        if (!status) {
-            memcpy(next, count, ((size_t)m->nv + 1) * sizeof *next);
-            for (size_t x = 0; x < e; x++) {
-                int p = next[tcol[x]]++;
-                ri[p] = ti[x], rx[p] = tx[x];
-            }
-            size_t unique = 0;
-            for (long i = 0; i < m->nv; i++) mark[i] = -1;
-            /* first pass: unique entries per column */
-            for (long c = 0; c < m->nv; c++)
-                for (int p = count[c]; p < count[c + 1]; p++)
-                    if (mark[ri[p]] != (int)c) mark[ri[p]] = (int)c, unique++;
-            m->a = cholmod_allocate_sparse((size_t)m->nv, (size_t)m->nv, unique, 0, 1, 1, CHOLMOD_REAL, &m->cc);
-            m->kx = malloc(unique * sizeof *m->kx);
-            if (!m->a || !m->kx) status = CM_NO_MEMORY;
-        }
-        if (!status) {
-            int *ap = m->a->p, *ai = m->a->i, q = 0;
-            for (long i = 0; i < m->nv; i++) mark[i] = -1;
-            for (long c = 0; c < m->nv; c++) {
-                ap[c] = q;
-                for (int p = count[c]; p < count[c + 1]; p++) {
-                    if (mark[ri[p]] < ap[c]) {
-                        mark[ri[p]] = q;
-                        ai[q] = ri[p], m->kx[q++] = rx[p];
-                    } else {
-                        m->kx[mark[ri[p]]] += rx[p];
-                    }
-                }
-            }
-            ap[m->nv] = q;
-        }
-        free(ri), free(rx), free(mark);
-    }
-    free(count), free(next), free(ti), free(tx), free(tcol);
-    return status;
-}
-
-/* The mesh of one polygon and its stiffness matrix. *usable = 0 when a
- * triangle has no positive area in doubles (nothing can be certified). */
-static cm_status fe_build(fe_mesh *m, const double *xy, const int32_t *tri, size_t n, int *usable,
-                          cm_error *err)
-{
-    memset(m, 0, sizeof *m);
-    *usable = 1;
-    m->nv = (long)n, m->nt = (long)n - 2, m->nb = (long)n;
-    m->xy = malloc(2 * n * sizeof *m->xy);
-    m->tri = malloc(3 * (n - 2) * sizeof *m->tri);
-    m->bnode = malloc(n * sizeof *m->bnode);
-    if (!m->xy || !m->tri || !m->bnode) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-    memcpy(m->xy, xy, 2 * n * sizeof *m->xy);
-    for (size_t i = 0; i < n; i++) m->bnode[i] = (int32_t)i;
-    if (tri) {
-        memcpy(m->tri, tri, 3 * (n - 2) * sizeof *m->tri);
-    } else {
-        int32_t *idx = malloc(n * sizeof *idx);
-        if (!idx) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-        for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
-        int t = cm_polygon_triangulate(xy, idx, (long)n, m->tri, NULL);
-        free(idx);
-        if (t == CM_NO_MEMORY) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-        if (t != 0) return cm_fail(err, CM_ERR_INTERNAL, "correspondence bound: a polygon has no ear");
-    }
-    while (m->nt < CM_BOUND_MIN_TRIANGLES)
-        if (fe_split(m)) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-
-    m->fixed = malloc((size_t)m->nv);
-    m->u = malloc((size_t)m->nv * sizeof *m->u);
-    m->rhs = malloc((size_t)m->nv * sizeof *m->rhs);
-    if (!m->fixed || !m->u || !m->rhs) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-    cholmod_start(&m->cc);
-    m->started = 1;
-    m->cc.print = 0, m->cc.error_handler = NULL;
-    if (fe_assemble(m, usable) || m->cc.status == CHOLMOD_OUT_OF_MEMORY) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-    if (!*usable) return CM_OK;
-    /* The pattern analysed once (fill-reducing order), on the matrix with
-     * the boundary fixed. */
-    memset(m->fixed, 0, (size_t)m->nv);
-    for (long j = 0; j < m->nb; j++) m->fixed[m->bnode[j]] = 1;
-    fe_fill(m);
-    m->factor = cholmod_analyze(m->a, &m->cc);
-    return m->factor ? CM_OK : chol_status(m, err);
-}
-
-/* Solves K u = rhs on the free nodes, u given on the fixed ones (m->fixed,
- * m->u); rhs on free nodes: a unit load at node `source` (-1: none) minus
- * the fixed values' contribution. u holds the result. refactor: 0 when
- * the fixed set is that of the last call (its factorization is reused). */
-static cm_status fe_solve(fe_mesh *m, long source, int refactor, cm_error *err)
-{
-    const int *ap = m->a->p, *ai = m->a->i;
-    memset(m->rhs, 0, (size_t)m->nv * sizeof *m->rhs);
-    for (int j = 0; j < (int)m->nv; j++)
-        for (int p = ap[j]; p < ap[j + 1]; p++) { /* upper triangle: both (i, j) and (j, i) */
-            int i = ai[p];
-            if (i == j) continue;
-            if (m->fixed[j] && !m->fixed[i]) m->rhs[i] -= m->kx[p] * m->u[j];
-            if (m->fixed[i] && !m->fixed[j]) m->rhs[j] -= m->kx[p] * m->u[i];
-        }
-    for (long i = 0; i < m->nv; i++)
-        if (m->fixed[i]) m->rhs[i] = m->u[i];
-    if (source >= 0) m->rhs[source] += 1.0;
-    if (refactor) {
-        fe_fill(m);
-        if (!cholmod_factorize(m->a, m->factor, &m->cc) || m->cc.status == CHOLMOD_OUT_OF_MEMORY)
-            return chol_status(m, err);
-    }
-    /* Not positive definite in doubles (status CHOLMOD_NOT_POSDEF): u
-     * below is still admissible, only less good. */
-    cholmod_dense b = {(size_t)m->nv, 1, (size_t)m->nv, (size_t)m->nv, m->rhs, NULL, CHOLMOD_REAL, CHOLMOD_DOUBLE};
-    cholmod_dense *x = m->cc.status == CHOLMOD_OK ? cholmod_solve(CHOLMOD_A, m->factor, &b, &m->cc) : NULL;
-    if (!x && m->cc.status == CHOLMOD_OUT_OF_MEMORY) return chol_status(m, err);
-    const double *sol = x ? x->x : NULL;
-    for (long i = 0; i < m->nv; i++)
-        if (!m->fixed[i]) m->u[i] = sol && isfinite(sol[i]) ? sol[i] : 0.0;
-    cholmod_free_dense(&x, &m->cc);
-    return CM_OK;
-}
-
 /* Dirichlet energy of the piecewise-linear u, as non-negative per-triangle
  * terms |sum u_i d_i|^2 / (2 * twice the area). */
-static double fe_energy(const fe_mesh *m)
+static double fe_energy(const cm_fe_mesh *m)
 {
     double e = 0;
     for (long t = 0; t < m->nt; t++) {
-        double d[3][2], a2 = fe_tri(m, t, d), gx = 0, gy = 0;
+        double d[3][2], a2 = cm_fe_tri(m, t, d), gx = 0, gy = 0;
         for (int i = 0; i < 3; i++) {
             double ui = m->u[m->tri[3 * t + i]];
             gx += ui * d[i][0], gy += ui * d[i][1];
@@ -427,7 +152,7 @@ static double fe_energy(const fe_mesh *m)
 }
 
 /* Boundary nodes from polygon vertex a to b (counter-clockwise) fixed to val. */
-static void fix_arc(fe_mesh *m, long a, long b, double val)
+static void fix_arc(cm_fe_mesh *m, long a, long b, double val)
 {
     long from = a << m->levels, to = b << m->levels;
     for (long j = from;; j = (j + 1) % m->nb) {
@@ -437,18 +162,18 @@ static void fix_arc(fe_mesh *m, long a, long b, double val)
 }
 
 /* Energy of the problem 0 on a..b, 1 on c..d: at least the modulus. */
-static cm_status fe_modulus_upper(fe_mesh *m, const long q[4], double *e, cm_error *err)
+static cm_status fe_modulus_upper(cm_fe_mesh *m, const long q[4], double *e, cm_error *err)
 {
     memset(m->fixed, 0, (size_t)m->nv);
     memset(m->u, 0, (size_t)m->nv * sizeof *m->u);
     fix_arc(m, q[0], q[1], 0.0);
     fix_arc(m, q[2], q[3], 1.0);
-    cm_status s = fe_solve(m, -1, 1, err);
+    cm_status s = cm_fe_solve(m, -1, 1, err);
     *e = fe_energy(m) * (1 + CM_BOUND_MARGIN);
     return s;
 }
 
-static cm_status fe_modulus_range(fe_mesh *m, const long q[4], double *lower, double *upper, cm_error *err)
+static cm_status fe_modulus_range(cm_fe_mesh *m, const long q[4], double *lower, double *upper, cm_error *err)
 {
     long conj[4] = {q[1], q[2], q[3], q[0]};
     double e;
@@ -458,44 +183,21 @@ static cm_status fe_modulus_range(fe_mesh *m, const long q[4], double *lower, do
     return s;
 }
 
-/* Squared distance from p to the polygon (its first n nodes). */
-static double depth2(const fe_mesh *m, size_t n, const double *p)
-{
-    double dist = INFINITY;
-    for (size_t i = 0; i < n; i++) {
-        const double *a = m->xy + 2 * i, *b = m->xy + 2 * ((i + 1) % n);
-        double ex = b[0] - a[0], ey = b[1] - a[1], px = p[0] - a[0], py = p[1] - a[1];
-        double t = fmin(1.0, fmax(0.0, (px * ex + py * ey) / (ex * ex + ey * ey)));
-        double dx = px - t * ex, dy = py - t * ey;
-        if (dx * dx + dy * dy < dist) dist = dx * dx + dy * dy;
-    }
-    return dist;
-}
-
 /* Vertex i's places on the unit circle, angle[e * n + i] in [0, 2 pi) for
  * each of CM_BOUND_VIEWS interior nodes e: the discrete harmonic measure,
  * seen from that node, of the boundary from vertex 0 to vertex i. A
  * conformal map crowds the far ends of a long polygon together beyond what
  * doubles resolve, so the nodes are spread out: the deepest of a sample,
  * then each the sampled node farthest from those chosen. */
-static cm_status fe_circle(fe_mesh *m, size_t n, double *angle, cm_error *err)
+static cm_status fe_circle(cm_fe_mesh *m, size_t n, double *angle, cm_error *err)
 {
-    memset(m->fixed, 0, (size_t)m->nv);
-    memset(m->u, 0, (size_t)m->nv * sizeof *m->u);
-    for (long j = 0; j < m->nb; j++) m->fixed[m->bnode[j]] = 1;
-    long interior = m->nv - m->nb, stride = interior > 64 ? interior / 64 : 1, seen = 0;
-    long sample[64 + 1], ns = 0, source[CM_BOUND_VIEWS];
-    for (long v = 0; v < m->nv && ns < 64; v++)
-        if (!m->fixed[v] && seen++ % stride == 0) sample[ns++] = v;
+    long sample[CM_FE_SAMPLE], ns = cm_fe_sample_interior(m, sample), source[CM_BOUND_VIEWS];
     if (ns == 0) {
         for (size_t i = 0; i < CM_BOUND_VIEWS * n; i++) angle[i] = 2 * CM_BOUND_PI * (double)(i % n) / (double)n;
         return CM_OK;
     }
-    double best = -1;
-    for (long j = 0; j < ns; j++) {
-        double d = depth2(m, n, m->xy + 2 * sample[j]);
-        if (d > best) best = d, source[0] = sample[j];
-    }
+    source[0] = cm_fe_deepest(m, n, sample, ns);
+    double best;
     for (int e = 1; e < CM_BOUND_VIEWS; e++) {
         best = -1;
         for (long j = 0; j < ns; j++) {
@@ -508,30 +210,22 @@ static cm_status fe_circle(fe_mesh *m, size_t n, double *angle, cm_error *err)
             if (near > best) best = near, source[e] = sample[j];
         }
     }
-    const int *ap = m->a->p, *ai = m->a->i;
+    double *w = malloc((size_t)m->nb * sizeof *w);
+    if (!w) return cm_fail_status(err, CM_ERR_NO_MEMORY);
     for (int e = 0; e < CM_BOUND_VIEWS; e++) {
-        for (long v = 0; v < m->nv; v++) m->u[v] = 0;
-        cm_status s = fe_solve(m, source[e], e == 0, err);
-        if (s != CM_OK) return s;
-        /* flux out of boundary node b: -(K u)_b */
-        memset(m->rhs, 0, (size_t)m->nv * sizeof *m->rhs);
-        for (int j = 0; j < (int)m->nv; j++)
-            for (int p = ap[j]; p < ap[j + 1]; p++) {
-                int i = ai[p];
-                m->rhs[i] += m->kx[p] * m->u[j];
-                if (i != j) m->rhs[j] += m->kx[p] * m->u[i];
-            }
-        double total = 0;
-        for (long j = 0; j < m->nb; j++) total += fmax(0.0, -m->rhs[m->bnode[j]]);
-        if (!(total > 0)) total = 1;
+        cm_status s = cm_fe_harmonic_measure(m, source[e], e == 0, w, err);
+        if (s != CM_OK) {
+            free(w);
+            return s;
+        }
         double acc = 0;
         long step = 1L << m->levels;
         for (long j = 0; j < m->nb; j++) {
-            double w = fmax(0.0, -m->rhs[m->bnode[j]]) / total;
-            if (j % step == 0) angle[(size_t)e * n + (size_t)(j / step)] = 2 * CM_BOUND_PI * (acc + 0.5 * w);
-            acc += w;
+            if (j % step == 0) angle[(size_t)e * n + (size_t)(j / step)] = 2 * CM_BOUND_PI * (acc + 0.5 * w[j]);
+            acc += w[j];
         }
     }
+    free(w);
     return CM_OK;
 }
 
@@ -663,12 +357,12 @@ cm_status cm_bound_compute(const double *const *geoms, const int32_t *const *tri
     out->correspondence_deg = 60.0, out->distortion = 1.0;
     for (int i = 0; i < 4; i++) out->quad[i] = -1;
     if (n < 4) return CM_OK; /* a triangle has no quadrilateral */
-    fe_mesh *mesh = calloc(k, sizeof *mesh);
+    cm_fe_mesh *mesh = calloc(k, sizeof *mesh);
     double **angle = calloc(k, sizeof *angle);
     cm_status s = mesh && angle ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
     int usable = 1;
     for (size_t g = 0; g < k && s == CM_OK && usable; g++) {
-        s = fe_build(&mesh[g], geoms[g], tris ? tris[g] : NULL, n, &usable, err);
+        s = cm_fe_build(&mesh[g], geoms[g], tris ? tris[g] : NULL, n, CM_BOUND_MIN_TRIANGLES, &usable, err);
         if (s == CM_OK && usable && !(angle[g] = malloc(CM_BOUND_VIEWS * n * sizeof *angle[g])))
             s = cm_fail_status(err, CM_ERR_NO_MEMORY);
         if (s == CM_OK && usable) s = fe_circle(&mesh[g], n, angle[g], err);
@@ -697,7 +391,7 @@ cm_status cm_bound_compute(const double *const *geoms, const int32_t *const *tri
     }
     free(lo);
     if (s == CM_OK) out->correspondence_deg = cm_bound_angle(out->distortion);
-    for (size_t g = 0; mesh && g < k; g++) fe_free(&mesh[g]);
+    for (size_t g = 0; mesh && g < k; g++) cm_fe_free(&mesh[g]);
     for (size_t g = 0; angle && g < k; g++) free(angle[g]);
     free(mesh), free(angle);
     return s;
@@ -706,11 +400,11 @@ cm_status cm_bound_compute(const double *const *geoms, const int32_t *const *tri
 cm_status cm_bound_modulus(const double *xy, const int32_t *tri, size_t n, const long quad[4],
                            double *lower, double *upper, cm_error *err)
 {
-    fe_mesh m;
+    cm_fe_mesh m;
     int usable;
     *lower = 0, *upper = INFINITY;
-    cm_status s = fe_build(&m, xy, tri, n, &usable, err);
+    cm_status s = cm_fe_build(&m, xy, tri, n, CM_BOUND_MIN_TRIANGLES, &usable, err);
     if (s == CM_OK && usable) s = fe_modulus_range(&m, quad, lower, upper, err);
-    fe_free(&m);
+    cm_fe_free(&m);
     return s;
 }

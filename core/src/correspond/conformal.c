@@ -1,0 +1,295 @@
+/* The conformal correspondence (conformal.h). The measurements behind its
+ * choices (the power, the balancing) are in bench/CORRESPONDENCE.md. */
+#include "correspond/conformal.h"
+
+#include <complex.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "correspond/arclength.h"
+#include "correspond/fe.h"
+
+#define PI 3.14159265358979323846
+/* The mesh of each polygon is split into four until it has this many
+ * triangles. */
+#define MIN_TRIANGLES 4000
+/* The rotation search: the points evenly spaced on the circle it compares
+ * the arc lengths at, the evenly spaced turns it tries, and the golden-
+ * section steps that refine the best. */
+#define SEARCH_SAMPLES 512
+#define ROTATIONS 256
+#define GOLDEN_STEPS 48
+/* The barycentre's iteration: at most this many steps, until the mean is
+ * below the tolerance. */
+#define BALANCE_ITERATIONS 200
+#define BALANCE_TOLERANCE 1e-9
+/* Stretches below this are taken as this (doubles resolve no less). */
+#define STRETCH_FLOOR 1e-12
+
+/* A polygon's boundary on the unit circle: per boundary node of its mesh
+ * (counter-clockwise from vertex 0), the normalised arc length s and the
+ * angle theta, both non-decreasing; s[nb] = 1, theta[nb] = 2 pi. */
+typedef struct disk {
+    size_t nb;
+    double *s, *theta;
+} disk;
+
+static void disk_free(disk *d)
+{
+    free(d->s), free(d->theta);
+    memset(d, 0, sizeof *d);
+}
+
+static void balance(disk *d);
+
+static cm_status disk_build(const double *input, size_t n, int reversed, disk *d, int *usable, cm_error *err)
+{
+    memset(d, 0, sizeof *d);
+    cm_fe_mesh m;
+    memset(&m, 0, sizeof m);
+    double *xy = malloc(2 * n * sizeof *xy), *w = NULL;
+    cm_status s = xy ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
+    for (size_t c = 0; s == CM_OK && c < n; c++) {
+        const double *p = input + 2 * cm_ccw_input(c, n, reversed);
+        xy[2 * c] = p[0], xy[2 * c + 1] = p[1];
+    }
+    if (s == CM_OK) s = cm_fe_build(&m, xy, NULL, n, MIN_TRIANGLES, usable, err);
+    long sample[CM_FE_SAMPLE], ns = s == CM_OK && *usable ? cm_fe_sample_interior(&m, sample) : 0;
+    if (s == CM_OK && ns == 0) *usable = 0;
+    if (s == CM_OK && *usable) {
+        size_t nb = (size_t)m.nb;
+        d->nb = nb;
+        d->s = malloc((nb + 1) * sizeof *d->s);
+        d->theta = malloc((nb + 1) * sizeof *d->theta);
+        w = malloc(nb * sizeof *w);
+        if (!d->s || !d->theta || !w) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+        /* seen from the deepest of all interior nodes: a similar polygon's
+         * mesh is the similar image, and its deepest node the same */
+        long *inner = s == CM_OK ? malloc((size_t)m.nv * sizeof *inner) : NULL, ni = 0;
+        if (s == CM_OK && !inner) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+        for (long v = 0; inner && v < m.nv; v++)
+            if (!m.fixed[v]) inner[ni++] = v;
+        if (s == CM_OK) s = cm_fe_harmonic_measure(&m, cm_fe_deepest(&m, n, inner, ni), 1, w, err);
+        free(inner);
+        if (s == CM_OK) {
+            double acc = 0, first = PI * w[0];
+            d->s[0] = 0;
+            for (size_t j = 0; j < nb; j++) {
+                const double *p = m.xy + 2 * m.bnode[j], *q = m.xy + 2 * m.bnode[(j + 1) % nb];
+                d->s[j + 1] = d->s[j] + hypot(q[0] - p[0], q[1] - p[1]);
+                /* node j at the middle of its share of the measure */
+                double t = 2 * PI * (acc + 0.5 * w[j]) - first;
+                d->theta[j] = j ? fmax(t, d->theta[j - 1]) : 0.0;
+                acc += w[j];
+            }
+            double total = d->s[nb];
+            for (size_t j = 0; j <= nb; j++) d->s[j] /= total;
+            d->s[nb] = 1.0, d->theta[nb] = 2 * PI;
+            balance(d);
+        }
+    }
+    free(xy), free(w);
+    cm_fe_free(&m);
+    if (s != CM_OK || !*usable) disk_free(d);
+    return s;
+}
+
+/* The disk turned by the automorphism that puts the barycentre of arc
+ * length at the centre (Douady-Earle: sum of s-weights times points on
+ * the circle = 0), so that two polygons' disks agree up to a rotation when
+ * the polygons are similar, whichever interior node each was seen from;
+ * by halving steps towards the mean, composed. Angles stay from 0 at
+ * vertex 0, non-decreasing. */
+static void balance(disk *d)
+{
+    size_t nb = d->nb;
+    double complex a = 0;
+    for (int it = 0; it < BALANCE_ITERATIONS; it++) {
+        double complex mean = 0;
+        for (size_t j = 0; j < nb; j++) {
+            double complex w = cexp(I * d->theta[j]);
+            double weight = 0.5 * ((j + 1 < nb ? d->s[j + 1] : 1.0) - (j ? d->s[j - 1] : d->s[nb - 1] - 1.0));
+            mean += weight * (w - a) / (1 - conj(a) * w);
+        }
+        if (cabs(mean) < BALANCE_TOLERANCE) break;
+        double complex b = 0.5 * mean;
+        a = (b + a) / (1 + conj(a) * b);
+    }
+    double prev = 0, first = 0;
+    for (size_t j = 0; j < nb; j++) {
+        double complex w = cexp(I * d->theta[j]);
+        double t = carg((w - a) / (1 - conj(a) * w));
+        if (j == 0) first = t;
+        t = j ? prev + fmax(0.0, remainder(t - prev, 2 * PI)) : t;
+        d->theta[j] = t - first, prev = t;
+    }
+    for (size_t j = 1; j < nb; j++) d->theta[j] = fmin(fmax(d->theta[j], d->theta[j - 1]), 2 * PI);
+}
+
+/* The largest j < len with a[j] <= x (a non-decreasing, a[0] <= x). */
+static size_t below(const double *a, size_t len, double x)
+{
+    size_t lo = 0, hi = len;
+    while (hi - lo > 1) {
+        size_t mid = (lo + hi) / 2;
+        if (a[mid] <= x) lo = mid;
+        else hi = mid;
+    }
+    return lo;
+}
+
+/* y at x of the piecewise-linear table (xs, ys), len + 1 points, x in
+ * [xs[0], xs[len]]. */
+static double lookup(const double *xs, const double *ys, size_t len, double x)
+{
+    size_t j = below(xs, len, x);
+    double dx = xs[j + 1] - xs[j];
+    return dx > 0 ? ys[j] + (x - xs[j]) / dx * (ys[j + 1] - ys[j]) : ys[j];
+}
+
+/* The search's view of one pair: m angles evenly spaced on the circle, as
+ * points, polygon 0's arc length there, and the disk of polygon g. */
+typedef struct search {
+    const double complex *w;
+    const double *s0;
+    size_t m;
+    const disk *g;
+} search;
+
+/* How far the correspondence is from arc length with polygon g's disk
+ * turned by rho onto polygon 0's: the variance, over the circle, of
+ * polygon g's arc length less polygon 0's at the same point (lifted).
+ * Zero for a similar copy turned right. */
+static double cost(const search *q, double rho)
+{
+    double prev = 0, sum = 0, sum2 = 0;
+    for (size_t i = 0; i < q->m; i++) {
+        double t = carg(q->w[i] * cexp(-I * rho));
+        if (i == 0) t = t < 0 ? t + 2 * PI : t;
+        else t = prev + remainder(t - prev, 2 * PI);
+        prev = t;
+        double turns = floor(t / (2 * PI));
+        double d = turns + lookup(q->g->theta, q->g->s, q->g->nb, t - 2 * PI * turns) - q->s0[i];
+        sum += d, sum2 += d * d;
+    }
+    double mean = sum / (double)q->m;
+    return sum2 / (double)q->m - mean * mean;
+}
+
+/* The turn of least cost: the best of ROTATIONS evenly spaced, then
+ * golden-section search around it (the cost is V-shaped at a similar
+ * copy's turn). */
+static double best_turn(const search *q)
+{
+    double best = 0, best_cost = HUGE_VAL;
+    for (int r = 0; r < ROTATIONS; r++) {
+        double rho = 2 * PI * r / ROTATIONS, c = cost(q, rho);
+        if (c < best_cost) best_cost = c, best = rho;
+    }
+    const double golden = 0.5 * (sqrt(5.0) - 1);
+    double lo = best - 2 * PI / ROTATIONS, hi = best + 2 * PI / ROTATIONS;
+    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo), f1 = cost(q, x1), f2 = cost(q, x2);
+    for (int it = 0; it < GOLDEN_STEPS; it++) {
+        if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = cost(q, x1);
+        else lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = cost(q, x2);
+    }
+    double mid = f1 < f2 ? x1 : x2;
+    return fmin(f1, f2) < best_cost ? mid : best;
+}
+
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* The tempered parameter of a disk's boundary nodes (nb + 1 values from 0
+ * to 1): the running integral of (d theta / d s)^CM_CONFORMAL_POWER over
+ * arc length, normalised. A part the conformal map crowds by e^-x is
+ * crowded by e^-x/4; a similar copy gets the same parameter. */
+static void tempered(const disk *d, const double *theta, double *p)
+{
+    p[0] = 0;
+    for (size_t j = 0; j < d->nb; j++) {
+        double ds = d->s[j + 1] - d->s[j], density = ds > 0 ? (theta[j + 1] - theta[j]) / (2 * PI * ds) : 1.0;
+        p[j + 1] = p[j] + pow(fmax(density, STRETCH_FLOOR), CM_CONFORMAL_POWER) * ds;
+    }
+    double total = p[d->nb];
+    for (size_t j = 0; j <= d->nb; j++) p[j] /= total;
+    p[d->nb] = 1.0;
+}
+
+/* params of polygon g (counter-clockwise positions): where its vertices
+ * sit on polygon 0 when both are read by their tempered parameters, g's
+ * disk turned onto polygon 0's by the automorphism x. */
+static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, double *params, cm_error *err)
+{
+    size_t nb = dg->nb, levels = nb / n;
+    double *theta = malloc((nb + 1) * sizeof *theta), *p0 = malloc((d0->nb + 1) * sizeof *p0);
+    double *pg = malloc((nb + 1) * sizeof *pg);
+    if (!theta || !p0 || !pg) {
+        free(theta), free(p0), free(pg);
+        return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    }
+    /* g's nodes on polygon 0's circle */
+    for (size_t j = 0; j <= nb; j++) theta[j] = dg->theta[j] + rho;
+    tempered(d0, d0->theta, p0);
+    tempered(dg, theta, pg);
+    /* g's vertex 0 lands at polygon 0's tempered parameter `from`: the
+     * median over g's nodes of where each lands less its own parameter
+     * (one node alone may sit in a crowded stretch whose angles doubles
+     * cannot tell apart) */
+    double *offset = theta; /* reused: nb values */
+    double base = 0;
+    for (size_t j = 0; j < nb; j++) {
+        double t = theta[j] - 2 * PI * floor(theta[j] / (2 * PI));
+        double o = lookup(d0->s, p0, d0->nb, lookup(d0->theta, d0->s, d0->nb, t)) - pg[j];
+        if (j == 0) base = o;
+        offset[j] = remainder(o - base, 1.0);
+    }
+    qsort(offset, nb, sizeof *offset, by_value);
+    double from = base + offset[nb / 2];
+    for (size_t c = 0; c < n; c++) {
+        double q = from + pg[c * levels];
+        q -= floor(q);
+        double u = lookup(p0, d0->s, d0->nb, q);
+        params[c] = u < 1.0 ? u : nextafter(1.0, 0.0);
+    }
+    free(theta), free(p0), free(pg);
+    return CM_OK;
+}
+
+cm_status cm_correspond_conformal(const double *const *polygons, const size_t *counts, size_t k,
+                                  const int *orientation, double *const *params, int *found, cm_error *err)
+{
+    *found = 0;
+    disk *disks = calloc(k, sizeof *disks);
+    double complex *w0 = malloc(SEARCH_SAMPLES * sizeof *w0);
+    cm_status s = disks && w0 ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
+    int usable = 1;
+    for (size_t g = 0; s == CM_OK && usable && g < k; g++)
+        s = disk_build(polygons[g], counts[g], orientation[g] < 0, &disks[g], &usable, err);
+    if (s == CM_OK && usable) {
+        double *arc = cm_arc_lengths(polygons[0], counts[0], orientation[0] < 0, 0);
+        if (!arc) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+        for (size_t c = 0; arc && c < counts[0]; c++) params[0][c] = arc[c] / arc[counts[0]];
+        free(arc);
+    }
+    double *s0 = malloc(SEARCH_SAMPLES * sizeof *s0);
+    if (s == CM_OK && !s0) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+    for (size_t i = 0; s == CM_OK && usable && i < SEARCH_SAMPLES; i++) {
+        double t = 2 * PI * (double)i / SEARCH_SAMPLES;
+        w0[i] = cexp(I * t);
+        s0[i] = lookup(disks[0].theta, disks[0].s, disks[0].nb, t);
+    }
+    for (size_t g = 1; s == CM_OK && usable && g < k; g++) {
+        search q = {w0, s0, SEARCH_SAMPLES, &disks[g]};
+        s = place(&disks[0], &disks[g], best_turn(&q), counts[g], params[g], err);
+    }
+    free(s0);
+    if (s == CM_OK) *found = usable;
+    for (size_t g = 0; disks && g < k; g++) disk_free(&disks[g]);
+    free(disks), free(w0);
+    return s;
+}

@@ -1,0 +1,38 @@
+/* The conformal correspondence (CM_CORRESPOND_AUTO on polygons without
+ * holes): every polygon mapped conformally onto the disk, the maps made to
+ * agree up to an automorphism of the disk, and the crowding that a
+ * conformal map forces on long thin parts tempered towards arc length. */
+#ifndef CM_CORRESPOND_CONFORMAL_H
+#define CM_CORRESPOND_CONFORMAL_H
+
+#include "base/error.h"
+
+/* For every polygon g and counter-clockwise position c (c = 0 the input's
+ * vertex 0), params[g][c] in [0, 1): where the vertex sits on polygon 0's
+ * boundary, as a share of its perimeter counter-clockwise from its vertex 0
+ * (polygon 0's own vertices at their arc length). params: k arrays of
+ * counts[g] doubles, filled. *found = 0 (params left partly written) when
+ * a polygon's mesh has a triangle of no area in doubles, and the caller
+ * chooses some other way. orientation as from cm_input_check_polygons.
+ *
+ * How: on a mesh of each polygon alone (fe.h), the harmonic measure seen
+ * from its deepest node puts the boundary on the unit circle (the boundary
+ * values of a conformal map onto the disk). Each disk is turned by the
+ * automorphism that puts the barycentre of arc length at the centre
+ * (Douady-Earle), which spreads every polygon's crowding evenly around the
+ * circle and leaves two similar polygons' disks one rotation apart; the
+ * rotation between polygon 0's disk and polygon g's is the one under
+ * which the two arc lengths at each point of the circle differ least
+ * (variance over the circle). A conformal map crowds a long thin part by
+ * a factor exponential in its length over its width, beyond doubles and
+ * beyond any mesh, so the polygons are matched not by angle but by a
+ * tempered parameter: the running integral of (d angle / d arc
+ * length)^CM_CONFORMAL_POWER, normalised, which keeps the order and place
+ * of the parts the conformal map sees and takes the power of its
+ * crowding; a similar copy gets the same parameter. The power and the
+ * rest were chosen by measurement (bench/CORRESPONDENCE.md). */
+#define CM_CONFORMAL_POWER 0.25
+cm_status cm_correspond_conformal(const double *const *polygons, const size_t *counts, size_t k,
+                                  const int *orientation, double *const *params, int *found, cm_error *err);
+
+#endif

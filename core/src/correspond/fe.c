@@ -1,0 +1,312 @@
+/* Linear finite elements on a polygon (fe.h). */
+#include "correspond/fe.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "geom/polytri.h"
+
+
+void cm_fe_free(cm_fe_mesh *m)
+{
+    free(m->xy), free(m->tri), free(m->bnode);
+    if (m->started) {
+        cholmod_free_sparse(&m->a, &m->cc);
+        cholmod_free_factor(&m->factor, &m->cc);
+        cholmod_finish(&m->cc);
+    }
+    free(m->kx), free(m->fixed), free(m->u), free(m->rhs);
+    memset(m, 0, sizeof *m);
+}
+
+/* Every triangle split into four at its edge midpoints (one new node per
+ * edge, found through an open-addressing table of edge keys). */
+static int split(cm_fe_mesh *m)
+{
+    size_t cap = 16;
+    while (cap < 4 * (size_t)m->nt + 8) cap *= 2;
+    uint64_t *key = malloc(cap * sizeof *key);
+    int32_t *mid = malloc(cap * sizeof *mid);
+    long edges_max = 3 * m->nt; /* at most, before sharing */
+    double *xy = malloc(2 * (size_t)(m->nv + edges_max) * sizeof *xy);
+    int32_t *tri = malloc(12 * (size_t)m->nt * sizeof *tri);
+    int32_t *bnode = malloc(2 * (size_t)m->nb * sizeof *bnode);
+    if (!key || !mid || !xy || !tri || !bnode) {
+        free(key), free(mid), free(xy), free(tri), free(bnode);
+        return CM_NO_MEMORY;
+    }
+    memset(key, 0xff, cap * sizeof *key);
+    memcpy(xy, m->xy, 2 * (size_t)m->nv * sizeof *xy);
+    long nv = m->nv;
+#define MIDPOINT(out, a, b)                                                                   \
+    do {                                                                                      \
+        int32_t lo_ = (a) < (b) ? (a) : (b), hi_ = (a) < (b) ? (b) : (a);                     \
+        uint64_t k_ = ((uint64_t)(uint32_t)lo_ << 32) | (uint32_t)hi_;                        \
+        size_t h_ = (size_t)((k_ * 0x9E3779B97F4A7C15ull) >> 17) & (cap - 1);                 \
+        while (key[h_] != UINT64_MAX && key[h_] != k_) h_ = (h_ + 1) & (cap - 1);             \
+        if (key[h_] == UINT64_MAX) {                                                          \
+            key[h_] = k_, mid[h_] = (int32_t)nv;                                              \
+            xy[2 * nv] = 0.5 * (m->xy[2 * lo_] + m->xy[2 * hi_]);                             \
+            xy[2 * nv + 1] = 0.5 * (m->xy[2 * lo_ + 1] + m->xy[2 * hi_ + 1]);                 \
+            nv++;                                                                             \
+        }                                                                                     \
+        (out) = mid[h_];                                                                      \
+    } while (0)
+    for (long t = 0; t < m->nt; t++) {
+        int32_t a = m->tri[3 * t], b = m->tri[3 * t + 1], c = m->tri[3 * t + 2], ab, bc, ca;
+        MIDPOINT(ab, a, b);
+        MIDPOINT(bc, b, c);
+        MIDPOINT(ca, c, a);
+        int32_t *o = tri + 12 * t;
+        o[0] = a, o[1] = ab, o[2] = ca;
+        o[3] = ab, o[4] = b, o[5] = bc;
+        o[6] = ca, o[7] = bc, o[8] = c;
+        o[9] = ab, o[10] = bc, o[11] = ca;
+    }
+    for (long j = 0; j < m->nb; j++) {
+        int32_t a = m->bnode[j], b = m->bnode[(j + 1) % m->nb], ab;
+        MIDPOINT(ab, a, b);
+        bnode[2 * j] = a, bnode[2 * j + 1] = ab;
+    }
+#undef MIDPOINT
+    free(key), free(mid);
+    free(m->xy), free(m->tri), free(m->bnode);
+    m->xy = xy, m->tri = tri, m->bnode = bnode;
+    m->nv = nv, m->nt *= 4, m->nb *= 2, m->levels++;
+    return 0;
+}
+
+double cm_fe_tri(const cm_fe_mesh *m, long t, double d[3][2])
+{
+    const int32_t *v = m->tri + 3 * t;
+    for (int i = 0; i < 3; i++) {
+        const double *p = m->xy + 2 * v[(i + 1) % 3], *q = m->xy + 2 * v[(i + 2) % 3];
+        d[i][0] = q[0] - p[0], d[i][1] = q[1] - p[1];
+    }
+    return d[0][0] * d[1][1] - d[0][1] * d[1][0];
+}
+
+static cm_status chol_status(cm_fe_mesh *m, cm_error *err)
+{
+    if (m->cc.status == CHOLMOD_OUT_OF_MEMORY) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    return cm_fail(err, CM_ERR_INTERNAL, "finite elements: CHOLMOD failed (status %d)", m->cc.status);
+}
+
+/* a's values: the stiffness, with fixed rows and columns the identity. */
+static void fill(cm_fe_mesh *m)
+{
+    const int *ap = m->a->p, *ai = m->a->i;
+    double *ax = m->a->x;
+    for (int j = 0; j < (int)m->nv; j++)
+        for (int p = ap[j]; p < ap[j + 1]; p++) {
+            int i = ai[p];
+            ax[p] = m->fixed[i] || m->fixed[j] ? (i == j) : m->kx[p];
+        }
+}
+
+/* Compressed columns of the upper triangle of the stiffness matrix from
+ * the triangles (duplicates summed). 0 or CM_NO_MEMORY. */
+static int assemble(cm_fe_mesh *m, int *usable)
+{
+    /* column counts over the pairs i <= j of every triangle, then fill */
+    int *count = calloc((size_t)m->nv + 1, sizeof *count), *next = NULL;
+    int *ti = NULL;
+    double *tx = NULL;
+    size_t nz = 6 * (size_t)m->nt;
+    if (!count) return CM_NO_MEMORY;
+    ti = malloc(nz * sizeof *ti), tx = malloc(nz * sizeof *tx), next = malloc(((size_t)m->nv + 1) * sizeof *next);
+    int *tcol = malloc(nz * sizeof *tcol);
+    int status = ti && tx && next && tcol ? 0 : CM_NO_MEMORY;
+    size_t e = 0;
+    for (long t = 0; t < m->nt && !status; t++) {
+        double d[3][2], a2 = cm_fe_tri(m, t, d);
+        if (!(a2 > 0) || !isfinite(a2)) {
+            *usable = 0;
+            break;
+        }
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) {
+                int r = m->tri[3 * t + i], c = m->tri[3 * t + j];
+                if (r > c) continue;
+                ti[e] = r, tcol[e] = c;
+                tx[e++] = (d[i][0] * d[j][0] + d[i][1] * d[j][1]) / (2 * a2);
+                count[c + 1]++;
+            }
+    }
+    if (!status && *usable) {
+        for (long c = 0; c < m->nv; c++) count[c + 1] += count[c];
+        /* bucket by column, then merge duplicate rows in each column */
+        int *ri = malloc(e * sizeof *ri);
+        double *rx = malloc(e * sizeof *rx);
+        int *mark = malloc((size_t)m->nv * sizeof *mark);
+        if (!ri || !rx || !mark) status = CM_NO_MEMORY;
+        if (!status) {
+            memcpy(next, count, ((size_t)m->nv + 1) * sizeof *next);
+            for (size_t x = 0; x < e; x++) {
+                int p = next[tcol[x]]++;
+                ri[p] = ti[x], rx[p] = tx[x];
+            }
+            size_t unique = 0;
+            for (long i = 0; i < m->nv; i++) mark[i] = -1;
+            /* first pass: unique entries per column */
+            for (long c = 0; c < m->nv; c++)
+                for (int p = count[c]; p < count[c + 1]; p++)
+                    if (mark[ri[p]] != (int)c) mark[ri[p]] = (int)c, unique++;
+            m->a = cholmod_allocate_sparse((size_t)m->nv, (size_t)m->nv, unique, 0, 1, 1, CHOLMOD_REAL, &m->cc);
+            m->kx = malloc(unique * sizeof *m->kx);
+            if (!m->a || !m->kx) status = CM_NO_MEMORY;
+        }
+        if (!status) {
+            int *ap = m->a->p, *ai = m->a->i, q = 0;
+            for (long i = 0; i < m->nv; i++) mark[i] = -1;
+            for (long c = 0; c < m->nv; c++) {
+                ap[c] = q;
+                for (int p = count[c]; p < count[c + 1]; p++) {
+                    if (mark[ri[p]] < ap[c]) {
+                        mark[ri[p]] = q;
+                        ai[q] = ri[p], m->kx[q++] = rx[p];
+                    } else {
+                        m->kx[mark[ri[p]]] += rx[p];
+                    }
+                }
+            }
+            ap[m->nv] = q;
+        }
+        free(ri), free(rx), free(mark);
+    }
+    free(count), free(next), free(ti), free(tx), free(tcol);
+    return status;
+}
+
+cm_status cm_fe_build(cm_fe_mesh *m, const double *xy, const int32_t *tri, size_t n, long min_triangles, int *usable,
+                          cm_error *err)
+{
+    memset(m, 0, sizeof *m);
+    *usable = 1;
+    m->nv = (long)n, m->nt = (long)n - 2, m->nb = (long)n;
+    m->xy = malloc(2 * n * sizeof *m->xy);
+    m->tri = malloc(3 * (n - 2) * sizeof *m->tri);
+    m->bnode = malloc(n * sizeof *m->bnode);
+    if (!m->xy || !m->tri || !m->bnode) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    memcpy(m->xy, xy, 2 * n * sizeof *m->xy);
+    for (size_t i = 0; i < n; i++) m->bnode[i] = (int32_t)i;
+    if (tri) {
+        memcpy(m->tri, tri, 3 * (n - 2) * sizeof *m->tri);
+    } else {
+        int32_t *idx = malloc(n * sizeof *idx);
+        if (!idx) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+        for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
+        int t = cm_polygon_triangulate(xy, idx, (long)n, m->tri, NULL);
+        free(idx);
+        if (t == CM_NO_MEMORY) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+        if (t != 0) return cm_fail(err, CM_ERR_INTERNAL, "finite elements: a polygon has no ear");
+    }
+    while (m->nt < min_triangles)
+        if (split(m)) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+
+    m->fixed = malloc((size_t)m->nv);
+    m->u = malloc((size_t)m->nv * sizeof *m->u);
+    m->rhs = malloc((size_t)m->nv * sizeof *m->rhs);
+    if (!m->fixed || !m->u || !m->rhs) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    cholmod_start(&m->cc);
+    m->started = 1;
+    m->cc.print = 0, m->cc.error_handler = NULL;
+    if (assemble(m, usable) || m->cc.status == CHOLMOD_OUT_OF_MEMORY) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    if (!*usable) return CM_OK;
+    /* The pattern analysed once (fill-reducing order), on the matrix with
+     * the boundary fixed. */
+    memset(m->fixed, 0, (size_t)m->nv);
+    for (long j = 0; j < m->nb; j++) m->fixed[m->bnode[j]] = 1;
+    fill(m);
+    m->factor = cholmod_analyze(m->a, &m->cc);
+    return m->factor ? CM_OK : chol_status(m, err);
+}
+
+cm_status cm_fe_solve(cm_fe_mesh *m, long source, int refactor, cm_error *err)
+{
+    const int *ap = m->a->p, *ai = m->a->i;
+    memset(m->rhs, 0, (size_t)m->nv * sizeof *m->rhs);
+    for (int j = 0; j < (int)m->nv; j++)
+        for (int p = ap[j]; p < ap[j + 1]; p++) { /* upper triangle: both (i, j) and (j, i) */
+            int i = ai[p];
+            if (i == j) continue;
+            if (m->fixed[j] && !m->fixed[i]) m->rhs[i] -= m->kx[p] * m->u[j];
+            if (m->fixed[i] && !m->fixed[j]) m->rhs[j] -= m->kx[p] * m->u[i];
+        }
+    for (long i = 0; i < m->nv; i++)
+        if (m->fixed[i]) m->rhs[i] = m->u[i];
+    if (source >= 0) m->rhs[source] += 1.0;
+    if (refactor) {
+        fill(m);
+        if (!cholmod_factorize(m->a, m->factor, &m->cc) || m->cc.status == CHOLMOD_OUT_OF_MEMORY)
+            return chol_status(m, err);
+    }
+    /* Not positive definite in doubles (status CHOLMOD_NOT_POSDEF): u
+     * below is still admissible, only less good. */
+    cholmod_dense b = {(size_t)m->nv, 1, (size_t)m->nv, (size_t)m->nv, m->rhs, NULL, CHOLMOD_REAL, CHOLMOD_DOUBLE};
+    cholmod_dense *x = m->cc.status == CHOLMOD_OK ? cholmod_solve(CHOLMOD_A, m->factor, &b, &m->cc) : NULL;
+    if (!x && m->cc.status == CHOLMOD_OUT_OF_MEMORY) return chol_status(m, err);
+    const double *sol = x ? x->x : NULL;
+    for (long i = 0; i < m->nv; i++)
+        if (!m->fixed[i]) m->u[i] = sol && isfinite(sol[i]) ? sol[i] : 0.0;
+    cholmod_free_dense(&x, &m->cc);
+    return CM_OK;
+}
+
+long cm_fe_sample_interior(cm_fe_mesh *m, long *sample)
+{
+    memset(m->fixed, 0, (size_t)m->nv);
+    memset(m->u, 0, (size_t)m->nv * sizeof *m->u);
+    for (long j = 0; j < m->nb; j++) m->fixed[m->bnode[j]] = 1;
+    long interior = m->nv - m->nb, stride = interior > CM_FE_SAMPLE ? interior / CM_FE_SAMPLE : 1, seen = 0, ns = 0;
+    for (long v = 0; v < m->nv && ns < CM_FE_SAMPLE; v++)
+        if (!m->fixed[v] && seen++ % stride == 0) sample[ns++] = v;
+    return ns;
+}
+
+long cm_fe_deepest(const cm_fe_mesh *m, size_t n, const long *sample, long ns)
+{
+    double best = -1;
+    long deepest = sample[0];
+    for (long j = 0; j < ns; j++) {
+        double d = cm_fe_depth2(m, n, m->xy + 2 * sample[j]);
+        if (d > best) best = d, deepest = sample[j];
+    }
+    return deepest;
+}
+
+double cm_fe_depth2(const cm_fe_mesh *m, size_t n, const double *p)
+{
+    double dist = INFINITY;
+    for (size_t i = 0; i < n; i++) {
+        const double *a = m->xy + 2 * i, *b = m->xy + 2 * ((i + 1) % n);
+        double ex = b[0] - a[0], ey = b[1] - a[1], px = p[0] - a[0], py = p[1] - a[1];
+        double t = fmin(1.0, fmax(0.0, (px * ex + py * ey) / (ex * ex + ey * ey)));
+        double dx = px - t * ex, dy = py - t * ey;
+        if (dx * dx + dy * dy < dist) dist = dx * dx + dy * dy;
+    }
+    return dist;
+}
+
+cm_status cm_fe_harmonic_measure(cm_fe_mesh *m, long source, int refactor, double *w, cm_error *err)
+{
+    memset(m->fixed, 0, (size_t)m->nv);
+    memset(m->u, 0, (size_t)m->nv * sizeof *m->u);
+    for (long j = 0; j < m->nb; j++) m->fixed[m->bnode[j]] = 1;
+    cm_status s = cm_fe_solve(m, source, refactor, err);
+    if (s != CM_OK) return s;
+    /* flux out of boundary node b: -(K u)_b */
+    const int *ap = m->a->p, *ai = m->a->i;
+    memset(m->rhs, 0, (size_t)m->nv * sizeof *m->rhs);
+    for (int j = 0; j < (int)m->nv; j++)
+        for (int p = ap[j]; p < ap[j + 1]; p++) {
+            int i = ai[p];
+            m->rhs[i] += m->kx[p] * m->u[j];
+            if (i != j) m->rhs[j] += m->kx[p] * m->u[i];
+        }
+    double total = 0;
+    for (long j = 0; j < m->nb; j++) total += fmax(0.0, -m->rhs[m->bnode[j]]);
+    for (long j = 0; j < m->nb; j++) w[j] = total > 0 ? fmax(0.0, -m->rhs[m->bnode[j]]) / total : 1.0 / (double)m->nb;
+    return CM_OK;
+}
