@@ -34,8 +34,9 @@ def drain(main, process):
 
 
 def test_progress_line_on_a_terminal(compatmesh_path, tmp_path):
-    write_xy(tmp_path / "a.xy", star(20000, 1))
-    write_xy(tmp_path / "b.xy", star(20000, 2))
+    # large enough to run well past the two-second grace (about 8 s of CPU)
+    write_xy(tmp_path / "a.xy", star(100000, 1))
+    write_xy(tmp_path / "b.xy", star(100000, 2))
     main, sub = pty.openpty()
     process = subprocess.Popen([compatmesh_path, "triangulate", "a.xy", "b.xy", "-o", "out"],
                                cwd=tmp_path, stdout=subprocess.DEVNULL, stderr=sub)
