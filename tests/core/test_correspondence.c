@@ -236,6 +236,29 @@ static void test_conformal_similar_copy(void)
     cm_boundary_map_clear(&map);
 }
 
+/* a (n vertices) against its similar copy renumbered by shift with every
+ * edge split at its midpoint (2 n vertices), without remeshing, in the
+ * given correspondence mode; *b receives the copy (4 n doubles). */
+static cm_result *pair_with_split_copy(const double *a, int n, int shift, cm_correspondence mode,
+                                       double *b)
+{
+    double c[2 * n];
+    similar_copy(a, n, shift, c);
+    for (int i = 0; i < n; i++) {
+        const double *p = c + 2 * i, *q = c + 2 * ((i + 1) % n);
+        b[4 * i] = p[0], b[4 * i + 1] = p[1];
+        b[4 * i + 2] = 0.5 * (p[0] + q[0]), b[4 * i + 3] = 0.5 * (p[1] + q[1]);
+    }
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = mode, o.remesh = 0;
+    const double *in[2] = {a, b};
+    size_t counts[2] = {(size_t)n, 2 * (size_t)n};
+    cm_result *r = NULL;
+    CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r) == CM_OK, "%s", cm_result_message(r));
+    return r;
+}
+
 /* Through the API: the copy with every edge split at its midpoint (the
  * same polygon, 2N vertices, meshed differently) pairs a's vertex j with
  * the copy's vertex 2 (j - SHIFT) and puts the copy's midpoints near a's
@@ -246,24 +269,14 @@ static void test_conformal_similar_copy(void)
 static void test_auto_conformal_identity(void)
 {
     enum { N = 40, SHIFT = 7 };
-    double a[2 * N], c[2 * N], b[4 * N];
+    double a[2 * N], b[4 * N];
     for (int i = 0; i < N; i++) { /* a three-lobed outline: crowding mild enough to resolve on any mesh */
         double phi = 2 * 3.14159265358979323846 * i / N, r = 1 + 0.4 * cos(3 * phi) + 0.05 * sin(7 * phi);
         a[2 * i] = r * cos(phi), a[2 * i + 1] = r * sin(phi);
     }
-    similar_copy(a, N, SHIFT, c);
-    for (int i = 0; i < N; i++) {
-        const double *p = c + 2 * i, *q = c + 2 * ((i + 1) % N);
-        b[4 * i] = p[0], b[4 * i + 1] = p[1];
-        b[4 * i + 2] = 0.5 * (p[0] + q[0]), b[4 * i + 3] = 0.5 * (p[1] + q[1]);
-    }
-    cm_options o;
-    cm_options_init(&o);
-    o.correspondence = CM_CORRESPOND_AUTO, o.remesh = 0;
+    cm_result *r = pair_with_split_copy(a, N, SHIFT, CM_CORRESPOND_AUTO, b);
     const double *in[2] = {a, b};
     size_t counts[2] = {N, 2 * N};
-    cm_result *r = NULL;
-    CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r) == CM_OK, "%s", cm_result_message(r));
     if (cm_result_status(r) == CM_OK) {
         CHECK_MSG(cm_result_stats(r)->n == 2 * N && cm_result_stats(r)->steiner == 0, "%zu boundary, %zu Steiner",
                   cm_result_stats(r)->n, cm_result_stats(r)->steiner);
@@ -291,21 +304,9 @@ static void test_auto_conformal_identity(void)
 static void test_similarity_mode(void)
 {
     enum { N = 40, SHIFT = 9 };
-    double a[2 * N], c[2 * N], b[4 * N];
+    double a[2 * N], b[4 * N];
     CHECK(rp_star(a, N, 81) == 0);
-    similar_copy(a, N, SHIFT, c);
-    for (int i = 0; i < N; i++) {
-        const double *p = c + 2 * i, *q = c + 2 * ((i + 1) % N);
-        b[4 * i] = p[0], b[4 * i + 1] = p[1];
-        b[4 * i + 2] = 0.5 * (p[0] + q[0]), b[4 * i + 3] = 0.5 * (p[1] + q[1]);
-    }
-    cm_options o;
-    cm_options_init(&o);
-    o.correspondence = CM_CORRESPOND_SIMILARITY, o.remesh = 0;
-    const double *in[2] = {a, b};
-    size_t counts[2] = {N, 2 * N};
-    cm_result *r = NULL;
-    CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r) == CM_OK, "%s", cm_result_message(r));
+    cm_result *r = pair_with_split_copy(a, N, SHIFT, CM_CORRESPOND_SIMILARITY, b);
     if (cm_result_status(r) == CM_OK) {
         CHECK_MSG(cm_result_stats(r)->n == 2 * N, "%zu boundary", cm_result_stats(r)->n);
         for (size_t i = 0; i < cm_result_stats(r)->n; i++) {
