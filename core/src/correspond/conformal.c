@@ -9,8 +9,8 @@
 
 #include "correspond/arclength.h"
 #include "correspond/fe.h"
+#include "geom/angle.h"
 
-#define PI 3.14159265358979323846
 /* The mesh of each polygon is split into four until it has this many
  * triangles. */
 #define MIN_TRIANGLES 4000
@@ -73,19 +73,19 @@ static cm_status disk_build(const double *input, size_t n, int reversed, disk *d
         if (s == CM_OK) s = cm_fe_harmonic_measure(&m, cm_fe_deepest(&m, n, inner, ni), 1, w, err);
         free(inner);
         if (s == CM_OK) {
-            double acc = 0, first = PI * w[0];
+            double acc = 0, first = CM_PI * w[0];
             d->s[0] = 0;
             for (size_t j = 0; j < nb; j++) {
                 const double *p = m.xy + 2 * m.bnode[j], *q = m.xy + 2 * m.bnode[(j + 1) % nb];
                 d->s[j + 1] = d->s[j] + hypot(q[0] - p[0], q[1] - p[1]);
                 /* node j at the middle of its share of the measure */
-                double t = 2 * PI * (acc + 0.5 * w[j]) - first;
+                double t = 2 * CM_PI * (acc + 0.5 * w[j]) - first;
                 d->theta[j] = j ? fmax(t, d->theta[j - 1]) : 0.0;
                 acc += w[j];
             }
             double total = d->s[nb];
             for (size_t j = 0; j <= nb; j++) d->s[j] /= total;
-            d->s[nb] = 1.0, d->theta[nb] = 2 * PI;
+            d->s[nb] = 1.0, d->theta[nb] = 2 * CM_PI;
             balance(d);
         }
     }
@@ -121,10 +121,10 @@ static void balance(disk *d)
         double complex w = cexp(I * d->theta[j]);
         double t = carg((w - a) / (1 - conj(a) * w));
         if (j == 0) first = t;
-        t = j ? prev + fmax(0.0, remainder(t - prev, 2 * PI)) : t;
+        t = j ? prev + fmax(0.0, remainder(t - prev, 2 * CM_PI)) : t;
         d->theta[j] = t - first, prev = t;
     }
-    for (size_t j = 1; j < nb; j++) d->theta[j] = fmin(fmax(d->theta[j], d->theta[j - 1]), 2 * PI);
+    for (size_t j = 1; j < nb; j++) d->theta[j] = fmin(fmax(d->theta[j], d->theta[j - 1]), 2 * CM_PI);
 }
 
 /* The largest j < len with a[j] <= x (a non-decreasing, a[0] <= x). */
@@ -166,11 +166,11 @@ static double cost(const search *q, double rho)
     double prev = 0, sum = 0, sum2 = 0;
     for (size_t i = 0; i < q->m; i++) {
         double t = carg(q->w[i] * cexp(-I * rho));
-        if (i == 0) t = t < 0 ? t + 2 * PI : t;
-        else t = prev + remainder(t - prev, 2 * PI);
+        if (i == 0) t = t < 0 ? t + 2 * CM_PI : t;
+        else t = prev + remainder(t - prev, 2 * CM_PI);
         prev = t;
-        double turns = floor(t / (2 * PI));
-        double d = turns + lookup(q->g->theta, q->g->s, q->g->nb, t - 2 * PI * turns) - q->s0[i];
+        double turns = floor(t / (2 * CM_PI));
+        double d = turns + lookup(q->g->theta, q->g->s, q->g->nb, t - 2 * CM_PI * turns) - q->s0[i];
         sum += d, sum2 += d * d;
     }
     double mean = sum / (double)q->m;
@@ -184,11 +184,11 @@ static double best_turn(const search *q)
 {
     double best = 0, best_cost = HUGE_VAL;
     for (int r = 0; r < ROTATIONS; r++) {
-        double rho = 2 * PI * r / ROTATIONS, c = cost(q, rho);
+        double rho = 2 * CM_PI * r / ROTATIONS, c = cost(q, rho);
         if (c < best_cost) best_cost = c, best = rho;
     }
     const double golden = 0.5 * (sqrt(5.0) - 1);
-    double lo = best - 2 * PI / ROTATIONS, hi = best + 2 * PI / ROTATIONS;
+    double lo = best - 2 * CM_PI / ROTATIONS, hi = best + 2 * CM_PI / ROTATIONS;
     double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo), f1 = cost(q, x1), f2 = cost(q, x2);
     for (int it = 0; it < GOLDEN_STEPS; it++) {
         if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = cost(q, x1);
@@ -212,7 +212,7 @@ static void tempered(const disk *d, const double *theta, double *p)
 {
     p[0] = 0;
     for (size_t j = 0; j < d->nb; j++) {
-        double ds = d->s[j + 1] - d->s[j], density = ds > 0 ? (theta[j + 1] - theta[j]) / (2 * PI * ds) : 1.0;
+        double ds = d->s[j + 1] - d->s[j], density = ds > 0 ? (theta[j + 1] - theta[j]) / (2 * CM_PI * ds) : 1.0;
         p[j + 1] = p[j] + pow(fmax(density, STRETCH_FLOOR), CM_CONFORMAL_POWER) * ds;
     }
     double total = p[d->nb];
@@ -243,7 +243,7 @@ static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, dou
     double *offset = theta; /* reused: nb values */
     double base = 0;
     for (size_t j = 0; j < nb; j++) {
-        double t = theta[j] - 2 * PI * floor(theta[j] / (2 * PI));
+        double t = theta[j] - 2 * CM_PI * floor(theta[j] / (2 * CM_PI));
         double o = lookup(d0->s, p0, d0->nb, lookup(d0->theta, d0->s, d0->nb, t)) - pg[j];
         if (j == 0) base = o;
         offset[j] = remainder(o - base, 1.0);
@@ -279,7 +279,7 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
     double *s0 = malloc(SEARCH_SAMPLES * sizeof *s0);
     if (s == CM_OK && !s0) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
     for (size_t i = 0; s == CM_OK && usable && i < SEARCH_SAMPLES; i++) {
-        double t = 2 * PI * (double)i / SEARCH_SAMPLES;
+        double t = 2 * CM_PI * (double)i / SEARCH_SAMPLES;
         w0[i] = cexp(I * t);
         s0[i] = lookup(disks[0].theta, disks[0].s, disks[0].nb, t);
     }

@@ -551,13 +551,11 @@ static int corners_near(const cm_kmesh *km, int32_t t, int32_t *out)
 
 static int grow_changed(failed_moves *f, size_t need)
 {
-    if (need <= f->cap) return 0;
-    size_t cap = f->cap ? f->cap : 256;
-    while (cap < need) cap *= 2;
-    uint32_t *a = realloc(f->changed, cap * sizeof *a);
-    if (!a) return -1;
-    memset(a + f->cap, 0, (cap - f->cap) * sizeof *a);
-    f->changed = a, f->cap = cap;
+    size_t old = f->cap;
+    void *a = f->changed;
+    if (cm_grow(&a, &f->cap, need, sizeof *f->changed)) return -1;
+    f->changed = a;
+    memset(f->changed + old, 0, (f->cap - old) * sizeof *f->changed);
     return 0;
 }
 
