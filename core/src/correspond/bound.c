@@ -52,8 +52,8 @@
 #include <string.h>
 
 #include "correspond/fe.h"
+#include "geom/angle.h"
 
-#define CM_BOUND_PI 3.14159265358979323846
 /* The finite element mesh of each polygon is split into four until it has
  * at least this many triangles (a rectangle's moduli come out exact; what
  * the bound loses against bench/correspondence_bound.py is in
@@ -100,13 +100,13 @@ double cm_bound_dilatation(double alpha)
 double cm_bound_angle(double K)
 {
     if (!(K > 1.0)) return 60.0;
-    double lo = 1e-12, hi = CM_BOUND_PI / 3;
+    double lo = 1e-12, hi = CM_PI / 3;
     for (int i = 0; i < 80; i++) {
         double mid = 0.5 * (lo + hi);
         if (cm_bound_dilatation(mid) >= K) lo = mid;
         else hi = mid;
     }
-    return fmin(60.0, hi * 180.0 / CM_BOUND_PI * (1 + 1e-12));
+    return fmin(60.0, hi * 180.0 / CM_PI * (1 + 1e-12));
 }
 
 /* Interior angle, degrees in (0, 360), of a counter-clockwise polygon at i. */
@@ -114,7 +114,7 @@ static double corner_deg(const double *xy, size_t n, size_t i)
 {
     const double *p = xy + 2 * ((i + n - 1) % n), *v = xy + 2 * i, *q = xy + 2 * ((i + 1) % n);
     double ux = q[0] - v[0], uy = q[1] - v[1], wx = p[0] - v[0], wy = p[1] - v[1];
-    double a = atan2(ux * wy - uy * wx, ux * wx + uy * wy) * 180.0 / CM_BOUND_PI;
+    double a = atan2(ux * wy - uy * wx, ux * wx + uy * wy) * 180.0 / CM_PI;
     return a <= 0 ? a + 360.0 : a;
 }
 
@@ -193,7 +193,7 @@ static cm_status fe_circle(cm_fe_mesh *m, size_t n, double *angle, cm_error *err
 {
     long sample[CM_FE_SAMPLE], ns = cm_fe_sample_interior(m, sample), source[CM_BOUND_VIEWS];
     if (ns == 0) {
-        for (size_t i = 0; i < CM_BOUND_VIEWS * n; i++) angle[i] = 2 * CM_BOUND_PI * (double)(i % n) / (double)n;
+        for (size_t i = 0; i < CM_BOUND_VIEWS * n; i++) angle[i] = 2 * CM_PI * (double)(i % n) / (double)n;
         return CM_OK;
     }
     source[0] = cm_fe_deepest(m, n, sample, ns);
@@ -221,7 +221,7 @@ static cm_status fe_circle(cm_fe_mesh *m, size_t n, double *angle, cm_error *err
         double acc = 0;
         long step = 1L << m->levels;
         for (long j = 0; j < m->nb; j++) {
-            if (j % step == 0) angle[(size_t)e * n + (size_t)(j / step)] = 2 * CM_BOUND_PI * (acc + 0.5 * w[j]);
+            if (j % step == 0) angle[(size_t)e * n + (size_t)(j / step)] = 2 * CM_PI * (acc + 0.5 * w[j]);
             acc += w[j];
         }
     }
@@ -256,9 +256,9 @@ static double log_modulus(const double *angle, size_t n, const long q[4])
         double g[4], least = INFINITY;
         for (int i = 0; i < 3; i++) { /* angles in [0, 2 pi) */
             g[i] = view[q[i + 1]] - view[q[i]];
-            if (g[i] < 0) g[i] += 2 * CM_BOUND_PI;
+            if (g[i] < 0) g[i] += 2 * CM_PI;
         }
-        g[3] = 2 * CM_BOUND_PI - g[0] - g[1] - g[2];
+        g[3] = 2 * CM_PI - g[0] - g[1] - g[2];
         for (int i = 0; i < 4; i++) least = fmin(least, g[i]);
         if (least > sep) sep = least, memcpy(gap, g, sizeof g);
     }
