@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "correspond/arclength.h"
+#include "base/order.h"
 
 void cm_boundary_map_clear(cm_boundary_map *map)
 {
@@ -306,12 +307,6 @@ static cm_status start_at_shared(cm_boundary_map *out, int *shared, cm_error *er
     return CM_OK;
 }
 
-static int by_value(const void *pa, const void *pb)
-{
-    double a = *(const double *)pa, b = *(const double *)pb;
-    return (a > b) - (a < b);
-}
-
 /* Walks of the given parameters, each less shift[g] (modulo 1). */
 static cm_status param_walks(const double *const *polygons, const size_t *counts, size_t k, const int *orientation,
                              const double *const *params, const double *shift, walk *walks, cm_error *err)
@@ -365,7 +360,7 @@ cm_status cm_correspond_params(const double *const *polygons, const size_t *coun
     if (s == CM_OK && !all) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
     if (all) {
         for (size_t g = 0, at = 0; g < k; at += counts[g], g++) memcpy(all + at, params[g], counts[g] * sizeof *all);
-        qsort(all, total, sizeof *all, by_value);
+        qsort(all, total, sizeof *all, cm_compare_doubles);
         double gap = all[0] + 1.0 - all[total - 1], middle = 0.5 * (all[total - 1] + all[0] + 1.0);
         for (size_t x = 1; x < total; x++)
             if (all[x] - all[x - 1] > gap) gap = all[x] - all[x - 1], middle = 0.5 * (all[x] + all[x - 1]);

@@ -9,6 +9,7 @@
 
 #include "correspond/arclength.h"
 #include "correspond/fe.h"
+#include "base/order.h"
 #include "geom/angle.h"
 
 /* The mesh of each polygon is split into four until it has this many
@@ -198,12 +199,6 @@ static double best_turn(const search *q)
     return fmin(f1, f2) < best_cost ? mid : best;
 }
 
-static int by_value(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
 /* The tempered parameter of a disk's boundary nodes (nb + 1 values from 0
  * to 1): the running integral of (d theta / d s)^CM_CONFORMAL_POWER over
  * arc length, normalised. A part the conformal map crowds by e^-x is
@@ -248,7 +243,7 @@ static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, dou
         if (j == 0) base = o;
         offset[j] = remainder(o - base, 1.0);
     }
-    qsort(offset, nb, sizeof *offset, by_value);
+    qsort(offset, nb, sizeof *offset, cm_compare_doubles);
     double from = base + offset[nb / 2];
     for (size_t c = 0; c < n; c++) {
         double q = from + pg[c * levels];

@@ -13,11 +13,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geom/angle.h"
 #include "geom/predicates.h"
 #include "geom/visibility.h"
 #include "geom/xpoint.h"
-
-#define PI 3.14159265358979323846
 
 /* How a vertex is reached: lit through its pocket's window (the previous
  * bend lies beyond that window, in the parent pocket), or from a lit point
@@ -645,7 +644,7 @@ static int near_bend(cm_linkpart *lp, long Q, long w, double y[2], long *id, lon
                  *pn = lp->xy + 2 * ((w + 1) % lp->m);
     double a0 = atan2(pn[1] - pw[1], pn[0] - pw[0]), a1 = atan2(pp[1] - pw[1], pp[0] - pw[0]);
     double span = a1 - a0;
-    while (span <= 0) span += 2 * PI;
+    while (span <= 0) span += 2 * CM_PI;
     double scale = fmin(hypot(pn[0] - pw[0], pn[1] - pw[1]), hypot(pp[0] - pw[0], pp[1] - pw[1]));
     bend_choice best = {{0, 0}, 0, -1, -1, 0};
     for (size_t fi = 0; fi < sizeof fractions / sizeof fractions[0]; fi++) {

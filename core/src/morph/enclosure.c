@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "morph/enclosure.h"
+#include "base/order.h"
 #include "geom/angle.h"
 #include "geom/predicates.h"
 
@@ -324,13 +325,6 @@ static cm_status find_ribbon(enclosure *e, double far, bridge br[2])
     return CM_OK;
 }
 
-
-static int angle_less(const void *pa, const void *pb)
-{
-    double a = *(const double *)pa, b = *(const double *)pb;
-    return (a > b) - (a < b);
-}
-
 static double normalize_angle(double a)
 {
     a = fmod(a, 2 * CM_PI);
@@ -349,7 +343,7 @@ static size_t enclosure_angles(const bridge br[2], double *angles, size_t *ia, s
         double t = 2 * CM_PI * j / REGULAR_VERTICES;
         if (angle_gap(t, a) >= MIN_GAP && angle_gap(t, b) >= MIN_GAP) angles[m++] = t;
     }
-    qsort(angles, m, sizeof *angles, angle_less);
+    qsort(angles, m, sizeof *angles, cm_compare_doubles);
     for (size_t i = 0; i < m; i++) {
         if (angles[i] == a) *ia = i;
         if (angles[i] == b) *ib = i;
