@@ -37,8 +37,10 @@ the forced moves tried. Medians per mode at the end.
 import argparse
 import json
 import os
+import shutil
 import statistics
 import sys
+import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import remesh_bench  # noqa: E402
@@ -113,8 +115,6 @@ def main(argv):
     gen = args.gen_pairs or os.path.join(os.path.dirname(os.path.abspath(args.compatmesh)), "cm_gen_pairs")
     if not os.access(gen, os.X_OK):
         ap.error("--gen-pairs: %s is not an executable" % gen)
-    import tempfile
-    import shutil
     work = tempfile.mkdtemp(prefix="remesh_curve_")
     runs = []
     try:
