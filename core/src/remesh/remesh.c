@@ -55,6 +55,10 @@
 #include "remesh/smooth.h"
 #include "base/clock.h"
 #include "geom/angle.h"
+#ifdef CM_REMESH_TRACE
+#include <stdio.h>
+#include <time.h>
+#endif
 
 /* Sweeps of flips + smoothing after one split; the polish sweeps over the
  * whole mesh at the end. */
@@ -124,6 +128,31 @@ typedef struct remesher {
     long flips;
     long spent;    /* Steiner vertices added before refine() */
 } remesher;
+
+/* ---- progress trace (cmake -DCM_REMESH_TRACE=ON; never in a release) ------ */
+
+#ifdef CM_REMESH_TRACE
+/* One line per step to stderr, for bench/remesh_curve.py: the remesher
+ * (0 greedy, 1 map-aware), the step, the process's CPU seconds less what
+ * the trace itself spent, the smallest angle (degrees), the Steiner
+ * vertices and the forced moves tried so far. */
+static double trace_spent;
+static long trace_forced;
+
+static double trace_cpu(void) { return (double)clock() / CLOCKS_PER_SEC; }
+
+static void trace(const remesher *x, const char *step)
+{
+    double t0 = trace_cpu();
+    fprintf(stderr, "cm_trace %d %s %.6f %.9g %ld %ld\n", (int)x->o->remesher, step, t0 - trace_spent,
+            cm_kmesh_min_angle(&x->km) * 180.0 / CM_PI, (long)(x->km.live_v - x->km.n), trace_forced);
+    trace_spent += trace_cpu() - t0;
+}
+#define TRACE_FORCED() (trace_forced++)
+#else
+#define trace(x, step) ((void)0)
+#define TRACE_FORCED() ((void)0)
+#endif
 
 /* ---- edges not to split again --------------------------------------------- */
 
@@ -463,6 +492,7 @@ static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
         if (x->o->area_every > 0 && rep->iterations % (size_t)x->o->area_every == 0 &&
             try_area_equalisation(x))
             goto oom;
+        trace(x, "refine");
         double done = fmin(1.0, fmax(1 + cm_kmesh_min_slack(km) / x->target, (double)added / budget));
         if (cm_progress_poll(x->progress, CM_STAGE_REMESH, done)) {
             free(cand);
@@ -641,12 +671,14 @@ static cm_status step_out(remesher *x, size_t n)
                     uint64_t key = forced_key(km, (enum forced_move)kind, near[j]);
                     if (still_failed(f, key)) continue;
                     int s = try_forced(x, (enum forced_move)kind, near[j]);
+                    TRACE_FORCED();
                     if (s < 0 || (s == 0 && remember_failed(x, key, near[j])) || (s > 0 && mark_changed(x)))
                         return stop_status(x);
                     gained = s;
                 }
             }
         }
+        trace(x, gained ? "step" : "step_none");
         if (!gained) break;
     }
     return CM_OK;
@@ -761,20 +793,25 @@ static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const do
     cm_status s = cm_kmesh_build(&x->km, mesh, n);
     if (s != CM_OK) return s;
     set_caps(x, bcap, n, rep);
+    trace(x, "start");
     long removed = coarsen(x, 0.0);
     if (removed < 0 || improve_everywhere(x)) return stop_status(x);
     rep->collapses += removed;
+    trace(x, "cleanup");
     if (cm_progress_report(progress, CM_STAGE_REMESH, 0.0)) return CM_ERR_CANCELLED;
     if (o->remesher == CM_REMESHER_MAP) {
         if ((s = map_start(x, n, rep)) != CM_OK) return s;
         if (improve_everywhere(x)) return stop_status(x);
+        trace(x, "map");
     }
     if ((s = refine(x, n, rep)) != CM_OK) return s;
     cm_kmesh_drop_candidates(&x->km); /* no split after this one picks from them */
     if (improve_everywhere(x)) return stop_status(x);
+    trace(x, "polish");
     if ((s = step_out(x, n)) != CM_OK) return s;
     long late = coarsen(x, o->min_angle_deg * CM_PI / 180.0);
     if (late < 0 || improve_everywhere(x)) return stop_status(x);
+    trace(x, "end");
     rep->collapses += late;
     rep->flips = x->flips;
     rep->min_angle_deg = cm_kmesh_min_angle(&x->km) * 180.0 / CM_PI;

@@ -1,0 +1,164 @@
+"""The remesher's time/quality curve: when each run reaches its final
+smallest angle, as a share of its CPU time.
+
+usage: remesh_curve.py --compatmesh TRACE_BIN [--quick] [--only REGEX]
+                       [--modes index,auto] [--json FILE] [--gen-pairs BIN]
+
+TRACE_BIN is a compatmesh CLI built with `-DCM_REMESH_TRACE=ON`: its
+remesher writes one line per step to stderr (core/src/remesh/remesh.c,
+trace()): the remesher (0 greedy, 1 map-aware), the step, the process's CPU
+seconds (less the trace's own), the smallest angle in degrees, the Steiner
+vertices and the forced moves tried so far. The steps: start (the working
+mesh built), cleanup (surplus Steiner vertices collapsed, flips +
+smoothing), map (the map-aware start), refine (after each refinement
+round), polish (flips + smoothing everywhere), step / step_none (after each
+round of forced moves, one that gained / the last, which did not), end
+(the late coarsening and the final polish). The pairs are remesh_bench.py's
+(same generator, same --quick subset and modes).
+
+Per run, angle(t) is the smallest angle of the remesher's current mesh; when
+the greedy remesher is followed by the map-aware rescue, the greedy result
+counts till the rescue's mesh is better (the better result is kept). Final:
+the last value. Printed per run: the final angle, Steiner count, process
+CPU (os.wait4) and the shares of it
+  pre      before the first start line (input, correspondence, construction)
+  clean    cleanup (and the map-aware start)
+  refine   the refinement rounds
+  polish   the polish after them
+  forced   the forced-move rounds
+  late     the late coarsening and final polish
+  rescue   the map-aware rescue run (all its steps)
+  post     after the last end line (writing and checking the result)
+and t90 / t95 / t99 / t100: the CPU share at which angle(t) first reaches
+that share of the final angle. Also: the refinement's rounds, the share of
+them (CPU) after its angle last rose, the angle gained by forced moves and
+the forced moves tried. Medians per mode at the end.
+"""
+import argparse
+import json
+import os
+import shutil
+import statistics
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import remesh_bench  # noqa: E402
+
+LEVELS = (0.90, 0.95, 0.99, 1.00)
+STAGE_OF = {"start": "pre", "cleanup": "clean", "map": "clean", "refine": "refine", "polish": "polish",
+            "step": "forced", "step_none": "forced", "end": "late"}
+
+
+def parse_trace(stderr):
+    """[(remesher, step, cpu, angle, steiner, forced)] from the trace lines."""
+    out = []
+    for line in stderr.splitlines():
+        w = line.split()
+        if len(w) == 7 and w[0] == "cm_trace":
+            out.append((int(w[1]), w[2], float(w[3]), float(w[4]), int(w[5]), int(w[6])))
+    return out
+
+
+def analyse(trace, cpu):
+    """The numbers of one run from its trace and its process CPU."""
+    stages = dict.fromkeys(("pre", "clean", "refine", "polish", "forced", "late", "rescue", "post"), 0.0)
+    prev_t = 0.0
+    first_remesher = trace[0][0]
+    for remesher, step, t, *_ in trace:
+        stage = "rescue" if remesher != first_remesher else STAGE_OF[step]
+        stages[stage] += t - prev_t
+        prev_t = t
+    stages["post"] += max(0.0, cpu - prev_t)
+    # angle(t): the current run's, or a finished earlier run's when better.
+    curve, done_best = [], 0.0
+    for remesher, step, t, angle, steiner, _ in trace:
+        if remesher != first_remesher and step == "start":
+            done_best = curve[-1][1] if curve else 0.0
+        curve.append((t, max(angle, done_best) if remesher != first_remesher else angle, steiner))
+    final = curve[-1][1]
+    reach = {}
+    for level in LEVELS:
+        hit = next((t for t, a, _ in curve if a >= level * final), curve[-1][0])
+        reach[level] = hit / cpu
+    greedy = [r for r in trace if r[0] == first_remesher]
+    rounds = [r for r in greedy if r[1] == "refine"]
+    polish = next((r for r in greedy if r[1] == "polish"), None)
+    end = next((r for r in greedy if r[1] == "end"), None)
+    refine_tail = 0.0
+    if rounds:
+        last_rise, best = None, -1.0
+        for r in rounds:
+            if r[3] > best + 1e-12:
+                best, last_rise = r[3], r[2]
+        refine_tail = (rounds[-1][2] - last_rise) / cpu
+    forced_gain = (end[3] - polish[3]) if polish and end else 0.0
+    steps = [r for r in greedy if r[1] in ("step", "step_none")]
+    return {"stages": {k: v / cpu for k, v in stages.items()}, "reach": reach, "final": final,
+            "peak": max(a for _, a, _ in curve), "steiner": curve[-1][2], "rounds": len(rounds),
+            "refine_tail": refine_tail, "polish_angle": polish[3] if polish else None,
+            "forced_gain": forced_gain, "forced_rounds": len(steps),
+            "forced_tries": steps[-1][5] if steps else 0, "rescued": any(r[0] != first_remesher for r in trace),
+            "curve": curve, "trace": trace}
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--compatmesh", required=True, help="a compatmesh CLI built with -DCM_REMESH_TRACE=ON")
+    ap.add_argument("--gen-pairs", help="cm_gen_pairs (default: next to --compatmesh, else build/bin)")
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--only")
+    ap.add_argument("--modes", default="index,auto")
+    ap.add_argument("--json", help="also write every run's numbers and curve here")
+    ap.add_argument("--timeout", type=float, default=900)
+    args = ap.parse_args(argv)
+    gen = args.gen_pairs or os.path.join(os.path.dirname(os.path.abspath(args.compatmesh)), "cm_gen_pairs")
+    if not os.access(gen, os.X_OK):
+        ap.error("--gen-pairs: %s is not an executable" % gen)
+    work = tempfile.mkdtemp(prefix="remesh_curve_")
+    runs = []
+    try:
+        pairs = remesh_bench.select(remesh_bench.generate(gen, work), args.quick, args.only)
+        for pair in pairs:
+            for mode in args.modes.split(","):
+                if mode != "index" and pair.family != "hard":
+                    continue
+                out = os.path.join(work, "run")
+                shutil.rmtree(out, ignore_errors=True)
+                cmd = [args.compatmesh, "triangulate", *pair.files, "--out-dir", out]
+                if mode != "index":
+                    cmd += ["--correspondence", mode]
+                code, cpu, _, _, err = remesh_bench.run_measured(cmd, args.timeout)
+                trace = parse_trace(err)
+                if code != 0 or not trace:
+                    print("remesh_curve: %s (%s) failed: %s" % (pair.name, mode, err.strip()[-200:]),
+                          file=sys.stderr)
+                    return 1
+                a = analyse(trace, cpu)
+                a.update(name=pair.name, half=pair.half, mode=mode, cpu=cpu)
+                runs.append(a)
+                print("%-32s %-5s %6.2f deg %4d St %.3f s  t90 %.2f t95 %.2f t99 %.2f t100 %.2f  "
+                      "pre %.2f clean %.2f refine %.2f polish %.2f forced %.2f late %.2f rescue %.2f post %.2f"
+                      "  rounds %d tail %.2f forced +%.2f deg (%d rounds, %d tries)"
+                      % (pair.name, mode, a["final"], a["steiner"], cpu, *[a["reach"][lv] for lv in LEVELS],
+                         *a["stages"].values(), a["rounds"], a["refine_tail"], a["forced_gain"],
+                         a["forced_rounds"], a["forced_tries"]), flush=True)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+    for mode in args.modes.split(","):
+        rs = [r for r in runs if r["mode"] == mode]
+        if not rs:
+            continue
+        med = lambda f: statistics.median(f(r) for r in rs)  # noqa: E731
+        print("%s, %d runs: median t90 %.2f t95 %.2f t99 %.2f t100 %.2f; stages %s; refine tail %.2f"
+              % (mode, len(rs), *[med(lambda r, lv=lv: r["reach"][lv]) for lv in LEVELS],
+                 " ".join("%s %.2f" % (k, med(lambda r, k=k: r["stages"][k])) for k in rs[0]["stages"]),
+                 med(lambda r: r["refine_tail"])))
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(runs, f, indent=1)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
