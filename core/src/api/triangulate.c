@@ -66,14 +66,15 @@ static int32_t input_index(int32_t j, size_t n, int clockwise)
 
 /* The first compatible triangulation, by the chosen method. */
 static cm_status construct(cm_result *r, const double *const *geoms, const int32_t *const *tris,
-                           size_t k, size_t n, const cm_options *o, cm_progress *progress)
+                           size_t k, size_t n, const cm_on_edges *on, const cm_options *o, cm_progress *progress)
 {
     if (o->method == CM_METHOD_OVERLAY) {
         size_t centroids = 0;
         return cm_overlay(geoms, tris, k, n, &r->mesh, &centroids, &r->error);
     }
     cm_partition_stats ps;
-    cm_status s = cm_partition(geoms, tris, k, n, progress, &r->mesh, &ps, &r->error);
+    cm_status s = on ? cm_partition_on_edges(geoms, tris, k, n, on, progress, &r->mesh, &ps, &r->error)
+                     : cm_partition(geoms, tris, k, n, progress, &r->mesh, &ps, &r->error);
     r->stats.fallback_count = ps.fallback_count;
     if (s != CM_ERR_INTERNAL && s != CM_ERR_PRECISION) return s;
     /* A piece the overlay could not place in doubles (a sliver thinner
@@ -86,8 +87,10 @@ static cm_status construct(cm_result *r, const double *const *geoms, const int32
     return cm_overlay(geoms, tris, k, n, &r->mesh, &centroids, &r->error);
 }
 
+/* on: where the boundary vertices lie on the inputs (NULL: all input
+ * vertices, the index correspondence and the pieces of polygons with holes). */
 static cm_status build_first(cm_result *r, const double *const *polygons, size_t k, size_t n,
-                             int clockwise, const cm_options *o, cm_progress *progress)
+                             int clockwise, const cm_on_edges *on, const cm_options *o, cm_progress *progress)
 {
     cm_status s = CM_ERR_NO_MEMORY;
     double **geoms = calloc(k, sizeof *geoms);
@@ -129,7 +132,7 @@ static cm_status build_first(cm_result *r, const double *const *polygons, size_t
             r->stats.distortion_quad[i] = b.quad[i] < 0 ? -1 : input_index((int32_t)b.quad[i], n, clockwise);
         r->stats.seconds_ceiling += cm_seconds_now() - t;
     }
-    s = construct(r, (const double *const *)geoms, (const int32_t *const *)tris, k, n, o, progress);
+    s = construct(r, (const double *const *)geoms, (const int32_t *const *)tris, k, n, on, o, progress);
 done:
     if (geoms)
         for (size_t g = 0; g < k; g++) free(geoms[g]);
@@ -218,7 +221,17 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
     if (cm_progress_report(&progress, CM_STAGE_TRIANGULATE, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
 
     double ceiling_before = r->stats.seconds_ceiling;
-    s = build_first(r, polygons, k, n, clockwise, o, &progress);
+    cm_on_edges on_edges, *on = NULL;
+    size_t *inputs = NULL;
+    if (r->boundary.n == n && r->boundary.k == k && !clockwise) { /* the arc-length path's boundaries */
+        if (!(inputs = calloc(k, sizeof *inputs))) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        for (size_t g = 0; g < k; g++)
+            for (size_t i = 0; i < n; i++) inputs[g] += r->boundary.t[g][i] == 0;
+        on_edges = (cm_on_edges){(const int32_t *const *)r->boundary.edge, (const double *const *)r->boundary.t, inputs};
+        on = &on_edges;
+    }
+    s = build_first(r, polygons, k, n, clockwise, on, o, &progress);
+    free(inputs);
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     r->stats.seconds_build = cm_seconds_now() - t1 - (r->stats.seconds_ceiling - ceiling_before);
     s = remesh_stage(r, n, o, &progress);
@@ -559,7 +572,7 @@ static cm_status build_pieces(cm_result *r, const double *const *geoms, size_t k
             piece_xy[g] = xy;
         }
         r->stats.fallback_count = 0;
-        s = build_first(r, piece_xy, k, m, 0, &piece_options, progress);
+        s = build_first(r, piece_xy, k, m, 0, NULL, &piece_options, progress);
         fallbacks += r->stats.fallback_count;
         if (s == CM_OK && cm_holes_glue(&whole, ids, m, &r->mesh) != CM_OK)
             s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
