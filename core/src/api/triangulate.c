@@ -10,6 +10,7 @@
 #include "api/result.h"
 #include "base/clock.h"
 #include "base/progress.h"
+#include "geom/angle.h"
 #include "construct/holes.h"
 #include "construct/holes_overlay.h"
 #include "construct/overlay.h"
@@ -436,6 +437,29 @@ static void locate_in_input(cm_result *r, cm_status s)
             (long)r->boundary.edge[g][v], g, detail);
 }
 
+/* Arclength and auto put points on the input edges anyway: where an edge
+ * of the common boundary caps what the remesher can reach below its aim
+ * (the target, or the ceiling when lower), it is halved compatibly
+ * (cm_boundary_map_split_caps), at most doubling the boundary. The index
+ * correspondence keeps its boundary (interior Steiner vertices only). */
+static cm_status split_capped_edges(cm_result *r, const double *const *polygons, const size_t *counts,
+                                    const int *orientation, const cm_options *o)
+{
+    double aim = o->min_angle_deg, t = cm_seconds_now();
+    cm_status s = CM_OK;
+    if (o->ceiling) {
+        double deg = 60;
+        s = ceiling_of(r, &r->boundary, &deg);
+        aim = fmin(aim, deg);
+        r->stats.seconds_ceiling += cm_seconds_now() - t;
+    }
+    size_t added = 0;
+    if (s == CM_OK)
+        s = cm_boundary_map_split_caps(&r->boundary, polygons, counts, orientation, aim * CM_PI / 180.0,
+                                       r->boundary.n, NULL, &added, &r->error);
+    return s;
+}
+
 /* CM_CORRESPOND_ARCLENGTH and _AUTO: the boundaries in correspondence,
  * then the pipeline on them. */
 static cm_status run_arclength(cm_result *r, const double *const *polygons, const size_t *counts,
@@ -446,6 +470,7 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
     cm_status s = !k || (orientation && merged_counts) ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
     if (s == CM_OK) s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, 1, NULL, &r->boundary);
+    if (s == CM_OK && !every_vertex && o->remesh) s = split_capped_edges(r, polygons, counts, orientation, o);
     if (s == CM_OK) {
         for (size_t g = 0; g < k; g++) merged_counts[g] = r->boundary.n;
         s = run_pipeline(r, (const double *const *)r->boundary.xy, merged_counts, k, o);
