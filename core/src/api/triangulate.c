@@ -440,8 +440,11 @@ static void locate_in_input(cm_result *r, cm_status s)
 /* Arclength and auto put points on the input edges anyway: where an edge
  * of the common boundary caps what the remesher can reach below its aim
  * (the target, or the ceiling when lower), it is halved compatibly
- * (cm_boundary_map_split_caps), at most doubling the boundary. The index
+ * (cm_boundary_map_split_caps), adding at most as many vertices as the
+ * boundary has, plus CM_CAP_SPLIT_EXTRA for small ones. The index
  * correspondence keeps its boundary (interior Steiner vertices only). */
+#define CM_CAP_SPLIT_EXTRA 100
+
 static cm_status split_capped_edges(cm_result *r, const double *const *polygons, const size_t *counts,
                                     const int *orientation, const cm_options *o)
 {
@@ -456,7 +459,7 @@ static cm_status split_capped_edges(cm_result *r, const double *const *polygons,
     size_t added = 0;
     if (s == CM_OK)
         s = cm_boundary_map_split_caps(&r->boundary, polygons, counts, orientation, aim * CM_PI / 180.0,
-                                       r->boundary.n, NULL, &added, &r->error);
+                                       r->boundary.n + CM_CAP_SPLIT_EXTRA, NULL, &added, &r->error);
     return s;
 }
 
