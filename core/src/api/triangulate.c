@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/capsplit.h"
 #include "api/halfedge.h"
 #include "api/input.h"
 #include "api/quality.h"

@@ -4,7 +4,6 @@
 #define CM_CORRESPOND_SPLIT_H
 
 #include "base/error.h"
-#include "base/progress.h"
 #include "correspond/arclength.h"
 
 /* Splits every edge j -> j + 1 of the common boundary into the same number
@@ -22,17 +21,6 @@ cm_status cm_boundary_map_split(cm_boundary_map *map, const double *const *polyg
  * equal-parameter pieces in every polygon, as cm_boundary_map_split does. */
 cm_status cm_boundary_map_split_edges(cm_boundary_map *map, const double *const *polygons, const size_t *counts,
                                       const int *orientation, const size_t *pieces, cm_error *err);
-
-/* Halves, in every polygon at the same parameter, the edges whose edge cap
- * (remesh/criteria.h, with its margin, the smallest over the polygons)
- * lies below aim (radians) and below half the corner at either end, for a
- * few rounds or until max_added vertices were added (*added of them).
- * Caps never fall by a split, so an edge is split only where no triangle
- * on it could reach the aim. CM_OK, CM_ERR_NO_MEMORY, CM_ERR_CANCELLED or
- * CM_ERR_INTERNAL (a boundary not simple; message on err). */
-cm_status cm_boundary_map_split_caps(cm_boundary_map *map, const double *const *polygons, const size_t *counts,
-                                     const int *orientation, double aim, size_t max_added, cm_progress *progress,
-                                     size_t *added, cm_error *err);
 
 /* The most boundary vertices a split may make. */
 #define CM_MAX_BOUNDARY ((size_t)1 << 24)

@@ -12,6 +12,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "api/capsplit.h"
 #include "correspond/split.h"
 #include "geom/polytri.h"
 #include "remesh/criteria.h"

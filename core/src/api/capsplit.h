@@ -1,0 +1,23 @@
+/* The common boundary's edges split where the remesher could not reach
+ * its aim with them whole (arclength and auto only: the index
+ * correspondence keeps its boundary). Here rather than in correspond/:
+ * it reads the remesher's edge caps. */
+#ifndef CM_API_CAPSPLIT_H
+#define CM_API_CAPSPLIT_H
+
+#include "base/error.h"
+#include "base/progress.h"
+#include "correspond/arclength.h"
+
+/* Halves, in every polygon at the same parameter, the edges whose edge cap
+ * (remesh/criteria.h, with its margin, the smallest over the polygons)
+ * lies below aim (radians) and below half the corner at either end, for a
+ * few rounds or until max_added vertices were added (*added of them).
+ * Caps never fall by a split, so an edge is split only where no triangle
+ * on it could reach the aim. CM_OK, CM_ERR_NO_MEMORY, CM_ERR_CANCELLED or
+ * CM_ERR_INTERNAL (a boundary not simple; message on err). */
+cm_status cm_boundary_map_split_caps(cm_boundary_map *map, const double *const *polygons, const size_t *counts,
+                                     const int *orientation, double aim, size_t max_added, cm_progress *progress,
+                                     size_t *added, cm_error *err);
+
+#endif
