@@ -14,8 +14,9 @@
  * lies below aim (radians) and below half the corner at either end, for a
  * few rounds or until max_added vertices were added (*added of them).
  * Caps never fall by a split, so an edge is split only where no triangle
- * on it could reach the aim. CM_OK, CM_ERR_NO_MEMORY, CM_ERR_CANCELLED or
- * CM_ERR_INTERNAL (a boundary not simple; message on err). */
+ * on it could reach the aim. A boundary that is not simple (the rounding
+ * of points added on edges) is left as it is, for the pipeline's check to
+ * report. CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED (message on err). */
 cm_status cm_boundary_map_split_caps(cm_boundary_map *map, const double *const *polygons, const size_t *counts,
                                      const int *orientation, double aim, size_t max_added, cm_progress *progress,
                                      size_t *added, cm_error *err);

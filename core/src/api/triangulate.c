@@ -454,8 +454,13 @@ static cm_status split_capped_edges(cm_result *r, const double *const *polygons,
     if (o->ceiling) {
         double deg = 60;
         s = ceiling_of(r, &r->boundary, &deg);
-        aim = fmin(aim, deg);
         r->stats.seconds_ceiling += cm_seconds_now() - t;
+        if (s == CM_ERR_NO_MEMORY || s == CM_ERR_CANCELLED) return s;
+        if (s != CM_OK) { /* a boundary the pipeline's check will refuse, saying where */
+            cm_error_init(&r->error);
+            return CM_OK;
+        }
+        aim = fmin(aim, deg);
     }
     size_t added = 0;
     if (s == CM_OK)
