@@ -607,6 +607,8 @@ def main(argv):
                     derive(run, target_of(row, mode), row["cgal"])
                 if args.baseline:
                     row.setdefault("versus", {})[mode] = versus(runs["new"], runs["baseline"])
+            if not row["runs"]:  # a bench-set pair when only auto is asked for
+                continue
             rows.append(row)
             new = next(iter(row["runs"].values()))["new"]
             print("[%d/%d] %s T %.1f: %s" % (i + 1, len(pairs), pair.name, row["T_index"],

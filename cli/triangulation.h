@@ -105,7 +105,9 @@ enum {
      "split the boundary edges compatibly (the same number\n"                 \
      "of points on corresponding edges, each input keeping\n"                 \
      "its vertices) until none is longer than L in any\n"                     \
-     "input; default: off"},                                                  \
+     "input; default: off. arclength and auto, when they\n"                  \
+     "remesh, also halve each edge too long for the aim\n"                    \
+     "beside a close stretch of boundary (index never)"},                     \
     {"no-ceiling", OPTION_NO_CEILING, NULL,                                   \
      "skip the ceiling (the certified largest smallest\n"                    \
      "angle any compatible triangulation can have; a few\n"                  \

@@ -127,3 +127,56 @@ def test_max_edge_errors(cm, tmp_path):
         r = cm("triangulate", "a.xy", "b.xy", "-o", "out", "--max-edge", value)
         assert r.returncode == 2 and len(r.stderr.strip().splitlines()) == 1 and message in r.stderr, r.stderr
         assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("mode", ["index", "arclength", "auto"])
+def test_capped_long_sides_are_halved(cm, tmp_path, mode):
+    """An 8 x 1 rectangle against a copy scaled by 2: a triangle on a long
+    side has its apex at most 1 from it, so no angle above atan(1/4) = 14.04
+    degrees while the side is whole. index keeps the four vertices; arclength
+    and auto halve the long sides at the same parameter in both (pieces of
+    2, t = 1/4, 1/2, 3/4, where the edge cap reaches the target 25) and go
+    past it, within the output contract."""
+    a = [(0.0, 0.0), (8.0, 0.0), (8.0, 1.0), (0.0, 1.0)]
+    b = [(1.0, 2.0), (17.0, 2.0), (17.0, 4.0), (1.0, 4.0)]
+    report = run(cm, tmp_path, a, b, "--correspondence", mode)
+    least = min(m["min_angle_deg"] for m in report["meshes"])
+    bound = math.degrees(math.atan(0.25))
+    if mode == "index":
+        assert report["n"] == 4 and least <= bound
+        return
+    check_contract(tmp_path / "out", report, [a, b], ["a", "b"])
+    assert report["n"] == 10 and least > bound
+    expected = [[0, 0], [0, 0.25], [0, 0.5], [0, 0.75], [1, 0], [2, 0], [2, 0.25], [2, 0.5], [2, 0.75], [3, 0]]
+    assert [m["boundary_source"] for m in report["meshes"]] == [expected, expected]
+
+
+def off_triangles(path):
+    tokens = path.read_text().split()
+    nv, nf = int(tokens[1]), int(tokens[2])
+    at = 4 + 3 * nv
+    return [tuple(int(v) for v in tokens[at + 4 * f + 1:at + 4 * f + 4]) for f in range(nf)]
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4])
+def test_no_diagonal_along_an_input_edge(cm, tmp_path, seed):
+    """A slanted quadrilateral gets a star's vertices on its edges, rounded
+    off their lines, so a segment between two of them can pass as a
+    diagonal with a sliver beside it; the construction joins no two boundary
+    vertices that lie on one input edge of either polygon."""
+    a = [(0.0, 0.0), (1.0, 0.3), (0.7, 1.3), (-0.3, 1.0)]
+    b = star(40, seed)
+    report = run(cm, tmp_path, a, b, "--correspondence", "arclength", "--no-remesh")
+    n = report["n"]
+    along = []
+    for (count, mesh) in zip((4, 40), report["meshes"]):
+        source = mesh["boundary_source"]
+
+        def edges_of(v):  # an input vertex lies on two input edges, a point on one
+            e, t = source[v]
+            return {e, (e - 1) % count} if t == 0 else {e}
+        for tri in off_triangles(tmp_path / "out" / "a.off"):
+            for u, w in zip(tri, tri[1:] + tri[:1]):
+                if u < n and w < n and (u - w) % n not in (1, n - 1) and edges_of(u) & edges_of(w):
+                    along.append((u, w))
+    assert along == []

@@ -6,7 +6,10 @@
  * conformal correspondence (CM_CORRESPOND_AUTO without holes) finds the
  * identity between a polygon and a similar copy too, also when the copy
  * has its edges split; CM_CORRESPOND_SIMILARITY keeps the similarity
- * choice. */
+ * choice. Where a boundary edge caps the angle below the aim, arclength
+ * and auto halve it compatibly (an 8 x 1 rectangle: 4 pieces per long
+ * side), index keeps it; the construction joins no two boundary vertices
+ * on one input edge. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -319,6 +322,94 @@ static void test_similarity_mode(void)
     cm_result_free(r);
 }
 
+/* An 8 x 1 rectangle against a copy scaled by 2: a triangle on a long side
+ * has its apex at most 1 from it, so its smallest angle is at most
+ * atan(1 / 4) = 14.04 degrees: index keeps the four vertices and stays
+ * below that; arclength and auto halve the long sides (cap 25 degrees
+ * needs pieces of 2: t = 1/4, 1/2, 3/4) and pass it. */
+static void test_capped_edges_split(void)
+{
+    const double a[8] = {0, 0, 8, 0, 8, 1, 0, 1}, b[8] = {1, 2, 17, 2, 17, 4, 1, 4};
+    const double *in[2] = {a, b};
+    size_t counts[2] = {4, 4};
+    double bound = atan(0.25) * 45.0 / atan(1.0);
+    cm_correspondence modes[3] = {CM_CORRESPOND_INDEX, CM_CORRESPOND_ARCLENGTH, CM_CORRESPOND_AUTO};
+    for (int m = 0; m < 3; m++) {
+        cm_options o;
+        cm_options_init(&o);
+        o.correspondence = modes[m];
+        cm_result *r = NULL;
+        CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r) == CM_OK, "mode %d: %s", m, cm_result_message(r));
+        if (cm_result_status(r) != CM_OK) {
+            cm_result_free(r);
+            continue;
+        }
+        size_t n = cm_result_stats(r)->n;
+        double least = 180;
+        for (size_t g = 0; g < 2; g++) {
+            cm_quality q;
+            CHECK(cm_result_quality(r, g, &q) == CM_OK);
+            least = fmin(least, q.min_angle_deg);
+        }
+        if (m == 0) {
+            CHECK_MSG(n == 4 && least <= bound, "index: %zu boundary vertices, %g degrees", n, least);
+        } else {
+            CHECK_MSG(n == 10 && least > bound, "mode %d: %zu boundary vertices, %g degrees", m, n, least);
+            CHECK_MSG(contract_holds(r, in, counts, 2), "mode %d: output contract", m);
+            static const long edge[10] = {0, 0, 0, 0, 1, 2, 2, 2, 2, 3};
+            static const double at[10] = {0, 0.25, 0.5, 0.75, 0, 0, 0.25, 0.5, 0.75, 0};
+            for (size_t g = 0; g < 2 && n == 10; g++)
+                for (size_t i = 0; i < 10; i++) {
+                    double t;
+                    long e = cm_result_boundary_source(r, g, i, &t);
+                    CHECK_MSG(e == edge[i] && t == at[i], "mode %d, polygon %zu, vertex %zu: edge %ld at %g", m, g, i,
+                              e, t);
+                }
+        }
+        cm_result_free(r);
+    }
+}
+
+/* Do boundary vertices u and w of polygon g lie on one of its input edges
+ * (count input vertices)? */
+static int on_one_edge(const cm_result *r, size_t g, size_t u, size_t w, size_t count)
+{
+    double tu, tw;
+    long eu = cm_result_boundary_source(r, g, u, &tu), ew = cm_result_boundary_source(r, g, w, &tw);
+    long last = (long)count - 1;
+    return eu == ew || (tu == 0 && (ew == eu - 1 || (eu == 0 && ew == last))) ||
+           (tw == 0 && (eu == ew - 1 || (ew == 0 && eu == last)));
+}
+
+/* A slanted quadrilateral against stars: the quadrilateral gets the
+ * stars' vertices on its edges, rounded off their lines, so segments
+ * between them can pass as diagonals; the construction takes none (only
+ * slivers lie beside one). */
+static void test_no_diagonal_along_an_input_edge(void)
+{
+    enum { N = 40 };
+    const double a[8] = {0, 0, 1, 0.3, 0.7, 1.3, -0.3, 1};
+    double b[2 * N];
+    for (int seed = 1; seed <= 8; seed++) {
+        CHECK(rp_star(b, N, (uint64_t)seed) == 0);
+        cm_result *r = pair(a, 4, b, N, NULL, 0, 0);
+        CHECK_MSG(cm_result_status(r) == CM_OK, "seed %d: %s", seed, cm_result_message(r));
+        if (cm_result_status(r) != CM_OK) {
+            cm_result_free(r);
+            continue;
+        }
+        size_t n = cm_result_stats(r)->n, counts[2] = {4, N}, along = 0;
+        const int32_t *tri = cm_result_triangles(r);
+        for (size_t c = 0; c < 3 * cm_result_num_triangles(r); c++) {
+            size_t u = (size_t)tri[c], w = (size_t)tri[c - c % 3 + (c + 1) % 3];
+            if (u >= n || w >= n || (u + 1) % n == w || (w + 1) % n == u) continue;
+            for (size_t g = 0; g < 2; g++) along += on_one_edge(r, g, u, w, counts[g]);
+        }
+        CHECK_MSG(along == 0, "seed %d: %zu triangle sides along an input edge", seed, along);
+        cm_result_free(r);
+    }
+}
+
 int main(void)
 {
     test_different_counts();
@@ -329,5 +420,7 @@ int main(void)
     test_conformal_similar_copy();
     test_auto_conformal_identity();
     test_similarity_mode();
+    test_capped_edges_split();
+    test_no_diagonal_along_an_input_edge();
     return check_summary("test_correspondence");
 }

@@ -4,12 +4,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "api/capsplit.h"
 #include "api/halfedge.h"
 #include "api/input.h"
 #include "api/quality.h"
 #include "api/result.h"
 #include "base/clock.h"
 #include "base/progress.h"
+#include "geom/angle.h"
 #include "construct/holes.h"
 #include "construct/holes_overlay.h"
 #include "construct/overlay.h"
@@ -66,14 +68,15 @@ static int32_t input_index(int32_t j, size_t n, int clockwise)
 
 /* The first compatible triangulation, by the chosen method. */
 static cm_status construct(cm_result *r, const double *const *geoms, const int32_t *const *tris,
-                           size_t k, size_t n, const cm_options *o, cm_progress *progress)
+                           size_t k, size_t n, const cm_on_edges *on, const cm_options *o, cm_progress *progress)
 {
     if (o->method == CM_METHOD_OVERLAY) {
         size_t centroids = 0;
         return cm_overlay(geoms, tris, k, n, &r->mesh, &centroids, &r->error);
     }
     cm_partition_stats ps;
-    cm_status s = cm_partition(geoms, tris, k, n, progress, &r->mesh, &ps, &r->error);
+    cm_status s = on ? cm_partition_on_edges(geoms, tris, k, n, on, progress, &r->mesh, &ps, &r->error)
+                     : cm_partition(geoms, tris, k, n, progress, &r->mesh, &ps, &r->error);
     r->stats.fallback_count = ps.fallback_count;
     if (s != CM_ERR_INTERNAL && s != CM_ERR_PRECISION) return s;
     /* A piece the overlay could not place in doubles (a sliver thinner
@@ -86,8 +89,12 @@ static cm_status construct(cm_result *r, const double *const *geoms, const int32
     return cm_overlay(geoms, tris, k, n, &r->mesh, &centroids, &r->error);
 }
 
-static cm_status build_first(cm_result *r, const double *const *polygons, size_t k, size_t n,
-                             int clockwise, const cm_options *o, cm_progress *progress)
+/* on: where the boundary vertices lie on the inputs (NULL: all input
+ * vertices, the index correspondence and the pieces of polygons with
+ * holes). given: NULL, or each polygon's cm_polygon_triangulate already
+ * made. */
+static cm_status build_first(cm_result *r, const double *const *polygons, const int32_t *const *given, size_t k,
+                             size_t n, int clockwise, const cm_on_edges *on, const cm_options *o, cm_progress *progress)
 {
     cm_status s = CM_ERR_NO_MEMORY;
     double **geoms = calloc(k, sizeof *geoms);
@@ -103,7 +110,11 @@ static cm_status build_first(cm_result *r, const double *const *polygons, size_t
             geoms[g][2 * j] = polygons[g][2 * i];
             geoms[g][2 * j + 1] = polygons[g][2 * i + 1];
         }
-        int t = cm_polygon_triangulate(geoms[g], idx, (long)n, tris[g], progress);
+        int t = 0;
+        if (given && !clockwise) /* made on these very polygons */
+            memcpy(tris[g], given[g], 3 * (n - 2) * sizeof *tris[g]);
+        else
+            t = cm_polygon_triangulate(geoms[g], idx, (long)n, tris[g], progress);
         if (t == CM_CANCELLED) s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
         if (t < 0) goto done;
         if (t > 0) {
@@ -129,7 +140,7 @@ static cm_status build_first(cm_result *r, const double *const *polygons, size_t
             r->stats.distortion_quad[i] = b.quad[i] < 0 ? -1 : input_index((int32_t)b.quad[i], n, clockwise);
         r->stats.seconds_ceiling += cm_seconds_now() - t;
     }
-    s = construct(r, (const double *const *)geoms, (const int32_t *const *)tris, k, n, o, progress);
+    s = construct(r, (const double *const *)geoms, (const int32_t *const *)tris, k, n, on, o, progress);
 done:
     if (geoms)
         for (size_t g = 0; g < k; g++) free(geoms[g]);
@@ -200,8 +211,10 @@ static cm_status hint_at_range(cm_result *r, cm_status s, const double *const *p
     return s;
 }
 
+/* tris: NULL, or the polygons' triangulations (cm_polygon_triangulate's)
+ * when already made. */
 static cm_status run_pipeline(cm_result *r, const double *const *polygons, const size_t *counts,
-                     size_t k, const cm_options *o)
+                              size_t k, const int32_t *const *tris, const cm_options *o)
 {
     cm_progress progress;
     cm_progress_init(&progress, o->progress, o->progress_user);
@@ -218,7 +231,17 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
     if (cm_progress_report(&progress, CM_STAGE_TRIANGULATE, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
 
     double ceiling_before = r->stats.seconds_ceiling;
-    s = build_first(r, polygons, k, n, clockwise, o, &progress);
+    cm_on_edges on_edges, *on = NULL;
+    size_t *inputs = NULL;
+    if (r->boundary.n == n && r->boundary.k == k && !clockwise) { /* the arc-length path's boundaries */
+        if (!(inputs = calloc(k, sizeof *inputs))) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        for (size_t g = 0; g < k; g++)
+            for (size_t i = 0; i < n; i++) inputs[g] += r->boundary.t[g][i] == 0;
+        on_edges = (cm_on_edges){(const int32_t *const *)r->boundary.edge, (const double *const *)r->boundary.t, inputs};
+        on = &on_edges;
+    }
+    s = build_first(r, polygons, tris, k, n, clockwise, on, o, &progress);
+    free(inputs);
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     r->stats.seconds_build = cm_seconds_now() - t1 - (r->stats.seconds_ceiling - ceiling_before);
     s = remesh_stage(r, n, o, &progress);
@@ -320,7 +343,7 @@ static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *de
  * corner, a disc that would take another polygon's crowding whole);
  * *found = 0 when the conformal one cannot be had (out then untouched). */
 static cm_status auto_whole(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
-                            const int *orientation, cm_boundary_map *out, int *found)
+                            const int *orientation, cm_boundary_map *out, int *found, double *ceiling_deg)
 {
     cm_status s = conformal(r, polygons, counts, k, orientation, out, found);
     if (s != CM_OK || !*found) return s;
@@ -336,6 +359,7 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
         cm_boundary_map t = *out;
         *out = similar, similar = t;
     }
+    *ceiling_deg = fmax(conformal_deg, similar_deg);
     cm_boundary_map_clear(&similar);
     free(starts);
     return s;
@@ -351,8 +375,9 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
  * vertices), taken in place of the loop's own choice; else NULL. */
 static cm_status correspond_boundary(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
                                      const int *orientation, const cm_options *o, const size_t *every_vertex,
-                                     int whole, const size_t *hole_starts, cm_boundary_map *out)
+                                     int whole, const size_t *hole_starts, cm_boundary_map *out, double *ceiling_deg)
 {
+    *ceiling_deg = -1;
     cm_status s = CM_OK;
     const size_t *pins = every_vertex ? every_vertex : whole ? o->pins : NULL;
     size_t num_pins = every_vertex ? counts[0] : whole ? o->num_pins : 0, *chosen = NULL;
@@ -375,7 +400,7 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
         !(o->pin_corners_deg > 0)) {
         /* Polygons without holes: conformal or similarity (auto_whole). */
         int found = 0;
-        s = auto_whole(r, polygons, counts, k, orientation, out, &found);
+        s = auto_whole(r, polygons, counts, k, orientation, out, &found, ceiling_deg);
         if (s == CM_OK && found) {
             if (o->ceiling) s = bound_before(r, polygons, counts, k, orientation);
             if (s == CM_OK && o->max_edge > 0)
@@ -423,6 +448,48 @@ static void locate_in_input(cm_result *r, cm_status s)
             (long)r->boundary.edge[g][v], g, detail);
 }
 
+/* Arclength and auto put points on the input edges anyway: where an edge
+ * of the common boundary caps what the remesher can reach below its aim
+ * (the target, or the ceiling when lower), it is halved compatibly
+ * (cm_boundary_map_split_caps), adding at most as many vertices as the
+ * boundary has, plus CM_CAP_SPLIT_EXTRA for small ones. The index
+ * correspondence keeps its boundary (interior Steiner vertices only). */
+#define CM_CAP_SPLIT_EXTRA 100
+
+typedef struct cap_aim {
+    cm_result *r;
+    double known_deg; /* the ceiling the correspondence's choice computed, or -1 */
+} cap_aim;
+
+/* cm_cap_ceiling: the ceiling of r->boundary, computed only when an edge
+ * binds and the choice did not already. */
+static double cap_ceiling(void *ctx, cm_status *s)
+{
+    cap_aim *a = ctx;
+    double deg = a->known_deg, t = cm_seconds_now();
+    *s = CM_OK;
+    if (deg < 0) {
+        *s = ceiling_of(a->r, &a->r->boundary, &deg);
+        a->r->stats.seconds_ceiling += cm_seconds_now() - t;
+        if (*s != CM_OK && *s != CM_ERR_NO_MEMORY && *s != CM_ERR_CANCELLED) {
+            cm_error_init(&a->r->error); /* a boundary the pipeline's check refuses, saying where */
+            *s = CM_OK;
+            return -1;
+        }
+    }
+    return deg * CM_PI / 180.0;
+}
+
+static cm_status split_capped_edges(cm_result *r, const double *const *polygons, const size_t *counts,
+                                    const int *orientation, const cm_options *o, double known_ceiling_deg,
+                                    int32_t ***tris)
+{
+    cap_aim a = {r, known_ceiling_deg};
+    return cm_boundary_map_split_caps(&r->boundary, polygons, counts, orientation, o->min_angle_deg * CM_PI / 180.0,
+                                      o->ceiling ? cap_ceiling : NULL, &a, r->boundary.n + CM_CAP_SPLIT_EXTRA, NULL,
+                                      tris, &r->error);
+}
+
 /* CM_CORRESPOND_ARCLENGTH and _AUTO: the boundaries in correspondence,
  * then the pipeline on them. */
 static cm_status run_arclength(cm_result *r, const double *const *polygons, const size_t *counts,
@@ -432,12 +499,18 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
     size_t *merged_counts = k ? malloc(k * sizeof *merged_counts) : NULL;
     cm_status s = !k || (orientation && merged_counts) ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
-    if (s == CM_OK) s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, 1, NULL, &r->boundary);
+    double ceiling_deg = -1;
+    if (s == CM_OK)
+        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, 1, NULL, &r->boundary, &ceiling_deg);
+    int32_t **tris = NULL; /* the merged polygons' triangulations, when the cap split made them */
+    if (s == CM_OK && !every_vertex && o->remesh)
+        s = split_capped_edges(r, polygons, counts, orientation, o, ceiling_deg, &tris);
     if (s == CM_OK) {
         for (size_t g = 0; g < k; g++) merged_counts[g] = r->boundary.n;
-        s = run_pipeline(r, (const double *const *)r->boundary.xy, merged_counts, k, o);
+        s = run_pipeline(r, (const double *const *)r->boundary.xy, merged_counts, k, (const int32_t *const *)tris, o);
         locate_in_input(r, s);
     }
+    cm_cap_tris_free(tris, k);
     free(orientation), free(merged_counts);
     return s;
 }
@@ -492,7 +565,7 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
     else if (s == CM_OK && options->max_edge > 0)
         s = run_index_split(r, polygons, counts, k, options);
     else if (s == CM_OK)
-        s = run_pipeline(r, polygons, counts, k, options);
+        s = run_pipeline(r, polygons, counts, k, NULL, options);
     if (s != CM_OK) cm_result_clear_geometry(r);
     return cm_error_close(&r->error, s);
 }
@@ -559,7 +632,7 @@ static cm_status build_pieces(cm_result *r, const double *const *geoms, size_t k
             piece_xy[g] = xy;
         }
         r->stats.fallback_count = 0;
-        s = build_first(r, piece_xy, k, m, 0, &piece_options, progress);
+        s = build_first(r, piece_xy, NULL, k, m, 0, NULL, &piece_options, progress);
         fallbacks += r->stats.fallback_count;
         if (s == CM_OK && cm_holes_glue(&whole, ids, m, &r->mesh) != CM_OK)
             s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
@@ -744,6 +817,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         for (size_t l = 0; l < L; l++) start[g * (L + 1) + l + 1] = start[g * (L + 1) + l] + polygons[g].loop_sizes[l];
     }
     size_t n = 0;
+    double unused_ceiling; /* the loops take no cap split */
     int joint = chosen_mode(o);
     double *similarity = NULL;
     size_t *hole_starts = NULL;
@@ -760,7 +834,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
             s = cm_correspond_choose_hole_starts(xy, count, k, loop_orientation, similarity, hole_starts, &r->error);
         if (s == CM_OK)
             s = correspond_boundary(r, xy, count, k, loop_orientation, o, every, 0, joint && l ? hole_starts : NULL,
-                                    &maps[l]);
+                                    &maps[l], &unused_ceiling);
         if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
             char detail[sizeof r->error.message];
             snprintf(detail, sizeof detail, "%s", r->error.message);

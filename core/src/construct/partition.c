@@ -96,7 +96,27 @@ typedef struct part {
     cm_partition_stats *st;
     cm_error *err;
     cm_progress *progress;
+    const cm_on_edges *on;  /* NULL: every boundary vertex is an input vertex */
 } part;
+
+/* Do boundary vertices a and b (global ids) lie on one input edge in some
+ * geometry? Then segment ab runs along that edge: the rounding of the
+ * points added on it may leave it a diagonal of the polygon, but only a
+ * sliver could lie between it and the boundary. */
+static int flat_pair(const part *p, int32_t a, int32_t b)
+{
+    if (!p->on || (size_t)a >= p->n || (size_t)b >= p->n) return 0;
+    for (size_t g = 0; g < p->k; g++) {
+        int32_t ea = p->on->edge[g][a], eb = p->on->edge[g][b];
+        int va = p->on->t[g][a] == 0, vb = p->on->t[g][b] == 0;
+        int32_t last = (int32_t)p->on->inputs[g] - 1;
+        /* an input vertex e lies on edges e - 1 and e, a point on edge e on it alone */
+        if (ea == eb || (va && (eb == ea - 1 || (ea == 0 && eb == last))) ||
+            (vb && (ea == eb - 1 || (eb == 0 && ea == last))))
+            return 1;
+    }
+    return 0;
+}
 
 static cm_status no_memory(part *p) { return cm_fail_status(p->err, CM_ERR_NO_MEMORY); }
 
@@ -239,7 +259,7 @@ static int open_rows(const double *const *xy, const int32_t *const *tris, size_t
  * set). tris as for open_rows. 0, -1 memory, 1 failed (not simple);
  * *common is set up here, cleared on failure. */
 static int common_table(const double *const *xy, const int32_t *const *tris, size_t k, long m,
-                        cm_diagset *common)
+                        const part *p, const int32_t *gid, cm_diagset *common)
 {
     rowset r = {NULL, NULL, k};
     unsigned char *row = malloc((size_t)m * (k + 1));
@@ -255,7 +275,7 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
             for (long j = i + 1; j < m; j++) all[j] &= row[(size_t)m * g + (size_t)j];
         }
         for (long j = i + 1; j < m; j++)
-            if (all[j]) cm_diagset_add(common, i, j);
+            if (all[j] && !(p && flat_pair(p, gid[i], gid[j]))) cm_diagset_add(common, i, j);
     }
     status = 0;
 done:
@@ -272,7 +292,7 @@ static cm_status table_for_item(part *p, item *it)
     double **l = local_xy(p, it);
     cm_diagset common = {0, 0, NULL};
     it->tix = malloc((size_t)m * sizeof *it->tix);
-    int s = l && it->tix ? common_table((const double *const *)l, NULL, p->k, m, &common) : -1;
+    int s = l && it->tix ? common_table((const double *const *)l, NULL, p->k, m, p, it->gid, &common) : -1;
     free_xy(l, p->k);
     if (s == 0) it->table = add_table(p, &common);
     if (s != 0 || it->table < 0) {
@@ -487,8 +507,10 @@ static int greedy_split(part *p, item *it, const cm_diagview *common)
 /* The most balanced common diagonal at vertex i better than *best (its
  * balance, the shorter side's span): updates *best and *bj. row, all: m
  * bytes each. */
-static void best_at(const rowset *r, long m, long i, unsigned char *row, unsigned char *all, long *best, long *bj)
+static void best_at(const part *p, const item *it, const rowset *r, long i, unsigned char *row, unsigned char *all,
+                    long *best, long *bj)
 {
+    long m = it->m;
     memset(all, 1, (size_t)m);
     for (size_t g = 0; g < r->k; g++) {
         cm_visrows_row(r->rows[g], i, row);
@@ -497,7 +519,7 @@ static void best_at(const rowset *r, long m, long i, unsigned char *row, unsigne
     *bj = -1;
     for (long j = 0; j < m; j++) {
         long span = (j - i + m) % m, balance = span < m - span ? span : m - span;
-        if (all[j] && balance > *best) *best = balance, *bj = j;
+        if (all[j] && balance > *best && !flat_pair(p, it->gid[i], it->gid[j])) *best = balance, *bj = j;
     }
 }
 
@@ -518,13 +540,13 @@ static int sampled_split(part *p, item *it)
     int s = l && row ? open_rows((const double *const *)l, NULL, k, m, &r) : -1;
     for (long q = 0; s == 0 && q < SAMPLE_SOURCES && 2 * best < m; q++) {
         long i = (long)((double)q * (double)m / SAMPLE_SOURCES), j;
-        best_at(&r, m, i, row, row + m, &best, &j);
+        best_at(p, it, &r, i, row, row + m, &best, &j);
         if (j >= 0) bi = i, bj = j;
     }
     long more = m < SAMPLE_MORE ? m : SAMPLE_MORE;
     for (long q = 0; s == 0 && bi < 0 && q < more; q++) {
         long i = (long)((double)q * (double)m / (double)more + 0.5) % m, j;
-        best_at(&r, m, i, row, row + m, &best, &j);
+        best_at(p, it, &r, i, row, row + m, &best, &j);
         if (j >= 0) bi = i, bj = j;
     }
     close_rows(&r);
@@ -589,7 +611,7 @@ static pair *rank_pairs(const face_ctx *f, long *count)
                 if (d < 1) links = -1;
                 else links = d > links ? d : links, sum += d;
             }
-            if (links < 0) continue;
+            if (links < 0 || (links == 1 && flat_pair(f->p, f->it->gid[u], f->it->gid[v]))) continue;
             long s1 = (v - u + 1) + links - 1, s2 = (m - (v - u) + 1) + links - 1;
             if (s1 > m || s2 > m || ((s1 == m || s2 == m) && f->it->repeat)) continue;
             long span = v - u < m - (v - u) ? v - u : m - (v - u);
@@ -713,7 +735,7 @@ static int face_diagonals(face_ctx *f)
         if (!f->own) return -1;
         f->own_state = 1;
         for (size_t g = 0; g < k && f->own_state == 1; g++) {
-            int s = common_table((const double *const *)&f->l[g], NULL, 1, f->it->m, &f->own[g]);
+            int s = common_table((const double *const *)&f->l[g], NULL, 1, f->it->m, NULL, NULL, &f->own[g]);
             if (s < 0) return -1;
             if (s > 0) f->own_state = -1;
         }
@@ -765,7 +787,7 @@ static int half_common(face_ctx *f, cut_memo *memo, const pair *pr, int half, co
         size_t at = ((size_t)half * k + g) * (size_t)memo->per_g + (size_t)pick[g];
         if (memo->state[at] == 0) {
             int s = derive ? half_diagonals(f, g, from, nc, xy[g], m, &memo->diag[at])
-                           : common_table((const double *const *)&xy[g], NULL, 1, m, &memo->diag[at]);
+                           : common_table((const double *const *)&xy[g], NULL, 1, m, NULL, NULL, &memo->diag[at]);
             if (s < 0) return -1;
             memo->state[at] = s == 0 ? 1 : 2;
         }
@@ -1199,17 +1221,21 @@ static cm_status start(part *p, const double *const *geoms, const int32_t *const
         return push_item(p, root) == 0 ? CM_OK : no_memory(p);
     }
     double t0 = cm_seconds_now();
-    cm_diagset common = {0, 0, NULL};
-    int t = common_table(geoms, tris, k, (long)n, &common);
-    if (t > 0) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: the input is not simple");
-    if (t < 0 || add_table(p, &common) < 0) return no_memory(p);
-    p->st->seconds_visibility += cm_seconds_now() - t0;
     item root = {malloc(n * sizeof(int32_t)), malloc(n * sizeof(int32_t)), (long)n, 0, 0, 0, 0};
     if (!root.gid || !root.tix) {
         item_free(&root);
         return no_memory(p);
     }
     for (size_t i = 0; i < n; i++) root.gid[i] = root.tix[i] = (int32_t)i;
+    cm_diagset common = {0, 0, NULL};
+    int t = common_table(geoms, tris, k, (long)n, p, root.gid, &common);
+    if (t != 0) item_free(&root);
+    if (t > 0) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: the input is not simple");
+    if (t < 0 || add_table(p, &common) < 0) {
+        item_free(&root);
+        return no_memory(p);
+    }
+    p->st->seconds_visibility += cm_seconds_now() - t0;
     return push_item(p, root) == 0 ? CM_OK : no_memory(p);
 }
 
@@ -1224,14 +1250,14 @@ static void part_free(part *p)
     free(p->stack);
 }
 
-cm_status cm_partition_limited(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
-                               long table_limit, cm_progress *progress, cm_mesh *out,
+static cm_status partition_run(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
+                               long table_limit, const cm_on_edges *on, cm_progress *progress, cm_mesh *out,
                                cm_partition_stats *stats, cm_error *err)
 {
     part p;
     memset(&p, 0, sizeof p);
     memset(stats, 0, sizeof *stats);
-    p.k = k, p.n = n, p.table_limit = table_limit, p.st = stats, p.err = err, p.progress = progress;
+    p.k = k, p.n = n, p.table_limit = table_limit, p.st = stats, p.err = err, p.progress = progress, p.on = on;
     cm_status s = start(&p, geoms, tris);
     while (s == CM_OK && p.top > 0) {
         item it = p.stack[--p.top];
@@ -1252,9 +1278,23 @@ cm_status cm_partition_limited(const double *const *geoms, const int32_t *const 
     return s;
 }
 
+cm_status cm_partition_limited(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
+                               long table_limit, cm_progress *progress, cm_mesh *out,
+                               cm_partition_stats *stats, cm_error *err)
+{
+    return partition_run(geoms, tris, k, n, table_limit, NULL, progress, out, stats, err);
+}
+
 cm_status cm_partition(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
                        cm_progress *progress, cm_mesh *out, cm_partition_stats *stats,
                        cm_error *err)
 {
-    return cm_partition_limited(geoms, tris, k, n, CM_PARTITION_MAX_VERTICES, progress, out, stats, err);
+    return partition_run(geoms, tris, k, n, CM_PARTITION_MAX_VERTICES, NULL, progress, out, stats, err);
+}
+
+cm_status cm_partition_on_edges(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
+                                const cm_on_edges *on, cm_progress *progress, cm_mesh *out,
+                                cm_partition_stats *stats, cm_error *err)
+{
+    return partition_run(geoms, tris, k, n, CM_PARTITION_MAX_VERTICES, on, progress, out, stats, err);
 }

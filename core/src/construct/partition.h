@@ -33,6 +33,16 @@ typedef struct cm_partition_stats {
     double seconds_visibility, seconds_dp, seconds_link, seconds_fallback;
 } cm_partition_stats;
 
+/* Where the boundary vertices lie on the inputs (cm_boundary_map's edge
+ * and t): vertex i of geometry g is input vertex edge[g][i] when
+ * t[g][i] == 0, else a point inside input edge edge[g][i]; inputs[g] is
+ * that input's vertex count. */
+typedef struct cm_on_edges {
+    const int32_t *const *edge;
+    const double *const *t;
+    const size_t *inputs;
+} cm_on_edges;
+
 /* geoms: k arrays of 2n doubles, counter-clockwise simple polygons with
  * corresponding vertices; tris: a triangulation of each (3 (n - 2) vertex
  * indices). Writes a compatible triangulation into *out: the n polygon
@@ -42,6 +52,13 @@ typedef struct cm_partition_stats {
 cm_status cm_partition(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
                        cm_progress *progress, cm_mesh *out, cm_partition_stats *stats,
                        cm_error *err);
+
+/* The same for boundaries with points added on the input edges (on): no
+ * two boundary vertices on one input edge of some geometry are joined (the
+ * segment would run along the edge, a sliver beside it at best). */
+cm_status cm_partition_on_edges(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
+                                const cm_on_edges *on, cm_progress *progress, cm_mesh *out,
+                                cm_partition_stats *stats, cm_error *err);
 
 /* The same with another table limit in place of CM_PARTITION_MAX_VERTICES
  * (the tests reach the large-input steps at small sizes). */

@@ -24,32 +24,13 @@ static void segment(const cm_boundary_map *map, size_t g, size_t j, size_t count
     }
 }
 
-cm_status cm_boundary_map_split(cm_boundary_map *map, const double *const *polygons, const size_t *counts,
-                                const int *orientation, double max_edge, cm_error *err)
+cm_status cm_boundary_map_split_edges(cm_boundary_map *map, const double *const *polygons, const size_t *counts,
+                                      const int *orientation, const size_t *pieces, cm_error *err)
 {
     const size_t k = map->k, n = map->n;
-    size_t *pieces = malloc(n * sizeof *pieces), total = 0;
-    if (!pieces) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-    for (size_t j = 0; j < n; j++) {
-        double longest = 0;
-        for (size_t g = 0; g < k; g++) {
-            const double *a = map->xy[g] + 2 * j, *b = map->xy[g] + 2 * ((j + 1) % n);
-            longest = fmax(longest, hypot(b[0] - a[0], b[1] - a[1]));
-        }
-        double p = ceil(longest / max_edge);
-        if (!(p < (double)CM_MAX_BOUNDARY) || total + (size_t)p > CM_MAX_BOUNDARY) {
-            free(pieces);
-            return cm_fail(err, CM_ERR_ARGUMENT,
-                           "max_edge %g would put more than %zu vertices on the boundary", max_edge,
-                           (size_t)CM_MAX_BOUNDARY);
-        }
-        pieces[j] = p < 1 ? 1 : (size_t)p;
-        total += pieces[j];
-    }
-    if (total == n) {
-        free(pieces);
-        return CM_OK;
-    }
+    size_t total = 0;
+    for (size_t j = 0; j < n; j++) total += pieces[j];
+    if (total == n) return CM_OK;
     cm_boundary_map out = {k, total, calloc(k, sizeof(double *)), calloc(k, sizeof(int32_t *)),
                            calloc(k, sizeof(double *))};
     cm_status s = out.xy && out.edge && out.t ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
@@ -80,7 +61,6 @@ cm_status cm_boundary_map_split(cm_boundary_map *map, const double *const *polyg
             }
         }
     }
-    free(pieces);
     if (s != CM_OK) {
         cm_boundary_map_clear(&out);
         return s;
@@ -88,4 +68,31 @@ cm_status cm_boundary_map_split(cm_boundary_map *map, const double *const *polyg
     cm_boundary_map_clear(map);
     *map = out;
     return CM_OK;
+}
+
+cm_status cm_boundary_map_split(cm_boundary_map *map, const double *const *polygons, const size_t *counts,
+                                const int *orientation, double max_edge, cm_error *err)
+{
+    const size_t k = map->k, n = map->n;
+    size_t *pieces = malloc(n * sizeof *pieces), total = 0;
+    if (!pieces) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    for (size_t j = 0; j < n; j++) {
+        double longest = 0;
+        for (size_t g = 0; g < k; g++) {
+            const double *a = map->xy[g] + 2 * j, *b = map->xy[g] + 2 * ((j + 1) % n);
+            longest = fmax(longest, hypot(b[0] - a[0], b[1] - a[1]));
+        }
+        double p = ceil(longest / max_edge);
+        if (!(p < (double)CM_MAX_BOUNDARY) || total + (size_t)p > CM_MAX_BOUNDARY) {
+            free(pieces);
+            return cm_fail(err, CM_ERR_ARGUMENT,
+                           "max_edge %g would put more than %zu vertices on the boundary", max_edge,
+                           (size_t)CM_MAX_BOUNDARY);
+        }
+        pieces[j] = p < 1 ? 1 : (size_t)p;
+        total += pieces[j];
+    }
+    cm_status s = cm_boundary_map_split_edges(map, polygons, counts, orientation, pieces, err);
+    free(pieces);
+    return s;
 }

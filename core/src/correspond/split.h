@@ -17,6 +17,11 @@
 cm_status cm_boundary_map_split(cm_boundary_map *map, const double *const *polygons, const size_t *counts,
                                 const int *orientation, double max_edge, cm_error *err);
 
+/* Splits edge j -> j + 1 of the common boundary into pieces[j] >= 1
+ * equal-parameter pieces in every polygon, as cm_boundary_map_split does. */
+cm_status cm_boundary_map_split_edges(cm_boundary_map *map, const double *const *polygons, const size_t *counts,
+                                      const int *orientation, const size_t *pieces, cm_error *err);
+
 /* The most boundary vertices a split may make. */
 #define CM_MAX_BOUNDARY ((size_t)1 << 24)
 
