@@ -545,11 +545,15 @@ typedef struct {
     int found;
 } bend_choice;
 
-/* Considers bend y for pocket Q; the caller checked it sees the previous
- * point. Returns 0 or -1 (out of memory). */
-static int consider(cm_linkpart *lp, long Q, const double y[2], bend_choice *best)
+/* Considers bend y for pocket Q, to be seen from the previous point p
+ * (polygon vertex p_vertex or -1). Its score comes first: a bend that
+ * cannot beat the best so far needs no sight test. Returns 0 or -1 (out
+ * of memory). */
+static int consider(cm_linkpart *lp, long Q, const double y[2], long p_vertex, const double p[2],
+                    bend_choice *best)
 {
     long a, b;
+    if (lp->pk[Q].source >= 0 && best->found) return 0; /* the root's cone is its source: score 0 */
     int r = lit_in(lp, Q, y, &a, &b);
     if (r <= 0) return r;
     double score = 0.0;
@@ -558,10 +562,10 @@ static int consider(cm_linkpart *lp, long Q, const double y[2], bend_choice *bes
         double ux = pa[0] - y[0], uy = pa[1] - y[1], vx = pb[0] - y[0], vy = pb[1] - y[1];
         score = atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy);
     }
-    if (!best->found || score > best->score) {
-        best->y[0] = y[0], best->y[1] = y[1], best->score = score;
-        best->a = a, best->b = b, best->found = 1;
-    }
+    if (best->found && !(score > best->score)) return 0;
+    if (!sees(lp, p_vertex, p, y)) return 0;
+    best->y[0] = y[0], best->y[1] = y[1], best->score = score;
+    best->a = a, best->b = b, best->found = 1;
     return 0;
 }
 
@@ -629,7 +633,7 @@ static int cone_bend(cm_linkpart *lp, long P, long p_id, long p_vertex, long *a,
         if (!isfinite(room)) room = s;
         for (size_t di = 0; di < NDEPTHS; di++) {
             double step = s + room * depths[di], c[2] = {p[0] + step * dir[0], p[1] + step * dir[1]};
-            if (sees(lp, p_vertex, p, c) && consider(lp, parent, c, &best) < 0) return -1;
+            if (consider(lp, parent, c, p_vertex, p, &best) < 0) return -1;
         }
     }
     return take(lp, &best, y, id, a, b);
@@ -653,7 +657,7 @@ static int near_bend(cm_linkpart *lp, long Q, long w, double y[2], long *id, lon
         for (size_t di = 0; di < NDELTAS; di++) {
             double step = 0.6 * deltas[di] * scale;
             double c[2] = {pw[0] + step * cos(angle), pw[1] + step * sin(angle)};
-            if (sees(lp, w, pw, c) && consider(lp, Q, c, &best) < 0) return -1;
+            if (consider(lp, Q, c, w, pw, &best) < 0) return -1;
         }
     }
     return take(lp, &best, y, id, a, b);
