@@ -667,8 +667,10 @@ static const double offsets[] = {0.0, 0.12, -0.12, 0.3, -0.3};
 /* Estimated Steiner vertices of a polygon given by k coordinate arrays
  * and its common diagonals: its Steiner-free plan, each stuck face counted
  * 1 if it is star-shaped in every geometry (a fan) and (vertices - 3)
- * otherwise, or 1 if the whole polygon is star-shaped. -1 out of memory. */
-static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common)
+ * otherwise, or 1 if the whole polygon is star-shaped. Exact below limit;
+ * a result of limit or more only says the estimate is at least that (the
+ * faces left are not looked at). -1 out of memory. */
+static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common, long limit)
 {
     cm_diagview view = {common, NULL};
     double *pos = malloc(2 * k * sizeof *pos);
@@ -677,13 +679,13 @@ static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common
     cm_sf_plan plan;
     if (pos && all && cm_steinerfree_plan(m, &view, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
         cost = 0;
-        for (long f = 0; f < plan.nf && cost >= 0; f++) {
+        for (long f = 0; f < plan.nf && cost >= 0 && cost < limit; f++) {
             long n = plan.face_start[f + 1] - plan.face_start[f];
             int star = kernel_points(k, xy, plan.face + plan.face_start[f], n, pos);
             cost = star < 0 ? -1 : cost + (star ? 1 : n - 3);
         }
         for (long i = 0; i < m; i++) all[i] = (int32_t)i;
-        if (cost > 1) {
+        if (cost > 1) { /* the faces left only add: the whole polygon's fan decides */
             int star = kernel_points(k, xy, all, m, pos);
             cost = star < 0 ? -1 : star ? 1 : cost;
         }
@@ -782,8 +784,11 @@ static int half_common(face_ctx *f, cut_memo *memo, const pair *pr, int half, co
 }
 
 /* Sum of the halves' stuck costs for the cut u -> bends -> v, bends[g]
- * being choice pick[g] of geometry g. */
-static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pick, cut_memo *memo)
+ * being choice pick[g] of geometry g: exact below limit, else a bound
+ * from below of at least limit (what the search needs: it only takes a
+ * cost below its best so far, and that best only falls, so a bound kept
+ * in the memo stays at or above every later limit). */
+static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pick, cut_memo *memo, long limit)
 {
     size_t k = f->p->k;
     long m = f->it->m, nb = pr->links - 1, total = 0, key = 0;
@@ -791,7 +796,7 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
     if (memo->cost[key] != -2) return memo->cost[key];
     double **xy = calloc(k, sizeof *xy);
     if (!xy) return -1;
-    for (int half = 0; half < 2 && total >= 0 && total < LONG_MAX; half++) {
+    for (int half = 0; half < 2 && total >= 0 && total < limit; half++) {
         long from = half == 0 ? pr->u : pr->v, to = half == 0 ? pr->v : pr->u;
         long size = (to - from + m) % m + 1 + nb, bad = 0;
         for (size_t g = 0; g < k; g++) {
@@ -813,7 +818,7 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
         if (!bad && size > 3) {
             cm_diagset common = {0, 0, NULL};
             int s = half_common(f, memo, pr, half, pick, size, xy, &common);
-            c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(k, size, xy, &common);
+            c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(k, size, xy, &common, limit - total);
             cm_diagset_clear(&common);
         }
         total = c < 0 ? -1 : c == LONG_MAX ? LONG_MAX : total + c;
@@ -924,13 +929,13 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
         for (size_t i = 0; memo.cost && i < combos; i++) memo.cost[i] = -2;
         if (!memo.diag || !memo.state || !memo.cost) result = -1;
     }
-    if (result == 1 && search) best = cut_cost(f, pr, bends, cur, &memo);
+    if (result == 1 && search) best = cut_cost(f, pr, bends, cur, &memo, LONG_MAX);
     for (int pass = 0; pass < 2 && result == 1 && search && best > 0; pass++)
         for (size_t g = 0; g < k && best > 0; g++)
             for (long i = 0; i < c[g].count && best > 0; i++) {
                 if (i == pick[g]) continue;
                 bends[g] = c[g].bends + per * i, cur[g] = i;
-                long cost_i = cut_cost(f, pr, bends, cur, &memo);
+                long cost_i = cut_cost(f, pr, bends, cur, &memo, best);
                 if (cost_i < 0) result = -1;
                 if (cost_i >= 0 && cost_i < best) best = cost_i, pick[g] = i;
                 bends[g] = c[g].bends + per * pick[g], cur[g] = pick[g];
