@@ -745,6 +745,11 @@ static int half_diagonals(const face_ctx *f, size_t g, long from, long nc, const
             if (seen && inner) {
                 for (long e = nc - 1; seen && e < size; e++) /* the path's links */
                     seen = cm_segments_intersect(h + 2 * i, h + 2 * j, h + 2 * e, h + 2 * ((e + 1) % size)) == 0;
+            } else if (seen && chain && !(i == 0 && j == nc - 1)) {
+                /* one end is an end of P: a diagonal of the face, so only
+                 * P's links (edges nc - 1 .. size - 1) and that end's new
+                 * corner need a test */
+                seen = cm_segment_inside_edges(h, size, i, j, nc - 1, size - nc + 1);
             } else if (seen) {
                 seen = cm_segment_inside(h, size, i, h + 2 * i, j, h + 2 * j);
             }
