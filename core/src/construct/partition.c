@@ -679,13 +679,17 @@ static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common
     cm_sf_plan plan;
     if (pos && all && cm_steinerfree_plan(m, &view, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
         cost = 0;
+        int whole = 0; /* the one face is the polygon, in its order: its test is the polygon's */
         for (long f = 0; f < plan.nf && cost >= 0 && cost < limit; f++) {
             long n = plan.face_start[f + 1] - plan.face_start[f];
-            int star = kernel_points(k, xy, plan.face + plan.face_start[f], n, pos);
+            const int32_t *face = plan.face + plan.face_start[f];
+            int star = kernel_points(k, xy, face, n, pos);
             cost = star < 0 ? -1 : cost + (star ? 1 : n - 3);
+            whole = plan.nf == 1 && n == m;
+            for (long i = 0; whole && i < m; i++) whole = face[i] == i;
         }
         for (long i = 0; i < m; i++) all[i] = (int32_t)i;
-        if (cost > 1) { /* the faces left only add: the whole polygon's fan decides */
+        if (cost > 1 && !whole) { /* the faces left only add: the whole polygon's fan decides */
             int star = kernel_points(k, xy, all, m, pos);
             cost = star < 0 ? -1 : star ? 1 : cost;
         }
