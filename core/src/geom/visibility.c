@@ -296,11 +296,16 @@ typedef struct {
     const long *ids;
     long *prev, *next, *blockers, nblockers;
     signed char *turn, *ear, *gone;
+    const double **input; /* per vertex: its coordinates if an input point, else NULL */
     cm_pointgrid grid;
 } ear_ctx;
 
+/* cm_xorient, with input points tested here directly (what it does for them) */
 static int xo(const ear_ctx *e, long a, long b, long c)
 {
+    const double *pa = e->input[a], *pb = e->input[b], *pc = e->input[c];
+    if (pa && pb && pc && e->ids[a] != e->ids[b] && e->ids[b] != e->ids[c] && e->ids[a] != e->ids[c])
+        return cm_orient2d(pa, pb, pc);
     return cm_xorient(e->pool, e->ids[a], e->ids[b], e->ids[c]);
 }
 
@@ -401,10 +406,13 @@ int cm_xtriangulate(cm_xpool *pool, const long *ids, long k, int32_t *tri_out)
 {
     size_t n = (size_t)k;
     ear_ctx e = {pool, ids, malloc(n * sizeof(long)), malloc(n * sizeof(long)),
-                 malloc(n * sizeof(long)), 0, malloc(n), malloc(n), malloc(n), .grid = {.head = NULL}};
+                 malloc(n * sizeof(long)), 0, malloc(n), malloc(n), malloc(n), malloc(n * sizeof(double *)),
+                 .grid = {.head = NULL}};
     int status = -1;
-    if (e.prev && e.next && e.blockers && e.turn && e.ear && e.gone) status = clip_xears(&e, k, tri_out);
-    free(e.prev), free(e.next), free(e.blockers), free(e.turn), free(e.ear), free(e.gone);
+    for (long i = 0; e.input && i < k; i++)
+        e.input[i] = cm_xpool_is_input(pool, ids[i]) ? cm_xpool_xy(pool, ids[i]) : NULL;
+    if (e.prev && e.next && e.blockers && e.turn && e.ear && e.gone && e.input) status = clip_xears(&e, k, tri_out);
+    free(e.prev), free(e.next), free(e.blockers), free(e.turn), free(e.ear), free(e.gone), free(e.input);
     cm_pointgrid_clear(&e.grid);
     return status;
 }
