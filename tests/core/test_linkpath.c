@@ -116,6 +116,50 @@ static void test_xpoint(void)
     cm_xpool_free(pool);
 }
 
+/* cm_segment_inside_edges agrees with the full test wherever its premise
+ * holds: every edge outside the given range misses the open segment and
+ * touches it at most at its ends (checked here by brute force). Random
+ * grid polygons have collinear vertices, so the touching cases occur. */
+static int touches_only_at(const double *a, const double *b, const double *w)
+{
+    if (cm_orient2d(a, b, w) != 0) return 1;
+    int axis = a[0] != b[0] ? 0 : 1;
+    return !((w[axis] > a[axis]) == (b[axis] > a[axis]) && w[axis] != a[axis]);
+}
+
+static void test_segment_inside_edges(void)
+{
+    long held = 0, inside = 0, outside = 0, bad = 0;
+    for (int seed = 1; seed <= 6; seed++) {
+        int n = 20 + 8 * seed;
+        double *xy = malloc(sizeof(double) * 2 * (size_t)n);
+        CHECK(xy && rp_random_simple(xy, n, 900 + (uint64_t)seed) == 0);
+        rp_rng rng = {77 + (uint64_t)seed};
+        for (int i = 0; xy && i < n; i++)
+            for (int j = i + 2; j < n; j++) {
+                if (i == 0 && j == n - 1) continue;
+                long first = (long)rp_below(&rng, (uint64_t)n), count = 1 + (long)rp_below(&rng, (uint64_t)n);
+                const double *a = xy + 2 * i, *b = xy + 2 * j;
+                int premise = 1;
+                for (long e = 0; premise && e < n - count; e++) {
+                    long s = (first + count + e) % n, t = (s + 1) % n;
+                    const double *e0 = xy + 2 * s, *e1 = xy + 2 * t;
+                    if (s == i || t == i) premise = touches_only_at(a, b, s == i ? e1 : e0);
+                    else if (s == j || t == j) premise = touches_only_at(b, a, s == j ? e1 : e0);
+                    else premise = cm_segments_intersect(a, b, e0, e1) == 0;
+                }
+                if (!premise) continue;
+                held++;
+                int full = cm_segment_inside(xy, n, i, a, j, b);
+                inside += full, outside += !full;
+                bad += cm_segment_inside_edges(xy, n, i, j, first, count) != full;
+            }
+        free(xy);
+    }
+    CHECK_MSG(bad == 0, "%ld of %ld restricted segment tests disagree", bad, held);
+    CHECK_MSG(inside > 50 && outside > 50, "premise held for %ld inside, %ld outside", inside, outside);
+}
+
 /* ---- visibility ---------------------------------------------------------- */
 
 /* The cone-propagation table equals the brute-force segment test. */
@@ -426,6 +470,7 @@ int main(void)
 {
     test_xpoint();
     test_segment_inside();
+    test_segment_inside_edges();
     test_visibility_table();
     test_ear_clipping();
     test_kernel();
