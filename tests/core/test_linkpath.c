@@ -6,6 +6,7 @@
  * brute-force segment test), symmetry, a returned path with exactly that
  * many links lying strictly inside, and no overestimate (a breadth-first
  * search through sampled interior points can only find longer paths). */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -378,6 +379,62 @@ static void check_polygon(const double *xy, int n, int sample, const char *what)
     cm_linkpart_free(lp);
 }
 
+/* Distances asked for some vertices only: at those vertices they equal the
+ * whole partition's at the same cap; when it reports nothing left beyond
+ * the cap, they are final (the uncapped partition's). Masks: the vertices
+ * after the source (how the partition asks), a random half, none but one. */
+static void check_needed(const double *xy, int n, const char *what)
+{
+    /* ref keeps its last partition for a run at the same source and a
+     * lower cap, so the final distances come from a third one */
+    cm_linkpart *lp = cm_linkpart_create(xy, n), *ref = cm_linkpart_create(xy, n), *fin = cm_linkpart_create(xy, n);
+    int *d = malloc(sizeof(int) * 3 * (size_t)n), *full = d + n, *final = d + 2 * n;
+    unsigned char *need = malloc((size_t)n);
+    CHECK(lp && ref && fin && d && need);
+    rp_rng rng = {(uint64_t)n};
+    long bad = 0, compared = 0;
+    static const int caps[] = {2, 4, INT_MAX};
+    for (int s = 0; lp && ref && fin && d && need && s < n; s++) {
+        cm_link_distances(fin, s, final);
+        for (size_t c = 0; c < sizeof caps / sizeof *caps; c++) {
+            /* rising caps: ref builds each partition anew */
+            CHECK(cm_link_distances_upto(ref, s, caps[c], full) >= 0);
+            for (int mask = 0; mask < 3; mask++) {
+                for (int v = 0; v < n; v++)
+                    need[v] = mask == 0 ? v > s : mask == 1 ? (unsigned char)rp_below(&rng, 2) : v == (s + n / 2) % n;
+                int deeper = cm_link_distances_needed(lp, s, caps[c], need, d);
+                CHECK(deeper >= 0);
+                for (int v = 0; v < n; v++) {
+                    if (!need[v]) continue;
+                    compared++;
+                    bad += d[v] != full[v] || (deeper == 0 && d[v] != final[v]);
+                }
+            }
+        }
+    }
+    CHECK_MSG(bad == 0 && compared > 0, "%s: %ld of %ld needed distances differ", what, bad, compared);
+    /* a path from the same linkpart after a partial run is still exact */
+    double *bends = NULL;
+    long nb = 0;
+    if (lp && n > 4) {
+        int links = cm_link_path(lp, 0, n / 2, &bends, &nb);
+        cm_link_distances(fin, 0, final);
+        CHECK_MSG(links == final[n / 2] || links == 0, "%s: path after a partial run", what);
+        free(bends);
+    }
+    cm_linkpart_free(lp), cm_linkpart_free(ref), cm_linkpart_free(fin);
+    free(d), free(need);
+}
+
+static void test_needed_distances(void)
+{
+    double xy[2 * 64];
+    for (uint64_t seed = 1; seed <= 4; seed++)
+        if (rp_random_simple(xy, 40, 300 + seed) == 0) check_needed(xy, 40, "random 40");
+    if (rp_spiral(xy, 48, 2) == 0) check_needed(xy, 48, "spiral 48");
+    if (rp_comb(xy, 48, 6) == 0) check_needed(xy, 48, "comb 48");
+}
+
 static void test_random_polygons(void)
 {
     double xy[2 * 64];
@@ -479,5 +536,6 @@ int main(void)
     test_spiral_corridor();
     test_comb();
     test_random_polygons();
+    test_needed_distances();
     return check_summary("test_linkpath");
 }

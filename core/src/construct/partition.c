@@ -1044,8 +1044,8 @@ static int link_split(part *p, item *it)
     double t0 = cm_seconds_now();
     face_ctx f = {p, it, local_xy(p, it), calloc(p->k, sizeof(cm_linkpart *)), malloc((size_t)nsrc * sizeof(long)),
                   nsrc, malloc((size_t)m * sizeof(long)), malloc(p->k * (size_t)nsrc * (size_t)m * sizeof(int)), NULL, 0};
-    unsigned char *open = malloc(p->k * (size_t)nsrc);
-    int result = f.l && f.lp && f.src && f.row_of && f.dist && open ? 0 : -1;
+    unsigned char *open = malloc(p->k * (size_t)nsrc), *need = malloc((size_t)m);
+    int result = f.l && f.lp && f.src && f.row_of && f.dist && open && need ? 0 : -1;
     for (long v = 0; result == 0 && v < m; v++) f.row_of[v] = -1;
     for (long r = 0; result == 0 && r < nsrc; r++) f.src[r] = r * m / nsrc, f.row_of[f.src[r]] = r;
     for (size_t g = 0; g < p->k && result == 0; g++) {
@@ -1061,7 +1061,10 @@ static int link_split(part *p, item *it)
         for (size_t g = 0; g < p->k && result == 0; g++)
             for (long r = 0; r < nsrc && result == 0; r++) {
                 if (!open[g * (size_t)nsrc + (size_t)r]) continue;
-                int s = cm_link_distances_upto(f.lp[g], f.src[r], cap, dist_row(&f, g, r));
+                /* rank_pairs reads a row only at the vertices that are
+                 * not sources of earlier rows */
+                for (long w = 0; w < m; w++) need[w] = w != f.src[r] && !(f.row_of[w] >= 0 && f.row_of[w] < r);
+                int s = cm_link_distances_needed(f.lp[g], f.src[r], cap, need, dist_row(&f, g, r));
                 if (s < 0) result = -1;
                 open[g * (size_t)nsrc + (size_t)r] = (unsigned char)(s == 1);
                 deeper += s == 1;
@@ -1069,7 +1072,7 @@ static int link_split(part *p, item *it)
         if (result == 0) result = cut_face(&f);
         if (result != 0 || cap == INT_MAX || deeper == 0) break;
     }
-    free(open);
+    free(open), free(need);
     for (size_t g = 0; f.lp && g < p->k; g++) cm_linkpart_free(f.lp[g]);
     for (size_t g = 0; f.own && g < p->k; g++) cm_diagset_clear(&f.own[g]);
     free(f.own);

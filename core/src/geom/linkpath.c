@@ -53,6 +53,7 @@ struct cm_linkpart {
     int root_state;  /* 0 not built, 1 built, -1 failed */
     cm_visrows *rows;   /* visibility from a vertex over that triangulation */
     unsigned char *row; /* from the current source */
+    int *seen;          /* per vertex: in how many pockets of one level */
 };
 
 /* ---- set-up ------------------------------------------------------------- */
@@ -73,7 +74,8 @@ cm_linkpart *cm_linkpart_create(const double *xy, long m)
     lp->covered = malloc(n + 1);
     lp->all = malloc(n * sizeof *lp->all);
     lp->row = malloc(n);
-    int ok = lp->row && lp->xy && lp->pool && lp->dist && lp->via && lp->cone_a && lp->cone_b && lp->how &&
+    lp->seen = malloc(n * sizeof *lp->seen);
+    int ok = lp->row && lp->seen && lp->xy && lp->pool && lp->dist && lp->via && lp->cone_a && lp->cone_b && lp->how &&
              lp->covered && lp->all;
     for (long i = 0; ok && i < m; i++) {
         lp->xy[2 * i] = xy[2 * i], lp->xy[2 * i + 1] = xy[2 * i + 1];
@@ -107,7 +109,7 @@ void cm_linkpart_free(cm_linkpart *lp)
     free(lp->cone_a), free(lp->cone_b), free(lp->how), free(lp->covered), free(lp->all);
     cm_vsource_clear(&lp->root);
     cm_visrows_free(lp->rows);
-    free(lp->row);
+    free(lp->row), free(lp->seen);
     cm_xpool_free(lp->pool);
     free(lp);
 }
@@ -471,31 +473,66 @@ static int process_window(cm_linkpart *lp, long P)
     return 0;
 }
 
-static int run_levels(cm_linkpart *lp, long s, int max_level)
+/* May pocket P go unprocessed? With need given: when none of its vertices
+ * is needed and none is in another pocket of its level. What processing a
+ * pocket decides is confined to its vertices (and its sub-pockets, all
+ * within it); a vertex shared with a sibling could be decided by either,
+ * in order, so those are kept. */
+static int skippable(const cm_linkpart *lp, long P, const unsigned char *need)
 {
-    if (lp->source == s && lp->max_level >= max_level) return 0;
+    const pocket *p = &lp->pk[P];
+    for (long i = 0; i < p->k; i++) {
+        long v = p->ids[i];
+        if (v < lp->m && (need[v] || lp->seen[v] > 1)) return 0;
+    }
+    return 1;
+}
+
+/* The window partition from s up to max_level; with need (per vertex,
+ * NULL for all), pockets holding no needed vertex may be left out: the
+ * distances of the needed vertices are those of the whole partition, the
+ * others may stay undetermined, and the partition is not kept for paths. */
+static int run_levels(cm_linkpart *lp, long s, int max_level, const unsigned char *need)
+{
+    if (!need && lp->source == s && lp->max_level >= max_level) return 0;
     drop_pockets(lp);
     for (long v = 0; v < lp->m; v++) lp->dist[v] = -1, lp->how[v] = HOW_NONE;
     lp->dist[s] = 0;
     if (add_pocket(lp, lp->all, lp->m, 1, -1, s) < 0) return -1;
     lp->truncated = 0;
+    int counted = 1;
     for (long P = 0; P < lp->npk; P++) {
         if (lp->pk[P].level > max_level) {
             lp->truncated = 1;
             continue;
         }
+        if (need && lp->pk[P].level > counted) { /* a new level: all its pockets exist */
+            counted = lp->pk[P].level;
+            memset(lp->seen, 0, (size_t)lp->m * sizeof *lp->seen);
+            for (long Q = P; Q < lp->npk && lp->pk[Q].level == counted; Q++)
+                for (long i = 0; i < lp->pk[Q].k; i++)
+                    if (lp->pk[Q].ids[i] < lp->m) lp->seen[lp->pk[Q].ids[i]]++;
+        }
+        if (need && P > 0 && skippable(lp, P, need)) continue;
         if (process_window(lp, P) < 0) {
             drop_pockets(lp);
             return -1;
         }
     }
-    lp->source = s, lp->max_level = max_level;
+    lp->source = need ? -1 : s, lp->max_level = max_level;
     return 0;
 }
 
 int cm_link_distances_upto(cm_linkpart *lp, long s, int max_level, int *dist)
 {
-    if (run_levels(lp, s, max_level) < 0) return -1;
+    if (run_levels(lp, s, max_level, NULL) < 0) return -1;
+    memcpy(dist, lp->dist, (size_t)lp->m * sizeof *dist);
+    return lp->truncated;
+}
+
+int cm_link_distances_needed(cm_linkpart *lp, long s, int max_level, const unsigned char *need, int *dist)
+{
+    if (run_levels(lp, s, max_level, need) < 0) return -1;
     memcpy(dist, lp->dist, (size_t)lp->m * sizeof *dist);
     return lp->truncated;
 }
@@ -683,7 +720,7 @@ static int build_bends(cm_linkpart *lp, long v, int d, double *pts)
 int cm_link_path(cm_linkpart *lp, long u, long v, double **bends, long *nbends)
 {
     *bends = NULL, *nbends = 0;
-    if (run_levels(lp, u, INT_MAX) < 0) return -1;
+    if (run_levels(lp, u, INT_MAX, NULL) < 0) return -1;
     int d = lp->dist[v];
     if (d < 1) return 0;
     if (d == 1) return cm_path_valid(lp->xy, lp->m, u, v, NULL, 0);
