@@ -422,6 +422,25 @@ static void check_needed(const double *xy, int n, const char *what)
         CHECK_MSG(links == final[n / 2] || links == 0, "%s: path after a partial run", what);
         free(bends);
     }
+    /* a partition built only as far as the distance gives the same path,
+     * bit for bit, and none below it */
+    long same = 0, paths = 0;
+    for (int u = 0; lp && fin && u < n; u += 3) {
+        cm_link_distances(fin, u, final);
+        for (int v = 0; v < n; v++) {
+            if (final[v] < 2) continue;
+            double *b1 = NULL, *b2 = NULL, *b3 = NULL;
+            long n1 = 0, n2 = 0, n3 = 0;
+            int l1 = cm_link_path(ref, u, v, &b1, &n1);
+            int l2 = cm_link_path_within(lp, u, v, final[v], &b2, &n2);
+            int l3 = cm_link_path_within(lp, u, v, final[v] - 1, &b3, &n3);
+            paths++;
+            same += l1 == l2 && n1 == n2 && (n1 == 0 || memcmp(b1, b2, sizeof(double) * 2 * (size_t)n1) == 0) &&
+                    l3 == 0 && !b3;
+            free(b1), free(b2), free(b3);
+        }
+    }
+    CHECK_MSG(same == paths && paths > 0, "%s: %ld of %ld paths within the distance differ", what, paths - same, paths);
     cm_linkpart_free(lp), cm_linkpart_free(ref), cm_linkpart_free(fin);
     free(d), free(need);
 }

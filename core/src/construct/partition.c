@@ -918,9 +918,9 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
     for (size_t g = 0; g < k && result == 1; g++) {
         double *path = NULL;
         long nb = 0;
-        int links = cm_link_path(f->lp[g], pr->u, pr->v, &path, &nb);
         long end = f->src[pr->row] == pr->u ? pr->v : pr->u;
         int expect = dist_row(f, g, pr->row)[end];
+        int links = cm_link_path_within(f->lp[g], pr->u, pr->v, expect, &path, &nb);
         if (links < 0) result = -1;
         else if (links == 0 || links != expect) result = 0;
         else if (cut_choices(f, pr, g, path, nb, search, &c[g]) != 0) result = -1;

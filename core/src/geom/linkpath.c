@@ -719,10 +719,17 @@ static int build_bends(cm_linkpart *lp, long v, int d, double *pts)
 
 int cm_link_path(cm_linkpart *lp, long u, long v, double **bends, long *nbends)
 {
+    return cm_link_path_within(lp, u, v, INT_MAX, bends, nbends);
+}
+
+int cm_link_path_within(cm_linkpart *lp, long u, long v, int max_level, double **bends, long *nbends)
+{
     *bends = NULL, *nbends = 0;
-    if (run_levels(lp, u, INT_MAX, NULL) < 0) return -1;
+    /* the path reads only v's pocket and its ancestors, all within v's
+     * level: the levels beyond change nothing */
+    if (run_levels(lp, u, max_level, NULL) < 0) return -1;
     int d = lp->dist[v];
-    if (d < 1) return 0;
+    if (d < 1 || d > max_level) return 0;
     if (d == 1) return cm_path_valid(lp->xy, lp->m, u, v, NULL, 0);
     double *pts = malloc(2 * (size_t)(d - 1) * sizeof *pts);
     if (!pts) return -1;

@@ -58,6 +58,10 @@ int cm_link_distances_needed(cm_linkpart *lp, long s, int max_level, const unsig
  * in doubles (a window passing within rounding distance of a vertex),
  * -1 out of memory. */
 int cm_link_path(cm_linkpart *lp, long u, long v, double **bends, long *nbends);
+/* The same when the link distance is known to be at most max_level (the
+ * partition is built only that far; the same path): 0 also when it is
+ * not. */
+int cm_link_path_within(cm_linkpart *lp, long u, long v, int max_level, double **bends, long *nbends);
 
 /* 1 if the polyline u, bends[0..nb-1], v is a valid cut: every link lies
  * strictly inside the polygon xy[0..m-1] (u, v vertices, bends interior
