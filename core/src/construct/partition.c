@@ -464,6 +464,28 @@ static int split_diagonal(part *p, const item *it, long i, long j)
 static int greedy_split(part *p, item *it, const cm_diagview *common)
 {
     long m = it->m;
+    cm_diagrows rows;
+    int32_t *row = m >= CM_DIAGROWS_FROM ? malloc((size_t)m * sizeof *row) : NULL;
+    if (row && cm_diagrows_open(&rows, common, m) == 0) {
+        /* the pair the scan below meets first: the largest span (the
+         * shorter way round, at least 2), then the smallest start i */
+        long best_span = 1, best_i = -1;
+        for (long a = 0; a < m; a++) {
+            long c = cm_diagrows_row(&rows, a, row);
+            for (long t = 0; t < c; t++) {
+                long b = row[t], d = (b - a + m) % m, span = d < m - d ? d : m - d;
+                long i = d < m - d ? a : d > m - d ? b : (a < b ? a : b);
+                if (span > best_span || (span == best_span && span >= 2 && i < best_i))
+                    best_span = span, best_i = i;
+            }
+        }
+        cm_diagrows_close(&rows);
+        free(row);
+        if (best_i < 0) return 0;
+        p->st->greedy_splits++;
+        return split_diagonal(p, it, best_i, (best_i + best_span) % m) == 0 ? 1 : -1;
+    }
+    free(row); /* out of memory: pair by pair */
     for (long span = m / 2; span >= 2; span--) {
         for (long i = 0; i < m; i++) {
             long j = (i + span) % m;
