@@ -6,6 +6,7 @@
  * brute-force segment test), symmetry, a returned path with exactly that
  * many links lying strictly inside, and no overestimate (a breadth-first
  * search through sampled interior points can only find longer paths). */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -114,6 +115,50 @@ static void test_xpoint(void)
     CHECK(cm_xpool_intersect(pool, a, b, a, b) == -2); /* the same line */
     CHECK(cm_xcompare(pool, x, x, 0) == 0 && cm_xcompare(pool, a, b, 0) < 0);
     cm_xpool_free(pool);
+}
+
+/* cm_segment_inside_edges agrees with the full test wherever its premise
+ * holds: every edge outside the given range misses the open segment and
+ * touches it at most at its ends (checked here by brute force). Random
+ * grid polygons have collinear vertices, so the touching cases occur. */
+static int touches_only_at(const double *a, const double *b, const double *w)
+{
+    if (cm_orient2d(a, b, w) != 0) return 1;
+    int axis = a[0] != b[0] ? 0 : 1;
+    return !((w[axis] > a[axis]) == (b[axis] > a[axis]) && w[axis] != a[axis]);
+}
+
+static void test_segment_inside_edges(void)
+{
+    long held = 0, inside = 0, outside = 0, bad = 0;
+    for (int seed = 1; seed <= 6; seed++) {
+        int n = 20 + 8 * seed;
+        double *xy = malloc(sizeof(double) * 2 * (size_t)n);
+        CHECK(xy && rp_random_simple(xy, n, 900 + (uint64_t)seed) == 0);
+        rp_rng rng = {77 + (uint64_t)seed};
+        for (int i = 0; xy && i < n; i++)
+            for (int j = i + 2; j < n; j++) {
+                if (i == 0 && j == n - 1) continue;
+                long first = (long)rp_below(&rng, (uint64_t)n), count = 1 + (long)rp_below(&rng, (uint64_t)n);
+                const double *a = xy + 2 * i, *b = xy + 2 * j;
+                int premise = 1;
+                for (long e = 0; premise && e < n - count; e++) {
+                    long s = (first + count + e) % n, t = (s + 1) % n;
+                    const double *e0 = xy + 2 * s, *e1 = xy + 2 * t;
+                    if (s == i || t == i) premise = touches_only_at(a, b, s == i ? e1 : e0);
+                    else if (s == j || t == j) premise = touches_only_at(b, a, s == j ? e1 : e0);
+                    else premise = cm_segments_intersect(a, b, e0, e1) == 0;
+                }
+                if (!premise) continue;
+                held++;
+                int full = cm_segment_inside(xy, n, i, a, j, b);
+                inside += full, outside += !full;
+                bad += cm_segment_inside_edges(xy, n, i, j, first, count) != full;
+            }
+        free(xy);
+    }
+    CHECK_MSG(bad == 0, "%ld of %ld restricted segment tests disagree", bad, held);
+    CHECK_MSG(inside > 50 && outside > 50, "premise held for %ld inside, %ld outside", inside, outside);
 }
 
 /* ---- visibility ---------------------------------------------------------- */
@@ -334,6 +379,81 @@ static void check_polygon(const double *xy, int n, int sample, const char *what)
     cm_linkpart_free(lp);
 }
 
+/* Distances asked for some vertices only: at those vertices they equal the
+ * whole partition's at the same cap; when it reports nothing left beyond
+ * the cap, they are final (the uncapped partition's). Masks: the vertices
+ * after the source (how the partition asks), a random half, none but one. */
+static void check_needed(const double *xy, int n, const char *what)
+{
+    /* ref keeps its last partition for a run at the same source and a
+     * lower cap, so the final distances come from a third one */
+    cm_linkpart *lp = cm_linkpart_create(xy, n), *ref = cm_linkpart_create(xy, n), *fin = cm_linkpart_create(xy, n);
+    int *d = malloc(sizeof(int) * 3 * (size_t)n), *full = d + n, *final = d + 2 * n;
+    unsigned char *need = malloc((size_t)n);
+    CHECK(lp && ref && fin && d && need);
+    rp_rng rng = {(uint64_t)n};
+    long bad = 0, compared = 0;
+    static const int caps[] = {2, 4, INT_MAX};
+    for (int s = 0; lp && ref && fin && d && need && s < n; s++) {
+        cm_link_distances(fin, s, final);
+        for (size_t c = 0; c < sizeof caps / sizeof *caps; c++) {
+            /* rising caps: ref builds each partition anew */
+            CHECK(cm_link_distances_upto(ref, s, caps[c], full) >= 0);
+            for (int mask = 0; mask < 3; mask++) {
+                for (int v = 0; v < n; v++)
+                    need[v] = mask == 0 ? v > s : mask == 1 ? (unsigned char)rp_below(&rng, 2) : v == (s + n / 2) % n;
+                int deeper = cm_link_distances_needed(lp, s, caps[c], need, d);
+                CHECK(deeper >= 0);
+                for (int v = 0; v < n; v++) {
+                    if (!need[v]) continue;
+                    compared++;
+                    bad += d[v] != full[v] || (deeper == 0 && d[v] != final[v]);
+                }
+            }
+        }
+    }
+    CHECK_MSG(bad == 0 && compared > 0, "%s: %ld of %ld needed distances differ", what, bad, compared);
+    /* a path from the same linkpart after a partial run is still exact */
+    double *bends = NULL;
+    long nb = 0;
+    if (lp && n > 4) {
+        int links = cm_link_path(lp, 0, n / 2, &bends, &nb);
+        cm_link_distances(fin, 0, final);
+        CHECK_MSG(links == final[n / 2] || links == 0, "%s: path after a partial run", what);
+        free(bends);
+    }
+    /* a partition built only as far as the distance gives the same path,
+     * bit for bit, and none below it */
+    long same = 0, paths = 0;
+    for (int u = 0; lp && fin && u < n; u += 3) {
+        cm_link_distances(fin, u, final);
+        for (int v = 0; v < n; v++) {
+            if (final[v] < 2) continue;
+            double *b1 = NULL, *b2 = NULL, *b3 = NULL;
+            long n1 = 0, n2 = 0, n3 = 0;
+            int l1 = cm_link_path(ref, u, v, &b1, &n1);
+            int l2 = cm_link_path_within(lp, u, v, final[v], &b2, &n2);
+            int l3 = cm_link_path_within(lp, u, v, final[v] - 1, &b3, &n3);
+            paths++;
+            same += l1 == l2 && n1 == n2 && (n1 == 0 || memcmp(b1, b2, sizeof(double) * 2 * (size_t)n1) == 0) &&
+                    l3 == 0 && !b3;
+            free(b1), free(b2), free(b3);
+        }
+    }
+    CHECK_MSG(same == paths && paths > 0, "%s: %ld of %ld paths within the distance differ", what, paths - same, paths);
+    cm_linkpart_free(lp), cm_linkpart_free(ref), cm_linkpart_free(fin);
+    free(d), free(need);
+}
+
+static void test_needed_distances(void)
+{
+    double xy[2 * 64];
+    for (uint64_t seed = 1; seed <= 4; seed++)
+        if (rp_random_simple(xy, 40, 300 + seed) == 0) check_needed(xy, 40, "random 40");
+    if (rp_spiral(xy, 48, 2) == 0) check_needed(xy, 48, "spiral 48");
+    if (rp_comb(xy, 48, 6) == 0) check_needed(xy, 48, "comb 48");
+}
+
 static void test_random_polygons(void)
 {
     double xy[2 * 64];
@@ -426,6 +546,7 @@ int main(void)
 {
     test_xpoint();
     test_segment_inside();
+    test_segment_inside_edges();
     test_visibility_table();
     test_ear_clipping();
     test_kernel();
@@ -434,5 +555,6 @@ int main(void)
     test_spiral_corridor();
     test_comb();
     test_random_polygons();
+    test_needed_distances();
     return check_summary("test_linkpath");
 }

@@ -209,10 +209,61 @@ static void test_fan(void)
     CHECK(merged > 5);
 }
 
+/* A large view read row by row (cm_diagrows, what the count and the
+ * greedy split use from CM_DIAGROWS_FROM vertices) gives exactly the pairs
+ * cm_diagview_has gives: a random set over n vertices, a view of every
+ * vertex but a random few (a sub-polygon's cyclic subsequence), and the
+ * identity view. The count agrees with the pair-by-pair count. */
+static void check_rows(const cm_diagview *view, long m, const char *what)
+{
+    cm_diagrows rows;
+    int32_t *row = malloc(sizeof(int32_t) * (size_t)m);
+    unsigned char *mark = calloc((size_t)m, 1);
+    CHECK(row && mark && cm_diagrows_open(&rows, view, m) == 0);
+    long bad = 0, pairs = 0, brute = 0;
+    for (long a = 0; row && mark && a < m; a++) {
+        long c = cm_diagrows_row(&rows, a, row);
+        for (long t = 0; t < c; t++) mark[row[t]]++;
+        for (long b = 0; b < m; b++) {
+            int has = cm_diagview_has(view, a, b);
+            bad += mark[b] != has;
+            pairs += has;
+            brute += has && b >= a + 2 && !(a == 0 && b == m - 1);
+            mark[b] = 0;
+        }
+    }
+    cm_diagrows_close(&rows);
+    CHECK_MSG(bad == 0 && pairs > 0, "%s: %ld of %ld pairs differ read row by row", what, bad, pairs);
+    CHECK_MSG(cm_steinerfree_count(m, view) == brute, "%s: count differs", what);
+    free(row), free(mark);
+}
+
+static void test_rows(void)
+{
+    long n = CM_DIAGROWS_FROM + 300;
+    cm_diagset set;
+    CHECK(cm_diagset_init(&set, n) == 0);
+    rp_rng rng = {4242};
+    for (long i = 0; i < n; i++)
+        for (long j = i + 2; j < n; j++)
+            if (rp_below(&rng, 97) == 0) cm_diagset_add(&set, i, j);
+    int32_t *map = malloc(sizeof(int32_t) * (size_t)n);
+    long m = 0;
+    for (long i = 0; map && i < n; i++)
+        if (rp_below(&rng, 11) != 0) map[m++] = (int32_t)i;
+    CHECK(m >= CM_DIAGROWS_FROM);
+    cm_diagview sub = {&set, map}, all = {&set, NULL};
+    if (map) check_rows(&sub, m, "sub-polygon view");
+    check_rows(&all, n, "identity view");
+    free(map);
+    cm_diagset_clear(&set);
+}
+
 int main(void)
 {
     test_against_enumeration();
     test_affine_image();
     test_fan();
+    test_rows();
     return check_summary("test_steinerfree");
 }

@@ -46,4 +46,21 @@ static inline int cm_diagview_has(const cm_diagview *v, long i, long j)
     return v->map ? cm_diagset_has(v->set, v->map[i], v->map[j]) : cm_diagset_has(v->set, i, j);
 }
 
+/* A view's pairs row by row, by words of the set's rows: O(n / 64 + row)
+ * a row for a set over n vertices, where looking up every local pair costs
+ * O(m) a row; for sub-polygons from CM_DIAGROWS_FROM vertices. */
+#define CM_DIAGROWS_FROM 2048
+typedef struct cm_diagrows {
+    const cm_diagview *view;
+    uint64_t *member;  /* the set's vertices that are the view's */
+    int32_t *local_of; /* set vertex -> local vertex (members only) */
+} cm_diagrows;
+
+/* For a view of m local vertices. 0 or -1 out of memory. */
+int cm_diagrows_open(cm_diagrows *r, const cm_diagview *view, long m);
+/* The local vertices b that (a, b) is in the set for, in no set order,
+ * into out (room for m). Returns their number. */
+long cm_diagrows_row(const cm_diagrows *r, long a, int32_t *out);
+void cm_diagrows_close(cm_diagrows *r);
+
 #endif

@@ -484,6 +484,28 @@ static int split_diagonal(part *p, const item *it, long i, long j)
 static int greedy_split(part *p, item *it, const cm_diagview *common)
 {
     long m = it->m;
+    cm_diagrows rows;
+    int32_t *row = m >= CM_DIAGROWS_FROM ? malloc((size_t)m * sizeof *row) : NULL;
+    if (row && cm_diagrows_open(&rows, common, m) == 0) {
+        /* the pair the scan below meets first: the largest span (the
+         * shorter way round, at least 2), then the smallest start i */
+        long best_span = 1, best_i = -1;
+        for (long a = 0; a < m; a++) {
+            long c = cm_diagrows_row(&rows, a, row);
+            for (long t = 0; t < c; t++) {
+                long b = row[t], d = (b - a + m) % m, span = d < m - d ? d : m - d;
+                long i = d < m - d ? a : d > m - d ? b : (a < b ? a : b);
+                if (span > best_span || (span == best_span && span >= 2 && i < best_i))
+                    best_span = span, best_i = i;
+            }
+        }
+        cm_diagrows_close(&rows);
+        free(row);
+        if (best_i < 0) return 0;
+        p->st->greedy_splits++;
+        return split_diagonal(p, it, best_i, (best_i + best_span) % m) == 0 ? 1 : -1;
+    }
+    free(row); /* out of memory: pair by pair */
     for (long span = m / 2; span >= 2; span--) {
         for (long i = 0; i < m; i++) {
             long j = (i + span) % m;
@@ -689,8 +711,10 @@ static const double offsets[] = {0.0, 0.12, -0.12, 0.3, -0.3};
 /* Estimated Steiner vertices of a polygon given by k coordinate arrays
  * and its common diagonals: its Steiner-free plan, each stuck face counted
  * 1 if it is star-shaped in every geometry (a fan) and (vertices - 3)
- * otherwise, or 1 if the whole polygon is star-shaped. -1 out of memory. */
-static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common)
+ * otherwise, or 1 if the whole polygon is star-shaped. Exact below limit;
+ * a result of limit or more only says the estimate is at least that (the
+ * faces left are not looked at). -1 out of memory. */
+static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common, long limit)
 {
     cm_diagview view = {common, NULL};
     double *pos = malloc(2 * k * sizeof *pos);
@@ -699,13 +723,17 @@ static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common
     cm_sf_plan plan;
     if (pos && all && cm_steinerfree_plan(m, &view, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
         cost = 0;
-        for (long f = 0; f < plan.nf && cost >= 0; f++) {
+        int whole = 0; /* the one face is the polygon, in its order: its test is the polygon's */
+        for (long f = 0; f < plan.nf && cost >= 0 && cost < limit; f++) {
             long n = plan.face_start[f + 1] - plan.face_start[f];
-            int star = kernel_points(k, xy, plan.face + plan.face_start[f], n, pos);
+            const int32_t *face = plan.face + plan.face_start[f];
+            int star = kernel_points(k, xy, face, n, pos);
             cost = star < 0 ? -1 : cost + (star ? 1 : n - 3);
+            whole = plan.nf == 1 && n == m;
+            for (long i = 0; whole && i < m; i++) whole = face[i] == i;
         }
         for (long i = 0; i < m; i++) all[i] = (int32_t)i;
-        if (cost > 1) {
+        if (cost > 1 && !whole) { /* the faces left only add: the whole polygon's fan decides */
             int star = kernel_points(k, xy, all, m, pos);
             cost = star < 0 ? -1 : star ? 1 : cost;
         }
@@ -765,6 +793,11 @@ static int half_diagonals(const face_ctx *f, size_t g, long from, long nc, const
             if (seen && inner) {
                 for (long e = nc - 1; seen && e < size; e++) /* the path's links */
                     seen = cm_segments_intersect(h + 2 * i, h + 2 * j, h + 2 * e, h + 2 * ((e + 1) % size)) == 0;
+            } else if (seen && chain && !(i == 0 && j == nc - 1)) {
+                /* one end is an end of P: a diagonal of the face, so only
+                 * P's links (edges nc - 1 .. size - 1) and that end's new
+                 * corner need a test */
+                seen = cm_segment_inside_edges(h, size, i, j, nc - 1, size - nc + 1);
             } else if (seen) {
                 seen = cm_segment_inside(h, size, i, h + 2 * i, j, h + 2 * j);
             }
@@ -804,8 +837,11 @@ static int half_common(face_ctx *f, cut_memo *memo, const pair *pr, int half, co
 }
 
 /* Sum of the halves' stuck costs for the cut u -> bends -> v, bends[g]
- * being choice pick[g] of geometry g. */
-static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pick, cut_memo *memo)
+ * being choice pick[g] of geometry g: exact below limit, else a bound
+ * from below of at least limit (what the search needs: it only takes a
+ * cost below its best so far, and that best only falls, so a bound kept
+ * in the memo stays at or above every later limit). */
+static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pick, cut_memo *memo, long limit)
 {
     size_t k = f->p->k;
     long m = f->it->m, nb = pr->links - 1, total = 0, key = 0;
@@ -813,7 +849,7 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
     if (memo->cost[key] != -2) return memo->cost[key];
     double **xy = calloc(k, sizeof *xy);
     if (!xy) return -1;
-    for (int half = 0; half < 2 && total >= 0 && total < LONG_MAX; half++) {
+    for (int half = 0; half < 2 && total >= 0 && total < limit; half++) {
         long from = half == 0 ? pr->u : pr->v, to = half == 0 ? pr->v : pr->u;
         long size = (to - from + m) % m + 1 + nb, bad = 0;
         for (size_t g = 0; g < k; g++) {
@@ -835,7 +871,7 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
         if (!bad && size > 3) {
             cm_diagset common = {0, 0, NULL};
             int s = half_common(f, memo, pr, half, pick, size, xy, &common);
-            c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(k, size, xy, &common);
+            c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(k, size, xy, &common, limit - total);
             cm_diagset_clear(&common);
         }
         total = c < 0 ? -1 : c == LONG_MAX ? LONG_MAX : total + c;
@@ -926,9 +962,9 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
     for (size_t g = 0; g < k && result == 1; g++) {
         double *path = NULL;
         long nb = 0;
-        int links = cm_link_path(f->lp[g], pr->u, pr->v, &path, &nb);
         long end = f->src[pr->row] == pr->u ? pr->v : pr->u;
         int expect = dist_row(f, g, pr->row)[end];
+        int links = cm_link_path_within(f->lp[g], pr->u, pr->v, expect, &path, &nb);
         if (links < 0) result = -1;
         else if (links == 0 || links != expect) result = 0;
         else if (cut_choices(f, pr, g, path, nb, search, &c[g]) != 0) result = -1;
@@ -946,13 +982,13 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
         for (size_t i = 0; memo.cost && i < combos; i++) memo.cost[i] = -2;
         if (!memo.diag || !memo.state || !memo.cost) result = -1;
     }
-    if (result == 1 && search) best = cut_cost(f, pr, bends, cur, &memo);
+    if (result == 1 && search) best = cut_cost(f, pr, bends, cur, &memo, LONG_MAX);
     for (int pass = 0; pass < 2 && result == 1 && search && best > 0; pass++)
         for (size_t g = 0; g < k && best > 0; g++)
             for (long i = 0; i < c[g].count && best > 0; i++) {
                 if (i == pick[g]) continue;
                 bends[g] = c[g].bends + per * i, cur[g] = i;
-                long cost_i = cut_cost(f, pr, bends, cur, &memo);
+                long cost_i = cut_cost(f, pr, bends, cur, &memo, best);
                 if (cost_i < 0) result = -1;
                 if (cost_i >= 0 && cost_i < best) best = cost_i, pick[g] = i;
                 bends[g] = c[g].bends + per * pick[g], cur[g] = pick[g];
@@ -1052,8 +1088,8 @@ static int link_split(part *p, item *it)
     double t0 = cm_seconds_now();
     face_ctx f = {p, it, local_xy(p, it), calloc(p->k, sizeof(cm_linkpart *)), malloc((size_t)nsrc * sizeof(long)),
                   nsrc, malloc((size_t)m * sizeof(long)), malloc(p->k * (size_t)nsrc * (size_t)m * sizeof(int)), NULL, 0};
-    unsigned char *open = malloc(p->k * (size_t)nsrc);
-    int result = f.l && f.lp && f.src && f.row_of && f.dist && open ? 0 : -1;
+    unsigned char *open = malloc(p->k * (size_t)nsrc), *need = malloc((size_t)m);
+    int result = f.l && f.lp && f.src && f.row_of && f.dist && open && need ? 0 : -1;
     for (long v = 0; result == 0 && v < m; v++) f.row_of[v] = -1;
     for (long r = 0; result == 0 && r < nsrc; r++) f.src[r] = r * m / nsrc, f.row_of[f.src[r]] = r;
     for (size_t g = 0; g < p->k && result == 0; g++) {
@@ -1069,7 +1105,10 @@ static int link_split(part *p, item *it)
         for (size_t g = 0; g < p->k && result == 0; g++)
             for (long r = 0; r < nsrc && result == 0; r++) {
                 if (!open[g * (size_t)nsrc + (size_t)r]) continue;
-                int s = cm_link_distances_upto(f.lp[g], f.src[r], cap, dist_row(&f, g, r));
+                /* rank_pairs reads a row only at the vertices that are
+                 * not sources of earlier rows */
+                for (long w = 0; w < m; w++) need[w] = w != f.src[r] && !(f.row_of[w] >= 0 && f.row_of[w] < r);
+                int s = cm_link_distances_needed(f.lp[g], f.src[r], cap, need, dist_row(&f, g, r));
                 if (s < 0) result = -1;
                 open[g * (size_t)nsrc + (size_t)r] = (unsigned char)(s == 1);
                 deeper += s == 1;
@@ -1077,7 +1116,7 @@ static int link_split(part *p, item *it)
         if (result == 0) result = cut_face(&f);
         if (result != 0 || cap == INT_MAX || deeper == 0) break;
     }
-    free(open);
+    free(open), free(need);
     for (size_t g = 0; f.lp && g < p->k; g++) cm_linkpart_free(f.lp[g]);
     for (size_t g = 0; f.own && g < p->k; g++) cm_diagset_clear(&f.own[g]);
     free(f.own);

@@ -373,6 +373,19 @@ void cm_sf_plan_clear(cm_sf_plan *plan)
 long cm_steinerfree_count(long m, const cm_diagview *common)
 {
     long count = 0;
+    cm_diagrows rows;
+    int32_t *row = m >= CM_DIAGROWS_FROM ? malloc((size_t)m * sizeof *row) : NULL;
+    if (row && cm_diagrows_open(&rows, common, m) == 0) {
+        for (long a = 0; a < m; a++) {
+            long c = cm_diagrows_row(&rows, a, row);
+            for (long t = 0; t < c; t++)
+                count += row[t] >= a + 2 && !(a == 0 && row[t] == m - 1);
+        }
+        cm_diagrows_close(&rows);
+        free(row);
+        return count;
+    }
+    free(row); /* out of memory: pair by pair */
     for (long a = 0; a < m; a++)
         for (long b = a + 2; b < m; b++)
             if (!(a == 0 && b == m - 1)) count += cm_diagview_has(common, a, b);

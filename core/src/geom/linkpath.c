@@ -52,6 +52,7 @@ struct cm_linkpart {
     int root_state;  /* 0 not built, 1 built, -1 failed */
     cm_visrows *rows;   /* visibility from a vertex over that triangulation */
     unsigned char *row; /* from the current source */
+    int *seen;          /* per vertex: in how many pockets of one level */
 };
 
 /* ---- set-up ------------------------------------------------------------- */
@@ -72,7 +73,8 @@ cm_linkpart *cm_linkpart_create(const double *xy, long m)
     lp->covered = malloc(n + 1);
     lp->all = malloc(n * sizeof *lp->all);
     lp->row = malloc(n);
-    int ok = lp->row && lp->xy && lp->pool && lp->dist && lp->via && lp->cone_a && lp->cone_b && lp->how &&
+    lp->seen = malloc(n * sizeof *lp->seen);
+    int ok = lp->row && lp->seen && lp->xy && lp->pool && lp->dist && lp->via && lp->cone_a && lp->cone_b && lp->how &&
              lp->covered && lp->all;
     for (long i = 0; ok && i < m; i++) {
         lp->xy[2 * i] = xy[2 * i], lp->xy[2 * i + 1] = xy[2 * i + 1];
@@ -106,7 +108,7 @@ void cm_linkpart_free(cm_linkpart *lp)
     free(lp->cone_a), free(lp->cone_b), free(lp->how), free(lp->covered), free(lp->all);
     cm_vsource_clear(&lp->root);
     cm_visrows_free(lp->rows);
-    free(lp->row);
+    free(lp->row), free(lp->seen);
     cm_xpool_free(lp->pool);
     free(lp);
 }
@@ -470,31 +472,66 @@ static int process_window(cm_linkpart *lp, long P)
     return 0;
 }
 
-static int run_levels(cm_linkpart *lp, long s, int max_level)
+/* May pocket P go unprocessed? With need given: when none of its vertices
+ * is needed and none is in another pocket of its level. What processing a
+ * pocket decides is confined to its vertices (and its sub-pockets, all
+ * within it); a vertex shared with a sibling could be decided by either,
+ * in order, so those are kept. */
+static int skippable(const cm_linkpart *lp, long P, const unsigned char *need)
 {
-    if (lp->source == s && lp->max_level >= max_level) return 0;
+    const pocket *p = &lp->pk[P];
+    for (long i = 0; i < p->k; i++) {
+        long v = p->ids[i];
+        if (v < lp->m && (need[v] || lp->seen[v] > 1)) return 0;
+    }
+    return 1;
+}
+
+/* The window partition from s up to max_level; with need (per vertex,
+ * NULL for all), pockets holding no needed vertex may be left out: the
+ * distances of the needed vertices are those of the whole partition, the
+ * others may stay undetermined, and the partition is not kept for paths. */
+static int run_levels(cm_linkpart *lp, long s, int max_level, const unsigned char *need)
+{
+    if (!need && lp->source == s && lp->max_level >= max_level) return 0;
     drop_pockets(lp);
     for (long v = 0; v < lp->m; v++) lp->dist[v] = -1, lp->how[v] = HOW_NONE;
     lp->dist[s] = 0;
     if (add_pocket(lp, lp->all, lp->m, 1, -1, s) < 0) return -1;
     lp->truncated = 0;
+    int counted = 1;
     for (long P = 0; P < lp->npk; P++) {
         if (lp->pk[P].level > max_level) {
             lp->truncated = 1;
             continue;
         }
+        if (need && lp->pk[P].level > counted) { /* a new level: all its pockets exist */
+            counted = lp->pk[P].level;
+            memset(lp->seen, 0, (size_t)lp->m * sizeof *lp->seen);
+            for (long Q = P; Q < lp->npk && lp->pk[Q].level == counted; Q++)
+                for (long i = 0; i < lp->pk[Q].k; i++)
+                    if (lp->pk[Q].ids[i] < lp->m) lp->seen[lp->pk[Q].ids[i]]++;
+        }
+        if (need && P > 0 && skippable(lp, P, need)) continue;
         if (process_window(lp, P) < 0) {
             drop_pockets(lp);
             return -1;
         }
     }
-    lp->source = s, lp->max_level = max_level;
+    lp->source = need ? -1 : s, lp->max_level = max_level;
     return 0;
 }
 
 int cm_link_distances_upto(cm_linkpart *lp, long s, int max_level, int *dist)
 {
-    if (run_levels(lp, s, max_level) < 0) return -1;
+    if (run_levels(lp, s, max_level, NULL) < 0) return -1;
+    memcpy(dist, lp->dist, (size_t)lp->m * sizeof *dist);
+    return lp->truncated;
+}
+
+int cm_link_distances_needed(cm_linkpart *lp, long s, int max_level, const unsigned char *need, int *dist)
+{
+    if (run_levels(lp, s, max_level, need) < 0) return -1;
     memcpy(dist, lp->dist, (size_t)lp->m * sizeof *dist);
     return lp->truncated;
 }
@@ -544,11 +581,15 @@ typedef struct {
     int found;
 } bend_choice;
 
-/* Considers bend y for pocket Q; the caller checked it sees the previous
- * point. Returns 0 or -1 (out of memory). */
-static int consider(cm_linkpart *lp, long Q, const double y[2], bend_choice *best)
+/* Considers bend y for pocket Q, to be seen from the previous point p
+ * (polygon vertex p_vertex or -1). Its score comes first: a bend that
+ * cannot beat the best so far needs no sight test. Returns 0 or -1 (out
+ * of memory). */
+static int consider(cm_linkpart *lp, long Q, const double y[2], long p_vertex, const double p[2],
+                    bend_choice *best)
 {
     long a, b;
+    if (lp->pk[Q].source >= 0 && best->found) return 0; /* the root's cone is its source: score 0 */
     int r = lit_in(lp, Q, y, &a, &b);
     if (r <= 0) return r;
     double score = 0.0;
@@ -557,10 +598,10 @@ static int consider(cm_linkpart *lp, long Q, const double y[2], bend_choice *bes
         double ux = pa[0] - y[0], uy = pa[1] - y[1], vx = pb[0] - y[0], vy = pb[1] - y[1];
         score = atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy);
     }
-    if (!best->found || score > best->score) {
-        best->y[0] = y[0], best->y[1] = y[1], best->score = score;
-        best->a = a, best->b = b, best->found = 1;
-    }
+    if (best->found && !(score > best->score)) return 0;
+    if (!sees(lp, p_vertex, p, y)) return 0;
+    best->y[0] = y[0], best->y[1] = y[1], best->score = score;
+    best->a = a, best->b = b, best->found = 1;
     return 0;
 }
 
@@ -628,7 +669,7 @@ static int cone_bend(cm_linkpart *lp, long P, long p_id, long p_vertex, long *a,
         if (!isfinite(room)) room = s;
         for (size_t di = 0; di < NDEPTHS; di++) {
             double step = s + room * depths[di], c[2] = {p[0] + step * dir[0], p[1] + step * dir[1]};
-            if (sees(lp, p_vertex, p, c) && consider(lp, parent, c, &best) < 0) return -1;
+            if (consider(lp, parent, c, p_vertex, p, &best) < 0) return -1;
         }
     }
     return take(lp, &best, y, id, a, b);
@@ -652,7 +693,7 @@ static int near_bend(cm_linkpart *lp, long Q, long w, double y[2], long *id, lon
         for (size_t di = 0; di < NDELTAS; di++) {
             double step = 0.6 * deltas[di] * scale;
             double c[2] = {pw[0] + step * cos(angle), pw[1] + step * sin(angle)};
-            if (sees(lp, w, pw, c) && consider(lp, Q, c, &best) < 0) return -1;
+            if (consider(lp, Q, c, w, pw, &best) < 0) return -1;
         }
     }
     return take(lp, &best, y, id, a, b);
@@ -677,10 +718,17 @@ static int build_bends(cm_linkpart *lp, long v, int d, double *pts)
 
 int cm_link_path(cm_linkpart *lp, long u, long v, double **bends, long *nbends)
 {
+    return cm_link_path_within(lp, u, v, INT_MAX, bends, nbends);
+}
+
+int cm_link_path_within(cm_linkpart *lp, long u, long v, int max_level, double **bends, long *nbends)
+{
     *bends = NULL, *nbends = 0;
-    if (run_levels(lp, u, INT_MAX) < 0) return -1;
+    /* the path reads only v's pocket and its ancestors, all within v's
+     * level: the levels beyond change nothing */
+    if (run_levels(lp, u, max_level, NULL) < 0) return -1;
     int d = lp->dist[v];
-    if (d < 1) return 0;
+    if (d < 1 || d > max_level) return 0;
     if (d == 1) return cm_path_valid(lp->xy, lp->m, u, v, NULL, 0);
     double *pts = malloc(2 * (size_t)(d - 1) * sizeof *pts);
     if (!pts) return -1;

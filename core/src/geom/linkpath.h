@@ -40,6 +40,10 @@ int cm_link_distances(cm_linkpart *lp, long s, int *dist);
  * larger max_level gives the same), 1 when some pocket lay beyond
  * max_level, -1 out of memory. */
 int cm_link_distances_upto(cm_linkpart *lp, long s, int max_level, int *dist);
+/* The same where only the vertices v with need[v] must be determined (the
+ * others may be left -1): pockets holding none of them are left out. 1
+ * when some pocket left to build lay beyond max_level, else as above. */
+int cm_link_distances_needed(cm_linkpart *lp, long s, int max_level, const unsigned char *need, int *dist);
 
 /* A minimum-link path from vertex u to vertex v: the bends (interior
  * points, two doubles each, from u's end) in *bends (malloc'd, NULL if
@@ -54,6 +58,10 @@ int cm_link_distances_upto(cm_linkpart *lp, long s, int max_level, int *dist);
  * in doubles (a window passing within rounding distance of a vertex),
  * -1 out of memory. */
 int cm_link_path(cm_linkpart *lp, long u, long v, double **bends, long *nbends);
+/* The same when the link distance is known to be at most max_level (the
+ * partition is built only that far; the same path): 0 also when it is
+ * not. */
+int cm_link_path_within(cm_linkpart *lp, long u, long v, int max_level, double **bends, long *nbends);
 
 /* 1 if the polyline u, bends[0..nb-1], v is a valid cut: every link lies
  * strictly inside the polygon xy[0..m-1] (u, v vertices, bends interior

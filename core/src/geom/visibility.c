@@ -155,22 +155,30 @@ static int edge_touches_only_at_end(const double a[2], const double b[2], const 
     return cm_orient2d(a, b, w) != 0 || !same_direction(a, b, w);
 }
 
-int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long ib,
-                      const double b[2])
+/* The constant-time conditions of cm_segment_inside: distinct ends, not a
+ * polygon edge, leaving inward at the ends that are vertices. */
+static int ends_inward(const double *xy, long m, long ia, const double a[2], long ib, const double b[2])
 {
     if (a[0] == b[0] && a[1] == b[1]) return 0;
     if (ia >= 0 && ib >= 0 && adjacent(m, ia, ib)) return 0;
-    /* the constant-time conditions first: a segment leaving outward needs
-     * no scan */
     if (ia >= 0 && !leaves_inward(xy, m, ia, b)) return 0;
     if (ib >= 0 && !leaves_inward(xy, m, ib, a)) return 0;
+    return 1;
+}
+
+/* Does the open segment ab miss the edges first .. first + count - 1
+ * (cyclic; edge i runs from vertex i to i + 1), an edge at vertex ia or ib
+ * touching it only there? */
+static int edges_clear(const double *xy, long m, long ia, const double a[2], long ib, const double b[2],
+                       long first, long count)
+{
     /* ab's box: edges entirely to one side of it cannot meet ab (exact
      * comparisons, the test cm_segments_intersect starts with, here
      * without the call; skipped for NaN coordinates) */
     const double lo[2] = {a[0] < b[0] ? a[0] : b[0], a[1] < b[1] ? a[1] : b[1]};
     const double hi[2] = {a[0] < b[0] ? b[0] : a[0], a[1] < b[1] ? b[1] : a[1]};
     int boxed = a[0] == a[0] && a[1] == a[1] && b[0] == b[0] && b[1] == b[1];
-    for (long i = 0; i < m; i++) {
+    for (long c = 0, i = first; c < count; c++, i = i + 1 < m ? i + 1 : 0) {
         long j = i + 1 < m ? i + 1 : 0;
         const double *e0 = xy + 2 * i, *e1 = xy + 2 * j;
         if (ia == i || ia == j) {
@@ -186,6 +194,15 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
             continue;
         if (cm_segments_intersect(a, b, e0, e1) != 0) return 0;
     }
+    return 1;
+}
+
+int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long ib,
+                      const double b[2])
+{
+    /* the constant-time conditions first: a segment leaving outward needs
+     * no scan */
+    if (!ends_inward(xy, m, ia, a, ib, b) || !edges_clear(xy, m, ia, a, ib, b, 0, m)) return 0;
     if (ia < 0 && ib < 0) {
         /* No contact with the boundary: inside iff a is inside. */
         long crossings = 0;
@@ -198,6 +215,12 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
         return (int)(crossings & 1);
     }
     return 1;
+}
+
+int cm_segment_inside_edges(const double *xy, long m, long ia, long ib, long first, long count)
+{
+    const double *a = xy + 2 * ia, *b = xy + 2 * ib;
+    return ends_inward(xy, m, ia, a, ib, b) && edges_clear(xy, m, ia, a, ib, b, first, count);
 }
 
 /* ---- the kernel ----------------------------------------------------------- */
@@ -273,11 +296,16 @@ typedef struct {
     const long *ids;
     long *prev, *next, *blockers, nblockers;
     signed char *turn, *ear, *gone;
+    const double **input; /* per vertex: its coordinates if an input point, else NULL */
     cm_pointgrid grid;
 } ear_ctx;
 
+/* cm_xorient, with input points tested here directly (what it does for them) */
 static int xo(const ear_ctx *e, long a, long b, long c)
 {
+    const double *pa = e->input[a], *pb = e->input[b], *pc = e->input[c];
+    if (pa && pb && pc && e->ids[a] != e->ids[b] && e->ids[b] != e->ids[c] && e->ids[a] != e->ids[c])
+        return cm_orient2d(pa, pb, pc);
     return cm_xorient(e->pool, e->ids[a], e->ids[b], e->ids[c]);
 }
 
@@ -378,10 +406,13 @@ int cm_xtriangulate(cm_xpool *pool, const long *ids, long k, int32_t *tri_out)
 {
     size_t n = (size_t)k;
     ear_ctx e = {pool, ids, malloc(n * sizeof(long)), malloc(n * sizeof(long)),
-                 malloc(n * sizeof(long)), 0, malloc(n), malloc(n), malloc(n), .grid = {.head = NULL}};
+                 malloc(n * sizeof(long)), 0, malloc(n), malloc(n), malloc(n), malloc(n * sizeof(double *)),
+                 .grid = {.head = NULL}};
     int status = -1;
-    if (e.prev && e.next && e.blockers && e.turn && e.ear && e.gone) status = clip_xears(&e, k, tri_out);
-    free(e.prev), free(e.next), free(e.blockers), free(e.turn), free(e.ear), free(e.gone);
+    for (long i = 0; e.input && i < k; i++)
+        e.input[i] = cm_xpool_is_input(pool, ids[i]) ? cm_xpool_xy(pool, ids[i]) : NULL;
+    if (e.prev && e.next && e.blockers && e.turn && e.ear && e.gone && e.input) status = clip_xears(&e, k, tri_out);
+    free(e.prev), free(e.next), free(e.blockers), free(e.turn), free(e.ear), free(e.gone), free(e.input);
     cm_pointgrid_clear(&e.grid);
     return status;
 }

@@ -36,6 +36,12 @@ void cm_visrows_free(cm_visrows *v);
  * (b) is a point that must itself lie strictly inside. Exact, O(m). */
 int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long ib,
                       const double b[2]);
+/* The same for the segment between vertices ia and ib when only the edges
+ * first .. first + count - 1 (cyclic; edge i from vertex i to i + 1) can
+ * meet it, the others known to miss the open segment and to touch it at
+ * most at its ends: the end directions and those edges are tested. Exact,
+ * O(count). */
+int cm_segment_inside_edges(const double *xy, long m, long ia, long ib, long first, long count);
 
 /* A point strictly inside the kernel of the simple counter-clockwise
  * polygon xy[0..m-1] (the points that see the whole polygon), found by
