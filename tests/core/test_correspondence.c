@@ -410,53 +410,6 @@ static void test_no_diagonal_along_an_input_edge(void)
     }
 }
 
-/* A pair the conformal map crowds: an L whose arms are 12 long and 1 wide
- * (the harmonic measure seen from the corner's square all but vanishes
- * along the arms' far ends), each side cut into unit edges (48 vertices),
- * against a regular 48-gon. The tempered parameters put several of the
- * 48-gon's vertices a sliver beside vertices of the L; the snap joins
- * them: every vertex of b lands on a vertex of a or at least
- * CM_CONFORMAL_SNAP of the shorter edge at one of the two away (its own
- * edges as placed on a, a's edges at a's nearest vertex), unless that
- * is half its own edge or more, and some land on a's vertices. */
-static void test_conformal_snaps_crowded_vertices(void)
-{
-    enum { N = 48 };
-    double a[2 * N], b[2 * N], pa[N], pb[N];
-    /* the L counter-clockwise from the origin: along x to 12, up 1, back
-     * to 1, up to 12, back 1, down to 0 */
-    const double corner[][2] = {{0, 0}, {12, 0}, {12, 1}, {1, 1}, {1, 12}, {0, 12}};
-    int m = 0;
-    for (int s = 0; s < 6; s++) {
-        const double *p = corner[s], *q = corner[(s + 1) % 6];
-        int pieces = (int)lround(hypot(q[0] - p[0], q[1] - p[1]));
-        for (int i = 0; i < pieces; i++, m++)
-            a[2 * m] = p[0] + (q[0] - p[0]) * i / pieces, a[2 * m + 1] = p[1] + (q[1] - p[1]) * i / pieces;
-    }
-    CHECK_MSG(m == N, "%d vertices", m);
-    for (int i = 0; i < N; i++) b[2 * i] = 6 * cos(2 * 3.14159265358979323846 * i / N), b[2 * i + 1] = 6 * sin(2 * 3.14159265358979323846 * i / N);
-    const double *in[2] = {a, b};
-    double *params[2] = {pa, pb};
-    size_t counts[2] = {N, N};
-    int orientation[2] = {1, 1}, found = 0;
-    cm_error err = {0};
-    CHECK(cm_correspond_conformal(in, counts, 2, orientation, params, &found, &err) == CM_OK && found);
-    int on = 0;
-    for (int c = 0; found && c < N; c++) {
-        double u = pb[c], gap = 1, e0 = 1;
-        for (int v = 0; v < N; v++) {
-            double d = fabs(remainder(pa[v] - u, 1.0));
-            if (d < gap) gap = d, e0 = fmin(fabs(remainder(pa[(v + 1) % N] - pa[v], 1.0)),
-                                            fabs(remainder(pa[(v + N - 1) % N] - pa[v], 1.0)));
-        }
-        double eg = fmin(fabs(remainder(pb[(c + 1) % N] - u, 1.0)), fabs(remainder(pb[(c + N - 1) % N] - u, 1.0)));
-        on += gap == 0;
-        CHECK_MSG(gap == 0 || gap >= CM_CONFORMAL_SNAP * fmax(e0, eg) || gap >= 0.5 * eg,
-                  "b's vertex %d: %g from a's nearest vertex (edges %g, %g)", c, gap, e0, eg);
-    }
-    CHECK_MSG(on >= 1, "%d of b's vertices on a's", on);
-}
-
 int main(void)
 {
     test_different_counts();
@@ -465,7 +418,6 @@ int main(void)
     test_pins_are_honoured();
     test_bad_pins();
     test_conformal_similar_copy();
-    test_conformal_snaps_crowded_vertices();
     test_auto_conformal_identity();
     test_similarity_mode();
     test_capped_edges_split();
