@@ -260,32 +260,6 @@ static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, dou
     return CM_OK;
 }
 
-/* The distance between x and y on the circle of circumference 1. */
-static double around(double x, double y) { return fabs(remainder(x - y, 1.0)); }
-
-/* Polygon g's vertices joined to the vertices of polygon 0 they fall
- * beside: vertex c of g (at pg[c] on polygon 0, whose own vertices sit at
- * p0, increasing from p0[0] = 0) takes the place of polygon 0's nearest
- * vertex when the gap between them is below CM_CONFORMAL_SNAP of the
- * shorter edge at that vertex of polygon 0 or at c (g's edges as placed
- * on polygon 0), and below half of g's edges there, so g's order stays.
- * The tempered parameters crowd a stretch of one polygon into a spot of
- * the other; beside a vertex, that would leave the merged boundary an
- * edge a sliver of the input edges next to it, and an added point more in
- * each polygon. */
-static void snap(const double *p0, size_t n0, double *pg, size_t ng)
-{
-    for (size_t c = 0; c < ng; c++) {
-        double u = pg[c];
-        size_t v = below(p0, n0, u); /* p0[v] <= u */
-        if (around(p0[(v + 1) % n0], u) < around(p0[v], u)) v = (v + 1) % n0;
-        double gap = around(p0[v], u);
-        double e0 = fmin(around(p0[(v + 1) % n0], p0[v]), around(p0[(v + n0 - 1) % n0], p0[v]));
-        double eg = fmin(around(pg[(c + 1) % ng], u), around(pg[(c + ng - 1) % ng], u));
-        if (gap > 0 && gap < CM_CONFORMAL_SNAP * fmax(e0, eg) && gap < 0.5 * eg) pg[c] = p0[v];
-    }
-}
-
 cm_status cm_correspond_conformal(const double *const *polygons, const size_t *counts, size_t k,
                                   const int *orientation, double *const *params, int *found, cm_error *err)
 {
@@ -312,7 +286,6 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
     for (size_t g = 1; s == CM_OK && usable && g < k; g++) {
         search q = {w0, s0, SEARCH_SAMPLES, &disks[g]};
         s = place(&disks[0], &disks[g], best_turn(&q), counts[g], params[g], err);
-        if (s == CM_OK) snap(params[0], counts[0], params[g], counts[g]);
     }
     free(s0);
     if (s == CM_OK) *found = usable;

@@ -30,12 +30,8 @@
  * length)^CM_CONFORMAL_POWER, normalised, which keeps the order and place
  * of the parts the conformal map sees and takes the power of its
  * crowding; a similar copy gets the same parameter. The power and the
- * rest were chosen by measurement (bench/CORRESPONDENCE.md). A vertex
- * that lands beside one of polygon 0's, within CM_CONFORMAL_SNAP of the
- * shorter edge at one of the two (and within half of its own edges),
- * is moved onto it: no sliver edge, no added point there. */
+ * rest were chosen by measurement (bench/CORRESPONDENCE.md). */
 #define CM_CONFORMAL_POWER 0.25
-#define CM_CONFORMAL_SNAP 0.25
 cm_status cm_correspond_conformal(const double *const *polygons, const size_t *counts, size_t k,
                                   const int *orientation, double *const *params, int *found, cm_error *err);
 
