@@ -213,6 +213,7 @@ int write_report(const char *path, const report_info *info, cli_error *error)
     set_text(&t, root, "method", info->method);
     set_bool(&t, root, "remesh", info->remesh);
     set_text(&t, root, "correspondence", correspondence[info->correspondence]);
+    set_text(&t, root, "correspondence_choice", cm_correspondence_choice_name(stats->correspondence_choice));
     if (info->max_edge > 0) set_real(&t, root, "max_edge", info->max_edge);
     set_bool(&t, root, "reversed_input", stats->reversed_input);
     set_count(&t, root, "fallback_count", stats->fallback_count);

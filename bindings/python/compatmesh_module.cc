@@ -404,6 +404,7 @@ py::dict stats_of(const cm_result *result)
   // 0 in the core when not computed (no auto choice): None here
   stats["correspondence_bound_before_deg"] =
       s->correspondence_bound_before_deg > 0 ? py::object(py::float_(s->correspondence_bound_before_deg)) : py::none();
+  stats["correspondence_choice"] = cm_correspondence_choice_name(s->correspondence_choice);
   py::list quality, quality_before;
   for (std::size_t g = 0; g < s->k; g++) {
     cm_quality q;
@@ -1030,6 +1031,8 @@ Common attributes (arrays are numpy arrays):
                     "reversed_input, fallback_count, steiner_before_remesh, remesh_iterations, remesh_aim_deg, "
                     "ceiling_deg, corner_fan_cap_deg, correspondence_bound_deg, modulus_distortion, "
                     "distortion_quad, correspondence_bound_before_deg (None unless auto chose the starts), "
+                    "correspondence_choice (the correspondence made: 'index', 'arclength', 'conformal', "
+                    "'similarity' or 'affine'; with holes the outer loop's), "
                     "seconds_*), quality and quality_before_remesh (one dict per geometry)")
       .def("to_meshio", &result_to_meshio, py::arg("geometry") = py::none(),
            R"doc(to_meshio(geometry=None) -> meshio.Mesh or list of meshio.Mesh

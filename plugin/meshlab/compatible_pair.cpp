@@ -155,7 +155,8 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   cm_result_quality(r, 0, &q[0]);
   cm_result_quality(r, 1, &q[1]);
   outcome.log.push_back(std::string("correspondence: ") + correspondence_name(settings.correspondence) +
-                        " (" + std::to_string(polygons[0].size()) + " and " +
+                        ", made: " + cm_correspondence_choice_name(stats->correspondence_choice) + " (" +
+                        std::to_string(polygons[0].size()) + " and " +
                         std::to_string(polygons[1].size()) + " input vertices, " + std::to_string(n) +
                         " on the common boundary, every input vertex kept" +
                         (stats->holes ? ", loop by loop: the outer loop and " + std::to_string(stats->holes) +

@@ -9,7 +9,8 @@
  * choice. Where a boundary edge caps the angle below the aim, arclength
  * and auto halve it compatibly (an 8 x 1 rectangle: 4 pieces per long
  * side), index keeps it; the construction joins no two boundary vertices
- * on one input edge. */
+ * on one input edge. cm_stats.correspondence_choice names the
+ * correspondence every path made. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -322,6 +323,87 @@ static void test_similarity_mode(void)
     cm_result_free(r);
 }
 
+/* The correspondence made, as cm_stats.correspondence_choice reports it,
+ * of a pair (k = 2) and polygons with holes. */
+static cm_correspondence_choice choice_of(const double *a, size_t na, const double *b, size_t nb,
+                                          cm_correspondence mode, const size_t *pins, double corners_deg,
+                                          double max_edge)
+{
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = mode, o.remesh = 0;
+    o.pins = pins, o.num_pins = pins ? 1 : 0, o.pin_corners_deg = corners_deg, o.max_edge = max_edge;
+    const double *in[2] = {a, b};
+    size_t counts[2] = {na, nb};
+    cm_result *r = NULL;
+    CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r) == CM_OK, "%s", cm_result_message(r));
+    cm_correspondence_choice c = cm_result_stats(r)->correspondence_choice;
+    cm_result_free(r);
+    return c;
+}
+
+/* Every path names what it made: index (also when max_edge splits the
+ * edges), arclength (asked for, or auto between pins or corner pins),
+ * auto keeping the conformal correspondence (a three-lobed outline of 40
+ * vertices against a 2 x 0.5 ellipse of 36: ceiling 45.0 degrees against
+ * the similarity choice's 40.9) or the similarity choice (a 12-pointed
+ * star against a squashed, turned one with other radii: 41.6 against the
+ * conformal 23.6), affine (a turned, scaled copy renumbered from another
+ * vertex: every vertex pinned), similarity asked for; with holes the outer
+ * loop's (auto on a ring against a ring with one more outer vertex:
+ * similarity). */
+static void test_choice_reported(void)
+{
+    enum { N = 40, E = 36, S = 12 };
+    const double pi = 3.14159265358979323846;
+    double lobes[2 * N], ellipse[2 * E], copy[2 * N], star[2 * S], squashed[2 * S];
+    for (int i = 0; i < N; i++) {
+        double phi = 2 * pi * i / N, r = 1 + 0.4 * cos(3 * phi);
+        lobes[2 * i] = r * cos(phi), lobes[2 * i + 1] = r * sin(phi);
+    }
+    for (int i = 0; i < E; i++) ellipse[2 * i] = 2 * cos(2 * pi * i / E), ellipse[2 * i + 1] = 0.5 * sin(2 * pi * i / E);
+    for (int i = 0; i < S; i++) {
+        double r = i % 2 ? 0.7 : 1.0, q = i % 2 ? 0.5 : 0.8, phi = 2 * pi * i / S;
+        star[2 * i] = r * cos(phi), star[2 * i + 1] = r * sin(phi);
+        squashed[2 * i] = 1.4 * q * cos(phi + 0.5), squashed[2 * i + 1] = 0.7 * q * sin(phi + 0.5);
+    }
+    similar_copy(lobes, N, 11, copy);
+    size_t pin[2] = {3, 17};
+    CHECK(choice_of(lobes, N, copy, N, CM_CORRESPOND_INDEX, NULL, 0, 0) == CM_CHOICE_INDEX);
+    CHECK(choice_of(lobes, N, copy, N, CM_CORRESPOND_INDEX, NULL, 0, 0.05) == CM_CHOICE_INDEX);
+    CHECK(choice_of(lobes, N, ellipse, E, CM_CORRESPOND_ARCLENGTH, NULL, 0, 0) == CM_CHOICE_ARCLENGTH);
+    CHECK(choice_of(lobes, N, ellipse, E, CM_CORRESPOND_AUTO, NULL, 0, 0) == CM_CHOICE_CONFORMAL);
+    CHECK(choice_of(star, S, squashed, S, CM_CORRESPOND_AUTO, NULL, 0, 0) == CM_CHOICE_SIMILARITY);
+    CHECK(choice_of(lobes, N, copy, N, CM_CORRESPOND_AUTO, NULL, 0, 0) == CM_CHOICE_AFFINE);
+    CHECK(choice_of(lobes, N, copy, N, CM_CORRESPOND_SIMILARITY, NULL, 0, 0) == CM_CHOICE_AFFINE);
+    CHECK(choice_of(lobes, N, ellipse, E, CM_CORRESPOND_SIMILARITY, NULL, 0, 0) == CM_CHOICE_SIMILARITY);
+    CHECK(choice_of(lobes, N, ellipse, E, CM_CORRESPOND_AUTO, pin, 0, 0) == CM_CHOICE_ARCLENGTH);
+    CHECK(choice_of(star, S, squashed, S, CM_CORRESPOND_AUTO, NULL, 20, 0) == CM_CHOICE_ARCLENGTH);
+    CHECK(strcmp(cm_correspondence_choice_name(CM_CHOICE_CONFORMAL), "conformal") == 0 &&
+          strcmp(cm_correspondence_choice_name(CM_CHOICE_AFFINE), "affine") == 0 &&
+          strcmp(cm_correspondence_choice_name((cm_correspondence_choice)99), "unknown") == 0);
+
+    /* A 4 x 4 square with a 1 x 1 square hole (clockwise), and the same
+     * ring with a midpoint on its outer bottom side. */
+    const double ring[] = {0, 0, 4, 0, 4, 4, 0, 4, 1.5, 1.5, 1.5, 2.5, 2.5, 2.5, 2.5, 1.5};
+    const double ring5[] = {0, 0, 2, 0, 4, 0, 4, 4, 0, 4, 1.5, 1.5, 1.5, 2.5, 2.5, 2.5, 2.5, 1.5};
+    size_t sizes[2] = {4, 4}, sizes5[2] = {5, 4};
+    cm_loops in[2] = {{ring, sizes, 2}, {ring5, sizes5, 2}};
+    cm_correspondence modes[3] = {CM_CORRESPOND_INDEX, CM_CORRESPOND_ARCLENGTH, CM_CORRESPOND_AUTO};
+    cm_correspondence_choice expected[3] = {CM_CHOICE_INDEX, CM_CHOICE_ARCLENGTH, CM_CHOICE_SIMILARITY};
+    for (int m = 0; m < 3; m++) {
+        cm_options o;
+        cm_options_init(&o);
+        o.correspondence = modes[m], o.remesh = 0;
+        in[1] = m == 0 ? in[0] : (cm_loops){ring5, sizes5, 2}; /* index needs equal sizes */
+        cm_result *r = NULL;
+        CHECK_MSG(cm_triangulate_loops(in, 2, &o, &r) == CM_OK, "mode %d: %s", m, cm_result_message(r));
+        CHECK_MSG(cm_result_stats(r)->correspondence_choice == expected[m], "mode %d: %s", m,
+                  cm_correspondence_choice_name(cm_result_stats(r)->correspondence_choice));
+        cm_result_free(r);
+    }
+}
+
 /* An 8 x 1 rectangle against a copy scaled by 2: a triangle on a long side
  * has its apex at most 1 from it, so its smallest angle is at most
  * atan(1 / 4) = 14.04 degrees: index keeps the four vertices and stays
@@ -420,6 +502,7 @@ int main(void)
     test_conformal_similar_copy();
     test_auto_conformal_identity();
     test_similarity_mode();
+    test_choice_reported();
     test_capped_edges_split();
     test_no_diagonal_along_an_input_edge();
     return check_summary("test_correspondence");

@@ -230,6 +230,33 @@ typedef struct cm_options {
  * fields you need: new fields get sensible defaults in later versions. */
 CM_API void cm_options_init(cm_options *options);
 
+/* Which correspondence a result was made in (cm_stats.correspondence_choice):
+ * what CM_CORRESPOND_AUTO and _SIMILARITY kept, and what the others are. */
+typedef enum cm_correspondence_choice {
+    /* Vertex i corresponds to vertex i (CM_CORRESPOND_INDEX, also with
+     * max_edge; results of cm_result_from_meshes). */
+    CM_CHOICE_INDEX = 0,
+    /* Normalised arc length from every polygon's first vertex or between
+     * pins: CM_CORRESPOND_ARCLENGTH, and AUTO or SIMILARITY with pins or
+     * pin_corners_deg (arc length between the pins). */
+    CM_CHOICE_ARCLENGTH,
+    /* AUTO: the conformal correspondence (the higher ceiling). */
+    CM_CHOICE_CONFORMAL,
+    /* AUTO or SIMILARITY: arc length from the starts whose points fit a
+     * similar image of polygon 0's best (for AUTO, the higher ceiling, or
+     * the conformal map could not be had). */
+    CM_CHOICE_SIMILARITY,
+    /* AUTO or SIMILARITY: the polygons are affine images of one another up
+     * to their first vertex, so every vertex is pinned to its image (no
+     * distortion of the correspondence). */
+    CM_CHOICE_AFFINE
+} cm_correspondence_choice;
+
+/* Its name as the CLI's report.json and the Python module give it:
+ * "index", "arclength", "conformal", "similarity" or "affine"
+ * ("unknown" for a value outside the enum). */
+CM_API const char *cm_correspondence_choice_name(cm_correspondence_choice choice);
+
 typedef struct cm_stats {
     size_t n;                /* input vertices per polygon */
     size_t k;                /* number of polygons (geometries) */
@@ -286,6 +313,11 @@ typedef struct cm_stats {
                                 one per hole when the construction that always
                                 succeeds took over (fallback_count 1; the
                                 overlay method takes it from the start) */
+    /* The correspondence the result was made in. For polygons with holes,
+     * the outer loop's; every hole then takes the same, except after
+     * CM_CHOICE_AFFINE, where the holes take CM_CHOICE_SIMILARITY (their
+     * starts fitted jointly with the outer loop's). */
+    cm_correspondence_choice correspondence_choice;
 } cm_stats;
 
 /* Quality of one geometry of the result. */

@@ -37,6 +37,12 @@ void cm_result_free(cm_result *r)
     free(r);
 }
 
+const char *cm_correspondence_choice_name(cm_correspondence_choice choice)
+{
+    static const char *const names[] = {"index", "arclength", "conformal", "similarity", "affine"};
+    return (unsigned)choice < sizeof names / sizeof *names ? names[choice] : "unknown";
+}
+
 static int ok(const cm_result *r) { return r && r->error.status == CM_OK; }
 
 cm_status cm_result_status(const cm_result *r) { return r ? r->error.status : CM_ERR_ARGUMENT; }

@@ -341,9 +341,11 @@ static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *de
  * correspondence, or the similarity choice where that allows the higher
  * ceiling (a polygon whose corners the similarity fit pairs corner to
  * corner, a disc that would take another polygon's crowding whole);
- * *found = 0 when the conformal one cannot be had (out then untouched). */
+ * *found = 0 when the conformal one cannot be had (out then untouched),
+ * else *choice says which was kept. */
 static cm_status auto_whole(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
-                            const int *orientation, cm_boundary_map *out, int *found, double *ceiling_deg)
+                            const int *orientation, cm_boundary_map *out, int *found, double *ceiling_deg,
+                            cm_correspondence_choice *choice)
 {
     cm_status s = conformal(r, polygons, counts, k, orientation, out, found);
     if (s != CM_OK || !*found) return s;
@@ -355,9 +357,11 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
     if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, starts, 1, &similar, &r->error);
     if (s == CM_OK) s = ceiling_of(r, out, &conformal_deg);
     if (s == CM_OK) s = ceiling_of(r, &similar, &similar_deg);
+    *choice = CM_CHOICE_CONFORMAL;
     if (s == CM_OK && similar_deg > conformal_deg) {
         cm_boundary_map t = *out;
         *out = similar, similar = t;
+        *choice = CM_CHOICE_SIMILARITY;
     }
     *ceiling_deg = fmax(conformal_deg, similar_deg);
     cm_boundary_map_clear(&similar);
@@ -372,12 +376,15 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
  * every vertex. whole: a whole polygon, whose pins the caller gave and
  * whose bound before the choice is reported; 0 for one loop of polygons
  * with holes. hole_starts: for auto, the starts chosen for a hole (k input
- * vertices), taken in place of the loop's own choice; else NULL. */
+ * vertices), taken in place of the loop's own choice; else NULL. *choice
+ * receives the correspondence made. */
 static cm_status correspond_boundary(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
                                      const int *orientation, const cm_options *o, const size_t *every_vertex,
-                                     int whole, const size_t *hole_starts, cm_boundary_map *out, double *ceiling_deg)
+                                     int whole, const size_t *hole_starts, cm_boundary_map *out, double *ceiling_deg,
+                                     cm_correspondence_choice *choice)
 {
     *ceiling_deg = -1;
+    *choice = every_vertex ? CM_CHOICE_INDEX : CM_CHOICE_ARCLENGTH;
     cm_status s = CM_OK;
     const size_t *pins = every_vertex ? every_vertex : whole ? o->pins : NULL;
     size_t num_pins = every_vertex ? counts[0] : whole ? o->num_pins : 0, *chosen = NULL;
@@ -386,7 +393,7 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
         chosen = malloc(k * sizeof *chosen);
         if (!chosen) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         memcpy(chosen, hole_starts, k * sizeof *chosen);
-        pins = chosen, num_pins = 1;
+        pins = chosen, num_pins = 1, *choice = CM_CHOICE_SIMILARITY;
     }
     if (chosen_mode(o) && num_pins == 0 && !(o->pin_corners_deg > 0)) {
         /* Affine images of one another: vertex to vertex, no distortion. */
@@ -394,13 +401,13 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
         affine = malloc(counts[0] * k * sizeof *affine);
         s = affine ? cm_correspond_affine_shift(polygons, counts, k, orientation, affine, &found, &r->error)
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-        if (found) pins = affine, num_pins = counts[0];
+        if (found) pins = affine, num_pins = counts[0], *choice = CM_CHOICE_AFFINE;
     }
     if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && whole &&
         !(o->pin_corners_deg > 0)) {
         /* Polygons without holes: conformal or similarity (auto_whole). */
         int found = 0;
-        s = auto_whole(r, polygons, counts, k, orientation, out, &found, ceiling_deg);
+        s = auto_whole(r, polygons, counts, k, orientation, out, &found, ceiling_deg, choice);
         if (s == CM_OK && found) {
             if (o->ceiling) s = bound_before(r, polygons, counts, k, orientation);
             if (s == CM_OK && o->max_edge > 0)
@@ -413,7 +420,7 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
         chosen = malloc(k * sizeof *chosen);
         s = chosen ? cm_correspond_choose_starts(polygons, counts, k, orientation, chosen, &r->error)
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-        pins = chosen, num_pins = 1;
+        pins = chosen, num_pins = 1, *choice = CM_CHOICE_SIMILARITY;
     }
     size_t *corner_pins = NULL;
     if (s == CM_OK && o->pin_corners_deg > 0) {
@@ -423,7 +430,7 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
                                                &corner_pins, &num_pins, &r->error)
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         if (starts != chosen) free(starts);
-        pins = corner_pins;
+        pins = corner_pins, *choice = CM_CHOICE_ARCLENGTH;
     }
     if (s == CM_OK && chosen && o->ceiling && whole) s = bound_before(r, polygons, counts, k, orientation);
     if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, pins, num_pins, out, &r->error);
@@ -501,7 +508,8 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
     if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
     double ceiling_deg = -1;
     if (s == CM_OK)
-        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, 1, NULL, &r->boundary, &ceiling_deg);
+        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, 1, NULL, &r->boundary, &ceiling_deg,
+                                &r->stats.correspondence_choice);
     int32_t **tris = NULL; /* the merged polygons' triangulations, when the cap split made them */
     if (s == CM_OK && !every_vertex && o->remesh)
         s = split_capped_edges(r, polygons, counts, orientation, o, ceiling_deg, &tris);
@@ -818,6 +826,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
     }
     size_t n = 0;
     double unused_ceiling; /* the loops take no cap split */
+    cm_correspondence_choice loop_choice;
     int joint = chosen_mode(o);
     double *similarity = NULL;
     size_t *hole_starts = NULL;
@@ -834,7 +843,8 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
             s = cm_correspond_choose_hole_starts(xy, count, k, loop_orientation, similarity, hole_starts, &r->error);
         if (s == CM_OK)
             s = correspond_boundary(r, xy, count, k, loop_orientation, o, every, 0, joint && l ? hole_starts : NULL,
-                                    &maps[l], &unused_ceiling);
+                                    &maps[l], &unused_ceiling, &loop_choice);
+        if (l == 0) r->stats.correspondence_choice = loop_choice; /* the outer loop's (cm_stats) */
         if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
             char detail[sizeof r->error.message];
             snprintf(detail, sizeof detail, "%s", r->error.message);
