@@ -75,6 +75,7 @@ def test_equal_counts_keep_the_index_correspondence(cm, tmp_path):
     assert r.returncode == 0, r.stderr
     report = json.loads((tmp_path / "out" / "report.json").read_text())
     assert report["correspondence"] == "index" and report["n"] == 20
+    assert report["correspondence_choice"] == "index"
     assert "boundary_source" not in report["meshes"][0]
 
 
@@ -88,6 +89,7 @@ def test_auto_recovers_a_shifted_start(cm, tmp_path):
     report = json.loads((tmp_path / "out" / "report.json").read_text())
     assert report["n"] == 24
     assert report["meshes"][1]["boundary_source"][0] == [17, 0]
+    assert report["correspondence_choice"] == "affine"  # every vertex pinned to its image
 
 
 def sampled_rectangle(w, h, per_side, start):
@@ -123,6 +125,7 @@ def test_pin_corners_ties_corner_to_corner(cm, tmp_path):
     assert r.returncode == 0, r.stderr
     report = json.loads((tmp_path / "out" / "report.json").read_text())
     assert report["correspondence"] == "arclength"  # the default with corner pins
+    assert report["correspondence_choice"] == "arclength"
     assert set(zip(ca, cb)) <= pinned_pairs(report)
     # Without them, arc length alone puts the corners elsewhere.
     r = cm("triangulate", "a.xy", "b.xy", "-o", "plain", "--correspondence", "arclength")
@@ -160,3 +163,32 @@ def test_bad_corner_pins(cm, tmp_path, args, message):
     assert r.returncode == 2
     assert len(r.stderr.strip().splitlines()) == 1 and message in r.stderr, r.stderr
     assert not (tmp_path / "out").exists()
+
+
+def lobes(n):
+    """A three-lobed outline of n vertices."""
+    return [((1 + 0.4 * math.cos(3 * t)) * math.cos(t), (1 + 0.4 * math.cos(3 * t)) * math.sin(t))
+            for t in (2 * math.pi * i / n for i in range(n))]
+
+
+def twelve_star(r0, r1, phase=0.0, sx=1.0, sy=1.0):
+    return [(sx * (r1 if i % 2 else r0) * math.cos(phase + math.pi * i / 6),
+             sy * (r1 if i % 2 else r0) * math.sin(phase + math.pi * i / 6)) for i in range(12)]
+
+
+@pytest.mark.parametrize("a, b, args, choice", [
+    # The conformal pairing allows the higher ceiling (45.0 degrees against 40.9).
+    (lobes(40), [(2 * math.cos(2 * math.pi * i / 36), 0.5 * math.sin(2 * math.pi * i / 36)) for i in range(36)],
+     [], "conformal"),
+    # The similarity fit pairs the stars corner to corner (41.6 against 23.6).
+    (twelve_star(1.0, 0.7), twelve_star(0.8, 0.5, 0.5, 1.4, 0.7), ["--correspondence", "auto"], "similarity"),
+    # Pins: arc length between them, whatever auto would have chosen.
+    (lobes(40), lobes(30), ["--pin", "0,0", "--pin", "20,15"], "arclength"),
+])
+def test_report_names_the_correspondence_made(cm, tmp_path, a, b, args, choice):
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    r = cm("triangulate", "a.xy", "b.xy", "-o", "out", "--no-remesh", *args)
+    assert r.returncode == 0, r.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert report["correspondence_choice"] == choice

@@ -269,14 +269,15 @@ def expect_error(code, log, message, workdir, outputs):
 def case_ply_polylines(w):
     # Closed polylines (PLY edge elements) with 16 and 22 vertices, in
     # parallel planes: the default correspondence (auto) pairs them by arc
-    # length, every input vertex kept.
+    # length, every input vertex kept; the conformal correspondence allows
+    # the higher ceiling and is the one kept (the log says which).
     a = star(16, 1.0, 0.6)
     b = [(x + 0.3, y, 1.5) for x, y, _ in star(22, 1.2, 0.9, phase=0.2, scale=(1.0, 0.6))]
     write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
     write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
     code, log = run(w, ["a.ply", "b.ply"], os.path.join(DOCS, "pair.mlx"), {2: "out_a.ply", 3: "out_b.ply"})
     expect_ok(code, log)
-    assert "correspondence: auto (16 and 22 input vertices" in log, log
+    assert "correspondence: auto, made: conformal (16 and 22 input vertices" in log, log
     pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, 10.0)
     check_log_numbers(log, pa, pb, ta)
     print("PLY polylines: %d vertices, %d triangles" % (len(pa), len(ta)))
@@ -313,7 +314,7 @@ def case_obj_polylines(w):
     script = script_with(w, "pair.mlx", [('value="2" name="Correspondence"', 'value="1" name="Correspondence"'), ('value="" name="Pins"', 'value="0,3" name="Pins"')])
     code, log = run(w, ["a.obj", "b.obj"], script, {2: "out_a.ply", 3: "out_b.ply"})
     expect_ok(code, log)
-    assert "correspondence: arc length (18 and 15 input vertices" in log, log
+    assert "correspondence: arc length, made: arclength (18 and 15 input vertices" in log, log
     pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, 10.0)
     # Vertex 0 of the first is paired with vertex 3 of the second.
     a32 = np.array(a, dtype=np.float32).astype(np.float64)
@@ -353,6 +354,9 @@ def case_sweep(w):
     outs = {2: "pair_a.ply", 3: "pair_b.ply", 4: "s1.ply", 5: "s2.ply", 6: "s3.ply", 7: "lateral.ply"}
     code, log = run(w, ["a.ply", "b.ply"], os.path.join(DOCS, "pair_and_sweep.mlx"), outs)
     expect_ok(code, log)
+    # The similarity fit pairs the stars corner to corner: a higher ceiling
+    # than the conformal pairing, so auto keeps it.
+    assert "correspondence: auto, made: similarity (12 and 12 input vertices" in log, log[-2000:]
     pa, pb, ta = check_pair(w, "pair_a.ply", "pair_b.ply", a, b, 10.0)
     worst = check_sections(w, ta, 0.0, 2.0, 3)
     assert "intermediate sections by convex-combination morph" in log, log[-2000:]
@@ -519,7 +523,8 @@ def case_gmsh_sections(w):
                 os.remove(os.path.join(d, r))
         code, log = run(d, ["a.obj", "b.obj"], os.path.join(DOCS, "pair.mlx"), {2: "pa.ply", 3: "pb.ply"})
         expect_ok(code, log)
-        assert "correspondence: auto (%d and %d input vertices" % tuple(map(len, sections)) in log, log[-2000:]
+        assert re.search(r"correspondence: auto, made: (conformal|similarity|affine) \(%d and %d input vertices"
+                         % tuple(map(len, sections)), log), log[-2000:]
         pa, _, ta = check_pair(d, "pa.ply", "pb.ply", sections[0], sections[1], 10.0)
         # The command line reads the same OBJ sections (one `l a b` line per edge).
         cli = subprocess.run([os.path.join(os.path.dirname(WRAPPER), "compatmesh"), "triangulate", "a.obj",

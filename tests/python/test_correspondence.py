@@ -35,6 +35,7 @@ def test_equal_counts_keep_index():
     r = compatmesh.triangulate([ring(10), ring(10, inner=0.4)])
     assert r.stats["n"] == 10
     assert list(r.boundary_source[1]["edge"]) == list(range(10))
+    assert r.stats["correspondence_choice"] == "index"
 
 
 @pytest.mark.parametrize("kwargs, error, message", [
@@ -95,6 +96,7 @@ def test_affine_image_is_the_identity():
     r = compatmesh.triangulate([a, b], correspondence="auto", remesh=False)
     assert r.stats["n"] == 15 and r.stats["steiner"] == 0
     assert list(r.boundary_source[1]["edge"]) == [(i - 4) % 15 for i in range(15)]
+    assert r.stats["correspondence_choice"] == "affine"
 
 
 def test_similarity_mode():
@@ -113,3 +115,38 @@ def test_similarity_mode():
         even = eb % 2 == 0
         assert (r.boundary_source[0]["t"][even] == 0).all()
         assert list(ea[even]) == [(e // 2 + 5) % 12 for e in eb[even]]
+
+
+def lobes(n):
+    t = 2 * np.pi * np.arange(n) / n
+    r = 1 + 0.4 * np.cos(3 * t)
+    return np.c_[r * np.cos(t), r * np.sin(t)]
+
+
+def twelve_star(r0, r1, phase=0.0, sx=1.0, sy=1.0):
+    t, r = phase + np.pi * np.arange(12) / 6, np.where(np.arange(12) % 2, r1, r0)
+    return np.c_[sx * r * np.cos(t), sy * r * np.sin(t)]
+
+
+def test_stats_name_the_correspondence_made():
+    # auto keeps the conformal pairing of a three-lobed outline and an
+    # ellipse (ceiling 45.0 degrees against the similarity choice's 40.9),
+    # the similarity choice for two 12-pointed stars (41.6 against 23.6);
+    # pins make it arc length between them; with holes the outer loop's.
+    t = 2 * np.pi * np.arange(36) / 36
+    ellipse = np.c_[2 * np.cos(t), 0.5 * np.sin(t)]
+    cases = [
+        (dict(correspondence="auto"), [lobes(40), ellipse], "conformal"),
+        (dict(correspondence="auto"), [twelve_star(1.0, 0.7), twelve_star(0.8, 0.5, 0.5, 1.4, 0.7)], "similarity"),
+        (dict(correspondence="similarity"), [lobes(40), ellipse], "similarity"),
+        (dict(correspondence="arclength"), [lobes(40), ellipse], "arclength"),
+        (dict(pins=[(0, 0), (20, 18)]), [lobes(40), ellipse], "arclength"),
+    ]
+    for kwargs, polygons, choice in cases:
+        r = compatmesh.triangulate(polygons, remesh=False, **kwargs)
+        assert r.stats["correspondence_choice"] == choice, (kwargs, choice)
+    hole = np.array([[1.5, 1.5], [1.5, 2.5], [2.5, 2.5], [2.5, 1.5]])
+    a = [np.array([[0, 0], [4, 0], [4, 4], [0, 4]], float), hole]
+    b = [np.array([[0, 0], [2, 0], [4, 0], [4, 4], [0, 4]], float), hole]
+    r = compatmesh.triangulate([a, b], correspondence="auto", remesh=False)
+    assert r.stats["holes"] == 1 and r.stats["correspondence_choice"] == "similarity"
