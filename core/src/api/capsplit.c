@@ -53,6 +53,14 @@ static cm_status caps_of(const cm_boundary_map *map, cm_progress *progress, doub
     return s;
 }
 
+/* Edge j (of n) caps every triangle on it below the aim: its cap, with the
+ * remesher's margin, under the aim and under the vertex caps at its ends
+ * (where half a corner is lower, the corner binds first). */
+static int binds(const double *bcap, const double *vcap, size_t n, size_t j, double aim)
+{
+    return CM_EDGE_CAP_MARGIN * bcap[j] < fmin(aim, fmin(vcap[j], vcap[(j + 1) % n]));
+}
+
 /* k arrays of 3 (n - 2) indices, or NULL. */
 static int32_t **tris_new(size_t k, size_t n)
 {
@@ -82,17 +90,14 @@ cm_status cm_boundary_map_split_caps(cm_boundary_map *map, const double *const *
         tris = tris_new(map->k, n);
         s = bcap && pieces && tris ? caps_of(map, progress, bcap, vcap, tris, &simple, err)
                                    : cm_fail_status(err, CM_ERR_NO_MEMORY);
-        /* Where half a corner at an end is lower, the corner binds first. */
-        for (size_t j = 0; s == CM_OK && simple && j < n; j++)
-            binding += CM_EDGE_CAP_MARGIN * bcap[j] < fmin(aim, fmin(vcap[j], vcap[(j + 1) % n]));
+        for (size_t j = 0; s == CM_OK && simple && j < n; j++) binding += binds(bcap, vcap, n, j, aim);
         if (s == CM_OK && simple && binding && round == 0 && ceiling) {
             double c = ceiling(ctx, &s);
             if (s == CM_OK && c < 0) simple = 0; /* no ceiling: leave the boundary to the pipeline's check */
             aim = fmin(aim, c);
         }
         for (size_t j = 0; s == CM_OK && simple && binding && j < n; j++) {
-            int binds = CM_EDGE_CAP_MARGIN * bcap[j] < fmin(aim, fmin(vcap[j], vcap[(j + 1) % n]));
-            pieces[j] = binds && map->n + more < start + max_added ? 2 : 1;
+            pieces[j] = binds(bcap, vcap, n, j, aim) && map->n + more < start + max_added ? 2 : 1;
             more += pieces[j] - 1;
         }
         if (s == CM_OK && more) s = cm_boundary_map_split_edges(map, polygons, counts, orientation, pieces, err);

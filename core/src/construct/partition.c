@@ -254,6 +254,17 @@ static int open_rows(const double *const *xy, const int32_t *const *tris, size_t
     return status;
 }
 
+/* all[j] = 1 for from <= j < m where vertex j sees vertex i in every
+ * geometry of r, else 0; row: m bytes of scratch. */
+static void seen_by_all(const rowset *r, long i, long from, long m, unsigned char *row, unsigned char *all)
+{
+    memset(all + from, 1, (size_t)(m - from));
+    for (size_t g = 0; g < r->k; g++) {
+        cm_visrows_row(r->rows[g], i, row);
+        for (long j = from; j < m; j++) all[j] &= row[j];
+    }
+}
+
 /* The common diagonals: pairs that see each other in every geometry, one
  * row of each geometry's visibility at a time (O(k m) memory beside the
  * set). tris as for open_rows. 0, -1 memory, 1 failed (not simple);
@@ -262,18 +273,14 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
                         const part *p, const int32_t *gid, cm_diagset *common)
 {
     rowset r = {NULL, NULL, k};
-    unsigned char *row = malloc((size_t)m * (k + 1));
+    unsigned char *row = malloc(2 * (size_t)m);
     int status = open_rows(xy, tris, k, m, &r);
     if (status != 0) goto done;
     status = -1;
     if (!row || cm_diagset_init(common, m) != 0) goto done;
-    unsigned char *all = row + (size_t)m * k;
+    unsigned char *all = row + m;
     for (long i = 0; i < m; i++) {
-        memset(all, 1, (size_t)m);
-        for (size_t g = 0; g < k; g++) {
-            cm_visrows_row(r.rows[g], i, row + (size_t)m * g);
-            for (long j = i + 1; j < m; j++) all[j] &= row[(size_t)m * g + (size_t)j];
-        }
+        seen_by_all(&r, i, i + 1, m, row, all);
         for (long j = i + 1; j < m; j++)
             if (all[j] && !(p && flat_pair(p, gid[i], gid[j]))) cm_diagset_add(common, i, j);
     }
@@ -533,11 +540,7 @@ static void best_at(const part *p, const item *it, const rowset *r, long i, unsi
                     long *best, long *bj)
 {
     long m = it->m;
-    memset(all, 1, (size_t)m);
-    for (size_t g = 0; g < r->k; g++) {
-        cm_visrows_row(r->rows[g], i, row);
-        for (long j = 0; j < m; j++) all[j] &= row[j];
-    }
+    seen_by_all(r, i, 0, m, row, all);
     *bj = -1;
     for (long j = 0; j < m; j++) {
         long span = (j - i + m) % m, balance = span < m - span ? span : m - span;
