@@ -6,9 +6,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/mesh.h"
 #include "check.h"
 #include "compatmesh/compatmesh.h"
 #include "hole_fixtures.h"
+#include "random_polygons.h"
 #include "result_check.h"
 
 static cm_loops loops_of(const shape *s)
@@ -450,6 +452,75 @@ static void test_auto_hole_starts(void)
     }
 }
 
+/* Do boundary vertices u and w of polygon g (input loops s) lie on one of
+ * its input edges? An input vertex lies on the edges before and after it
+ * along its loop, a point inside an edge on that edge alone. */
+static int on_one_edge(const cm_result *r, const shape *s, size_t g, size_t u, size_t w)
+{
+    double t[2];
+    long e[2] = {cm_result_boundary_source(r, g, u, &t[0]), cm_result_boundary_source(r, g, w, &t[1])}, before[2];
+    for (int i = 0; i < 2; i++) {
+        size_t start, size;
+        input_loop(s, e[i], &start, &size);
+        before[i] = (size_t)e[i] == start ? (long)(start + size - 1) : e[i] - 1;
+    }
+    return e[0] == e[1] || (t[0] == 0 && e[1] == before[0]) || (t[1] == 0 && e[0] == before[1]);
+}
+
+/* A slanted quadrilateral with a slanted quadrilateral hole against stars
+ * with an off-centre star hole (auto, seeds 1 to 8): every loop of the
+ * quadrilateral gets the stars' vertices on its edges, rounded off their
+ * lines, so a segment between two on one input edge can pass as a
+ * diagonal with a sliver beside it (seeds 2, 7 and 8 join two on one edge
+ * of the hole loop when the partition is not told where they lie).
+ * Expected: valid; points added on the hole loop's input edges (else the
+ * check below is idle); no construction edge but the boundary's joins two
+ * boundary vertices on one input edge of either polygon, on any loop. */
+static void test_no_edge_along_an_input_edge(void)
+{
+    enum { N = 40, H = 24 };
+    const double quad[8] = {0, 0, 1, 0.3, 0.7, 1.3, -0.3, 1};
+    for (int seed = 1; seed <= 8; seed++) {
+        shape a = {0}, b = {0};
+        begin_loop(&a);
+        for (int i = 0; i < 4; i++) add_point(&a, quad[2 * i], quad[2 * i + 1]);
+        begin_loop(&a); /* the quadrilateral shrunk to 0.3 about (0.35, 0.65), clockwise */
+        for (int i = 3; i >= 0; i--) add_point(&a, 0.35 + 0.3 * (quad[2 * i] - 0.35), 0.65 + 0.3 * (quad[2 * i + 1] - 0.65));
+        double star[2 * N], hole[2 * H];
+        CHECK(rp_star(star, N, (uint64_t)seed) == 0 && rp_star(hole, H, (uint64_t)seed + 50) == 0);
+        begin_loop(&b);
+        for (int i = 0; i < N; i++) add_point(&b, star[2 * i], star[2 * i + 1]);
+        begin_loop(&b); /* within 0.24 of the centre, inside the star's radius 0.3; clockwise */
+        for (int i = H - 1; i >= 0; i--) add_point(&b, 0.12 + 0.12 * hole[2 * i], 0.12 * hole[2 * i + 1]);
+        cm_options o;
+        cm_options_init(&o);
+        o.correspondence = CM_CORRESPOND_AUTO, o.remesh = 0;
+        cm_loops in[2] = {loops_of(&a), loops_of(&b)};
+        cm_result *r = NULL;
+        CHECK_MSG(cm_triangulate_loops(in, 2, &o, &r) == CM_OK, "seed %d: %s", seed, cm_result_message(r));
+        if (cm_result_status(r) != CM_OK) {
+            cm_result_free(r);
+            continue;
+        }
+        size_t n = cm_result_stats(r)->n, added = 0, along = 0, start[3] = {0, n, n}; /* the output's loops */
+        for (size_t i = 0; i < n; i++) {
+            double t;
+            if (cm_result_boundary_source(r, 0, i, &t) < 4) continue; /* the outer loop's */
+            start[1] = i < start[1] ? i : start[1];
+            added += t != 0;
+        }
+        const int32_t *tri = cm_result_triangles(r);
+        for (size_t c = 0; c < 3 * cm_result_num_triangles(r); c++) {
+            size_t u = (size_t)tri[c], w = (size_t)tri[c - c % 3 + (c + 1) % 3];
+            if (u >= n || w >= n || cm_loops_next(start, n, u) == w || cm_loops_next(start, n, w) == u) continue;
+            along += on_one_edge(r, &a, 0, u, w) + on_one_edge(r, &b, 1, u, w);
+        }
+        CHECK_MSG(added >= H / 2, "seed %d: %zu points added on the hole loop", seed, added);
+        CHECK_MSG(along == 0, "seed %d: %zu construction edges along an input edge", seed, along);
+        cm_result_free(r);
+    }
+}
+
 /* Without holes the loops call is cm_triangulate_polygons, bit for bit. */
 static void test_hole_free_same(void)
 {
@@ -483,5 +554,6 @@ int main(void)
     test_fallback();
     test_arclength_loops();
     test_auto_hole_starts();
+    test_no_edge_along_an_input_edge();
     return check_summary("test_holes");
 }

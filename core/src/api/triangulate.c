@@ -211,6 +211,28 @@ static cm_status hint_at_range(cm_result *r, cm_status s, const double *const *p
     return s;
 }
 
+/* Where r->boundary's vertices lie on the inputs (the partition's rule on
+ * input edges): its loop l, boundary vertices at[l] .. at[l + 1] - 1,
+ * keeps input loop l's vertices (those with t == 0), so the input loops'
+ * starts are counts of those. on->loop_start is one block to free. */
+static cm_status on_edges_init(cm_result *r, const size_t *at, size_t num_loops, cm_on_edges *on)
+{
+    const cm_boundary_map *b = &r->boundary;
+    size_t k = b->k, **loop_start = malloc(k * sizeof *loop_start + k * (num_loops + 1) * sizeof **loop_start);
+    if (!loop_start) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    for (size_t g = 0; g < k; g++) {
+        size_t *ls = loop_start[g] = (size_t *)(loop_start + k) + g * (num_loops + 1);
+        ls[0] = 0;
+        for (size_t l = 0; l < num_loops; l++) {
+            ls[l + 1] = ls[l];
+            for (size_t i = at[l]; i < at[l + 1]; i++) ls[l + 1] += b->t[g][i] == 0;
+        }
+    }
+    *on = (cm_on_edges){(const int32_t *const *)b->edge, (const double *const *)b->t,
+                        (const size_t *const *)loop_start, num_loops, NULL};
+    return CM_OK;
+}
+
 /* tris: NULL, or the polygons' triangulations (cm_polygon_triangulate's)
  * when already made. */
 static cm_status run_pipeline(cm_result *r, const double *const *polygons, const size_t *counts,
@@ -232,16 +254,13 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
 
     double ceiling_before = r->stats.seconds_ceiling;
     cm_on_edges on_edges, *on = NULL;
-    size_t *inputs = NULL;
     if (r->boundary.n == n && r->boundary.k == k && !clockwise) { /* the arc-length path's boundaries */
-        if (!(inputs = calloc(k, sizeof *inputs))) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-        for (size_t g = 0; g < k; g++)
-            for (size_t i = 0; i < n; i++) inputs[g] += r->boundary.t[g][i] == 0;
-        on_edges = (cm_on_edges){(const int32_t *const *)r->boundary.edge, (const double *const *)r->boundary.t, inputs};
+        size_t whole[2] = {0, n};
+        if ((s = on_edges_init(r, whole, 1, &on_edges)) != CM_OK) return s;
         on = &on_edges;
     }
     s = build_first(r, polygons, tris, k, n, clockwise, on, o, &progress);
-    free(inputs);
+    if (on) free((void *)on->loop_start);
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     r->stats.seconds_build = cm_seconds_now() - t1 - (r->stats.seconds_ceiling - ceiling_before);
     s = remesh_stage(r, n, o, &progress);
@@ -606,9 +625,12 @@ static int32_t loop_input_index(const size_t *start, const int *reversed, size_t
 }
 
 /* Triangulates every piece of the cut and glues them into r->mesh
- * (internal numbering: the n loop vertices first, then the paths' bends). */
+ * (internal numbering: the n loop vertices first, then the paths' bends).
+ * on: NULL, or where the boundary vertices lie on the inputs, internal
+ * loop vertex v being boundary vertex perm[v]. */
 static cm_status build_pieces(cm_result *r, const double *const *geoms, size_t k, size_t n,
-                              const cm_pieces *pieces, const cm_options *o, cm_progress *progress)
+                              const cm_pieces *pieces, const cm_on_edges *on, const int32_t *perm,
+                              const cm_options *o, cm_progress *progress)
 {
     size_t bends = pieces->bends;
     cm_mesh whole = {k, n + bends, 0, calloc(k, sizeof(double *)), NULL, NULL, 0};
@@ -621,7 +643,10 @@ static cm_status build_pieces(cm_result *r, const double *const *geoms, size_t k
     for (size_t p = 0; p < pieces->count; p++)
         if (pieces->start[p + 1] - pieces->start[p] > largest) largest = pieces->start[p + 1] - pieces->start[p];
     buffer = malloc(2 * k * largest * sizeof *buffer);
-    if (!whole.xy || !piece_xy || !buffer) goto done;
+    int32_t *on_boundary = on ? malloc(largest * sizeof *on_boundary) : NULL;
+    cm_on_edges piece_on = on ? *on : (cm_on_edges){0};
+    piece_on.vertex = on_boundary;
+    if (!whole.xy || !piece_xy || !buffer || (on && !on_boundary)) goto done;
     for (size_t g = 0; g < k; g++) {
         if (!(whole.xy[g] = malloc(2 * (n + bends) * sizeof(double)))) goto done;
         memcpy(whole.xy[g], geoms[g], 2 * n * sizeof(double));
@@ -639,8 +664,9 @@ static cm_status build_pieces(cm_result *r, const double *const *geoms, size_t k
             }
             piece_xy[g] = xy;
         }
+        for (size_t i = 0; on && i < m; i++) on_boundary[i] = (size_t)ids[i] < n ? perm[ids[i]] : -1;
         r->stats.fallback_count = 0;
-        s = build_first(r, piece_xy, NULL, k, m, 0, NULL, &piece_options, progress);
+        s = build_first(r, piece_xy, NULL, k, m, 0, on ? &piece_on : NULL, &piece_options, progress);
         fallbacks += r->stats.fallback_count;
         if (s == CM_OK && cm_holes_glue(&whole, ids, m, &r->mesh) != CM_OK)
             s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
@@ -659,7 +685,7 @@ done:
         cm_mesh_clear(&whole);
         if (s == CM_ERR_NO_MEMORY) cm_fail_status(&r->error, s);
     }
-    free(piece_xy), free(buffer);
+    free(piece_xy), free(buffer), free(on_boundary);
     return s;
 }
 
@@ -736,7 +762,13 @@ static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, con
     s = o->method == CM_METHOD_OVERLAY ? CM_ERR_INTERNAL
                                        : cm_holes_cut((const double *const *)geoms, k, start, num_loops, &pieces, &r->error);
     r->stats.bridges = pieces.chords;
-    if (s == CM_OK) s = build_pieces(r, (const double *const *)geoms, k, n, &pieces, o, &progress);
+    cm_on_edges on_edges, *on = NULL;
+    if (s == CM_OK && r->boundary.n == n && r->boundary.k == k) { /* the arc-length path's boundaries */
+        s = on_edges_init(r, start, num_loops, &on_edges);
+        on = s == CM_OK ? &on_edges : NULL;
+    }
+    if (s == CM_OK) s = build_pieces(r, (const double *const *)geoms, k, n, &pieces, on, perm, o, &progress);
+    if (on) free((void *)on->loop_start);
     if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
         cm_mesh_clear(&r->mesh);
         r->stats.fallback_count = 1;

@@ -99,21 +99,30 @@ typedef struct part {
     const cm_on_edges *on;  /* NULL: every boundary vertex is an input vertex */
 } part;
 
-/* Do boundary vertices a and b (global ids) lie on one input edge in some
+/* The input edge before input vertex e of geometry g: e - 1, or the last
+ * of e's loop when e is the loop's first. */
+static int32_t edge_before(const cm_on_edges *on, size_t g, int32_t e)
+{
+    const size_t *start = on->loop_start[g];
+    size_t l = 0;
+    while ((size_t)e >= start[l + 1]) l++;
+    return (size_t)e == start[l] ? (int32_t)start[l + 1] - 1 : e - 1;
+}
+
+/* Do vertices a and b (global ids) lie on one input edge in some
  * geometry? Then segment ab runs along that edge: the rounding of the
  * points added on it may leave it a diagonal of the polygon, but only a
  * sliver could lie between it and the boundary. */
 static int flat_pair(const part *p, int32_t a, int32_t b)
 {
     if (!p->on || (size_t)a >= p->n || (size_t)b >= p->n) return 0;
+    if (p->on->vertex) a = p->on->vertex[a], b = p->on->vertex[b];
+    if (a < 0 || b < 0) return 0;
     for (size_t g = 0; g < p->k; g++) {
         int32_t ea = p->on->edge[g][a], eb = p->on->edge[g][b];
         int va = p->on->t[g][a] == 0, vb = p->on->t[g][b] == 0;
-        int32_t last = (int32_t)p->on->inputs[g] - 1;
-        /* an input vertex e lies on edges e - 1 and e, a point on edge e on it alone */
-        if (ea == eb || (va && (eb == ea - 1 || (ea == 0 && eb == last))) ||
-            (vb && (ea == eb - 1 || (eb == 0 && ea == last))))
-            return 1;
+        /* an input vertex lies on the edges before and after it, a point inside an edge on it alone */
+        if (ea == eb || (va && eb == edge_before(p->on, g, ea)) || (vb && ea == edge_before(p->on, g, eb))) return 1;
     }
     return 0;
 }

@@ -34,13 +34,19 @@ typedef struct cm_partition_stats {
 } cm_partition_stats;
 
 /* Where the boundary vertices lie on the inputs (cm_boundary_map's edge
- * and t): vertex i of geometry g is input vertex edge[g][i] when
- * t[g][i] == 0, else a point inside input edge edge[g][i]; inputs[g] is
- * that input's vertex count. */
+ * and t): boundary vertex b of geometry g is input vertex edge[g][b] when
+ * t[g][b] == 0, else a point inside input edge edge[g][b], the edge from
+ * that vertex to the next of its loop; geometry g's input loops are its
+ * vertices loop_start[g][l] .. loop_start[g][l + 1] - 1 (num_loops of
+ * them; one for a polygon without holes). vertex: NULL when vertex i of
+ * the partitioned polygon is boundary vertex i; else boundary vertex
+ * vertex[i], or -1 for a point on no input edge (a bridge's bend). */
 typedef struct cm_on_edges {
     const int32_t *const *edge;
     const double *const *t;
-    const size_t *inputs;
+    const size_t *const *loop_start;
+    size_t num_loops;
+    const int32_t *vertex;
 } cm_on_edges;
 
 /* geoms: k arrays of 2n doubles, counter-clockwise simple polygons with
