@@ -521,6 +521,83 @@ static void test_no_edge_along_an_input_edge(void)
     }
 }
 
+/* A 10 x 3 rectangle (unit edges, 26 vertices) with an 8 x 1 rectangular
+ * hole 1 from either long side (input vertices 26 to 29, clockwise from
+ * (1, 1): edges 27 (1, 2) -> (9, 2) and 29 (9, 1) -> (1, 1) the long ones),
+ * against a copy scaled by 2 and moved. A triangle on a long hole edge
+ * has its apex at most 1 from it, so its smallest angle is at most
+ * atan(1 / 4) = 14.04 degrees: index keeps the boundary and stays below
+ * that. Arclength and auto halve the long hole edges in every polygon (cap
+ * 25 degrees with the margin 0.9 needs pieces of 2: t = 1/4, 1/2, 3/4),
+ * no other edge (the outer ones are short); the output keeps the loops'
+ * input vertices first, in order, and passes the bound. Expected: valid,
+ * 1 hole, V - E + F = 0, 36 boundary vertices, the hole's boundary sources
+ * as listed. */
+static void test_capped_hole_edges_split(void)
+{
+    shape a = {0}, b = {0};
+    begin_loop(&a);
+    for (int i = 0; i < 10; i++) add_point(&a, i, 0);
+    for (int i = 0; i < 3; i++) add_point(&a, 10, i);
+    for (int i = 10; i > 0; i--) add_point(&a, i, 3);
+    for (int i = 3; i > 0; i--) add_point(&a, 0, i);
+    begin_loop(&a);
+    add_point(&a, 1, 1), add_point(&a, 1, 2), add_point(&a, 9, 2), add_point(&a, 9, 1);
+    b = a;
+    for (size_t i = 0; i < b.n; i++) b.xy[2 * i] = 2 * a.xy[2 * i] + 5, b.xy[2 * i + 1] = 2 * a.xy[2 * i + 1] - 1;
+    double bound = atan(0.25) * 45.0 / atan(1.0);
+    cm_correspondence modes[3] = {CM_CORRESPOND_INDEX, CM_CORRESPOND_ARCLENGTH, CM_CORRESPOND_AUTO};
+    for (int m = 0; m < 3; m++) {
+        cm_options o;
+        cm_options_init(&o);
+        o.correspondence = modes[m];
+        cm_loops in[2] = {loops_of(&a), loops_of(&b)};
+        cm_result *r = NULL;
+        CHECK_MSG(cm_triangulate_loops(in, 2, &o, &r) == CM_OK, "mode %d: %s", m, cm_result_message(r));
+        if (cm_result_status(r) != CM_OK) {
+            cm_result_free(r);
+            continue;
+        }
+        size_t n = cm_result_stats(r)->n;
+        double least = 180;
+        for (size_t g = 0; g < 2; g++) {
+            cm_quality q;
+            CHECK(cm_result_quality(r, g, &q) == CM_OK);
+            least = fmin(least, q.min_angle_deg);
+        }
+        if (m == 0) {
+            CHECK_MSG(n == 30 && least <= bound, "index: %zu boundary vertices, %g degrees", n, least);
+            cm_result_free(r);
+            continue;
+        }
+        CHECK_MSG(n == 36 && least > bound, "mode %d: %zu boundary vertices, %g degrees", m, n, least);
+        /* the hole as the refined loop runs, material to its left */
+        static const long edge[10] = {26, 29, 29, 29, 29, 28, 27, 27, 27, 27};
+        static const double at[10] = {0, 0.75, 0.5, 0.25, 0, 0, 0.75, 0.5, 0.25, 0};
+        for (size_t g = 0; g < 2 && n == 36; g++) {
+            const double *xy = cm_result_vertices(r, g), *in_xy = g ? b.xy : a.xy;
+            for (size_t i = 0; i < n; i++) {
+                double t;
+                long e = cm_result_boundary_source(r, g, i, &t);
+                long want = i < 26 ? (long)i : edge[i - 26];
+                double want_t = i < 26 ? 0 : at[i - 26];
+                CHECK_MSG(e == want && t == want_t, "mode %d, polygon %zu, vertex %zu: edge %ld at %g", m, g, i, e, t);
+                if (t == 0 && e >= 0 && e < 30)
+                    CHECK_MSG(memcmp(xy + 2 * i, in_xy + 2 * e, 2 * sizeof(double)) == 0,
+                              "mode %d, polygon %zu, vertex %zu: not input vertex %ld", m, g, i, e);
+            }
+        }
+        if (n == 36) {
+            size_t sizes[2] = {26, 10};
+            cm_loops refined[2] = {{cm_result_vertices(r, 0), sizes, 2}, {cm_result_vertices(r, 1), sizes, 2}};
+            char why[256] = "";
+            CHECK_MSG(rc_check_loops(r, refined, 2, why, sizeof why), "mode %d: %s", m, why);
+            CHECK_MSG(rc_check_halfedges_holes(r, n, 1, why, sizeof why), "mode %d: %s", m, why);
+        }
+        cm_result_free(r);
+    }
+}
+
 /* Without holes the loops call is cm_triangulate_polygons, bit for bit. */
 static void test_hole_free_same(void)
 {
@@ -555,5 +632,6 @@ int main(void)
     test_arclength_loops();
     test_auto_hole_starts();
     test_no_edge_along_an_input_edge();
+    test_capped_hole_edges_split();
     return check_summary("test_holes");
 }

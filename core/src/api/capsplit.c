@@ -14,6 +14,7 @@
 
 #include "api/capsplit.h"
 #include "correspond/split.h"
+#include "geom/looptri.h"
 #include "geom/polytri.h"
 #include "remesh/criteria.h"
 
@@ -26,87 +27,148 @@ void cm_cap_tris_free(int32_t **tris, size_t k)
     free(tris);
 }
 
-/* The smallest edge and vertex caps over the polygons of map (radians,
- * unscaled), each polygon triangulated on its own (into tris[g], 3 (n - 2)
- * each). *simple = 0 when one is not simple (rounding of the points
- * added): the pipeline's check then says where. */
-static cm_status caps_of(const cm_boundary_map *map, cm_progress *progress, double *bcap, double *vcap,
-                         int32_t **tris, int *simple, cm_error *err)
+/* The loops' boundaries one after another, each with the material to its
+ * left (loop_start: L + 1 offsets): the outer loop as its map runs, a hole's
+ * counter-clockwise map backwards from its vertex 0, so that hole vertex j
+ * is map vertex (m - j) % m. */
+typedef struct merged {
+    size_t k, n, num_loops;
+    size_t *loop_start;
+    double **xy;
+} merged;
+
+static void merged_free(merged *b)
 {
-    size_t n = map->n;
+    for (size_t g = 0; b->xy && g < b->k; g++) free(b->xy[g]);
+    free(b->xy), free(b->loop_start);
+}
+
+static int merged_make(merged *b, const cm_cap_loop *loops, size_t num_loops)
+{
+    size_t k = loops[0].map->k, n = 0;
+    *b = (merged){k, 0, num_loops, malloc((num_loops + 1) * sizeof(size_t)), calloc(k, sizeof(double *))};
+    if (!b->loop_start || !b->xy) return -1;
+    for (size_t l = 0; l < num_loops; l++) b->loop_start[l] = n, n += loops[l].map->n;
+    b->loop_start[num_loops] = b->n = n;
+    for (size_t g = 0; g < k; g++) {
+        if (!(b->xy[g] = malloc(2 * n * sizeof(double)))) return -1;
+        for (size_t l = 0; l < num_loops; l++) {
+            const cm_boundary_map *map = loops[l].map;
+            size_t m = map->n;
+            for (size_t j = 0; j < m; j++) {
+                const double *p = map->xy[g] + 2 * (l ? (m - j) % m : j);
+                double *q = b->xy[g] + 2 * (b->loop_start[l] + j);
+                q[0] = p[0], q[1] = p[1];
+            }
+        }
+    }
+    return 0;
+}
+
+/* The smallest edge and vertex caps over the polygons of b (radians,
+ * unscaled), each polygon triangulated on its own (into tris[g], 3 (n - 2
+ * + 2 h) each). *simple = 0 when one is not simple (rounding of the points
+ * added): the pipeline's check then says where. */
+static cm_status caps_of(const merged *b, cm_progress *progress, double *bcap, double *vcap, int32_t **tris,
+                         int *simple, cm_error *err)
+{
+    size_t n = b->n, holes = b->num_loops - 1;
+    const size_t *loops = holes ? b->loop_start : NULL;
     int32_t *idx = malloc(n * sizeof *idx);
-    double *b = malloc(2 * n * sizeof *b), *v = b ? b + n : NULL;
-    cm_status s = idx && b ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
+    double *c = malloc(2 * n * sizeof *c), *v = c ? c + n : NULL;
+    cm_status s = idx && c ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
     *simple = 1;
     for (size_t i = 0; s == CM_OK && i < n; i++) idx[i] = (int32_t)i, bcap[i] = vcap[i] = INFINITY;
-    for (size_t g = 0; s == CM_OK && *simple && g < map->k; g++) {
-        int t = cm_polygon_triangulate(map->xy[g], idx, (long)n, tris[g], progress);
-        cm_mesh one = {1, n, n - 2, &map->xy[g], tris[g], NULL, 0};
-        if (t == 0) t = cm_boundary_caps(&one, n, progress, b, v);
+    for (size_t g = 0; s == CM_OK && *simple && g < b->k; g++) {
+        int t = holes ? cm_loops_triangulate(b->xy[g], loops, b->num_loops, tris[g])
+                      : cm_polygon_triangulate(b->xy[g], idx, (long)n, tris[g], progress);
+        cm_mesh one = {1, n, n - 2 + 2 * holes, &b->xy[g], tris[g], loops, holes ? b->num_loops : 0};
+        if (t == 0) t = cm_boundary_caps(&one, n, progress, c, v);
         if (t == CM_CANCELLED) s = cm_fail_status(err, CM_ERR_CANCELLED);
         else if (t == CM_NO_MEMORY) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
         else if (t != 0) *simple = 0;
         for (size_t i = 0; s == CM_OK && *simple && i < n; i++)
-            bcap[i] = fmin(bcap[i], b[i]), vcap[i] = fmin(vcap[i], v[i]);
+            bcap[i] = fmin(bcap[i], c[i]), vcap[i] = fmin(vcap[i], v[i]);
     }
-    free(idx), free(b);
+    free(idx), free(c);
     return s;
 }
 
-/* Edge j (of n) caps every triangle on it below the aim: its cap, with the
- * remesher's margin, under the aim and under the vertex caps at its ends
- * (where half a corner is lower, the corner binds first). */
-static int binds(const double *bcap, const double *vcap, size_t n, size_t j, double aim)
+/* Edge j -> next(j) caps every triangle on it below the aim: its cap,
+ * with the remesher's margin, under the aim and under the vertex caps at
+ * its ends (where half a corner is lower, the corner binds first). */
+static int binds(const merged *b, const double *bcap, const double *vcap, size_t j, double aim)
 {
-    return CM_EDGE_CAP_MARGIN * bcap[j] < fmin(aim, fmin(vcap[j], vcap[(j + 1) % n]));
+    size_t next = cm_loops_next(b->num_loops > 1 ? b->loop_start : NULL, b->n, j);
+    return CM_EDGE_CAP_MARGIN * bcap[j] < fmin(aim, fmin(vcap[j], vcap[next]));
 }
 
-/* k arrays of 3 (n - 2) indices, or NULL. */
-static int32_t **tris_new(size_t k, size_t n)
+/* k arrays of 3 nt indices, or NULL. */
+static int32_t **tris_new(size_t k, size_t nt)
 {
     int32_t **tris = calloc(k, sizeof *tris);
     for (size_t g = 0; tris && g < k; g++)
-        if (!(tris[g] = malloc(3 * n * sizeof **tris))) {
+        if (!(tris[g] = malloc(3 * nt * sizeof **tris))) {
             cm_cap_tris_free(tris, k);
             return NULL;
         }
     return tris;
 }
 
-cm_status cm_boundary_map_split_caps(cm_boundary_map *map, const double *const *polygons, const size_t *counts,
-                                     const int *orientation, double aim, cm_cap_ceiling ceiling, void *ctx,
-                                     size_t max_added, cm_progress *progress, int32_t ***tris_out, cm_error *err)
+/* Splits the edges pieces[] says (material-left numbering of b) in each
+ * loop's map: hole edge j -> j + 1 is map segment (m - j - 1) % m. */
+static cm_status split_loops(cm_cap_loop *loops, const merged *b, const size_t *pieces, size_t *scratch, cm_error *err)
 {
-    size_t start = map->n;
+    cm_status s = CM_OK;
+    for (size_t l = 0; s == CM_OK && l < b->num_loops; l++) {
+        size_t m = loops[l].map->n, at = b->loop_start[l], more = 0;
+        for (size_t j = 0; j < m; j++) more += (scratch[l ? (m - j - 1) % m : j] = pieces[at + j]) - 1;
+        if (more)
+            s = cm_boundary_map_split_edges(loops[l].map, loops[l].polygons, loops[l].counts, loops[l].orientation,
+                                            scratch, err);
+    }
+    return s;
+}
+
+cm_status cm_boundary_maps_split_caps(cm_cap_loop *loops, size_t num_loops, double aim, cm_cap_ceiling ceiling,
+                                      void *ctx, size_t max_added, cm_progress *progress, int32_t ***tris_out,
+                                      cm_error *err)
+{
+    size_t start = 0;
+    for (size_t l = 0; l < num_loops; l++) start += loops[l].map->n;
+    size_t k = loops[0].map->k;
     cm_status s = CM_OK;
     int32_t **tris = NULL;
-    *tris_out = NULL;
+    if (tris_out) *tris_out = NULL;
     for (int round = 0; s == CM_OK && round < CAP_SPLIT_ROUNDS; round++) {
-        size_t n = map->n, more = 0, binding = 0;
-        double *bcap = malloc(2 * n * sizeof *bcap), *vcap = bcap ? bcap + n : NULL;
-        size_t *pieces = malloc(n * sizeof *pieces);
+        merged b;
+        int made = merged_make(&b, loops, num_loops);
+        size_t n = b.n, more = 0, binding = 0;
+        double *bcap = made == 0 ? malloc(2 * n * sizeof *bcap) : NULL, *vcap = bcap ? bcap + n : NULL;
+        size_t *pieces = made == 0 ? malloc(2 * n * sizeof *pieces) : NULL;
         int simple = 0;
-        cm_cap_tris_free(tris, map->k);
-        tris = tris_new(map->k, n);
-        s = bcap && pieces && tris ? caps_of(map, progress, bcap, vcap, tris, &simple, err)
+        cm_cap_tris_free(tris, k);
+        tris = made == 0 ? tris_new(k, n - 2 + 2 * (num_loops - 1)) : NULL;
+        s = bcap && pieces && tris ? caps_of(&b, progress, bcap, vcap, tris, &simple, err)
                                    : cm_fail_status(err, CM_ERR_NO_MEMORY);
-        for (size_t j = 0; s == CM_OK && simple && j < n; j++) binding += binds(bcap, vcap, n, j, aim);
+        for (size_t j = 0; s == CM_OK && simple && j < n; j++) binding += binds(&b, bcap, vcap, j, aim);
         if (s == CM_OK && simple && binding && round == 0 && ceiling) {
-            double c = ceiling(ctx, &s);
+            double c = ceiling(ctx, (const double *const *)b.xy, b.loop_start, num_loops, &s);
             if (s == CM_OK && c < 0) simple = 0; /* no ceiling: leave the boundary to the pipeline's check */
             aim = fmin(aim, c);
         }
         for (size_t j = 0; s == CM_OK && simple && binding && j < n; j++) {
-            pieces[j] = binds(bcap, vcap, n, j, aim) && map->n + more < start + max_added ? 2 : 1;
+            pieces[j] = binds(&b, bcap, vcap, j, aim) && n + more < start + max_added ? 2 : 1;
             more += pieces[j] - 1;
         }
-        if (s == CM_OK && more) s = cm_boundary_map_split_edges(map, polygons, counts, orientation, pieces, err);
+        if (s == CM_OK && more) s = split_loops(loops, &b, pieces, pieces + n, err);
         free(bcap), free(pieces);
+        merged_free(&b);
         if (s == CM_OK && more == 0) { /* the triangulations are the final boundary's */
-            if (simple) *tris_out = tris, tris = NULL;
+            if (simple && tris_out && num_loops == 1) *tris_out = tris, tris = NULL;
             break;
         }
     }
-    cm_cap_tris_free(tris, map->k);
+    cm_cap_tris_free(tris, k);
     return s;
 }

@@ -485,12 +485,15 @@ static void locate_in_input(cm_result *r, cm_status s)
 typedef struct cap_aim {
     cm_result *r;
     double known_deg; /* the ceiling the correspondence's choice computed, or -1 */
+    size_t k;
 } cap_aim;
 
-/* cm_cap_ceiling: the ceiling of r->boundary, computed only when an edge
- * binds and the choice did not already. */
-static double cap_ceiling(void *ctx, cm_status *s)
+/* cm_cap_ceiling without holes: the ceiling of r->boundary (the boundary
+ * given), computed only when an edge binds and the choice did not already. */
+static double cap_ceiling(void *ctx, const double *const *xy, const size_t *loop_start, size_t num_loops,
+                          cm_status *s)
 {
+    (void)xy, (void)loop_start, (void)num_loops;
     cap_aim *a = ctx;
     double deg = a->known_deg, t = cm_seconds_now();
     *s = CM_OK;
@@ -506,14 +509,41 @@ static double cap_ceiling(void *ctx, cm_status *s)
     return deg * CM_PI / 180.0;
 }
 
+/* The corner-fan cap (degrees) of polygons with holes, loop by loop (xy:
+ * k arrays, loop l from loop_start[l], the material to its left); the
+ * correspondence bound needs a simply connected polygon. -1 out of memory. */
+static double loops_corner_fan_cap(const double *const *xy, size_t k, const size_t *loop_start, size_t num_loops)
+{
+    double cap = 60.0;
+    const double **loop_xy = malloc(k * sizeof *loop_xy);
+    if (!loop_xy) return -1;
+    for (size_t l = 0; l < num_loops; l++) {
+        for (size_t g = 0; g < k; g++) loop_xy[g] = xy[g] + 2 * loop_start[l];
+        cap = fmin(cap, cm_corner_fan_cap(loop_xy, k, loop_start[l + 1] - loop_start[l]));
+    }
+    free(loop_xy);
+    return cap;
+}
+
+/* cm_cap_ceiling with holes: the corner fan over every loop, the ceiling
+ * the pipeline aims by (run_loops). */
+static double holes_cap_ceiling(void *ctx, const double *const *xy, const size_t *loop_start, size_t num_loops,
+                                cm_status *s)
+{
+    cap_aim *a = ctx;
+    double deg = loops_corner_fan_cap(xy, a->k, loop_start, num_loops);
+    *s = deg < 0 ? cm_fail_status(&a->r->error, CM_ERR_NO_MEMORY) : CM_OK;
+    return deg * CM_PI / 180.0;
+}
+
 static cm_status split_capped_edges(cm_result *r, const double *const *polygons, const size_t *counts,
                                     const int *orientation, const cm_options *o, double known_ceiling_deg,
                                     int32_t ***tris)
 {
-    cap_aim a = {r, known_ceiling_deg};
-    return cm_boundary_map_split_caps(&r->boundary, polygons, counts, orientation, o->min_angle_deg * CM_PI / 180.0,
-                                      o->ceiling ? cap_ceiling : NULL, &a, r->boundary.n + CM_CAP_SPLIT_EXTRA, NULL,
-                                      tris, &r->error);
+    cap_aim a = {r, known_ceiling_deg, r->boundary.k};
+    cm_cap_loop loop = {&r->boundary, polygons, counts, orientation};
+    return cm_boundary_maps_split_caps(&loop, 1, o->min_angle_deg * CM_PI / 180.0, o->ceiling ? cap_ceiling : NULL,
+                                       &a, r->boundary.n + CM_CAP_SPLIT_EXTRA, NULL, tris, &r->error);
 }
 
 /* CM_CORRESPOND_ARCLENGTH and _AUTO: the boundaries in correspondence,
@@ -739,15 +769,9 @@ static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, con
     }
     double t1 = cm_seconds_now();
     r->stats.seconds_validate = t1 - t0;
-    if (o->ceiling) { /* the corner fan, loop by loop; the correspondence bound needs a simply connected polygon */
-        double cap = 60.0;
-        const double **loop_xy = malloc(k * sizeof *loop_xy);
-        if (!loop_xy) goto oom;
-        for (size_t l = 0; l < num_loops; l++) {
-            for (size_t g = 0; g < k; g++) loop_xy[g] = geoms[g] + 2 * start[l];
-            cap = fmin(cap, cm_corner_fan_cap(loop_xy, k, start[l + 1] - start[l]));
-        }
-        free(loop_xy);
+    if (o->ceiling) {
+        double cap = loops_corner_fan_cap((const double *const *)geoms, k, start, num_loops);
+        if (cap < 0) goto oom;
         r->stats.corner_fan_cap_deg = r->stats.ceiling_deg = cap;
         r->stats.correspondence_bound_deg = 60.0, r->stats.modulus_distortion = 1.0;
         for (int i = 0; i < 4; i++) r->stats.distortion_quad[i] = -1;
@@ -826,10 +850,11 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
                        "correspondence work loop by loop");
     if (!polygons || k < 2) return cm_input_check_loops(polygons, k, NULL, &r->error);
     size_t L = polygons[0].num_loops;
-    int *orientation = malloc((k * L + 1) * sizeof *orientation), *loop_orientation = malloc(k * sizeof(int));
-    size_t *start = malloc(k * (L + 1) * sizeof *start), *count = malloc(k * sizeof *count);
+    /* loop l's k input loops: xy, count and loop_orientation from l k */
+    int *orientation = malloc((k * L + 1) * sizeof *orientation), *loop_orientation = malloc(k * L * sizeof(int));
+    size_t *start = malloc(k * (L + 1) * sizeof *start), *count = malloc(k * L * sizeof *count);
     size_t *sizes = malloc((L + 1) * sizeof *sizes);
-    const double **xy = malloc(k * sizeof *xy);
+    const double **xy = malloc(k * L * sizeof *xy);
     cm_boundary_map *maps = calloc(L + 1, sizeof *maps);
     cm_loops *refined = malloc(k * sizeof *refined);
     cm_status s = orientation && loop_orientation && start && count && sizes && xy && maps && refined
@@ -857,7 +882,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         for (size_t l = 0; l < L; l++) start[g * (L + 1) + l + 1] = start[g * (L + 1) + l] + polygons[g].loop_sizes[l];
     }
     size_t n = 0;
-    double unused_ceiling; /* the loops take no cap split */
+    double unused_ceiling; /* the holes' ceiling is the corner fan */
     cm_correspondence_choice loop_choice;
     int joint = chosen_mode(o);
     double *similarity = NULL;
@@ -866,15 +891,18 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
                                 !(hole_starts = malloc(k * sizeof *hole_starts))))
         s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     for (size_t l = 0; s == CM_OK && l < L; l++) {
+        const double **lxy = xy + l * k;
+        size_t *lcount = count + l * k;
+        int *lorientation = loop_orientation + l * k;
         for (size_t g = 0; g < k; g++) {
-            xy[g] = polygons[g].xy + 2 * start[g * (L + 1) + l];
-            count[g] = polygons[g].loop_sizes[l], loop_orientation[g] = orientation[g * L + l];
+            lxy[g] = polygons[g].xy + 2 * start[g * (L + 1) + l];
+            lcount[g] = polygons[g].loop_sizes[l], lorientation[g] = orientation[g * L + l];
         }
         if (joint && l == 1) cm_correspond_outer_similarity(&maps[0], similarity);
         if (joint && l > 0)
-            s = cm_correspond_choose_hole_starts(xy, count, k, loop_orientation, similarity, hole_starts, &r->error);
+            s = cm_correspond_choose_hole_starts(lxy, lcount, k, lorientation, similarity, hole_starts, &r->error);
         if (s == CM_OK)
-            s = correspond_boundary(r, xy, count, k, loop_orientation, o, every, 0, joint && l ? hole_starts : NULL,
+            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, 0, joint && l ? hole_starts : NULL,
                                     &maps[l], &unused_ceiling, &loop_choice);
         if (l == 0) r->stats.correspondence_choice = loop_choice; /* the outer loop's (cm_stats) */
         if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
@@ -884,8 +912,20 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
             if (g >= 0 && (size_t)g < k && v >= 0) cm_fail_at(&r->error, g, (long)start[(size_t)g * (L + 1) + l] + v, -1);
             cm_fail(&r->error, s, "%s %zu: %s", l ? "hole" : "outer loop", l, detail);
         }
-        sizes[l] = maps[l].n, n += maps[l].n;
     }
+    if (s == CM_OK && !index_split && o->remesh) { /* edges whose cap binds, halved in every loop */
+        cm_cap_loop *loops = malloc(L * sizeof *loops);
+        cap_aim a = {r, -1, k};
+        size_t total = 0;
+        for (size_t l = 0; loops && l < L; l++)
+            loops[l] = (cm_cap_loop){&maps[l], xy + l * k, count + l * k, loop_orientation + l * k}, total += maps[l].n;
+        s = loops ? cm_boundary_maps_split_caps(loops, L, o->min_angle_deg * CM_PI / 180.0,
+                                                o->ceiling ? holes_cap_ceiling : NULL, &a, total + CM_CAP_SPLIT_EXTRA,
+                                                NULL, NULL, &r->error)
+                  : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        free(loops);
+    }
+    for (size_t l = 0; s == CM_OK && l < L; l++) sizes[l] = maps[l].n, n += maps[l].n;
     /* The refined loops one after another, as the index pipeline takes them. */
     cm_boundary_map *b = &r->boundary;
     if (s == CM_OK) {
