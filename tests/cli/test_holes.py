@@ -6,6 +6,7 @@ line, loop and vertex, and the morph and sweep of polygons with holes (the
 holes stay empty in every frame and the volume is a tube)."""
 import json
 import math
+import random
 
 import pytest
 
@@ -252,3 +253,108 @@ def test_obj_empty_loop_line(cm, tmp_path):
     result = cm("triangulate", "a.obj", "b.obj", "--out-dir", "out")
     assert result.returncode == 2 and result.stderr.count("\n") == 1
     assert result.stderr.startswith("compatmesh: b.obj:1: an 'l' line needs at least 2 vertices")
+
+
+def spiky_star(n, seed, scale, clockwise=False):
+    """A star-shaped polygon: random angular gaps in [1, 2) (relative, so
+    every gap is below pi) and radii in [0.3, 1) times scale."""
+    rng = random.Random(seed)
+    gaps = [1.0 + rng.random() for _ in range(n)]
+    angle, points = 0.0, []
+    for gap in gaps:
+        angle += 2 * math.pi * gap / sum(gaps)
+        radius = scale * (0.3 + 0.7 * rng.random())
+        points.append((radius * math.cos(angle), radius * math.sin(angle)))
+    return points[::-1] if clockwise else points
+
+
+QUAD = [(0.0, 0.0), (1.0, 0.3), (0.7, 1.3), (-0.3, 1.0)]
+
+
+def on_one_input_edge(source, loops, u, w):
+    """Do boundary vertices u and w (report.json boundary_source, whole-array
+    input edges) lie on one input edge of the loops? An input vertex lies on
+    the edges before and after it along its loop, a point inside an edge on
+    that edge alone."""
+    starts = [sum(len(loop) for loop in loops[:l]) for l in range(len(loops))]
+
+    def edges_of(v):
+        e, t = source[v]
+        l = max(i for i, start in enumerate(starts) if start <= e)
+        before = e - 1 if e > starts[l] else starts[l] + len(loops[l]) - 1
+        return {e, before} if t == 0 else {e}
+    return bool(edges_of(u) & edges_of(w))
+
+
+@pytest.mark.parametrize("seed", [5, 12, 14, 20])
+def test_no_construction_edge_along_an_input_edge(cm, tmp_path, seed):
+    """A slanted quadrilateral with a quadrilateral hole against a star with
+    an off-centre star hole (auto, no remeshing): the quadrilateral's loops
+    get the stars' vertices on their edges, rounded off the lines, so a
+    segment between two on one input edge can pass as a diagonal with a
+    sliver beside it (seeds 12, 14 and 20 join two on one edge of the hole
+    loop, seed 5 two on the outer loop, when the partition is not told where
+    they lie). Expected: points added on the hole loop's edges; no edge of
+    the construction but the loops' joins two boundary vertices on one input
+    edge of either polygon, on any loop."""
+    a = [QUAD, [(0.35 + 0.3 * (x - 0.35), 0.65 + 0.3 * (y - 0.65)) for x, y in reversed(QUAD)]]
+    b = [spiky_star(40, seed, 1.0), [(0.12 + x, y) for x, y in spiky_star(24, seed + 50, 0.12, clockwise=True)]]
+    (tmp_path / "a.xy").write_text(xy_text(a))
+    (tmp_path / "b.xy").write_text(xy_text(b))
+    result = cm("triangulate", "a.xy", "b.xy", "-o", "out", "--correspondence", "auto", "--no-remesh")
+    assert result.returncode == 0, result.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    n, sources = report["n"], [m["boundary_source"] for m in report["meshes"]]
+    hole = [v for v in range(n) if sources[0][v][0] >= 4]
+    assert sum(sources[0][v][1] != 0 for v in hole) >= 12
+    loop_of = [0 if v < hole[0] else 1 for v in range(n)]
+    ring = {(hole[0] - 1, 0), (n - 1, hole[0])}  # each loop's closing edge
+    _, triangles = read_off(tmp_path / "out" / "a.off")
+    along = []
+    for tri in triangles:
+        for u, w in zip(tri, tri[1:] + tri[:1]):
+            if u >= n or w >= n:
+                continue
+            if loop_of[u] == loop_of[w] and (abs(u - w) == 1 or (max(u, w), min(u, w)) in ring):
+                continue
+            if any(on_one_input_edge(source, loops, u, w) for source, loops in zip(sources, (a, b))):
+                along.append((u, w))
+    assert along == []
+
+
+@pytest.mark.parametrize("mode", ["index", "auto"])
+def test_capped_hole_edges_split(cm, tmp_path, mode):
+    """A 10 x 3 rectangle (unit edges, 26 vertices) with an 8 x 1 hole 1
+    from either long side (input vertices 26 to 29 clockwise from (1, 1):
+    edges 27 and 29 the long ones), against a copy scaled by 2 and moved. A
+    triangle on a long hole edge has its apex at most 1 from it, so its
+    smallest angle is at most atan(1 / 4) = 14.04 degrees: index keeps the
+    loops and stays below that; auto halves the long hole edges twice in
+    both meshes (t = 1/4, 1/2, 3/4 on edges 27 and 29; the hole as the
+    refined loop runs, the material to its left) and passes it. Both:
+    the loops' input vertices bit-identical, V - E + F = 0."""
+    outer = ([(float(i), 0.0) for i in range(10)] + [(10.0, float(i)) for i in range(3)] +
+             [(float(i), 3.0) for i in range(10, 0, -1)] + [(0.0, float(i)) for i in range(3, 0, -1)])
+    a = [outer, [(1.0, 1.0), (1.0, 2.0), (9.0, 2.0), (9.0, 1.0)]]
+    b = [[(2 * x + 5, 2 * y - 1) for x, y in loop] for loop in a]
+    (tmp_path / "a.xy").write_text(xy_text(a))
+    (tmp_path / "b.xy").write_text(xy_text(b))
+    result = cm("triangulate", "a.xy", "b.xy", "-o", "out", "--correspondence", mode)
+    assert result.returncode == 0, result.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    least = min(m["min_angle_deg"] for m in report["meshes"])
+    bound = math.degrees(math.atan(0.25))
+    if mode == "index":
+        assert report["n"] == 30 and least <= bound
+    else:
+        hole = [[26, 0], [29, 0.75], [29, 0.5], [29, 0.25], [29, 0], [28, 0], [27, 0.75], [27, 0.5], [27, 0.25],
+                [27, 0]]
+        expected = [[i, 0] for i in range(26)] + hole
+        assert report["n"] == 36 and least > bound
+        assert [m["boundary_source"] for m in report["meshes"]] == [expected, expected]
+    for name, loops in (("a", a), ("b", b)):
+        vertices, triangles = read_off(tmp_path / "out" / f"{name}.off")
+        boundary = vertices[:report["n"]]
+        assert all(p in boundary for loop in loops for p in loop)
+        edges = {tuple(sorted(e)) for x, y, z in triangles for e in ((x, y), (y, z), (z, x))}
+        assert len(vertices) - len(edges) + len(triangles) == 0
