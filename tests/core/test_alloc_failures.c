@@ -10,7 +10,7 @@
  * sweep, the same with the map-aware remesher, of the overlay construction
  * (exact rational arithmetic in GMP throughout), and of the constructions
  * for polygons with holes (bridges that need Steiner bends; one bridge per
- * hole and the overlay), and of the partition's steps for inputs above its
+ * hole and the overlay; auto with the cap split on a hole loop), and of the partition's steps for inputs above its
  * table limit (lowered: the fan, sampled splits). */
 #include <stdio.h>
 #include <stdlib.h>
@@ -137,6 +137,56 @@ static void test_holes(void)
                name, total, reported);
         CHECK(total > 50 && reported > 0);
     }
+}
+
+/* A 10 x 3 rectangle with a thin 8 x 1 hole against a scaled copy, auto
+ * with remeshing: the hole loop's long edges bind their cap, so the cap
+ * split acts on the hole loop, and the bridges' pieces take the partition's
+ * rule on input edges. */
+static shape slot[2];
+
+static cm_status run_slot(char *where, size_t size)
+{
+    cm_loops in[2] = {{slot[0].xy, slot[0].sizes, 2}, {slot[1].xy, slot[1].sizes, 2}};
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = CM_CORRESPOND_AUTO;
+    cm_result *r = NULL;
+    cm_status s = cm_triangulate_loops(in, 2, &o, &r);
+    snprintf(where, size, "slot: %s", r ? cm_result_message(r) : "out of memory (no handle)");
+    if (s == CM_OK && cm_result_stats(r)->n != 36) {
+        snprintf(where, size, "slot: success with %zu boundary vertices, not 36", cm_result_stats(r)->n);
+        s = CM_ERR_INTERNAL;
+    }
+    cm_result_free(r);
+    return s;
+}
+
+static void test_holes_cap_split(void)
+{
+    begin_loop(&slot[0]);
+    for (int i = 0; i < 10; i++) add_point(&slot[0], i, 0);
+    for (int i = 0; i < 3; i++) add_point(&slot[0], 10, i);
+    for (int i = 10; i > 0; i--) add_point(&slot[0], i, 3);
+    for (int i = 3; i > 0; i--) add_point(&slot[0], 0, i);
+    begin_loop(&slot[0]);
+    add_point(&slot[0], 1, 1), add_point(&slot[0], 1, 2), add_point(&slot[0], 9, 2), add_point(&slot[0], 9, 1);
+    slot[1] = slot[0];
+    for (size_t i = 0; i < slot[1].n; i++) slot[1].xy[2 * i] *= 2, slot[1].xy[2 * i + 1] *= 2;
+    char where[512];
+    calls = 0, fail_at = -1;
+    CHECK_MSG(run_slot(where, sizeof where) == CM_OK, "slot: the run without failures: %s", where);
+    long total = calls, reported = 0;
+    for (long i = 1; i <= total; i++) {
+        calls = 0, fail_at = i;
+        cm_status s = run_slot(where, sizeof where);
+        if (s == CM_OK) continue;
+        reported++;
+        CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
+                  "slot: allocation %ld of %ld failed: status %s, %s", i, total, cm_status_string(s), where);
+    }
+    printf("holes, cap split: %ld allocations, each failed once: %ld reported out of memory\n", total, reported);
+    CHECK(total > 50 && reported > 0);
 }
 
 /* The overlay of two stars: its intersection points are GMP rationals, so
@@ -274,6 +324,7 @@ int main(void)
     test_gmp(polygons);
     test_map_remesher(polygons);
     test_holes();
+    test_holes_cap_split();
     test_above_table_limit();
     return check_summary("test_alloc_failures");
 }
