@@ -838,7 +838,10 @@ done:
  * aligned on its own may turn against the outer loop and twist the map
  * around it), then the hole by arc length from there. The caller's pins
  * are refused: they would have to name loops. CM_CORRESPOND_INDEX with
- * max_edge comes here too, as pins at every vertex of each loop. The
+ * max_edge comes here too, as pins at every vertex of each loop. With
+ * remeshing (not for index), the edges of every loop whose cap binds are
+ * then halved as without holes (cm_boundary_maps_split_caps, the aim
+ * lowered to the corner fan over the loops). The
  * refined loops then take the index pipeline, and r->boundary maps every
  * boundary vertex to its input edge, numbered in the polygon's whole array
  * (the edge from a vertex to the next of its loop). */
