@@ -330,8 +330,8 @@ def test_capped_hole_edges_split(cm, tmp_path, mode):
     triangle on a long hole edge has its apex at most 1 from it, so its
     smallest angle is at most atan(1 / 4) = 14.04 degrees: index keeps the
     loops and stays below that; auto halves the long hole edges twice in
-    both meshes (t = 1/4, 1/2, 3/4 on edges 27 and 29; the hole as the
-    refined loop runs, the material to its left) and passes it. Both:
+    both meshes (t = 1/4, 1/2, 3/4 on edges 27 and 29; the hole in
+    input order, the new points between) and passes it. Both:
     the loops' input vertices bit-identical, V - E + F = 0."""
     outer = ([(float(i), 0.0) for i in range(10)] + [(10.0, float(i)) for i in range(3)] +
              [(float(i), 3.0) for i in range(10, 0, -1)] + [(0.0, float(i)) for i in range(3, 0, -1)])
@@ -347,8 +347,8 @@ def test_capped_hole_edges_split(cm, tmp_path, mode):
     if mode == "index":
         assert report["n"] == 30 and least <= bound
     else:
-        hole = [[26, 0], [29, 0.75], [29, 0.5], [29, 0.25], [29, 0], [28, 0], [27, 0.75], [27, 0.5], [27, 0.25],
-                [27, 0]]
+        hole = [[26, 0], [27, 0], [27, 0.25], [27, 0.5], [27, 0.75], [28, 0], [29, 0], [29, 0.25], [29, 0.5],
+                [29, 0.75]]
         expected = [[i, 0] for i in range(26)] + hole
         assert report["n"] == 36 and least > bound
         assert [m["boundary_source"] for m in report["meshes"]] == [expected, expected]

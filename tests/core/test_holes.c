@@ -571,9 +571,9 @@ static void test_capped_hole_edges_split(void)
             continue;
         }
         CHECK_MSG(n == 36 && least > bound, "mode %d: %zu boundary vertices, %g degrees", m, n, least);
-        /* the hole as the refined loop runs, material to its left */
-        static const long edge[10] = {26, 29, 29, 29, 29, 28, 27, 27, 27, 27};
-        static const double at[10] = {0, 0.75, 0.5, 0.25, 0, 0, 0.75, 0.5, 0.25, 0};
+        /* the hole in input order, its long edges' new points between */
+        static const long edge[10] = {26, 27, 27, 27, 27, 28, 29, 29, 29, 29};
+        static const double at[10] = {0, 0, 0.25, 0.5, 0.75, 0, 0, 0.25, 0.5, 0.75};
         for (size_t g = 0; g < 2 && n == 36; g++) {
             const double *xy = cm_result_vertices(r, g), *in_xy = g ? b.xy : a.xy;
             for (size_t i = 0; i < n; i++) {

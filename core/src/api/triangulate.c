@@ -944,10 +944,17 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
             break;
         }
         for (size_t l = 0, at = 0; l < L; at += maps[l].n, l++) {
-            memcpy(b->xy[g] + 2 * at, maps[l].xy[g], 2 * maps[l].n * sizeof *b->xy[g]);
-            memcpy(b->t[g] + at, maps[l].t[g], maps[l].n * sizeof *b->t[g]);
-            for (size_t i = 0; i < maps[l].n; i++)
-                b->edge[g][at + i] = (int32_t)start[g * (L + 1) + l] + maps[l].edge[g][i];
+            /* The maps run every loop counter-clockwise; holes are listed
+             * clockwise from the same start, so a hole given clockwise
+             * (the usual way) keeps its input order. */
+            size_t m = maps[l].n;
+            for (size_t i = 0; i < m; i++) {
+                size_t from = l && i ? m - i : i;
+                b->xy[g][2 * (at + i)] = maps[l].xy[g][2 * from];
+                b->xy[g][2 * (at + i) + 1] = maps[l].xy[g][2 * from + 1];
+                b->t[g][at + i] = maps[l].t[g][from];
+                b->edge[g][at + i] = (int32_t)start[g * (L + 1) + l] + maps[l].edge[g][from];
+            }
         }
         refined[g] = (cm_loops){b->xy[g], sizes, L};
     }
