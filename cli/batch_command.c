@@ -32,6 +32,7 @@ static const option_spec batch_options[] = {
      "jobs run at once, each in its own process (default:\n"
      "the number of online CPUs)"},
     TRIANGULATE_FORMAT_SPEC,
+    TRIANGULATE_PREVIEW_SPEC,
     TRIANGULATION_METHOD_SPECS,
     {"quiet", OPTION_QUIET, NULL,
      "only failed jobs' lines on stderr, nothing on stdout"},

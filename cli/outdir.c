@@ -168,6 +168,30 @@ const char *staged_output_path(staged_output *out, const char *name)
     return path;
 }
 
+void staged_output_remove(staged_output *out, const char *const *names, size_t count)
+{
+    out->removed = names, out->removed_count = count;
+}
+
+/* Removes out->removed from target (a directory of that name is not ours
+ * and stays); after the manifest is gone, before the new files move in. */
+static int remove_old(const staged_output *out, cli_error *error)
+{
+    for (size_t i = 0; i < out->removed_count; i++) {
+        char *old = path_join(out->target, out->removed[i]);
+        if (!old) {
+            cli_error_set(error, "out of memory");
+            return CLI_EXIT_INTERNAL;
+        }
+        struct stat info;
+        int failed = lstat(old, &info) == 0 && !S_ISDIR(info.st_mode) && unlink(old) != 0;
+        if (failed) cli_error_set(error, "cannot remove the old %s: %s", old, strerror(errno));
+        free(old);
+        if (failed) return CLI_EXIT_INTERNAL;
+    }
+    return CLI_EXIT_OK;
+}
+
 /* A new target: the whole temporary directory becomes it in one rename.
  * mkdtemp made it private (0700); give it the mode mkdir would have. */
 static int commit_as_new_directory(staged_output *out, cli_error *error)
@@ -216,6 +240,12 @@ static int commit_into_existing_directory(staged_output *out, cli_error *error)
     }
     for (size_t i = 0; i < out->count && code == CLI_EXIT_OK; i++)
         code = refuse_input_as_output(finals[i], out->inputs, out->input_count, error);
+    for (size_t i = 0; i < out->removed_count && code == CLI_EXIT_OK; i++) {
+        char *old = path_join(out->target, out->removed[i]);
+        code = old ? refuse_input_as_output(old, out->inputs, out->input_count, error) : CLI_EXIT_INTERNAL;
+        if (!old) cli_error_set(error, "out of memory");
+        free(old);
+    }
     /* The manifest goes first and comes back last. */
     size_t manifest = out->count;
     for (size_t i = 0; i < out->count; i++)
@@ -224,6 +254,7 @@ static int commit_into_existing_directory(staged_output *out, cli_error *error)
         cli_error_set(error, "cannot replace %s: %s", finals[manifest], strerror(errno));
         code = CLI_EXIT_INTERNAL;
     }
+    if (code == CLI_EXIT_OK) code = remove_old(out, error);
     for (size_t i = 0; i < out->count && code == CLI_EXIT_OK; i++)
         if (i != manifest) code = move_in(out, i, finals[i], error);
     if (code == CLI_EXIT_OK && manifest < out->count) code = move_in(out, manifest, finals[manifest], error);

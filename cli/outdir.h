@@ -18,6 +18,8 @@ typedef struct staged_output {
     char **names;  /* files requested so far, and their staging paths */
     char **paths;
     size_t count;
+    const char *const *removed; /* files of target that commit removes (borrowed) */
+    size_t removed_count;
 } staged_output;
 
 /* Checks, before any work is done, that target can become the output
@@ -34,6 +36,11 @@ int staged_output_begin(staged_output *out, const char *target, const char *cons
 /* The path under which to write file `name` (no slashes); it is moved to
  * target/name on commit. Owned by *out. NULL if out of memory. */
 const char *staged_output_path(staged_output *out, const char *name);
+
+/* Files (no slashes) that commit removes from target when it is there:
+ * an earlier run's output this run does not write, which report.json would
+ * otherwise sit beside without describing. names are borrowed. */
+void staged_output_remove(staged_output *out, const char *const *names, size_t count);
 
 /* Moves every requested file into target, creating target if missing;
  * files of the same name are replaced, other files in target are kept.

@@ -17,6 +17,7 @@ static const option_spec triangulate_options[] = {
      "missing (its parent must exist); files in DIR named\n"
      "like an output are replaced, other files are kept"},
     TRIANGULATE_FORMAT_SPEC,
+    TRIANGULATE_PREVIEW_SPEC,
     TRIANGULATION_OPTION_SPECS,
     {"help", 'h', NULL, "show this help and exit"},
 };

@@ -23,7 +23,12 @@ int triangulate_job_option(triangulate_job *job, const char *command, int key,
                            const char *value, cli_error *error)
 {
     int code = triangulation_option(&job->tri, command, key, value, error);
-    if (code >= 0 || key != 'f') return code;
+    if (code >= 0) return code;
+    if (key == OPTION_NO_PREVIEW) {
+        job->no_preview = 1;
+        return CLI_EXIT_OK;
+    }
+    if (key != 'f') return code;
     if (mesh_format_from_name(value, &job->format) == 0) return CLI_EXIT_OK;
     cli_error_set(error, "%s: unknown --format '%s' (known: off, obj, ply)", command, value);
     return CLI_EXIT_USAGE;
@@ -88,13 +93,17 @@ static int make_output_names(triangulate_run *run, cli_error *error)
     return CLI_EXIT_OK;
 }
 
+#define PREVIEW_SVG "preview.svg"
+#define PREVIEW_PNG "preview.png"
+static const char *const preview_names[] = {PREVIEW_SVG, PREVIEW_PNG};
+
 /* Before any work: no output may replace an input (commit checks again). */
 static int refuse_inputs_early(triangulate_run *run, cli_error *error)
 {
     const triangulation_args *tri = &run->args->tri;
     size_t k = tri->input_count;
     int code = CLI_EXIT_OK;
-    static const char *const extras[] = {"report.json", "preview.svg", "preview.png"};
+    static const char *const extras[] = {"report.json", PREVIEW_SVG, PREVIEW_PNG};
     for (size_t i = 0; i < k + 3 && code == CLI_EXIT_OK; i++) {
         const char *name = i < k ? run->mesh_names[i] : extras[i - k];
         char *path = path_join(run->args->out_dir, name);
@@ -144,6 +153,10 @@ static int write_extras(triangulate_run *run, cli_error *error)
     int code = stage_file(run, "report.json", &path, error);
     if (code == CLI_EXIT_OK) code = write_report(path, &info, error);
     if (code != CLI_EXIT_OK) return code;
+    if (run->args->no_preview) {
+        staged_output_remove(&run->output, preview_names, 2);
+        return CLI_EXIT_OK;
+    }
     const char **names = malloc(run->args->tri.input_count * sizeof *names);
     if (!names) {
         cli_error_set(error, "out of memory");
@@ -156,8 +169,8 @@ static int write_extras(triangulate_run *run, cli_error *error)
     free(names);
     if (code != CLI_EXIT_OK) return code;
     const char *svg = NULL;
-    code = stage_file(run, "preview.svg", &svg, error);
-    if (code == CLI_EXIT_OK) code = stage_file(run, "preview.png", &path, error);
+    code = stage_file(run, PREVIEW_SVG, &svg, error);
+    if (code == CLI_EXIT_OK) code = stage_file(run, PREVIEW_PNG, &path, error);
     if (code == CLI_EXIT_OK) code = write_pictures(svg, path, &pic, error);
     picture_free(&pic);
     return code;
@@ -182,8 +195,11 @@ static void print_summary(const triangulate_run *run)
         printf("wrote %s (n=%zu, steiner=%zu, min angle %.1f deg)\n", run->final_paths[g],
                stats->n, stats->steiner, quality.min_angle_deg);
     }
-    printf("wrote %s/report.json, %s/preview.svg and %s/preview.png\n", run->output.target,
-           run->output.target, run->output.target);
+    if (run->args->no_preview)
+        printf("wrote %s/report.json\n", run->output.target);
+    else
+        printf("wrote %s/report.json, %s/" PREVIEW_SVG " and %s/" PREVIEW_PNG "\n", run->output.target,
+               run->output.target, run->output.target);
     const cm_options *o = &run->args->tri.options;
     if (o->ceiling && stats->ceiling_deg < o->min_angle_deg)
         printf("no compatible triangulation of %s can have a smallest angle above %.1f degrees "

@@ -53,9 +53,9 @@ def pairs(tmp_path):
     return listing, expected
 
 
-def test_batch_writes_what_triangulate_writes(cm, tmp_path, pairs):
+@pytest.mark.parametrize("options", [["--format", "obj", "--min-angle", "22"], ["--no-preview"]])
+def test_batch_writes_what_triangulate_writes(cm, tmp_path, pairs, options):
     listing, expected = pairs
-    options = ["--format", "obj", "--min-angle", "22"]
     result = cm("batch", listing, "--out-dir", tmp_path / "out", "--jobs", "2", *options)
     assert result.returncode == 0, result.stderr
     lines = result.stderr.splitlines()
@@ -74,6 +74,7 @@ def test_batch_writes_what_triangulate_writes(cm, tmp_path, pairs):
         assert single.returncode == 0, single.stderr
         written = sorted(os.listdir(tmp_path / "out" / folder))
         assert written == sorted(os.listdir(alone))
+        assert ("preview.svg" in written) == ("--no-preview" not in options)
         meshes = [name for name in written if name.endswith(MESH_SUFFIXES)]
         assert len(meshes) == len(inputs)
         for name in meshes:

@@ -50,8 +50,9 @@ def check_mesh_geometry(points, triangles, polygon):
     assert math.isclose(area, abs(signed_area(polygon)), rel_tol=1e-9)
 
 
-def check_success(tmp_path, result, inputs, fmt="off", out="out"):
-    """Checks everything a successful run promises; returns the report."""
+def check_success(tmp_path, result, inputs, fmt="off", out="out", preview=True):
+    """Checks everything a successful run promises (the pictures when
+    preview); returns the report."""
     assert result.returncode == 0, result.stderr
     assert result.stderr == ""
     out_dir = tmp_path / out
@@ -120,8 +121,9 @@ def check_success(tmp_path, result, inputs, fmt="off", out="out"):
         if not report["remesh"]:
             assert before == {key: entry[key] for key in before}
 
-    svg = check_pictures(out_dir / "preview.png", out_dir / "preview.svg")
-    check_svg(svg, inputs, report, angles_per_mesh)
+    if preview:
+        svg = check_pictures(out_dir / "preview.png", out_dir / "preview.svg")
+        check_svg(svg, inputs, report, angles_per_mesh)
     assert leftovers(tmp_path) == []
     return report
 
@@ -155,6 +157,23 @@ def test_pair_of_stars_default_off(cm, tmp_path):
     assert report["steiner"] > 0, "this pair needs Steiner vertices"
     assert sorted(os.listdir(tmp_path / "out")) == \
         ["a.off", "b.off", "preview.png", "preview.svg", "report.json"]
+
+
+def test_no_preview(cm, tmp_path):
+    """--no-preview writes the same meshes and no pictures, removes the
+    pictures an earlier run left in the folder (report.json would sit beside
+    them without describing them) and says what it wrote."""
+    a, b = star(12, seed=1), star(12, seed=2, scale=3.0)
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    assert cm("triangulate", "a.xy", "b.xy", "-o", "with").returncode == 0
+    assert cm("triangulate", "a.xy", "b.xy", "-o", "out").returncode == 0
+    result = cm("triangulate", "a.xy", "b.xy", "-o", "out", "--no-preview")
+    check_success(tmp_path, result, {"a.xy": a, "b.xy": b}, preview=False)
+    assert sorted(os.listdir(tmp_path / "out")) == ["a.off", "b.off", "report.json"]
+    for name in ("a.off", "b.off"):
+        assert (tmp_path / "out" / name).read_bytes() == (tmp_path / "with" / name).read_bytes()
+    assert result.stdout.splitlines()[-1] == "wrote out/report.json"
 
 
 @pytest.mark.parametrize("fmt", ["off", "obj", "ply"])
