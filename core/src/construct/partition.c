@@ -65,12 +65,20 @@
 #define LINK_ALL_PAIRS 600
 #define LINK_WORK 360000L
 #define LINK_MIN_SOURCES 48
+/* The same for the faces of an input above the table limit: it has many
+ * faces of a few hundred vertices (beside the long cuts between its
+ * pieces), and all their pairs would cost more than the rest together. */
+#define LINK_ALL_PAIRS_LARGE 128
+#define LINK_WORK_LARGE 16384L
 /* Vertex pairs tried, best first, before giving up on a stuck face; of
  * the valid cuts, this many are compared by what their halves need. */
 #define LINK_MAX_TRIES 40
 /* Sources of a cut that must leave a given share on either side: every
  * source pairs with a whole opposite arc, so a few spread ones suffice. */
 #define BALANCED_SOURCES 8
+/* Cuts in a row that keep a face's size, when the overlay is the only
+ * other way left (else one). */
+#define MAX_REPEATS 4
 #define LINK_EVALUATE 12
 
 typedef struct vtable {
@@ -83,7 +91,7 @@ typedef struct item {
     int32_t *gid;  /* global vertex ids, counter-clockwise */
     int32_t *tix;  /* indices into the table, NULL while table < 0 */
     long m, table; /* table -1: needs a table of its own */
-    int repeat;    /* has the size of the polygon it was cut from */
+    int repeat;    /* cuts in a row that kept the size of the polygon cut */
     int stuck;     /* known to have no common diagonal */
     int fanless;   /* known not to be star-shaped in some geometry */
 } item;
@@ -655,6 +663,8 @@ typedef struct {
                             the halves of its cuts; NULL until needed */
     int own_state;       /* 0 not yet, 1 done, -1 not available */
     long min_balance;    /* pairs whose shorter side spans less are not cut */
+    int repeats;         /* a half may keep the face's size if the face's
+                            repeat count is at most this */
 } face_ctx;
 
 static int *dist_row(const face_ctx *f, size_t g, long row)
@@ -684,7 +694,7 @@ static pair *rank_pairs(const face_ctx *f, long *count)
             }
             if (links < 0 || (links == 1 && flat_pair(f->p, f->it->gid[u], f->it->gid[v]))) continue;
             long s1 = (v - u + 1) + links - 1, s2 = (m - (v - u) + 1) + links - 1;
-            if (s1 > m || s2 > m || ((s1 == m || s2 == m) && f->it->repeat)) continue;
+            if (s1 > m || s2 > m || ((s1 == m || s2 == m) && f->it->repeat > f->repeats)) continue;
             long span = v - u < m - (v - u) ? v - u : m - (v - u);
             if (span < f->min_balance) continue;
             pairs[(*count)++] = (pair){u, v, r, links, (int)span, sum};
@@ -1070,7 +1080,7 @@ static int split_along(part *p, const item *it, const pair *pr, const long *stei
     for (int half = 0; half < 2; half++) {
         long from = half == 0 ? pr->u : pr->v, to = half == 0 ? pr->v : pr->u;
         long size = (to - from + m) % m + 1 + nb;
-        item c = {malloc((size_t)size * sizeof(int32_t)), NULL, size, -1, size == m, 0, 0};
+        item c = {malloc((size_t)size * sizeof(int32_t)), NULL, size, -1, size == m ? it->repeat + 1 : 0, 0, 0};
         if (!c.gid) return -1;
         long n = 0;
         for (long x = from;; x = (x + 1) % m) {
@@ -1163,18 +1173,21 @@ static int cut_face(face_ctx *f)
 }
 
 /* Cuts the item along a minimum-link path between two of its vertices
- * whose shorter side spans at least min_balance vertices. 1 cut, 0 none,
- * -1 memory. */
-static int link_split(part *p, item *it, long min_balance)
+ * whose shorter side spans at least min_balance vertices; a half keeps
+ * the item's size only if the item's repeat count is at most repeats. 1
+ * cut, 0 none, -1 memory. */
+static int link_split(part *p, item *it, long min_balance, int repeats)
 {
     long m = it->m;
-    long nsrc = m <= LINK_ALL_PAIRS ? m : LINK_WORK / m > LINK_MIN_SOURCES ? LINK_WORK / m : LINK_MIN_SOURCES;
+    long all = LINK_ALL_PAIRS, work = LINK_WORK;
+    if ((long)p->n > p->table_limit) all = LINK_ALL_PAIRS_LARGE, work = LINK_WORK_LARGE;
+    long nsrc = m <= all ? m : work / m > LINK_MIN_SOURCES ? work / m : LINK_MIN_SOURCES;
     if (min_balance > 0) nsrc = BALANCED_SOURCES; /* any pair across will do */
     if (nsrc > m) nsrc = m;
     double t0 = cm_seconds_now();
     face_ctx f = {p, it, local_xy(p, it), calloc(p->k, sizeof(cm_linkpart *)), malloc((size_t)nsrc * sizeof(long)),
                   nsrc, malloc((size_t)m * sizeof(long)), malloc(p->k * (size_t)nsrc * (size_t)m * sizeof(int)), NULL, 0,
-                  min_balance};
+                  min_balance, repeats};
     unsigned char *open = malloc(p->k * (size_t)nsrc), *need = malloc((size_t)m);
     int result = f.l && f.lp && f.src && f.row_of && f.dist && open && need ? 0 : -1;
     for (long v = 0; result == 0 && v < m; v++) f.row_of[v] = -1;
@@ -1313,9 +1326,9 @@ static cm_status large_step(part *p, item *it)
     if (cut == 0) found = sampled_diagonal(p, it, &bi, &bj, &balance);
     if (found == 2) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: a sub-polygon is not simple");
     if (found == 1 && balance >= it->m / DIAGONAL_PART) cut = 2;
-    if (cut == 0 && found >= 0) cut = link_split(p, it, it->m / LINK_PART);
+    if (cut == 0 && found >= 0) cut = link_split(p, it, it->m / LINK_PART, 0);
     if (cut == 0 && found == 1) cut = 2;
-    if (cut == 0 && found >= 0) cut = link_split(p, it, 0);
+    if (cut == 0 && found >= 0) cut = link_split(p, it, 0, 0);
     if (cut == 2) {
         p->st->sampled_splits++;
         cut = split_diagonal(p, it, bi, bj) == 0 ? 1 : -1;
@@ -1339,7 +1352,11 @@ static cm_status process_item(part *p, item *it)
     if (it->table < 0 && (s = table_for_item(p, it)) != CM_OK) return s;
     if (!it->stuck && common_step(p, it, &s)) return s;
     int cut = try_fan(p, it);
-    if (cut == 0) cut = link_split(p, it, 0);
+    if (cut == 0) cut = link_split(p, it, 0, 0);
+    /* Before the overlay: a piece of a sliver may still be cut if a
+     * half may keep its size a few times more (the overlay itself may
+     * find no room in doubles for its points there). */
+    if (cut == 0 && it->repeat > 0 && it->repeat < MAX_REPEATS) cut = link_split(p, it, 0, it->repeat);
     if (cut < 0) return no_memory(p);
     return cut ? CM_OK : fallback(p, it);
 }

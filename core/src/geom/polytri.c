@@ -70,6 +70,11 @@ static void update_vertex(ring *r, long v)
     r->ear[v] = r->convex[v] > 0 && !ear_blocked(r, r->prev[v], v, r->next[v]);
 }
 
+/* Rings above this many vertices clip small ears first when the result
+ * is flipped to the constrained Delaunay triangulation (always when only
+ * walked). */
+#define SMALL_EARS_FROM 2048
+
 /* Grid cells under the bounding box of the ear at v. */
 static long ear_cells(const ring *r, long v)
 {
@@ -283,7 +288,10 @@ int cm_polygon_ear_clip(const double *xy, const int32_t *idx, long m, int32_t *t
 int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t *tri_out,
                            cm_progress *progress)
 {
-    int s = clip_ears(xy, idx, m, tri_out, progress, 0);
+    /* the flips make the result the constrained Delaunay triangulation,
+     * but where it is not unique (cocircular vertices) the one reached
+     * depends on the ears: rings up to SMALL_EARS_FROM keep their order */
+    int s = clip_ears(xy, idx, m, tri_out, progress, m > SMALL_EARS_FROM);
     if (s != 0) return s;
     return make_delaunay(xy, tri_out, m - 2, NULL, NULL, progress);
 }
