@@ -32,9 +32,12 @@
  * input); an item with bends on its boundary gets a set of its own. A set
  * is built only when needed: an item large enough that the steps try the
  * fan first tries it before its set, and an item above the table limit
- * (CM_PARTITION_MAX_VERTICES) gets none: it is split along the most
- * balanced common diagonal seen from spread vertices until the pieces
- * are small enough. */
+ * (CM_PARTITION_MAX_VERTICES) gets none: it is cut into pieces that shrink
+ * geometrically (a common diagonal leaving at least an eighth on either
+ * side, from the ends of its triangulations' most balanced diagonals and
+ * spread vertices, else a minimum-link path leaving a quarter) until they
+ * are small enough, so that tables and cuts cost O(n log n) in all where
+ * one short cut per pass would cost O(n^2 / span). */
 #include "construct/partition.h"
 #include "base/buf.h"
 #include "base/clock.h"
@@ -62,9 +65,20 @@
 #define LINK_ALL_PAIRS 600
 #define LINK_WORK 360000L
 #define LINK_MIN_SOURCES 48
+/* The same for the faces of an input above the table limit: it has many
+ * faces of a few hundred vertices (beside the long cuts between its
+ * pieces), and all their pairs would cost more than the rest together. */
+#define LINK_ALL_PAIRS_LARGE 128
+#define LINK_WORK_LARGE 16384L
 /* Vertex pairs tried, best first, before giving up on a stuck face; of
  * the valid cuts, this many are compared by what their halves need. */
 #define LINK_MAX_TRIES 40
+/* Sources of a cut that must leave a given share on either side: every
+ * source pairs with a whole opposite arc, so a few spread ones suffice. */
+#define BALANCED_SOURCES 8
+/* Cuts in a row that keep a face's size, when the overlay is the only
+ * other way left (else one). */
+#define MAX_REPEATS 4
 #define LINK_EVALUATE 12
 
 typedef struct vtable {
@@ -77,7 +91,7 @@ typedef struct item {
     int32_t *gid;  /* global vertex ids, counter-clockwise */
     int32_t *tix;  /* indices into the table, NULL while table < 0 */
     long m, table; /* table -1: needs a table of its own */
-    int repeat;    /* has the size of the polygon it was cut from */
+    int repeat;    /* cuts in a row that kept the size of the polygon cut */
     int stuck;     /* known to have no common diagonal */
     int fanless;   /* known not to be star-shaped in some geometry */
 } item;
@@ -557,40 +571,79 @@ static void best_at(const part *p, const item *it, const rowset *r, long i, unsi
     }
 }
 
-/* Cuts an item without a table along the most balanced common diagonal
- * from SAMPLE_SOURCES evenly spread vertices (one visibility row per
- * source and geometry, O(k m) each), or when none of them has one, the
- * first one from SAMPLE_MORE others; the halves get tables of their own
- * or, still too large, another sampled split. Returns 1 if cut, 0 if none
- * was seen, -1 out of memory, 2 not simple. */
-static int sampled_split(part *p, item *it)
+/* Ends of the most balanced diagonals of the geometries' triangulations
+ * tried first: some diagonal of a triangulation leaves at least a third
+ * of the vertices on either side, and when it is common (a polygon against
+ * a convex one) it is found here, where spread sources rarely meet it. */
+#define TRI_CANDIDATES 16
+
+/* Up to max distinct local vertices that end the most balanced diagonals
+ * of r's triangulations, most balanced first, into out; their number. */
+static long balanced_ends(const rowset *r, long m, long *out, long max)
+{
+    long count = 0, *bal = malloc((size_t)max * sizeof *bal);
+    if (!bal) return 0;
+    for (size_t g = 0; g < r->k; g++)
+        for (long e = 0; e < 3 * (m - 2); e++) {
+            long a = r->tri[3 * (size_t)m * g + (size_t)e];
+            long b = r->tri[3 * (size_t)m * g + (size_t)(e % 3 == 2 ? e - 2 : e + 1)];
+            long d = (b - a + m) % m, balance = d < m - d ? d : m - d;
+            if (balance < 2) continue;
+            long end = d < m - d ? a : b, at = count; /* one end per diagonal: the start of its shorter side */
+            for (long q = 0; q < count && at == count; q++)
+                if (out[q] == end) at = bal[q] >= balance ? -1 : q;
+            if (at < 0) continue;
+            if (at == count) {
+                if (count == max && bal[count - 1] >= balance) continue;
+                at = count < max ? count++ : count - 1;
+            }
+            for (; at > 0 && bal[at - 1] < balance; at--) out[at] = out[at - 1], bal[at] = bal[at - 1];
+            out[at] = end, bal[at] = balance;
+        }
+    free(bal);
+    return count;
+}
+
+/* The most balanced common diagonal of an item without a table, at the
+ * ends of its triangulations' most balanced diagonals and at
+ * SAMPLE_SOURCES evenly spread vertices (one visibility row per vertex
+ * and geometry, O(k m) each), or when none of them has one, the first one
+ * from SAMPLE_MORE others: (*bi, *bj), *balance the span of its shorter
+ * side. Returns 1 found, 0 none seen, -1 out of memory, 2 not simple. */
+static int sampled_diagonal(part *p, item *it, long *bi, long *bj, long *balance)
 {
     double t0 = cm_seconds_now();
-    long m = it->m, best = 1, bi = -1, bj = -1;
+    long m = it->m, best = 1, ends[TRI_CANDIDATES];
     size_t k = p->k;
     double **l = local_xy(p, it);
     unsigned char *row = malloc(2 * (size_t)m);
     rowset r = {NULL, NULL, k};
     int s = l && row ? open_rows((const double *const *)l, NULL, k, m, &r) : -1;
+    long nends = s == 0 ? balanced_ends(&r, m, ends, TRI_CANDIDATES) : 0;
+    *bi = *bj = -1;
+    for (long q = 0; s == 0 && q < nends && 2 * best < m; q++) {
+        long j;
+        best_at(p, it, &r, ends[q], row, row + m, &best, &j);
+        if (j >= 0) *bi = ends[q], *bj = j;
+    }
     for (long q = 0; s == 0 && q < SAMPLE_SOURCES && 2 * best < m; q++) {
         long i = (long)((double)q * (double)m / SAMPLE_SOURCES), j;
         best_at(p, it, &r, i, row, row + m, &best, &j);
-        if (j >= 0) bi = i, bj = j;
+        if (j >= 0) *bi = i, *bj = j;
     }
     long more = m < SAMPLE_MORE ? m : SAMPLE_MORE;
-    for (long q = 0; s == 0 && bi < 0 && q < more; q++) {
+    for (long q = 0; s == 0 && *bi < 0 && q < more; q++) {
         long i = (long)((double)q * (double)m / (double)more + 0.5) % m, j;
         best_at(p, it, &r, i, row, row + m, &best, &j);
-        if (j >= 0) bi = i, bj = j;
+        if (j >= 0) *bi = i, *bj = j;
     }
     close_rows(&r);
     free_xy(l, k);
     free(row);
     p->st->seconds_visibility += cm_seconds_now() - t0;
+    *balance = best;
     if (s != 0) return s > 0 ? 2 : -1;
-    if (bi < 0) return 0;
-    p->st->sampled_splits++;
-    return split_diagonal(p, it, bi, bj) == 0 ? 1 : -1;
+    return *bi >= 0;
 }
 
 /* ---- cutting a stuck face along minimum-link paths ------------------------ */
@@ -618,6 +671,9 @@ typedef struct {
     cm_diagset *own;     /* k: the face's diagonals in each geometry, for
                             the halves of its cuts; NULL until needed */
     int own_state;       /* 0 not yet, 1 done, -1 not available */
+    long min_balance;    /* pairs whose shorter side spans less are not cut */
+    int repeats;         /* a half may keep the face's size if the face's
+                            repeat count is at most this */
 } face_ctx;
 
 static int *dist_row(const face_ctx *f, size_t g, long row)
@@ -647,8 +703,9 @@ static pair *rank_pairs(const face_ctx *f, long *count)
             }
             if (links < 0 || (links == 1 && flat_pair(f->p, f->it->gid[u], f->it->gid[v]))) continue;
             long s1 = (v - u + 1) + links - 1, s2 = (m - (v - u) + 1) + links - 1;
-            if (s1 > m || s2 > m || ((s1 == m || s2 == m) && f->it->repeat)) continue;
+            if (s1 > m || s2 > m || ((s1 == m || s2 == m) && f->it->repeat > f->repeats)) continue;
             long span = v - u < m - (v - u) ? v - u : m - (v - u);
+            if (span < f->min_balance) continue;
             pairs[(*count)++] = (pair){u, v, r, links, (int)span, sum};
         }
     qsort(pairs, (size_t)*count, sizeof *pairs, compare_pairs);
@@ -948,7 +1005,12 @@ static int cut_choices(const face_ctx *f, const pair *pr, size_t g, const double
     c->bends = malloc(sizeof(double) * (size_t)(per > 0 ? per : 1) * (NOFFSETS + MAX_SAMPLES));
     if (!c->bends) return -1;
     for (size_t o = 0; o < offsets_tried; o++) {
-        double *b = refine_path(f->l[g], m, pr->u, pr->v, path, nb, want, offsets[o]);
+        /* A long cut across a large face may need many more bends in one
+         * geometry than its own path has: on its links they would make
+         * flat chains, slivers to the cuts after; pushed sideways they
+         * zigzag (refine_path falls back to less, down to none). */
+        double side = f->min_balance > 0 && o == 0 ? offsets[1] : offsets[o];
+        double *b = refine_path(f->l[g], m, pr->u, pr->v, path, nb, want, side);
         if (!b) continue;
         memcpy(c->bends + per * c->count++, b, sizeof(double) * (size_t)per);
         free(b);
@@ -1027,7 +1089,7 @@ static int split_along(part *p, const item *it, const pair *pr, const long *stei
     for (int half = 0; half < 2; half++) {
         long from = half == 0 ? pr->u : pr->v, to = half == 0 ? pr->v : pr->u;
         long size = (to - from + m) % m + 1 + nb;
-        item c = {malloc((size_t)size * sizeof(int32_t)), NULL, size, -1, size == m, 0, 0};
+        item c = {malloc((size_t)size * sizeof(int32_t)), NULL, size, -1, size == m ? it->repeat + 1 : 0, 0, 0};
         if (!c.gid) return -1;
         long n = 0;
         for (long x = from;; x = (x + 1) % m) {
@@ -1038,6 +1100,32 @@ static int split_along(part *p, const item *it, const pair *pr, const long *stei
         if (push_item(p, c) != 0) return -1;
     }
     return 0;
+}
+
+/* Do the nb bends of each geometry keep clear of the face's vertices and
+ * of each other, by more than BEND_GAP of the face's extent? A bend a few
+ * units in the last place from a vertex is valid, but the pieces beside
+ * it are slivers that later cuts, and even the overlay, cannot place
+ * points in. */
+#define BEND_GAP 1e-9
+static int bends_apart(const face_ctx *f, long nb, double **bends)
+{
+    long m = f->it->m;
+    for (size_t g = 0; g < f->p->k; g++) {
+        const double *xy = f->l[g];
+        double lo[2] = {xy[0], xy[1]}, hi[2] = {xy[0], xy[1]};
+        for (long i = 1; i < m; i++)
+            for (int d = 0; d < 2; d++) lo[d] = fmin(lo[d], xy[2 * i + d]), hi[d] = fmax(hi[d], xy[2 * i + d]);
+        double gap = BEND_GAP * fmax(hi[0] - lo[0], hi[1] - lo[1]);
+        for (long j = 0; j < nb; j++) {
+            const double *b = bends[g] + 2 * j;
+            for (long i = 0; i < m; i++)
+                if (fabs(b[0] - xy[2 * i]) <= gap && fabs(b[1] - xy[2 * i + 1]) <= gap) return 0;
+            for (long i = 0; i < j; i++)
+                if (fabs(b[0] - bends[g][2 * i]) <= gap && fabs(b[1] - bends[g][2 * i + 1]) <= gap) return 0;
+        }
+    }
+    return 1;
 }
 
 /* Cuts the face along the best valid pair: ranked by the paper's rule,
@@ -1058,6 +1146,7 @@ static int cut_face(face_ctx *f)
         if (best_pair >= 0 && pairs[c].links - 1 >= best_total) break; /* cannot win */
         long cost = 0;
         int s = build_cut(f, &pairs[c], bends, &cost);
+        if (s == 1 && !bends_apart(f, pairs[c].links - 1, bends)) s = 0;
         if (s < 0) result = -1;
         if (s == 1) {
             valid++;
@@ -1092,14 +1181,22 @@ static int cut_face(face_ctx *f)
     return result;
 }
 
-static int link_split(part *p, item *it)
+/* Cuts the item along a minimum-link path between two of its vertices
+ * whose shorter side spans at least min_balance vertices; a half keeps
+ * the item's size only if the item's repeat count is at most repeats. 1
+ * cut, 0 none, -1 memory. */
+static int link_split(part *p, item *it, long min_balance, int repeats)
 {
     long m = it->m;
-    long nsrc = m <= LINK_ALL_PAIRS ? m : LINK_WORK / m > LINK_MIN_SOURCES ? LINK_WORK / m : LINK_MIN_SOURCES;
+    long all = LINK_ALL_PAIRS, work = LINK_WORK;
+    if ((long)p->n > p->table_limit) all = LINK_ALL_PAIRS_LARGE, work = LINK_WORK_LARGE;
+    long nsrc = m <= all ? m : work / m > LINK_MIN_SOURCES ? work / m : LINK_MIN_SOURCES;
+    if (min_balance > 0) nsrc = BALANCED_SOURCES; /* any pair across will do */
     if (nsrc > m) nsrc = m;
     double t0 = cm_seconds_now();
     face_ctx f = {p, it, local_xy(p, it), calloc(p->k, sizeof(cm_linkpart *)), malloc((size_t)nsrc * sizeof(long)),
-                  nsrc, malloc((size_t)m * sizeof(long)), malloc(p->k * (size_t)nsrc * (size_t)m * sizeof(int)), NULL, 0};
+                  nsrc, malloc((size_t)m * sizeof(long)), malloc(p->k * (size_t)nsrc * (size_t)m * sizeof(int)), NULL, 0,
+                  min_balance, repeats};
     unsigned char *open = malloc(p->k * (size_t)nsrc), *need = malloc((size_t)m);
     int result = f.l && f.lp && f.src && f.row_of && f.dist && open && need ? 0 : -1;
     for (long v = 0; result == 0 && v < m; v++) f.row_of[v] = -1;
@@ -1223,13 +1320,29 @@ static int common_step(part *p, item *it, cm_status *s)
 }
 
 /* An item above the table limit: one fan when it is star-shaped in every
- * geometry, else a sampled split, else the overlay. */
+ * geometry; else a common diagonal that leaves at least m / DIAGONAL_PART
+ * vertices on either side; else a minimum-link path with at least m /
+ * LINK_PART on either side (bends are Steiner vertices, but the pieces
+ * shrink geometrically: a short diagonal, all an unrelated pair may have,
+ * peels off a small piece per O(k m) split and leaves large stuck faces);
+ * else any common diagonal seen, any link cut, the overlay. */
+#define DIAGONAL_PART 8
+#define LINK_PART 4
 static cm_status large_step(part *p, item *it)
 {
-    int cut = try_fan(p, it);
-    if (cut == 0) cut = sampled_split(p, it);
-    if (cut == 2) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: a sub-polygon is not simple");
-    if (cut < 0) return no_memory(p);
+    long bi = -1, bj = -1, balance = 0;
+    int cut = try_fan(p, it), found = 0;
+    if (cut == 0) found = sampled_diagonal(p, it, &bi, &bj, &balance);
+    if (found == 2) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: a sub-polygon is not simple");
+    if (found == 1 && balance >= it->m / DIAGONAL_PART) cut = 2;
+    if (cut == 0 && found >= 0) cut = link_split(p, it, it->m / LINK_PART, 0);
+    if (cut == 0 && found == 1) cut = 2;
+    if (cut == 0 && found >= 0) cut = link_split(p, it, 0, 0);
+    if (cut == 2) {
+        p->st->sampled_splits++;
+        cut = split_diagonal(p, it, bi, bj) == 0 ? 1 : -1;
+    }
+    if (cut < 0 || found < 0) return no_memory(p);
     return cut ? CM_OK : fallback(p, it);
 }
 
@@ -1248,7 +1361,11 @@ static cm_status process_item(part *p, item *it)
     if (it->table < 0 && (s = table_for_item(p, it)) != CM_OK) return s;
     if (!it->stuck && common_step(p, it, &s)) return s;
     int cut = try_fan(p, it);
-    if (cut == 0) cut = link_split(p, it);
+    if (cut == 0) cut = link_split(p, it, 0, 0);
+    /* Before the overlay: a piece of a sliver may still be cut if a
+     * half may keep its size a few times more (the overlay itself may
+     * find no room in doubles for its points there). */
+    if (cut == 0 && it->repeat > 0 && it->repeat < MAX_REPEATS) cut = link_split(p, it, 0, it->repeat);
     if (cut < 0) return no_memory(p);
     return cut ? CM_OK : fallback(p, it);
 }

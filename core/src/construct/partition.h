@@ -13,12 +13,16 @@
  * first split along the most balanced common diagonal. */
 #define CM_DP_MAX_VERTICES 300
 
-/* A common-diagonal set takes m^2 / 8 bytes (200 MB at this size): a
- * sub-polygon above this many vertices gets none. It is fanned from one
- * Steiner vertex when star-shaped in every geometry, else split along the
- * most balanced common diagonal seen from a few spread vertices (the
- * overlay construction takes it only when none of them has one). */
-#define CM_PARTITION_MAX_VERTICES 40000
+/* A common-diagonal set takes m^2 / 8 bytes and O(k m^2) time to build:
+ * a sub-polygon above this many vertices gets none, so that the sets cost
+ * O(n) in all. It is fanned from one Steiner vertex when star-shaped in
+ * every geometry, else split into pieces that shrink geometrically: along
+ * a common diagonal that leaves a fair share on either side (looked for at
+ * the ends of its triangulations' most balanced diagonals and at spread
+ * vertices), else along a minimum-link path between two far-apart
+ * vertices (the overlay construction takes it only when neither, nor any
+ * shorter cut, exists). */
+#define CM_PARTITION_MAX_VERTICES 2048
 
 typedef struct cm_partition_stats {
     size_t steiner;        /* Steiner vertices of the result */

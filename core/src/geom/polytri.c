@@ -1,6 +1,7 @@
 /* Triangulation of one simple polygon: ear clipping, then Lawson flips to
  * the constrained Delaunay triangulation (which maximises the minimum angle
  * over all triangulations of the polygon). Every decision is exact. */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 
@@ -20,6 +21,7 @@ typedef struct {
     const int32_t *idx;
     long *prev, *next;
     signed char *convex, *ear;
+    long remaining; /* vertices left on the ring */
     cm_pointgrid grid;
 } ring;
 
@@ -31,7 +33,10 @@ static int ear_blocked(const ring *r, long a, long b, long c)
     long cells[4];
     long ncells = cm_pointgrid_range(&r->grid, fmin(pa[0], fmin(pb[0], pc[0])), fmin(pa[1], fmin(pb[1], pc[1])),
                                      fmax(pa[0], fmax(pb[0], pc[0])), fmax(pa[1], fmax(pb[1], pc[1])), cells);
-    if (ncells > 4 * r->grid.count + 16) { /* a box over most of the grid: walk the ring */
+    /* a box of many more cells than reflex vertices: walk the ring instead
+     * when it is the shorter walk (not for a near-convex ring, whose long
+     * ears would each walk it whole) */
+    if (ncells > 4 * r->grid.count + 16 && ncells > r->remaining) {
         for (long v = r->next[c]; v != a; v = r->next[v]) {
             if (r->convex[v] > 0) continue;
             const double *p = P(r->idx[v]);
@@ -65,7 +70,27 @@ static void update_vertex(ring *r, long v)
     r->ear[v] = r->convex[v] > 0 && !ear_blocked(r, r->prev[v], v, r->next[v]);
 }
 
-static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri, cm_progress *progress)
+/* Rings above this many vertices clip small ears first when the result
+ * is flipped to the constrained Delaunay triangulation (always when only
+ * walked). */
+#define SMALL_EARS_FROM 2048
+
+/* Grid cells under the bounding box of the ear at v. */
+static long ear_cells(const ring *r, long v)
+{
+    const double *xy = r->xy, *pa = P(r->idx[r->prev[v]]), *pb = P(r->idx[v]), *pc = P(r->idx[r->next[v]]);
+    long cells[4];
+    return cm_pointgrid_range(&r->grid, fmin(pa[0], fmin(pb[0], pc[0])), fmin(pa[1], fmin(pb[1], pc[1])),
+                              fmax(pa[0], fmax(pb[0], pc[0])), fmax(pa[1], fmax(pb[1], pc[1])), cells);
+}
+
+/* small_first: clip the ears under at most `limit` grid cells first,
+ * raising the limit after a round without one. Clipping next to the last
+ * ear instead fans long chains from one vertex (a polygon's arc closed
+ * by a chord: O(m) grid points under each ear); small ears first halve
+ * such chains round by round. */
+static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri, cm_progress *progress,
+                     int small_first)
 {
     ring r = {xy, idx, malloc((size_t)m * sizeof(long)), malloc((size_t)m * sizeof(long)), malloc((size_t)m),
               malloc((size_t)m), .grid = {.head = NULL}};
@@ -82,6 +107,7 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
         r.convex[i] = (signed char)cm_orient2d(P(idx[r.prev[i]]), P(idx[i]), P(idx[r.next[i]]));
         reflex += r.convex[i] <= 0;
     }
+    r.remaining = m;
     if (cm_pointgrid_init(&r.grid, m, lo, hi, reflex) != 0) goto done;
     for (long i = 0; i < m; i++)
         if (r.convex[i] <= 0) cm_pointgrid_insert(&r.grid, i, P(idx[i])[0], P(idx[i])[1]);
@@ -93,15 +119,16 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
         }
     }
 
-    long remaining = m, v = 0, since_last_clip = 0, t = 0;
+    long remaining = m, v = 0, since_last_clip = 0, t = 0, limit = small_first ? 4 : LONG_MAX;
+    long all_cells = r.grid.nx * r.grid.ny;
     status = 1;
     while (remaining > 3) {
-        if (r.ear[v]) {
+        if (r.ear[v] && (limit == LONG_MAX || ear_cells(&r, v) <= limit)) {
             long a = r.prev[v], c = r.next[v];
             tri[3 * t] = idx[a], tri[3 * t + 1] = idx[v], tri[3 * t + 2] = idx[c];
             t++;
             r.next[a] = c, r.prev[c] = a;
-            remaining--;
+            r.remaining = --remaining;
             update_vertex(&r, a);
             update_vertex(&r, c);
             since_last_clip = 0;
@@ -111,7 +138,11 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
                 goto done;
             }
         } else {
-            if (++since_last_clip > remaining) goto done; /* no ear: not simple */
+            if (++since_last_clip > remaining) {
+                if (limit == LONG_MAX) goto done; /* no ear: not simple */
+                limit = limit >= all_cells ? LONG_MAX : 2 * limit;
+                since_last_clip = 0;
+            }
             v = r.next[v];
         }
     }
@@ -251,13 +282,16 @@ done:
 
 int cm_polygon_ear_clip(const double *xy, const int32_t *idx, long m, int32_t *tri_out)
 {
-    return clip_ears(xy, idx, m, tri_out, NULL);
+    return clip_ears(xy, idx, m, tri_out, NULL, 1);
 }
 
 int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t *tri_out,
                            cm_progress *progress)
 {
-    int s = clip_ears(xy, idx, m, tri_out, progress);
+    /* the flips make the result the constrained Delaunay triangulation,
+     * but where it is not unique (cocircular vertices) the one reached
+     * depends on the ears: rings up to SMALL_EARS_FROM keep their order */
+    int s = clip_ears(xy, idx, m, tri_out, progress, m > SMALL_EARS_FROM);
     if (s != 0) return s;
     return make_delaunay(xy, tri_out, m - 2, NULL, NULL, progress);
 }
