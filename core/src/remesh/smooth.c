@@ -231,7 +231,7 @@ static int no_gain(cm_kmesh *km, size_t g, int32_t v)
 }
 
 /* Ascent steps of the search below, and halvings of each step. */
-#define CM_OPTIMIZE_STEPS 8
+#define CM_OPTIMIZE_STEPS 16
 #define CM_OPTIMIZE_HALVINGS 5
 /* Angles within this much (radians) of the smallest are active: the
  * step raises them together. A wide set keeps the steps from zigzagging
