@@ -310,41 +310,6 @@ static int fixture_mesh(int convex, cm_kmesh *km)
     return s ? -1 : 0;
 }
 
-/* The position search on a vertex off-centre in a regular hexagon: the
- * smallest angle is largest (60 degrees, every triangle equilateral) at
- * the centre only, so the search must reach it from any start in the
- * kernel; and, started there, find no gain and stay. */
-static void test_optimize_hexagon(void)
-{
-    static const double start[][2] = {{0.3, -0.2}, {-0.55, 0.1}, {0.05, 0.6}, {0, 0}};
-    for (size_t t = 0; t < sizeof start / sizeof *start; t++) {
-        double xy[14];
-        int32_t tri[18];
-        for (int i = 0; i < 6; i++) {
-            xy[2 * i] = cos(i * CM_PI / 3), xy[2 * i + 1] = sin(i * CM_PI / 3);
-            tri[3 * i] = 6, tri[3 * i + 1] = i, tri[3 * i + 2] = (i + 1) % 6;
-        }
-        xy[12] = start[t][0], xy[13] = start[t][1];
-        double *geom[1] = {xy};
-        cm_mesh m = {.k = 1, .nv = 7, .nt = 6, .xy = geom, .tri = tri};
-        cm_kmesh km;
-        if (cm_kmesh_build(&km, &m, 6) != CM_OK) {
-            CHECK_MSG(0, "hexagon mesh");
-            continue;
-        }
-        cm_ibuf star = {0};
-        int moved = cm_smooth_optimize(&km, 0, 6, &star);
-        double a = cm_kmesh_min_angle(&km) * DEG;
-        const double *c = cm_kmesh_pos(&km, 0, 6);
-        int centre = t == sizeof start / sizeof *start - 1;
-        CHECK_MSG(moved == !centre, "hexagon start %zu: moved %d", t, moved);
-        CHECK_MSG(fabs(a - 60) < 1e-3 * DEG, "hexagon start %zu: %.6f degrees at (%g, %g)", t, a, c[0], c[1]);
-        CHECK(cm_kmesh_check(&km));
-        cm_ibuf_free(&star);
-        cm_kmesh_free(&km);
-    }
-}
-
 static const char *method_name[] = {"Laplacian", "angle-based", "weighted angle-based", "combined"};
 
 static void test_smoothing_variants(void)
@@ -853,7 +818,6 @@ int main(void)
     test_min_angle_above(40000);
     test_property_operations(60, 400);
     test_map_descent(30);
-    test_optimize_hexagon();
     test_smoothing_variants();
     test_area_equalisation();
     test_refine_keeps_boundary();

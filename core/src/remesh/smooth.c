@@ -230,15 +230,8 @@ static int no_gain(cm_kmesh *km, size_t g, int32_t v)
     return 0;
 }
 
-/* Ascent steps of the search below, and halvings of each step. */
-#define CM_OPTIMIZE_STEPS 16
-#define CM_OPTIMIZE_HALVINGS 5
-/* Angles within this much (radians) of the smallest are active: the
- * step raises them together. A wide set keeps the steps from zigzagging
- * between nearly equal angles; near the optimum, where no step raises
- * all of a wide set, narrower ones are tried. */
-#define CM_ACTIVE_WIDEST 1e-2
-#define CM_ACTIVE_NARROWEST 1e-4
+/* Steps of the pattern search below. */
+#define CM_OPTIMIZE_STEPS 10
 
 int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
 {
@@ -249,132 +242,36 @@ int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
     return cm_smooth_optimize_star(km, g, v, star);
 }
 
-/* The angle of (x, y), y >= 0, in [0, pi], within 2e-8 (Abramowitz and
- * Stegun 4.4.49): the step's model needs no more, and it is evaluated for
- * every angle of every step; acceptance uses the exact scans. */
-static inline double model_angle(double y, double x)
-{
-    static const double c[9] = {1, -.3333314528, .1999355085, -.1420889944, .1065626393,
-                                -.0752896400, .0429096138, -.0161657367, .0028662257};
-    int steep = y > fabs(x);
-    double t = steep ? -x / y : y / x, t2 = t * t, p = c[8];
-    if (!(fabs(t) <= 1)) return 0.5 * CM_PI; /* x = y = 0 */
-    for (int k = 7; k >= 0; k--) p = p * t2 + c[k];
-    p *= t;
-    return steep ? 0.5 * CM_PI + p : x > 0 ? p : CM_PI + p;
-}
-
-/* Triangles whose smallest angle is more than this (radians) above the
- * star's smallest are left out of a step's model: a step long enough to
- * bring them down to the smallest is cut by the line search anyway. */
-#define CM_MODEL_WINDOW 0.3
-
-/* The angles near the smallest of v's triangles with v at q (all three
- * of each triangle whose smallest angle is within the window), and their
- * gradients with respect to q; their count in *n. Returns the smallest. */
-static double star_angles(ring *r, const double q[2], double *ang, double (*grad)[2], long *n)
-{
-    double s[CM_SMOOTH_MAX_DEGREE], slo = 1.0, lo = HUGE_VAL;
-    for (long i = 0; i < r->m; i++) {
-        s[i] = ring_sin2(r, q, i, -1.0);
-        if (s[i] < slo) slo = s[i];
-    }
-    double top = sin(fmin(sin2_to_angle(slo) + CM_MODEL_WINDOW, 0.5 * CM_PI)), cut = top * top;
-    *n = 0;
-    for (long i = 0; i < r->m; i++) {
-        if (s[i] > cut) continue;
-        const double *a = r->p[i], *b = r->p[i + 1];
-        double ax = q[0] - a[0], ay = q[1] - a[1], bx = q[0] - b[0], by = q[1] - b[1];
-        double ex = b[0] - a[0], ey = b[1] - a[1];
-        double la = ax * ax + ay * ay, lb = bx * bx + by * by;
-        /* the angle at a turns from a->b to a->v, the one at b from b->v to b->a */
-        double ta = model_angle(ex * ay - ey * ax, ex * ax + ey * ay);
-        double tb = model_angle(ex * by - ey * bx, -(ex * bx + ey * by));
-        double *t = ang + *n, *g = grad[*n];
-        t[1] = ta, g[2] = -ay / la, g[3] = ax / la;
-        t[2] = tb, g[4] = by / lb, g[5] = -bx / lb;
-        t[0] = CM_PI - ta - tb, g[0] = -g[2] - g[4], g[1] = -g[3] - g[5];
-        for (int k = 0; k < 3; k++) lo = t[k] < lo ? t[k] : lo;
-        *n += 3;
-    }
-    return lo;
-}
-
-/* The unit direction raising the least of the active gradients most:
- * toward the least-norm point x of their convex hull, at rate |x|. In 2D x
- * is a gradient or the origin's projection on a segment between two, and
- * every such point lies in the hull, so the least of them is x, unless
- * the hull holds the origin (no direction raises them all: rate 0). */
-static void ascent_direction(double (*ga)[2], int na, double d[2], double *rate)
-{
-    double bx = 0, by = 0, b2 = HUGE_VAL;
-    for (int j = 0; j < na; j++)
-        for (int k = j; k < na; k++) {
-            double ux = ga[k][0] - ga[j][0], uy = ga[k][1] - ga[j][1], uu = ux * ux + uy * uy;
-            double t = uu > 0 ? -(ga[j][0] * ux + ga[j][1] * uy) / uu : 0;
-            if (!(t > 0 && t < 1)) t = 0;
-            double x = ga[j][0] + t * ux, y = ga[j][1] + t * uy, x2 = x * x + y * y;
-            if (x2 < b2) b2 = x2, bx = x, by = y;
-        }
-    *rate = 0;
-    if (!(b2 > 0 && b2 < HUGE_VAL)) return;
-    double n = sqrt(b2), lo = HUGE_VAL;
-    for (int i = 0; i < na; i++) {
-        double r = (ga[i][0] * bx + ga[i][1] * by) / n;
-        if (r < lo) lo = r;
-    }
-    if (lo > 0.5 * n) *rate = lo, d[0] = bx / n, d[1] = by / n; /* lo is n unless the origin is inside */
-}
-
-/* One ascent step from *q (smallest angle's sin^2 in *s): the step along
- * the ascent direction where, linearised, the first inactive angle would
- * become the smallest, halved until the smallest angle rises and the star
- * stays valid. Returns 1 if it moved. */
-static int ascent_step(ring *r, double q[2], double *s)
-{
-    double ang[3 * CM_SMOOTH_MAX_DEGREE], grad[3 * CM_SMOOTH_MAX_DEGREE][2], ga[3 * CM_SMOOTH_MAX_DEGREE][2];
-    long n;
-    double lo = star_angles(r, q, ang, grad, &n), d[2], rate = 0, near2 = HUGE_VAL, tol;
-    for (tol = CM_ACTIVE_WIDEST; !(rate > 0) && tol >= CM_ACTIVE_NARROWEST; tol *= 0.1) {
-        int na = 0;
-        for (long i = 0; i < n; i++)
-            if (ang[i] <= lo + tol) ga[na][0] = grad[i][0], ga[na][1] = grad[i][1], na++;
-        ascent_direction(ga, na, d, &rate);
-    }
-    tol *= 10;
-    if (!(rate > 0)) return 0;
-    for (long i = 0; i < r->m; i++) {
-        double dx = r->p[i][0] - q[0], dy = r->p[i][1] - q[1];
-        near2 = fmin(near2, dx * dx + dy * dy);
-    }
-    double step = 0.5 * sqrt(near2);
-    for (long i = 0; i < n; i++) {
-        double slope = grad[i][0] * d[0] + grad[i][1] * d[1];
-        if (ang[i] > lo + tol && slope < rate) step = fmin(step, (ang[i] - lo) / (rate - slope));
-    }
-    for (int h = 0; h < CM_OPTIMIZE_HALVINGS; h++, step *= 0.5) {
-        double p[2] = {q[0] + step * d[0], q[1] + step * d[1]};
-        if (p[0] == q[0] && p[1] == q[1]) return 0;
-        double sp = star_sin2_above(r, p, *s);
-        if (sp > *s && star_valid(r, p)) {
-            q[0] = p[0], q[1] = p[1], *s = sp;
-            return 1;
-        }
-    }
-    return 0;
-}
-
-/* Moves v where the smallest angle of its star in g is largest, found by
- * ascent on the smallest angles (Freitag and Ollivier-Gooch). */
 int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star)
 {
+    static const double dir[8][2] = {{1, 0}, {0.7071067811865476, 0.7071067811865476}, {0, 1},
+                                     {-0.7071067811865476, 0.7071067811865476}, {-1, 0},
+                                     {-0.7071067811865476, -0.7071067811865476}, {0, -1},
+                                     {0.7071067811865476, -0.7071067811865476}};
     if (!(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
     if (!(km->vdirty[v] & cm_dirty_search(g))) return no_gain(km, g, v); /* its star in g is as it found none */
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
-    double best[2] = {r.c[0], r.c[1]}, q = star_sin2(&r, best), start = q;
+    double best[2] = {r.c[0], r.c[1]}, q = star_sin2(&r, best), start = q, near2 = HUGE_VAL, step = HUGE_VAL;
     if (out_of_reach(&r, sin2_to_angle(start) + CM_SMOOTH_GAIN)) return no_gain(km, g, v);
-    for (int it = 0; it < CM_OPTIMIZE_STEPS && ascent_step(&r, best, &q); it++) {}
+    for (long i = 0; i < r.m; i++) {
+        double dx = r.p[i][0] - best[0], dy = r.p[i][1] - best[1];
+        near2 = fmin(near2, dx * dx + dy * dy);
+    }
+    for (long i = 0; i < r.m; i++) { /* the distance to the nearest neighbour: hypot only near the least square */
+        double dx = r.p[i][0] - best[0], dy = r.p[i][1] - best[1];
+        if (!(dx * dx + dy * dy > near2 * (1 + 1e-9))) step = fmin(step, hypot(dx, dy));
+    }
+    step *= 0.25;
+    for (int it = 0; it < CM_OPTIMIZE_STEPS && step > 0; it++) {
+        int improved = 0;
+        for (int d = 0; d < 8; d++) {
+            double p[2] = {best[0] + step * dir[d][0], best[1] + step * dir[d][1]};
+            double qp = star_sin2_above(&r, p, q);
+            if (qp > q && star_valid(&r, p)) q = qp, best[0] = p[0], best[1] = p[1], improved = 1;
+        }
+        if (!improved) step *= 0.5;
+    }
     if (!(sin2_to_angle(q) > sin2_to_angle(start) + CM_SMOOTH_GAIN)) return no_gain(km, g, v);
     cm_kmesh_move(km, g, v, best, star);
     return 1;
