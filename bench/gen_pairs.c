@@ -21,9 +21,10 @@
  * simple polygons against discs and stars, held out).
  * The scale set measures the partition's growth: two unrelated random
  * polygons and a random polygon against a disc at n = 1,000 to 30,000
- * (the random simple polygon generator's untangling takes minutes beyond),
- * two unrelated random stars and a star against its twisted copy at
- * n = 1,000 to 100,000; and two glyph pairs at n = 160.
+ * (the random simple polygon generator's untangling takes minutes beyond)
+ * and the same made by space partitioning (spa_*) at n = 1,000 to
+ * 100,000, two unrelated random stars and a star against its twisted copy
+ * at n = 1,000 to 100,000; and two glyph pairs at n = 160.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <errno.h>
@@ -441,8 +442,26 @@ static void random_random_pair(writer *w, const char *name, int n, uint64_t seed
     unrelated_pair(w, name, n, seed, rp_random_simple, "random simple polygon generator failed");
 }
 
-/* The partition's growth with n: random polygons up to 30,000 vertices,
- * stars up to 100,000, and glyph pairs at n = 160. */
+/* Two unrelated random polygons by space partitioning, and one against a
+ * disc: random polygons to 100,000 vertices (2-opt stops near 30,000). */
+static void spa_pair(writer *w, const char *name, int n, uint64_t seed)
+{
+    unrelated_pair(w, name, n, seed, rp_random_spa, "space-partitioning polygon generator failed");
+}
+
+static void spa_disc(writer *w, const char *name, int n, uint64_t seed)
+{
+    polys p;
+    if (polys_alloc(&p, n) == 0 && rp_random_spa(p.xy[0], n, seed) == 0 && disc_from(p.xy[1], n, 0) == 0)
+        emit(w, name, p.xy, 2, n);
+    else
+        report_failure(w, name, "space-partitioning polygon generator failed");
+    polys_free(&p);
+}
+
+/* The partition's growth with n: random polygons by 2-opt up to 30,000
+ * vertices and by space partitioning up to 100,000, stars up to 100,000,
+ * and glyph pairs at n = 160. */
 static void scale_set(writer *w)
 {
     static const int random_n[] = {1000, 3000, 10000, 30000};
@@ -455,6 +474,14 @@ static void scale_set(writer *w)
     for (int i = 0; i < COUNT(random_n); i++) {
         snprintf(name, sizeof name, "random_disc_n%d", random_n[i]);
         random_pair(w, name, random_n[i], 2000 + (uint64_t)random_n[i]);
+    }
+    for (int i = 0; i < COUNT(scale_n); i++) {
+        snprintf(name, sizeof name, "spa_pair_n%d", scale_n[i]);
+        spa_pair(w, name, scale_n[i], 7000 + (uint64_t)scale_n[i]);
+    }
+    for (int i = 0; i < COUNT(scale_n); i++) {
+        snprintf(name, sizeof name, "spa_disc_n%d", scale_n[i]);
+        spa_disc(w, name, scale_n[i], 3000 + (uint64_t)scale_n[i]);
     }
     for (int i = 0; i < COUNT(scale_n); i++) {
         snprintf(name, sizeof name, "star_n%d", scale_n[i]);

@@ -22,6 +22,9 @@
  *                                 the teeth (about n / 10 teeth reads well)
  *   rp_random_simple(xy, n, seed) random grid points joined into a simple
  *                                 polygon by 2-opt untangling
+ *   rp_random_spa(xy, n, seed)    random grid points joined into a simple
+ *                                 polygon by space partitioning (Auer and
+ *                                 Held); expected O(n log n), for large n
  *   rp_twist(xy, n, shift)        rotates the correspondence: vertex i takes
  *                                 the old vertex (i + shift) mod n
  */
@@ -494,6 +497,118 @@ static inline int rp_random_simple(double *xy, int n, uint64_t seed)
             return 0;
     }
     return -1;
+}
+
+/* ---- random polygons by space partitioning ------------------------------ */
+
+/* Points of the 2^24 grid as integers (x / 2^24 is the coordinate). A chain
+ * from a to b through a set S that lies in a convex region K holding a and
+ * b: pick c in S and a line through c meeting segment ab strictly inside;
+ * it cuts K into a's part and b's, and the chains a..c and c..b are made
+ * in those parts, so they meet only at c (Auer and Held, "Heuristics for
+ * the generation of random polygons", 1996). Integer arithmetic keeps
+ * every side test exact. */
+typedef struct rp_ipt {
+    int64_t x, y;
+} rp_ipt;
+
+#define RP_SPA_D 1048576 /* the cut's point on ab: a + (b - a) k / RP_SPA_D */
+
+static inline int rp_isign(__int128 v)
+{
+    return (v > 0) - (v < 0);
+}
+
+static inline int rp_iorient(rp_ipt a, rp_ipt b, rp_ipt c)
+{
+    return rp_isign((__int128)(b.x - a.x) * (c.y - a.y) - (__int128)(b.y - a.y) * (c.x - a.x));
+}
+
+/* Side of q against the line through c and a + (b - a) k / RP_SPA_D. */
+static inline int rp_cut_side(rp_ipt a, rp_ipt b, int64_t k, rp_ipt c, rp_ipt q)
+{
+    __int128 px = (__int128)a.x * (RP_SPA_D - k) + (__int128)b.x * k;
+    __int128 py = (__int128)a.y * (RP_SPA_D - k) + (__int128)b.y * k;
+    __int128 cx = (__int128)c.x * RP_SPA_D, cy = (__int128)c.y * RP_SPA_D;
+    __int128 qx = (__int128)q.x * RP_SPA_D, qy = (__int128)q.y * RP_SPA_D;
+    return rp_isign((px - cx) * (qy - cy) - (py - cy) * (qx - cx));
+}
+
+/* Appends to out (at *len) the chain strictly between a and b through the
+ * points of s[0..m-1]. Returns -1 when it cannot cut (every candidate on
+ * a line it needs to avoid: the caller draws new points). */
+static inline int rp_spa_chain(const rp_ipt *pt, int32_t *s, int m, rp_ipt a, rp_ipt b, int32_t *out,
+                               int *len, rp_rng *rng)
+{
+    while (m > 0) {
+        int split = -1;
+        int64_t k = 0;
+        for (int tries = 0; tries < 16 && split < 0; tries++) {
+            int ci = (int)rp_below(rng, (uint64_t)m);
+            rp_ipt c = pt[s[ci]];
+            if (rp_iorient(a, b, c) == 0) continue;
+            k = 1 + (int64_t)rp_below(rng, RP_SPA_D - 1);
+            int side_a = rp_cut_side(a, b, k, c, a), ok = side_a != 0;
+            for (int i = 0; i < m && ok; i++) ok = i == ci || rp_cut_side(a, b, k, c, pt[s[i]]) != 0;
+            if (!ok) continue;
+            int32_t t = s[ci];
+            s[ci] = s[m - 1], s[m - 1] = t;
+            int lo = 0; /* [0, lo): a's side */
+            for (int i = 0; i < m - 1; i++)
+                if (rp_cut_side(a, b, k, c, pt[s[i]]) == side_a) t = s[i], s[i] = s[lo], s[lo++] = t;
+            split = lo;
+        }
+        if (split < 0) return -1;
+        int32_t c = s[m - 1];
+        /* a's side first (recursion), then c, then b's side (this loop) */
+        if (rp_spa_chain(pt, s, split, a, pt[c], out, len, rng) != 0) return -1;
+        out[(*len)++] = c;
+        s += split, m -= split + 1, a = pt[c];
+    }
+    return 0;
+}
+
+static inline int rp_random_spa(double *xy, int n, uint64_t seed)
+{
+    if (n < 3) return -1;
+    rp_rng rng = {seed};
+    rp_ipt *pt = (rp_ipt *)malloc(sizeof(rp_ipt) * n);
+    int32_t *s = (int32_t *)malloc(sizeof(int32_t) * n), *out = (int32_t *)malloc(sizeof(int32_t) * n);
+    rp_keyed *keys = (rp_keyed *)malloc(sizeof(rp_keyed) * n);
+    int result = -1;
+    for (int attempt = 0; attempt < 100 && pt && s && out && keys && result != 0; attempt++) {
+        for (int i = 0; i < n; i++) {
+            pt[i].x = (int64_t)rp_below(&rng, 1u << 25) - (1 << 24);
+            pt[i].y = (int64_t)rp_below(&rng, 1u << 25) - (1 << 24);
+            keys[i].key = (uint64_t)(pt[i].x + (1 << 24)) << 26 | (uint64_t)(pt[i].y + (1 << 24));
+        }
+        qsort(keys, n, sizeof(rp_keyed), rp_keyed_cmp);
+        int distinct = 1;
+        for (int i = 1; i < n; i++) distinct &= keys[i].key != keys[i - 1].key;
+        if (!distinct) continue;
+        /* the line through points 0 and 1 parts the rest (none on it) */
+        int on_line = 0, left = 0, right = n - 3;
+        for (int i = 2; i < n; i++) {
+            int o = rp_iorient(pt[0], pt[1], pt[i]);
+            on_line |= o == 0;
+            if (o > 0) s[left++] = i;
+            else s[right--] = i;
+        }
+        if (on_line) continue;
+        int len = 0;
+        out[len++] = 0;
+        if (rp_spa_chain(pt, s, left, pt[0], pt[1], out, &len, &rng) != 0) continue;
+        out[len++] = 1;
+        if (rp_spa_chain(pt, s + left, n - 2 - left, pt[1], pt[0], out, &len, &rng) != 0) continue;
+        for (int i = 0; i < n; i++) {
+            xy[2 * i] = (double)pt[out[i]].x / RP_GRID;
+            xy[2 * i + 1] = (double)pt[out[i]].y / RP_GRID;
+        }
+        if (rp_signed_area2(xy, n) < 0) rp_reverse(xy, 1, n - 1); /* keeps vertex 0 first */
+        if (!rp_has_flat_corner(xy, n) && (n > 4096 || rp_is_simple(xy, n))) result = 0;
+    }
+    free(pt), free(s), free(out), free(keys);
+    return result;
 }
 
 #endif

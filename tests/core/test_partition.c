@@ -283,6 +283,26 @@ static void test_large_random_pairs(void)
     free(a), free(b);
 }
 
+/* The space-partitioning generator (the scale bench's random polygons up to
+ * 100,000 vertices): simple, counter-clockwise, no flat corner, checked by
+ * brute force at every n up to 200; two of them at n = 400 partition into
+ * a valid result without the overlay. */
+static void test_space_partition_polygons(void)
+{
+    enum { N = 400 };
+    double a[2 * N], b[2 * N];
+    for (int n = 3; n <= 200; n++)
+        for (uint64_t seed = 1; seed <= 3; seed++) {
+            int made = rp_random_spa(a, n, seed) == 0;
+            CHECK_MSG(made && rp_is_simple(a, n) && rp_signed_area2(a, n) > 0 && !rp_has_flat_corner(a, n),
+                      "n = %d, seed %lu", n, (unsigned long)seed);
+        }
+    CHECK(rp_random_spa(a, N, 11) == 0 && rp_random_spa(b, N, 12) == 0);
+    const double *xy[2] = {a, b};
+    size_t fallbacks = 1;
+    CHECK(run(xy, 2, N, &fallbacks) >= 0 && fallbacks == 0);
+}
+
 /* ---- the property test ----------------------------------------------------- */
 
 /* A square with n/4 points per side (collinear runs), vertex 0 a corner. */
@@ -374,6 +394,7 @@ int main(void)
     test_link_splits();
     test_above_table_limit();
     test_large_random_pairs();
+    test_space_partition_polygons();
     test_overlay_method();
     test_property();
     return check_summary("test_partition");
