@@ -374,15 +374,21 @@ static void comb_pair(writer *w, const char *name, int n, int teeth)
     polys_free(&p);
 }
 
-static void random_pair(writer *w, const char *name, int n, uint64_t seed)
+/* A generated polygon against a disc starting at angle 0. */
+static void against_disc(writer *w, const char *name, int n, uint64_t seed,
+                         int (*generate)(double *, int, uint64_t), const char *failure)
 {
     polys p;
-    if (polys_alloc(&p, n) == 0 && rp_random_simple(p.xy[0], n, seed) == 0 &&
-        disc_from(p.xy[1], n, 0) == 0)
+    if (polys_alloc(&p, n) == 0 && generate(p.xy[0], n, seed) == 0 && disc_from(p.xy[1], n, 0) == 0)
         emit(w, name, p.xy, 2, n);
     else
-        report_failure(w, name, "random simple polygon generator failed");
+        report_failure(w, name, failure);
     polys_free(&p);
+}
+
+static void random_pair(writer *w, const char *name, int n, uint64_t seed)
+{
+    against_disc(w, name, n, seed, rp_random_simple, "random simple polygon generator failed");
 }
 
 static void demo_set(writer *w)
@@ -451,12 +457,12 @@ static void spa_pair(writer *w, const char *name, int n, uint64_t seed)
 
 static void spa_disc(writer *w, const char *name, int n, uint64_t seed)
 {
-    polys p;
-    if (polys_alloc(&p, n) == 0 && rp_random_spa(p.xy[0], n, seed) == 0 && disc_from(p.xy[1], n, 0) == 0)
-        emit(w, name, p.xy, 2, n);
-    else
-        report_failure(w, name, "space-partitioning polygon generator failed");
-    polys_free(&p);
+    against_disc(w, name, n, seed, rp_random_spa, "space-partitioning polygon generator failed");
+}
+
+static void twist_third(writer *w, const char *name, int n, uint64_t seed)
+{
+    twist_pair(w, name, n, n / 3, seed);
 }
 
 /* The partition's growth with n: random polygons by 2-opt up to 30,000
@@ -464,33 +470,24 @@ static void spa_disc(writer *w, const char *name, int n, uint64_t seed)
  * and glyph pairs at n = 160. */
 static void scale_set(writer *w)
 {
-    static const int random_n[] = {1000, 3000, 10000, 30000};
-    static const int scale_n[] = {1000, 3000, 10000, 30000, 100000};
+    static const int random_n[] = {1000, 3000, 10000, 30000, 0};
+    static const int scale_n[] = {1000, 3000, 10000, 30000, 100000, 0};
+    static const struct {
+        const char *prefix;
+        const int *sizes;
+        void (*make)(writer *, const char *, int, uint64_t);
+        uint64_t seed; /* plus n */
+    } families[] = {
+        {"random_pair", random_n, random_random_pair, 5000}, {"random_disc", random_n, random_pair, 2000},
+        {"spa_pair", scale_n, spa_pair, 7000},               {"spa_disc", scale_n, spa_disc, 3000},
+        {"star", scale_n, star_pair, 0},                     {"twisted_star", scale_n, twist_third, 1000},
+    };
     char name[64];
-    for (int i = 0; i < COUNT(random_n); i++) {
-        snprintf(name, sizeof name, "random_pair_n%d", random_n[i]);
-        random_random_pair(w, name, random_n[i], 5000 + (uint64_t)random_n[i]);
-    }
-    for (int i = 0; i < COUNT(random_n); i++) {
-        snprintf(name, sizeof name, "random_disc_n%d", random_n[i]);
-        random_pair(w, name, random_n[i], 2000 + (uint64_t)random_n[i]);
-    }
-    for (int i = 0; i < COUNT(scale_n); i++) {
-        snprintf(name, sizeof name, "spa_pair_n%d", scale_n[i]);
-        spa_pair(w, name, scale_n[i], 7000 + (uint64_t)scale_n[i]);
-    }
-    for (int i = 0; i < COUNT(scale_n); i++) {
-        snprintf(name, sizeof name, "spa_disc_n%d", scale_n[i]);
-        spa_disc(w, name, scale_n[i], 3000 + (uint64_t)scale_n[i]);
-    }
-    for (int i = 0; i < COUNT(scale_n); i++) {
-        snprintf(name, sizeof name, "star_n%d", scale_n[i]);
-        star_pair(w, name, scale_n[i], (uint64_t)scale_n[i]);
-    }
-    for (int i = 0; i < COUNT(scale_n); i++) {
-        snprintf(name, sizeof name, "twisted_star_n%d", scale_n[i]);
-        twist_pair(w, name, scale_n[i], scale_n[i] / 3, 1000 + (uint64_t)scale_n[i]);
-    }
+    for (int f = 0; f < COUNT(families); f++)
+        for (const int *n = families[f].sizes; *n; n++) {
+            snprintf(name, sizeof name, "%s_n%d", families[f].prefix, *n);
+            families[f].make(w, name, *n, families[f].seed + (uint64_t)*n);
+        }
     glyph_pair(w, "US", 160);
     glyph_pair(w, "CG", 160);
 }

@@ -232,4 +232,16 @@ static inline int rc_valid(const cm_result *r, const double *const *polygons, si
     return rc_check(r, polygons, k, n, NULL, 0) && rc_check_halfedges(r, n, NULL, 0);
 }
 
+/* The smallest angle (degrees) over the k meshes of r; 180 when none has
+ * a quality (a failed result). */
+static inline double rc_least_angle(const cm_result *r, size_t k)
+{
+    double least = 180;
+    for (size_t g = 0; g < k; g++) {
+        cm_quality q;
+        if (cm_result_quality(r, g, &q) == CM_OK && q.min_angle_deg < least) least = q.min_angle_deg;
+    }
+    return least;
+}
+
 #endif

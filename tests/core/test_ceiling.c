@@ -8,6 +8,7 @@
 #include "check.h"
 #include "correspond/bound.h"
 #include "random_polygons.h"
+#include "result_check.h"
 
 #define PI 3.14159265358979323846
 
@@ -131,12 +132,7 @@ static double fan_formula(const double *const *geoms, int k, int n)
 
 static double min_angle(const cm_result *r)
 {
-    double lo = 180;
-    for (size_t g = 0; g < cm_result_num_geometries(r); g++) {
-        cm_quality q;
-        if (cm_result_quality(r, g, &q) == CM_OK) lo = fmin(lo, q.min_angle_deg);
-    }
-    return lo;
+    return rc_least_angle(r, cm_result_num_geometries(r));
 }
 
 /* A polygon against an affine image of itself: the corner fan is its

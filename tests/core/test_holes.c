@@ -559,12 +559,7 @@ static void test_capped_hole_edges_split(void)
             continue;
         }
         size_t n = cm_result_stats(r)->n;
-        double least = 180;
-        for (size_t g = 0; g < 2; g++) {
-            cm_quality q;
-            CHECK(cm_result_quality(r, g, &q) == CM_OK);
-            least = fmin(least, q.min_angle_deg);
-        }
+        double least = rc_least_angle(r, 2);
         if (m == 0) {
             CHECK_MSG(n == 30 && least <= bound, "index: %zu boundary vertices, %g degrees", n, least);
             cm_result_free(r);
