@@ -14,6 +14,7 @@
 
 #include "api/capsplit.h"
 #include "correspond/split.h"
+#include "base/mesh.h"
 #include "geom/looptri.h"
 #include "geom/polytri.h"
 #include "remesh/criteria.h"
@@ -30,7 +31,7 @@ void cm_cap_tris_free(int32_t **tris, size_t k)
 /* The loops' boundaries one after another, each with the material to its
  * left (loop_start: L + 1 offsets): the outer loop as its map runs, a hole's
  * counter-clockwise map backwards from its vertex 0, so that hole vertex j
- * is map vertex (m - j) % m. */
+ * is map vertex cm_loop_reversed(m, j). */
 typedef struct merged {
     size_t k, n, num_loops;
     size_t *loop_start;
@@ -56,7 +57,7 @@ static int merged_make(merged *b, const cm_cap_loop *loops, size_t num_loops)
             const cm_boundary_map *map = loops[l].map;
             size_t m = map->n;
             for (size_t j = 0; j < m; j++) {
-                const double *p = map->xy[g] + 2 * (l ? (m - j) % m : j);
+                const double *p = map->xy[g] + 2 * (l ? cm_loop_reversed(m, j) : j);
                 double *q = b->xy[g] + 2 * (b->loop_start[l] + j);
                 q[0] = p[0], q[1] = p[1];
             }
@@ -116,13 +117,14 @@ static int32_t **tris_new(size_t k, size_t nt)
 }
 
 /* Splits the edges pieces[] says (material-left numbering of b) in each
- * loop's map: hole edge j -> j + 1 is map segment (m - j - 1) % m. */
+ * loop's map: hole edge j -> j + 1 is the map's segment from its vertex
+ * cm_loop_reversed(m, j + 1). */
 static cm_status split_loops(cm_cap_loop *loops, const merged *b, const size_t *pieces, size_t *scratch, cm_error *err)
 {
     cm_status s = CM_OK;
     for (size_t l = 0; s == CM_OK && l < b->num_loops; l++) {
         size_t m = loops[l].map->n, at = b->loop_start[l], more = 0;
-        for (size_t j = 0; j < m; j++) more += (scratch[l ? (m - j - 1) % m : j] = pieces[at + j]) - 1;
+        for (size_t j = 0; j < m; j++) more += (scratch[l ? cm_loop_reversed(m, (j + 1) % m) : j] = pieces[at + j]) - 1;
         if (more)
             s = cm_boundary_map_split_edges(loops[l].map, loops[l].polygons, loops[l].counts, loops[l].orientation,
                                             scratch, err);

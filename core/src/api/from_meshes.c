@@ -119,7 +119,7 @@ static cm_status build_checked(cm_result *r, const double *const *xy, size_t k, 
         size_t first = start[l], m = loop_sizes[l];
         start[l + 1] = first + m;
         int backward = num_loops == 1 ? clockwise : loop_runs_backward(&r->mesh, first);
-        for (size_t j = 0; j < m; j++) boundary[first + j] = (int32_t)(first + (backward && j > 0 ? m - j : j));
+        for (size_t j = 0; j < m; j++) boundary[first + j] = (int32_t)(first + (backward ? cm_loop_reversed(m, j) : j));
     }
     cm_fail_at(&r->error, -1, -1, -1);
     s = cm_halfedge_build_and_check(r, boundary, num_loops > 1 ? start : NULL, num_loops);

@@ -647,11 +647,11 @@ cm_status cm_triangulate(const double *xy, size_t k, size_t n, const cm_options 
 /* ---- polygons with holes ----------------------------------------------- */
 
 /* Internal vertex j of loop l (material to its left) is input vertex
- * start[l] + j, or start[l] + (m - j) % m for a reversed loop. */
+ * start[l] + j, or start[l] + cm_loop_reversed(m, j) for a reversed loop. */
 static int32_t loop_input_index(const size_t *start, const int *reversed, size_t l, size_t j)
 {
     size_t m = start[l + 1] - start[l];
-    return (int32_t)(start[l] + (reversed[l] && j ? m - j : j));
+    return (int32_t)(start[l] + (reversed[l] ? cm_loop_reversed(m, j) : j));
 }
 
 /* Triangulates every piece of the cut and glues them into r->mesh
@@ -949,7 +949,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
              * (the usual way) keeps its input order. */
             size_t m = maps[l].n;
             for (size_t i = 0; i < m; i++) {
-                size_t from = l && i ? m - i : i;
+                size_t from = l ? cm_loop_reversed(m, i) : i;
                 b->xy[g][2 * (at + i)] = maps[l].xy[g][2 * from];
                 b->xy[g][2 * (at + i) + 1] = maps[l].xy[g][2 * from + 1];
                 b->t[g][at + i] = maps[l].t[g][from];

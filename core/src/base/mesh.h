@@ -24,6 +24,11 @@ typedef struct cm_mesh {
 size_t cm_loops_next(const size_t *loop_start, size_t n, size_t i);
 size_t cm_loops_prev(const size_t *loop_start, size_t n, size_t i);
 
+/* Position j of an m-vertex loop read the other way round from the same
+ * start (0, m - 1, m - 2, ..., 1): a loop listed clockwise against the
+ * same loop listed counter-clockwise. */
+static inline size_t cm_loop_reversed(size_t m, size_t j) { return j ? m - j : 0; }
+
 /* Frees the arrays; the mesh is empty (k kept). */
 void cm_mesh_clear(cm_mesh *mesh);
 

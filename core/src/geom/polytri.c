@@ -25,14 +25,21 @@ typedef struct {
     cm_pointgrid grid;
 } ring;
 
+/* The grid cells under the bounding box of triangle abc (cm_pointgrid_range). */
+static long ear_range(const ring *r, long a, long b, long c, long cells[4])
+{
+    const double *xy = r->xy, *pa = P(r->idx[a]), *pb = P(r->idx[b]), *pc = P(r->idx[c]);
+    return cm_pointgrid_range(&r->grid, fmin(pa[0], fmin(pb[0], pc[0])), fmin(pa[1], fmin(pb[1], pc[1])),
+                              fmax(pa[0], fmax(pb[0], pc[0])), fmax(pa[1], fmax(pb[1], pc[1])), cells);
+}
+
 /* Is any vertex of the ring (other than a, b, c) inside or on the closed
  * triangle abc? */
 static int ear_blocked(const ring *r, long a, long b, long c)
 {
     const double *xy = r->xy, *pa = P(r->idx[a]), *pb = P(r->idx[b]), *pc = P(r->idx[c]);
     long cells[4];
-    long ncells = cm_pointgrid_range(&r->grid, fmin(pa[0], fmin(pb[0], pc[0])), fmin(pa[1], fmin(pb[1], pc[1])),
-                                     fmax(pa[0], fmax(pb[0], pc[0])), fmax(pa[1], fmax(pb[1], pc[1])), cells);
+    long ncells = ear_range(r, a, b, c, cells);
     /* a box of many more cells than reflex vertices: walk the ring instead
      * when it is the shorter walk (not for a near-convex ring, whose long
      * ears would each walk it whole) */
@@ -78,10 +85,8 @@ static void update_vertex(ring *r, long v)
 /* Grid cells under the bounding box of the ear at v. */
 static long ear_cells(const ring *r, long v)
 {
-    const double *xy = r->xy, *pa = P(r->idx[r->prev[v]]), *pb = P(r->idx[v]), *pc = P(r->idx[r->next[v]]);
     long cells[4];
-    return cm_pointgrid_range(&r->grid, fmin(pa[0], fmin(pb[0], pc[0])), fmin(pa[1], fmin(pb[1], pc[1])),
-                              fmax(pa[0], fmax(pb[0], pc[0])), fmax(pa[1], fmax(pb[1], pc[1])), cells);
+    return ear_range(r, r->prev[v], v, r->next[v], cells);
 }
 
 /* small_first: clip the ears under at most `limit` grid cells first,
