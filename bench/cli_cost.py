@@ -11,6 +11,13 @@ shared libraries each build loads at start (ldd).
     python3 bench/cli_cost.py OLD_COMPATMESH NEW_COMPATMESH PAIRS_DIR [ROUNDS]
 
 PAIRS_DIR: made by `cm_gen_pairs --set bench`.
+
+    python3 bench/cli_cost.py --preview OLD NEW A B ROUNDS [OPTION ...]
+
+What the preview pictures cost: `triangulate A B [OPTION ...]` with the
+pictures and with --no-preview (the control), the four runs interleaved
+ROUNDS times; the median CPU of each and the pictures' share, the
+difference of the medians.
 """
 import os
 import shutil
@@ -54,7 +61,32 @@ def libraries(binary):
     return len(subprocess.run(["ldd", binary], capture_output=True, text=True, check=True).stdout.splitlines())
 
 
+def preview(old, new, a, b, rounds, options):
+    with tempfile.TemporaryDirectory() as work:
+        arguments = ["triangulate", a, b, "-o", os.path.join(work, "out"), *options]
+        runs = {"pictures": arguments, "--no-preview": arguments + ["--no-preview"]}
+        cpu = {(b, r): [] for b in (old, new) for r in runs}
+        for _ in range(rounds):
+            for name, args in runs.items():
+                for binary in (old, new):
+                    cpu[binary, name].append(run(binary, args, work)[0])
+    median = {key: statistics.median(values) for key, values in cpu.items()}
+    print("| run | old CPU (ms) | new CPU (ms) | new / old |")
+    print("|---|---:|---:|---:|")
+    for name in runs:
+        print(f"| {name} | {1e3 * median[old, name]:.1f} | {1e3 * median[new, name]:.1f} "
+              f"| {median[new, name] / median[old, name]:.2f} |")
+    share = {b: median[b, "pictures"] - median[b, "--no-preview"] for b in (old, new)}
+    print(f"| the pictures (difference) | {1e3 * share[old]:.1f} | {1e3 * share[new]:.1f} "
+          f"| {share[new] / share[old]:.2f} |")
+    print(f"\n{rounds} interleaved runs each, median CPU (user + system).")
+
+
 def main():
+    if len(sys.argv) >= 7 and sys.argv[1] == "--preview":
+        old, new, a, b = sys.argv[2:6]
+        preview(old, new, a, b, int(sys.argv[6]), sys.argv[7:])
+        return
     if len(sys.argv) not in (4, 5):
         sys.exit(__doc__)
     old, new, pairs = sys.argv[1:4]

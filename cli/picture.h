@@ -52,7 +52,7 @@ typedef struct picture_text {
     char *text;
 } picture_text;
 
-enum { PICTURE_FONT_PIXELS = 12 }; /* sans-serif, black */
+enum { PICTURE_FONT_PIXELS = 12 }; /* the caption font (picture_font.h), black */
 
 typedef struct picture {
     double width, height; /* white background */

@@ -2,7 +2,6 @@
 
 #include <cairo-svg.h>
 #include <cairo.h>
-#include <fontconfig/fontconfig.h>
 #include <math.h>
 #include <png.h>
 #include <setjmp.h>
@@ -11,6 +10,7 @@
 #include <stdlib.h>
 
 #include "outdir.h"
+#include "picture_font.h"
 
 /* Larger pictures (a morph of hundreds of frames) are scaled down to this
  * many pixels: memory grows with them (4 bytes a pixel), and cairo's images
@@ -88,14 +88,14 @@ static void draw_layer(cairo_t *cr, const picture *pic, const picture_layer *lay
 
 /* The one drawing path of both formats: white background, the layers in
  * order, then the captions. */
-static void draw_picture(cairo_t *cr, const picture *pic, double scale, size_t path_segments)
+static void draw_picture(cairo_t *cr, const picture *pic, const picture_font *font, double scale,
+                         size_t path_segments)
 {
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_paint(cr);
     cairo_scale(cr, scale, scale);
     for (size_t l = 0; l < pic->layer_count; l++) draw_layer(cr, pic, &pic->layers[l], path_segments);
-    cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr, PICTURE_FONT_PIXELS);
+    picture_font_use(font, cr);
     cairo_set_source_rgb(cr, 0, 0, 0);
     for (size_t t = 0; t < pic->text_count; t++) {
         cairo_move_to(cr, pic->texts[t].x, pic->texts[t].y);
@@ -121,7 +121,8 @@ static cairo_status_t drawn(cairo_t *cr, cairo_surface_t *surface)
 }
 
 /* The SVG surface writes to the file as it draws and when finished. */
-static int write_svg(const char *path, const picture *pic, cli_error *error)
+static int write_svg(const char *path, const picture *pic, const picture_font *font,
+                     cli_error *error)
 {
     FILE *file = output_open(path, error);
     if (!file) return CLI_EXIT_INTERNAL;
@@ -129,7 +130,7 @@ static int write_svg(const char *path, const picture *pic, cli_error *error)
         cairo_svg_surface_create_for_stream(write_to_file, file, pic->width, pic->height);
     cairo_svg_surface_set_document_unit(surface, CAIRO_SVG_UNIT_PX);
     cairo_t *cr = cairo_create(surface);
-    draw_picture(cr, pic, 1.0, 0);
+    draw_picture(cr, pic, font, 1.0, 0);
     cairo_status_t status = drawn(cr, surface);
     cairo_surface_finish(surface);
     if (status == CAIRO_STATUS_SUCCESS) status = cairo_surface_status(surface);
@@ -201,7 +202,8 @@ static int encode_png(FILE *file, cairo_surface_t *surface, png_failure *failure
     return result;
 }
 
-static int write_png(const char *path, const picture *pic, cli_error *error)
+static int write_png(const char *path, const picture *pic, const picture_font *font,
+                     cli_error *error)
 {
     double pixels = pic->width * pic->height;
     double scale = fmin(pixels > PNG_MAX_PIXELS ? sqrt(PNG_MAX_PIXELS / pixels) : 1.0,
@@ -210,7 +212,7 @@ static int write_png(const char *path, const picture *pic, cli_error *error)
     cairo_surface_t *surface = cairo_image_surface_create(
         CAIRO_FORMAT_RGB24, (int)ceil(scale * pic->width), (int)ceil(scale * pic->height));
     cairo_t *cr = cairo_create(surface);
-    draw_picture(cr, pic, scale, PNG_PATH_SEGMENTS);
+    draw_picture(cr, pic, font, scale, PNG_PATH_SEGMENTS);
     cairo_status_t status = drawn(cr, surface);
     int code = CLI_EXIT_INTERNAL;
     if (status != CAIRO_STATUS_SUCCESS) {
@@ -236,14 +238,10 @@ static int write_png(const char *path, const picture *pic, cli_error *error)
 int write_pictures(const char *svg_path, const char *png_path, const picture *pic,
                    cli_error *error)
 {
-    int code = write_svg(svg_path, pic, error);
-    /* cairo's font caches are dropped between the two surfaces, or the PNG
-     * would reuse the SVG's unhinted glyphs; fontconfig's configuration,
-     * the costly part to load, is kept for the PNG and released at the end
-     * (valgrind would report both caches as leaks). */
-    cairo_debug_reset_static_data();
-    if (code == CLI_EXIT_OK) code = write_png(png_path, pic, error);
-    cairo_debug_reset_static_data();
-    FcFini();
+    picture_font font = picture_font_open();
+    int code = write_svg(svg_path, pic, &font, error);
+    picture_font_next_surface(&font);
+    if (code == CLI_EXIT_OK) code = write_png(png_path, pic, &font, error);
+    picture_font_close(&font);
     return code;
 }

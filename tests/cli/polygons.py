@@ -180,7 +180,7 @@ def check_pictures(png_path, svg_path):
     worst triangle drawn. The SVG: well-formed XML of the PNG's size in
     pixels that librsvg (rsvg-convert, as image viewers and browsers on
     Linux use) renders to the same picture, up to anti-aliasing. Returns
-    the SVG's root element."""
+    the SVG's root element. Both have the captions (check_captions)."""
     import struct
     import subprocess
     import tempfile
@@ -215,7 +215,49 @@ def check_pictures(png_path, svg_path):
             drawn = np.asarray(image.convert("RGB"), dtype=int)
     differ = np.abs(drawn - png).max(axis=2) > 64
     assert differ.mean() < 0.02, f"{differ.mean():.1%} of the SVG's pixels differ from the PNG's"
+    check_captions(png, svg)
     return svg
+
+
+# The captions' size in pixels (cli/picture.h), and how far their glyphs
+# reach above and below the baseline at that size, with room to spare.
+CAPTION_PIXELS = 12
+CAPTION_ASCENT, CAPTION_DESCENT = 12, 4
+
+
+def caption_lines(svg):
+    """The caption lines as the SVG draws them: cairo writes each line's
+    glyphs as one group of <use> elements at the glyphs' origins. Returns
+    [(baseline y, [origin x, ...]), ...] in drawing order."""
+    lines = []
+    for group in svg.iter(f"{SVG}g"):
+        uses = [u for u in group if u.tag == f"{SVG}use"]
+        if uses:
+            assert len({u.get("y") for u in uses}) == 1, "one caption line per group"
+            lines.append((float(uses[0].get("y")), [float(u.get("x")) for u in uses]))
+    return lines
+
+
+def check_captions(png, svg):
+    """Every panel has its two caption lines (name, then numbers) in the
+    SVG, and the PNG shows each where the SVG places it: grey ink in the
+    line's band, from its first glyph to its last, and no colour there."""
+    import numpy as np
+
+    lines = caption_lines(svg)
+    assert len(lines) >= 2 and len(lines) % 2 == 0, f"{len(lines)} caption lines"
+    for (y, xs), (next_y, next_xs) in zip(lines[::2], lines[1::2]):
+        assert next_y == y + 16 and next_xs[0] == xs[0], "the numbers' line under the name's"
+    for y, xs in lines:
+        assert xs == sorted(xs)
+        band = png[round(y) - CAPTION_ASCENT:round(y) + CAPTION_DESCENT,
+                   max(0, round(xs[0]) - CAPTION_PIXELS):round(xs[-1]) + 2 * CAPTION_PIXELS]
+        ink = band.max(axis=2) < 160
+        assert ink.any(), f"no caption in the PNG at y={y}"
+        columns = np.flatnonzero(ink.any(axis=0)) + max(0, round(xs[0]) - CAPTION_PIXELS)
+        assert columns[0] <= xs[0] + CAPTION_PIXELS and columns[-1] >= xs[-1] - CAPTION_PIXELS, \
+            f"the PNG's caption at y={y} spans {columns[0]}..{columns[-1]}, the SVG's {xs[0]}..{xs[-1]}"
+        assert np.all(band[ink].max(axis=1) - band[ink].min(axis=1) <= 8), "captions are black"
 
 
 def drawn_paths(svg):

@@ -10,8 +10,8 @@ import meshio
 import numpy as np
 import pytest
 
-from polygons import (BOUNDARY, EDGES, KITE, POOR, SQUARE, STEINER, WORST, check_pictures, drawn_paths,
-                      leftovers, paths_of, orientation, read_vertex_text, signed_area,
+from polygons import (BOUNDARY, EDGES, KITE, POOR, SQUARE, STEINER, WORST, caption_lines, check_pictures,
+                      drawn_paths, leftovers, paths_of, orientation, read_vertex_text, signed_area,
                       snapshot, star, write_xy)
 
 def strict_json(path):
@@ -146,6 +146,12 @@ def check_svg(svg, inputs, report, angles_per_mesh):
     assert sum(d.count("M") for d in paths_of(svg, stroke=STEINER)) == k * report["steiner"]
     known = {WORST, EDGES, BOUNDARY, POOR, STEINER}
     assert all(f in known or s in known for f, s, _, _ in drawn_paths(svg)), "nothing else drawn"
+    # The captions, a glyph per character: the input's file name, then
+    # "n=.., Steiner .., min angle ..°".
+    captions = [(os.path.basename(name),
+                 f"n={report['n']}, Steiner {report['steiner']}, min angle {angles.min():.1f}\u00b0")
+                for name, angles in zip(inputs, angles_per_mesh)]
+    assert [len(xs) for _, xs in caption_lines(svg)] == [len(t) for pair in captions for t in pair]
 
 
 def test_pair_of_stars_default_off(cm, tmp_path):
