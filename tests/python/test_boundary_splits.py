@@ -77,6 +77,18 @@ def test_auto_splits_boundary_edges_where_the_boundary_binds():
     assert min(q["min_angle_deg"] for q in r.stats["quality"]) >= 12.0
 
 
+def test_morph_ends_at_the_inputs_with_the_added_points():
+    """The morph's end sections are the two meshes, added boundary points
+    included, and no section has an inverted triangle."""
+    inputs = (GLYPH_3, GLYPH_C)
+    r = compatmesh.triangulate(inputs, correspondence="auto")
+    m = compatmesh.morph(inputs, frames=5, correspondence="auto")
+    n = r.stats["n"]
+    assert np.array_equal(m["sections"][0][:n], r.vertices[0][:n])
+    assert np.array_equal(m["sections"][-1][:n], r.vertices[1][:n])
+    assert not m["inverted"].any()
+
+
 @pytest.mark.parametrize("mode", ["auto", "arclength"])
 def test_clockwise_inputs_keep_the_contract(mode):
     """A clockwise input's pieces run down its input edges: the points the
