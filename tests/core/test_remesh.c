@@ -132,7 +132,7 @@ static int random_operation(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *w
     int32_t v = (int32_t)rp_below(rng, (uint64_t)km->nv);
     size_t g = (size_t)rp_below(rng, km->k);
     if (km->tri[c] < 0) return 0;
-    switch (rp_below(rng, 13)) {
+    switch (rp_below(rng, 14)) {
     case 0: cm_flip_try(km, c); return 0;
     case 1: cm_flip_if_valid(km, c); return 0;
     case 2: return cm_smooth_vertex(km, g, v, (cm_smoothing)rp_below(rng, 4), (int)rp_below(rng, 2), star) < 0 ? -1 : 0;
@@ -145,6 +145,7 @@ static int random_operation(cm_kmesh *km, rp_rng *rng, cm_ibuf *star, cm_work *w
     case 9: return km->vc[v] >= 0 && cm_mapopt_vertex(km, map_weights(rng), v, 2, star) < 0 ? -1 : 0;
     case 10: return cm_flip_queue_all(km, work) || cm_mid_flip_queue(km, work) < 0 ? -1 : 0;
     case 11: return cm_mid_insert(km, c / 3) == -1 ? -1 : 0;
+    case 12: return km->opp[c] < 0 && cm_refine_split(km, c) == CM_NO_MEMORY ? -1 : 0; /* a boundary edge */
     default: return cm_kmesh_star(km, km->vc[v] >= 0 ? v : 0, star) == -1 ? -1 : 0;
     }
 }
@@ -213,16 +214,69 @@ static int random_kmesh(int seed, double **a, double **b, cm_mesh *m, cm_kmesh *
     return 0;
 }
 
+/* Boundary splits on a kmesh whose geometries are the input polygons
+ * themselves (ctx: the k polygons, counter-clockwise, km->n vertices;
+ * labels: vertex i is (i, 0)): the point at the middle parameter of the
+ * input edge, nudged by ulps, as the pipeline's labels give it. */
+typedef struct split_inputs {
+    const double *const *in;
+    size_t n;
+} split_inputs;
+
+static int test_between(void *ctx, size_t g, int32_t ea, double ta, int32_t eb, double tb, int step, int32_t *e,
+                        double *t, double xy[2])
+{
+    const split_inputs *s = ctx;
+    double t0 = ta, t1 = eb == ea ? tb : 1.0, mid = 0.5 * (t0 + t1);
+    for (int i = 0; i < (step + 1) / 2; i++) mid = nextafter(mid, step % 2 ? t0 : t1);
+    if (!(t0 < mid && mid < t1)) return 0;
+    const double *p = s->in[g] + 2 * ea, *q = s->in[g] + 2 * (((size_t)ea + 1) % s->n);
+    *e = ea, *t = mid;
+    xy[0] = p[0] + mid * (q[0] - p[0]), xy[1] = p[1] + mid * (q[1] - p[1]);
+    return 1;
+}
+
+static int allow_splits(cm_kmesh *km, const split_inputs *s)
+{
+    int32_t *edge[2] = {malloc(s->n * sizeof(int32_t)), malloc(s->n * sizeof(int32_t))};
+    double *t[2] = {calloc(s->n, sizeof(double)), calloc(s->n, sizeof(double))};
+    int ok = edge[0] && edge[1] && t[0] && t[1];
+    for (size_t i = 0; ok && i < s->n; i++) edge[0][i] = edge[1][i] = (int32_t)i;
+    ok = ok && cm_kmesh_allow_boundary_splits(km, test_between, (void *)s, (const int32_t *const *)edge,
+                                              (const double *const *)t) == 0;
+    free(edge[0]), free(edge[1]), free(t[0]), free(t[1]);
+    return ok;
+}
+
+/* Every boundary vertex added by a split: live, at the point its labels
+ * give, bit for bit, in every geometry. Returns how many are not. */
+static int misplaced_splits(const cm_kmesh *km, const split_inputs *s)
+{
+    int bad = 0;
+    for (int32_t v = km->n; v < km->nv; v++) {
+        if (km->vc[v] < 0 || !cm_kmesh_is_boundary(km, v)) continue;
+        for (size_t g = 0; g < km->k; g++) {
+            int32_t e = km->bedge[km->k * (size_t)v + g];
+            double t = km->bt[km->k * (size_t)v + g];
+            const double *p = s->in[g] + 2 * e, *q = s->in[g] + 2 * (((size_t)e + 1) % s->n), *x = cm_kmesh_pos(km, g, v);
+            bad += !(0 < t && t < 1) || x[0] != p[0] + t * (q[0] - p[0]) || x[1] != p[1] + t * (q[1] - p[1]);
+        }
+    }
+    return bad;
+}
+
 static void test_property_operations(int pairs, int operations)
 {
-    int invalid = 0, stale = 0, moved = 0, restore = 0, built = 0, unflagged = 0;
+    int invalid = 0, stale = 0, moved = 0, restore = 0, built = 0, unflagged = 0, misplaced = 0, split = 0;
     for (int seed = 0; seed < pairs; seed++) {
         double *a, *b;
         cm_mesh m;
         cm_kmesh km;
         if (random_kmesh(seed, &a, &b, &m, &km)) continue;
         const double *in[2] = {a, b};
+        split_inputs inputs = {in, (size_t)km.n};
         built++;
+        if (seed % 2) CHECK(allow_splits(&km, &inputs)); /* odd seeds: boundary splits too */
         rp_rng rng = {(uint64_t)seed * 7919};
         cm_ibuf star = {0};
         cm_work work = {0};
@@ -235,7 +289,9 @@ static void test_property_operations(int pairs, int operations)
             if (i % 64 == 0) restore += !rollback_restores(&km, &rng, &star, &work);
             if (i % 32 == 0 && settle_smoothing(&km, &star)) break;
             if (i % 32 == 31) unflagged += stale_smoothing_bits(&km, &star);
+            if (seed % 2 && i % 16 == 0) misplaced += misplaced_splits(&km, &inputs);
         }
+        split += km.nb > km.n;
         cm_ibuf_free(&star), cm_work_free(&work);
         cm_kmesh_free(&km), cm_mesh_clear(&m);
         free(a), free(b);
@@ -246,7 +302,9 @@ static void test_property_operations(int pairs, int operations)
     CHECK_MSG(stale == 0, "%d stale key checks", stale);
     CHECK_MSG(restore == 0, "%d rollbacks did not restore", restore);
     CHECK_MSG(unflagged == 0, "%d vertices moved by the smoothing though their bit said nothing changed", unflagged);
-    printf("property: %d random meshes x %d operations\n", pairs, operations);
+    CHECK_MSG(misplaced == 0, "%d boundary split points off their labels", misplaced);
+    CHECK_MSG(split >= pairs / 4, "boundary splits in %d of %d meshes that allow them", split, pairs / 2);
+    printf("property: %d random meshes x %d operations (%d with boundary splits)\n", pairs, operations, split);
 }
 
 /* The global map descent and the middle-metric refinement (not inside a

@@ -131,7 +131,9 @@ typedef enum cm_correspondence {
      * edges, so the counts may differ; clockwise polygons are reversed to
      * agree. The result's boundary is that common refinement, counter-
      * clockwise from the first pin (cm_result_boundary_source says where
-     * each boundary vertex comes from). */
+     * each boundary vertex comes from). When remeshing, further points may
+     * join it on the input edges (the remesher's boundary splits, at the
+     * middle of a piece's parameter in every polygon). */
     CM_CORRESPOND_ARCLENGTH,
     /* Chosen where nothing is pinned, with the output of ARCLENGTH (every
      * polygon keeps its vertices and gets the others' on its edges; the
@@ -165,13 +167,18 @@ typedef struct cm_options {
      * every geometry) and at the end those the result does not need
      * (collapses that keep every angle at or above the target). Every step
      * keeps every geometry valid; a split is kept only if the smallest
-     * angle around it did not drop. The boundary is never touched. */
+     * angle around it did not drop. Boundary vertices never move; boundary
+     * edges are split only with CM_CORRESPOND_ARCLENGTH and _AUTO, whose
+     * boundaries take points on the input edges anyway (without holes: the
+     * point at the middle of the piece's parameter on its input edge in
+     * every polygon, reported by cm_result_boundary_source). */
     int remesh;             /* 1 (default): remesh; 0: return the construction */
     /* Target smallest angle in degrees, in (0, 60); default 25. A triangle
      * at input corner i aims at min(target, c_i / 2), c_i the corner angle
      * (a corner split in two cannot promise more), and one on a boundary
      * edge at no more than the best isosceles triangle on that edge fitting
-     * inside the polygon allows (boundary edges are never split).
+     * inside the polygon allows (the edge is never split with
+     * CM_CORRESPOND_INDEX).
      * Refinement stops when every triangle of every geometry reaches its
      * aim, the budget is spent, or the smallest angle stops rising. */
     double min_angle_deg;

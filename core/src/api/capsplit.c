@@ -1,9 +1,11 @@
 /* Boundary edges split where their edge cap binds. A triangle on a
  * boundary edge cannot have a smallest angle above the edge's cap
- * (remesh/criteria.h), and the remesher never splits a boundary edge; so
- * where the points a correspondence added leave an edge long beside a
- * close stretch of boundary, the aim is out of reach there however the
- * interior is refined. Halving such an edge at the same parameter in
+ * (remesh/criteria.h), and the remesher takes the caps of the boundary it
+ * starts from as the limits of its targets (the halves of an edge it
+ * splits itself keep the whole edge's cap); so where the points a
+ * correspondence added leave an edge long beside a close stretch of
+ * boundary, the aim is lowered there unless the edge is split first.
+ * Halving such an edge at the same parameter in
  * every polygon keeps the correspondence (the segments stay on their
  * input edges, the map along them linear) and raises the cap: the
  * isosceles triangle of a given base angle on a half lies inside the one

@@ -151,8 +151,10 @@ done:
 }
 
 /* Records the construction's quality, then runs Algorithm 1 on r->mesh
- * (internal counter-clockwise order) when asked. */
-static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o, cm_progress *progress)
+ * (internal counter-clockwise order) when asked; splits: NULL, or the
+ * boundary splits it may make (cm_remesh_boundary). */
+static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o, cm_remesh_boundary *splits,
+                              cm_progress *progress)
 {
     size_t k = r->mesh.k;
     r->quality_before = calloc(k, sizeof *r->quality_before);
@@ -164,7 +166,8 @@ static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o, cm_pr
     double t = cm_seconds_now();
     cm_remesh_report report = {0};
     /* Nothing above the ceiling can be reached: aim no higher. */
-    cm_status s = cm_remesh(&r->mesh, n, o, o->ceiling ? r->stats.ceiling_deg : 60.0, progress, &report, &r->error);
+    cm_status s =
+        cm_remesh(&r->mesh, n, o, o->ceiling ? r->stats.ceiling_deg : 60.0, splits, progress, &report, &r->error);
     r->stats.seconds_remesh = cm_seconds_now() - t;
     r->stats.remesh_iterations = report.iterations;
     r->stats.remesh_aim_deg = report.target_deg;
@@ -233,10 +236,51 @@ static cm_status on_edges_init(cm_result *r, const size_t *at, size_t num_loops,
     return CM_OK;
 }
 
+/* The input polygons r->boundary's labels refer to (as given to
+ * cm_correspond_arclength), for the points the remesher adds on the
+ * common boundary's edges. */
+typedef struct edge_inputs {
+    const double *const *polygons;
+    const size_t *counts;
+    const int *orientation;
+} edge_inputs;
+
+/* cm_kmesh_between on r->boundary's labels: the middle parameter of the
+ * input edge the piece lies on, nudged by ulps for step > 0. */
+static int edge_between(void *ctx, size_t g, int32_t ea, double ta, int32_t eb, double tb, int step, int32_t *e,
+                        double *t, double xy[2])
+{
+    const edge_inputs *in = ctx;
+    double t0, t1;
+    cm_boundary_piece(ea, ta, eb, tb, in->counts[g], in->orientation[g] < 0, e, &t0, &t1);
+    double mid = 0.5 * (t0 + t1), towards = step % 2 ? t0 : t1;
+    for (int i = 0; i < (step + 1) / 2; i++) mid = nextafter(mid, towards);
+    if (!(fmin(t0, t1) < mid && mid < fmax(t0, t1))) return 0;
+    *t = mid;
+    cm_edge_point(in->polygons[g], in->counts[g], *e, mid, xy);
+    return 1;
+}
+
+/* After boundary splits: r->boundary and the counts become the remeshed
+ * boundary's, the mesh's first n vertices. 0 or -1 out of memory. */
+static int take_split_boundary(cm_result *r, size_t n)
+{
+    cm_boundary_map *b = &r->boundary;
+    for (size_t g = 0; g < b->k; g++) {
+        double *xy = realloc(b->xy[g], 2 * n * sizeof *xy);
+        if (!xy) return -1;
+        memcpy(xy, r->mesh.xy[g], 2 * n * sizeof *xy);
+        b->xy[g] = xy;
+    }
+    b->n = r->n = r->stats.n = n;
+    return 0;
+}
+
 /* tris: NULL, or the polygons' triangulations (cm_polygon_triangulate's)
- * when already made. */
+ * when already made. edges: NULL, or the inputs of r->boundary when the
+ * remesher may split its edges. */
 static cm_status run_pipeline(cm_result *r, const double *const *polygons, const size_t *counts,
-                              size_t k, const int32_t *const *tris, const cm_options *o)
+                              size_t k, const int32_t *const *tris, const edge_inputs *edges, const cm_options *o)
 {
     cm_progress progress;
     cm_progress_init(&progress, o->progress, o->progress_user);
@@ -263,8 +307,10 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
     if (on) free((void *)on->loop_start);
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     r->stats.seconds_build = cm_seconds_now() - t1 - (r->stats.seconds_ceiling - ceiling_before);
-    s = remesh_stage(r, n, o, &progress);
+    cm_remesh_boundary splits = {edge_between, (void *)edges, r->boundary.edge, r->boundary.t, n};
+    s = remesh_stage(r, n, o, edges && on ? &splits : NULL, &progress);
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
+    if (splits.n > n && take_split_boundary(r, n = splits.n)) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     if (clockwise) restore_input_order(&r->mesh, n);
     double t2 = cm_seconds_now();
     if (cm_progress_report(&progress, CM_STAGE_CHECK, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
@@ -564,7 +610,9 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
         s = split_capped_edges(r, polygons, counts, orientation, o, ceiling_deg, &tris);
     if (s == CM_OK) {
         for (size_t g = 0; g < k; g++) merged_counts[g] = r->boundary.n;
-        s = run_pipeline(r, (const double *const *)r->boundary.xy, merged_counts, k, (const int32_t *const *)tris, o);
+        edge_inputs edges = {polygons, counts, orientation};
+        s = run_pipeline(r, (const double *const *)r->boundary.xy, merged_counts, k, (const int32_t *const *)tris,
+                         !every_vertex && o->remesh ? &edges : NULL, o);
         locate_in_input(r, s);
     }
     cm_cap_tris_free(tris, k);
@@ -622,7 +670,7 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
     else if (s == CM_OK && options->max_edge > 0)
         s = run_index_split(r, polygons, counts, k, options);
     else if (s == CM_OK)
-        s = run_pipeline(r, polygons, counts, k, NULL, options);
+        s = run_pipeline(r, polygons, counts, k, NULL, NULL, options);
     if (s != CM_OK) cm_result_clear_geometry(r);
     return cm_error_close(&r->error, s);
 }
@@ -802,7 +850,7 @@ static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, con
     if (s != CM_OK) goto done;
     r->stats.seconds_build = cm_seconds_now() - t1 - r->stats.seconds_ceiling;
     r->mesh.loop_start = start, r->mesh.num_loops = num_loops; /* the remesher's boundary */
-    s = remesh_stage(r, n, o, &progress);
+    s = remesh_stage(r, n, o, NULL, &progress);
     r->mesh.loop_start = NULL, r->mesh.num_loops = 0;
     if (s != CM_OK) goto done;
     if ((s = permute_loop_vertices(r, perm, n)) != CM_OK) goto done;

@@ -4,24 +4,35 @@
 
 #include "correspond/split.h"
 
-/* Polygon g's segment from common vertex j to j + 1: the input edge e it
- * lies on and the parameters of its ends on that edge. */
+void cm_boundary_piece(int32_t edge, double t, int32_t next_edge, double next_t, size_t count, int reversed,
+                       int32_t *e, double *t0, double *t1)
+{
+    if (reversed) {
+        /* Counter-clockwise runs against the input: from input vertex v the
+         * piece runs down edge v - 1 (from its end, t = 1). */
+        *e = t == 0 ? (int32_t)(((size_t)edge + count - 1) % count) : edge;
+        *t0 = t == 0 ? 1.0 : t;
+        *t1 = next_t; /* the next vertex is on edge *e, or its start */
+    } else {
+        *e = edge, *t0 = t;
+        *t1 = next_edge == edge ? next_t : 1.0;
+    }
+}
+
+void cm_edge_point(const double *polygon, size_t count, int32_t e, double t, double xy[2])
+{
+    const double *a = polygon + 2 * e, *b = polygon + 2 * (((size_t)e + 1) % count);
+    xy[0] = a[0] + t * (b[0] - a[0]);
+    xy[1] = a[1] + t * (b[1] - a[1]);
+}
+
+/* Polygon g's segment from common vertex j to j + 1. */
 static void segment(const cm_boundary_map *map, size_t g, size_t j, size_t count, int reversed, int32_t *e,
                     double *t0, double *t1)
 {
     size_t next = (j + 1) % map->n;
-    int32_t edge = map->edge[g][j];
-    double t = map->t[g][j];
-    if (reversed) {
-        /* Counter-clockwise runs against the input: from input vertex v the
-         * segment runs down edge v - 1 (from its end, t = 1). */
-        *e = t == 0 ? (int32_t)((edge + count - 1) % count) : edge;
-        *t0 = t == 0 ? 1.0 : t;
-        *t1 = map->t[g][next]; /* vertex j + 1 is on edge *e, or its start */
-    } else {
-        *e = edge, *t0 = t;
-        *t1 = map->edge[g][next] == edge ? map->t[g][next] : 1.0;
-    }
+    cm_boundary_piece(map->edge[g][j], map->t[g][j], map->edge[g][next], map->t[g][next], count, reversed, e, t0,
+                      t1);
 }
 
 cm_status cm_boundary_map_split_edges(cm_boundary_map *map, const double *const *polygons, const size_t *counts,
@@ -51,11 +62,9 @@ cm_status cm_boundary_map_split_edges(cm_boundary_map *map, const double *const 
             int32_t e;
             double t0, t1;
             segment(map, g, j, m, orientation[g] < 0, &e, &t0, &t1);
-            const double *a = P + 2 * e, *b = P + 2 * ((size_t)(e + 1) % m);
             for (size_t i = 1; i < pieces[j]; i++) {
                 double t = t0 + (t1 - t0) * ((double)i / (double)pieces[j]);
-                out.xy[g][2 * at] = a[0] + t * (b[0] - a[0]);
-                out.xy[g][2 * at + 1] = a[1] + t * (b[1] - a[1]);
+                cm_edge_point(P, m, e, t, out.xy[g] + 2 * at);
                 out.edge[g][at] = e, out.t[g][at] = t;
                 at++;
             }

@@ -116,7 +116,7 @@ long cm_collapse_pass(cm_kmesh *km, double threshold, long max_collapses, cm_wor
     long done = 0;
     if (cm_heap_init(&h, km->nv)) goto oom;
     for (int32_t v = km->n; v < km->nv; v++)
-        if (km->vc[v] >= 0 && rate(km, &h, v, threshold, &star)) goto oom;
+        if (km->vc[v] >= 0 && !cm_kmesh_is_boundary(km, v) && rate(km, &h, v, threshold, &star)) goto oom;
     while (max_collapses < 0 || done < max_collapses) {
         int32_t v = cm_heap_pop(&h), corner;
         if (v < 0) break;

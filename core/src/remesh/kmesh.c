@@ -46,9 +46,13 @@ static int reserve_vertices(cm_kmesh *km, int32_t need)
     for (size_t g = 0; g < km->k; g++)
         if (resize(&km->xy[g], 2 * c, sizeof **km->xy)) return -1;
     if (resize(&km->vc, c, sizeof *km->vc) || resize(&km->mark, c, sizeof *km->mark) ||
-        resize(&km->vcap, c, sizeof *km->vcap) || resize(&km->vdirty, c, sizeof *km->vdirty) || reserve_list(&km->free_v, cap))
+        resize(&km->vcap, c, sizeof *km->vcap) || resize(&km->vdirty, c, sizeof *km->vdirty) ||
+        resize(&km->bnext, c, sizeof *km->bnext) || resize(&km->bcap, c, sizeof *km->bcap) ||
+        (km->bedge && (resize(&km->bedge, c * km->k, sizeof *km->bedge) || resize(&km->bt, c * km->k, sizeof *km->bt))) ||
+        reserve_list(&km->free_v, cap))
         return -1;
-    for (int32_t v = km->cap_v; v < cap; v++) km->vc[v] = -1, km->mark[v] = 0, km->vcap[v] = CM_PI, km->vdirty[v] = CM_DIRTY_ALL;
+    for (int32_t v = km->cap_v; v < cap; v++)
+        km->vc[v] = -1, km->mark[v] = 0, km->vcap[v] = CM_PI, km->vdirty[v] = CM_DIRTY_ALL, km->bnext[v] = -1;
     km->cap_v = cap;
     return 0;
 }
@@ -114,6 +118,7 @@ void cm_kmesh_free(cm_kmesh *km)
         for (size_t g = 0; g < km->k; g++) free(km->xy[g]);
     free(km->xy), free(km->tri), free(km->opp), free(km->vc), free(km->scale);
     free(km->tkey), free(km->tang), free(km->slack), free(km->mark), free(km->bcap), free(km->bnext), free(km->vcap), free(km->vdirty);
+    free(km->bedge), free(km->bt);
     cm_ibuf_free(&km->free_v), cm_ibuf_free(&km->free_t);
     cm_heap_free(&km->tq), cm_heap_free(&km->eq);
     memset(km, 0, sizeof *km);
@@ -148,19 +153,23 @@ static double triangle_target(const cm_kmesh *km, int32_t t)
 double cm_kmesh_split_score(const cm_kmesh *km, int32_t c)
 {
     int32_t o = km->opp[c], a = km->tri[cm_next(c)], b = km->tri[cm_prev(c)];
-    double alpha = fmax(fmin(km->tkey[c / 3], km->tkey[o / 3]), 1e-9), len = 0;
+    double alpha = fmax(o < 0 ? km->tkey[c / 3] : fmin(km->tkey[c / 3], km->tkey[o / 3]), 1e-9), len = 0;
     for (size_t g = 0; g < km->k; g++) len = fmax(len, cm_kmesh_rel_length(km, g, a, b));
     return len / (alpha * alpha);
 }
 
 /* Files the edge opposite c under its smaller corner, if a triangle
- * beside it still falls short of its target. */
+ * beside it still falls short of its target (a boundary edge only with
+ * boundary splits). */
 static void update_edge(cm_kmesh *km, int32_t c)
 {
     if (km->eq_dropped) return;
     int32_t o = km->opp[c];
     if (o < 0) {
-        cm_heap_remove(&km->eq, c);
+        if (km->between && km->slack[c / 3] < 0)
+            cm_heap_set(&km->eq, c, -cm_kmesh_split_score(km, c));
+        else
+            cm_heap_remove(&km->eq, c);
         return;
     }
     int32_t lo = c < o ? c : o, hi = c < o ? o : c;
@@ -262,6 +271,21 @@ void cm_kmesh_set_caps(cm_kmesh *km, double target, const double *bcap, const do
             for (int32_t c = 3 * t; c < 3 * t + 3; c++) update_edge(km, c);
 }
 
+int cm_kmesh_allow_boundary_splits(cm_kmesh *km, cm_kmesh_between between, void *ctx, const int32_t *const *edge,
+                                   const double *const *t)
+{
+    size_t c = (size_t)km->cap_v * km->k;
+    if (!(km->bedge = malloc(c * sizeof *km->bedge)) || !(km->bt = malloc(c * sizeof *km->bt))) return -1;
+    for (int32_t i = 0; i < km->n; i++)
+        for (size_t g = 0; g < km->k; g++)
+            km->bedge[km->k * (size_t)i + g] = edge[g][i], km->bt[km->k * (size_t)i + g] = t[g][i];
+    km->between = between, km->between_ctx = ctx;
+    for (int32_t tr = 0; tr < km->nt; tr++) /* the boundary edges become candidates */
+        if (cm_kmesh_tri_live(km, tr))
+            for (int32_t e = 3 * tr; e < 3 * tr + 3; e++) update_edge(km, e);
+    return 0;
+}
+
 void cm_kmesh_drop_candidates(cm_kmesh *km)
 {
     while (cm_heap_pop(&km->eq) >= 0) {}
@@ -324,7 +348,7 @@ static int pair_corners(cm_kmesh *km)
             km->opp[c] = d, km->opp[d] = c;
         } else if (j - i == 1) {
             int32_t a = km->tri[cm_next(c)], b = km->tri[cm_prev(c)];
-            if (a >= km->n || b != km->bnext[a]) status = -2;
+            if (b != km->bnext[a]) status = -2;
             boundary++;
         } else {
             status = -2;
@@ -374,17 +398,14 @@ cm_status cm_kmesh_build(cm_kmesh *km, const cm_mesh *m, size_t n)
     km->n = (int32_t)n;
     km->xy = calloc(m->k, sizeof *km->xy);
     km->scale = malloc(m->k * sizeof *km->scale);
-    km->bcap = malloc(n * sizeof *km->bcap);
-    km->bnext = malloc(n * sizeof *km->bnext);
-    if (km->bnext)
-        for (size_t i = 0; i < n; i++) km->bnext[i] = (int32_t)cm_loops_next(m->loop_start, n, i);
-    if (!km->xy || !km->scale || !km->bcap || !km->bnext || cm_heap_init(&km->tq, 0) ||
-        cm_heap_init(&km->eq, 0) ||
+    if (!km->xy || !km->scale || cm_heap_init(&km->tq, 0) || cm_heap_init(&km->eq, 0) ||
         reserve_vertices(km, (int32_t)(m->nv + m->nv / 4 + 16)) ||
         reserve_triangles(km, (int32_t)(m->nt + m->nt / 4 + 16))) {
         cm_kmesh_free(km);
         return CM_ERR_NO_MEMORY;
     }
+    for (size_t i = 0; i < n; i++) km->bnext[i] = (int32_t)cm_loops_next(m->loop_start, n, i);
+    km->nb = (int32_t)n;
     km->nv = km->live_v = (int32_t)m->nv;
     km->nt = km->live_t = (int32_t)m->nt;
     for (size_t g = 0; g < m->k; g++) {
@@ -411,10 +432,48 @@ cm_status cm_kmesh_build(cm_kmesh *km, const cm_mesh *m, size_t n)
     return CM_OK;
 }
 
+/* The written index of every slot (-1 dead): each loop of the boundary in
+ * its order, a vertex added on an edge after the edge's start, then the
+ * Steiner vertices in slot order. 0 or -1 out of memory. */
+static int32_t *write_order(const cm_kmesh *km)
+{
+    int32_t *index = malloc(((size_t)km->nv + 1) * sizeof *index), next = 0;
+    if (!index) return NULL;
+    for (int32_t v = 0; v < km->nv; v++) index[v] = -1;
+    for (int32_t i = 0; i < km->n; i++) {
+        index[i] = next++;
+        for (int32_t v = km->bnext[i]; v >= km->n; v = km->bnext[v]) index[v] = next++;
+    }
+    for (int32_t v = km->n; v < km->nv; v++)
+        if (km->vc[v] >= 0 && !cm_kmesh_is_boundary(km, v)) index[v] = next++;
+    return index;
+}
+
+cm_status cm_kmesh_write_labels(const cm_kmesh *km, int32_t **edge, double **t)
+{
+    int32_t *index = write_order(km);
+    int ok = index != NULL;
+    for (size_t g = 0; ok && g < km->k; g++) {
+        int32_t *e = realloc(edge[g], (size_t)km->nb * sizeof *e);
+        if (e) edge[g] = e;
+        double *u = e ? realloc(t[g], (size_t)km->nb * sizeof *u) : NULL;
+        if (u) t[g] = u;
+        ok = e && u;
+    }
+    for (int32_t v = 0; ok && v < km->nv; v++) {
+        int32_t i = index[v];
+        if (i < 0 || !cm_kmesh_is_boundary(km, v)) continue;
+        for (size_t g = 0; g < km->k; g++)
+            edge[g][i] = km->bedge[km->k * (size_t)v + g], t[g][i] = km->bt[km->k * (size_t)v + g];
+    }
+    free(index);
+    return ok ? CM_OK : CM_ERR_NO_MEMORY;
+}
+
 cm_status cm_kmesh_write(const cm_kmesh *km, cm_mesh *m)
 {
     size_t nv = (size_t)km->live_v, nt = (size_t)km->live_t;
-    int32_t *index = malloc(((size_t)km->nv + 1) * sizeof *index);
+    int32_t *index = write_order(km);
     int32_t *tri = malloc((3 * nt + 1) * sizeof *tri);
     double **xy = calloc(km->k, sizeof *xy);
     int ok = index && tri && xy;
@@ -425,9 +484,7 @@ cm_status cm_kmesh_write(const cm_kmesh *km, cm_mesh *m)
         free(index), free(tri), free(xy);
         return CM_ERR_NO_MEMORY;
     }
-    int32_t next = 0;
     for (int32_t v = 0; v < km->nv; v++) {
-        index[v] = km->vc[v] < 0 ? -1 : next++;
         if (index[v] < 0) continue;
         for (size_t g = 0; g < km->k; g++) /* boundary coordinates: copied, never recomputed */
             memcpy(xy[g] + 2 * (size_t)index[v], km->xy[g] + 2 * (size_t)v, 2 * sizeof(double));
@@ -451,7 +508,7 @@ long cm_kmesh_star(const cm_kmesh *km, int32_t v, cm_ibuf *corners)
     int32_t start = km->vc[v], c = start;
     long guard = 3L * km->nt + 3;
     if (start < 0) return -2;
-    if (cm_kmesh_is_boundary(km, v)) { /* back to the triangle on edge v -> v+1 */
+    if (cm_kmesh_is_boundary(km, v)) { /* back to the triangle on edge v -> bnext[v] */
         while (km->opp[cm_prev(c)] >= 0) {
             c = cm_prev(km->opp[cm_prev(c)]);
             if (--guard < 0 || c == start) return -2;
@@ -498,6 +555,12 @@ static void set_position(cm_kmesh *km, size_t g, int32_t v, const double p[2])
     cm_log_vertex(km, v);
     km->xy[g][2 * (size_t)v] = p[0];
     km->xy[g][2 * (size_t)v + 1] = p[1];
+}
+
+static void set_bnext(cm_kmesh *km, int32_t v, int32_t next)
+{
+    cm_log_vertex(km, v);
+    km->bnext[v] = next;
 }
 
 void cm_kmesh_flip(cm_kmesh *km, int32_t c)
@@ -562,6 +625,35 @@ int32_t cm_kmesh_split(cm_kmesh *km, int32_t c, const double *pts)
     km->live_v++, km->live_t += 2;
     cm_kmesh_touch(km, c / 3), cm_kmesh_touch(km, o / 3);
     cm_kmesh_touch(km, ta), cm_kmesh_touch(km, tb);
+    return m;
+}
+
+int32_t cm_kmesh_split_boundary(cm_kmesh *km, int32_t c, const double *pts, const int32_t *edge, const double *t)
+{
+    int32_t m = new_vertex(km);
+    if (m < 0) return -1;
+    int32_t ta = new_triangle(km);
+    if (ta < 0) {
+        push_free_vertex(km, m);
+        return -1;
+    }
+    for (size_t g = 0; g < km->k; g++) set_position(km, g, m, pts + 2 * g);
+    int32_t v0 = km->tri[c], v1 = km->tri[cm_next(c)], v2 = km->tri[cm_prev(c)], d = km->opp[cm_next(c)];
+    int32_t a0 = 3 * ta;
+    /* (v0 v1 v2), v1 -> v2 on the boundary  ->  (v0 v1 m) (v0 m v2) */
+    set_corner(km, cm_prev(c), m);
+    set_corner(km, a0, v0), set_corner(km, a0 + 1, m), set_corner(km, a0 + 2, v2);
+    link_corners(km, a0, -1);
+    link_corners(km, a0 + 1, d);
+    link_corners(km, cm_next(c), a0 + 2);
+    set_vertex_corner(km, m, cm_prev(c)), set_vertex_corner(km, v0, c);
+    set_vertex_corner(km, v1, cm_next(c)), set_vertex_corner(km, v2, a0 + 2);
+    set_bnext(km, m, v2), set_bnext(km, v1, m);
+    /* Labels and cap are written once, on a new slot: an undo kills it. */
+    km->bcap[m] = km->bcap[v1];
+    for (size_t g = 0; g < km->k; g++) km->bedge[km->k * (size_t)m + g] = edge[g], km->bt[km->k * (size_t)m + g] = t[g];
+    km->live_v++, km->live_t++, km->nb++;
+    cm_kmesh_touch(km, c / 3), cm_kmesh_touch(km, ta);
     return m;
 }
 
@@ -696,12 +788,12 @@ int cm_kmesh_check(const cm_kmesh *km)
             int32_t a = km->tri[cm_next(c)], b = km->tri[cm_prev(c)];
             if (km->vc[v[i]] < 0 || km->tri[km->vc[v[i]]] != v[i]) return 0;
             if (o < 0) {
-                if (a >= km->n || b != km->bnext[a]) return 0;
+                if (b != km->bnext[a]) return 0;
                 boundary++;
             } else if (km->opp[o] != c || km->tri[cm_next(o)] != b || km->tri[cm_prev(o)] != a) {
                 return 0;
             }
         }
     }
-    return boundary == km->n && live == km->live_t;
+    return boundary == km->nb && live == km->live_t;
 }

@@ -4,7 +4,11 @@
  * t; opp[c] is the corner across the edge opposite c in the neighbouring
  * triangle, -1 on the boundary. Triangles are counter-clockwise in every
  * geometry. Vertices 0..n-1 are the polygon, counter-clockwise in order
- * (or its loops, cm_mesh.loop_start, the holes clockwise), and never move; every other vertex is an interior Steiner vertex. Removed
+ * (or its loops, cm_mesh.loop_start, the holes clockwise), and never move;
+ * with boundary splits (cm_kmesh_allow_boundary_splits) vertices added on
+ * a boundary edge join them (bnext[v] >= 0 marks a boundary vertex), and
+ * never move either; every other vertex is an interior Steiner vertex.
+ * Removed
  * triangles and vertices leave dead slots (tri[3t] = -1, vc[v] = -1) that
  * later insertions reuse; cm_kmesh_write compacts.
  *
@@ -27,6 +31,16 @@
 #include "base/mesh.h"
 #include "geom/angle.h"
 
+/* Where a point between two consecutive boundary vertices goes in
+ * geometry g: a and b carry labels (edge, t) (the caller's: where they
+ * lie on an input edge); writes the label and the coordinates of the
+ * point at the middle parameter between them, for step > 0 nudged by
+ * about step ulps of the parameter towards a when step is odd, towards b
+ * when even (a rounded point off the edge's line on the outside). 0 when
+ * there is no such point strictly between them, else 1. */
+typedef int (*cm_kmesh_between)(void *ctx, size_t g, int32_t ea, double ta, int32_t eb, double tb, int step,
+                                int32_t *e, double *t, double xy[2]);
+
 typedef struct cm_kmesh {
     size_t k;
     int32_t n;             /* boundary vertices */
@@ -46,8 +60,14 @@ typedef struct cm_kmesh {
     cm_heap eq;            /* candidate edges (smaller corner) by -score */
     int eq_dropped;        /* eq emptied and no longer kept */
     double target;         /* radians; 0 until cm_kmesh_set_caps */
-    double *bcap;          /* n: per boundary edge i -> bnext[i] */
-    int32_t *bnext;        /* n: the next vertex along i's boundary loop */
+    double *bcap;          /* per boundary vertex i: cap of edge i -> bnext[i] */
+    int32_t *bnext;        /* per vertex: the next along its boundary loop,
+                              -1 for an interior vertex */
+    int32_t nb;            /* live boundary vertices */
+    cm_kmesh_between between; /* NULL: boundary edges are never split */
+    void *between_ctx;
+    int32_t *bedge;        /* k per vertex: a boundary vertex's labels */
+    double *bt;
     double *vcap;          /* per vertex: half the corner angle (boundary), pi */
     uint16_t *vdirty;      /* vertex: what changed around it since the
                               smoothing last found nothing to do (CM_DIRTY_*) */
@@ -62,7 +82,7 @@ static inline const double *cm_kmesh_pos(const cm_kmesh *km, size_t g, int32_t v
 {
     return km->xy[g] + 2 * (size_t)v;
 }
-static inline int cm_kmesh_is_boundary(const cm_kmesh *km, int32_t v) { return v < km->n; }
+static inline int cm_kmesh_is_boundary(const cm_kmesh *km, int32_t v) { return km->bnext[v] >= 0; }
 static inline int cm_kmesh_tri_live(const cm_kmesh *km, int32_t t) { return km->tri[3 * t] >= 0; }
 /* vdirty bits. cm_dirty_smooth(g): a triangle around the vertex changed
  * in geometry g since the smoothing formulas last left it in place there
@@ -85,10 +105,22 @@ static inline int cm_dirty_search_shared(size_t g) { return g >= 6; }
  * counter-clockwise boundary. CM_OK, CM_ERR_NO_MEMORY, or CM_ERR_INTERNAL
  * when the triangle list is not a manifold disk with that boundary. */
 cm_status cm_kmesh_build(cm_kmesh *km, const cm_mesh *m, size_t n);
-/* Replaces m's arrays with the compacted mesh: boundary vertices keep their
- * indices and bit-identical coordinates, Steiner vertices follow in slot
- * order. CM_OK or CM_ERR_NO_MEMORY (m unchanged). */
+/* Lets boundary edges be split (cm_kmesh_split_boundary) and be
+ * refinement candidates: labels edge[g][i], t[g][i] for boundary vertex i
+ * < n, between() for the points. 0, or -1 out of memory. */
+int cm_kmesh_allow_boundary_splits(cm_kmesh *km, cm_kmesh_between between, void *ctx, const int32_t *const *edge,
+                                   const double *const *t);
+/* Replaces m's arrays with the compacted mesh: the boundary vertices
+ * first, with bit-identical coordinates, each loop in its order (a
+ * vertex added on an edge after the edge's start; without such vertices
+ * each keeps its index), the Steiner vertices after them in slot order.
+ * CM_OK or CM_ERR_NO_MEMORY (m unchanged). */
 cm_status cm_kmesh_write(const cm_kmesh *km, cm_mesh *m);
+/* With boundary splits allowed: replaces edge[g] and t[g] (k arrays the
+ * caller allocated with malloc) by the labels of the boundary as
+ * cm_kmesh_write numbers it, km->nb of them. CM_OK or CM_ERR_NO_MEMORY
+ * (the arrays unchanged). */
+cm_status cm_kmesh_write_labels(const cm_kmesh *km, int32_t **edge, double **t);
 void cm_kmesh_free(cm_kmesh *km);
 
 /* Corners at v in counter-clockwise order; for a boundary vertex the first
@@ -114,6 +146,10 @@ void cm_kmesh_flip(cm_kmesh *km, int32_t c);
  * doubles, one point per geometry). Returns the new vertex, -1 out of
  * memory. The new vertex's corners: cm_prev(c) is one of them. */
 int32_t cm_kmesh_split(cm_kmesh *km, int32_t c, const double *pts);
+/* Splits the boundary edge opposite corner c at the points pts, labels
+ * edge[g], t[g]: a new boundary vertex, never moved. Returns it, -1 out
+ * of memory. Its corners: cm_prev(c) is one of them. */
+int32_t cm_kmesh_split_boundary(cm_kmesh *km, int32_t c, const double *pts, const int32_t *edge, const double *t);
 /* Inserts a vertex inside triangle t at the points pts (2k doubles, one
  * per geometry): t becomes three triangles around it. Returns the new
  * vertex, -1 out of memory. */
@@ -166,7 +202,8 @@ void cm_kmesh_set_caps(cm_kmesh *km, double target, const double *bcap, const do
  * so cm_refine_candidates finds none (keeping it costs a score, with a
  * square root, per edge of every changed triangle). */
 void cm_kmesh_drop_candidates(cm_kmesh *km);
-/* Split score of eq. (5) of the interior edge opposite c: the largest
+/* Split score of eq. (5) of the edge opposite c (interior, or boundary
+ * with boundary splits): the largest
  * relative length over geometries over alpha_min(e)^2. */
 double cm_kmesh_split_score(const cm_kmesh *km, int32_t c);
 

@@ -18,12 +18,12 @@ struct cm_kmesh_log {
     uint32_t *tseen, *vseen; /* slot -> id of the transaction that saved it */
     size_t tcap, vcap;
     cm_ibuf tsave;           /* 7 per triangle: t, tri[3], opp[3] */
-    cm_ibuf vsave;           /* 2 per vertex: v, vc */
+    cm_ibuf vsave;           /* 3 per vertex: v, vc, bnext */
     cm_dbuf keys;            /* tkey per saved triangle (NaN: was dead) */
     cm_dbuf pos;             /* 2k per saved vertex */
     cm_ibuf flog;            /* free-list operations, 4 * value + kind */
     cm_ibuf dlog;            /* vdirty changes, 2 per change: v, old value */
-    int32_t nv, nt, live_v, live_t;
+    int32_t nv, nt, live_v, live_t, nb;
 };
 
 static int grow_seen(uint32_t **seen, size_t *cap, size_t need)
@@ -88,7 +88,8 @@ void cm_log_vertex(cm_kmesh *km, int32_t v)
     if (!logging(km)) return;
     struct cm_kmesh_log *log = km->log;
     if (!first_change(log, &log->vseen, &log->vcap, v)) return;
-    if (cm_ibuf_push(&log->vsave, v) || cm_ibuf_push(&log->vsave, km->vc[v])) goto fail;
+    if (cm_ibuf_push(&log->vsave, v) || cm_ibuf_push(&log->vsave, km->vc[v]) || cm_ibuf_push(&log->vsave, km->bnext[v]))
+        goto fail;
     for (size_t g = 0; g < km->k; g++)
         if (push_double(&log->pos, km->xy[g][2 * (size_t)v]) || push_double(&log->pos, km->xy[g][2 * (size_t)v + 1]))
             goto fail;
@@ -119,7 +120,7 @@ int cm_kmesh_tx_begin(cm_kmesh *km)
     }
     log->active = 1, log->failed = 0;
     log->tsave.n = log->vsave.n = log->flog.n = log->dlog.n = 0, log->keys.n = log->pos.n = 0;
-    log->nv = km->nv, log->nt = km->nt, log->live_v = km->live_v, log->live_t = km->live_t;
+    log->nv = km->nv, log->nt = km->nt, log->live_v = km->live_v, log->live_t = km->live_t, log->nb = km->nb;
     return 0;
 }
 
@@ -168,14 +169,14 @@ long cm_log_undo(cm_kmesh *km)
         const int32_t *rec = log->tsave.a + 7 * i;
         for (int j = 0; j < 3; j++) km->tri[3 * rec[0] + j] = rec[1 + j], km->opp[3 * rec[0] + j] = rec[4 + j];
     }
-    for (size_t i = 0; i < log->vsave.n / 2; i++) {
-        int32_t v = log->vsave.a[2 * i];
-        km->vc[v] = log->vsave.a[2 * i + 1];
+    for (size_t i = 0; i < log->vsave.n / 3; i++) {
+        int32_t v = log->vsave.a[3 * i];
+        km->vc[v] = log->vsave.a[3 * i + 1], km->bnext[v] = log->vsave.a[3 * i + 2];
         for (size_t g = 0; g < km->k; g++, d += 2)
             km->xy[g][2 * (size_t)v] = log->pos.a[d], km->xy[g][2 * (size_t)v + 1] = log->pos.a[d + 1];
     }
     for (size_t i = log->dlog.n / 2; i-- > 0;) km->vdirty[log->dlog.a[2 * i]] = (uint16_t)log->dlog.a[2 * i + 1];
-    km->nv = log->nv, km->nt = log->nt, km->live_v = log->live_v, km->live_t = log->live_t;
+    km->nv = log->nv, km->nt = log->nt, km->live_v = log->live_v, km->live_t = log->live_t, km->nb = log->nb;
     return (long)nt;
 }
 

@@ -507,7 +507,7 @@ long cm_mapopt_local(cm_kmesh *km, cm_mapopt_weights w, int sweeps)
     for (int sweep = 0; sweep < sweeps; sweep++) {
         long before = moves;
         for (int32_t v = km->n; v < km->nv; v++) {
-            if (km->vc[v] < 0) continue;
+            if (km->vc[v] < 0 || cm_kmesh_is_boundary(km, v)) continue;
             long m = cm_kmesh_star(km, v, &star);
             if (m == -1) goto oom;
             if (m < 0) continue;

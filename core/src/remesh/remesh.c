@@ -330,7 +330,7 @@ static int improve_everywhere(remesher *x)
 {
     if (cm_flip_queue_all(&x->km, &x->edges)) return -1;
     for (int32_t v = x->km.n; v < x->km.nv; v++)
-        if (x->km.vc[v] >= 0 && cm_work_push(&x->verts, v)) return -1;
+        if (x->km.vc[v] >= 0 && !cm_kmesh_is_boundary(&x->km, v) && cm_work_push(&x->verts, v)) return -1;
     return improve(x, CM_POLISH_SWEEPS);
 }
 
@@ -365,7 +365,7 @@ static int settle(remesher *x) { return settle_by(x, 0.0); }
 
 static void forget_edge(cm_kmesh *km, int32_t c)
 {
-    cm_heap_remove(&km->eq, c < km->opp[c] ? c : km->opp[c]);
+    cm_heap_remove(&km->eq, km->opp[c] < 0 || c < km->opp[c] ? c : km->opp[c]);
 }
 
 /* Splits the edge opposite c and repairs around the new vertex, as one
@@ -411,8 +411,8 @@ static int try_area_equalisation(remesher *x)
 static int worth_trying(remesher *x, int32_t c)
 {
     cm_kmesh *km = &x->km;
-    if (km->tri[c] < 0 || km->opp[c] < 0) return 0;
-    int32_t rep = c < km->opp[c] ? c : km->opp[c];
+    if (km->tri[c] < 0 || (km->opp[c] < 0 && !km->between)) return 0;
+    int32_t rep = km->opp[c] < 0 || c < km->opp[c] ? c : km->opp[c];
     if (!cm_heap_contains(&km->eq, rep)) return 0;
     if (tabu_count(&x->tabu, km->tri[cm_next(c)], km->tri[cm_prev(c)]) < CM_SPLIT_TRIES) return 1;
     cm_heap_remove(&km->eq, rep);
@@ -520,7 +520,8 @@ enum forced_move { FORCED_FLIP, FORCED_COLLAPSE, FORCED_SPLIT, FORCED_INSERT, FO
 static int try_forced(remesher *x, enum forced_move kind, int32_t c)
 {
     cm_kmesh *km = &x->km;
-    if (km->tri[c] < 0 || (kind != FORCED_COLLAPSE && kind != FORCED_INSERT && km->opp[c] < 0)) return 0;
+    if (km->tri[c] < 0 || (kind == FORCED_FLIP && km->opp[c] < 0) || (kind == FORCED_SPLIT && km->opp[c] < 0 && !km->between))
+        return 0;
     if (kind == FORCED_INSERT && c % 3) return 0; /* once per triangle */
     if (kind == FORCED_COLLAPSE && cm_kmesh_is_boundary(km, km->tri[c])) return 0;
     int32_t around[5] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)],
@@ -785,7 +786,8 @@ static void remesher_free(remesher *x)
  * CM_ERR_NO_MEMORY, CM_ERR_CANCELLED or CM_ERR_INTERNAL (the construction
  * is not a triangulated disk). */
 static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const double *bcap, const cm_options *o,
-                            double ceiling_deg, cm_progress *progress, cm_remesh_report *rep)
+                            double ceiling_deg, const cm_remesh_boundary *splits, cm_progress *progress,
+                            cm_remesh_report *rep)
 {
     x->o = o;
     x->progress = progress;
@@ -793,6 +795,9 @@ static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const do
     cm_status s = cm_kmesh_build(&x->km, mesh, n);
     if (s != CM_OK) return s;
     set_caps(x, bcap, n, rep);
+    if (splits && cm_kmesh_allow_boundary_splits(&x->km, splits->between, splits->ctx,
+                                                 (const int32_t *const *)splits->edge, (const double *const *)splits->t))
+        return CM_ERR_NO_MEMORY;
     trace(x, "start");
     long removed = coarsen(x, 0.0);
     if (removed < 0 || improve_everywhere(x)) return stop_status(x);
@@ -818,13 +823,13 @@ static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const do
     return CM_OK;
 }
 
-cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, cm_progress *progress,
-                    cm_remesh_report *rep, cm_error *err)
+cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, cm_remesh_boundary *splits,
+                    cm_progress *progress, cm_remesh_report *rep, cm_error *err)
 {
     remesher x = {0}, y = {0};
     double *bcap;
     cm_status s = boundary_caps(mesh, n, progress, &bcap);
-    if (s == CM_OK) s = remesh_run(&x, mesh, n, bcap, o, ceiling_deg, progress, rep);
+    if (s == CM_OK) s = remesh_run(&x, mesh, n, bcap, o, ceiling_deg, splits, progress, rep);
     /* The greedy remesher can stall far below its aim, typically on a
      * sliver its local moves cannot reach (a slivered result also makes
      * the sweep's tetrahedra fail); the map-aware remesher starts the
@@ -833,7 +838,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
         cm_options map = *o;
         map.remesher = CM_REMESHER_MAP;
         cm_remesh_report again = {0};
-        s = remesh_run(&y, mesh, n, bcap, &map, ceiling_deg, progress, &again);
+        s = remesh_run(&y, mesh, n, bcap, &map, ceiling_deg, splits, progress, &again);
         if (s == CM_OK && again.min_angle_deg > rep->min_angle_deg) {
             remesher t = x;
             x = y, y = t;
@@ -843,7 +848,9 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
         }
     }
     free(bcap);
+    if (s == CM_OK && splits) s = cm_kmesh_write_labels(&x.km, splits->edge, splits->t);
     if (s == CM_OK) s = cm_kmesh_write(&x.km, mesh);
+    if (s == CM_OK && splits) splits->n = (size_t)x.km.nb;
     remesher_free(&x), remesher_free(&y);
     if (s == CM_ERR_INTERNAL) return cm_fail(err, s, "remesh: the construction is not a triangulated disk");
     return s == CM_OK ? CM_OK : cm_fail_status(err, s);

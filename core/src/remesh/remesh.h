@@ -8,6 +8,7 @@
 #include "base/error.h"
 #include "base/mesh.h"
 #include "base/progress.h"
+#include "remesh/kmesh.h"
 
 typedef struct cm_remesh_report {
     size_t iterations;    /* refinement rounds */
@@ -16,6 +17,21 @@ typedef struct cm_remesh_report {
     double min_angle_deg; /* smallest angle of the result, all geometries */
 } cm_remesh_report;
 
+/* Boundary splits: the remesher may split boundary edges (refinement
+ * and forced moves) where the caller's boundary takes points on its input
+ * edges. edge[g][i], t[g][i]: where boundary vertex i lies in geometry g
+ * (k arrays of n, allocated with malloc), carried to the points added
+ * through between(). On CM_OK the arrays are replaced by the final
+ * boundary's, n of them: mesh vertices 0 .. n - 1, in loop order (vertex
+ * 0 first; cm_kmesh_write). */
+typedef struct cm_remesh_boundary {
+    cm_kmesh_between between;
+    void *ctx;
+    int32_t **edge;
+    double **t;
+    size_t n;
+} cm_remesh_boundary;
+
 /* Algorithm 1 on mesh (polygon vertices 0..n-1 counter-clockwise, each
  * geometry valid), in place. o: the validated options. ceiling_deg: no
  * compatible triangulation has a larger smallest angle (60 when unknown);
@@ -23,7 +39,7 @@ typedef struct cm_remesh_report {
  * budget above it, while the final removal of Steiner vertices keeps
  * every angle at the full target. Returns CM_OK, CM_ERR_NO_MEMORY,
  * CM_ERR_CANCELLED or CM_ERR_INTERNAL (message on err). */
-cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, cm_progress *progress,
-                    cm_remesh_report *report, cm_error *err);
+cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, cm_remesh_boundary *splits,
+                    cm_progress *progress, cm_remesh_report *report, cm_error *err);
 
 #endif
