@@ -15,12 +15,18 @@
  *   valid until cm_result_free. cm_result_free(NULL) is a no-op.
  *
  * Output order contract
- * - The n input vertices come first, in input order, with coordinates
- *   bit-identical to the input; the Steiner vertices follow (indices n..).
+ * - With the index correspondence (the default when the counts match): the
+ *   n input vertices come first, in input order, with coordinates
+ *   bit-identical to the input; the Steiner vertices follow (indices n..);
+ *   the boundary edges of the triangulation are exactly the input
+ *   polygon's edges (no Steiner vertex on the boundary).
+ * - With arclength or auto, or a largest boundary edge: the boundary
+ *   vertices come first in boundary order (every input vertex among them,
+ *   bit-identical and in input order; the others exactly on input edges,
+ *   named by their edge and parameter in cm_result_boundary_source), then
+ *   the interior Steiner vertices.
  * - Every geometry shares the one triangle list; every triangle is strictly
  *   counter-clockwise in every geometry (checked with exact predicates).
- * - The boundary edges of the triangulation are exactly the input polygon's
- *   edges (no Steiner vertex on the boundary).
  * - When the input polygons are all clockwise they are processed as if
  *   reversed (stats.reversed_input = 1); indices still refer to the input
  *   order, and triangles are still counter-clockwise.
