@@ -959,7 +959,8 @@ done:
  * lowered to the corner fan over the loops). The
  * refined loops then take the index pipeline, and r->boundary maps every
  * boundary vertex to its input edge, numbered in the polygon's whole array
- * (the edge from a vertex to the next of its loop). */
+ * (the edge from a vertex to the next of its loop); with remeshing the
+ * remesher may split the loops' edges there too (loop_edge_between). */
 static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o)
 {
     if (o->num_pins)
