@@ -245,19 +245,28 @@ typedef struct edge_inputs {
     const int *orientation;
 } edge_inputs;
 
+/* The middle of a piece's parameters t0 (its end at a) and t1 (at b) on
+ * its input edge, nudged by ulps for step > 0 (cm_kmesh_between's
+ * steps). 0 when that is not strictly between them, else 1. */
+static int piece_middle(double t0, double t1, int step, double *t)
+{
+    double mid = 0.5 * (t0 + t1), towards = step % 2 ? t0 : t1;
+    for (int i = 0; i < (step + 1) / 2; i++) mid = nextafter(mid, towards);
+    if (!(fmin(t0, t1) < mid && mid < fmax(t0, t1))) return 0;
+    *t = mid;
+    return 1;
+}
+
 /* cm_kmesh_between on r->boundary's labels: the middle parameter of the
- * input edge the piece lies on, nudged by ulps for step > 0. */
+ * input edge the piece lies on. */
 static int edge_between(void *ctx, size_t g, int32_t ea, double ta, int32_t eb, double tb, int step, int32_t *e,
                         double *t, double xy[2])
 {
     const edge_inputs *in = ctx;
     double t0, t1;
     cm_boundary_piece(ea, ta, eb, tb, in->counts[g], in->orientation[g] < 0, e, &t0, &t1);
-    double mid = 0.5 * (t0 + t1), towards = step % 2 ? t0 : t1;
-    for (int i = 0; i < (step + 1) / 2; i++) mid = nextafter(mid, towards);
-    if (!(fmin(t0, t1) < mid && mid < fmax(t0, t1))) return 0;
-    *t = mid;
-    cm_edge_point(in->polygons[g], in->counts[g], *e, mid, xy);
+    if (!piece_middle(t0, t1, step, t)) return 0;
+    cm_edge_point(in->polygons[g], in->counts[g], *e, *t, xy);
     return 1;
 }
 
@@ -707,8 +716,8 @@ typedef struct loop_edge_inputs {
 } loop_edge_inputs;
 
 /* cm_kmesh_between on the refined loops: the outer loop runs as its map
- * does, a hole against it, so a hole's piece goes from b back to a; then
- * as edge_between within the loop's input. */
+ * does, a hole against it, so a hole's piece goes from b back to a; the
+ * point as edge_between's, on the input loop the labels name. */
 static int loop_edge_between(void *ctx, size_t g, int32_t ea, double ta, int32_t eb, double tb, int step,
                              int32_t *e, double *t, double xy[2])
 {
@@ -723,11 +732,8 @@ static int loop_edge_between(void *ctx, size_t g, int32_t ea, double ta, int32_t
     else
         cm_boundary_piece(eb - (int32_t)s, tb, ea - (int32_t)s, ta, count, in->orientation[l * in->k + g] < 0, e,
                           &t1, &t0);
-    double mid = 0.5 * (t0 + t1), towards = step % 2 ? t0 : t1; /* t0 at a in both cases */
-    for (int i = 0; i < (step + 1) / 2; i++) mid = nextafter(mid, towards);
-    if (!(fmin(t0, t1) < mid && mid < fmax(t0, t1))) return 0;
-    *t = mid;
-    cm_edge_point(in->polygons[g].xy + 2 * s, count, *e, mid, xy);
+    if (!piece_middle(t0, t1, step, t)) return 0; /* t0 at a in both cases */
+    cm_edge_point(in->polygons[g].xy + 2 * s, count, *e, *t, xy);
     *e += (int32_t)s;
     return 1;
 }
