@@ -53,6 +53,7 @@ from make_results import corner_angles, quality_aims  # noqa: E402
 ALSO = {
     "square/disc": "; tests/cli/test_holes.py, tests/python/test_holes.py (index)",
     "square/disc, sizes differ": "; tests/cli/test_holes.py, tests/python/test_holes.py (auto)",
+    "crowded hole": "; tests/core/test_alloc_failures.c",
 }
 HEADER = ("| source | pair | mode | holes | n | c | min(15, c/3) | aim | Steiner | bound | min angle (deg) | valid | "
           "reaches min(15, c/3) |\n|---|---|---|---:|---:|---:|---:|---:|---:|---:|---|---|---|")

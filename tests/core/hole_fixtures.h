@@ -176,6 +176,26 @@ static inline void hf_sizes_differ(shape *a, shape *b)
     add_circle(b, 0.3, 0.2, 0.35, 11, 1);
 }
 
+/* A square (16 vertices) with a round hole of 24 vertices, 16 of them
+ * crowded into 30 degrees, against a disc (20) with an off-centre hexagon
+ * hole, the disc's loops the other way round (dir -1: outer clockwise,
+ * hole counter-clockwise). Arc length puts the crowded stretch on one
+ * edge of the hexagon, beside long pieces of the hole loop. */
+static inline void hf_crowded_hole(shape *a, shape *b, int dir)
+{
+    const double pi = 3.14159265358979323846;
+    add_square(a, 0, 0, 1, 16, 1);
+    begin_loop(a);
+    for (size_t i = 0; i < 24; i++) {
+        double t = i < 16 ? (pi / 6) * (double)i / 16 : pi / 6 + (2 * pi - pi / 6) * (double)(i - 16) / 8;
+        add_point(a, 0.5 * cos(-t), 0.5 * sin(-t));
+    }
+    add_circle(b, 0, 0, 1, 20, dir);
+    add_circle(b, 0.2, 0.1, 0.4, 6, -dir);
+}
+
+static inline void hf_crowded_hole_reversed(shape *a, shape *b) { hf_crowded_hole(a, b, -1); }
+
 /* An egg with a regular 12-gon hole, and its image under a similarity
  * (scale 2, turned 100 degrees, moved) renumbered from outer vertex 3,
  * whose hole is the image of the 24-gon through the 12-gon's vertices,
@@ -224,6 +244,7 @@ static inline size_t hole_fixture_list(const hole_fixture **list)
         {"seven holes permuted", hf_seven_permuted},
         {"square/disc, sizes differ", hf_sizes_differ},
         {"egg, hole renumbered", hf_egg},
+        {"crowded hole", hf_crowded_hole_reversed},
     };
     *list = fixtures;
     return sizeof fixtures / sizeof fixtures[0];

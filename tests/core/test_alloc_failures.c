@@ -10,7 +10,8 @@
  * sweep, the same with the map-aware remesher, of the overlay construction
  * (exact rational arithmetic in GMP throughout), and of the constructions
  * for polygons with holes (bridges that need Steiner bends; one bridge per
- * hole and the overlay; auto with the cap split on a hole loop), and of the partition's steps for inputs above its
+ * hole and the overlay; auto with the cap split on a hole loop, and with
+ * the remesher's splits on one), and of the partition's steps for inputs above its
  * table limit (lowered: the fan, sampled splits). */
 #include <stdio.h>
 #include <stdlib.h>
@@ -189,6 +190,48 @@ static void test_holes_cap_split(void)
     CHECK(total > 50 && reported > 0);
 }
 
+/* The crowded hole against the hexagon (hole_fixtures.h), auto with
+ * remeshing: the remesher splits an edge of the hole loop, so the loops'
+ * new starts and the boundary's labels and coordinates are taken over. */
+static shape crowd[2];
+
+static cm_status run_crowd(char *where, size_t size)
+{
+    cm_loops in[2] = {{crowd[0].xy, crowd[0].sizes, 2}, {crowd[1].xy, crowd[1].sizes, 2}};
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = CM_CORRESPOND_AUTO;
+    cm_result *r = NULL;
+    cm_status s = cm_triangulate_loops(in, 2, &o, &r);
+    snprintf(where, size, "crowded hole: %s", r ? cm_result_message(r) : "out of memory (no handle)");
+    if (s == CM_OK && cm_result_stats(r)->n != 46) {
+        snprintf(where, size, "crowded hole: success with %zu boundary vertices, not 46", cm_result_stats(r)->n);
+        s = CM_ERR_INTERNAL;
+    }
+    cm_result_free(r);
+    return s;
+}
+
+static void test_holes_remesher_splits(void)
+{
+    hf_crowded_hole(&crowd[0], &crowd[1], -1);
+    char where[512];
+    calls = 0, fail_at = -1;
+    CHECK_MSG(run_crowd(where, sizeof where) == CM_OK, "crowded hole: the run without failures: %s", where);
+    long total = calls, reported = 0;
+    for (long i = 1; i <= total; i++) {
+        calls = 0, fail_at = i;
+        cm_status s = run_crowd(where, sizeof where);
+        if (s == CM_OK) continue;
+        reported++;
+        CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
+                  "crowded hole: allocation %ld of %ld failed: status %s, %s", i, total, cm_status_string(s), where);
+    }
+    printf("holes, remesher's boundary splits: %ld allocations, each failed once: %ld reported out of memory\n", total,
+           reported);
+    CHECK(total > 50 && reported > 0);
+}
+
 /* The overlay of two stars: its intersection points are GMP rationals, so
  * failures land inside GMP. Each must end the call with CM_ERR_NO_MEMORY
  * (the reserve carried GMP through) or a valid result, never an abort. */
@@ -325,6 +368,7 @@ int main(void)
     test_map_remesher(polygons);
     test_holes();
     test_holes_cap_split();
+    test_holes_remesher_splits();
     test_above_table_limit();
     return check_summary("test_alloc_failures");
 }

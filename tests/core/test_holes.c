@@ -593,6 +593,116 @@ static void test_capped_hole_edges_split(void)
     }
 }
 
+/* The boundary contract of an arc-length result with holes, polygon by
+ * polygon: every boundary vertex is P[e] + t (P[e + 1] - P[e]) bit for bit
+ * (e + 1 within e's loop; an input vertex at t = 0 is the input's own
+ * coordinates), the loops one after another in input order, each input
+ * vertex once and in its loop's cyclic order either way round, every loop
+ * of the same size in every polygon, the outer loop counter-clockwise and
+ * the holes clockwise. sizes: the output loops' sizes; hole_added: points
+ * not input vertices on the loops after the first. 1 when it holds. */
+static int holes_boundary_contract(const cm_result *r, const shape *const *in, size_t *sizes, size_t *hole_added)
+{
+    size_t n = cm_result_stats(r)->n, loops = in[0]->loops;
+    int ok = 1;
+    *hole_added = 0;
+    for (size_t g = 0; g < 2 && ok; g++) {
+        const shape *s = in[g];
+        const double *xy = cm_result_vertices(r, g);
+        size_t count[HF_MAX_LOOPS] = {0}, seen[HF_MAX_LOOPS] = {0}, at = 0;
+        long last = -1, step = 0;
+        for (size_t i = 0; i < n && ok; i++) {
+            double t;
+            long e = cm_result_boundary_source(r, g, i, &t);
+            if (e < 0 || (size_t)e >= s->n || !(t >= 0 && t < 1)) return 0;
+            size_t start, size, l = input_loop(s, e, &start, &size);
+            if (l < at || l >= loops) return 0;
+            if (l > at) at = l, last = -1, step = 0;
+            count[l]++;
+            const double *p = s->xy + 2 * e, *q = s->xy + 2 * (start + ((size_t)e - start + 1) % size);
+            ok &= xy[2 * i] == p[0] + t * (q[0] - p[0]) && xy[2 * i + 1] == p[1] + t * (q[1] - p[1]);
+            if (t != 0) {
+                *hole_added += g == 0 && l > 0;
+                continue;
+            }
+            seen[l]++;
+            long local = e - (long)start, m = (long)size;
+            if (last >= 0) { /* the next input vertex of the loop, one way throughout */
+                long d = ((local - last) % m + m) % m;
+                if (!step) step = d == 1 ? 1 : d == m - 1 ? -1 : 0;
+                ok &= step != 0 && d == (step > 0 ? 1 : m - 1);
+            }
+            last = local;
+        }
+        for (size_t l = 0, first = 0; l < loops && ok; first += count[l++]) {
+            ok &= seen[l] == s->sizes[l] && (g == 0 || count[l] == sizes[l]);
+            if (g == 0) sizes[l] = count[l];
+            double area = 0;
+            for (size_t i = 0; i < count[l]; i++) {
+                const double *u = xy + 2 * (first + i), *w = xy + 2 * (first + (i + 1) % count[l]);
+                area += u[0] * w[1] - w[0] * u[1];
+            }
+            ok &= l == 0 ? area > 0 : area < 0;
+        }
+    }
+    return ok;
+}
+
+/* The remesher's boundary splits on a hole loop (arclength and auto): the
+ * crowded hole against the hexagon, the disc's loops either way round.
+ * The cap split adds no point on this pair (no edge's cap binds), so the
+ * hole loop's points beyond those of the run without remeshing are the
+ * remesher's. Expected: valid (exactly, against the output's loops), 1
+ * hole, V - E + F = 0, the boundary contract above, in auto the
+ * remesher's points on the hole loop (arclength splits the outer loop
+ * and only its own, the greedy path's choice); the morph's sections valid and covering the outer
+ * loop's area minus the hole's. Index never splits (test_capped_hole_edges_split). */
+static void test_remesher_splits_hole_loops(void)
+{
+    cm_correspondence modes[2] = {CM_CORRESPOND_ARCLENGTH, CM_CORRESPOND_AUTO};
+    for (int dir = -1; dir <= 1; dir += 2)
+        for (int mode = 0; mode < 2; mode++) {
+            static shape a, b, out;
+            memset(&a, 0, sizeof a), memset(&b, 0, sizeof b), memset(&out, 0, sizeof out);
+            hf_crowded_hole(&a, &b, dir);
+            const shape *in_shape[2] = {&a, &b};
+            cm_loops in[2] = {loops_of(&a), loops_of(&b)};
+            size_t added[2] = {0, 0}, sizes[2][HF_MAX_LOOPS];
+            cm_result *r[2] = {NULL, NULL};
+            int contract[2] = {0, 0};
+            for (int remesh = 0; remesh < 2; remesh++) {
+                cm_options o;
+                cm_options_init(&o);
+                o.correspondence = modes[mode], o.remesh = remesh;
+                CHECK_MSG(cm_triangulate_loops(in, 2, &o, &r[remesh]) == CM_OK, "dir %d mode %d remesh %d: %s", dir,
+                          mode, remesh, cm_result_message(r[remesh]));
+                if (cm_result_status(r[remesh]) == CM_OK)
+                    contract[remesh] = holes_boundary_contract(r[remesh], in_shape, sizes[remesh], &added[remesh]);
+                CHECK_MSG(contract[remesh], "dir %d mode %d remesh %d: the boundary contract", dir, mode, remesh);
+            }
+            if (contract[0] && contract[1]) {
+                const cm_result *rr = r[1];
+                size_t n = cm_result_stats(rr)->n;
+                CHECK_MSG(!mode || added[1] > added[0], "dir %d, auto: %zu points on the hole loop remeshed, %zu without",
+                          dir, added[1], added[0]);
+                cm_loops refined[2] = {{cm_result_vertices(rr, 0), sizes[1], 2}, {cm_result_vertices(rr, 1), sizes[1], 2}};
+                char why[256] = "";
+                CHECK_MSG(rc_check_loops(rr, refined, 2, why, sizeof why), "dir %d mode %d: %s", dir, mode, why);
+                CHECK_MSG(rc_check_halfedges_holes(rr, n, 1, why, sizeof why), "dir %d mode %d: %s", dir, mode, why);
+                CHECK(cm_result_stats(rr)->holes == 1);
+                size_t v = cm_result_num_vertices(rr), f = cm_result_num_triangles(rr);
+                CHECK_MSG(2 * (long)v - (3 * (long)f + (long)n) + 2 * (long)f == 0, "dir %d mode %d: Euler", dir, mode);
+                out.loops = 2, out.n = n, out.sizes[0] = sizes[1][0], out.sizes[1] = sizes[1][1];
+                expect_morph("crowded hole", rr, &out);
+                printf("crowded hole, disc's loops %s, %s: %zu boundary vertices (%zu without remeshing), %zu "
+                       "points on the hole loop (%zu), smallest angle %.1f\n", dir > 0 ? "as usual" : "reversed",
+                       mode ? "auto" : "arclength", n, cm_result_stats(r[0])->n, added[1], added[0],
+                       rc_least_angle(rr, 2));
+            }
+            cm_result_free(r[0]), cm_result_free(r[1]);
+        }
+}
+
 /* Without holes the loops call is cm_triangulate_polygons, bit for bit. */
 static void test_hole_free_same(void)
 {
@@ -628,5 +738,6 @@ int main(void)
     test_auto_hole_starts();
     test_no_edge_along_an_input_edge();
     test_capped_hole_edges_split();
+    test_remesher_splits_hole_loops();
     return check_summary("test_holes");
 }

@@ -109,3 +109,51 @@ def test_morph_and_sweep_with_holes():
         assert areas.min() > 0 and abs(areas.sum() - (outer - hole)) < 1e-9 * outer
     sweep = compatmesh.sweep([a, b], tets=True)
     assert sweep.quality["min_scaled_jacobian"] > 0 and len(sweep.cells["tetra"]) == 3 * len(sweep.cells["wedge"])
+
+
+def crowded(r, m, dense):
+    """A clockwise circle of m points, dense of them in its first 30 degrees."""
+    a = -np.r_[np.linspace(0, np.pi / 6, dense, endpoint=False), np.linspace(np.pi / 6, 2 * np.pi, m - dense, endpoint=False)]
+    return np.c_[r * np.cos(a), r * np.sin(a)]
+
+
+def test_remesher_splits_hole_loop_edges():
+    """Auto: arc length puts a crowded stretch of the first hole on one
+    edge of the second's hexagon, and the remesher splits edges of the hole
+    loop there (the run without remeshing has the same 24 hole vertices in
+    the first polygon: the cap split adds none on this pair). Every boundary
+    point is P[e] + t (P[e+1] - P[e]) of its own loop bit for bit, the
+    loops come one after another (outer first), every input vertex once and
+    in its loop's order, the outer loop counter-clockwise and the hole
+    clockwise, and the meshes are valid."""
+    a = [square(1, 16), crowded(0.5, 24, 16)]
+    b = [circle(0, 0, 1, 20), circle(0.2, 0.1, 0.4, 6, -1)]
+    r = compatmesh.triangulate([a, b], correspondence="auto")
+    plain = compatmesh.triangulate([a, b], correspondence="auto", remesh=False)
+    n = r.stats["n"]
+    loop_of = [np.searchsorted(np.cumsum([len(x) for x in loops]), src["edge"], side="right")
+               for loops, src in zip((a, b), r.boundary_source)]
+    plain_hole = (np.searchsorted([16, 40], plain.boundary_source[0]["edge"], side="right") == 1).sum()
+    assert (loop_of[0] == 1).sum() > plain_hole == 24
+    for loops, vertices, source, loop in zip((a, b), r.vertices, r.boundary_source, loop_of):
+        assert (np.diff(loop) >= 0).all() and list(loop) == list(loop_of[0])
+        starts = np.r_[0, np.cumsum([len(x) for x in loops])]
+        points = np.vstack(loops)
+        for i in range(n):
+            e, t, l = source["edge"][i], source["t"][i], loop[i]
+            p, q = points[e], points[starts[l] + (e - starts[l] + 1) % len(loops[l])]
+            assert tuple(vertices[i]) == (p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])), i
+        for l, lp in enumerate(loops):
+            own = (loop == l) & (source["t"] == 0)
+            order = list(source["edge"][own] - starts[l])
+            m = len(lp)
+            assert order in ([(order[0] + i) % m for i in range(m)], [(order[0] - i) % m for i in range(m)])
+            ring = vertices[:n][loop == l]
+            area2 = exact_area2(ring.tolist())
+            assert area2 > 0 if l == 0 else area2 < 0
+    faces = r.faces
+    edges = {tuple(sorted(e)) for f in faces for e in ((f[0], f[1]), (f[1], f[2]), (f[2], f[0]))}
+    assert len(r.vertices[0]) - len(edges) + len(faces) == 0 and r.stats["holes"] == 1
+    for vertices in r.vertices:
+        p, q, s = (vertices[faces[:, i]] for i in range(3))
+        assert (((q - p)[:, 0] * (s - p)[:, 1] - (s - p)[:, 0] * (q - p)[:, 1]) > 0).all()

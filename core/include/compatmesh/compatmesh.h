@@ -175,9 +175,10 @@ typedef struct cm_options {
      * keeps every geometry valid; a split is kept only if the smallest
      * angle around it did not drop. Boundary vertices never move; boundary
      * edges are split only with CM_CORRESPOND_ARCLENGTH and _AUTO, whose
-     * boundaries take points on the input edges anyway (without holes: the
-     * point at the middle of the piece's parameter on its input edge in
-     * every polygon, reported by cm_result_boundary_source). */
+     * boundaries take points on the input edges anyway (the point at the
+     * middle of the piece's parameter on its input edge in every polygon,
+     * with holes on its own loop's, reported by
+     * cm_result_boundary_source). */
     int remesh;             /* 1 (default): remesh; 0: return the construction */
     /* Target smallest angle in degrees, in (0, 60); default 25. A triangle
      * at input corner i aims at min(target, c_i / 2), c_i the corner angle
@@ -400,7 +401,9 @@ typedef struct cm_loops {
  * refined loops, outer first), then the Steiner vertices; its boundary edges
  * are exactly the loops' edges; V - E + F = 1 - holes. The half-edge
  * arrays chain each loop's boundary half-edges separately. Remeshing runs
- * as for cm_triangulate (the loops are never touched). Such a result is
+ * as for cm_triangulate (with CM_CORRESPOND_INDEX the loops are never
+ * touched; with the arc-length correspondences the remesher may add points
+ * on the loops' input edges, each listed within its loop). Such a result is
  * morphed and swept like any other (the morph fills every hole with a
  * compatible triangulation of its own, which the sections leave out);
  * cm_check_geometry_loops and cm_result_from_meshes_loops check and rebuild

@@ -245,19 +245,28 @@ typedef struct edge_inputs {
     const int *orientation;
 } edge_inputs;
 
+/* The middle of a piece's parameters t0 (its end at a) and t1 (at b) on
+ * its input edge, nudged by ulps for step > 0 (cm_kmesh_between's
+ * steps). 0 when that is not strictly between them, else 1. */
+static int piece_middle(double t0, double t1, int step, double *t)
+{
+    double mid = 0.5 * (t0 + t1), towards = step % 2 ? t0 : t1;
+    for (int i = 0; i < (step + 1) / 2; i++) mid = nextafter(mid, towards);
+    if (!(fmin(t0, t1) < mid && mid < fmax(t0, t1))) return 0;
+    *t = mid;
+    return 1;
+}
+
 /* cm_kmesh_between on r->boundary's labels: the middle parameter of the
- * input edge the piece lies on, nudged by ulps for step > 0. */
+ * input edge the piece lies on. */
 static int edge_between(void *ctx, size_t g, int32_t ea, double ta, int32_t eb, double tb, int step, int32_t *e,
                         double *t, double xy[2])
 {
     const edge_inputs *in = ctx;
     double t0, t1;
     cm_boundary_piece(ea, ta, eb, tb, in->counts[g], in->orientation[g] < 0, e, &t0, &t1);
-    double mid = 0.5 * (t0 + t1), towards = step % 2 ? t0 : t1;
-    for (int i = 0; i < (step + 1) / 2; i++) mid = nextafter(mid, towards);
-    if (!(fmin(t0, t1) < mid && mid < fmax(t0, t1))) return 0;
-    *t = mid;
-    cm_edge_point(in->polygons[g], in->counts[g], *e, mid, xy);
+    if (!piece_middle(t0, t1, step, t)) return 0;
+    cm_edge_point(in->polygons[g], in->counts[g], *e, *t, xy);
     return 1;
 }
 
@@ -694,6 +703,63 @@ cm_status cm_triangulate(const double *xy, size_t k, size_t n, const cm_options 
 
 /* ---- polygons with holes ----------------------------------------------- */
 
+/* The input loops r->boundary's labels refer to with holes (edges
+ * numbered in each polygon's whole array), for the points the remesher
+ * adds on the refined loops' edges: loop l of polygon g starts at input
+ * vertex start[g (L + 1) + l], orientation[l k + g] its direction as
+ * cm_correspond_arclength took it. */
+typedef struct loop_edge_inputs {
+    const cm_loops *polygons;
+    size_t k, L;
+    const size_t *start;
+    const int *orientation;
+} loop_edge_inputs;
+
+/* cm_kmesh_between on the refined loops: the outer loop runs as its map
+ * does, a hole against it, so a hole's piece goes from b back to a; the
+ * point as edge_between's, on the input loop the labels name. */
+static int loop_edge_between(void *ctx, size_t g, int32_t ea, double ta, int32_t eb, double tb, int step,
+                             int32_t *e, double *t, double xy[2])
+{
+    const loop_edge_inputs *in = ctx;
+    const size_t *start = in->start + g * (in->L + 1);
+    size_t l = 0;
+    while (l + 1 < in->L && (size_t)ea >= start[l + 1]) l++;
+    size_t s = start[l], count = start[l + 1] - s;
+    double t0, t1;
+    if (l == 0)
+        cm_boundary_piece(ea - (int32_t)s, ta, eb - (int32_t)s, tb, count, in->orientation[g] < 0, e, &t0, &t1);
+    else
+        cm_boundary_piece(eb - (int32_t)s, tb, ea - (int32_t)s, ta, count, in->orientation[l * in->k + g] < 0, e,
+                          &t1, &t0);
+    if (!piece_middle(t0, t1, step, t)) return 0; /* t0 at a in both cases */
+    cm_edge_point(in->polygons[g].xy + 2 * s, count, *e, *t, xy);
+    *e += (int32_t)s;
+    return 1;
+}
+
+/* After boundary splits with holes: the refined loops' new starts (loop
+ * of each boundary vertex read off polygon 0's labels, the loops staying
+ * in order), r->boundary's coordinates and perm (the identity) for the
+ * new_n boundary vertices. 0, or -1 out of memory. */
+static int take_split_loops(cm_result *r, size_t new_n, const loop_edge_inputs *in, size_t *loop_start,
+                            int32_t **perm)
+{
+    int32_t *p = realloc(*perm, new_n * sizeof *p);
+    if (!p) return -1;
+    *perm = p;
+    if (take_split_boundary(r, new_n)) return -1;
+    for (size_t v = 0; v < new_n; v++) p[v] = (int32_t)v;
+    for (size_t l = 0; l <= in->L; l++) loop_start[l] = 0;
+    for (size_t v = 0; v < new_n; v++) {
+        size_t l = 0;
+        while (l + 1 < in->L && (size_t)r->boundary.edge[0][v] >= in->start[l + 1]) l++;
+        loop_start[l + 1]++;
+    }
+    for (size_t l = 0; l < in->L; l++) loop_start[l + 1] += loop_start[l];
+    return 0;
+}
+
 /* Internal vertex j of loop l (material to its left) is input vertex
  * start[l] + j, or start[l] + cm_loop_reversed(m, j) for a reversed loop. */
 static int32_t loop_input_index(const size_t *start, const int *reversed, size_t l, size_t j)
@@ -785,7 +851,10 @@ static cm_status permute_loop_vertices(cm_result *r, const int32_t *perm, size_t
     return CM_OK;
 }
 
-static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o)
+/* edges: NULL, or the input loops of r->boundary when the remesher may
+ * split its edges (the refined loops of run_loops_arclength). */
+static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, const loop_edge_inputs *edges,
+                           const cm_options *o)
 {
     cm_progress progress;
     cm_progress_init(&progress, o->progress, o->progress_user);
@@ -840,6 +909,8 @@ static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, con
         on = s == CM_OK ? &on_edges : NULL;
     }
     if (s == CM_OK) s = build_pieces(r, (const double *const *)geoms, k, n, &pieces, on, perm, o, &progress);
+    int splittable = edges && on; /* the labels follow the internal order: no loop reversed */
+    for (size_t l = 0; l < num_loops; l++) splittable &= !reversed[l];
     if (on) free((void *)on->loop_start);
     if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
         cm_mesh_clear(&r->mesh);
@@ -850,9 +921,11 @@ static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, con
     if (s != CM_OK) goto done;
     r->stats.seconds_build = cm_seconds_now() - t1 - r->stats.seconds_ceiling;
     r->mesh.loop_start = start, r->mesh.num_loops = num_loops; /* the remesher's boundary */
-    s = remesh_stage(r, n, o, NULL, &progress);
+    cm_remesh_boundary splits = {loop_edge_between, (void *)edges, r->boundary.edge, r->boundary.t, n};
+    s = remesh_stage(r, n, o, splittable ? &splits : NULL, &progress);
     r->mesh.loop_start = NULL, r->mesh.num_loops = 0;
     if (s != CM_OK) goto done;
+    if (splits.n > n && take_split_loops(r, n = splits.n, edges, start, &perm)) goto oom;
     if ((s = permute_loop_vertices(r, perm, n)) != CM_OK) goto done;
     double t2 = cm_seconds_now();
     if (cm_progress_report(&progress, CM_STAGE_CHECK, 0.0)) {
@@ -892,7 +965,8 @@ done:
  * lowered to the corner fan over the loops). The
  * refined loops then take the index pipeline, and r->boundary maps every
  * boundary vertex to its input edge, numbered in the polygon's whole array
- * (the edge from a vertex to the next of its loop). */
+ * (the edge from a vertex to the next of its loop); with remeshing the
+ * remesher may split the loops' edges there too (loop_edge_between). */
 static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o)
 {
     if (o->num_pins)
@@ -1010,7 +1084,8 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         cm_options by_index = *o;
         by_index.correspondence = CM_CORRESPOND_INDEX;
         by_index.pin_corners_deg = 0, by_index.max_edge = 0;
-        s = run_loops(r, refined, k, &by_index);
+        loop_edge_inputs edges = {polygons, k, L, start, loop_orientation};
+        s = run_loops(r, refined, k, !index_split && o->remesh ? &edges : NULL, &by_index);
         locate_in_input(r, s);
     }
     for (size_t l = 0; maps && l < L; l++) cm_boundary_map_clear(&maps[l]);
@@ -1048,7 +1123,7 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
     if (s == CM_OK) s = check_correspondence_options(r, options);
     if (s == CM_OK && (options->correspondence != CM_CORRESPOND_INDEX || options->max_edge > 0))
         s = run_loops_arclength(r, polygons, k, options);
-    else if (s == CM_OK) s = run_loops(r, polygons, k, options);
+    else if (s == CM_OK) s = run_loops(r, polygons, k, NULL, options);
     if (s != CM_OK) cm_result_clear_geometry(r);
     return cm_error_close(&r->error, s);
 }
