@@ -86,6 +86,10 @@
  * the partitions again from the source). */
 #define BALANCED_SOURCES 8
 #define BALANCED_FIRST_CAP 4
+/* A piece above this many times the table limit takes half as many: its
+ * window partitions are the deepest (its links the longest) and its
+ * distances cost the most of all its cuts. */
+#define BALANCED_FEWER_ABOVE 4
 /* Cuts in a row that keep a face's size, when the overlay is the only
  * other way left (else one). */
 #define MAX_REPEATS 4
@@ -1210,7 +1214,8 @@ static int link_split(part *p, item *it, long min_balance, int repeats, int wide
     if ((long)p->n > p->table_limit && !wide)
         all = LINK_ALL_PAIRS_LARGE, work = LINK_WORK_LARGE, least = LINK_MIN_SOURCES_LARGE;
     long nsrc = m <= all ? m : work / m > least ? work / m : least;
-    if (min_balance > 0) nsrc = BALANCED_SOURCES; /* any pair across will do */
+    if (min_balance > 0) /* any pair across will do */
+        nsrc = m > BALANCED_FEWER_ABOVE * p->table_limit ? BALANCED_SOURCES / 2 : BALANCED_SOURCES;
     if (nsrc > m) nsrc = m;
     double t0 = cm_seconds_now();
     face_ctx f = {p, it, local_xy(p, it), calloc(p->k, sizeof(cm_linkpart *)), malloc((size_t)nsrc * sizeof(long)),
