@@ -1367,7 +1367,7 @@ static cm_status large_step(part *p, item *it)
     if (cut == 0 && found >= 0) cut = link_split(p, it, it->m / LINK_PART, 0, 0);
     if (cut == 0 && found == 1) cut = 2;
     if (cut == 0 && found >= 0) cut = link_split(p, it, 0, 0, 0);
-    if (cut == 0 && found >= 0) cut = link_split(p, it, 0, 0, 1);
+    if (cut == 0 && found >= 0 && large_budget(p, it)) cut = link_split(p, it, 0, 0, 1);
     if (cut == 2) {
         p->st->sampled_splits++;
         cut = split_diagonal(p, it, bi, bj) == 0 ? 1 : -1;
