@@ -283,6 +283,25 @@ static void test_large_random_pairs(void)
     free(a), free(b);
 }
 
+/* Two unrelated random polygons far above a lowered table limit (2,048
+ * against 3,000 vertices would take one balanced cut; 128 takes them over
+ * five levels, as a 100,000-vertex pair does against the real limit):
+ * every piece is cut without the overlay, with the Steiner vertices of an
+ * input below the limit (about 0.4 n for this family). */
+static void test_balanced_cut_levels(void)
+{
+    enum { N = 3000 };
+    double *a = malloc(sizeof(double) * 2 * N), *b = malloc(sizeof(double) * 2 * N);
+    CHECK(a && b && rp_random_simple(a, N, 21) == 0 && rp_random_simple(b, N, 22) == 0);
+    const double *xy[2] = {a, b};
+    cm_partition_stats st;
+    CHECK(partition_limited(xy, N, 128, &st));
+    CHECK_MSG(st.fallback_count == 0 && st.steiner < 45 * N / 100 && st.link_splits > 0,
+              "random pair, limit 128: %zu Steiner, %zu fallbacks, %zu link splits", st.steiner,
+              st.fallback_count, st.link_splits);
+    free(a), free(b);
+}
+
 /* The space-partitioning generator (the scale bench's random polygons up to
  * 100,000 vertices): simple, counter-clockwise, no flat corner, checked by
  * brute force at every n up to 200; two of them at n = 400 partition into
@@ -394,6 +413,7 @@ int main(void)
     test_link_splits();
     test_above_table_limit();
     test_large_random_pairs();
+    test_balanced_cut_levels();
     test_space_partition_polygons();
     test_overlay_method();
     test_property();

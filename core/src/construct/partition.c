@@ -67,15 +67,29 @@
 #define LINK_MIN_SOURCES 48
 /* The same for the faces of an input above the table limit: it has many
  * faces of a few hundred vertices (beside the long cuts between its
- * pieces), and all their pairs would cost more than the rest together. */
-#define LINK_ALL_PAIRS_LARGE 128
-#define LINK_WORK_LARGE 16384L
+ * pieces), and all their pairs would cost more than the rest together;
+ * their number and size grow faster than n (each long link of a balanced
+ * cut runs past vertices that see only it), so a face above
+ * LINK_ALL_PAIRS_LARGE gets a fixed number of sources, O(m) window
+ * partitions in all. When that finds no cut, the budget of small inputs
+ * is tried before the overlay. */
+#define LINK_ALL_PAIRS_LARGE 64
+#define LINK_WORK_LARGE 1024L
+#define LINK_MIN_SOURCES_LARGE 16
 /* Vertex pairs tried, best first, before giving up on a stuck face; of
  * the valid cuts, this many are compared by what their halves need. */
 #define LINK_MAX_TRIES 40
 /* Sources of a cut that must leave a given share on either side: every
- * source pairs with a whole opposite arc, so a few spread ones suffice. */
+ * source pairs with a whole opposite arc, so a few spread ones suffice.
+ * Their link distances start at this cap (a piece above the table limit
+ * rarely has a balanced pair within two links, and each larger cap builds
+ * the partitions again from the source). */
 #define BALANCED_SOURCES 8
+#define BALANCED_FIRST_CAP 4
+/* A piece above this many times the table limit takes half as many: its
+ * window partitions are the deepest (its links the longest) and its
+ * distances cost the most of all its cuts. */
+#define BALANCED_FEWER_ABOVE 4
 /* Cuts in a row that keep a face's size, when the overlay is the only
  * other way left (else one). */
 #define MAX_REPEATS 4
@@ -1181,17 +1195,27 @@ static int cut_face(face_ctx *f)
     return result;
 }
 
+/* Does the item get the sources of a face of an input above the table
+ * limit (fewer than a small input's)? */
+static int large_budget(const part *p, const item *it)
+{
+    return (long)p->n > p->table_limit && it->m > LINK_ALL_PAIRS_LARGE;
+}
+
 /* Cuts the item along a minimum-link path between two of its vertices
  * whose shorter side spans at least min_balance vertices; a half keeps
- * the item's size only if the item's repeat count is at most repeats. 1
- * cut, 0 none, -1 memory. */
-static int link_split(part *p, item *it, long min_balance, int repeats)
+ * the item's size only if the item's repeat count is at most repeats;
+ * wide: the sources of a small input's faces whatever the input's size.
+ * 1 cut, 0 none, -1 memory. */
+static int link_split(part *p, item *it, long min_balance, int repeats, int wide)
 {
     long m = it->m;
-    long all = LINK_ALL_PAIRS, work = LINK_WORK;
-    if ((long)p->n > p->table_limit) all = LINK_ALL_PAIRS_LARGE, work = LINK_WORK_LARGE;
-    long nsrc = m <= all ? m : work / m > LINK_MIN_SOURCES ? work / m : LINK_MIN_SOURCES;
-    if (min_balance > 0) nsrc = BALANCED_SOURCES; /* any pair across will do */
+    long all = LINK_ALL_PAIRS, work = LINK_WORK, least = LINK_MIN_SOURCES;
+    if ((long)p->n > p->table_limit && !wide)
+        all = LINK_ALL_PAIRS_LARGE, work = LINK_WORK_LARGE, least = LINK_MIN_SOURCES_LARGE;
+    long nsrc = m <= all ? m : work / m > least ? work / m : least;
+    if (min_balance > 0) /* any pair across will do */
+        nsrc = m > BALANCED_FEWER_ABOVE * p->table_limit ? BALANCED_SOURCES / 2 : BALANCED_SOURCES;
     if (nsrc > m) nsrc = m;
     double t0 = cm_seconds_now();
     face_ctx f = {p, it, local_xy(p, it), calloc(p->k, sizeof(cm_linkpart *)), malloc((size_t)nsrc * sizeof(long)),
@@ -1209,14 +1233,19 @@ static int link_split(part *p, item *it, long min_balance, int repeats)
      * the window partitions only when no pair is within the cap, and only
      * for the sources whose partition went deeper than the cap. */
     if (open) memset(open, 1, p->k * (size_t)nsrc);
-    for (int cap = 2; result == 0; cap = cap < 8 ? 2 * cap : INT_MAX) {
+    int first = min_balance > 0 ? BALANCED_FIRST_CAP : 2;
+    for (int cap = first; result == 0; cap = cap < 8 ? 2 * cap : INT_MAX) {
         long deeper = 0;
         for (size_t g = 0; g < p->k && result == 0; g++)
             for (long r = 0; r < nsrc && result == 0; r++) {
                 if (!open[g * (size_t)nsrc + (size_t)r]) continue;
                 /* rank_pairs reads a row only at the vertices that are
-                 * not sources of earlier rows */
-                for (long w = 0; w < m; w++) need[w] = w != f.src[r] && !(f.row_of[w] >= 0 && f.row_of[w] < r);
+                 * not sources of earlier rows, at least min_balance away
+                 * either way round */
+                for (long w = 0; w < m; w++) {
+                    long d = (w - f.src[r] + m) % m, span = d < m - d ? d : m - d;
+                    need[w] = w != f.src[r] && !(f.row_of[w] >= 0 && f.row_of[w] < r) && span >= min_balance;
+                }
                 int s = cm_link_distances_needed(f.lp[g], f.src[r], cap, need, dist_row(&f, g, r));
                 if (s < 0) result = -1;
                 open[g * (size_t)nsrc + (size_t)r] = (unsigned char)(s == 1);
@@ -1335,9 +1364,10 @@ static cm_status large_step(part *p, item *it)
     if (cut == 0) found = sampled_diagonal(p, it, &bi, &bj, &balance);
     if (found == 2) return cm_fail(p->err, CM_ERR_INTERNAL, "partition: a sub-polygon is not simple");
     if (found == 1 && balance >= it->m / DIAGONAL_PART) cut = 2;
-    if (cut == 0 && found >= 0) cut = link_split(p, it, it->m / LINK_PART, 0);
+    if (cut == 0 && found >= 0) cut = link_split(p, it, it->m / LINK_PART, 0, 0);
     if (cut == 0 && found == 1) cut = 2;
-    if (cut == 0 && found >= 0) cut = link_split(p, it, 0, 0);
+    if (cut == 0 && found >= 0) cut = link_split(p, it, 0, 0, 0);
+    if (cut == 0 && found >= 0 && large_budget(p, it)) cut = link_split(p, it, 0, 0, 1);
     if (cut == 2) {
         p->st->sampled_splits++;
         cut = split_diagonal(p, it, bi, bj) == 0 ? 1 : -1;
@@ -1361,11 +1391,12 @@ static cm_status process_item(part *p, item *it)
     if (it->table < 0 && (s = table_for_item(p, it)) != CM_OK) return s;
     if (!it->stuck && common_step(p, it, &s)) return s;
     int cut = try_fan(p, it);
-    if (cut == 0) cut = link_split(p, it, 0, 0);
+    if (cut == 0) cut = link_split(p, it, 0, 0, 0);
+    if (cut == 0 && large_budget(p, it)) cut = link_split(p, it, 0, 0, 1);
     /* Before the overlay: a piece of a sliver may still be cut if a
      * half may keep its size a few times more (the overlay itself may
      * find no room in doubles for its points there). */
-    if (cut == 0 && it->repeat > 0 && it->repeat < MAX_REPEATS) cut = link_split(p, it, 0, it->repeat);
+    if (cut == 0 && it->repeat > 0 && it->repeat < MAX_REPEATS) cut = link_split(p, it, 0, it->repeat, 0);
     if (cut < 0) return no_memory(p);
     return cut ? CM_OK : fallback(p, it);
 }
