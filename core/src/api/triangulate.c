@@ -19,6 +19,7 @@
 #include "correspond/choose.h"
 #include "correspond/conformal.h"
 #include "correspond/corners.h"
+#include "correspond/smooth.h"
 #include "correspond/split.h"
 #include "construct/partition.h"
 #include "geom/polytri.h"
@@ -420,6 +421,10 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
     s = starts ? cm_correspond_choose_starts(polygons, counts, k, orientation, starts, &r->error)
                : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, starts, 1, &similar, &r->error);
+    const char *env = getenv("CM_SMOOTH_SWEEPS"), *where = getenv("CM_SMOOTH_WHERE");
+    int sweeps = env ? atoi(env) : 0, after = where && atoi(where) == 1;
+    if (s == CM_OK && !after) s = cm_boundary_map_smooth(out, polygons, counts, orientation, sweeps, &r->error);
+    if (s == CM_OK && !after) s = cm_boundary_map_smooth(&similar, polygons, counts, orientation, sweeps, &r->error);
     if (s == CM_OK) s = ceiling_of(r, out, &conformal_deg);
     if (s == CM_OK) s = ceiling_of(r, &similar, &similar_deg);
     *choice = CM_CHOICE_CONFORMAL;
@@ -429,6 +434,10 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
         *choice = CM_CHOICE_SIMILARITY;
     }
     *ceiling_deg = fmax(conformal_deg, similar_deg);
+    if (s == CM_OK && after) {
+        s = cm_boundary_map_smooth(out, polygons, counts, orientation, sweeps, &r->error);
+        if (s == CM_OK) s = ceiling_of(r, out, ceiling_deg);
+    }
     cm_boundary_map_clear(&similar);
     free(starts);
     return s;
