@@ -395,12 +395,18 @@ static cm_status conformal(cm_result *r, const double *const *polygons, const si
 
 /* The certified ceiling (the lower of the corner-fan cap and the
  * correspondence bound) of boundaries in correspondence. */
-static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *deg)
+static cm_status ceiling_bound_of(cm_result *r, const cm_boundary_map *map, double *deg, double *bound_deg)
 {
     cm_bound b;
     cm_status s = cm_bound_compute((const double *const *)map->xy, NULL, map->k, map->n, NULL, &b, &r->error);
     *deg = fmin(b.corner_fan_deg, b.correspondence_deg);
+    if (bound_deg) *bound_deg = b.correspondence_deg;
     return s;
+}
+
+static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *deg)
+{
+    return ceiling_bound_of(r, map, deg, NULL);
 }
 
 /* CM_CORRESPOND_AUTO for polygons without holes or pins: the conformal
@@ -425,10 +431,13 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
     int sweeps = env ? atoi(env) : 0, after = where && atoi(where) == 1;
     if (s == CM_OK && !after) s = cm_boundary_map_smooth(out, polygons, counts, orientation, sweeps, &r->error);
     if (s == CM_OK && !after) s = cm_boundary_map_smooth(&similar, polygons, counts, orientation, sweeps, &r->error);
-    if (s == CM_OK) s = ceiling_of(r, out, &conformal_deg);
-    if (s == CM_OK) s = ceiling_of(r, &similar, &similar_deg);
+    double conformal_bound = 0, similar_bound = 0;
+    if (s == CM_OK) s = ceiling_bound_of(r, out, &conformal_deg, &conformal_bound);
+    if (s == CM_OK) s = ceiling_bound_of(r, &similar, &similar_deg, &similar_bound);
     *choice = CM_CHOICE_CONFORMAL;
-    if (s == CM_OK && similar_deg > conformal_deg) {
+    const char *tie_env = getenv("CM_TIE");
+    int tie = tie_env && atoi(tie_env) && fabs(similar_deg - conformal_deg) <= 1e-9 * fmax(similar_deg, conformal_deg);
+    if (s == CM_OK && (tie ? similar_bound > conformal_bound : similar_deg > conformal_deg)) {
         cm_boundary_map t = *out;
         *out = similar, similar = t;
         *choice = CM_CHOICE_SIMILARITY;

@@ -8,7 +8,14 @@
 typedef struct smooth_state {
     const cm_boundary_map *map;
     double **ln; /* k arrays of n */
+    double tau;  /* jumps up to this are free */
 } smooth_state;
+
+static double penalty(const smooth_state *st, double d)
+{
+    d = fabs(d) - st->tau;
+    return d > 0 ? d * d : 0;
+}
 
 static double ln_length(const cm_boundary_map *map, size_t g, size_t j)
 {
@@ -33,7 +40,7 @@ static double jumps(const smooth_state *st, size_t g, size_t j, double a, double
             ul = a - L0[jm], ur = b - L0[j];
         else
             ul = L[jm] - L0[jm], ur = L[j] - L0[j];
-        sum += (ul - before) * (ul - before) + (ur - ul) * (ur - ul) + (after - ur) * (after - ur);
+        sum += penalty(st, ul - before) + penalty(st, ur - ul) + penalty(st, after - ur);
     }
     return sum;
 }
@@ -112,7 +119,8 @@ cm_status cm_boundary_map_smooth(cm_boundary_map *map, const double *const *poly
 {
     const size_t k = map->k, n = map->n;
     if (k < 2 || n < 4 || sweeps <= 0) return CM_OK;
-    smooth_state st = {map, calloc(k, sizeof(double *))};
+    const char *env = getenv("CM_SMOOTH_TAU");
+    smooth_state st = {map, calloc(k, sizeof(double *)), env ? atof(env) : 0};
     cm_status s = st.ln ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
     for (size_t g = 0; s == CM_OK && g < k; g++) {
         st.ln[g] = malloc(n * sizeof **st.ln);
