@@ -1,8 +1,10 @@
 """--correspondence and --pin: inputs of different vertex counts pair by
 arc length, each keeping its own vertices bit-identical on the boundary;
-pins are honoured; bad pins are one-line errors naming the file."""
+pins are honoured; bad pins are one-line errors naming the file; auto breaks a
+tie of the candidates' ceilings by their correspondence bounds."""
 import json
 import math
+import os
 
 import meshio
 import pytest
@@ -192,3 +194,34 @@ def test_report_names_the_correspondence_made(cm, tmp_path, a, b, args, choice):
     assert r.returncode == 0, r.stderr
     report = json.loads((tmp_path / "out" / "report.json").read_text())
     assert report["correspondence_choice"] == choice
+
+
+GLYPH_PAIRS = os.path.join(os.path.dirname(__file__), "glyph_pairs")
+
+
+@pytest.mark.parametrize("name, auto_floor", [
+    # Z003 'n' against '3' and Liberation Serif 'N' against 'r', 48 vertices each
+    # (cm_gen_pairs --set hard): the corner-fan cap of one input corner binds both
+    # candidates (15.07 and 12.79 degrees, equal up to rounding), so the ceiling
+    # cannot choose; the conformal boundary's correspondence bound (27.7 and 26.8
+    # against the similarity choice's 17.5 and 16.4) picks it, and the remesher
+    # reaches 14.5 and 12.2 degrees against the similarity choice's 7.5 and 7.1.
+    ("Z003_n_3_n48", 12.0),
+    ("LiberationSerif_N_r_n48", 10.0),
+])
+def test_auto_breaks_a_tie_of_ceilings_by_the_correspondence_bound(cm, tmp_path, name, auto_floor):
+    runs = {}
+    for mode in ("auto", "similarity"):
+        r = cm("triangulate", os.path.join(GLYPH_PAIRS, name + "_a.xy"), os.path.join(GLYPH_PAIRS, name + "_b.xy"),
+               "-o", mode, "--correspondence", mode)
+        assert r.returncode == 0, r.stderr
+        runs[mode] = json.loads((tmp_path / mode / "report.json").read_text())
+    auto, similar = runs["auto"], runs["similarity"]
+    assert similar["correspondence_choice"] == "similarity"
+    assert auto["correspondence_choice"] == "conformal"
+    assert auto["ceiling"]["ceiling_deg"] == pytest.approx(similar["ceiling"]["ceiling_deg"], rel=1e-9)
+    assert auto["ceiling"]["ceiling_deg"] == auto["ceiling"]["corner_fan_cap_deg"]
+    assert auto["ceiling"]["correspondence_bound_deg"] > similar["ceiling"]["correspondence_bound_deg"] + 5
+    auto_angle = min(m["min_angle_deg"] for m in auto["meshes"])
+    similar_angle = min(m["min_angle_deg"] for m in similar["meshes"])
+    assert auto_angle >= auto_floor > similar_angle

@@ -254,7 +254,8 @@ typedef enum cm_correspondence_choice {
      * pins: CM_CORRESPOND_ARCLENGTH, and AUTO or SIMILARITY with pins or
      * pin_corners_deg (arc length between the pins). */
     CM_CHOICE_ARCLENGTH,
-    /* AUTO: the conformal correspondence (the higher ceiling). */
+    /* AUTO: the conformal correspondence (the higher ceiling; where the
+     * ceilings tie, the higher correspondence bound). */
     CM_CHOICE_CONFORMAL,
     /* AUTO or SIMILARITY: arc length from the starts whose points fit a
      * similar image of polygon 0's best (for AUTO, the higher ceiling, or

@@ -402,19 +402,32 @@ static cm_status conformal(cm_result *r, const double *const *polygons, const si
 }
 
 /* The certified ceiling (the lower of the corner-fan cap and the
- * correspondence bound) of boundaries in correspondence. */
-static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *deg)
+ * correspondence bound) of boundaries in correspondence, and the
+ * correspondence bound alone (bound_deg, when not NULL). */
+static cm_status ceiling_bound_of(cm_result *r, const cm_boundary_map *map, double *deg, double *bound_deg)
 {
     cm_bound b;
     cm_status s = cm_bound_compute((const double *const *)map->xy, NULL, map->k, map->n, NULL, &b, &r->error);
     *deg = fmin(b.corner_fan_deg, b.correspondence_deg);
+    if (bound_deg) *bound_deg = b.correspondence_deg;
     return s;
 }
+
+static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *deg)
+{
+    return ceiling_bound_of(r, map, deg, NULL);
+}
+
+/* Ceilings equal up to rounding: the same input corner binds both (the
+ * corner-fan cap), which then cannot tell the correspondences apart. */
+#define CM_CEILING_TIE 1e-9
 
 /* CM_CORRESPOND_AUTO for polygons without holes or pins: the conformal
  * correspondence, or the similarity choice where that allows the higher
  * ceiling (a polygon whose corners the similarity fit pairs corner to
- * corner, a disc that would take another polygon's crowding whole);
+ * corner, a disc that would take another polygon's crowding whole); where
+ * the ceilings tie (CM_CEILING_TIE), the one with the higher
+ * correspondence bound, the distortion the remesher has to work against;
  * *found = 0 when the conformal one cannot be had (out then untouched),
  * else *choice says which was kept. */
 static cm_status auto_whole(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
@@ -429,10 +442,12 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
     s = starts ? cm_correspond_choose_starts(polygons, counts, k, orientation, starts, &r->error)
                : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, starts, 1, &similar, &r->error);
-    if (s == CM_OK) s = ceiling_of(r, out, &conformal_deg);
-    if (s == CM_OK) s = ceiling_of(r, &similar, &similar_deg);
+    double conformal_bound = 0, similar_bound = 0;
+    if (s == CM_OK) s = ceiling_bound_of(r, out, &conformal_deg, &conformal_bound);
+    if (s == CM_OK) s = ceiling_bound_of(r, &similar, &similar_deg, &similar_bound);
     *choice = CM_CHOICE_CONFORMAL;
-    if (s == CM_OK && similar_deg > conformal_deg) {
+    int tie = fabs(similar_deg - conformal_deg) <= CM_CEILING_TIE * fmax(similar_deg, conformal_deg);
+    if (s == CM_OK && (tie ? similar_bound > conformal_bound : similar_deg > conformal_deg)) {
         cm_boundary_map t = *out;
         *out = similar, similar = t;
         *choice = CM_CHOICE_SIMILARITY;
