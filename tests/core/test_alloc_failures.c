@@ -84,6 +84,12 @@ static cm_status run(const double *const *polygons, char *where, size_t size)
     return s;
 }
 
+/* Two 12-vertex stars: run() on them. */
+static double star_a[2 * N], star_b[2 * N];
+static const double *const stars[2] = {star_a, star_b};
+
+static cm_status run_stars(char *where, size_t size) { return run(stars, where, size); }
+
 /* Annuli, the hole turned half a turn in the second (bent bridges). */
 static shape annulus[2];
 static int bent; /* the last successful run had Steiner vertices (bends) */
@@ -140,28 +146,51 @@ static void test_holes(void)
     }
 }
 
-/* A 10 x 3 rectangle with a thin 8 x 1 hole against a scaled copy, auto
- * with remeshing: the hole loop's long edges bind their cap, so the cap
- * split acts on the hole loop, and the bridges' pieces take the partition's
- * rule on input edges. */
-static shape slot[2];
-
-static cm_status run_slot(char *where, size_t size)
+/* Two polygons with holes, auto with remeshing (slot_pair's or
+ * crowd_pair's run); success must keep the expected boundary size. */
+static cm_status run_auto_loops(const shape *pair, size_t boundary, const char *name, char *where, size_t size)
 {
-    cm_loops in[2] = {{slot[0].xy, slot[0].sizes, 2}, {slot[1].xy, slot[1].sizes, 2}};
+    cm_loops in[2] = {{pair[0].xy, pair[0].sizes, 2}, {pair[1].xy, pair[1].sizes, 2}};
     cm_options o;
     cm_options_init(&o);
     o.correspondence = CM_CORRESPOND_AUTO;
     cm_result *r = NULL;
     cm_status s = cm_triangulate_loops(in, 2, &o, &r);
-    snprintf(where, size, "slot: %s", r ? cm_result_message(r) : "out of memory (no handle)");
-    if (s == CM_OK && cm_result_stats(r)->n != 36) {
-        snprintf(where, size, "slot: success with %zu boundary vertices, not 36", cm_result_stats(r)->n);
+    snprintf(where, size, "%s: %s", name, r ? cm_result_message(r) : "out of memory (no handle)");
+    if (s == CM_OK && cm_result_stats(r)->n != boundary) {
+        snprintf(where, size, "%s: success with %zu boundary vertices, not %zu", name, cm_result_stats(r)->n, boundary);
         s = CM_ERR_INTERNAL;
     }
     cm_result_free(r);
     return s;
 }
+
+/* Runs `runner` once without failures, then once with each of its
+ * allocations failing: every failure must end in a clean out of memory. */
+static void fail_each_allocation(const char *name, cm_status (*runner)(char *, size_t))
+{
+    char where[512];
+    calls = 0, fail_at = -1;
+    CHECK_MSG(runner(where, sizeof where) == CM_OK, "%s: the run without failures: %s", name, where);
+    long total = calls, reported = 0;
+    for (long i = 1; i <= total; i++) {
+        calls = 0, fail_at = i;
+        cm_status s = runner(where, sizeof where);
+        if (s == CM_OK) continue;
+        reported++;
+        CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
+                  "%s: allocation %ld of %ld failed: status %s, %s", name, i, total, cm_status_string(s), where);
+    }
+    printf("%s: %ld allocations, each failed once: %ld reported out of memory\n", name, total, reported);
+    CHECK(total > 50 && reported > 0);
+}
+
+/* A 10 x 3 rectangle with a thin 8 x 1 hole against a scaled copy: the
+ * hole loop's long edges bind their cap, so the cap split acts on the hole
+ * loop, and the bridges' pieces take the partition's rule on input edges. */
+static shape slot[2];
+
+static cm_status run_slot(char *where, size_t size) { return run_auto_loops(slot, 36, "slot", where, size); }
 
 static void test_holes_cap_split(void)
 {
@@ -174,62 +203,20 @@ static void test_holes_cap_split(void)
     add_point(&slot[0], 1, 1), add_point(&slot[0], 1, 2), add_point(&slot[0], 9, 2), add_point(&slot[0], 9, 1);
     slot[1] = slot[0];
     for (size_t i = 0; i < slot[1].n; i++) slot[1].xy[2 * i] *= 2, slot[1].xy[2 * i + 1] *= 2;
-    char where[512];
-    calls = 0, fail_at = -1;
-    CHECK_MSG(run_slot(where, sizeof where) == CM_OK, "slot: the run without failures: %s", where);
-    long total = calls, reported = 0;
-    for (long i = 1; i <= total; i++) {
-        calls = 0, fail_at = i;
-        cm_status s = run_slot(where, sizeof where);
-        if (s == CM_OK) continue;
-        reported++;
-        CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
-                  "slot: allocation %ld of %ld failed: status %s, %s", i, total, cm_status_string(s), where);
-    }
-    printf("holes, cap split: %ld allocations, each failed once: %ld reported out of memory\n", total, reported);
-    CHECK(total > 50 && reported > 0);
+    fail_each_allocation("holes, cap split", run_slot);
 }
 
-/* The crowded hole against the hexagon (hole_fixtures.h), auto with
- * remeshing: the remesher splits an edge of the hole loop, so the loops'
- * new starts and the boundary's labels and coordinates are taken over. */
+/* The crowded hole against the hexagon (hole_fixtures.h): the remesher
+ * splits an edge of the hole loop, so the loops' new starts and the
+ * boundary's labels and coordinates are taken over. */
 static shape crowd[2];
 
-static cm_status run_crowd(char *where, size_t size)
-{
-    cm_loops in[2] = {{crowd[0].xy, crowd[0].sizes, 2}, {crowd[1].xy, crowd[1].sizes, 2}};
-    cm_options o;
-    cm_options_init(&o);
-    o.correspondence = CM_CORRESPOND_AUTO;
-    cm_result *r = NULL;
-    cm_status s = cm_triangulate_loops(in, 2, &o, &r);
-    snprintf(where, size, "crowded hole: %s", r ? cm_result_message(r) : "out of memory (no handle)");
-    if (s == CM_OK && cm_result_stats(r)->n != 46) {
-        snprintf(where, size, "crowded hole: success with %zu boundary vertices, not 46", cm_result_stats(r)->n);
-        s = CM_ERR_INTERNAL;
-    }
-    cm_result_free(r);
-    return s;
-}
+static cm_status run_crowd(char *where, size_t size) { return run_auto_loops(crowd, 46, "crowded hole", where, size); }
 
 static void test_holes_remesher_splits(void)
 {
     hf_crowded_hole(&crowd[0], &crowd[1], -1);
-    char where[512];
-    calls = 0, fail_at = -1;
-    CHECK_MSG(run_crowd(where, sizeof where) == CM_OK, "crowded hole: the run without failures: %s", where);
-    long total = calls, reported = 0;
-    for (long i = 1; i <= total; i++) {
-        calls = 0, fail_at = i;
-        cm_status s = run_crowd(where, sizeof where);
-        if (s == CM_OK) continue;
-        reported++;
-        CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
-                  "crowded hole: allocation %ld of %ld failed: status %s, %s", i, total, cm_status_string(s), where);
-    }
-    printf("holes, remesher's boundary splits: %ld allocations, each failed once: %ld reported out of memory\n", total,
-           reported);
-    CHECK(total > 50 && reported > 0);
+    fail_each_allocation("holes, remesher's boundary splits", run_crowd);
 }
 
 /* The overlay of two stars: its intersection points are GMP rationals, so
@@ -273,23 +260,10 @@ static void test_gmp(const double *const *polygons)
 }
 
 /* The same with the map-aware remesher. */
-static void test_map_remesher(const double *const *polygons)
+static void test_map_remesher(void)
 {
-    char where[512];
     remesher = CM_REMESHER_MAP;
-    calls = 0, fail_at = -1;
-    CHECK_MSG(run(polygons, where, sizeof where) == CM_OK, "map remesher, the run without failures: %s", where);
-    long total = calls, reported = 0;
-    for (long i = 1; i <= total; i++) {
-        calls = 0, fail_at = i;
-        cm_status s = run(polygons, where, sizeof where);
-        if (s == CM_OK) continue;
-        reported++;
-        CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
-                  "map remesher: allocation %ld of %ld failed: status %s, %s", i, total, cm_status_string(s), where);
-    }
-    printf("map remesher: %ld allocations, each failed once: %ld reported out of memory\n", total, reported);
-    CHECK(reported > 0);
+    fail_each_allocation("map remesher", run_stars);
     remesher = CM_REMESHER_GREEDY;
 }
 
@@ -342,30 +316,10 @@ static void test_above_table_limit(void)
 
 int main(void)
 {
-    double a[2 * N], b[2 * N];
-    CHECK(rp_star(a, N, 3) == 0 && rp_star(b, N, 4) == 0);
-    const double *polygons[2] = {a, b};
-    char where[512];
-    calls = 0, fail_at = -1;
-    cm_status clean = run(polygons, where, sizeof where);
-    CHECK_MSG(clean == CM_OK, "the run without failures: %s", where);
-    long total = calls, absorbed = 0, reported = 0;
-    for (long i = 1; i <= total; i++) {
-        calls = 0, fail_at = i;
-        cm_status s = run(polygons, where, sizeof where);
-        if (s == CM_OK) {
-            absorbed++;
-        } else {
-            reported++;
-            CHECK_MSG(s == CM_ERR_NO_MEMORY && strstr(where, "out of memory"),
-                      "allocation %ld of %ld failed: status %s, %s", i, total, cm_status_string(s), where);
-        }
-    }
-    printf("%ld allocations, each failed once: %ld reported out of memory, %ld absorbed\n", total,
-           reported, absorbed);
-    CHECK(total > 100 && reported > 0);
-    test_gmp(polygons);
-    test_map_remesher(polygons);
+    CHECK(rp_star(star_a, N, 3) == 0 && rp_star(star_b, N, 4) == 0);
+    fail_each_allocation("triangulate, morph, sweep", run_stars);
+    test_gmp(stars);
+    test_map_remesher();
     test_holes();
     test_holes_cap_split();
     test_holes_remesher_splits();
