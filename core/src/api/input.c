@@ -6,6 +6,7 @@
 
 #include "api/input.h"
 #include "base/error.h"
+#include "base/mesh.h"
 #include "geom/polygon_check.h"
 #include "geom/predicates.h"
 
@@ -167,8 +168,7 @@ static int winding_number(const double p[2], const double *xy, long m)
 /* The loop and the index within it of vertex v of a polygon. */
 static size_t loop_of(const size_t *start, size_t num_loops, long v, long *within)
 {
-    size_t l = 0;
-    while (l + 1 < num_loops && (size_t)v >= start[l + 1]) l++;
+    size_t l = cm_loop_of(start, num_loops, (size_t)v);
     *within = v - (long)start[l];
     return l;
 }

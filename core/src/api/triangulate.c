@@ -738,9 +738,7 @@ static int loop_edge_between(void *ctx, size_t g, int32_t ea, double ta, int32_t
 {
     const loop_edge_inputs *in = ctx;
     const size_t *start = in->start + g * (in->L + 1);
-    size_t l = 0;
-    while (l + 1 < in->L && (size_t)ea >= start[l + 1]) l++;
-    size_t s = start[l], count = start[l + 1] - s;
+    size_t l = cm_loop_of(start, in->L, (size_t)ea), s = start[l], count = start[l + 1] - s;
     double t0, t1;
     if (l == 0)
         cm_boundary_piece(ea - (int32_t)s, ta, eb - (int32_t)s, tb, count, in->orientation[g] < 0, e, &t0, &t1);
@@ -766,11 +764,7 @@ static int take_split_loops(cm_result *r, size_t new_n, const loop_edge_inputs *
     if (take_split_boundary(r, new_n)) return -1;
     for (size_t v = 0; v < new_n; v++) p[v] = (int32_t)v;
     for (size_t l = 0; l <= in->L; l++) loop_start[l] = 0;
-    for (size_t v = 0; v < new_n; v++) {
-        size_t l = 0;
-        while (l + 1 < in->L && (size_t)r->boundary.edge[0][v] >= in->start[l + 1]) l++;
-        loop_start[l + 1]++;
-    }
+    for (size_t v = 0; v < new_n; v++) loop_start[cm_loop_of(in->start, in->L, (size_t)r->boundary.edge[0][v]) + 1]++;
     for (size_t l = 0; l < in->L; l++) loop_start[l + 1] += loop_start[l];
     return 0;
 }

@@ -24,6 +24,15 @@ typedef struct cm_mesh {
 size_t cm_loops_next(const size_t *loop_start, size_t n, size_t i);
 size_t cm_loops_prev(const size_t *loop_start, size_t n, size_t i);
 
+/* The loop holding vertex (or edge) v of a polygon whose num_loops loops
+ * start at loop_start[0], loop_start[1], ... */
+static inline size_t cm_loop_of(const size_t *loop_start, size_t num_loops, size_t v)
+{
+    size_t l = 0;
+    while (l + 1 < num_loops && v >= loop_start[l + 1]) l++;
+    return l;
+}
+
 /* Position j of an m-vertex loop read the other way round from the same
  * start (0, m - 1, m - 2, ..., 1): a loop listed clockwise against the
  * same loop listed counter-clockwise. */

@@ -1264,6 +1264,16 @@ static int link_split(part *p, item *it, long min_balance, int repeats, int wide
     return result;
 }
 
+/* A link cut with the sources of the input's size, then, for a face of an
+ * input above the table limit, with a small input's. 1, 0 or -1 as
+ * link_split. */
+static int link_split_widening(part *p, item *it)
+{
+    int cut = link_split(p, it, 0, 0, 0);
+    if (cut == 0 && large_budget(p, it)) cut = link_split(p, it, 0, 0, 1);
+    return cut;
+}
+
 /* ---- the guaranteed fallback ---------------------------------------------- */
 
 static cm_status fallback(part *p, item *it)
@@ -1366,8 +1376,7 @@ static cm_status large_step(part *p, item *it)
     if (found == 1 && balance >= it->m / DIAGONAL_PART) cut = 2;
     if (cut == 0 && found >= 0) cut = link_split(p, it, it->m / LINK_PART, 0, 0);
     if (cut == 0 && found == 1) cut = 2;
-    if (cut == 0 && found >= 0) cut = link_split(p, it, 0, 0, 0);
-    if (cut == 0 && found >= 0 && large_budget(p, it)) cut = link_split(p, it, 0, 0, 1);
+    if (cut == 0 && found >= 0) cut = link_split_widening(p, it);
     if (cut == 2) {
         p->st->sampled_splits++;
         cut = split_diagonal(p, it, bi, bj) == 0 ? 1 : -1;
@@ -1391,8 +1400,7 @@ static cm_status process_item(part *p, item *it)
     if (it->table < 0 && (s = table_for_item(p, it)) != CM_OK) return s;
     if (!it->stuck && common_step(p, it, &s)) return s;
     int cut = try_fan(p, it);
-    if (cut == 0) cut = link_split(p, it, 0, 0, 0);
-    if (cut == 0 && large_budget(p, it)) cut = link_split(p, it, 0, 0, 1);
+    if (cut == 0) cut = link_split_widening(p, it);
     /* Before the overlay: a piece of a sliver may still be cut if a
      * half may keep its size a few times more (the overlay itself may
      * find no room in doubles for its points there). */
