@@ -342,6 +342,61 @@ static size_t input_loop(const shape *s, long v, size_t *start, size_t *size)
     return l;
 }
 
+/* The boundary contract of an arc-length result with holes, polygon by
+ * polygon: every boundary vertex is P[e] + t (P[e + 1] - P[e]) bit for bit
+ * (e + 1 within e's loop; an input vertex at t = 0 is the input's own
+ * coordinates), the loops one after another in input order, each input
+ * vertex once and in its loop's cyclic order either way round, every loop
+ * of the same size in every polygon, the outer loop counter-clockwise and
+ * the holes clockwise. sizes: the output loops' sizes; hole_added: points
+ * not input vertices on the loops after the first. 1 when it holds. */
+static int holes_boundary_contract(const cm_result *r, const shape *const *in, size_t *sizes, size_t *hole_added)
+{
+    size_t n = cm_result_stats(r)->n, loops = in[0]->loops;
+    int ok = 1;
+    *hole_added = 0;
+    for (size_t g = 0; g < 2 && ok; g++) {
+        const shape *s = in[g];
+        const double *xy = cm_result_vertices(r, g);
+        size_t count[HF_MAX_LOOPS] = {0}, seen[HF_MAX_LOOPS] = {0}, at = 0;
+        long last = -1, step = 0;
+        for (size_t i = 0; i < n && ok; i++) {
+            double t;
+            long e = cm_result_boundary_source(r, g, i, &t);
+            if (e < 0 || (size_t)e >= s->n || !(t >= 0 && t < 1)) return 0;
+            size_t start, size, l = input_loop(s, e, &start, &size);
+            if (l < at || l >= loops) return 0;
+            if (l > at) at = l, last = -1, step = 0;
+            count[l]++;
+            const double *p = s->xy + 2 * e, *q = s->xy + 2 * (start + ((size_t)e - start + 1) % size);
+            ok &= xy[2 * i] == p[0] + t * (q[0] - p[0]) && xy[2 * i + 1] == p[1] + t * (q[1] - p[1]);
+            if (t != 0) {
+                *hole_added += g == 0 && l > 0;
+                continue;
+            }
+            seen[l]++;
+            long local = e - (long)start, m = (long)size;
+            if (last >= 0) { /* the next input vertex of the loop, one way throughout */
+                long d = ((local - last) % m + m) % m;
+                if (!step) step = d == 1 ? 1 : d == m - 1 ? -1 : 0;
+                ok &= step != 0 && d == (step > 0 ? 1 : m - 1);
+            }
+            last = local;
+        }
+        for (size_t l = 0, first = 0; l < loops && ok; first += count[l++]) {
+            ok &= seen[l] == s->sizes[l] && (g == 0 || count[l] == sizes[l]);
+            if (g == 0) sizes[l] = count[l];
+            double area = 0;
+            for (size_t i = 0; i < count[l]; i++) {
+                const double *u = xy + 2 * (first + i), *w = xy + 2 * (first + (i + 1) % count[l]);
+                area += u[0] * w[1] - w[0] * u[1];
+            }
+            ok &= l == 0 ? area > 0 : area < 0;
+        }
+    }
+    return ok;
+}
+
 /* Arc-length and auto correspondences with holes: loops of different
  * sizes pair loop by loop. Expected: valid (checked exactly against the
  * refined loops the result reports), every input vertex of every loop a
@@ -370,35 +425,8 @@ static void test_arclength_loops(void)
                 cm_result_free(r);
                 continue;
             }
-            size_t n = cm_result_stats(r)->n, sizes[2] = {0, 0};
-            int contract = 1;
-            for (size_t g = 0; g < 2; g++) {
-                const shape *s = in_shape[g];
-                const double *xy = cm_result_vertices(r, g);
-                size_t seen = 0, loop_sizes[2] = {0, 0};
-                for (size_t i = 0; i < n; i++) {
-                    double t;
-                    long e = cm_result_boundary_source(r, g, i, &t);
-                    if (e < 0 || (size_t)e >= s->n || !(t >= 0 && t < 1)) {
-                        contract = 0;
-                        break;
-                    }
-                    size_t start, size, l = input_loop(s, e, &start, &size);
-                    loop_sizes[l]++;
-                    const double *p = s->xy + 2 * e, *q = s->xy + 2 * (start + ((size_t)e - start + 1) % size);
-                    if (t == 0) {
-                        contract &= memcmp(xy + 2 * i, p, 2 * sizeof(double)) == 0;
-                        seen++;
-                    } else {
-                        double scale = fabs(q[0] - p[0]) + fabs(q[1] - p[1]);
-                        contract &= fabs(xy[2 * i] - (p[0] + t * (q[0] - p[0]))) +
-                                        fabs(xy[2 * i + 1] - (p[1] + t * (q[1] - p[1]))) <= 1e-12 * scale;
-                    }
-                }
-                contract &= seen == s->n;
-                if (g == 0) sizes[0] = loop_sizes[0], sizes[1] = loop_sizes[1];
-                else contract &= sizes[0] == loop_sizes[0] && sizes[1] == loop_sizes[1];
-            }
+            size_t n = cm_result_stats(r)->n, sizes[HF_MAX_LOOPS], added;
+            int contract = holes_boundary_contract(r, in_shape, sizes, &added);
             CHECK_MSG(contract, "mode %d remesh %d: the boundary contract", mode, remesh);
             if (contract) {
                 cm_loops refined[2] = {{cm_result_vertices(r, 0), sizes, 2}, {cm_result_vertices(r, 1), sizes, 2}};
@@ -591,61 +619,6 @@ static void test_capped_hole_edges_split(void)
         }
         cm_result_free(r);
     }
-}
-
-/* The boundary contract of an arc-length result with holes, polygon by
- * polygon: every boundary vertex is P[e] + t (P[e + 1] - P[e]) bit for bit
- * (e + 1 within e's loop; an input vertex at t = 0 is the input's own
- * coordinates), the loops one after another in input order, each input
- * vertex once and in its loop's cyclic order either way round, every loop
- * of the same size in every polygon, the outer loop counter-clockwise and
- * the holes clockwise. sizes: the output loops' sizes; hole_added: points
- * not input vertices on the loops after the first. 1 when it holds. */
-static int holes_boundary_contract(const cm_result *r, const shape *const *in, size_t *sizes, size_t *hole_added)
-{
-    size_t n = cm_result_stats(r)->n, loops = in[0]->loops;
-    int ok = 1;
-    *hole_added = 0;
-    for (size_t g = 0; g < 2 && ok; g++) {
-        const shape *s = in[g];
-        const double *xy = cm_result_vertices(r, g);
-        size_t count[HF_MAX_LOOPS] = {0}, seen[HF_MAX_LOOPS] = {0}, at = 0;
-        long last = -1, step = 0;
-        for (size_t i = 0; i < n && ok; i++) {
-            double t;
-            long e = cm_result_boundary_source(r, g, i, &t);
-            if (e < 0 || (size_t)e >= s->n || !(t >= 0 && t < 1)) return 0;
-            size_t start, size, l = input_loop(s, e, &start, &size);
-            if (l < at || l >= loops) return 0;
-            if (l > at) at = l, last = -1, step = 0;
-            count[l]++;
-            const double *p = s->xy + 2 * e, *q = s->xy + 2 * (start + ((size_t)e - start + 1) % size);
-            ok &= xy[2 * i] == p[0] + t * (q[0] - p[0]) && xy[2 * i + 1] == p[1] + t * (q[1] - p[1]);
-            if (t != 0) {
-                *hole_added += g == 0 && l > 0;
-                continue;
-            }
-            seen[l]++;
-            long local = e - (long)start, m = (long)size;
-            if (last >= 0) { /* the next input vertex of the loop, one way throughout */
-                long d = ((local - last) % m + m) % m;
-                if (!step) step = d == 1 ? 1 : d == m - 1 ? -1 : 0;
-                ok &= step != 0 && d == (step > 0 ? 1 : m - 1);
-            }
-            last = local;
-        }
-        for (size_t l = 0, first = 0; l < loops && ok; first += count[l++]) {
-            ok &= seen[l] == s->sizes[l] && (g == 0 || count[l] == sizes[l]);
-            if (g == 0) sizes[l] = count[l];
-            double area = 0;
-            for (size_t i = 0; i < count[l]; i++) {
-                const double *u = xy + 2 * (first + i), *w = xy + 2 * (first + (i + 1) % count[l]);
-                area += u[0] * w[1] - w[0] * u[1];
-            }
-            ok &= l == 0 ? area > 0 : area < 0;
-        }
-    }
-    return ok;
 }
 
 /* The remesher's boundary splits on a hole loop (arclength and auto): the
