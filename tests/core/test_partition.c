@@ -256,6 +256,17 @@ static void test_above_table_limit(void)
     free(a), free(b);
 }
 
+/* Two unrelated random polygons of n vertices against a table limit:
+ * valid, no piece to the overlay, some link splits, and fewer Steiner
+ * vertices than 0.45 n. */
+static void check_unrelated_pair(const double *const *xy, int n, long limit, const char *name)
+{
+    cm_partition_stats st;
+    CHECK_MSG(partition_limited(xy, n, limit, &st), "%s: partitioned and valid", name);
+    CHECK_MSG(st.fallback_count == 0 && st.steiner < (size_t)(45 * n / 100) && st.link_splits > 0,
+              "%s: %zu Steiner, %zu fallbacks, %zu link splits", name, st.steiner, st.fallback_count, st.link_splits);
+}
+
 /* Pairs above the table limit (the default one) through the internal
  * entry. A random polygon against a disc: the most balanced diagonals of
  * the random polygon's triangulation are common, so the pieces get
@@ -276,10 +287,7 @@ static void test_large_random_pairs(void)
               "random polygon against a disc: %zu Steiner, %zu fallbacks, %zu sampled splits, %zu link splits",
               st.steiner, st.fallback_count, st.sampled_splits, st.link_splits);
     CHECK(rp_random_simple(b, N, 8) == 0);
-    CHECK(partition_limited(xy, N, CM_PARTITION_MAX_VERTICES, &st));
-    CHECK_MSG(st.fallback_count == 0 && st.steiner < 45 * N / 100 && st.link_splits > 0,
-              "unrelated random pair: %zu Steiner, %zu fallbacks, %zu link splits", st.steiner,
-              st.fallback_count, st.link_splits);
+    check_unrelated_pair(xy, N, CM_PARTITION_MAX_VERTICES, "unrelated random pair");
     free(a), free(b);
 }
 
@@ -294,11 +302,7 @@ static void test_balanced_cut_levels(void)
     double *a = malloc(sizeof(double) * 2 * N), *b = malloc(sizeof(double) * 2 * N);
     CHECK(a && b && rp_random_simple(a, N, 21) == 0 && rp_random_simple(b, N, 22) == 0);
     const double *xy[2] = {a, b};
-    cm_partition_stats st;
-    CHECK(partition_limited(xy, N, 128, &st));
-    CHECK_MSG(st.fallback_count == 0 && st.steiner < 45 * N / 100 && st.link_splits > 0,
-              "random pair, limit 128: %zu Steiner, %zu fallbacks, %zu link splits", st.steiner,
-              st.fallback_count, st.link_splits);
+    check_unrelated_pair(xy, N, 128, "random pair, limit 128");
     free(a), free(b);
 }
 
