@@ -756,12 +756,15 @@ static long coarsen(remesher *x, double threshold)
 }
 
 /* The boundary's caps (criteria.h), edge caps with their margin: bcap[0 .. n),
- * vcap = bcap + n, in *out. Computed once, for every run. */
-static cm_status boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double **out)
+ * vcap = bcap + n, in *out; with `whole` (no boundary edge is ever split)
+ * also what the vertices near each edge allow. Computed once, for every
+ * run. */
+static cm_status boundary_caps(const cm_mesh *mesh, size_t n, int whole, cm_progress *progress, double **out)
 {
     double *bcap = *out = malloc(2 * n * sizeof *bcap);
     if (!bcap) return CM_ERR_NO_MEMORY;
     int s = cm_boundary_caps(mesh, n, progress, bcap, bcap + n);
+    if (!s && whole) s = cm_near_vertex_caps(mesh, n, progress, bcap);
     if (s) {
         free(bcap), *out = NULL;
         return s == CM_CAPS_NOT_TRIANGULATED ? CM_ERR_INTERNAL : s == CM_CANCELLED ? CM_ERR_CANCELLED : CM_ERR_NO_MEMORY;
@@ -845,7 +848,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
 {
     remesher x = {0}, y = {0};
     double *bcap;
-    cm_status s = boundary_caps(mesh, n, progress, &bcap);
+    cm_status s = boundary_caps(mesh, n, !splits, progress, &bcap);
     if (s == CM_OK) s = remesh_run(&x, mesh, n, bcap, o, ceiling_deg, splits, progress, rep);
     /* The greedy remesher can stall far below its aim, typically on a
      * sliver its local moves cannot reach (a slivered result also makes
