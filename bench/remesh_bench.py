@@ -37,7 +37,12 @@ Per pair, from the input alone:
   edge     the boundary-edge cap (edge_cap below): with boundary edges never
            split, a triangle on edge ab whose base angles are at least alpha
            contains the isosceles triangle on ab of base angle alpha, which no
-           boundary point may enter; the smallest over both polygons
+           boundary point may enter; and one step further (near_vertex_cap
+           below): a boundary vertex p near ab must stay out of that
+           triangle and out of the one across its side, which bounds alpha
+           by half the angle p subtends at a or b, by atan(2 h / |ab|) (h
+           p's height over ab), or by a triangle abp or ab and a neighbour;
+           the smallest over both polygons
   T        min(25, c / 2, fan, bound), and in index mode also edge: the
            target a remesher can be held to
 Per pair, build and mode (every run interleaved with the others and with
@@ -210,6 +215,88 @@ def edge_cap(points):
         h = np.where(t0 <= t1, h, np.inf)
         best = min(best, math.degrees(math.atan2(2 * h.min(), 2 * half)))
     return best
+
+
+def _ccw(points):
+    xy = np.asarray(points, dtype=float)
+    if sum(xy[i - 1, 0] * xy[i, 1] - xy[i, 0] * xy[i - 1, 1] for i in range(len(xy))) < 0:
+        xy = xy[::-1]  # counter-clockwise: the inside is left of each edge
+    return xy
+
+
+def _smallest_angle(p, q, r):
+    def at(u, v, w):
+        x, y = v - u, w - u
+        return math.atan2(abs(x[0] * y[1] - x[1] * y[0]), x @ y)
+    return min(at(p, q, r), at(q, r, p), at(r, p, q))
+
+
+def near_vertex_cap(points):
+    """The boundary-edge cap one step further (index mode, degrees): for
+    boundary edge ab (counter-clockwise, |ab| = L) and a boundary vertex p
+    left of it at height h, seen at angle phi_a from a (between ab and ap)
+    and phi_b from b, the triangle abc on ab with all angles >= alpha has
+        alpha <= max(min(phi_b, max(phi_b / 2, atan(2 h / L))),   (1)
+                     min(phi_a, max(phi_a / 2, atan(2 h / L))),   (2)
+                     smallest angle of abp,                       (3)
+                     smallest angle of the triangle of ab and a boundary
+                     neighbour of a or b, where it is one)        (4)
+    Proof: p is not inside the open triangle abc, whose angles at b and a
+    are beta and gamma, so beta <= phi_b or gamma <= phi_a. Say beta <=
+    phi_b, psi = phi_b - beta (the other case is (2)). If c = p it is (3);
+    if bc is a boundary edge, c is b's other neighbour, (4). Otherwise the
+    triangle bcx across bc has angles >= alpha at b and c, so it holds the
+    open isosceles triangle on bc of base angle alpha, and p is not in that
+    (x = p needs psi >= alpha too): psi >= alpha, so alpha <= phi_b / 2, or
+    |bc| <= |bp| sin(alpha + psi) / sin(alpha) (p seen from c at alpha or
+    more). |bc| = L sin(gamma) / sin(beta + gamma) grows with gamma, so
+    gamma = alpha is its least: L sin^2(alpha) <= |bp| sin(alpha + beta)
+    sin(alpha + phi_b - beta) = |bp| (cos(phi_b - 2 beta) - cos(2 alpha +
+    phi_b)) / 2, whose right side over alpha <= beta <= phi_b is largest at
+    beta = alpha once alpha >= phi_b / 2: L sin^2(alpha) <= h sin(2 alpha),
+    tan(alpha) <= 2 h / L. And alpha <= beta <= phi_b. The cap is the
+    least over edges and vertices of that maximum; (4) counts only where the
+    neighbour is left of ab and no vertex lies inside the triangle."""
+    xy = _ccw(points)
+    n, best = len(xy), math.pi / 2
+    idx = np.arange(n)
+
+    def left(a, b, q):  # twice the signed area of abq, q one point or many
+        q = np.asarray(q)
+        return (b[0] - a[0]) * (q[..., 1] - a[1]) - (b[1] - a[1]) * (q[..., 0] - a[0])
+
+    def neighbour_triangle(t, own):
+        """(4) for triangle t (counter-clockwise when it is one), own its
+        vertices' indices: 0 where it cannot be a triangle of the mesh."""
+        if not left(t[0], t[1], t[2]) > 0:
+            return 0.0
+        others = xy[~np.isin(idx, own)]
+        inside = np.ones(len(others), bool)
+        for m in range(3):
+            inside &= left(t[m], t[(m + 1) % 3], others) > 0
+        return 0.0 if inside.any() else _smallest_angle(*t)
+
+    for i in range(n):
+        j = (i + 1) % n
+        a, b = xy[i], xy[j]
+        L = math.hypot(*(b - a))
+        u = (b - a) / L
+        escape = max(neighbour_triangle((xy[i - 1], a, b), ((i - 1) % n, i, j)),
+                     neighbour_triangle((a, b, xy[(j + 1) % n]), (i, j, (j + 1) % n)))
+        r = xy - a
+        h = u[0] * r[:, 1] - u[1] * r[:, 0]
+        along = r @ u
+        keep = (h > 0) & (idx != i) & (idx != j)
+        h, along = h[keep], along[keep]
+        phi_a, phi_b = np.arctan2(h, along), np.arctan2(h, L - along)
+        w = np.arctan(2 * h / L)
+        cap = np.maximum.reduce([np.minimum(phi_b, np.maximum(phi_b / 2, w)),
+                                 np.minimum(phi_a, np.maximum(phi_a / 2, w)),
+                                 np.minimum(np.minimum(phi_a, phi_b), math.pi - phi_a - phi_b),
+                                 np.full(len(h), escape)])
+        if len(cap):
+            best = min(best, cap.min())
+    return math.degrees(best)
 
 
 def smallest_corner(polygons):
@@ -568,7 +655,7 @@ def static_row(pair, args, cache):
     bound = cache.get(pair) if not args.no_bound else {}
     b = bound.get("bound_deg")
     target = min(TARGET_CAP, c / 2, fan, b if b is not None else 60)
-    edge = min(edge_cap(p) for p in pair.polygons)
+    edge = min(min(edge_cap(p), near_vertex_cap(p)) for p in pair.polygons)
     return {"name": pair.name, "family": pair.family, "half": pair.half, "n": pair.n,
             "key": content_key(pair.files), "c": c, "fan": fan, "bound_deg": b, "K": bound.get("K"),
             "edge": edge, "T": target, "T_index": min(target, edge)}

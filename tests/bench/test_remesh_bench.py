@@ -51,6 +51,26 @@ def test_edge_cap_by_hand():
     assert rb.edge_cap(spike) == pytest.approx(math.degrees(math.atan(2 * 0.1 / 4)))
 
 
+
+def test_near_vertex_cap_by_hand():
+    # a notch from the top down to p = (3.2, 0.3), 0.8 short of the bottom
+    # edge's end b = (4, 0): the bottom edge's triangle must keep p out, so
+    # its angle at b stays within phi_b = atan(0.3 / 0.8), and the triangle
+    # across its side from b holds p unless it splits phi_b: at most
+    # phi_b / 2 (above atan(2 * 0.3 / 4), an apex at p's height, and the
+    # 5.4 degrees at a of p itself as the apex); the isosceles edge cap
+    # allows phi_b whole
+    notch = [(0, 0), (4, 0), (4, 2), (3.7, 2), (3.2, 0.3), (2.7, 2), (0, 2)]
+    cap = math.degrees(math.atan(0.3 / 0.8)) / 2
+    assert rb.near_vertex_cap(notch) == pytest.approx(cap)
+    assert rb.near_vertex_cap(notch[::-1]) == pytest.approx(cap)
+    assert rb.edge_cap(notch) == pytest.approx(2 * cap)
+    # a 4 x 1 box: each far corner, seen at 90 degrees from a long edge's
+    # end, allows 45 (the isosceles cap, 26.6, binds there)
+    box = [(0, 0), (4, 0), (4, 1), (0, 1)]
+    assert rb.near_vertex_cap(box) == pytest.approx(45)
+
+
 def bench(tmp_path, *extra):
     out, raw = tmp_path / "out.md", tmp_path / "out.json"
     run = subprocess.run([sys.executable, SCRIPT, "--compatmesh", CLI, "--gen-pairs", GEN,

@@ -517,9 +517,34 @@ static void test_boundary_caps(void)
     CHECK_MSG(fabs(bcap[1] - CM_PI / 3) < 1e-15, "side edge cap %.17g", bcap[1] * DEG);
     CHECK_MSG(fabs(bcap[7 + 4] - 0.75 * CM_PI) < 1e-15, "notch vcap %.17g", bcap[7 + 4] * DEG);
     caps_mismatches(&m, 7, "notched box");
+    /* One triangle further: the tip, seen at 45 degrees from both ends of
+     * the bottom edge, leaves its cap; the right side's triangle keeps
+     * (1.5, 1) out of it and of the one across its side: 45 degrees, where
+     * both neighbours' triangles have 26.6 */
+    double whole[14];
+    memcpy(whole, bcap, sizeof whole);
+    CHECK(cm_near_vertex_caps(&m, 7, NULL, bcap) == 0);
+    CHECK_MSG(bcap[0] == whole[0], "notched box: bottom edge %.17g", bcap[0] * DEG);
+    CHECK_MSG(fabs(bcap[1] - CM_PI / 4) < 1e-15, "notched box: side edge %.17g", bcap[1] * DEG);
+    for (size_t i = 0; i < 7; i++) CHECK(bcap[i] <= whole[i]);
     free(m.tri);
     m.tri = NULL, m.nt = 0; /* no triangles: no walk */
     CHECK(cm_boundary_caps(&m, 7, NULL, bcap, bcap + 7) == CM_CAPS_NOT_TRIANGULATED);
+
+    /* A 4 x 2 box whose notch reaches down to p = (3.2, 0.3), 0.8 short of
+     * the bottom edge's end b = (4, 0): seen from b at phi = atan(0.3 /
+     * 0.8), p allows the bottom edge's triangle phi / 2 one triangle
+     * further; the isosceles cap, where p enters first, allows 2 phi */
+    double deep[14] = {0, 0, 4, 0, 4, 2, 3.7, 2, 3.2, 0.3, 2.7, 2, 0, 2}, dcap[14];
+    CHECK(loops_mesh(deep, 7, one, 1, geom, &m) == 0);
+    CHECK(cm_boundary_caps(&m, 7, NULL, dcap, dcap + 7) == 0);
+    CHECK_MSG(fabs(dcap[0] - atan(0.375)) < 1e-12, "deep notch: bottom edge cap %.17g", dcap[0] * DEG);
+    double iso[7];
+    memcpy(iso, dcap, sizeof iso);
+    CHECK(cm_near_vertex_caps(&m, 7, NULL, dcap) == 0);
+    CHECK_MSG(fabs(dcap[0] - atan(0.375) / 2) < 1e-12, "deep notch: near-vertex cap %.17g", dcap[0] * DEG);
+    for (size_t i = 0; i < 7; i++) CHECK(dcap[i] <= iso[i]);
+    free(m.tri);
 
     /* Random simple polygons, stars and combs: each alone (constrained
      * Delaunay) and two unrelated ones through the construction (long

@@ -218,6 +218,164 @@ static double edge_cap(const cm_mesh *mesh, walk_mesh *w, const double *xy, size
     return cap_of(&s.f, s.h);
 }
 
+/* ---- one triangle further: a vertex near the edge ----------------------------- */
+
+/* Where no boundary edge is split (index mode), the triangle abc on edge
+ * i = ab keeps every boundary vertex p out of it, and out of the triangle
+ * across its side bc (or ac) too. With p at height h over ab (L long, the
+ * inside on its left), seen at angle phi_a from a and phi_b from b, a
+ * smallest angle alpha needs one of
+ *   min(phi_b, max(phi_b / 2, atan(2 h / L))), the same with phi_a,
+ *   the smallest angle of abp, or
+ *   that of ab and a's or b's other boundary neighbour (that triangle
+ *   left of ab, with no boundary vertex inside)
+ * at alpha or above. Proof (bench/CEILING.md, "Index mode: the near-vertex
+ * cap"): p not inside abc means beta <= phi_b or gamma <= phi_a (its
+ * angles at b, a); say beta. Then c = p, or bc is b's other boundary edge,
+ * or the triangle across bc holds the isosceles triangle of base angle
+ * alpha on bc, which p must stay out of: phi_b - beta >= alpha (so alpha
+ * <= phi_b / 2), or |bc| = L sin(gamma) / sin(beta + gamma) <= |bp|
+ * sin(alpha + phi_b - beta) / sin(alpha), which at its least (gamma =
+ * alpha) and best (beta = alpha) is tan(alpha) <= 2 h / L. */
+
+/* The largest of the first three for p, in e's frame; HUGE_VAL where p is
+ * not left of e (nothing to keep out). */
+static double vertex_bound(const frame *f, const double *p)
+{
+    double rx = p[0] - f->mx, ry = p[1] - f->my;
+    double s = rx * f->ux + ry * f->uy, d = -rx * f->uy + ry * f->ux;
+    if (!(d > 0)) return HUGE_VAL;
+    double phi_a = atan2(d, f->half + s), phi_b = atan2(d, f->half - s), w = atan(d / f->half);
+    double by_b = fmin(phi_b, fmax(0.5 * phi_b, w)), by_a = fmin(phi_a, fmax(0.5 * phi_a, w));
+    double by_p = fmin(fmin(phi_a, phi_b), CM_PI - phi_a - phi_b);
+    return fmax(fmax(by_a, by_b), by_p);
+}
+
+static double cross3(const double *a, const double *b, const double *c)
+{
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+static double smallest_angle(const double *a, const double *b, const double *c)
+{
+    double t = CM_PI;
+    const double *v[3] = {a, b, c};
+    for (int k = 0; k < 3; k++) {
+        const double *o = v[k], *p = v[(k + 1) % 3], *q = v[(k + 2) % 3];
+        double ux = p[0] - o[0], uy = p[1] - o[1], wx = q[0] - o[0], wy = q[1] - o[1];
+        t = fmin(t, atan2(fabs(ux * wy - uy * wx), ux * wx + uy * wy));
+    }
+    return t;
+}
+
+/* A neighbour's triangle t (a, b and the neighbour, counter-clockwise when
+ * it is one): its smallest angle, 0 when it is not left of e. */
+static double neighbour_triangle(const double *const t[3])
+{
+    return cross3(t[0], t[1], t[2]) > 0 ? smallest_angle(t[0], t[1], t[2]) : 0;
+}
+
+static int strictly_inside(const double *const t[3], const double *p)
+{
+    return cross3(t[0], t[1], p) > 0 && cross3(t[1], t[2], p) > 0 && cross3(t[2], t[0], p) > 0;
+}
+
+/* Only a vertex with all three below cap lowers it: h below cap's
+ * isosceles height and phi_a, phi_b below 2 cap, a convex region R (the
+ * isosceles triangle of base angle 2 cap cut at that height). Four
+ * half-planes c0 s + c1 d > c2 (frame coordinates) beyond it, padded. */
+typedef struct near_region { double side[4][3]; } near_region;
+
+static int segment_may_meet(const near_region *r, const frame *f, const double *p, const double *q)
+{
+    double s[2], d[2];
+    const double *e[2] = {p, q};
+    for (int m = 0; m < 2; m++) {
+        double rx = e[m][0] - f->mx, ry = e[m][1] - f->my;
+        s[m] = rx * f->ux + ry * f->uy, d[m] = -rx * f->uy + ry * f->ux;
+    }
+    for (int k = 0; k < 4; k++) {
+        const double *c = r->side[k];
+        if (c[0] * s[0] + c[1] * d[0] > c[2] && c[0] * s[1] + c[1] * d[1] > c[2]) return 0;
+    }
+    return 1;
+}
+
+/* Edge i's cap lowered by the vertices near it, given its isosceles cap
+ * (unscaled). The vertices looked at are the corners of the triangles
+ * that meet R, reached from edge i's triangle across edges that meet it:
+ * a vertex of R left out only leaves the cap higher. A neighbour's
+ * triangle counts unless one of those vertices lies inside it (again on
+ * the safe side). Returns the cap, or -1 (out of memory). */
+static double near_vertex_cap(const cm_mesh *mesh, walk_mesh *w, const double *xy, size_t n, size_t i,
+                              double cap)
+{
+    if (!(cap > 0) || 2 * cap >= CM_PI) return cap;
+    size_t j = cm_loops_next(mesh->loop_start, n, i);
+    size_t pa = cm_loops_prev(mesh->loop_start, n, i), nb = cm_loops_next(mesh->loop_start, n, j);
+    frame f = frame_of(xy + 2 * i, xy + 2 * j);
+    double h = f.half * tan(cap), c2 = cos(2 * cap), s2 = sin(2 * cap);
+    double pad = 1e-9 * (2 * f.half + fabs(f.mx) + fabs(f.my));
+    /* beyond: d < 0; d > h; seen from a above 2 cap: c2 d - s2 (s + half) > 0; from b likewise */
+    near_region r = {{{0, -1, pad}, {0, 1, h + pad}, {-s2, c2, s2 * f.half + pad}, {s2, c2, s2 * f.half + pad}}};
+    const double *a = xy + 2 * i, *b = xy + 2 * j;
+    const double *ta[3] = {xy + 2 * pa, a, b}, *tb[3] = {a, b, xy + 2 * nb};
+    double best = HUGE_VAL;
+    int void_a = 0, void_b = 0;
+    if (++w->walk == 0) {
+        for (size_t t = 0; t < mesh->nt; t++) w->seen[t] = 0;
+        w->walk = 1;
+    }
+    w->stack.n = 0;
+    if (cm_ibuf_push(&w->stack, w->edge_tri[i])) return -1;
+    w->seen[w->edge_tri[i]] = w->walk;
+    while (w->stack.n > 0) {
+        int32_t t = w->stack.a[--w->stack.n];
+        for (int c = 0; c < 3; c++) {
+            int32_t v = w->tri[3 * t + c];
+            if (v >= 0 && (size_t)v < n && (size_t)v != i && (size_t)v != j) {
+                const double *p = xy + 2 * v;
+                best = fmin(best, vertex_bound(&f, p));
+                void_a |= (size_t)v != pa && strictly_inside(ta, p);
+                void_b |= (size_t)v != nb && strictly_inside(tb, p);
+            }
+            int32_t e0 = w->tri[3 * t + (c + 1) % 3], e1 = w->tri[3 * t + (c + 2) % 3], u = w->nbr[3 * t + c];
+            if (u >= 0 && w->seen[u] != w->walk && segment_may_meet(&r, &f, xy + 2 * e0, xy + 2 * e1)) {
+                w->seen[u] = w->walk;
+                if (cm_ibuf_push(&w->stack, u)) return -1;
+            }
+        }
+    }
+    double escape = fmax(void_a ? 0 : neighbour_triangle(ta), void_b ? 0 : neighbour_triangle(tb));
+    return fmin(cap, fmax(best, escape));
+}
+
+int cm_near_vertex_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double *bcap)
+{
+    walk_mesh w;
+    if (walk_build(&w, mesh, n)) return CM_NO_MEMORY;
+    for (size_t i = 0; i < n; i++)
+        if (w.edge_tri[i] < 0) {
+            walk_free(&w);
+            return CM_CAPS_NOT_TRIANGULATED;
+        }
+    for (size_t g = 0; g < mesh->k; g++)
+        for (size_t i = 0; i < n; i++) {
+            if (cm_progress_check(progress)) {
+                walk_free(&w);
+                return CM_CANCELLED;
+            }
+            double cap = near_vertex_cap(mesh, &w, mesh->xy[g], n, i, bcap[i]);
+            if (cap < 0) {
+                walk_free(&w);
+                return CM_NO_MEMORY;
+            }
+            bcap[i] = cap;
+        }
+    walk_free(&w);
+    return 0;
+}
+
 int cm_boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double *bcap,
                      double *vcap)
 {

@@ -30,6 +30,15 @@
 int cm_boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double *bcap,
                      double *vcap);
 
+/* Where no boundary edge is split (index mode): lowers each bcap[i] (the
+ * unscaled caps of cm_boundary_caps, the least over the geometries) to
+ * what a boundary vertex near edge i allows one triangle further (the
+ * edge's triangle and the one across its side must both keep it out;
+ * criteria.c has the proof), in every geometry; the vertices looked at
+ * are found by a walk as in cm_boundary_caps. 0, CM_NO_MEMORY,
+ * CM_CANCELLED or CM_CAPS_NOT_TRIANGULATED. */
+int cm_near_vertex_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double *bcap);
+
 /* The edge cap of boundary edge i (unscaled, radians) in geometry xy
  * (the n boundary vertices of mesh's loops) by examining every boundary
  * segment, O(n), triangles not needed: the reference cm_boundary_caps

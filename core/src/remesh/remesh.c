@@ -39,7 +39,9 @@
  * moves also try an insertion at the middle circumcentre of a short
  * triangle. When the greedy remesher ends below CM_RESCUE_SHARE of its
  * aim, the map-aware one runs on the same construction and the better
- * result is kept. */
+ * result is kept; when that is short of it too, its forced moves run
+ * again around the CM_STEP_OUT_WIDE worst triangles instead of the
+ * CM_STEP_OUT_WORST. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -87,8 +89,13 @@
 /* A greedy result whose smallest angle ends below this share of its aim
  * is also remeshed by the map-aware remesher. */
 #define CM_RESCUE_SHARE 0.3
-/* The short triangles a round of forced moves looks at. */
+/* The short triangles a round of forced moves looks at; the wider
+ * window where both remeshers ended below CM_RESCUE_SHARE of the aim
+ * (a distortion the correspondence forces spreads the worst triangles
+ * over a region: the first 8 are often all at one equilibrium, and a move
+ * that gains sits beside them). */
 #define CM_STEP_OUT_WORST 8
+#define CM_STEP_OUT_WIDE 64
 /* A forced move whose repair ends this close below its start (radians,
  * about 0.1 degrees) gets a second repair before the decision: an
  * undone move is not tried again till the mesh near it changes
@@ -642,20 +649,21 @@ static int mark_changed(remesher *x)
     return 0;
 }
 
-/* Forced moves around the worst short triangles, the first that gains
+/* Forced moves around the `window` worst short triangles (at most
+ * CM_STEP_OUT_WIDE), the first that gains
  * kept, until none gains, stall_limit() rounds have run or (splits) the
  * budget is spent. CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
-static cm_status step_out(remesher *x, size_t n)
+static cm_status step_out(remesher *x, size_t n, int32_t window)
 {
     cm_kmesh *km = &x->km;
-    int32_t worst[CM_STEP_OUT_WORST], work[2 * CM_STEP_OUT_WORST], near[12];
+    int32_t worst[CM_STEP_OUT_WIDE], work[2 * CM_STEP_OUT_WIDE], near[12];
     long budget = budget_of(x->o, n);
     failed_moves *f = &x->failed;
     tabu_clear(&f->at);
     f->entries.n = f->region.n = 0;
     for (long round = 0; round < stall_limit(x) && cm_kmesh_min_slack(km) < 0; round++) {
         if (cm_progress_poll(x->progress, CM_STAGE_REMESH, 1.0)) return CM_ERR_CANCELLED;
-        int32_t nw = cm_heap_smallest(&km->tq, CM_STEP_OUT_WORST, 0.0, worst, work);
+        int32_t nw = cm_heap_smallest(&km->tq, window, 0.0, worst, work);
         int gained = 0;
         /* An undone move leaves the mesh as it was (but for the position
          * search's flags), so each distinct move runs once till a kept
@@ -748,12 +756,15 @@ static long coarsen(remesher *x, double threshold)
 }
 
 /* The boundary's caps (criteria.h), edge caps with their margin: bcap[0 .. n),
- * vcap = bcap + n, in *out. Computed once, for every run. */
-static cm_status boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double **out)
+ * vcap = bcap + n, in *out; with `whole` (no boundary edge is ever split)
+ * also what the vertices near each edge allow. Computed once, for every
+ * run. */
+static cm_status boundary_caps(const cm_mesh *mesh, size_t n, int whole, cm_progress *progress, double **out)
 {
     double *bcap = *out = malloc(2 * n * sizeof *bcap);
     if (!bcap) return CM_ERR_NO_MEMORY;
     int s = cm_boundary_caps(mesh, n, progress, bcap, bcap + n);
+    if (!s && whole) s = cm_near_vertex_caps(mesh, n, progress, bcap);
     if (s) {
         free(bcap), *out = NULL;
         return s == CM_CAPS_NOT_TRIANGULATED ? CM_ERR_INTERNAL : s == CM_CANCELLED ? CM_ERR_CANCELLED : CM_ERR_NO_MEMORY;
@@ -780,6 +791,8 @@ static void remesher_free(remesher *x)
     free(x->failed.at.keys), free(x->failed.at.count), free(x->failed.changed);
     cm_ibuf_free(&x->failed.entries), cm_ibuf_free(&x->failed.region), cm_ibuf_free(&x->around);
 }
+
+static cm_status finish(remesher *x, cm_remesh_report *rep);
 
 /* One run of the remesher chosen by o on a copy of mesh, with the
  * boundary's caps bcap (boundary_caps), the result left in x->km. CM_OK,
@@ -813,8 +826,15 @@ static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const do
     cm_kmesh_drop_candidates(&x->km); /* no split after this one picks from them */
     if (improve_everywhere(x)) return stop_status(x);
     trace(x, "polish");
-    if ((s = step_out(x, n)) != CM_OK) return s;
-    long late = coarsen(x, o->min_angle_deg * CM_PI / 180.0);
+    if ((s = step_out(x, n, CM_STEP_OUT_WORST)) != CM_OK) return s;
+    return finish(x, rep);
+}
+
+/* The late coarsening and polish that end a run, and its report.
+ * CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
+static cm_status finish(remesher *x, cm_remesh_report *rep)
+{
+    long late = coarsen(x, x->o->min_angle_deg * CM_PI / 180.0);
     if (late < 0 || improve_everywhere(x)) return stop_status(x);
     trace(x, "end");
     rep->collapses += late;
@@ -828,7 +848,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
 {
     remesher x = {0}, y = {0};
     double *bcap;
-    cm_status s = boundary_caps(mesh, n, progress, &bcap);
+    cm_status s = boundary_caps(mesh, n, !splits, progress, &bcap);
     if (s == CM_OK) s = remesh_run(&x, mesh, n, bcap, o, ceiling_deg, splits, progress, rep);
     /* The greedy remesher can stall far below its aim, typically on a
      * sliver its local moves cannot reach (a slivered result also makes
@@ -845,6 +865,11 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
             again.iterations += rep->iterations, again.splits += rep->splits;
             again.split_attempts += rep->split_attempts;
             *rep = again;
+        }
+        /* Both ended short: the better one's forced moves look wider. */
+        if (s == CM_OK && rep->min_angle_deg < CM_RESCUE_SHARE * rep->target_deg) {
+            s = step_out(&x, n, CM_STEP_OUT_WIDE);
+            if (s == CM_OK) s = finish(&x, rep);
         }
     }
     free(bcap);
