@@ -24,6 +24,13 @@ typedef struct { long cost; double q; } val;
 static const val none = {LONG_MAX, 0.0};
 #define NO_TRIANGLE 2.0 /* quality of a value without triangles */
 
+/* fmin without the library call (the same result for every pair of
+ * doubles, NaN included; qualities are never -0). */
+static inline double qmin(double a, double b)
+{
+    return a < b || b != b ? a : b;
+}
+
 static int better(val a, val b)
 {
     return a.cost < b.cost || (a.cost == b.cost && a.q > b.q);
@@ -80,7 +87,7 @@ static double quality(const double *pa, const double *pb, const double *pc)
     double ux = pb[0] - pa[0], uy = pb[1] - pa[1], vx = pc[0] - pa[0], vy = pc[1] - pa[1];
     double wx = pc[0] - pb[0], wy = pc[1] - pb[1];
     double ab = ux * ux + uy * uy, ac = vx * vx + vy * vy, bc = wx * wx + wy * wy;
-    double cross = ux * vy - uy * vx, shortest = fmin(ab, fmin(ac, bc));
+    double cross = ux * vy - uy * vx, shortest = qmin(ab, qmin(ac, bc));
     return shortest > 0 ? cross * cross * shortest / (ab * ac * bc) : 0.0;
 }
 
@@ -89,7 +96,7 @@ static double triangle_quality(const dp *d, long a, long b, long c)
 {
     double q = NO_TRIANGLE;
     for (size_t g = 0; g < d->k; g++)
-        q = fmin(q, quality(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->xy[g] + 2 * c));
+        q = qmin(q, quality(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->xy[g] + 2 * c));
     return q;
 }
 
@@ -101,7 +108,7 @@ static double fan_min_angle(const dp *d, size_t x, long a, long b)
     for (size_t g = 0; g < d->k; g++) {
         const double *pa = d->xy[g] + 2 * a, *pb = d->xy[g] + 2 * b, *f = d->fans + 2 * (x * d->k + g);
         if (cm_orient2d(pa, pb, f) <= 0) return -1.0;
-        q = fmin(q, quality(pa, pb, f));
+        q = qmin(q, quality(pa, pb, f));
     }
     return q;
 }
@@ -156,27 +163,28 @@ static void close_face(const dp *d, long i, long l, long chord, slot out)
         long a = d->left[s];
         val gl = d->g[s];
         const chains *pc = &d->plain[a];
-        if (exists(pc->one))
-            offer((val){pc->one.cost + gl.cost - 1, fmin(fmin(pc->one.q, gl.q), triangle_quality(d, i, a, l))},
+        /* the triangle's quality only where its cost can win */
+        if (exists(pc->one) && pc->one.cost + gl.cost - 1 <= out.value->cost)
+            offer((val){pc->one.cost + gl.cost - 1, qmin(qmin(pc->one.q, gl.q), triangle_quality(d, i, a, l))},
                   BY_TRIANGLE, (int32_t)a, -1, out);
         if (exists(pc->more))
-            offer((val){pc->more.cost + gl.cost - 1, fmin(pc->more.q, gl.q)}, BY_FACE, (int32_t)a, -1, out);
+            offer((val){pc->more.cost + gl.cost - 1, qmin(pc->more.q, gl.q)}, BY_FACE, (int32_t)a, -1, out);
         for (size_t x = 0; x < d->nfans; x++) {
             double closing = chord >= 0 ? rev(d, x, chord) : d->root_fan[x];
             const chains *fc = fanned(d, x, a);
             if (closing < 0 || fwd(d, x, s) < 0 || !exists(fc->more)) continue;
-            offer((val){fc->more.cost + gl.cost + 1, fmin(fmin(fc->more.q, gl.q), fmin(fwd(d, x, s), closing))},
+            offer((val){fc->more.cost + gl.cost + 1, qmin(qmin(fc->more.q, gl.q), qmin(fwd(d, x, s), closing))},
                   BY_FAN, (int32_t)a, (int16_t)x, out);
         }
     }
 }
 
 /* Extends the chains of one kind into l: best of one link or more. */
-static void extend(chains *c, long a, const chains *prev, val step, int fan)
+static inline void extend(chains *c, long a, const chains *prev, val step, int fan)
 {
     val from = best_of(prev->one, prev->more);
     if (!exists(from)) return;
-    val v = {from.cost + step.cost + (fan ? 0 : 1), fmin(from.q, step.q)};
+    val v = {from.cost + step.cost + (fan ? 0 : 1), qmin(from.q, step.q)};
     if (better(v, c->more)) c->more = v, c->arg = (int32_t)a, c->from_more = !better(prev->one, prev->more);
 }
 
@@ -191,7 +199,7 @@ static void extend_chains(dp *d, long i, long l)
     pc->more = none, pc->arg = -1;
     for (size_t x = 0; x < d->nfans; x++) {
         chains *fc = fanned(d, x, l);
-        fc->one = s >= 0 && fwd(d, x, s) >= 0 ? (val){d->g[s].cost, fmin(d->g[s].q, fwd(d, x, s))} : none;
+        fc->one = s >= 0 && fwd(d, x, s) >= 0 ? (val){d->g[s].cost, qmin(d->g[s].q, fwd(d, x, s))} : none;
         fc->more = none, fc->arg = -1;
     }
     for (long t = first_after(d, l, i); t < d->start[l + 1]; t++) {
@@ -200,7 +208,7 @@ static void extend_chains(dp *d, long i, long l)
         extend(pc, a, &d->plain[a], gl, 0);
         for (size_t x = 0; x < d->nfans; x++)
             if (fwd(d, x, t) >= 0)
-                extend(fanned(d, x, l), a, fanned(d, x, a), (val){gl.cost, fmin(gl.q, fwd(d, x, t))}, 1);
+                extend(fanned(d, x, l), a, fanned(d, x, a), (val){gl.cost, qmin(gl.q, fwd(d, x, t))}, 1);
     }
 }
 
@@ -406,7 +414,7 @@ int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *
     if (d.plain && d.fanned && build_links(&d) == 0) {
         solve(&d);
         plan->cost = d.root.cost;
-        double q = fmin(d.root.q, 1.0);
+        double q = qmin(d.root.q, 1.0);
         plan->min_angle_deg = d.root.q >= NO_TRIANGLE ? 180.0 : asin(sqrt(q)) * 180.0 / 3.14159265358979323846;
         status = read_plan(&d, plan);
     }
