@@ -45,8 +45,10 @@ enum { BY_TRIANGLE, BY_FACE, BY_FAN };
 /* Chains from the row's vertex i to l: one link or more, plain or fan. */
 typedef struct chains {
     val one, more;   /* exactly one link; two or more */
+    val best;        /* best_of(one, more), once l is done */
     int32_t arg;     /* for `more`: the vertex before l */
     unsigned char from_more; /* `more` extends a chain of two or more */
+    unsigned char best_more; /* a chain extending this one extends `more` */
 } chains;
 
 typedef struct dp {
@@ -182,18 +184,25 @@ static void close_face(const dp *d, long i, long l, long chord, slot out)
 /* Extends the chains of one kind into l: best of one link or more. */
 static inline void extend(chains *c, long a, const chains *prev, val step, int fan)
 {
-    val from = best_of(prev->one, prev->more);
+    val from = prev->best;
     if (!exists(from)) return;
     val v = {from.cost + step.cost + (fan ? 0 : 1), qmin(from.q, step.q)};
-    if (better(v, c->more)) c->more = v, c->arg = (int32_t)a, c->from_more = !better(prev->one, prev->more);
+    if (better(v, c->more)) c->more = v, c->arg = (int32_t)a, c->from_more = prev->best_more;
 }
 
-/* Chains from i to l, given G of the links into l and the row below l. A
- * plain chain counts each link once (it adds a face vertex); a fan chain
- * only collects G, the fan face costs 1 in all. */
-static void extend_chains(dp *d, long i, long l)
+/* The chains into l are done: what extending them starts from. */
+static void finish(chains *c)
 {
-    long s = find_link(d, i, l);
+    c->best = best_of(c->one, c->more);
+    c->best_more = !better(c->one, c->more);
+}
+
+/* Chains from i to l, given G of the links into l and the row below l;
+ * s: the link (i, l) or -1. A plain chain counts each link once (it adds
+ * a face vertex); a fan chain only collects G, the fan face costs 1 in
+ * all. */
+static void extend_chains(dp *d, long i, long l, long s)
+{
     chains *pc = &d->plain[l];
     pc->one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
     pc->more = none, pc->arg = -1;
@@ -210,6 +219,8 @@ static void extend_chains(dp *d, long i, long l)
             if (fwd(d, x, t) >= 0)
                 extend(fanned(d, x, l), a, fanned(d, x, a), (val){gl.cost, qmin(gl.q, fwd(d, x, t))}, 1);
     }
+    finish(pc);
+    for (size_t x = 0; x < d->nfans; x++) finish(fanned(d, x, l));
 }
 
 /* The farthest l that row i needs: its farthest diagonal (the root's row
@@ -228,14 +239,14 @@ static void solve(dp *d)
     for (long i = m - 2; i >= 0; i--) {
         long last = row_reach(d, i);
         for (long l = i + 1; l <= last; l++) {
+            long s = find_link(d, i, l);
             if (l > i + 1) {
-                long s = find_link(d, i, l);
                 if (s >= 0)
                     close_face(d, i, l, s, (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]});
                 else if (i == 0 && l == m - 1)
                     close_face(d, i, l, -1, (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of});
             }
-            extend_chains(d, i, l);
+            extend_chains(d, i, l, s);
         }
     }
 }
@@ -307,7 +318,7 @@ static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link **stack, long *top,
                     long *cap)
 {
-    for (long l = i + 1; l <= a; l++) extend_chains(d, i, l);
+    for (long l = i + 1; l <= a; l++) extend_chains(d, i, l, find_link(d, i, l));
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
     int32_t *f = p->face + p->face_start[p->nf];
