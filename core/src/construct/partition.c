@@ -809,8 +809,25 @@ static const double offsets[] = {0.0, 0.12, -0.12, 0.3, -0.3};
  * otherwise, or 1 if the whole polygon is star-shaped. Exact below limit;
  * a result of limit or more only says the estimate is at least that (the
  * faces left are not looked at). -1 out of memory. */
+/* Does some polygon edge lack a triangle on common diagonals and edges?
+ * Then no triangulation without Steiner vertices exists (each edge lies in
+ * one triangle of any triangulation). */
+static int edge_without_triangle(long m, const cm_diagset *common)
+{
+    for (long a = 0; a < m; a++) {
+        long b = (a + 1) % m, before = (a + m - 1) % m, after = (b + 1) % m;
+        if (cm_diagset_has(common, b, before) || cm_diagset_has(common, a, after)) continue;
+        const uint64_t *ra = common->bits + (size_t)a * common->stride, *rb = common->bits + (size_t)b * common->stride;
+        uint64_t any = 0;
+        for (size_t w = 0; w < common->stride && !any; w++) any = ra[w] & rb[w];
+        if (!any) return 1;
+    }
+    return 0;
+}
+
 static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common, long limit)
 {
+    if (limit <= 1 && m > 3 && edge_without_triangle(m, common)) return 1; /* at least 1 */
     cm_diagview view = {common, NULL};
     double *pos = malloc(2 * k * sizeof *pos);
     int32_t *all = malloc((size_t)m * sizeof *all);
