@@ -154,6 +154,13 @@ static void offer(val c, unsigned char how, int32_t a, int16_t fan, slot out)
     if (better(c, *out.value)) *out.value = c, *out.arg = a, *out.by = how, *out.fan_of = fan;
 }
 
+/* Could a value of this cost whose quality is at most qmin(q, anything)
+ * beat cur? The triangle's quality is worth computing only then. */
+static int could_win(long cost, double q, val cur)
+{
+    return cost < cur.cost || (cost == cur.cost && (q > cur.q || q != q));
+}
+
 /* G for the link (i, l) (or the root): the face on it closes a chain of
  * two links (a triangle), of three or more (a stuck face), or a fan chain
  * of three or more from a fan point whose triangle on the closing edge
@@ -165,8 +172,7 @@ static void close_face(const dp *d, long i, long l, long chord, slot out)
         long a = d->left[s];
         val gl = d->g[s];
         const chains *pc = &d->plain[a];
-        /* the triangle's quality only where its cost can win */
-        if (exists(pc->one) && pc->one.cost + gl.cost - 1 <= out.value->cost)
+        if (exists(pc->one) && could_win(pc->one.cost + gl.cost - 1, qmin(pc->one.q, gl.q), *out.value))
             offer((val){pc->one.cost + gl.cost - 1, qmin(qmin(pc->one.q, gl.q), triangle_quality(d, i, a, l))},
                   BY_TRIANGLE, (int32_t)a, -1, out);
         if (exists(pc->more))
