@@ -291,14 +291,18 @@ static int open_rows(const double *const *xy, const int32_t *const *tris, size_t
     return status;
 }
 
-/* all[j] = 1 for from <= j < m where vertex j sees vertex i in every
- * geometry of r, else 0; row: m bytes of scratch. */
-static void seen_by_all(const rowset *r, long i, long from, long m, unsigned char *row, unsigned char *all)
+/* all[j] &= (vertex j sees vertex i in every geometry of r), j = 0..m-1:
+ * the caller sets all[] to the candidates. Each geometry's cones look only
+ * for the candidates still in. row: m bytes of scratch; want: m + 1
+ * counts of scratch. */
+static void seen_by_all(const rowset *r, long i, long m, unsigned char *row, unsigned char *all, int32_t *want)
 {
-    memset(all + from, 1, (size_t)(m - from));
     for (size_t g = 0; g < r->k; g++) {
-        cm_visrows_row(r->rows[g], i, row);
-        for (long j = from; j < m; j++) all[j] &= row[j];
+        want[0] = 0;
+        for (long j = 0; j < m; j++) want[j + 1] = want[j] + all[j];
+        if (want[m] == 0) return;
+        cm_visrows_row_wanted(r->rows[g], i, want, row);
+        for (long j = 0; j < m; j++) all[j] &= row[j];
     }
 }
 
@@ -311,13 +315,16 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
 {
     rowset r = {NULL, NULL, k};
     unsigned char *row = malloc(2 * (size_t)m);
+    int32_t *want = malloc(((size_t)m + 1) * sizeof *want);
     int status = open_rows(xy, tris, k, m, &r);
     if (status != 0) goto done;
     status = -1;
-    if (!row || cm_diagset_init(common, m) != 0) goto done;
+    if (!row || !want || cm_diagset_init(common, m) != 0) goto done;
     unsigned char *all = row + m;
     for (long i = 0; i < m; i++) {
-        seen_by_all(&r, i, i + 1, m, row, all);
+        memset(all, 0, (size_t)i + 1);
+        memset(all + i + 1, 1, (size_t)(m - i - 1));
+        seen_by_all(&r, i, m, row, all, want);
         for (long j = i + 1; j < m; j++)
             if (all[j] && !(p && flat_pair(p, gid[i], gid[j]))) cm_diagset_add(common, i, j);
     }
@@ -325,7 +332,7 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
 done:
     if (status != 0) cm_diagset_clear(common);
     close_rows(&r);
-    free(row);
+    free(row), free(want);
     return status;
 }
 
@@ -572,12 +579,16 @@ static int greedy_split(part *p, item *it, const cm_diagview *common)
 
 /* The most balanced common diagonal at vertex i better than *best (its
  * balance, the shorter side's span): updates *best and *bj. row, all: m
- * bytes each. */
+ * bytes each; want: m + 1 counts. */
 static void best_at(const part *p, const item *it, const rowset *r, long i, unsigned char *row, unsigned char *all,
-                    long *best, long *bj)
+                    int32_t *want, long *best, long *bj)
 {
     long m = it->m;
-    seen_by_all(r, i, 0, m, row, all);
+    for (long j = 0; j < m; j++) {
+        long span = (j - i + m) % m;
+        all[j] = (span < m - span ? span : m - span) > *best;
+    }
+    seen_by_all(r, i, m, row, all, want);
     *bj = -1;
     for (long j = 0; j < m; j++) {
         long span = (j - i + m) % m, balance = span < m - span ? span : m - span;
@@ -631,29 +642,30 @@ static int sampled_diagonal(part *p, item *it, long *bi, long *bj, long *balance
     size_t k = p->k;
     double **l = local_xy(p, it);
     unsigned char *row = malloc(2 * (size_t)m);
+    int32_t *want = malloc(((size_t)m + 1) * sizeof *want);
     rowset r = {NULL, NULL, k};
-    int s = l && row ? open_rows((const double *const *)l, NULL, k, m, &r) : -1;
+    int s = l && row && want ? open_rows((const double *const *)l, NULL, k, m, &r) : -1;
     long nends = s == 0 ? balanced_ends(&r, m, ends, TRI_CANDIDATES) : 0;
     *bi = *bj = -1;
     for (long q = 0; s == 0 && q < nends && 2 * best < m; q++) {
         long j;
-        best_at(p, it, &r, ends[q], row, row + m, &best, &j);
+        best_at(p, it, &r, ends[q], row, row + m, want, &best, &j);
         if (j >= 0) *bi = ends[q], *bj = j;
     }
     for (long q = 0; s == 0 && q < SAMPLE_SOURCES && 2 * best < m; q++) {
         long i = (long)((double)q * (double)m / SAMPLE_SOURCES), j;
-        best_at(p, it, &r, i, row, row + m, &best, &j);
+        best_at(p, it, &r, i, row, row + m, want, &best, &j);
         if (j >= 0) *bi = i, *bj = j;
     }
     long more = m < SAMPLE_MORE ? m : SAMPLE_MORE;
     for (long q = 0; s == 0 && *bi < 0 && q < more; q++) {
         long i = (long)((double)q * (double)m / (double)more + 0.5) % m, j;
-        best_at(p, it, &r, i, row, row + m, &best, &j);
+        best_at(p, it, &r, i, row, row + m, want, &best, &j);
         if (j >= 0) *bi = i, *bj = j;
     }
     close_rows(&r);
     free_xy(l, k);
-    free(row);
+    free(row), free(want);
     p->st->seconds_visibility += cm_seconds_now() - t0;
     *balance = best;
     if (s != 0) return s > 0 ? 2 : -1;
@@ -797,8 +809,25 @@ static const double offsets[] = {0.0, 0.12, -0.12, 0.3, -0.3};
  * otherwise, or 1 if the whole polygon is star-shaped. Exact below limit;
  * a result of limit or more only says the estimate is at least that (the
  * faces left are not looked at). -1 out of memory. */
+/* Does some polygon edge lack a triangle on common diagonals and edges?
+ * Then no triangulation without Steiner vertices exists (each edge lies in
+ * one triangle of any triangulation). */
+static int edge_without_triangle(long m, const cm_diagset *common)
+{
+    for (long a = 0; a < m; a++) {
+        long b = (a + 1) % m, before = (a + m - 1) % m, after = (b + 1) % m;
+        if (cm_diagset_has(common, b, before) || cm_diagset_has(common, a, after)) continue;
+        const uint64_t *ra = common->bits + (size_t)a * common->stride, *rb = common->bits + (size_t)b * common->stride;
+        uint64_t any = 0;
+        for (size_t w = 0; w < common->stride && !any; w++) any = ra[w] & rb[w];
+        if (!any) return 1;
+    }
+    return 0;
+}
+
 static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common, long limit)
 {
+    if (limit <= 1 && m > 3 && edge_without_triangle(m, common)) return 1; /* at least 1 */
     cm_diagview view = {common, NULL};
     double *pos = malloc(2 * k * sizeof *pos);
     int32_t *all = malloc((size_t)m * sizeof *all);

@@ -24,6 +24,13 @@ typedef struct { long cost; double q; } val;
 static const val none = {LONG_MAX, 0.0};
 #define NO_TRIANGLE 2.0 /* quality of a value without triangles */
 
+/* fmin without the library call (the same result for every pair of
+ * doubles, NaN included; qualities are never -0). */
+static inline double qmin(double a, double b)
+{
+    return a < b || b != b ? a : b;
+}
+
 static int better(val a, val b)
 {
     return a.cost < b.cost || (a.cost == b.cost && a.q > b.q);
@@ -38,8 +45,10 @@ enum { BY_TRIANGLE, BY_FACE, BY_FAN };
 /* Chains from the row's vertex i to l: one link or more, plain or fan. */
 typedef struct chains {
     val one, more;   /* exactly one link; two or more */
+    val best;        /* best_of(one, more), once l is done */
     int32_t arg;     /* for `more`: the vertex before l */
     unsigned char from_more; /* `more` extends a chain of two or more */
+    unsigned char best_more; /* a chain extending this one extends `more` */
 } chains;
 
 typedef struct dp {
@@ -80,7 +89,7 @@ static double quality(const double *pa, const double *pb, const double *pc)
     double ux = pb[0] - pa[0], uy = pb[1] - pa[1], vx = pc[0] - pa[0], vy = pc[1] - pa[1];
     double wx = pc[0] - pb[0], wy = pc[1] - pb[1];
     double ab = ux * ux + uy * uy, ac = vx * vx + vy * vy, bc = wx * wx + wy * wy;
-    double cross = ux * vy - uy * vx, shortest = fmin(ab, fmin(ac, bc));
+    double cross = ux * vy - uy * vx, shortest = qmin(ab, qmin(ac, bc));
     return shortest > 0 ? cross * cross * shortest / (ab * ac * bc) : 0.0;
 }
 
@@ -89,7 +98,7 @@ static double triangle_quality(const dp *d, long a, long b, long c)
 {
     double q = NO_TRIANGLE;
     for (size_t g = 0; g < d->k; g++)
-        q = fmin(q, quality(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->xy[g] + 2 * c));
+        q = qmin(q, quality(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->xy[g] + 2 * c));
     return q;
 }
 
@@ -101,7 +110,7 @@ static double fan_min_angle(const dp *d, size_t x, long a, long b)
     for (size_t g = 0; g < d->k; g++) {
         const double *pa = d->xy[g] + 2 * a, *pb = d->xy[g] + 2 * b, *f = d->fans + 2 * (x * d->k + g);
         if (cm_orient2d(pa, pb, f) <= 0) return -1.0;
-        q = fmin(q, quality(pa, pb, f));
+        q = qmin(q, quality(pa, pb, f));
     }
     return q;
 }
@@ -145,6 +154,13 @@ static void offer(val c, unsigned char how, int32_t a, int16_t fan, slot out)
     if (better(c, *out.value)) *out.value = c, *out.arg = a, *out.by = how, *out.fan_of = fan;
 }
 
+/* Could a value of this cost whose quality is at most qmin(q, anything)
+ * beat cur? The triangle's quality is worth computing only then. */
+static int could_win(long cost, double q, val cur)
+{
+    return cost < cur.cost || (cost == cur.cost && (q > cur.q || q != q));
+}
+
 /* G for the link (i, l) (or the root): the face on it closes a chain of
  * two links (a triangle), of three or more (a stuck face), or a fan chain
  * of three or more from a fan point whose triangle on the closing edge
@@ -156,42 +172,49 @@ static void close_face(const dp *d, long i, long l, long chord, slot out)
         long a = d->left[s];
         val gl = d->g[s];
         const chains *pc = &d->plain[a];
-        if (exists(pc->one))
-            offer((val){pc->one.cost + gl.cost - 1, fmin(fmin(pc->one.q, gl.q), triangle_quality(d, i, a, l))},
+        if (exists(pc->one) && could_win(pc->one.cost + gl.cost - 1, qmin(pc->one.q, gl.q), *out.value))
+            offer((val){pc->one.cost + gl.cost - 1, qmin(qmin(pc->one.q, gl.q), triangle_quality(d, i, a, l))},
                   BY_TRIANGLE, (int32_t)a, -1, out);
         if (exists(pc->more))
-            offer((val){pc->more.cost + gl.cost - 1, fmin(pc->more.q, gl.q)}, BY_FACE, (int32_t)a, -1, out);
+            offer((val){pc->more.cost + gl.cost - 1, qmin(pc->more.q, gl.q)}, BY_FACE, (int32_t)a, -1, out);
         for (size_t x = 0; x < d->nfans; x++) {
             double closing = chord >= 0 ? rev(d, x, chord) : d->root_fan[x];
             const chains *fc = fanned(d, x, a);
             if (closing < 0 || fwd(d, x, s) < 0 || !exists(fc->more)) continue;
-            offer((val){fc->more.cost + gl.cost + 1, fmin(fmin(fc->more.q, gl.q), fmin(fwd(d, x, s), closing))},
+            offer((val){fc->more.cost + gl.cost + 1, qmin(qmin(fc->more.q, gl.q), qmin(fwd(d, x, s), closing))},
                   BY_FAN, (int32_t)a, (int16_t)x, out);
         }
     }
 }
 
 /* Extends the chains of one kind into l: best of one link or more. */
-static void extend(chains *c, long a, const chains *prev, val step, int fan)
+static inline void extend(chains *c, long a, const chains *prev, val step, int fan)
 {
-    val from = best_of(prev->one, prev->more);
+    val from = prev->best;
     if (!exists(from)) return;
-    val v = {from.cost + step.cost + (fan ? 0 : 1), fmin(from.q, step.q)};
-    if (better(v, c->more)) c->more = v, c->arg = (int32_t)a, c->from_more = !better(prev->one, prev->more);
+    val v = {from.cost + step.cost + (fan ? 0 : 1), qmin(from.q, step.q)};
+    if (better(v, c->more)) c->more = v, c->arg = (int32_t)a, c->from_more = prev->best_more;
 }
 
-/* Chains from i to l, given G of the links into l and the row below l. A
- * plain chain counts each link once (it adds a face vertex); a fan chain
- * only collects G, the fan face costs 1 in all. */
-static void extend_chains(dp *d, long i, long l)
+/* The chains into l are done: what extending them starts from. */
+static void finish(chains *c)
 {
-    long s = find_link(d, i, l);
+    c->best = best_of(c->one, c->more);
+    c->best_more = !better(c->one, c->more);
+}
+
+/* Chains from i to l, given G of the links into l and the row below l;
+ * s: the link (i, l) or -1. A plain chain counts each link once (it adds
+ * a face vertex); a fan chain only collects G, the fan face costs 1 in
+ * all. */
+static void extend_chains(dp *d, long i, long l, long s)
+{
     chains *pc = &d->plain[l];
     pc->one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
     pc->more = none, pc->arg = -1;
     for (size_t x = 0; x < d->nfans; x++) {
         chains *fc = fanned(d, x, l);
-        fc->one = s >= 0 && fwd(d, x, s) >= 0 ? (val){d->g[s].cost, fmin(d->g[s].q, fwd(d, x, s))} : none;
+        fc->one = s >= 0 && fwd(d, x, s) >= 0 ? (val){d->g[s].cost, qmin(d->g[s].q, fwd(d, x, s))} : none;
         fc->more = none, fc->arg = -1;
     }
     for (long t = first_after(d, l, i); t < d->start[l + 1]; t++) {
@@ -200,8 +223,10 @@ static void extend_chains(dp *d, long i, long l)
         extend(pc, a, &d->plain[a], gl, 0);
         for (size_t x = 0; x < d->nfans; x++)
             if (fwd(d, x, t) >= 0)
-                extend(fanned(d, x, l), a, fanned(d, x, a), (val){gl.cost, fmin(gl.q, fwd(d, x, t))}, 1);
+                extend(fanned(d, x, l), a, fanned(d, x, a), (val){gl.cost, qmin(gl.q, fwd(d, x, t))}, 1);
     }
+    finish(pc);
+    for (size_t x = 0; x < d->nfans; x++) finish(fanned(d, x, l));
 }
 
 /* The farthest l that row i needs: its farthest diagonal (the root's row
@@ -220,14 +245,14 @@ static void solve(dp *d)
     for (long i = m - 2; i >= 0; i--) {
         long last = row_reach(d, i);
         for (long l = i + 1; l <= last; l++) {
+            long s = find_link(d, i, l);
             if (l > i + 1) {
-                long s = find_link(d, i, l);
                 if (s >= 0)
                     close_face(d, i, l, s, (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]});
                 else if (i == 0 && l == m - 1)
                     close_face(d, i, l, -1, (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of});
             }
-            extend_chains(d, i, l);
+            extend_chains(d, i, l, s);
         }
     }
 }
@@ -299,7 +324,7 @@ static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link **stack, long *top,
                     long *cap)
 {
-    for (long l = i + 1; l <= a; l++) extend_chains(d, i, l);
+    for (long l = i + 1; l <= a; l++) extend_chains(d, i, l, find_link(d, i, l));
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
     int32_t *f = p->face + p->face_start[p->nf];
@@ -406,7 +431,7 @@ int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *
     if (d.plain && d.fanned && build_links(&d) == 0) {
         solve(&d);
         plan->cost = d.root.cost;
-        double q = fmin(d.root.q, 1.0);
+        double q = qmin(d.root.q, 1.0);
         plan->min_angle_deg = d.root.q >= NO_TRIANGLE ? 180.0 : asin(sqrt(q)) * 180.0 / 3.14159265358979323846;
         status = read_plan(&d, plan);
     }

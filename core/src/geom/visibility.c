@@ -29,6 +29,7 @@ typedef struct {
     const int32_t *tri, *nbr, *first; /* first[v]: 3t + corner of v, the
                                          triangle holding edge v -> v+1 */
     crossing *stack;
+    const int32_t *want; /* NULL, or want[j] = wanted vertices among 0..j-1 */
 } vis_ctx;
 
 #define XY(c, v) ((c)->xy + 2 * (size_t)(v))
@@ -36,6 +37,16 @@ typedef struct {
 static int adjacent(long m, long s, long v)
 {
     return v == (s + 1) % m || s == (v + 1) % m;
+}
+
+/* Is a wanted vertex strictly between r and l on the chain r, r+1, ..., l
+ * (cyclic)? That chain is the pocket beyond the edge from r to l: the only
+ * vertices a cone crossing that edge can reach. */
+static int pocket_wanted(const vis_ctx *c, int32_t r, int32_t l)
+{
+    if (!c->want) return 1;
+    if (r < l) return c->want[l] > c->want[r + 1];
+    return c->want[c->m] > c->want[r + 1] || c->want[l] > 0;
 }
 
 static void propagate(const vis_ctx *c, long s, unsigned char *row, long top)
@@ -53,11 +64,11 @@ static void propagate(const vis_ctx *c, long s, unsigned char *row, long top)
         int32_t across_zl = c->nbr[3 * x.t + corner_of(c->tri, x.t, x.r)];
         if (ob > 0 && oa < 0) {
             row[z] = 1;
-            if (across_rz >= 0) c->stack[top++] = (crossing){across_rz, x.r, z, x.b, z};
-            if (across_zl >= 0) c->stack[top++] = (crossing){across_zl, z, x.l, z, x.a};
+            if (across_rz >= 0 && pocket_wanted(c, x.r, z)) c->stack[top++] = (crossing){across_rz, x.r, z, x.b, z};
+            if (across_zl >= 0 && pocket_wanted(c, z, x.l)) c->stack[top++] = (crossing){across_zl, z, x.l, z, x.a};
         } else if (ob <= 0) {
-            if (across_zl >= 0) c->stack[top++] = (crossing){across_zl, z, x.l, x.b, x.a};
-        } else if (across_rz >= 0) {
+            if (across_zl >= 0 && pocket_wanted(c, z, x.l)) c->stack[top++] = (crossing){across_zl, z, x.l, x.b, x.a};
+        } else if (across_rz >= 0 && pocket_wanted(c, x.r, z)) {
             c->stack[top++] = (crossing){across_rz, x.r, z, x.b, x.a};
         }
     }
@@ -74,7 +85,7 @@ static void visible_from(const vis_ctx *c, long s, unsigned char *row)
         if (!adjacent(c->m, s, x)) row[x] = 1;
         if (!adjacent(c->m, s, y)) row[y] = 1;
         int32_t across = c->nbr[3 * t + cs];
-        if (across >= 0) c->stack[top++] = (crossing){across, x, y, x, y};
+        if (across >= 0 && pocket_wanted(c, x, y)) c->stack[top++] = (crossing){across, x, y, x, y};
         int32_t next = c->nbr[3 * t + (cs + 1) % 3];
         slot = next >= 0 ? 3 * next + corner_of(c->tri, next, (int32_t)s) : -1;
     }
@@ -101,7 +112,7 @@ cm_visrows *cm_visrows_create(const double *xy, long m, const int32_t *tri)
     v->nbr = malloc((size_t)(3 * nt) * sizeof *v->nbr);
     v->first = malloc((size_t)m * sizeof *v->first);
     crossing *stack = malloc((size_t)(nt + 1) * sizeof *stack);
-    v->c = (vis_ctx){xy, m, tri, v->nbr, v->first, stack};
+    v->c = (vis_ctx){xy, m, tri, v->nbr, v->first, stack, NULL};
     if (!v->nbr || !v->first || !stack || cm_tri_adjacency(tri, nt, v->nbr) != 0) {
         cm_visrows_free(v);
         return NULL;
@@ -117,6 +128,14 @@ void cm_visrows_row(cm_visrows *v, long s, unsigned char *row)
 {
     memset(row, 0, (size_t)v->c.m);
     visible_from(&v->c, s, row);
+}
+
+void cm_visrows_row_wanted(cm_visrows *v, long s, const int32_t *want, unsigned char *row)
+{
+    memset(row, 0, (size_t)v->c.m);
+    v->c.want = want;
+    visible_from(&v->c, s, row);
+    v->c.want = NULL;
 }
 
 int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned char *vis)

@@ -29,6 +29,10 @@ int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned c
 typedef struct cm_visrows cm_visrows;
 cm_visrows *cm_visrows_create(const double *xy, long m, const int32_t *tri);
 void cm_visrows_row(cm_visrows *v, long s, unsigned char *row);
+/* Row s only where it is wanted: want[j] (j = 0..m) counts the wanted
+ * vertices among 0..j-1. row[j] is exact for every wanted j; the cones
+ * skip the pockets without one, so other entries may be 0 where s sees j. */
+void cm_visrows_row_wanted(cm_visrows *v, long s, const int32_t *want, unsigned char *row);
 void cm_visrows_free(cm_visrows *v);
 
 /* 1 if the open segment ab lies strictly inside the simple counter-clockwise
