@@ -458,20 +458,27 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
     return s;
 }
 
+/* What correspond_boundary's k loops are: whole polygons (the caller's
+ * pins taken, the bound before the choice reported), the outer loops of
+ * polygons with holes (auto chooses as for whole polygons, the outer loop
+ * filled standing for each: the conformal correspondence sees where the
+ * parts of the outline are, arc length from a start does not), or holes. */
+enum loop_kind { LOOP_WHOLE, LOOP_OUTER, LOOP_HOLE };
+
 /* The boundaries in correspondence for CM_CORRESPOND_ARCLENGTH and _AUTO,
  * of k polygons each checked on its own (orientation as found): for auto,
  * the starts chosen where none are pinned; then the common refinement and
  * the max_edge split. every_vertex: the index correspondence, as pins at
- * every vertex. whole: a whole polygon, whose pins the caller gave and
- * whose bound before the choice is reported; 0 for one loop of polygons
- * with holes. hole_starts: for auto, the starts chosen for a hole (k input
- * vertices), taken in place of the loop's own choice; else NULL. *choice
- * receives the correspondence made. */
+ * every vertex. kind: what the loops are (enum loop_kind). hole_starts:
+ * for auto, the starts chosen for a hole (k input vertices), taken in
+ * place of the loop's own choice; else NULL. *choice receives the
+ * correspondence made. */
 static cm_status correspond_boundary(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
                                      const int *orientation, const cm_options *o, const size_t *every_vertex,
-                                     int whole, const size_t *hole_starts, cm_boundary_map *out, double *ceiling_deg,
-                                     cm_correspondence_choice *choice)
+                                     enum loop_kind kind, const size_t *hole_starts, cm_boundary_map *out,
+                                     double *ceiling_deg, cm_correspondence_choice *choice)
 {
+    int whole = kind == LOOP_WHOLE;
     *ceiling_deg = -1;
     *choice = every_vertex ? CM_CHOICE_INDEX : CM_CHOICE_ARCLENGTH;
     cm_status s = CM_OK;
@@ -492,13 +499,14 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         if (found) pins = affine, num_pins = counts[0], *choice = CM_CHOICE_AFFINE;
     }
-    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && whole &&
+    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && kind != LOOP_HOLE &&
         !(o->pin_corners_deg > 0)) {
-        /* Polygons without holes: conformal or similarity (auto_whole). */
+        /* Polygons without holes, and outer loops: conformal or similarity
+         * (auto_whole). */
         int found = 0;
         s = auto_whole(r, polygons, counts, k, orientation, out, &found, ceiling_deg, choice);
         if (s == CM_OK && found) {
-            if (o->ceiling) s = bound_before(r, polygons, counts, k, orientation);
+            if (o->ceiling && whole) s = bound_before(r, polygons, counts, k, orientation);
             if (s == CM_OK && o->max_edge > 0)
                 s = cm_boundary_map_split(out, polygons, counts, orientation, o->max_edge, &r->error);
             free(affine);
@@ -627,7 +635,7 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
     if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
     double ceiling_deg = -1;
     if (s == CM_OK)
-        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, 1, NULL, &r->boundary, &ceiling_deg,
+        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, LOOP_WHOLE, NULL, &r->boundary, &ceiling_deg,
                                 &r->stats.correspondence_choice);
     int32_t **tris = NULL; /* the merged polygons' triangulations, when the cap split made them */
     if (s == CM_OK && !every_vertex && o->remesh)
@@ -961,12 +969,15 @@ done:
 
 /* CM_CORRESPOND_ARCLENGTH and _AUTO for polygons with holes: loop l of
  * every polygon corresponds to loop l, and within each loop as for a
- * polygon without holes (corner pins and max_edge per loop). Auto chooses
- * the outer loop's start as for a polygon without holes, and every hole's
- * jointly with it: the start whose points lie nearest to polygon 0's hole
- * under the similarity fitted to the outer loops in correspondence (a hole
- * aligned on its own may turn against the outer loop and twist the map
- * around it), then the hole by arc length from there. The caller's pins
+ * polygon without holes (corner pins and max_edge per loop). Auto pairs
+ * the outer loops as polygons without holes (the conformal correspondence
+ * of the filled outer loops, or the similarity choice of a start where
+ * that allows the higher ceiling: auto_whole), and chooses every hole's
+ * start jointly with them: the start whose points lie nearest to polygon
+ * 0's hole under the similarity fitted to the outer loops in
+ * correspondence (a hole aligned on its own may turn against the outer
+ * loop and twist the map around it), then the hole by arc length from
+ * there. The caller's pins
  * are refused: they would have to name loops. CM_CORRESPOND_INDEX with
  * max_edge comes here too, as pins at every vertex of each loop. With
  * remeshing (not for index), the edges of every loop whose cap binds are
@@ -1036,8 +1047,8 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         if (joint && l > 0)
             s = cm_correspond_choose_hole_starts(lxy, lcount, k, lorientation, similarity, hole_starts, &r->error);
         if (s == CM_OK)
-            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, 0, joint && l ? hole_starts : NULL,
-                                    &maps[l], &unused_ceiling, &loop_choice);
+            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_HOLE : LOOP_OUTER,
+                                    joint && l ? hole_starts : NULL, &maps[l], &unused_ceiling, &loop_choice);
         if (l == 0) r->stats.correspondence_choice = loop_choice; /* the outer loop's (cm_stats) */
         if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
             char detail[sizeof r->error.message];
