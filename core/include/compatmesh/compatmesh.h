@@ -378,9 +378,10 @@ typedef struct cm_loops {
  * CM_CORRESPOND_ARCLENGTH or _AUTO every loop is paired as a polygon
  * without holes would be (loops of any sizes and directions;
  * pin_corners_deg and max_edge per loop; explicit pins are refused; auto
- * chooses the outer loop's start as without holes and every hole's as the
- * vertex whose points lie nearest to polygon 0's hole carried by the
- * outer loops' least-squares similarity), and cm_result_boundary_source says where each
+ * pairs the outer loops as polygons without holes, the conformal
+ * correspondence of the filled outer loops or the similarity choice, and
+ * starts every hole at the vertex whose points lie nearest to polygon 0's
+ * hole carried by the outer loops' least-squares similarity), and cm_result_boundary_source says where each
  * boundary vertex lies. The holes must lie strictly inside the outer loop,
  * outside each other, and no loop may touch another. Failures of validation name the
  * polygon, the loop and the vertex within the loop; the error location's
