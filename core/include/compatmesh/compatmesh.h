@@ -330,8 +330,9 @@ typedef struct cm_stats {
                                 overlay method takes it from the start) */
     /* The correspondence the result was made in. For polygons with holes,
      * the outer loop's; every hole then takes the same, except after
-     * CM_CHOICE_AFFINE, where the holes take CM_CHOICE_SIMILARITY (their
-     * starts fitted jointly with the outer loop's). */
+     * CM_CHOICE_AFFINE and CM_CHOICE_CONFORMAL, where the holes take
+     * CM_CHOICE_SIMILARITY (their starts fitted jointly with the outer
+     * loop's). */
     cm_correspondence_choice correspondence_choice;
 } cm_stats;
 

@@ -462,8 +462,9 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
  * pins taken, the bound before the choice reported), the outer loops of
  * polygons with holes (auto chooses as for whole polygons, the outer loop
  * filled standing for each: the conformal correspondence sees where the
- * parts of the outline are, arc length from a start does not), or holes. */
-enum loop_kind { LOOP_WHOLE, LOOP_OUTER, LOOP_HOLE };
+ * parts of the outline are, arc length from a start does not), or loops
+ * paired from a start alone (holes, and outer loops in outer_rescue). */
+enum loop_kind { LOOP_WHOLE, LOOP_OUTER, LOOP_BY_START };
 
 /* The boundaries in correspondence for CM_CORRESPOND_ARCLENGTH and _AUTO,
  * of k polygons each checked on its own (orientation as found): for auto,
@@ -499,7 +500,7 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         if (found) pins = affine, num_pins = counts[0], *choice = CM_CHOICE_AFFINE;
     }
-    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && kind != LOOP_HOLE &&
+    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && kind != LOOP_BY_START &&
         !(o->pin_corners_deg > 0)) {
         /* Polygons without holes, and outer loops: conformal or similarity
          * (auto_whole). */
@@ -987,7 +988,8 @@ done:
  * boundary vertex to its input edge, numbered in the polygon's whole array
  * (the edge from a vertex to the next of its loop); with remeshing the
  * remesher may split the loops' edges there too (loop_edge_between). */
-static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o)
+static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o,
+                                     enum loop_kind outer)
 {
     if (o->num_pins)
         return cm_fail(&r->error, CM_ERR_ARGUMENT,
@@ -1047,7 +1049,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         if (joint && l > 0)
             s = cm_correspond_choose_hole_starts(lxy, lcount, k, lorientation, similarity, hole_starts, &r->error);
         if (s == CM_OK)
-            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_HOLE : LOOP_OUTER,
+            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_BY_START : outer,
                                     joint && l ? hole_starts : NULL, &maps[l], &unused_ceiling, &loop_choice);
         if (l == 0) r->stats.correspondence_choice = loop_choice; /* the outer loop's (cm_stats) */
         if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
@@ -1114,6 +1116,57 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
     return s;
 }
 
+/* The smallest angle of a result over its k meshes (degrees). */
+static double least_angle(const cm_result *r, size_t k)
+{
+    double least = 180;
+    for (size_t g = 0; g < k; g++) {
+        cm_quality q;
+        cm_result_quality(r, g, &q);
+        least = fmin(least, q.min_angle_deg);
+    }
+    return least;
+}
+
+/* Auto with holes pairs the outer loops as polygons without holes; where
+ * the result ends below this share of the remesher's aim, the outer loops
+ * are also paired by the similarity's start (the hole starts, chosen
+ * under the outer loops' similarity, may fit one pairing of the outer
+ * loops and not the other: a conformal pairing of the filled outlines
+ * knows nothing of the holes) and the better result is kept. 0.6: below
+ * 15 degrees at the default aim of 25. */
+#define CM_OUTER_RESCUE_SHARE 0.6
+
+/* The rescue above on *result: CM_OK, *result the better run (a second
+ * run that fails, out of memory included, leaves it as it was), or
+ * CM_ERR_CANCELLED. */
+static cm_status outer_rescue(cm_result **result, const cm_loops *polygons, size_t k, const cm_options *o)
+{
+    cm_result *r = *result;
+    if (o->correspondence != CM_CORRESPOND_AUTO || !o->remesh ||
+        r->stats.correspondence_choice != CM_CHOICE_CONFORMAL ||
+        least_angle(r, k) >= CM_OUTER_RESCUE_SHARE * r->stats.remesh_aim_deg)
+        return CM_OK;
+    cm_result *again = NULL;
+    cm_options unused;
+    const cm_options *same = o;
+    if (!new_result(&again, &same, &unused)) return CM_OK;
+    cm_status s = run_loops_arclength(again, polygons, k, o, LOOP_BY_START);
+    if (s == CM_ERR_CANCELLED) {
+        cm_result_free(again);
+        return cm_fail_status(&r->error, s);
+    }
+    if (s == CM_OK && least_angle(again, k) > least_angle(r, k)) {
+        again->stats.seconds_validate += r->stats.seconds_validate;
+        again->stats.seconds_build += r->stats.seconds_build, again->stats.seconds_check += r->stats.seconds_check;
+        again->stats.seconds_remesh += r->stats.seconds_remesh;
+        again->stats.seconds_ceiling += r->stats.seconds_ceiling;
+        *result = again, again = r;
+    }
+    cm_result_free(again);
+    return CM_OK;
+}
+
 cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_options *options,
                                cm_result **result)
 {
@@ -1142,8 +1195,10 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
     if (s == CM_OK) s = check_remesh_options(r, options);
     if (s == CM_OK) s = check_correspondence_options(r, options);
     if (s == CM_OK && (options->correspondence != CM_CORRESPOND_INDEX || options->max_edge > 0))
-        s = run_loops_arclength(r, polygons, k, options);
+        s = run_loops_arclength(r, polygons, k, options, LOOP_OUTER);
     else if (s == CM_OK) s = run_loops(r, polygons, k, NULL, options);
+    if (s == CM_OK) s = outer_rescue(result, polygons, k, options);
+    r = *result;
     if (s != CM_OK) cm_result_clear_geometry(r);
     return cm_error_close(&r->error, s);
 }
