@@ -1047,7 +1047,8 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         }
         if (joint && l == 1) cm_correspond_outer_similarity(&maps[0], similarity);
         if (joint && l > 0)
-            s = cm_correspond_choose_hole_starts(lxy, lcount, k, lorientation, similarity, hole_starts, &r->error);
+            s = cm_correspond_choose_hole_starts(lxy, lcount, k, lorientation, &maps[0], similarity, hole_starts,
+                                                 &r->error);
         if (s == CM_OK)
             s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_BY_START : outer,
                                     joint && l ? hole_starts : NULL, &maps[l], &unused_ceiling, &loop_choice);
