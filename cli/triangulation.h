@@ -85,10 +85,11 @@ enum {
      "output: conformal, the inputs' maps onto the disk\n"                    \
      "made to agree, their crowding tempered (with holes\n"                   \
      "the outer loops so; every hole from the start whose\n"                  \
-     "points lie nearest under the outer loops'\n"                           \
-     "similarity); with --pin-corners, arc length from\n"                     \
-     "the starts that align the inputs best up to a\n"                       \
-     "similarity; similarity: that for all inputs"},                         \
+     "points lie nearest, carried radially through the\n"                     \
+     "outer loops' pairing); with --pin-corners, arc\n"                      \
+     "length from the starts that align the inputs best\n"                   \
+     "up to a similarity; similarity: that for all\n"                        \
+     "inputs"},                                                               \
     {"pin", OPTION_PIN, "I,J[,K...]",                                         \
      "arclength: vertex I of the first input corresponds\n"                   \
      "to vertex J of the second, ... (0-based, in file\n"                     \

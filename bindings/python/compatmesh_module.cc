@@ -1192,7 +1192,7 @@ options: keyword arguments named like the fields of the C struct cm_options,
                     output as arclength: conformal, the polygons' maps onto
                     the disk made to agree, their crowding tempered; with
                     holes the outer loops so, every hole from the start
-                    nearest under the outer loops' similarity; with
+                    nearest, carried radially through the outer loops; with
                     pin_corners_deg, arc length from the starts that
                     align the polygons best up to a similarity),
                     "similarity" (that alignment for all polygons), or a

@@ -382,7 +382,8 @@ typedef struct cm_loops {
  * pairs the outer loops as polygons without holes, the conformal
  * correspondence of the filled outer loops or the similarity choice, and
  * starts every hole at the vertex whose points lie nearest to polygon 0's
- * hole carried by the outer loops' least-squares similarity), and cm_result_boundary_source says where each
+ * hole carried radially through the outer loops' correspondence, by
+ * their least-squares similarity where that is not defined), and cm_result_boundary_source says where each
  * boundary vertex lies. The holes must lie strictly inside the outer loop,
  * outside each other, and no loop may touch another. Failures of validation name the
  * polygon, the loop and the vertex within the loop; the error location's
