@@ -83,12 +83,13 @@ enum {
      "on its edges (the default with --pin); auto (the\n"                     \
      "default when the counts differ), with arclength's\n"                    \
      "output: conformal, the inputs' maps onto the disk\n"                    \
-     "made to agree, their crowding tempered; with\n"                        \
-     "--pin-corners or holes, arc length from the starts\n"                   \
-     "that align the inputs best up to a similarity\n"                       \
-     "(every hole's where its points lie nearest under\n"                    \
-     "the outer loops' similarity); similarity: that for\n"                  \
-     "all inputs"},                                                           \
+     "made to agree, their crowding tempered (with holes\n"                   \
+     "the outer loops so; every hole from the start whose\n"                  \
+     "points lie nearest, carried radially through the\n"                     \
+     "outer loops' pairing); with --pin-corners, arc\n"                      \
+     "length from the starts that align the inputs best\n"                   \
+     "up to a similarity; similarity: that for all\n"                        \
+     "inputs"},                                                               \
     {"pin", OPTION_PIN, "I,J[,K...]",                                         \
      "arclength: vertex I of the first input corresponds\n"                   \
      "to vertex J of the second, ... (0-based, in file\n"                     \

@@ -1191,8 +1191,10 @@ options: keyword arguments named like the fields of the C struct cm_options,
                     pins), "auto" (the default when the counts differ;
                     output as arclength: conformal, the polygons' maps onto
                     the disk made to agree, their crowding tempered; with
-                    pin_corners_deg or holes, arc length from the starts
-                    that align the polygons best up to a similarity),
+                    holes the outer loops so, every hole from the start
+                    nearest, carried radially through the outer loops; with
+                    pin_corners_deg, arc length from the starts that
+                    align the polygons best up to a similarity),
                     "similarity" (that alignment for all polygons), or a
                     compatmesh.Correspondence
     pins            arclength: a sequence of tuples, one vertex per polygon,

@@ -16,8 +16,8 @@ def test_table():
     rows = [line.split(" | ") for line in run.stdout.splitlines() if line.startswith("| ") and "---" not in line]
     header, rows = rows[0], rows[1:]
     assert header[1] == "pair" and header[5] == "c" and header[9] == "bound"
-    # 12 glyph pairs twice, 12 of tests/core, the command line's and Python's plates
-    assert len(rows) == 12 * 2 + 12 + 2
+    # 12 glyph pairs twice, 13 of tests/core, the command line's and Python's plates
+    assert len(rows) == 12 * 2 + 13 + 2
     assert all(r[-2] == "yes" for r in rows), [r[1] for r in rows if r[-2] != "yes"]
     good = sum(r[-1] == "yes |" for r in rows)
     assert "%d pairs with holes: %d valid, %d " % (len(rows), len(rows), good) in run.stdout
@@ -27,6 +27,7 @@ def test_table():
     assert c["plate"] == round(math.degrees(math.atan2(1, 0.4)), 1) == 68.2
     assert c["turned hole"] == 165.0  # the 24-gon's corner; the 12-gon hole's is 360 - 150
     assert c["five triangle holes"] == 90.0  # a triangle hole's corner in the material is 300
+    assert c["ring and stem"] == 90.0  # the square's and the stem's corners; the hole's are 270
     for r in rows:
         assert float(r[6]) == round(min(15, float(r[5]) / 3), 2)
         assert r[9] == ""  # the bounds only with --bounds

@@ -223,6 +223,37 @@ static inline void hf_egg(shape *a, shape *b)
     }
 }
 
+/* A loop through the m corners c, each edge cut into pieces of about h
+ * (at least one). */
+static inline void add_corners(shape *s, const double (*c)[2], size_t m, double h)
+{
+    begin_loop(s);
+    for (size_t i = 0; i < m; i++) {
+        const double *p = c[i], *q = c[(i + 1) % m];
+        long pieces = lround(hypot(q[0] - p[0], q[1] - p[1]) / h);
+        if (pieces < 1) pieces = 1;
+        for (long j = 0; j < pieces; j++) {
+            double t = (double)j / (double)pieces;
+            add_point(s, p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1]));
+        }
+    }
+}
+
+/* A square ring (side 2, 32 vertices; a square hole of side 0.8, 12)
+ * against the same ring with a stem of height 4 on its right (a "d", 64
+ * vertices), edges cut at about 0.25: loops of different sizes. The stem
+ * takes most of the d's outline, so arc length from a start puts the
+ * square's sides along it; the conformal correspondence of the filled
+ * outer loops keeps the ring on the ring. */
+static inline void hf_ring_and_stem(shape *a, shape *b)
+{
+    static const double ring[4][2] = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+    static const double stem[6][2] = {{0, 0}, {2, 0}, {2, 6}, {1.4, 6}, {1.4, 2}, {0, 2}};
+    static const double hole[4][2] = {{0.6, 0.6}, {0.6, 1.4}, {1.4, 1.4}, {1.4, 0.6}}; /* clockwise */
+    add_corners(a, ring, 4, 0.25), add_corners(a, hole, 4, 0.25);
+    add_corners(b, stem, 6, 0.25), add_corners(b, hole, 4, 0.25);
+}
+
 /* Every pair test_holes.c triangulates, once each (the overlay-method run of
  * square/disc is the same pair). */
 typedef struct hole_fixture {
@@ -245,6 +276,7 @@ static inline size_t hole_fixture_list(const hole_fixture **list)
         {"square/disc, sizes differ", hf_sizes_differ},
         {"egg, hole renumbered", hf_egg},
         {"crowded hole", hf_crowded_hole_reversed},
+        {"ring and stem", hf_ring_and_stem},
     };
     *list = fixtures;
     return sizeof fixtures / sizeof fixtures[0];

@@ -480,6 +480,45 @@ static void test_auto_hole_starts(void)
     }
 }
 
+/* Auto pairs the outer loops as polygons without holes: a square ring
+ * against the same ring with a stem (hole_fixtures.h, loops of different
+ * sizes), remeshed. Arc length from the similarity's start reached 13.3
+ * degrees (smaller of the two meshes); the conformal correspondence of
+ * the filled outer loops 19.5. Expected: valid, the outer loops' choice
+ * conformal, and the smallest angle of both meshes at least 15 degrees
+ * (min(15, c / 3), every corner c of the material 90 degrees or more). */
+static void test_auto_outer_loops_conformal(void)
+{
+    shape a = {0}, b = {0};
+    hf_ring_and_stem(&a, &b);
+    CHECK(a.n == 32 + 12 && b.n == 64 + 12);
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = CM_CORRESPOND_AUTO;
+    cm_loops in[2] = {loops_of(&a), loops_of(&b)};
+    cm_result *r = NULL;
+    cm_status st = cm_triangulate_loops(in, 2, &o, &r);
+    CHECK_MSG(st == CM_OK, "ring and stem: %s", cm_result_message(r));
+    if (st == CM_OK) {
+        const shape *in_shape[2] = {&a, &b};
+        size_t sizes[HF_MAX_LOOPS], added;
+        int contract = holes_boundary_contract(r, in_shape, sizes, &added);
+        CHECK_MSG(contract, "ring and stem: the boundary contract");
+        if (contract) {
+            cm_loops refined[2] = {{cm_result_vertices(r, 0), sizes, 2}, {cm_result_vertices(r, 1), sizes, 2}};
+            char why[256] = "";
+            CHECK_MSG(rc_check_loops(r, refined, 2, why, sizeof why), "ring and stem: %s", why);
+            CHECK_MSG(rc_check_halfedges_holes(r, cm_result_stats(r)->n, 1, why, sizeof why), "ring and stem: %s", why);
+        }
+        CHECK(cm_result_stats(r)->correspondence_choice == CM_CHOICE_CONFORMAL);
+        double least = rc_least_angle(r, 2);
+        CHECK_MSG(least >= 15.0, "ring and stem: smallest angle %.2f, below 15 degrees", least);
+        printf("ring and stem, auto: %zu boundary vertices, Steiner %zu, smallest angle %.1f\n",
+               cm_result_stats(r)->n, cm_result_stats(r)->steiner, least);
+    }
+    cm_result_free(r);
+}
+
 /* Do boundary vertices u and w of polygon g (input loops s) lie on one of
  * its input edges? An input vertex lies on the edges before and after it
  * along its loop, a point inside an edge on that edge alone. */
@@ -709,6 +748,7 @@ int main(void)
     test_fallback();
     test_arclength_loops();
     test_auto_hole_starts();
+    test_auto_outer_loops_conformal();
     test_no_edge_along_an_input_edge();
     test_capped_hole_edges_split();
     test_remesher_splits_hole_loops();

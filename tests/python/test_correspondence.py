@@ -132,7 +132,9 @@ def test_stats_name_the_correspondence_made():
     # auto keeps the conformal pairing of a three-lobed outline and an
     # ellipse (ceiling 45.0 degrees against the similarity choice's 40.9),
     # the similarity choice for two 12-pointed stars (41.6 against 23.6);
-    # pins make it arc length between them; with holes the outer loop's.
+    # pins make it arc length between them; with holes the outer loops',
+    # paired as without holes (the lobes and the ellipse with a hole each:
+    # conformal; the stars: similarity).
     t = 2 * np.pi * np.arange(36) / 36
     ellipse = np.c_[2 * np.cos(t), 0.5 * np.sin(t)]
     cases = [
@@ -145,8 +147,8 @@ def test_stats_name_the_correspondence_made():
     for kwargs, polygons, choice in cases:
         r = compatmesh.triangulate(polygons, remesh=False, **kwargs)
         assert r.stats["correspondence_choice"] == choice, (kwargs, choice)
-    hole = np.array([[1.5, 1.5], [1.5, 2.5], [2.5, 2.5], [2.5, 1.5]])
-    a = [np.array([[0, 0], [4, 0], [4, 4], [0, 4]], float), hole]
-    b = [np.array([[0, 0], [2, 0], [4, 0], [4, 4], [0, 4]], float), hole]
-    r = compatmesh.triangulate([a, b], correspondence="auto", remesh=False)
-    assert r.stats["holes"] == 1 and r.stats["correspondence_choice"] == "similarity"
+    for polygons, choice in (([lobes(40), ellipse], "conformal"),
+                             ([twelve_star(1.0, 0.7), twelve_star(0.8, 0.5, 0.5, 1.4, 0.7)], "similarity")):
+        with_holes = [[p, 0.1 * p[::-1] + p.mean(axis=0)] for p in polygons]
+        r = compatmesh.triangulate(with_holes, correspondence="auto", remesh=False)
+        assert r.stats["holes"] == 1 and r.stats["correspondence_choice"] == choice, choice

@@ -330,8 +330,9 @@ typedef struct cm_stats {
                                 overlay method takes it from the start) */
     /* The correspondence the result was made in. For polygons with holes,
      * the outer loop's; every hole then takes the same, except after
-     * CM_CHOICE_AFFINE, where the holes take CM_CHOICE_SIMILARITY (their
-     * starts fitted jointly with the outer loop's). */
+     * CM_CHOICE_AFFINE and CM_CHOICE_CONFORMAL, where the holes take
+     * CM_CHOICE_SIMILARITY (their starts fitted jointly with the outer
+     * loop's). */
     cm_correspondence_choice correspondence_choice;
 } cm_stats;
 
@@ -378,9 +379,11 @@ typedef struct cm_loops {
  * CM_CORRESPOND_ARCLENGTH or _AUTO every loop is paired as a polygon
  * without holes would be (loops of any sizes and directions;
  * pin_corners_deg and max_edge per loop; explicit pins are refused; auto
- * chooses the outer loop's start as without holes and every hole's as the
- * vertex whose points lie nearest to polygon 0's hole carried by the
- * outer loops' least-squares similarity), and cm_result_boundary_source says where each
+ * pairs the outer loops as polygons without holes, the conformal
+ * correspondence of the filled outer loops or the similarity choice, and
+ * starts every hole at the vertex whose points lie nearest to polygon 0's
+ * hole carried radially through the outer loops' correspondence, by
+ * their least-squares similarity where that is not defined), and cm_result_boundary_source says where each
  * boundary vertex lies. The holes must lie strictly inside the outer loop,
  * outside each other, and no loop may touch another. Failures of validation name the
  * polygon, the loop and the vertex within the loop; the error location's

@@ -458,20 +458,28 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
     return s;
 }
 
+/* What correspond_boundary's k loops are: whole polygons (the caller's
+ * pins taken, the bound before the choice reported), the outer loops of
+ * polygons with holes (auto chooses as for whole polygons, the outer loop
+ * filled standing for each: the conformal correspondence sees where the
+ * parts of the outline are, arc length from a start does not), or loops
+ * paired from a start alone (holes, and outer loops in outer_rescue). */
+enum loop_kind { LOOP_WHOLE, LOOP_OUTER, LOOP_BY_START };
+
 /* The boundaries in correspondence for CM_CORRESPOND_ARCLENGTH and _AUTO,
  * of k polygons each checked on its own (orientation as found): for auto,
  * the starts chosen where none are pinned; then the common refinement and
  * the max_edge split. every_vertex: the index correspondence, as pins at
- * every vertex. whole: a whole polygon, whose pins the caller gave and
- * whose bound before the choice is reported; 0 for one loop of polygons
- * with holes. hole_starts: for auto, the starts chosen for a hole (k input
- * vertices), taken in place of the loop's own choice; else NULL. *choice
- * receives the correspondence made. */
+ * every vertex. kind: what the loops are (enum loop_kind). hole_starts:
+ * for auto, the starts chosen for a hole (k input vertices), taken in
+ * place of the loop's own choice; else NULL. *choice receives the
+ * correspondence made. */
 static cm_status correspond_boundary(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
                                      const int *orientation, const cm_options *o, const size_t *every_vertex,
-                                     int whole, const size_t *hole_starts, cm_boundary_map *out, double *ceiling_deg,
-                                     cm_correspondence_choice *choice)
+                                     enum loop_kind kind, const size_t *hole_starts, cm_boundary_map *out,
+                                     double *ceiling_deg, cm_correspondence_choice *choice)
 {
+    int whole = kind == LOOP_WHOLE;
     *ceiling_deg = -1;
     *choice = every_vertex ? CM_CHOICE_INDEX : CM_CHOICE_ARCLENGTH;
     cm_status s = CM_OK;
@@ -492,13 +500,14 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         if (found) pins = affine, num_pins = counts[0], *choice = CM_CHOICE_AFFINE;
     }
-    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && whole &&
+    if (s == CM_OK && o->correspondence == CM_CORRESPOND_AUTO && num_pins == 0 && kind != LOOP_BY_START &&
         !(o->pin_corners_deg > 0)) {
-        /* Polygons without holes: conformal or similarity (auto_whole). */
+        /* Polygons without holes, and outer loops: conformal or similarity
+         * (auto_whole). */
         int found = 0;
         s = auto_whole(r, polygons, counts, k, orientation, out, &found, ceiling_deg, choice);
         if (s == CM_OK && found) {
-            if (o->ceiling) s = bound_before(r, polygons, counts, k, orientation);
+            if (o->ceiling && whole) s = bound_before(r, polygons, counts, k, orientation);
             if (s == CM_OK && o->max_edge > 0)
                 s = cm_boundary_map_split(out, polygons, counts, orientation, o->max_edge, &r->error);
             free(affine);
@@ -627,7 +636,7 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
     if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
     double ceiling_deg = -1;
     if (s == CM_OK)
-        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, 1, NULL, &r->boundary, &ceiling_deg,
+        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, LOOP_WHOLE, NULL, &r->boundary, &ceiling_deg,
                                 &r->stats.correspondence_choice);
     int32_t **tris = NULL; /* the merged polygons' triangulations, when the cap split made them */
     if (s == CM_OK && !every_vertex && o->remesh)
@@ -961,12 +970,15 @@ done:
 
 /* CM_CORRESPOND_ARCLENGTH and _AUTO for polygons with holes: loop l of
  * every polygon corresponds to loop l, and within each loop as for a
- * polygon without holes (corner pins and max_edge per loop). Auto chooses
- * the outer loop's start as for a polygon without holes, and every hole's
- * jointly with it: the start whose points lie nearest to polygon 0's hole
- * under the similarity fitted to the outer loops in correspondence (a hole
- * aligned on its own may turn against the outer loop and twist the map
- * around it), then the hole by arc length from there. The caller's pins
+ * polygon without holes (corner pins and max_edge per loop). Auto pairs
+ * the outer loops as polygons without holes (the conformal correspondence
+ * of the filled outer loops, or the similarity choice of a start where
+ * that allows the higher ceiling: auto_whole), and chooses every hole's
+ * start jointly with them: the start whose points lie nearest to polygon
+ * 0's hole under the similarity fitted to the outer loops in
+ * correspondence (a hole aligned on its own may turn against the outer
+ * loop and twist the map around it), then the hole by arc length from
+ * there. The caller's pins
  * are refused: they would have to name loops. CM_CORRESPOND_INDEX with
  * max_edge comes here too, as pins at every vertex of each loop. With
  * remeshing (not for index), the edges of every loop whose cap binds are
@@ -976,7 +988,8 @@ done:
  * boundary vertex to its input edge, numbered in the polygon's whole array
  * (the edge from a vertex to the next of its loop); with remeshing the
  * remesher may split the loops' edges there too (loop_edge_between). */
-static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o)
+static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o,
+                                     enum loop_kind outer)
 {
     if (o->num_pins)
         return cm_fail(&r->error, CM_ERR_ARGUMENT,
@@ -1034,10 +1047,11 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         }
         if (joint && l == 1) cm_correspond_outer_similarity(&maps[0], similarity);
         if (joint && l > 0)
-            s = cm_correspond_choose_hole_starts(lxy, lcount, k, lorientation, similarity, hole_starts, &r->error);
+            s = cm_correspond_choose_hole_starts(lxy, lcount, k, lorientation, &maps[0], similarity, hole_starts,
+                                                 &r->error);
         if (s == CM_OK)
-            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, 0, joint && l ? hole_starts : NULL,
-                                    &maps[l], &unused_ceiling, &loop_choice);
+            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_BY_START : outer,
+                                    joint && l ? hole_starts : NULL, &maps[l], &unused_ceiling, &loop_choice);
         if (l == 0) r->stats.correspondence_choice = loop_choice; /* the outer loop's (cm_stats) */
         if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
             char detail[sizeof r->error.message];
@@ -1103,6 +1117,57 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
     return s;
 }
 
+/* The smallest angle of a result over its k meshes (degrees). */
+static double least_angle(const cm_result *r, size_t k)
+{
+    double least = 180;
+    for (size_t g = 0; g < k; g++) {
+        cm_quality q;
+        cm_result_quality(r, g, &q);
+        least = fmin(least, q.min_angle_deg);
+    }
+    return least;
+}
+
+/* Auto with holes pairs the outer loops as polygons without holes; where
+ * the result ends below this share of the remesher's aim, the outer loops
+ * are also paired by the similarity's start (the hole starts, chosen
+ * under the outer loops' similarity, may fit one pairing of the outer
+ * loops and not the other: a conformal pairing of the filled outlines
+ * knows nothing of the holes) and the better result is kept. 0.6: below
+ * 15 degrees at the default aim of 25. */
+#define CM_OUTER_RESCUE_SHARE 0.6
+
+/* The rescue above on *result: CM_OK, *result the better run (a second
+ * run that fails, out of memory included, leaves it as it was), or
+ * CM_ERR_CANCELLED. */
+static cm_status outer_rescue(cm_result **result, const cm_loops *polygons, size_t k, const cm_options *o)
+{
+    cm_result *r = *result;
+    if (o->correspondence != CM_CORRESPOND_AUTO || !o->remesh ||
+        r->stats.correspondence_choice != CM_CHOICE_CONFORMAL ||
+        least_angle(r, k) >= CM_OUTER_RESCUE_SHARE * r->stats.remesh_aim_deg)
+        return CM_OK;
+    cm_result *again = NULL;
+    cm_options unused;
+    const cm_options *same = o;
+    if (!new_result(&again, &same, &unused)) return CM_OK;
+    cm_status s = run_loops_arclength(again, polygons, k, o, LOOP_BY_START);
+    if (s == CM_ERR_CANCELLED) {
+        cm_result_free(again);
+        return cm_fail_status(&r->error, s);
+    }
+    if (s == CM_OK && least_angle(again, k) > least_angle(r, k)) {
+        again->stats.seconds_validate += r->stats.seconds_validate;
+        again->stats.seconds_build += r->stats.seconds_build, again->stats.seconds_check += r->stats.seconds_check;
+        again->stats.seconds_remesh += r->stats.seconds_remesh;
+        again->stats.seconds_ceiling += r->stats.seconds_ceiling;
+        *result = again, again = r;
+    }
+    cm_result_free(again);
+    return CM_OK;
+}
+
 cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_options *options,
                                cm_result **result)
 {
@@ -1131,8 +1196,10 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
     if (s == CM_OK) s = check_remesh_options(r, options);
     if (s == CM_OK) s = check_correspondence_options(r, options);
     if (s == CM_OK && (options->correspondence != CM_CORRESPOND_INDEX || options->max_edge > 0))
-        s = run_loops_arclength(r, polygons, k, options);
+        s = run_loops_arclength(r, polygons, k, options, LOOP_OUTER);
     else if (s == CM_OK) s = run_loops(r, polygons, k, NULL, options);
+    if (s == CM_OK) s = outer_rescue(result, polygons, k, options);
+    r = *result;
     if (s != CM_OK) cm_result_clear_geometry(r);
     return cm_error_close(&r->error, s);
 }

@@ -158,9 +158,41 @@ static double distance_cost(const start_search *q, size_t start)
     return sum;
 }
 
+/* The mean of a loop's n vertices. */
+static double complex vertex_mean(const double *xy, size_t n)
+{
+    double complex c = 0;
+    for (size_t i = 0; i < n; i++) c += xy[2 * i] + I * xy[2 * i + 1];
+    return c / (double)n;
+}
+
+/* Point z of polygon 0's hole carried into polygon g radially: the point
+ * of the outer loops' map whose direction from polygon 0's hole centre c0
+ * is nearest z's, and z at its share of the way out from c0 to it, go to
+ * the same share of the way from polygon g's hole centre cg to that
+ * point's partner. 0 (out untouched) where a direction is not defined. */
+static int carry_radially(const cm_boundary_map *outer, size_t g, double complex c0, double complex cg,
+                          double complex z, double complex *out)
+{
+    double complex d = z - c0, far = 0;
+    double best = -2;
+    size_t at = 0;
+    if (!(cabs(d) > 0)) return 0;
+    for (size_t i = 0; i < outer->n; i++) {
+        double complex p = outer->xy[0][2 * i] + I * outer->xy[0][2 * i + 1] - c0;
+        if (!(cabs(p) > 0)) continue;
+        double cosine = creal(p * conj(d)) / (cabs(p) * cabs(d));
+        if (cosine > best) best = cosine, at = i, far = p;
+    }
+    if (best == -2) return 0;
+    double complex q = outer->xy[g][2 * at] + I * outer->xy[g][2 * at + 1];
+    *out = cg + cabs(d) / cabs(far) * (q - cg);
+    return 1;
+}
+
 cm_status cm_correspond_choose_hole_starts(const double *const *holes, const size_t *counts, size_t k,
-                                           const int *orientation, const double *similarity, size_t *pins,
-                                           cm_error *err)
+                                           const int *orientation, const cm_boundary_map *outer,
+                                           const double *similarity, size_t *pins, cm_error *err)
 {
     size_t m = 0;
     for (size_t g = 0; g < k; g++) m = counts[g] > m ? counts[g] : m;
@@ -176,7 +208,9 @@ cm_status cm_correspond_choose_hole_starts(const double *const *holes, const siz
         int reversed = orientation[g] < 0;
         double complex a = similarity[4 * g] + I * similarity[4 * g + 1];
         double complex b = similarity[4 * g + 2] + I * similarity[4 * g + 3];
-        for (size_t j = 0; j < m; j++) mapped[j] = a * z[j] + b;
+        double complex c0 = vertex_mean(holes[0], counts[0]), cg = vertex_mean(holes[g], n);
+        for (size_t j = 0; j < m; j++)
+            if (!carry_radially(outer, g, c0, cg, z[j], &mapped[j])) mapped[j] = a * z[j] + b;
         if (!(arc = cm_arc_lengths(holes[g], n, reversed, 0))) {
             s = cm_fail_status(err, CM_ERR_NO_MEMORY);
             break;

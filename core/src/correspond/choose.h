@@ -28,15 +28,19 @@ void cm_correspond_outer_similarity(const cm_boundary_map *outer, double *simila
  * jointly with the outer loop: pins[0] polygon 0's first vertex; for every
  * other polygon the vertex to start the hole's arc length from whose
  * points lie nearest (sum of squared distances) to polygon 0's hole points
- * mapped by the outer loops' similarity, both sampled at equal normalised
- * arc length (as many points as the larger loop has vertices, at most
- * 1024). A hole chosen on its own may turn against the outer loop; this
- * way the holes keep their place in the frame the outer loops set.
- * Candidates as cm_correspond_choose_starts. orientation as from
- * cm_input_check_loops for this hole. */
+ * carried into it, both sampled at equal normalised arc length (as many
+ * points as the larger loop has vertices, at most 1024). A point is
+ * carried radially through the outer loops' map `outer` (the outer point
+ * nearest in direction from the hole's vertex mean, the same share of the
+ * way out from the other hole's; where that is not defined, by the outer
+ * loops' similarity): the outer loops' correspondence where it is, not
+ * one similarity for the whole outline. A hole chosen on its own may turn
+ * against the outer loop; this way the holes keep their place in the
+ * frame the outer loops set. Candidates as cm_correspond_choose_starts.
+ * orientation as from cm_input_check_loops for this hole. */
 cm_status cm_correspond_choose_hole_starts(const double *const *holes, const size_t *counts, size_t k,
-                                           const int *orientation, const double *similarity, size_t *pins,
-                                           cm_error *err);
+                                           const int *orientation, const cm_boundary_map *outer,
+                                           const double *similarity, size_t *pins, cm_error *err);
 
 /* Polygons of one count that are affine images of polygon 0 up to where
  * they start: if for every polygon g some start makes its vertices, walked
