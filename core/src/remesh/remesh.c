@@ -351,9 +351,18 @@ static int queue_touched(remesher *x, cm_work *touched)
 
 /* ---- transactions ----------------------------------------------------------- */
 
+/* A gain of `gain` radians, or of CM_PROGRESS_SHARE of the angle
+ * `before` when that is less: a sliver of a fraction of a degree rises
+ * in small steps (as in refine's progress rule). */
+static double progress_needed(double gain, double before)
+{
+    return fmin(gain, CM_PROGRESS_SHARE * before);
+}
+
 /* Keeps the open transaction if the smallest angle of the triangles it
- * changed rose by at least `gain` (radians; 0: did not drop), else undoes
- * it. Returns 1 kept, 0 undone, -1 out of memory. */
+ * changed rose by at least progress_needed(gain, ...) (radians; gain 0:
+ * did not drop; else it must rise), else undoes it. Returns 1 kept,
+ * 0 undone, -1 out of memory. */
 static int settle_by(remesher *x, double gain)
 {
     double before, after;
@@ -361,7 +370,7 @@ static int settle_by(remesher *x, double gain)
         cm_kmesh_tx_commit(&x->km);
         return -1;
     }
-    if (after >= before + gain) {
+    if (after >= before + progress_needed(gain, before) && (gain == 0 || after > before)) {
         cm_kmesh_tx_commit(&x->km);
         return 1;
     }
@@ -555,7 +564,7 @@ static int try_forced(remesher *x, enum forced_move kind, int32_t c)
         double before, after;
         if (improve(x, CM_IMPROVE_SWEEPS) || cm_kmesh_tx_region(km, &before, &after))
             return cm_kmesh_tx_commit(km), -1;
-        if (after >= before + CM_PROGRESS || after < before - CM_FORCED_CLOSE) break;
+        if (after >= before + progress_needed(CM_PROGRESS, before) || after < before - CM_FORCED_CLOSE) break;
     }
     return settle_by(x, CM_PROGRESS);
 }
