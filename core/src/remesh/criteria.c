@@ -134,6 +134,20 @@ static int walk_build(walk_mesh *w, const cm_mesh *mesh, size_t n)
     return 0;
 }
 
+/* A new walk from triangle t: every earlier stamp forgotten, t queued.
+ * 0, or -1 (out of memory). */
+static int walk_begin(walk_mesh *w, int32_t t, size_t nt)
+{
+    if (++w->walk == 0) { /* wrapped: forget every stamp */
+        for (size_t u = 0; u < nt; u++) w->seen[u] = 0;
+        w->walk = 1;
+    }
+    w->stack.n = 0;
+    if (cm_ibuf_push(&w->stack, t)) return -1;
+    w->seen[t] = w->walk;
+    return 0;
+}
+
 typedef struct search {
     const cm_mesh *mesh;
     const double *xy;
@@ -195,13 +209,7 @@ static double edge_cap(const cm_mesh *mesh, walk_mesh *w, const double *xy, size
     size_t p = cm_loops_prev(mesh->loop_start, n, i); /* the neighbours first: h drops fast */
     s.h = fmin(s.h, fmin(entry_of(mesh, xy, n, &s.f, i, j, p), entry_of(mesh, xy, n, &s.f, i, j, j)));
     set_region(&s);
-    if (++w->walk == 0) { /* wrapped: forget every stamp */
-        for (size_t t = 0; t < mesh->nt; t++) w->seen[t] = 0;
-        w->walk = 1;
-    }
-    w->stack.n = 0;
-    if (cm_ibuf_push(&w->stack, w->edge_tri[i])) return -1;
-    w->seen[w->edge_tri[i]] = w->walk;
+    if (walk_begin(w, w->edge_tri[i], mesh->nt)) return -1;
     while (w->stack.n > 0) {
         int32_t t = w->stack.a[--w->stack.n];
         for (int c = 0; c < 3; c++) {
@@ -322,13 +330,7 @@ static double near_vertex_cap(const cm_mesh *mesh, walk_mesh *w, const double *x
     const double *ta[3] = {xy + 2 * pa, a, b}, *tb[3] = {a, b, xy + 2 * nb};
     double best = HUGE_VAL;
     int void_a = 0, void_b = 0;
-    if (++w->walk == 0) {
-        for (size_t t = 0; t < mesh->nt; t++) w->seen[t] = 0;
-        w->walk = 1;
-    }
-    w->stack.n = 0;
-    if (cm_ibuf_push(&w->stack, w->edge_tri[i])) return -1;
-    w->seen[w->edge_tri[i]] = w->walk;
+    if (walk_begin(w, w->edge_tri[i], mesh->nt)) return -1;
     while (w->stack.n > 0) {
         int32_t t = w->stack.a[--w->stack.n];
         for (int c = 0; c < 3; c++) {
