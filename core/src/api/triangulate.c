@@ -975,10 +975,10 @@ done:
  * of the filled outer loops, or the similarity choice of a start where
  * that allows the higher ceiling: auto_whole), and chooses every hole's
  * start jointly with them: the start whose points lie nearest to polygon
- * 0's hole under the similarity fitted to the outer loops in
- * correspondence (a hole aligned on its own may turn against the outer
- * loop and twist the map around it), then the hole by arc length from
- * there. The caller's pins
+ * 0's hole carried radially through the outer loops' correspondence
+ * (cm_correspond_choose_hole_starts; a hole aligned on its own may turn
+ * against the outer loop and twist the map around it), then the hole by
+ * arc length from there. The caller's pins
  * are refused: they would have to name loops. CM_CORRESPOND_INDEX with
  * max_edge comes here too, as pins at every vertex of each loop. With
  * remeshing (not for index), the edges of every loop whose cap binds are
