@@ -115,6 +115,8 @@ static void walk_free(walk_mesh *w)
     cm_ibuf_free(&w->stack);
 }
 
+/* 0, CM_NO_MEMORY, or CM_CAPS_NOT_TRIANGULATED (a boundary edge on no
+ * triangle); *w is freed unless 0. */
 static int walk_build(walk_mesh *w, const cm_mesh *mesh, size_t n)
 {
     *w = (walk_mesh){mesh->tri, NULL, NULL, NULL, 0, {0}};
@@ -131,6 +133,11 @@ static int walk_build(walk_mesh *w, const cm_mesh *mesh, size_t n)
         int32_t a = mesh->tri[c - c % 3 + (c + 1) % 3]; /* the edge opposite c starts here */
         if (w->nbr[c] < 0 && a >= 0 && (size_t)a < n) w->edge_tri[a] = (int32_t)(c / 3);
     }
+    for (size_t i = 0; i < n; i++)
+        if (w->edge_tri[i] < 0) {
+            walk_free(w);
+            return CM_CAPS_NOT_TRIANGULATED;
+        }
     return 0;
 }
 
@@ -355,12 +362,8 @@ static double near_vertex_cap(const cm_mesh *mesh, walk_mesh *w, const double *x
 int cm_near_vertex_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, double *bcap)
 {
     walk_mesh w;
-    if (walk_build(&w, mesh, n)) return CM_NO_MEMORY;
-    for (size_t i = 0; i < n; i++)
-        if (w.edge_tri[i] < 0) {
-            walk_free(&w);
-            return CM_CAPS_NOT_TRIANGULATED;
-        }
+    int built = walk_build(&w, mesh, n);
+    if (built) return built;
     for (size_t g = 0; g < mesh->k; g++)
         for (size_t i = 0; i < n; i++) {
             if (cm_progress_check(progress)) {
@@ -383,12 +386,8 @@ int cm_boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, doubl
 {
     for (size_t i = 0; i < n; i++) bcap[i] = vcap[i] = CM_PI;
     walk_mesh w;
-    if (walk_build(&w, mesh, n)) return CM_NO_MEMORY;
-    for (size_t i = 0; i < n; i++)
-        if (w.edge_tri[i] < 0) {
-            walk_free(&w);
-            return CM_CAPS_NOT_TRIANGULATED;
-        }
+    int built = walk_build(&w, mesh, n);
+    if (built) return built;
     for (size_t g = 0; g < mesh->k; g++) {
         const double *xy = mesh->xy[g];
         for (size_t i = 0; i < n; i++) {
