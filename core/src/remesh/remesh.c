@@ -42,6 +42,7 @@
  * result is kept; when that is short of it too, its forced moves run
  * again around the CM_STEP_OUT_WIDE worst triangles instead of the
  * CM_STEP_OUT_WORST. */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -96,6 +97,11 @@
  * that gains sits beside them). */
 #define CM_STEP_OUT_WORST 8
 #define CM_STEP_OUT_WIDE 64
+/* The forced moves the wider window may try: on the hard family its
+ * gains come within about 9,000 tries, but a distortion spread over a
+ * large region kept it trying for 30,000 (16 s on a 160-vertex pair) for
+ * the last half degree. */
+#define CM_STEP_OUT_WIDE_TRIES 12000
 /* A forced move whose repair ends this close below its start (radians,
  * about 0.1 degrees) gets a second repair before the decision: an
  * undone move is not tried again till the mesh near it changes
@@ -660,9 +666,10 @@ static int mark_changed(remesher *x)
 
 /* Forced moves around the `window` worst short triangles (at most
  * CM_STEP_OUT_WIDE), the first that gains
- * kept, until none gains, stall_limit() rounds have run or (splits) the
- * budget is spent. CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
-static cm_status step_out(remesher *x, size_t n, int32_t window)
+ * kept, until none gains, stall_limit() rounds have run, max_tries moves
+ * have been tried or (splits) the budget is spent. CM_OK,
+ * CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
+static cm_status step_out(remesher *x, size_t n, int32_t window, long max_tries)
 {
     cm_kmesh *km = &x->km;
     int32_t worst[CM_STEP_OUT_WIDE], work[2 * CM_STEP_OUT_WIDE], near[12];
@@ -670,7 +677,8 @@ static cm_status step_out(remesher *x, size_t n, int32_t window)
     failed_moves *f = &x->failed;
     tabu_clear(&f->at);
     f->entries.n = f->region.n = 0;
-    for (long round = 0; round < stall_limit(x) && cm_kmesh_min_slack(km) < 0; round++) {
+    long tries = 0;
+    for (long round = 0; round < stall_limit(x) && cm_kmesh_min_slack(km) < 0 && tries < max_tries; round++) {
         if (cm_progress_poll(x->progress, CM_STAGE_REMESH, 1.0)) return CM_ERR_CANCELLED;
         int32_t nw = cm_heap_smallest(&km->tq, window, 0.0, worst, work);
         int gained = 0;
@@ -678,7 +686,7 @@ static cm_status step_out(remesher *x, size_t n, int32_t window)
          * search's flags), so each distinct move runs once till a kept
          * move changes the mesh near it: neighbouring worst triangles,
          * and the two corners of one edge, name the same move again. */
-        for (int32_t i = 0; i < nw && !gained; i++) {
+        for (int32_t i = 0; i < nw && !gained && tries < max_tries; i++) {
             if (!cm_kmesh_tri_live(km, worst[i])) continue;
             int m = corners_near(km, worst[i], near);
             for (int kind = 0; kind < FORCED_MOVES && !gained; kind++) {
@@ -689,6 +697,7 @@ static cm_status step_out(remesher *x, size_t n, int32_t window)
                     uint64_t key = forced_key(km, (enum forced_move)kind, near[j]);
                     if (still_failed(f, key)) continue;
                     int s = try_forced(x, (enum forced_move)kind, near[j]);
+                    tries++;
                     TRACE_FORCED();
                     if (s < 0 || (s == 0 && remember_failed(x, key, near[j])) || (s > 0 && mark_changed(x)))
                         return stop_status(x);
@@ -835,7 +844,7 @@ static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const do
     cm_kmesh_drop_candidates(&x->km); /* no split after this one picks from them */
     if (improve_everywhere(x)) return stop_status(x);
     trace(x, "polish");
-    if ((s = step_out(x, n, CM_STEP_OUT_WORST)) != CM_OK) return s;
+    if ((s = step_out(x, n, CM_STEP_OUT_WORST, LONG_MAX)) != CM_OK) return s;
     return finish(x, rep);
 }
 
@@ -877,7 +886,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
         }
         /* Both ended short: the better one's forced moves look wider. */
         if (s == CM_OK && rep->min_angle_deg < CM_RESCUE_SHARE * rep->target_deg) {
-            s = step_out(&x, n, CM_STEP_OUT_WIDE);
+            s = step_out(&x, n, CM_STEP_OUT_WIDE, CM_STEP_OUT_WIDE_TRIES);
             if (s == CM_OK) s = finish(&x, rep);
         }
     }
