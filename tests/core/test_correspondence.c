@@ -5,7 +5,8 @@
  * start vertex finds the identity, and bad pins are clear errors. The
  * conformal correspondence (CM_CORRESPOND_AUTO without holes) finds the
  * identity between a polygon and a similar copy too, also when the copy
- * has its edges split; CM_CORRESPOND_SIMILARITY keeps the similarity
+ * has its edges split, and places points along an edge by the conformal
+ * parameter, not linearly between the vertices; CM_CORRESPOND_SIMILARITY keeps the similarity
  * choice. Where a boundary edge caps the angle below the aim, arclength
  * and auto halve it compatibly (an 8 x 1 rectangle: 4 pieces per long
  * side), index keeps it; the construction joins no two boundary vertices
@@ -19,6 +20,7 @@
 #include "compatmesh/compatmesh.h"
 #include "correspond/arclength.h"
 #include "correspond/conformal.h"
+#include "geom/angle.h"
 #include "random_polygons.h"
 #include "result_check.h"
 
@@ -224,7 +226,7 @@ static void test_conformal_similar_copy(void)
     size_t counts[2] = {N, N};
     int orientation[2] = {orientation_of(a, N), orientation_of(b, N)}, found = 0;
     cm_error err = {0};
-    CHECK(cm_correspond_conformal(in, counts, 2, orientation, params, &found, &err) == CM_OK && found);
+    CHECK(cm_correspond_conformal(in, counts, 2, orientation, params, NULL, &found, &err) == CM_OK && found);
     for (int i = 0; found && i < N; i++) {
         /* counter-clockwise position c of b is a's vertex c + SHIFT when
          * both run counter-clockwise */
@@ -234,11 +236,51 @@ static void test_conformal_similar_copy(void)
         CHECK_MSG(fmin(gap, 1 - gap) < 1e-3, "vertex %d: %g against %g", i, pb[cb], pa[ca]);
     }
     cm_boundary_map map;
-    CHECK(cm_correspond_params(in, counts, 2, orientation, (const double *const *)params, &map, &err) == CM_OK);
+    CHECK(cm_correspond_params(in, counts, 2, orientation, (const double *const *)params, NULL, &map, &err) == CM_OK);
     CHECK_MSG(map.n == N, "%zu boundary vertices", map.n);
     for (size_t i = 0; i < map.n && map.n == N; i++)
         CHECK(map.t[0][i] == 0 && map.t[1][i] == 0 && map.edge[0][i] == (map.edge[1][i] + SHIFT) % N);
     cm_boundary_map_clear(&map);
+}
+
+/* A disc's 64 evenly spaced vertices on a square's 4 sides: the conformal
+ * map crowds a convex corner (its parameter grows slowly there), so they
+ * lie farther apart near the corners than near the middle of a side.
+ * Linear interpolation between the square's vertices would space them
+ * evenly. */
+static void test_conformal_between_vertices(void)
+{
+    enum { N = 64, F = CM_PARAM_FINE };
+    double disc[2 * N], square[8] = {-1, -1, 1, -1, 1, 1, -1, 1}, pd[N], ps[4], fine[4 * F];
+    for (int i = 0; i < N; i++) {
+        disc[2 * i] = cos(2 * CM_PI * (i + 0.5) / N);
+        disc[2 * i + 1] = sin(2 * CM_PI * (i + 0.5) / N);
+    }
+    const double *in[2] = {disc, square};
+    double *params[2] = {pd, ps}, *fines[2] = {NULL, fine};
+    size_t counts[2] = {N, 4};
+    int orientation[2] = {1, 1}, found = 0;
+    cm_error err = {0};
+    CHECK(cm_correspond_conformal(in, counts, 2, orientation, params, fines, &found, &err) == CM_OK && found);
+    cm_boundary_map map;
+    CHECK(found && cm_correspond_params(in, counts, 2, orientation, (const double *const *)params,
+                                        (const double *const *)fines, &map, &err) == CM_OK);
+    for (int32_t e = 0; found && e < 4; e++) {
+        double t[N + 2];
+        int m = 0;
+        t[m++] = 0;
+        for (size_t i = 0; i < map.n; i++)
+            if (map.edge[1][i] == e && map.t[1][i] > 0) t[m++] = map.t[1][i];
+        t[m++] = 1;
+        CHECK_MSG(m >= 12, "side %d holds %d points", e, m - 2);
+        double end = fmin(t[1] - t[0], t[m - 1] - t[m - 2]), middle = 0;
+        for (int j = 1; j < m; j++) {
+            CHECK(t[j] > t[j - 1]);
+            if (t[j - 1] < 0.5 && t[j] >= 0.5) middle = t[j] - t[j - 1];
+        }
+        CHECK_MSG(end > 1.3 * middle, "side %d: gap %g at the corners, %g in the middle", e, end, middle);
+    }
+    if (found) cm_boundary_map_clear(&map);
 }
 
 /* a (n vertices) against its similar copy renumbered by shift with every
@@ -499,6 +541,7 @@ int main(void)
     test_pins_are_honoured();
     test_bad_pins();
     test_conformal_similar_copy();
+    test_conformal_between_vertices();
     test_auto_conformal_identity();
     test_similarity_mode();
     test_choice_reported();

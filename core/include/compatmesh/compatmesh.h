@@ -147,7 +147,8 @@ typedef enum cm_correspondence {
      * Polygons without holes: the conformal correspondence, each polygon
      * mapped onto the disk by its harmonic measure, the disks balanced
      * and turned to agree, the crowding of thin parts tempered (stretch
-     * to the power 1/4), or the similarity choice below where that allows
+     * to the power 1/4), the others' vertices placed along each edge by
+     * that parameter, or the similarity choice below where that allows
      * the higher certified ceiling. With pins: ARCLENGTH between them. With
      * pin_corners_deg, and for polygons with holes: arc length from the
      * start of every polygon (against polygon 0's first vertex)

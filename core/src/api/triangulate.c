@@ -385,19 +385,24 @@ static cm_status bound_before(cm_result *r, const double *const *polygons, const
 }
 
 /* The conformal correspondence's boundaries into out (*found = 0 when it
- * cannot be had, out then untouched). */
+ * cannot be had, out then untouched): the others' points on a polygon's
+ * edges where the conformal parameter puts them, or with `linear` where
+ * it would be if it were linear between the polygon's vertices. */
 static cm_status conformal(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
-                           const int *orientation, cm_boundary_map *out, int *found)
+                           const int *orientation, int linear, cm_boundary_map *out, int *found)
 {
     size_t total = 0;
     for (size_t g = 0; g < k; g++) total += counts[g];
     double *all = malloc(total * sizeof *all), **params = malloc(k * sizeof *params);
-    cm_status s = all && params ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-    for (size_t g = 0, at = 0; s == CM_OK && g < k; at += counts[g], g++) params[g] = all + at;
-    if (s == CM_OK) s = cm_correspond_conformal(polygons, counts, k, orientation, params, found, &r->error);
+    double *all_fine = malloc(total * CM_PARAM_FINE * sizeof *all_fine), **fine = calloc(k, sizeof *fine);
+    cm_status s = all && params && all_fine && fine ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    for (size_t g = 0, at = 0; s == CM_OK && g < k; at += counts[g], g++)
+        params[g] = all + at, fine[g] = g ? all_fine + at * CM_PARAM_FINE : NULL;
+    if (s == CM_OK) s = cm_correspond_conformal(polygons, counts, k, orientation, params, fine, found, &r->error);
     if (s == CM_OK && *found)
-        s = cm_correspond_params(polygons, counts, k, orientation, (const double *const *)params, out, &r->error);
-    free(all), free(params);
+        s = cm_correspond_params(polygons, counts, k, orientation, (const double *const *)params,
+                                 linear ? NULL : (const double *const *)fine, out, &r->error);
+    free(all), free(params), free(all_fine), free(fine);
     return s;
 }
 
@@ -431,10 +436,10 @@ static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *de
  * *found = 0 when the conformal one cannot be had (out then untouched),
  * else *choice says which was kept. */
 static cm_status auto_whole(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
-                            const int *orientation, cm_boundary_map *out, int *found, double *ceiling_deg,
-                            cm_correspondence_choice *choice)
+                            const int *orientation, int linear, cm_boundary_map *out, int *found,
+                            double *ceiling_deg, cm_correspondence_choice *choice)
 {
-    cm_status s = conformal(r, polygons, counts, k, orientation, out, found);
+    cm_status s = conformal(r, polygons, counts, k, orientation, linear, out, found);
     if (s != CM_OK || !*found) return s;
     cm_boundary_map similar = {0};
     size_t *starts = malloc(k * sizeof *starts);
@@ -476,8 +481,8 @@ enum loop_kind { LOOP_WHOLE, LOOP_OUTER, LOOP_BY_START };
  * correspondence made. */
 static cm_status correspond_boundary(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
                                      const int *orientation, const cm_options *o, const size_t *every_vertex,
-                                     enum loop_kind kind, const size_t *hole_starts, cm_boundary_map *out,
-                                     double *ceiling_deg, cm_correspondence_choice *choice)
+                                     enum loop_kind kind, int linear, const size_t *hole_starts,
+                                     cm_boundary_map *out, double *ceiling_deg, cm_correspondence_choice *choice)
 {
     int whole = kind == LOOP_WHOLE;
     *ceiling_deg = -1;
@@ -505,7 +510,7 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
         /* Polygons without holes, and outer loops: conformal or similarity
          * (auto_whole). */
         int found = 0;
-        s = auto_whole(r, polygons, counts, k, orientation, out, &found, ceiling_deg, choice);
+        s = auto_whole(r, polygons, counts, k, orientation, linear, out, &found, ceiling_deg, choice);
         if (s == CM_OK && found) {
             if (o->ceiling && whole) s = bound_before(r, polygons, counts, k, orientation);
             if (s == CM_OK && o->max_edge > 0)
@@ -628,7 +633,7 @@ static cm_status split_capped_edges(cm_result *r, const double *const *polygons,
 /* CM_CORRESPOND_ARCLENGTH and _AUTO: the boundaries in correspondence,
  * then the pipeline on them. */
 static cm_status run_arclength(cm_result *r, const double *const *polygons, const size_t *counts,
-                               size_t k, const cm_options *o, const size_t *every_vertex)
+                               size_t k, const cm_options *o, const size_t *every_vertex, int linear)
 {
     int *orientation = k ? malloc(k * sizeof *orientation) : NULL;
     size_t *merged_counts = k ? malloc(k * sizeof *merged_counts) : NULL;
@@ -636,8 +641,8 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
     if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
     double ceiling_deg = -1;
     if (s == CM_OK)
-        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, LOOP_WHOLE, NULL, &r->boundary, &ceiling_deg,
-                                &r->stats.correspondence_choice);
+        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, LOOP_WHOLE, linear, NULL,
+                                &r->boundary, &ceiling_deg, &r->stats.correspondence_choice);
     int32_t **tris = NULL; /* the merged polygons' triangulations, when the cap split made them */
     if (s == CM_OK && !every_vertex && o->remesh)
         s = split_capped_edges(r, polygons, counts, orientation, o, ceiling_deg, &tris);
@@ -666,7 +671,7 @@ static cm_status run_index_split(cm_result *r, const double *const *polygons, co
     if (!every) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     for (size_t j = 0; j < n; j++)
         for (size_t g = 0; g < k; g++) every[j * k + g] = j;
-    s = run_arclength(r, polygons, counts, k, o, every);
+    s = run_arclength(r, polygons, counts, k, o, every, 0);
     free(every);
     return s;
 }
@@ -687,6 +692,72 @@ static cm_result *new_result(cm_result **result, const cm_options **options, cm_
     return r;
 }
 
+/* The smallest angle of a result over its k meshes (degrees). */
+static double least_angle(const cm_result *r, size_t k)
+{
+    double least = 180;
+    for (size_t g = 0; g < k; g++) {
+        cm_quality q;
+        cm_result_quality(r, g, &q);
+        least = fmin(least, q.min_angle_deg);
+    }
+    return least;
+}
+
+/* Auto's conformal pairing may end far below the remesher's aim, where a
+ * second pairing does better (the rescues below); 0.6: below 15 degrees
+ * at the default aim of 25. */
+#define CM_PAIRING_RESCUE_SHARE 0.6
+
+/* Is r, made by auto's conformal pairing and remeshed by o, below that
+ * share of its aim? */
+static int rescue_wanted(const cm_result *r, const cm_options *o, size_t k)
+{
+    return o->correspondence == CM_CORRESPOND_AUTO && o->remesh &&
+           r->stats.correspondence_choice == CM_CHOICE_CONFORMAL &&
+           least_angle(r, k) < CM_PAIRING_RESCUE_SHARE * r->stats.remesh_aim_deg;
+}
+
+/* *result becomes the better of itself and again, whose run ended with
+ * status s (the better: the larger smallest angle; the times of both runs
+ * summed); the other is freed. CM_OK, or CM_ERR_CANCELLED when the second
+ * run was cancelled (a second run that failed otherwise, out of memory
+ * included, leaves *result as it was). */
+static cm_status keep_better(cm_result **result, cm_result *again, cm_status s, size_t k)
+{
+    cm_result *r = *result;
+    if (s == CM_ERR_CANCELLED) {
+        cm_result_free(again);
+        return cm_fail_status(&r->error, s);
+    }
+    if (s == CM_OK && least_angle(again, k) > least_angle(r, k)) {
+        again->stats.seconds_validate += r->stats.seconds_validate;
+        again->stats.seconds_build += r->stats.seconds_build, again->stats.seconds_check += r->stats.seconds_check;
+        again->stats.seconds_remesh += r->stats.seconds_remesh;
+        again->stats.seconds_ceiling += r->stats.seconds_ceiling;
+        *result = again, again = r;
+    }
+    cm_result_free(again);
+    return CM_OK;
+}
+
+/* Auto without holes reads the conformal parameter along every edge (a
+ * faithful pairing); where that crowds beyond what the remesher can
+ * grade and the result ends below CM_PAIRING_RESCUE_SHARE of its aim, the
+ * pairing read linearly between each polygon's vertices (coarser: the
+ * stretch averaged over an edge) is also remeshed and the better result
+ * kept. */
+static cm_status linear_rescue(cm_result **result, const double *const *polygons, const size_t *counts, size_t k,
+                               const cm_options *o)
+{
+    if (!rescue_wanted(*result, o, k)) return CM_OK;
+    cm_result *again = NULL;
+    cm_options unused;
+    const cm_options *same = o;
+    if (!new_result(&again, &same, &unused)) return CM_OK;
+    return keep_better(result, again, run_arclength(again, polygons, counts, k, o, NULL, 1), k);
+}
+
 cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *counts,
                                   size_t k, const cm_options *options, cm_result **result)
 {
@@ -698,9 +769,11 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
     }
     cm_status s = check_remesh_options(r, options);
     if (s == CM_OK) s = check_correspondence_options(r, options);
-    if (s == CM_OK && options->correspondence != CM_CORRESPOND_INDEX)
-        s = run_arclength(r, polygons, counts, k, options, NULL);
-    else if (s == CM_OK && options->max_edge > 0)
+    if (s == CM_OK && options->correspondence != CM_CORRESPOND_INDEX) {
+        s = run_arclength(r, polygons, counts, k, options, NULL, 0);
+        if (s == CM_OK) s = linear_rescue(result, polygons, counts, k, options);
+        r = *result;
+    } else if (s == CM_OK && options->max_edge > 0)
         s = run_index_split(r, polygons, counts, k, options);
     else if (s == CM_OK)
         s = run_pipeline(r, polygons, counts, k, NULL, NULL, options);
@@ -1050,7 +1123,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
             s = cm_correspond_choose_hole_starts(lxy, lcount, k, lorientation, &maps[0], similarity, hole_starts,
                                                  &r->error);
         if (s == CM_OK)
-            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_BY_START : outer,
+            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_BY_START : outer, 0,
                                     joint && l ? hole_starts : NULL, &maps[l], &unused_ceiling, &loop_choice);
         if (l == 0) r->stats.correspondence_choice = loop_choice; /* the outer loop's (cm_stats) */
         if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
@@ -1117,55 +1190,20 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
     return s;
 }
 
-/* The smallest angle of a result over its k meshes (degrees). */
-static double least_angle(const cm_result *r, size_t k)
-{
-    double least = 180;
-    for (size_t g = 0; g < k; g++) {
-        cm_quality q;
-        cm_result_quality(r, g, &q);
-        least = fmin(least, q.min_angle_deg);
-    }
-    return least;
-}
-
 /* Auto with holes pairs the outer loops as polygons without holes; where
- * the result ends below this share of the remesher's aim, the outer loops
- * are also paired by the similarity's start (the hole starts, chosen
- * under the outer loops' similarity, may fit one pairing of the outer
- * loops and not the other: a conformal pairing of the filled outlines
- * knows nothing of the holes) and the better result is kept. 0.6: below
- * 15 degrees at the default aim of 25. */
-#define CM_OUTER_RESCUE_SHARE 0.6
-
-/* The rescue above on *result: CM_OK, *result the better run (a second
- * run that fails, out of memory included, leaves it as it was), or
- * CM_ERR_CANCELLED. */
+ * the result ends below CM_PAIRING_RESCUE_SHARE of the remesher's aim, the
+ * outer loops are also paired by the similarity's start (the hole starts,
+ * chosen under the outer loops' similarity, may fit one pairing of the
+ * outer loops and not the other: a conformal pairing of the filled
+ * outlines knows nothing of the holes) and the better result is kept. */
 static cm_status outer_rescue(cm_result **result, const cm_loops *polygons, size_t k, const cm_options *o)
 {
-    cm_result *r = *result;
-    if (o->correspondence != CM_CORRESPOND_AUTO || !o->remesh ||
-        r->stats.correspondence_choice != CM_CHOICE_CONFORMAL ||
-        least_angle(r, k) >= CM_OUTER_RESCUE_SHARE * r->stats.remesh_aim_deg)
-        return CM_OK;
+    if (!rescue_wanted(*result, o, k)) return CM_OK;
     cm_result *again = NULL;
     cm_options unused;
     const cm_options *same = o;
     if (!new_result(&again, &same, &unused)) return CM_OK;
-    cm_status s = run_loops_arclength(again, polygons, k, o, LOOP_BY_START);
-    if (s == CM_ERR_CANCELLED) {
-        cm_result_free(again);
-        return cm_fail_status(&r->error, s);
-    }
-    if (s == CM_OK && least_angle(again, k) > least_angle(r, k)) {
-        again->stats.seconds_validate += r->stats.seconds_validate;
-        again->stats.seconds_build += r->stats.seconds_build, again->stats.seconds_check += r->stats.seconds_check;
-        again->stats.seconds_remesh += r->stats.seconds_remesh;
-        again->stats.seconds_ceiling += r->stats.seconds_ceiling;
-        *result = again, again = r;
-    }
-    cm_result_free(again);
-    return CM_OK;
+    return keep_better(result, again, run_loops_arclength(again, polygons, k, o, LOOP_BY_START), k);
 }
 
 cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_options *options,

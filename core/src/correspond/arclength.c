@@ -43,6 +43,9 @@ typedef struct walk {
     int reversed;      /* clockwise input */
     size_t start;      /* counter-clockwise position of the first pin */
     double *param;     /* n + 1: the i-th vertex from start; param[n] = P */
+    double *sub;       /* NULL (linear along the edges), or n * CM_PARAM_FINE:
+                          along the edge from the i-th vertex, increasing
+                          from param[i], below param[i + 1] */
 } walk;
 
 /* Counter-clockwise position c <-> input index. */
@@ -178,6 +181,22 @@ static cm_status merge(const walk *walks, size_t k, double **u, long **own, size
     return CM_OK;
 }
 
+/* The share of the way along w's edge from its i-th vertex where the
+ * parameter is the share s of the way from param[i] to param[i + 1]: s
+ * itself where the parameter is linear along the edge. */
+static double along_edge(const walk *w, size_t i, double s)
+{
+    if (!w->sub) return s;
+    const double *sub = w->sub + i * CM_PARAM_FINE;
+    double v = w->param[i] + s * (w->param[i + 1] - w->param[i]);
+    size_t l = 0;
+    while (l + 1 < CM_PARAM_FINE && sub[l + 1] <= v) l++;
+    double hi = l + 1 < CM_PARAM_FINE ? sub[l + 1] : w->param[i + 1];
+    double f = hi > sub[l] ? (v - sub[l]) / (hi - sub[l]) : 0.0;
+    double share = ((double)l + fmin(fmax(f, 0.0), 1.0)) / CM_PARAM_FINE;
+    return share > 0.0 && share < 1.0 ? share : s;
+}
+
 /* Polygon g at the merged parameters: its own vertices where it has one,
  * elsewhere the point on its edge between its own vertices before and
  * after, at the share of their parameters (as merged) the vertex has.
@@ -205,7 +224,7 @@ static void fill(const walk *w, const double *u, const long *own, size_t n, size
             continue;
         }
         double u_next = next < n ? u[next] : u[first] + (double)pins;
-        double s = (u[j] - u_at) / (u_next - u_at);
+        double s = along_edge(w, i, (u[j] - u_at) / (u_next - u_at));
         /* Input numbering: a clockwise polygon's edge runs from vertex i + 1
          * back to i. The point is computed from the (edge, t) reported, so
          * P[e] + t (P[e + 1] - P[e]) gives it back bit for bit. */
@@ -234,7 +253,8 @@ cm_status cm_correspond_arclength(const double *const *polygons, const size_t *c
     size_t *offset = malloc(num_pins * k * sizeof *offset);
     cm_status s = walks && offset ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
     for (size_t g = 0; s == CM_OK && g < k; g++) {
-        walks[g] = (walk){polygons[g], counts[g], orientation[g] < 0, 0, malloc((counts[g] + 1) * sizeof(double))};
+        walks[g] = (walk){polygons[g], counts[g], orientation[g] < 0, 0,
+                          malloc((counts[g] + 1) * sizeof(double)), NULL};
         if (!walks[g].param) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
     }
     if (s == CM_OK) s = order_pins(pins, num_pins, k, walks, offset, err);
@@ -307,15 +327,43 @@ static cm_status start_at_shared(cm_boundary_map *out, int *shared, cm_error *er
     return CM_OK;
 }
 
+/* w->sub from fine (counter-clockwise positions, as params), less shift
+ * (modulo 1) and lifted next to each edge's first parameter. Left NULL
+ * (linear) where they do not increase strictly from param[i] to below
+ * param[i + 1]. 0, or -1 out of memory. */
+static int walk_sub(walk *w, const double *fine, double shift)
+{
+    size_t n = w->n;
+    double *sub = malloc(n * CM_PARAM_FINE * sizeof *sub);
+    if (!sub) return -1;
+    for (size_t i = 0; i < n; i++) {
+        size_t c = (w->start + i) % n;
+        double lo = w->param[i], *row = sub + i * CM_PARAM_FINE;
+        row[0] = lo;
+        for (size_t l = 1; l < CM_PARAM_FINE; l++) {
+            double x = fine[c * CM_PARAM_FINE + l] - shift;
+            x = lo + (x - lo) - floor(x - lo);
+            if (!(x > row[l - 1] && x < w->param[i + 1])) {
+                free(sub);
+                return 0;
+            }
+            row[l] = x;
+        }
+    }
+    w->sub = sub;
+    return 0;
+}
+
 /* Walks of the given parameters, each less shift[g] (modulo 1). */
 static cm_status param_walks(const double *const *polygons, const size_t *counts, size_t k, const int *orientation,
-                             const double *const *params, const double *shift, walk *walks, cm_error *err)
+                             const double *const *params, const double *const *fine, const double *shift, walk *walks,
+                             cm_error *err)
 {
     for (size_t g = 0; g < k; g++) {
         size_t n = counts[g], start = 0;
         walk *w = &walks[g];
         double *shifted = malloc(n * sizeof *shifted);
-        *w = (walk){polygons[g], n, orientation[g] < 0, 0, malloc((n + 1) * sizeof(double))};
+        *w = (walk){polygons[g], n, orientation[g] < 0, 0, malloc((n + 1) * sizeof(double)), NULL};
         if (!w->param || !shifted) {
             free(shifted);
             return cm_fail_status(err, CM_ERR_NO_MEMORY);
@@ -338,13 +386,14 @@ static cm_status param_walks(const double *const *polygons, const size_t *counts
             return cm_fail(err, CM_ERR_ARGUMENT, "polygon %zu: the correspondence cannot separate vertex %zu from "
                            "its neighbours (edges too short against the perimeter)", g, walk_vertex(w, n - 1));
         }
+        if (fine && fine[g] && walk_sub(w, fine[g], shift[g])) return cm_fail_status(err, CM_ERR_NO_MEMORY);
     }
     return CM_OK;
 }
 
 cm_status cm_correspond_params(const double *const *polygons, const size_t *counts, size_t k,
-                               const int *orientation, const double *const *params, cm_boundary_map *out,
-                               cm_error *err)
+                               const int *orientation, const double *const *params, const double *const *fine,
+                               cm_boundary_map *out, cm_error *err)
 {
     memset(out, 0, sizeof *out);
     walk *walks = calloc(k, sizeof *walks);
@@ -374,19 +423,20 @@ cm_status cm_correspond_params(const double *const *polygons, const size_t *coun
             cm_boundary_map_clear(out);
             for (size_t g = 0; g < k; g++) {
                 free(walks[g].param), walks[g].param = NULL;
+                free(walks[g].sub), walks[g].sub = NULL;
                 for (size_t c = 0; c < counts[g]; c++) {
                     double p = params[g][c], d = p < 0.5 ? p : p - 1.0;
                     if (c == 0 || fabs(d) < fabs(shift[g])) shift[g] = d;
                 }
             }
         }
-        s = param_walks(polygons, counts, k, orientation, params, shift, walks, err);
+        s = param_walks(polygons, counts, k, orientation, params, fine, shift, walks, err);
         if (s == CM_OK) s = refine(walks, k, 1, out, err);
         if (s == CM_OK) s = start_at_shared(out, &shared, err);
     }
     if (s != CM_OK) cm_boundary_map_clear(out);
     if (walks)
-        for (size_t g = 0; g < k; g++) free(walks[g].param);
+        for (size_t g = 0; g < k; g++) free(walks[g].param), free(walks[g].sub);
     free(walks), free(shift);
     return s;
 }

@@ -50,9 +50,15 @@ cm_status cm_correspond_arclength(const double *const *polygons, const size_t *c
  * where the given parameters leave none, each polygon is turned to put
  * its vertex nearest to 0 there (joined at 0). Parameters that round
  * together are nudged apart by an ulp; ones that cannot be are
- * CM_ERR_ARGUMENT naming the polygon and vertex. */
+ * CM_ERR_ARGUMENT naming the polygon and vertex. fine: NULL (the parameter
+ * linear along every edge), or per polygon NULL or counts[g] *
+ * CM_PARAM_FINE parameters, fine[g][c * CM_PARAM_FINE + l] at the point
+ * l / CM_PARAM_FINE along the counter-clockwise edge from position c
+ * (fine[g][c * CM_PARAM_FINE] = params[g][c]): the others' points go on
+ * polygon g's edges where this piecewise-linear parameter puts them. */
+#define CM_PARAM_FINE 16
 cm_status cm_correspond_params(const double *const *polygons, const size_t *counts, size_t k,
-                               const int *orientation, const double *const *params, cm_boundary_map *out,
-                               cm_error *err);
+                               const int *orientation, const double *const *params, const double *const *fine,
+                               cm_boundary_map *out, cm_error *err);
 
 #endif

@@ -217,8 +217,11 @@ static void tempered(const disk *d, const double *theta, double *p)
 
 /* params of polygon g (counter-clockwise positions): where its vertices
  * sit on polygon 0 when both are read by their tempered parameters, g's
- * disk turned onto polygon 0's by the automorphism x. */
-static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, double *params, cm_error *err)
+ * disk turned onto polygon 0's by the automorphism x; fine (NULL, or
+ * CM_PARAM_FINE per edge): the same at the points evenly spaced along
+ * each edge. */
+static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, double *params, double *fine,
+                       cm_error *err)
 {
     size_t nb = dg->nb, levels = nb / n;
     double *theta = malloc((nb + 1) * sizeof *theta), *p0 = malloc((d0->nb + 1) * sizeof *p0);
@@ -250,13 +253,25 @@ static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, dou
         q -= floor(q);
         double u = lookup(p0, d0->s, d0->nb, q);
         params[c] = u < 1.0 ? u : nextafter(1.0, 0.0);
+        /* between the vertices: g's nodes are evenly spaced along its
+         * edges (levels of them per edge), read at CM_PARAM_FINE points */
+        for (size_t l = 0; fine && l < CM_PARAM_FINE; l++) {
+            double at = (double)(c * levels) + (double)(l * levels) / CM_PARAM_FINE;
+            size_t j = (size_t)at;
+            double f = at - (double)j, pj = j < nb ? pg[j] + f * (pg[j + 1] - pg[j]) : pg[nb];
+            q = from + pj;
+            q -= floor(q);
+            u = lookup(p0, d0->s, d0->nb, q);
+            fine[c * CM_PARAM_FINE + l] = l == 0 ? params[c] : u < 1.0 ? u : nextafter(1.0, 0.0);
+        }
     }
     free(theta), free(p0), free(pg);
     return CM_OK;
 }
 
 cm_status cm_correspond_conformal(const double *const *polygons, const size_t *counts, size_t k,
-                                  const int *orientation, double *const *params, int *found, cm_error *err)
+                                  const int *orientation, double *const *params, double *const *fine, int *found,
+                                  cm_error *err)
 {
     *found = 0;
     disk *disks = calloc(k, sizeof *disks);
@@ -280,7 +295,7 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
     }
     for (size_t g = 1; s == CM_OK && usable && g < k; g++) {
         search q = {w0, s0, SEARCH_SAMPLES, &disks[g]};
-        s = place(&disks[0], &disks[g], best_turn(&q), counts[g], params[g], err);
+        s = place(&disks[0], &disks[g], best_turn(&q), counts[g], params[g], fine ? fine[g] : NULL, err);
     }
     free(s0);
     if (s == CM_OK) *found = usable;

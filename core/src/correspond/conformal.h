@@ -6,6 +6,7 @@
 #define CM_CORRESPOND_CONFORMAL_H
 
 #include "base/error.h"
+#include "correspond/arclength.h"
 
 /* For every polygon g and counter-clockwise position c (c = 0 the input's
  * vertex 0), params[g][c] in [0, 1): where the vertex sits on polygon 0's
@@ -32,7 +33,16 @@
  * crowding; a similar copy gets the same parameter. The power and the
  * rest were chosen by measurement (bench/CORRESPONDENCE.md). */
 #define CM_CONFORMAL_POWER 0.25
+/* fine: NULL, or k arrays of counts[g] * CM_PARAM_FINE doubles (fine[0]
+ * may be NULL: polygon 0's parameter is its arc length): fine[g][c *
+ * CM_PARAM_FINE + l], the same parameter at the point l / CM_PARAM_FINE of
+ * the way along the counter-clockwise edge from position c (l = 0: the
+ * vertex, params[g][c]). The tempered conformal parameter is not linear
+ * along an edge: a long edge beside a corner the map crowds gathers its
+ * points towards that corner, where linear interpolation between the
+ * vertices would put a jump of the stretch at the corner. */
 cm_status cm_correspond_conformal(const double *const *polygons, const size_t *counts, size_t k,
-                                  const int *orientation, double *const *params, int *found, cm_error *err);
+                                  const int *orientation, double *const *params, double *const *fine, int *found,
+                                  cm_error *err);
 
 #endif
