@@ -468,6 +468,77 @@ static void test_random_polygons(void)
     if (rp_comb(xy, 48, 6) == 0) check_polygon(xy, 48, 0, "comb 48");
 }
 
+/* Pockets triangulated from their parents' give the distances of pockets
+ * ear-clipped from scratch, from every source, capped or not, and paths of
+ * the same length that are valid; most pocket vertices go the derived way
+ * (so a wrong derivation cannot hide behind the ear-clipping fallback). */
+static void check_derived(const double *xy, int n, const char *what, long *fallbacks)
+{
+    cm_linkpart *lp = cm_linkpart_create(xy, n), *ref = cm_linkpart_create(xy, n);
+    int *d = malloc(sizeof(int) * 2 * (size_t)n), *e = d + n;
+    CHECK(lp && ref && d);
+    if (!lp || !ref || !d) return;
+    cm_linkpart_set_derive(ref, 0);
+    long bad = 0, bad_path = 0, paths = 0;
+    for (int s = 0; s < n; s++) {
+        CHECK(cm_link_distances(lp, s, d) == 0 && cm_link_distances(ref, s, e) == 0);
+        for (int v = 0; v < n; v++) bad += d[v] != e[v] || (v != s && d[v] < 1);
+        CHECK(cm_link_distances_upto(lp, s, 2, d) >= 0 && cm_link_distances_upto(ref, s, 2, e) >= 0);
+        for (int v = 0; v < n; v++) bad += d[v] != e[v];
+        if (s % 7 != 0) continue;
+        cm_link_distances(ref, s, e);
+        for (int v = 0; v < n; v += 5) {
+            if (e[v] < 2) continue;
+            double *b = NULL;
+            long nb = 0;
+            int links = cm_link_path(lp, s, v, &b, &nb);
+            paths++;
+            bad_path += links != e[v] || nb != links - 1 || !path_ok(xy, n, s, v, b, nb);
+            free(b);
+        }
+    }
+    long derived, clipped, ref_derived, ref_clipped;
+    cm_linkpart_counts(lp, &derived, &clipped);
+    cm_linkpart_counts(ref, &ref_derived, &ref_clipped);
+    CHECK_MSG(bad == 0, "%s: %ld distances differ from ear-clipped pockets", what, bad);
+    CHECK_MSG(bad_path == 0, "%s: %ld of %ld paths missing or not matching", what, bad_path, paths);
+    CHECK_MSG(ref_derived == 0 && ref_clipped > 0, "%s: the reference derived pockets", what);
+    CHECK_MSG(derived > 4 * clipped, "%s: %ld pocket vertices derived, %ld ear-clipped", what, derived, clipped);
+    *fallbacks += clipped;
+    cm_linkpart_free(lp), cm_linkpart_free(ref);
+    free(d);
+}
+
+/* Random polygons on a coarse grid: windows running through vertices and
+ * along edges, where the derivation gives way to ear clipping. */
+static int coarse_polygon(double *xy, int n, uint64_t seed)
+{
+    if (rp_random_simple(xy, n, seed) != 0) return -1;
+    for (int i = 0; i < 2 * n; i++) xy[i] = round(xy[i] * 12) / 12;
+    for (int i = 0; i < n; i++)
+        for (int j = i + 1; j < n; j++)
+            if (xy[2 * i] == xy[2 * j] && xy[2 * i + 1] == xy[2 * j + 1]) return -1;
+    return rp_is_simple(xy, n) && rp_signed_area2(xy, n) > 0 ? 0 : -1;
+}
+
+static void test_derived_pockets(void)
+{
+    static double xy[2 * 400];
+    long fallbacks = 0, coarse = 0;
+    for (uint64_t seed = 1; seed <= 6; seed++)
+        if (rp_random_simple(xy, 120, 500 + seed) == 0) check_derived(xy, 120, "random 120", &fallbacks);
+    for (uint64_t seed = 1; seed <= 2; seed++)
+        if (rp_random_spa(xy, 400, 600 + seed) == 0) check_derived(xy, 400, "spa 400", &fallbacks);
+    if (rp_random_simple(xy, 400, 700) == 0) check_derived(xy, 400, "random 400", &fallbacks);
+    if (rp_spiral(xy, 200, 3) == 0) check_derived(xy, 200, "spiral 200", &fallbacks);
+    if (rp_comb(xy, 200, 20) == 0) check_derived(xy, 200, "comb 200", &fallbacks);
+    if (rp_star(xy, 100, 9) == 0) check_derived(xy, 100, "star 100", &fallbacks);
+    fallbacks = 0;
+    for (uint64_t seed = 1; seed <= 200 && coarse < 12; seed++)
+        if (coarse_polygon(xy, 30, 800 + seed) == 0) check_derived(xy, 30, "coarse 30", &fallbacks), coarse++;
+    CHECK_MSG(coarse == 12 && fallbacks > 0, "coarse: %ld polygons, %ld pocket vertices ear-clipped", coarse, fallbacks);
+}
+
 /* ---- hand-derived distances ----------------------------------------------- */
 
 static int distance(const double *xy, int n, int u, int v, int *path_links)
@@ -556,5 +627,6 @@ int main(void)
     test_comb();
     test_random_polygons();
     test_needed_distances();
+    test_derived_pockets();
     return check_summary("test_linkpath");
 }

@@ -31,6 +31,12 @@ typedef struct pocket {
     long source; /* local index of the point source (root), -1 for a window */
     int built, shared; /* shared: vs is the linkpart's root triangulation */
     cm_vsource vs;
+    /* Where the window runs in the parent (its local indices): ids are the
+     * parent's from `first` on (cyclic), with the constructed end point
+     * first (hpos 0), last (hpos 1) or none (-1); the window runs from the
+     * pivot to the vertex `end`, or to the point on the edge from `end`. */
+    long first, pivot, end;
+    int hpos;
 } pocket;
 
 struct cm_linkpart {
@@ -53,6 +59,12 @@ struct cm_linkpart {
     cm_visrows *rows;   /* visibility from a vertex over that triangulation */
     unsigned char *row; /* from the current source */
     int *seen;          /* per vertex: in how many pockets of one level */
+    int derive;         /* derive pockets' triangulations from their parents' */
+    long derived, clipped; /* pocket vertices triangulated either way */
+    /* scratch of a derivation, per parent triangle */
+    unsigned *stamp, gen;
+    int32_t *queue, *cut_r, *cut_l;
+    long cap_scratch;
 };
 
 /* ---- set-up ------------------------------------------------------------- */
@@ -61,7 +73,7 @@ cm_linkpart *cm_linkpart_create(const double *xy, long m)
 {
     cm_linkpart *lp = calloc(1, sizeof *lp);
     if (!lp) return NULL;
-    lp->m = m, lp->source = -1;
+    lp->m = m, lp->source = -1, lp->derive = 1;
     size_t n = (size_t)m;
     lp->xy = malloc(2 * n * sizeof *lp->xy);
     lp->pool = cm_xpool_create();
@@ -88,6 +100,13 @@ cm_linkpart *cm_linkpart_create(const double *xy, long m)
     return lp;
 }
 
+void cm_linkpart_set_derive(cm_linkpart *lp, int on) { lp->derive = on != 0; }
+
+void cm_linkpart_counts(const cm_linkpart *lp, long *derived, long *clipped)
+{
+    *derived = lp->derived, *clipped = lp->clipped;
+}
+
 static void drop_pockets(cm_linkpart *lp)
 {
     for (long i = 0; i < lp->npk; i++) {
@@ -109,6 +128,7 @@ void cm_linkpart_free(cm_linkpart *lp)
     cm_vsource_clear(&lp->root);
     cm_visrows_free(lp->rows);
     free(lp->row), free(lp->seen);
+    free(lp->stamp), free(lp->queue), free(lp->cut_r), free(lp->cut_l);
     cm_xpool_free(lp->pool);
     free(lp);
 }
@@ -216,9 +236,15 @@ static int emit_window(tracer *tr, long end, long h)
             if (local[i] != tr->start) lp->covered[local[i]] = 1;
     }
     int level = p->level + 1;
+    long first = count > 0 ? local[0] : 0;
     free(local);
     if (!ids) return ok && k >= 3 ? -1 : 0;
-    return add_pocket(lp, ids, k, level, tr->P, -1) < 0 ? -1 : 0;
+    long c = add_pocket(lp, ids, k, level, tr->P, -1);
+    if (c < 0) return -1;
+    pocket *child = &lp->pk[c];
+    child->first = first, child->pivot = tr->start, child->end = end;
+    child->hpos = h < 0 ? -1 : tr->side > 0 ? 0 : 1;
+    return 0;
 }
 
 /* The fan triangle of tr->cur holding the ray: sets *t and the exit edge
@@ -424,6 +450,214 @@ static int build_root(cm_linkpart *lp, pocket *p)
     return 0;
 }
 
+/* ---- a pocket's triangulation from its parent's ----------------------------
+ *
+ * The window cuts the parent's triangulation along one segment: the
+ * triangles it does not cross lie wholly on one side, and those on the
+ * pocket's side are the pocket's, renumbered. The pocket-side pieces of the
+ * crossed triangles form a sleeve: the window, and the crossed edges' ends
+ * on the pocket's side in the order the window crosses them. Only the
+ * sleeve is ear-clipped. So a pocket costs O(its triangles + the crossed
+ * ones), not a triangulation from scratch. */
+
+/* x (on line(a, b)) lies strictly ahead of a, toward b. */
+static int ahead(cm_xpool *pool, long a, long b, long x)
+{
+    const double *pa = cm_xpool_xy(pool, a), *pb = cm_xpool_xy(pool, b);
+    int axis = fabs(pb[0] - pa[0]) >= fabs(pb[1] - pa[1]) ? 0 : 1;
+    int dir = cm_xcompare(pool, b, a, axis);
+    if (dir == 0) axis = 1 - axis, dir = cm_xcompare(pool, b, a, axis);
+    return dir != 0 && cm_xcompare(pool, x, a, axis) == dir;
+}
+
+static int grow_scratch(cm_linkpart *lp, long nt)
+{
+    if (nt + 2 <= lp->cap_scratch) return 0;
+    long cap = 2 * (nt + 2);
+    unsigned *stamp = realloc(lp->stamp, (size_t)cap * sizeof *stamp);
+    if (stamp) lp->stamp = stamp;
+    int32_t *q = realloc(lp->queue, (size_t)cap * sizeof *q);
+    if (q) lp->queue = q;
+    int32_t *r = realloc(lp->cut_r, (size_t)cap * sizeof *r);
+    if (r) lp->cut_r = r;
+    int32_t *l = realloc(lp->cut_l, (size_t)cap * sizeof *l);
+    if (l) lp->cut_l = l;
+    if (!stamp || !q || !r || !l) return -1;
+    memset(stamp, 0, (size_t)cap * sizeof *stamp);
+    lp->cap_scratch = cap, lp->gen = 0;
+    return 0;
+}
+
+/* Pocket p's local index of its parent's local vertex i, -1 if none. */
+static long child_local(const pocket *p, long parent_k, long i)
+{
+    long d = (i - p->first + parent_k) % parent_k;
+    return d < p->k - (p->hpos >= 0) ? d + (p->hpos == 0) : -1;
+}
+
+/* Pocket P's triangles (local indices, 3 (k - 2)) into tri, from its
+ * parent's triangulation. Returns 0, 1 where this does not apply (the
+ * window runs through a vertex of the parent, or anything unexpected:
+ * the caller ear-clips), -1 out of memory. */
+static int derive_triangles(cm_linkpart *lp, long P, int32_t *tri)
+{
+    const pocket *p = &lp->pk[P], *q = &lp->pk[p->parent];
+    const cm_vsource *vs = &q->vs;
+    cm_xpool *pool = lp->pool;
+    long qk = q->k, k = p->k, want = k - 2, out = 0;
+    if (grow_scratch(lp, vs->nt) < 0) return -1;
+    if (++lp->gen == 0) memset(lp->stamp, 0, (size_t)lp->cap_scratch * sizeof *lp->stamp), lp->gen = 1;
+    unsigned gen = lp->gen, *stamp = lp->stamp;
+    long a = p->pivot, A = q->ids[a];
+    long b_local = A == p->ids[0] ? k - 1 : 0, B = p->ids[b_local], a_local = k - 1 - b_local;
+    long bv = p->hpos >= 0 ? -1 : p->end; /* B as the parent's vertex */
+    int cs = b_local == 0 ? 1 : -1; /* the pocket lies left of A -> B (+1) or right */
+    if (A != p->ids[a_local] || child_local(p, qk, a) != a_local) return 1;
+    if (bv >= 0 && child_local(p, qk, bv) != b_local) return 1;
+    /* the first triangle: the fan triangle of A the window enters */
+    long t = -1, r = -1, l = -1, seed = -1, ncut = 0, nq = 0;
+    for (long f = vs->fan_start[a]; f < vs->fan_start[a + 1] && t < 0 && seed < 0; f++) {
+        long tt = vs->fan[f];
+        int c = 0;
+        while (vs->tri[3 * tt + c] != a) c++;
+        long x = vs->tri[3 * tt + (c + 1) % 3], y = vs->tri[3 * tt + (c + 2) % 3];
+        int ox = cm_xorient(pool, A, B, q->ids[x]), oy = cm_xorient(pool, A, B, q->ids[y]);
+        if (ox < 0 && oy > 0) {
+            t = tt, r = x, l = y;
+            continue;
+        }
+        long on = ox == 0 && ahead(pool, A, B, q->ids[x]) ? x : oy == 0 && ahead(pool, A, B, q->ids[y]) ? y : -1;
+        if (on < 0) continue;
+        if (on != bv) return 1; /* through a vertex */
+        /* the window is an edge of the triangulation: nothing is cut */
+        long third = on == x ? y : x, across = vs->nbr[3 * tt + (on == x ? (c + 2) % 3 : (c + 1) % 3)];
+        int o = on == x ? oy : ox;
+        seed = o == cs ? tt : across;
+        long other = o == cs ? across : tt;
+        (void)third;
+        if (seed < 0) return 1;
+        if (other >= 0) stamp[other] = gen;
+    }
+    if (t >= 0) { /* walk the window through the triangles it crosses */
+        for (;;) {
+            if (ncut > vs->nt) return 1;
+            stamp[t] = gen;
+            lp->queue[nq++] = (int32_t)t; /* crossed triangles first, for their sides */
+            lp->cut_r[ncut] = (int32_t)r, lp->cut_l[ncut] = (int32_t)l, ncut++;
+            int c = 0;
+            while (vs->tri[3 * t + c] == r || vs->tri[3 * t + c] == l) c++;
+            long n = vs->nbr[3 * t + c];
+            if (n < 0) { /* the boundary: must be the edge holding B */
+                long e1 = (p->end + 1) % qk;
+                if (bv >= 0 || !((r == p->end && l == e1) || (l == p->end && r == e1))) return 1;
+                break;
+            }
+            int z = 0;
+            while (vs->tri[3 * n + z] == r || vs->tri[3 * n + z] == l) z++;
+            long zv = vs->tri[3 * n + z];
+            int o = cm_xorient(pool, A, B, q->ids[zv]);
+            if (o == 0) {
+                if (zv != bv) return 1; /* through a vertex */
+                stamp[n] = gen;
+                lp->queue[nq++] = (int32_t)n;
+                break;
+            }
+            if (o > 0) l = zv; else r = zv;
+            t = n;
+        }
+    } else if (seed < 0) {
+        return 1;
+    }
+    /* the sleeve: A, B and the crossed edges' pocket-side ends, ccw */
+    long ncross = nq, ns = 0;
+    if (ncut > 0) {
+        long *sl = malloc((size_t)(ncut + 2) * sizeof *sl), *sid = malloc((size_t)(ncut + 2) * sizeof *sid);
+        int32_t *st = malloc(3 * (size_t)ncut * sizeof *st);
+        if (!sl || !sid || !st) {
+            free(sl), free(sid), free(st);
+            return -1;
+        }
+        int ok = 1;
+        sl[ns++] = cs > 0 ? a_local : b_local;
+        sl[ns++] = cs > 0 ? b_local : a_local;
+        for (long i = 0; ok && i < ncut; i++) {
+            long e = cs > 0 ? ncut - 1 - i : i, v = cs > 0 ? lp->cut_l[e] : lp->cut_r[e];
+            long cl = child_local(p, qk, v);
+            if (cl < 0) ok = 0;
+            else if (cl != sl[ns - 1]) sl[ns++] = cl;
+        }
+        if (ns - 2 > want) ok = 0;
+        for (long i = 0; ok && i < ns; i++) sid[i] = p->ids[sl[i]];
+        int s = ok ? cm_xtriangulate(pool, sid, ns, st) : 1;
+        if (s == 0) {
+            for (long i = 0; i < 3 * (ns - 2); i++) tri[3 * (want - (ns - 2)) + i] = (int32_t)sl[st[i]];
+        }
+        free(sl), free(sid), free(st);
+        if (s != 0) return s;
+        /* the triangles beyond the crossed ones' pocket-side edges */
+        for (long i = 0; i < ncross; i++) {
+            long tt = lp->queue[i];
+            for (int c = 0; c < 3; c++) {
+                long n = vs->nbr[3 * tt + c];
+                if (n < 0 || stamp[n] == gen) continue;
+                int inside = 1;
+                for (int j = 1; j < 3 && inside; j++) {
+                    long v = vs->tri[3 * tt + (c + j) % 3];
+                    inside = v == a || v == bv || cm_xorient(pool, A, B, q->ids[v]) == cs;
+                }
+                if (inside) stamp[n] = gen, lp->queue[nq++] = (int32_t)n;
+            }
+        }
+    } else {
+        stamp[seed] = gen, lp->queue[nq++] = (int32_t)seed;
+    }
+    /* flood the pocket's side, copying */
+    long copy_max = want - (ns >= 3 ? ns - 2 : 0);
+    for (long h = ncross; h < nq; h++) {
+        long tt = lp->queue[h];
+        if (out >= copy_max) return 1;
+        for (int c = 0; c < 3; c++) {
+            long cl = child_local(p, qk, vs->tri[3 * tt + c]);
+            if (cl < 0) return 1;
+            tri[3 * out + c] = (int32_t)cl;
+            long n = vs->nbr[3 * tt + c];
+            if (n >= 0 && stamp[n] != gen) {
+                if (nq >= lp->cap_scratch) return 1;
+                stamp[n] = gen, lp->queue[nq++] = (int32_t)n;
+            }
+        }
+        out++;
+    }
+    return out == copy_max ? 0 : 1;
+}
+
+/* A window pocket's triangulation, derived or (where that does not apply)
+ * by ear clipping. Returns 0, -1 out of memory, 1 not triangulated. */
+static int build_pocket(cm_linkpart *lp, long P)
+{
+    pocket *p = &lp->pk[P];
+    const pocket *q = &lp->pk[p->parent];
+    if (lp->derive && q->built) {
+        int32_t *tri = malloc(3 * (size_t)(p->k - 2) * sizeof *tri);
+        if (!tri) return -1;
+        int s = derive_triangles(lp, P, tri);
+        if (s < 0) {
+            free(tri);
+            return -1;
+        }
+        if (s == 0) {
+            s = cm_vsource_build_tri(&p->vs, lp->pool, p->ids, p->k, p->source, tri);
+            if (s == 0) lp->derived += p->k;
+            if (s <= 0) return s;
+            cm_vsource_clear(&p->vs);
+        } else {
+            free(tri);
+        }
+    }
+    lp->clipped += p->k;
+    return cm_vsource_build(&p->vs, lp->pool, p->ids, p->k, p->source);
+}
+
 /* Local vertex i of pocket P sees its source: the cone of sight lines. */
 static int vertex_cone(cm_linkpart *lp, pocket *p, long i, long *a, long *b)
 {
@@ -436,7 +670,7 @@ static int vertex_cone(cm_linkpart *lp, pocket *p, long i, long *a, long *b)
 static int process_window(cm_linkpart *lp, long P)
 {
     pocket *p = &lp->pk[P];
-    int s = p->source >= 0 ? build_root(lp, p) : cm_vsource_build(&p->vs, lp->pool, p->ids, p->k, p->source);
+    int s = p->source >= 0 ? build_root(lp, p) : build_pocket(lp, P);
     if (s < 0) return -1;
     if (s > 0) {
         if (!p->shared) cm_vsource_clear(&p->vs);

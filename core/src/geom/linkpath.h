@@ -8,10 +8,12 @@
  * links of a polyline from s to it whose links lie strictly inside the
  * polygon (interior bends, each link an open segment in the open interior).
  *
- * Built per pocket: the pocket is triangulated by ear clipping, every
- * vertex's cone of sight lines toward the window is propagated through the
- * triangulation (O(k) per vertex for a pocket of k vertices), windows are
- * traced through the triangles. So O(n^2) per source in the worst case,
+ * Built per pocket: the pocket's triangulation is its parent's cut along
+ * the window (the triangles on its side kept, the pieces of those the
+ * window crosses ear-clipped, checked; ear clipping of the whole pocket
+ * where that does not apply), every vertex's cone of sight lines toward
+ * the window is propagated through the triangulation (O(k) per vertex for
+ * a pocket of k vertices), windows are traced through the triangles. So O(n^2) per source in the worst case,
  * close to O(n) when the pockets are small. Window end points are exact
  * constructed points (xpoint.h); every decision is an exact predicate.
  *
@@ -28,6 +30,13 @@ typedef struct cm_linkpart cm_linkpart;
  * NULL when out of memory. */
 cm_linkpart *cm_linkpart_create(const double *xy, long m);
 void cm_linkpart_free(cm_linkpart *lp);
+/* Derive pockets' triangulations from their parents' (on, the default) or
+ * ear-clip each (off): the same distances either way; paths may bend
+ * elsewhere. */
+void cm_linkpart_set_derive(cm_linkpart *lp, int on);
+/* Pocket vertices triangulated so far, by derivation and by ear clipping
+ * (window pockets; the root is the polygon's own triangulation). */
+void cm_linkpart_counts(const cm_linkpart *lp, long *derived, long *clipped);
 
 /* Link distance from vertex s to every vertex: dist[v] (dist[s] = 0,
  * dist[v] = 1 iff s sees v); -1 where it was not determined (only if a

@@ -515,19 +515,78 @@ int cm_vsource_reroot(cm_vsource *vs, long source)
     return 0;
 }
 
+/* The arrays besides the triangles, and the rooting. */
+static int finish_build(cm_vsource *vs, long source)
+{
+    size_t nt = (size_t)vs->nt;
+    vs->nbr = malloc(3 * nt * sizeof *vs->nbr);
+    vs->up = malloc(nt * sizeof *vs->up);
+    vs->depth = malloc(nt * sizeof *vs->depth);
+    if (!vs->nbr || !vs->up || !vs->depth) return -1;
+    if (cm_tri_adjacency(vs->tri, vs->nt, vs->nbr) != 0 || build_fans(vs) != 0) return -1;
+    return cm_vsource_reroot(vs, source);
+}
+
 int cm_vsource_build(cm_vsource *vs, cm_xpool *pool, const long *ids, long k, long source)
 {
     memset(vs, 0, sizeof *vs);
     vs->pool = pool, vs->ids = ids, vs->k = k, vs->nt = k - 2, vs->source = source;
-    size_t nt = (size_t)(k - 2);
-    vs->tri = malloc(3 * nt * sizeof *vs->tri);
+    vs->tri = malloc(3 * (size_t)(k - 2) * sizeof *vs->tri);
+    if (!vs->tri) return -1;
+    int s = cm_xtriangulate(pool, ids, k, vs->tri);
+    if (s != 0) return s;
+    return finish_build(vs, source);
+}
+
+/* Do the counter-clockwise triangles over the polygon's k vertices
+ * triangulate it? They do when around every vertex v they form one fan
+ * from the edge to v + 1 to the edge to v - 1: then they form a disk
+ * (k - 2 triangles, every vertex on the one boundary cycle, which is the
+ * polygon), and counter-clockwise triangles over a disk whose boundary is
+ * a simple polygon cover each of its points once (the winding number).
+ * O(k). Returns 0 yes, 1 no, -1 out of memory. */
+static int triangulates(const cm_vsource *vs)
+{
+    long k = vs->k;
+    int32_t *next = malloc((size_t)k * sizeof *next);
+    if (!next) return -1;
+    for (long v = 0; v < k; v++) next[v] = -1;
+    int ok = 1;
+    for (long v = 0; v < k && ok; v++) {
+        long deg = vs->fan_start[v + 1] - vs->fan_start[v], steps = 0;
+        for (long f = vs->fan_start[v]; f < vs->fan_start[v + 1]; f++) {
+            const int32_t *c = vs->tri + 3 * vs->fan[f];
+            int i = c[0] == v ? 0 : c[1] == v ? 1 : 2;
+            if (next[c[(i + 1) % 3]] >= 0) ok = 0;
+            next[c[(i + 1) % 3]] = c[(i + 2) % 3];
+        }
+        for (long u = (v + 1) % k; ok && u != (v + k - 1) % k; steps++) {
+            if (steps >= deg || next[u] < 0) ok = 0;
+            else u = next[u];
+        }
+        ok = ok && steps == deg;
+        for (long f = vs->fan_start[v]; f < vs->fan_start[v + 1]; f++) {
+            const int32_t *c = vs->tri + 3 * vs->fan[f];
+            next[c[0]] = next[c[1]] = next[c[2]] = -1;
+        }
+    }
+    free(next);
+    return !ok;
+}
+
+int cm_vsource_build_tri(cm_vsource *vs, cm_xpool *pool, const long *ids, long k, long source, int32_t *tri)
+{
+    memset(vs, 0, sizeof *vs);
+    vs->pool = pool, vs->ids = ids, vs->k = k, vs->nt = k - 2, vs->source = source;
+    vs->tri = tri;
+    size_t nt = (size_t)vs->nt;
     vs->nbr = malloc(3 * nt * sizeof *vs->nbr);
     vs->up = malloc(nt * sizeof *vs->up);
     vs->depth = malloc(nt * sizeof *vs->depth);
-    if (!vs->tri || !vs->nbr || !vs->up || !vs->depth) return -1;
-    int s = cm_xtriangulate(pool, ids, k, vs->tri);
+    if (!vs->nbr || !vs->up || !vs->depth || build_fans(vs) != 0) return -1;
+    int s = triangulates(vs);
     if (s != 0) return s;
-    if (cm_tri_adjacency(vs->tri, vs->k - 2, vs->nbr) != 0 || build_fans(vs) != 0) return -1;
+    if (cm_tri_adjacency(vs->tri, vs->nt, vs->nbr) != 0) return -1;
     return cm_vsource_reroot(vs, source);
 }
 

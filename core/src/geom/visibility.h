@@ -80,6 +80,12 @@ typedef struct cm_vsource {
 /* Triangulates and roots. Returns 0, -1 out of memory, 1 if the polygon
  * could not be triangulated (not simple). */
 int cm_vsource_build(cm_vsource *vs, cm_xpool *pool, const long *ids, long k, long source);
+/* The same over given triangles: tri (3 (k - 2) local indices of
+ * counter-clockwise triangles, malloc'd) is taken over, freed by
+ * cm_vsource_clear also on failure. They are checked to triangulate the
+ * polygon (around every vertex one fan from its next to its previous
+ * vertex, O(k)). Returns 0, -1 out of memory, 1 if they do not. */
+int cm_vsource_build_tri(cm_vsource *vs, cm_xpool *pool, const long *ids, long k, long source, int32_t *tri);
 /* Roots the same triangulation at another point source (a vertex).
  * Returns 0, -1 out of memory. */
 int cm_vsource_reroot(cm_vsource *vs, long source);
