@@ -536,7 +536,8 @@ static void test_derived_pockets(void)
     fallbacks = 0;
     for (uint64_t seed = 1; seed <= 200 && coarse < 12; seed++)
         if (coarse_polygon(xy, 30, 800 + seed) == 0) check_derived(xy, 30, "coarse 30", &fallbacks), coarse++;
-    CHECK_MSG(coarse == 12 && fallbacks > 0, "coarse: %ld polygons, %ld pocket vertices ear-clipped", coarse, fallbacks);
+    CHECK_MSG(coarse == 12 && fallbacks > 0, "coarse: %ld polygons, %ld pocket vertices ear-clipped", coarse,
+              fallbacks);
 }
 
 /* ---- hand-derived distances ----------------------------------------------- */

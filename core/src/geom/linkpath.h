@@ -13,8 +13,9 @@
  * window crosses ear-clipped, checked; ear clipping of the whole pocket
  * where that does not apply), every vertex's cone of sight lines toward
  * the window is propagated through the triangulation (O(k) per vertex for
- * a pocket of k vertices), windows are traced through the triangles. So O(n^2) per source in the worst case,
- * close to O(n) when the pockets are small. Window end points are exact
+ * a pocket of k vertices), windows are traced through the triangles. So
+ * O(n^2) per source in the worst case, close to O(n) when the pockets are
+ * small. Window end points are exact
  * constructed points (xpoint.h); every decision is an exact predicate.
  *
  * Degenerate configurations (a window through another vertex, collinear
