@@ -63,17 +63,32 @@ typedef struct dp {
     int32_t *arg;     /* per link: the chain's last vertex before l */
     unsigned char *by;
     int16_t *fan_of;  /* per link: the fan point of a BY_FAN face */
-    double *fan_fwd, *fan_rev; /* per fan point and link a < b (nfans rows
-                                  of links): quality of the fan triangle on
-                                  a -> b (b -> a), -1 if the point is not
-                                  strictly left of it */
+    /* A fan face from x lies outside the sub-polygon closed by each link
+     * of its chain and inside the one closed by its closing link, and x
+     * lies strictly inside the face: so each link serves x on one side
+     * only, the side geometry 0 puts x on (fan_sides). */
+    uint64_t *fwd_ok, *rev_ok; /* per link a < b: the fan points whose
+                                  triangle on a -> b (b -> a) is valid in
+                                  every geometry, on the side x can use */
+    double *fan_q;    /* per fan point and link (nfans rows of links): the
+                         quality of that triangle */
+    uint64_t *row_fans; /* per row i: the fan points inside the sub-polygon
+                           of its farthest link, all for the root's row:
+                           the only ones its faces can be fans from */
+    uint64_t fans_now;  /* row_fans of the row being solved */
+    long *reach;        /* per row i: the farthest l it needs, its farthest
+                           diagonal (the root's row: all) */
     val root;
     int32_t root_arg;
     unsigned char root_by;
     int16_t root_fan_of;
-    double *root_fan;  /* per fan point: the closing edge m-1 -> 0 */
+    uint64_t root_ok;  /* the fan points valid on the closing edge m-1 -> 0 */
+    double *root_fan;  /* per fan point: that triangle's quality */
     long nlinks;
     chains *plain, *fanned; /* the current row; fanned: nfans rows of m */
+    uint64_t *fan_best, *fan_more; /* per l, the current row: the fan points
+                                      whose chains to l exist (best), of two
+                                      or more links (more) */
 } dp;
 
 static int is_link(const dp *d, long a, long b)
@@ -115,8 +130,8 @@ static double fan_min_angle(const dp *d, size_t x, long a, long b)
     return q;
 }
 
-static double fwd(const dp *d, size_t x, long s) { return d->fan_fwd[x * (size_t)d->nlinks + (size_t)s]; }
-static double rev(const dp *d, size_t x, long s) { return d->fan_rev[x * (size_t)d->nlinks + (size_t)s]; }
+static double fan_q(const dp *d, size_t x, long s) { return d->fan_q[x * (size_t)d->nlinks + (size_t)s]; }
+static int has_fan(uint64_t set, size_t x) { return (int)(set >> x) & 1; }
 static chains *fanned(const dp *d, size_t x, long l) { return &d->fanned[x * (size_t)d->m + (size_t)l]; }
 
 static long find_link(const dp *d, long a, long b)
@@ -168,6 +183,7 @@ static int could_win(long cost, double q, val cur)
 static void close_face(const dp *d, long i, long l, long chord, slot out)
 {
     *out.value = none, *out.arg = -1, *out.by = BY_TRIANGLE, *out.fan_of = -1;
+    uint64_t closing = (chord >= 0 ? d->rev_ok[chord] : d->root_ok) & d->fans_now;
     for (long s = first_after(d, l, i); s < d->start[l + 1]; s++) {
         long a = d->left[s];
         val gl = d->g[s];
@@ -177,11 +193,11 @@ static void close_face(const dp *d, long i, long l, long chord, slot out)
                   BY_TRIANGLE, (int32_t)a, -1, out);
         if (exists(pc->more))
             offer((val){pc->more.cost + gl.cost - 1, qmin(pc->more.q, gl.q)}, BY_FACE, (int32_t)a, -1, out);
-        for (size_t x = 0; x < d->nfans; x++) {
-            double closing = chord >= 0 ? rev(d, x, chord) : d->root_fan[x];
+        for (uint64_t b = closing & d->fwd_ok[s] & d->fan_more[a]; b; b &= b - 1) {
+            size_t x = (size_t)cm_lowest_bit(b);
             const chains *fc = fanned(d, x, a);
-            if (closing < 0 || fwd(d, x, s) < 0 || !exists(fc->more)) continue;
-            offer((val){fc->more.cost + gl.cost + 1, qmin(qmin(fc->more.q, gl.q), qmin(fwd(d, x, s), closing))},
+            double q = chord >= 0 ? fan_q(d, x, chord) : d->root_fan[x];
+            offer((val){fc->more.cost + gl.cost + 1, qmin(qmin(fc->more.q, gl.q), qmin(fan_q(d, x, s), q))},
                   BY_FAN, (int32_t)a, (int16_t)x, out);
         }
     }
@@ -212,38 +228,44 @@ static void extend_chains(dp *d, long i, long l, long s)
     chains *pc = &d->plain[l];
     pc->one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
     pc->more = none, pc->arg = -1;
-    for (size_t x = 0; x < d->nfans; x++) {
+    uint64_t fans = d->fans_now;
+    for (uint64_t b = fans; b; b &= b - 1) {
+        size_t x = (size_t)cm_lowest_bit(b);
         chains *fc = fanned(d, x, l);
-        fc->one = s >= 0 && fwd(d, x, s) >= 0 ? (val){d->g[s].cost, qmin(d->g[s].q, fwd(d, x, s))} : none;
+        fc->one = s >= 0 && has_fan(d->fwd_ok[s], x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s))} : none;
         fc->more = none, fc->arg = -1;
     }
-    for (long t = first_after(d, l, i); t < d->start[l + 1]; t++) {
-        long a = d->left[t];
-        val gl = d->g[t];
-        extend(pc, a, &d->plain[a], gl, 0);
-        for (size_t x = 0; x < d->nfans; x++)
-            if (fwd(d, x, t) >= 0)
-                extend(fanned(d, x, l), a, fanned(d, x, a), (val){gl.cost, qmin(gl.q, fwd(d, x, t))}, 1);
-    }
+    long first = first_after(d, l, i);
+    for (long t = first; t < d->start[l + 1]; t++) extend(pc, d->left[t], &d->plain[d->left[t]], d->g[t], 0);
     finish(pc);
-    for (size_t x = 0; x < d->nfans; x++) finish(fanned(d, x, l));
-}
-
-/* The farthest l that row i needs: its farthest diagonal (the root's row
- * needs them all). */
-static long row_reach(const dp *d, long i)
-{
-    if (i == 0) return d->m - 1;
-    for (long j = d->m - 1; j > i + 1; j--)
-        if (cm_diagview_has(d->common, i, j)) return j;
-    return i + 1;
+    if (!fans) {
+        d->fan_best[l] = d->fan_more[l] = 0;
+        return;
+    }
+    for (long t = first; t < d->start[l + 1]; t++) {
+        long a = d->left[t];
+        for (uint64_t b = fans & d->fwd_ok[t] & d->fan_best[a]; b; b &= b - 1) {
+            size_t x = (size_t)cm_lowest_bit(b);
+            extend(fanned(d, x, l), a, fanned(d, x, a), (val){d->g[t].cost, qmin(d->g[t].q, fan_q(d, x, t))}, 1);
+        }
+    }
+    uint64_t best = 0, more = 0;
+    for (uint64_t b = fans; b; b &= b - 1) {
+        size_t x = (size_t)cm_lowest_bit(b);
+        chains *fc = fanned(d, x, l);
+        finish(fc);
+        best |= (uint64_t)exists(fc->best) << x;
+        more |= (uint64_t)exists(fc->more) << x;
+    }
+    d->fan_best[l] = best, d->fan_more[l] = more;
 }
 
 static void solve(dp *d)
 {
     long m = d->m;
     for (long i = m - 2; i >= 0; i--) {
-        long last = row_reach(d, i);
+        long last = d->reach[i];
+        d->fans_now = d->row_fans[i];
         for (long l = i + 1; l <= last; l++) {
             long s = find_link(d, i, l);
             if (l > i + 1) {
@@ -257,11 +279,42 @@ static void solve(dp *d)
     }
 }
 
+/* Does the ray from x towards +x cross the segment p q? Half-open in y
+ * with the exact orientation: the parity of the crossings with a closed
+ * polyline is exact for every x off it. */
+static int ray_crosses(const double *p, const double *q, const double *x)
+{
+    if ((p[1] > x[1]) == (q[1] > x[1])) return 0;
+    int o = cm_orient2d(p, q, x);
+    return q[1] > p[1] ? o > 0 : o < 0;
+}
+
+/* The fan points inside the sub-polygon a, a+1, ..., b closed by the link
+ * (a, b), in geometry 0; parity[v]: the fan points whose rays cross an odd
+ * number of the edges before v. Exact for points off its boundary; a
+ * point on it is strictly inside none of its faces, nor strictly on one
+ * side of a link through it, so either answer serves. */
+static uint64_t fans_inside(const dp *d, const uint64_t *parity, long a, long b)
+{
+    uint64_t in = parity[a] ^ parity[b];
+    const double *pa = d->xy[0] + 2 * a, *pb = d->xy[0] + 2 * b;
+    for (size_t x = 0; x < d->nfans; x++) in ^= (uint64_t)ray_crosses(pb, pa, d->fans + 2 * x * d->k) << x;
+    return in;
+}
+
 static int build_links(dp *d)
 {
     long m = d->m, count = 0;
     d->start = calloc((size_t)m + 2, sizeof *d->start);
-    if (!d->start) return -1;
+    d->reach = malloc((size_t)m * sizeof *d->reach);
+    d->row_fans = calloc((size_t)m, sizeof *d->row_fans);
+    d->fan_best = calloc((size_t)m, sizeof *d->fan_best);
+    d->fan_more = calloc((size_t)m, sizeof *d->fan_more);
+    uint64_t *parity = calloc((size_t)m, sizeof *parity);
+    if (!d->start || !d->reach || !d->row_fans || !d->fan_best || !d->fan_more || !parity) {
+        free(parity);
+        return -1;
+    }
     for (long b = 1; b < m; b++)
         for (long a = 0; a < b; a++) count += is_link(d, a, b);
     size_t c = (size_t)count + 1, f = d->nfans ? d->nfans : 1;
@@ -271,11 +324,25 @@ static int build_links(dp *d)
     d->arg = malloc(c * sizeof *d->arg);
     d->by = malloc(c);
     d->fan_of = malloc(c * sizeof *d->fan_of);
-    d->fan_fwd = malloc(f * c * sizeof *d->fan_fwd);
-    d->fan_rev = malloc(f * c * sizeof *d->fan_rev);
+    d->fwd_ok = malloc(c * sizeof *d->fwd_ok);
+    d->rev_ok = malloc(c * sizeof *d->rev_ok);
+    d->fan_q = malloc(f * c * sizeof *d->fan_q);
     d->root_fan = malloc(f * sizeof *d->root_fan);
-    if (!d->left || !d->g || !d->arg || !d->by || !d->fan_of || !d->fan_fwd || !d->fan_rev || !d->root_fan)
+    if (!d->left || !d->g || !d->arg || !d->by || !d->fan_of || !d->fwd_ok || !d->rev_ok || !d->fan_q ||
+        !d->root_fan) {
+        free(parity);
         return -1;
+    }
+    for (size_t x = 0; x < d->nfans; x++) {
+        const double *f0 = d->fans + 2 * x * d->k;
+        uint64_t odd = 0;
+        for (long v = 0; v + 1 < m; v++) {
+            odd ^= (uint64_t)ray_crosses(d->xy[0] + 2 * v, d->xy[0] + 2 * v + 2, f0);
+            parity[v + 1] |= odd << x;
+        }
+    }
+    for (long i = 0; i < m; i++) d->reach[i] = i == 0 ? m - 1 : i + 1;
+    if (d->nfans) d->row_fans[0] = d->nfans == 64 ? ~(uint64_t)0 : ((uint64_t)1 << d->nfans) - 1;
     long s = 0;
     for (long b = 0; b < m; b++) {
         d->start[b] = s;
@@ -284,15 +351,25 @@ static int build_links(dp *d)
             d->left[s] = (int32_t)a;
             d->g[s] = b == a + 1 ? (val){0, NO_TRIANGLE} : none;
             d->arg[s] = -1, d->by[s] = BY_TRIANGLE, d->fan_of[s] = -1;
+            uint64_t in = d->nfans ? fans_inside(d, parity, a, b) : 0;
+            d->fwd_ok[s] = d->rev_ok[s] = 0;
             for (size_t x = 0; x < d->nfans; x++) {
-                d->fan_fwd[x * (size_t)count + (size_t)s] = fan_min_angle(d, x, a, b);
-                d->fan_rev[x * (size_t)count + (size_t)s] = b == a + 1 ? -1.0 : fan_min_angle(d, x, b, a);
+                int inside = has_fan(in, x);
+                double q = inside ? (b == a + 1 ? -1.0 : fan_min_angle(d, x, b, a)) : fan_min_angle(d, x, a, b);
+                d->fan_q[x * (size_t)count + (size_t)s] = q;
+                if (q >= 0) *(inside ? &d->rev_ok[s] : &d->fwd_ok[s]) |= (uint64_t)1 << x;
             }
+            if (a > 0 && b > a + 1) d->reach[a] = b, d->row_fans[a] = in; /* b ascends: the farthest last */
             s++;
         }
     }
     d->start[m] = d->start[m + 1] = s;
-    for (size_t x = 0; x < d->nfans; x++) d->root_fan[x] = fan_min_angle(d, x, m - 1, 0);
+    d->root_ok = 0;
+    for (size_t x = 0; x < d->nfans; x++) {
+        d->root_fan[x] = fan_min_angle(d, x, m - 1, 0);
+        if (d->root_fan[x] >= 0) d->root_ok |= (uint64_t)1 << x;
+    }
+    free(parity);
     return 0;
 }
 
@@ -324,6 +401,7 @@ static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link **stack, long *top,
                     long *cap)
 {
+    d->fans_now = d->row_fans[i];
     for (long l = i + 1; l <= a; l++) extend_chains(d, i, l, find_link(d, i, l));
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
@@ -421,6 +499,7 @@ int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *
                         const double *fans, size_t nfans, cm_sf_plan *plan)
 {
     memset(plan, 0, sizeof *plan);
+    if (fans && nfans > CM_SF_MAX_FANS) return -1;
     dp d;
     memset(&d, 0, sizeof d);
     d.m = m, d.common = common, d.xy = xy, d.k = k, d.fans = fans, d.nfans = fans ? nfans : 0;
@@ -436,7 +515,8 @@ int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *
         status = read_plan(&d, plan);
     }
     free(d.start), free(d.left), free(d.g), free(d.arg), free(d.by), free(d.fan_of);
-    free(d.fan_fwd), free(d.fan_rev), free(d.root_fan), free(d.plain), free(d.fanned);
+    free(d.fwd_ok), free(d.rev_ok), free(d.fan_q), free(d.root_fan), free(d.plain), free(d.fanned);
+    free(d.reach), free(d.row_fans), free(d.fan_best), free(d.fan_more);
     if (status != 0) cm_sf_plan_clear(plan);
     return status;
 }

@@ -48,7 +48,9 @@ typedef struct cm_sf_plan {
  * (i, j) is a diagonal in every geometry (polygon edges are ignored);
  * xy[g] holds the 2m coordinates of geometry g; fans holds nfans fan
  * points, point x of geometry g at fans[2 (x k + g)] (NULL or 0: none).
- * Returns 0, or -1 out of memory. */
+ * At most CM_SF_MAX_FANS fan points. Returns 0, or -1 (out of memory, or
+ * too many fan points). */
+#define CM_SF_MAX_FANS 64
 int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *xy, size_t k,
                         const double *fans, size_t nfans, cm_sf_plan *plan);
 void cm_sf_plan_clear(cm_sf_plan *plan);
