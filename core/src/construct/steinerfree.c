@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/buf.h"
 #include "geom/predicates.h"
 
 typedef struct { long cost; double q; } val;
@@ -180,11 +181,11 @@ static int could_win(long cost, double q, val cur)
  * two links (a triangle), of three or more (a stuck face), or a fan chain
  * of three or more from a fan point whose triangle on the closing edge
  * l -> i is valid too (chord_fan(x) >= 0). */
-static void close_face(const dp *d, long i, long l, long chord, slot out)
+static void close_face(const dp *d, long i, long l, long first, long chord, slot out)
 {
     *out.value = none, *out.arg = -1, *out.by = BY_TRIANGLE, *out.fan_of = -1;
     uint64_t closing = (chord >= 0 ? d->rev_ok[chord] : d->root_ok) & d->fans_now;
-    for (long s = first_after(d, l, i); s < d->start[l + 1]; s++) {
+    for (long s = first; s < d->start[l + 1]; s++) {
         long a = d->left[s];
         val gl = d->g[s];
         const chains *pc = &d->plain[a];
@@ -220,10 +221,10 @@ static void finish(chains *c)
 }
 
 /* Chains from i to l, given G of the links into l and the row below l;
- * s: the link (i, l) or -1. A plain chain counts each link once (it adds
+ * s: the link (i, l) or -1; first: the first link into l from beyond i. A plain chain counts each link once (it adds
  * a face vertex); a fan chain only collects G, the fan face costs 1 in
  * all. */
-static void extend_chains(dp *d, long i, long l, long s)
+static void extend_chains(dp *d, long l, long s, long first)
 {
     chains *pc = &d->plain[l];
     pc->one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
@@ -235,7 +236,6 @@ static void extend_chains(dp *d, long i, long l, long s)
         fc->one = s >= 0 && has_fan(d->fwd_ok[s], x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s))} : none;
         fc->more = none, fc->arg = -1;
     }
-    long first = first_after(d, l, i);
     for (long t = first; t < d->start[l + 1]; t++) extend(pc, d->left[t], &d->plain[d->left[t]], d->g[t], 0);
     finish(pc);
     if (!fans) {
@@ -260,21 +260,33 @@ static void extend_chains(dp *d, long i, long l, long s)
     d->fan_best[l] = best, d->fan_more[l] = more;
 }
 
-static void solve(dp *d)
+/* Rows from the last up. first[l]: the first link into l from beyond the
+ * row (a link from the row into l, if any, just before it). With a memo
+ * (a run without fan points over the same links), a row other than the
+ * root's whose sub-polygons hold no fan point keeps its values: G of such
+ * a link admits no fan face, and every link inside it is such a link. */
+static void solve(dp *d, long *first, int memo)
 {
     long m = d->m;
+    for (long l = 0; l < m; l++) first[l] = d->start[l + 1];
     for (long i = m - 2; i >= 0; i--) {
         long last = d->reach[i];
         d->fans_now = d->row_fans[i];
+        int keep = memo && i > 0 && !d->fans_now;
         for (long l = i + 1; l <= last; l++) {
-            long s = find_link(d, i, l);
+            long f = first[l], s = f > d->start[l] && d->left[f - 1] == i ? f - 1 : -1;
+            if (keep) {
+                if (s >= 0) first[l] = s;
+                continue;
+            }
             if (l > i + 1) {
                 if (s >= 0)
-                    close_face(d, i, l, s, (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]});
+                    close_face(d, i, l, f, s, (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]});
                 else if (i == 0 && l == m - 1)
-                    close_face(d, i, l, -1, (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of});
+                    close_face(d, i, l, f, -1, (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of});
             }
-            extend_chains(d, i, l, s);
+            extend_chains(d, l, s, f);
+            if (s >= 0) first[l] = s;
         }
     }
 }
@@ -302,37 +314,65 @@ static uint64_t fans_inside(const dp *d, const uint64_t *parity, long a, long b)
     return in;
 }
 
+/* The links, by their right ends, and each row's reach. */
 static int build_links(dp *d)
 {
     long m = d->m, count = 0;
+    size_t cap = 0;
     d->start = calloc((size_t)m + 2, sizeof *d->start);
     d->reach = malloc((size_t)m * sizeof *d->reach);
-    d->row_fans = calloc((size_t)m, sizeof *d->row_fans);
-    d->fan_best = calloc((size_t)m, sizeof *d->fan_best);
-    d->fan_more = calloc((size_t)m, sizeof *d->fan_more);
-    uint64_t *parity = calloc((size_t)m, sizeof *parity);
-    if (!d->start || !d->reach || !d->row_fans || !d->fan_best || !d->fan_more || !parity) {
-        free(parity);
-        return -1;
+    if (!d->start || !d->reach) return -1;
+    for (long i = 0; i < m; i++) d->reach[i] = i == 0 ? m - 1 : i + 1;
+    for (long b = 0; b < m; b++) {
+        d->start[b] = count;
+        for (long a = 0; a < b; a++) {
+            if (!is_link(d, a, b)) continue;
+            if (cm_grow((void **)&d->left, &cap, (size_t)count + 1, sizeof *d->left) != 0) return -1;
+            d->left[count++] = (int32_t)a;
+            if (a > 0 && b > a + 1) d->reach[a] = b; /* b ascends: the farthest last */
+        }
     }
-    for (long b = 1; b < m; b++)
-        for (long a = 0; a < b; a++) count += is_link(d, a, b);
-    size_t c = (size_t)count + 1, f = d->nfans ? d->nfans : 1;
+    d->start[m] = d->start[m + 1] = count;
     d->nlinks = count;
-    d->left = malloc(c * sizeof *d->left);
+    return 0;
+}
+
+/* Fresh values: G of an edge is an empty triangulation, of a diagonal
+ * none yet. */
+static int init_values(dp *d)
+{
+    size_t c = (size_t)d->nlinks + 1;
     d->g = malloc(c * sizeof *d->g);
     d->arg = malloc(c * sizeof *d->arg);
     d->by = malloc(c);
     d->fan_of = malloc(c * sizeof *d->fan_of);
+    if (!d->g || !d->arg || !d->by || !d->fan_of) return -1;
+    for (long b = 0; b < d->m; b++)
+        for (long s = d->start[b]; s < d->start[b + 1]; s++) {
+            d->g[s] = b == d->left[s] + 1 ? (val){0, NO_TRIANGLE} : none;
+            d->arg[s] = -1, d->by[s] = BY_TRIANGLE, d->fan_of[s] = -1;
+        }
+    return 0;
+}
+
+/* The fan triangles of every link and of the root, and each row's fan
+ * points. */
+static int build_fans(dp *d)
+{
+    long m = d->m;
+    size_t c = (size_t)d->nlinks + 1, f = d->nfans ? d->nfans : 1;
+    d->row_fans = calloc((size_t)m, sizeof *d->row_fans);
+    d->fan_best = calloc((size_t)m, sizeof *d->fan_best);
+    d->fan_more = calloc((size_t)m, sizeof *d->fan_more);
     d->fwd_ok = malloc(c * sizeof *d->fwd_ok);
     d->rev_ok = malloc(c * sizeof *d->rev_ok);
     d->fan_q = malloc(f * c * sizeof *d->fan_q);
     d->root_fan = malloc(f * sizeof *d->root_fan);
-    if (!d->left || !d->g || !d->arg || !d->by || !d->fan_of || !d->fwd_ok || !d->rev_ok || !d->fan_q ||
-        !d->root_fan) {
-        free(parity);
-        return -1;
-    }
+    uint64_t *parity = calloc((size_t)m, sizeof *parity);
+    int status = -1;
+    if (!d->row_fans || !d->fan_best || !d->fan_more || !d->fwd_ok || !d->rev_ok || !d->fan_q || !d->root_fan ||
+        !parity)
+        goto done;
     for (size_t x = 0; x < d->nfans; x++) {
         const double *f0 = d->fans + 2 * x * d->k;
         uint64_t odd = 0;
@@ -341,36 +381,30 @@ static int build_links(dp *d)
             parity[v + 1] |= odd << x;
         }
     }
-    for (long i = 0; i < m; i++) d->reach[i] = i == 0 ? m - 1 : i + 1;
     if (d->nfans) d->row_fans[0] = d->nfans == 64 ? ~(uint64_t)0 : ((uint64_t)1 << d->nfans) - 1;
-    long s = 0;
-    for (long b = 0; b < m; b++) {
-        d->start[b] = s;
-        for (long a = 0; a < b; a++) {
-            if (!is_link(d, a, b)) continue;
-            d->left[s] = (int32_t)a;
-            d->g[s] = b == a + 1 ? (val){0, NO_TRIANGLE} : none;
-            d->arg[s] = -1, d->by[s] = BY_TRIANGLE, d->fan_of[s] = -1;
+    for (long i = 1; i < m; i++)
+        if (d->nfans && d->reach[i] > i + 1) d->row_fans[i] = fans_inside(d, parity, i, d->reach[i]);
+    for (long b = 0; b < m; b++)
+        for (long s = d->start[b]; s < d->start[b + 1]; s++) {
+            long a = d->left[s];
             uint64_t in = d->nfans ? fans_inside(d, parity, a, b) : 0;
             d->fwd_ok[s] = d->rev_ok[s] = 0;
             for (size_t x = 0; x < d->nfans; x++) {
                 int inside = has_fan(in, x);
                 double q = inside ? (b == a + 1 ? -1.0 : fan_min_angle(d, x, b, a)) : fan_min_angle(d, x, a, b);
-                d->fan_q[x * (size_t)count + (size_t)s] = q;
+                d->fan_q[x * (size_t)d->nlinks + (size_t)s] = q;
                 if (q >= 0) *(inside ? &d->rev_ok[s] : &d->fwd_ok[s]) |= (uint64_t)1 << x;
             }
-            if (a > 0 && b > a + 1) d->reach[a] = b, d->row_fans[a] = in; /* b ascends: the farthest last */
-            s++;
         }
-    }
-    d->start[m] = d->start[m + 1] = s;
     d->root_ok = 0;
     for (size_t x = 0; x < d->nfans; x++) {
         d->root_fan[x] = fan_min_angle(d, x, m - 1, 0);
         if (d->root_fan[x] >= 0) d->root_ok |= (uint64_t)1 << x;
     }
+    status = 0;
+done:
     free(parity);
-    return 0;
+    return status;
 }
 
 /* ---- reading the plan back ------------------------------------------------ */
@@ -402,7 +436,7 @@ static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link 
                     long *cap)
 {
     d->fans_now = d->row_fans[i];
-    for (long l = i + 1; l <= a; l++) extend_chains(d, i, l, find_link(d, i, l));
+    for (long l = i + 1; l <= a; l++) extend_chains(d, l, find_link(d, i, l), first_after(d, l, i));
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
     int32_t *f = p->face + p->face_start[p->nf];
@@ -495,28 +529,109 @@ long cm_steinerfree_count(long m, const cm_diagview *common)
     return count;
 }
 
+struct cm_sf_memo {
+    dp d; /* the run's links and values */
+};
+
+/* Everything but the links (start, left, reach), which a memo may share. */
+static void free_run(dp *d)
+{
+    free(d->g), free(d->arg), free(d->by), free(d->fan_of);
+    free(d->fwd_ok), free(d->rev_ok), free(d->fan_q), free(d->root_fan), free(d->plain), free(d->fanned);
+    free(d->row_fans), free(d->fan_best), free(d->fan_more);
+}
+
+static void free_links(dp *d)
+{
+    free(d->start), free(d->left), free(d->reach);
+}
+
+/* One run over the links of *d (set up, values fresh or the memo's):
+ * the plan. 0 or -1. */
+static int run(dp *d, int memo, cm_sf_plan *plan)
+{
+    long m = d->m;
+    d->root = none, d->root_arg = -1, d->root_by = BY_TRIANGLE, d->root_fan_of = -1;
+    d->plain = malloc((size_t)m * sizeof *d->plain);
+    d->fanned = malloc((size_t)m * (d->nfans ? d->nfans : 1) * sizeof *d->fanned);
+    long *first = malloc((size_t)m * sizeof *first);
+    int status = -1;
+    if (d->plain && d->fanned && first && build_fans(d) == 0) {
+        solve(d, first, memo);
+        plan->cost = d->root.cost;
+        double q = qmin(d->root.q, 1.0);
+        plan->min_angle_deg = d->root.q >= NO_TRIANGLE ? 180.0 : asin(sqrt(q)) * 180.0 / 3.14159265358979323846;
+        status = read_plan(d, plan);
+    }
+    free(first);
+    if (status != 0) cm_sf_plan_clear(plan);
+    return status;
+}
+
+static void setup(dp *d, long m, const cm_diagview *common, const double *const *xy, size_t k)
+{
+    memset(d, 0, sizeof *d);
+    d->m = m, d->common = common, d->xy = xy, d->k = k;
+}
+
 int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *xy, size_t k,
                         const double *fans, size_t nfans, cm_sf_plan *plan)
 {
     memset(plan, 0, sizeof *plan);
     if (fans && nfans > CM_SF_MAX_FANS) return -1;
     dp d;
-    memset(&d, 0, sizeof d);
-    d.m = m, d.common = common, d.xy = xy, d.k = k, d.fans = fans, d.nfans = fans ? nfans : 0;
-    d.root = none, d.root_fan_of = -1;
-    d.plain = malloc((size_t)m * sizeof *d.plain);
-    d.fanned = malloc((size_t)m * (d.nfans ? d.nfans : 1) * sizeof *d.fanned);
-    int status = -1;
-    if (d.plain && d.fanned && build_links(&d) == 0) {
-        solve(&d);
-        plan->cost = d.root.cost;
-        double q = qmin(d.root.q, 1.0);
-        plan->min_angle_deg = d.root.q >= NO_TRIANGLE ? 180.0 : asin(sqrt(q)) * 180.0 / 3.14159265358979323846;
-        status = read_plan(&d, plan);
-    }
-    free(d.start), free(d.left), free(d.g), free(d.arg), free(d.by), free(d.fan_of);
-    free(d.fwd_ok), free(d.rev_ok), free(d.fan_q), free(d.root_fan), free(d.plain), free(d.fanned);
-    free(d.reach), free(d.row_fans), free(d.fan_best), free(d.fan_more);
-    if (status != 0) cm_sf_plan_clear(plan);
+    setup(&d, m, common, xy, k);
+    d.fans = fans, d.nfans = fans ? nfans : 0;
+    int status = build_links(&d) == 0 && init_values(&d) == 0 ? run(&d, 0, plan) : -1;
+    free_run(&d), free_links(&d);
     return status;
+}
+
+int cm_steinerfree_plan_memo(long m, const cm_diagview *common, const double *const *xy, size_t k,
+                             cm_sf_plan *plan, cm_sf_memo **memo)
+{
+    memset(plan, 0, sizeof *plan);
+    *memo = calloc(1, sizeof **memo);
+    if (!*memo) return -1;
+    dp *d = &(*memo)->d;
+    setup(d, m, common, xy, k);
+    int status = build_links(d) == 0 && init_values(d) == 0 ? run(d, 0, plan) : -1;
+    if (status != 0) {
+        cm_sf_memo_free(*memo);
+        *memo = NULL;
+    }
+    return status;
+}
+
+int cm_steinerfree_plan_fans(const cm_sf_memo *memo, const double *fans, size_t nfans, cm_sf_plan *plan)
+{
+    memset(plan, 0, sizeof *plan);
+    if (nfans > CM_SF_MAX_FANS) return -1;
+    const dp *first = &memo->d;
+    size_t c = (size_t)first->nlinks + 1;
+    dp d;
+    setup(&d, first->m, first->common, first->xy, first->k);
+    d.fans = fans, d.nfans = fans ? nfans : 0;
+    d.start = first->start, d.left = first->left, d.reach = first->reach, d.nlinks = first->nlinks;
+    d.g = malloc(c * sizeof *d.g);
+    d.arg = malloc(c * sizeof *d.arg);
+    d.by = malloc(c);
+    d.fan_of = malloc(c * sizeof *d.fan_of);
+    int status = -1;
+    if (d.g && d.arg && d.by && d.fan_of) {
+        memcpy(d.g, first->g, c * sizeof *d.g);
+        memcpy(d.arg, first->arg, c * sizeof *d.arg);
+        memcpy(d.by, first->by, c);
+        memcpy(d.fan_of, first->fan_of, c * sizeof *d.fan_of);
+        status = run(&d, 1, plan);
+    }
+    free_run(&d); /* the links are the memo's */
+    return status;
+}
+
+void cm_sf_memo_free(cm_sf_memo *memo)
+{
+    if (!memo) return;
+    free_run(&memo->d), free_links(&memo->d);
+    free(memo);
 }
