@@ -77,6 +77,12 @@ typedef struct dp {
                            of its farthest link, all for the root's row:
                            the only ones its faces can be fans from */
     uint64_t fans_now;  /* row_fans of the row being solved */
+    uint64_t *facing;   /* per vertex v: the fan points strictly inside its
+                           corner, in every geometry, where v is convex
+                           (all where it is not): the only ones a segment
+                           from v into the polygon's interior can reach,
+                           so the only ones a fan face through v can be
+                           from */
     long *reach;        /* per row i: the farthest l it needs, its farthest
                            diagonal (the root's row: all) */
     val root;
@@ -229,7 +235,7 @@ static void extend_chains(dp *d, long l, long s, long first)
     chains *pc = &d->plain[l];
     pc->one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
     pc->more = none, pc->arg = -1;
-    uint64_t fans = d->fans_now;
+    uint64_t fans = d->fans_now & d->facing[l];
     for (uint64_t b = fans; b; b &= b - 1) {
         size_t x = (size_t)cm_lowest_bit(b);
         chains *fc = fanned(d, x, l);
@@ -271,8 +277,8 @@ static void solve(dp *d, long *first, int memo)
     for (long l = 0; l < m; l++) first[l] = d->start[l + 1];
     for (long i = m - 2; i >= 0; i--) {
         long last = d->reach[i];
-        d->fans_now = d->row_fans[i];
-        int keep = memo && i > 0 && !d->fans_now;
+        d->fans_now = d->row_fans[i] & d->facing[i];
+        int keep = memo && i > 0 && !d->row_fans[i];
         for (long l = i + 1; l <= last; l++) {
             long f = first[l], s = f > d->start[l] && d->left[f - 1] == i ? f - 1 : -1;
             if (keep) {
@@ -302,16 +308,19 @@ static int ray_crosses(const double *p, const double *q, const double *x)
 }
 
 /* The fan points inside the sub-polygon a, a+1, ..., b closed by the link
- * (a, b), in geometry 0; parity[v]: the fan points whose rays cross an odd
- * number of the edges before v. Exact for points off its boundary; a
- * point on it is strictly inside none of its faces, nor strictly on one
+ * (a, b), in geometry 0, of those in which; parity[v]: the fan points
+ * whose rays cross an odd number of the edges before v. Exact for points
+ * off its boundary; a point on it is strictly inside none of its faces, nor strictly on one
  * side of a link through it, so either answer serves. */
-static uint64_t fans_inside(const dp *d, const uint64_t *parity, long a, long b)
+static uint64_t fans_inside(const dp *d, const uint64_t *parity, long a, long b, uint64_t which)
 {
     uint64_t in = parity[a] ^ parity[b];
     const double *pa = d->xy[0] + 2 * a, *pb = d->xy[0] + 2 * b;
-    for (size_t x = 0; x < d->nfans; x++) in ^= (uint64_t)ray_crosses(pb, pa, d->fans + 2 * x * d->k) << x;
-    return in;
+    for (uint64_t w = which; w; w &= w - 1) {
+        int x = cm_lowest_bit(w);
+        in ^= (uint64_t)ray_crosses(pb, pa, d->fans + 2 * (size_t)x * d->k) << x;
+    }
+    return in & which;
 }
 
 /* The links, by their right ends, and each row's reach. */
@@ -364,13 +373,14 @@ static int build_fans(dp *d)
     d->row_fans = calloc((size_t)m, sizeof *d->row_fans);
     d->fan_best = calloc((size_t)m, sizeof *d->fan_best);
     d->fan_more = calloc((size_t)m, sizeof *d->fan_more);
+    d->facing = calloc((size_t)m, sizeof *d->facing);
     d->fwd_ok = malloc(c * sizeof *d->fwd_ok);
     d->rev_ok = malloc(c * sizeof *d->rev_ok);
     d->fan_q = malloc(f * c * sizeof *d->fan_q);
     d->root_fan = malloc(f * sizeof *d->root_fan);
     uint64_t *parity = calloc((size_t)m, sizeof *parity);
     int status = -1;
-    if (!d->row_fans || !d->fan_best || !d->fan_more || !d->fwd_ok || !d->rev_ok || !d->fan_q || !d->root_fan ||
+    if (!d->row_fans || !d->fan_best || !d->fan_more || !d->facing || !d->fwd_ok || !d->rev_ok || !d->fan_q || !d->root_fan ||
         !parity)
         goto done;
     for (size_t x = 0; x < d->nfans; x++) {
@@ -382,14 +392,27 @@ static int build_fans(dp *d)
         }
     }
     if (d->nfans) d->row_fans[0] = d->nfans == 64 ? ~(uint64_t)0 : ((uint64_t)1 << d->nfans) - 1;
+    for (long v = 0; d->nfans && v < m; v++) {
+        d->facing[v] = d->row_fans[0];
+        for (size_t g = 0; g < d->k; g++) {
+            const double *p = d->xy[g] + 2 * (v > 0 ? v - 1 : m - 1), *q = d->xy[g] + 2 * v;
+            const double *r = d->xy[g] + 2 * (v + 1 < m ? v + 1 : 0);
+            if (cm_orient2d(p, q, r) <= 0) continue;
+            for (size_t x = 0; x < d->nfans; x++) {
+                const double *fx = d->fans + 2 * (x * d->k + g);
+                if (cm_orient2d(p, q, fx) <= 0 || cm_orient2d(q, r, fx) <= 0) d->facing[v] &= ~((uint64_t)1 << x);
+            }
+        }
+    }
     for (long i = 1; i < m; i++)
-        if (d->nfans && d->reach[i] > i + 1) d->row_fans[i] = fans_inside(d, parity, i, d->reach[i]);
+        if (d->nfans && d->reach[i] > i + 1) d->row_fans[i] = fans_inside(d, parity, i, d->reach[i], d->row_fans[0]);
     for (long b = 0; b < m; b++)
         for (long s = d->start[b]; s < d->start[b + 1]; s++) {
             long a = d->left[s];
-            uint64_t in = d->nfans ? fans_inside(d, parity, a, b) : 0;
+            uint64_t ends = d->facing[a] & d->facing[b], in = fans_inside(d, parity, a, b, ends);
             d->fwd_ok[s] = d->rev_ok[s] = 0;
-            for (size_t x = 0; x < d->nfans; x++) {
+            for (uint64_t w = ends; w; w &= w - 1) {
+                size_t x = (size_t)cm_lowest_bit(w);
                 int inside = has_fan(in, x);
                 double q = inside ? (b == a + 1 ? -1.0 : fan_min_angle(d, x, b, a)) : fan_min_angle(d, x, a, b);
                 d->fan_q[x * (size_t)d->nlinks + (size_t)s] = q;
@@ -435,7 +458,7 @@ static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link **stack, long *top,
                     long *cap)
 {
-    d->fans_now = d->row_fans[i];
+    d->fans_now = d->row_fans[i] & d->facing[i];
     for (long l = i + 1; l <= a; l++) extend_chains(d, l, find_link(d, i, l), first_after(d, l, i));
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
@@ -538,7 +561,7 @@ static void free_run(dp *d)
 {
     free(d->g), free(d->arg), free(d->by), free(d->fan_of);
     free(d->fwd_ok), free(d->rev_ok), free(d->fan_q), free(d->root_fan), free(d->plain), free(d->fanned);
-    free(d->row_fans), free(d->fan_best), free(d->fan_more);
+    free(d->row_fans), free(d->fan_best), free(d->fan_more), free(d->facing);
 }
 
 static void free_links(dp *d)
