@@ -1371,7 +1371,8 @@ static int common_step(part *p, item *it, cm_status *s)
 {
     long m = it->m;
     cm_diagview view = local_common(p, it), *common = &view;
-    long chords = cm_steinerfree_count(m, common);
+    /* up to CM_DP_MAX_VERTICES only whether there is one matters */
+    long chords = cm_steinerfree_count_to(m, common, m <= CM_DP_MAX_VERTICES ? 1 : LONG_MAX);
     int done = 1;
     if (chords == 0) {
         done = 0;

@@ -128,12 +128,11 @@ static double triangle_quality(const dp *d, long a, long b, long c)
  * invalid in some geometry. */
 static double fan_min_angle(const dp *d, size_t x, long a, long b)
 {
+    for (size_t g = 0; g < d->k; g++) /* all first: most fail */
+        if (cm_orient2d(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->fans + 2 * (x * d->k + g)) <= 0) return -1.0;
     double q = NO_TRIANGLE;
-    for (size_t g = 0; g < d->k; g++) {
-        const double *pa = d->xy[g] + 2 * a, *pb = d->xy[g] + 2 * b, *f = d->fans + 2 * (x * d->k + g);
-        if (cm_orient2d(pa, pb, f) <= 0) return -1.0;
-        q = qmin(q, quality(pa, pb, f));
-    }
+    for (size_t g = 0; g < d->k; g++)
+        q = qmin(q, quality(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->fans + 2 * (x * d->k + g)));
     return q;
 }
 
@@ -530,26 +529,31 @@ void cm_sf_plan_clear(cm_sf_plan *plan)
     memset(plan, 0, sizeof *plan);
 }
 
-long cm_steinerfree_count(long m, const cm_diagview *common)
+long cm_steinerfree_count_to(long m, const cm_diagview *common, long limit)
 {
     long count = 0;
     cm_diagrows rows;
     int32_t *row = m >= CM_DIAGROWS_FROM ? malloc((size_t)m * sizeof *row) : NULL;
     if (row && cm_diagrows_open(&rows, common, m) == 0) {
-        for (long a = 0; a < m; a++) {
+        for (long a = 0; a < m && count < limit; a++) {
             long c = cm_diagrows_row(&rows, a, row);
             for (long t = 0; t < c; t++)
                 count += row[t] >= a + 2 && !(a == 0 && row[t] == m - 1);
         }
         cm_diagrows_close(&rows);
         free(row);
-        return count;
+        return count < limit ? count : limit;
     }
     free(row); /* out of memory: pair by pair */
-    for (long a = 0; a < m; a++)
+    for (long a = 0; a < m && count < limit; a++)
         for (long b = a + 2; b < m; b++)
             if (!(a == 0 && b == m - 1)) count += cm_diagview_has(common, a, b);
-    return count;
+    return count < limit ? count : limit;
+}
+
+long cm_steinerfree_count(long m, const cm_diagview *common)
+{
+    return cm_steinerfree_count_to(m, common, LONG_MAX);
 }
 
 struct cm_sf_memo {

@@ -69,7 +69,9 @@ int cm_steinerfree_plan_memo(long m, const cm_diagview *common, const double *co
 int cm_steinerfree_plan_fans(const cm_sf_memo *memo, const double *fans, size_t nfans, cm_sf_plan *plan);
 void cm_sf_memo_free(cm_sf_memo *memo);
 
-/* Number of common diagonals in the table (each counted once). */
+/* Number of common diagonals in the table (each counted once); _to: the
+ * same, or limit if there are at least limit. */
 long cm_steinerfree_count(long m, const cm_diagview *common);
+long cm_steinerfree_count_to(long m, const cm_diagview *common, long limit);
 
 #endif
