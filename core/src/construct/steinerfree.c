@@ -329,7 +329,7 @@ static int build_links(dp *d)
     size_t cap = 0;
     d->start = calloc((size_t)m + 2, sizeof *d->start);
     d->reach = malloc((size_t)m * sizeof *d->reach);
-    if (!d->start || !d->reach) return -1;
+    if (!d->start || !d->reach || cm_grow((void **)&d->left, &cap, 4 * (size_t)m, sizeof *d->left) != 0) return -1;
     for (long i = 0; i < m; i++) d->reach[i] = i == 0 ? m - 1 : i + 1;
     for (long b = 0; b < m; b++) {
         d->start[b] = count;
@@ -369,19 +369,15 @@ static int build_fans(dp *d)
 {
     long m = d->m;
     size_t c = (size_t)d->nlinks + 1, f = d->nfans ? d->nfans : 1;
-    d->row_fans = calloc((size_t)m, sizeof *d->row_fans);
-    d->fan_best = calloc((size_t)m, sizeof *d->fan_best);
-    d->fan_more = calloc((size_t)m, sizeof *d->fan_more);
-    d->facing = calloc((size_t)m, sizeof *d->facing);
-    d->fwd_ok = malloc(c * sizeof *d->fwd_ok);
-    d->rev_ok = malloc(c * sizeof *d->rev_ok);
-    d->fan_q = malloc(f * c * sizeof *d->fan_q);
-    d->root_fan = malloc(f * sizeof *d->root_fan);
-    uint64_t *parity = calloc((size_t)m, sizeof *parity);
-    int status = -1;
-    if (!d->row_fans || !d->fan_best || !d->fan_more || !d->facing || !d->fwd_ok || !d->rev_ok || !d->fan_q || !d->root_fan ||
-        !parity)
-        goto done;
+    /* three blocks (many small programs run): per vertex, per link, the
+     * qualities */
+    d->row_fans = calloc(5 * (size_t)m, sizeof *d->row_fans);
+    d->fwd_ok = calloc(2 * c, sizeof *d->fwd_ok);
+    d->fan_q = malloc((f * c + f) * sizeof *d->fan_q);
+    if (!d->row_fans || !d->fwd_ok || !d->fan_q) return -1;
+    d->fan_best = d->row_fans + m, d->fan_more = d->row_fans + 2 * m, d->facing = d->row_fans + 3 * m;
+    d->rev_ok = d->fwd_ok + c, d->root_fan = d->fan_q + f * c;
+    uint64_t *parity = d->row_fans + 4 * m;
     for (size_t x = 0; x < d->nfans; x++) {
         const double *f0 = d->fans + 2 * x * d->k;
         uint64_t odd = 0;
@@ -423,10 +419,7 @@ static int build_fans(dp *d)
         d->root_fan[x] = fan_min_angle(d, x, m - 1, 0);
         if (d->root_fan[x] >= 0) d->root_ok |= (uint64_t)1 << x;
     }
-    status = 0;
-done:
-    free(parity);
-    return status;
+    return 0;
 }
 
 /* ---- reading the plan back ------------------------------------------------ */
@@ -564,8 +557,7 @@ struct cm_sf_memo {
 static void free_run(dp *d)
 {
     free(d->g), free(d->arg), free(d->by), free(d->fan_of);
-    free(d->fwd_ok), free(d->rev_ok), free(d->fan_q), free(d->root_fan), free(d->plain), free(d->fanned);
-    free(d->row_fans), free(d->fan_best), free(d->fan_more), free(d->facing);
+    free(d->fwd_ok), free(d->fan_q), free(d->plain), free(d->fanned), free(d->row_fans);
 }
 
 static void free_links(dp *d)
