@@ -185,7 +185,7 @@ static int could_win(long cost, double q, val cur)
 /* G for the link (i, l) (or the root): the face on it closes a chain of
  * two links (a triangle), of three or more (a stuck face), or a fan chain
  * of three or more from a fan point whose triangle on the closing edge
- * l -> i is valid too (chord_fan(x) >= 0). */
+ * l -> i is valid too (x in rev_ok of the link, root_ok for the root). */
 static void close_face(const dp *d, long i, long l, long first, long chord, slot out)
 {
     *out.value = none, *out.arg = -1, *out.by = BY_TRIANGLE, *out.fan_of = -1;
