@@ -172,6 +172,78 @@ static void test_affine_image(void)
     }
 }
 
+static int same_plan(const cm_sf_plan *p, const cm_sf_plan *q)
+{
+    if (p->cost != q->cost || p->min_angle_deg != q->min_angle_deg || p->nt != q->nt || p->nf != q->nf) return 0;
+    if (memcmp(p->tri, q->tri, sizeof(int32_t) * 3 * (size_t)p->nt) != 0) return 0;
+    if (memcmp(p->face_start, q->face_start, sizeof(long) * (size_t)(p->nf + 1)) != 0) return 0;
+    if (p->nf && memcmp(p->face_fan, q->face_fan, sizeof(int32_t) * (size_t)p->nf) != 0) return 0;
+    return memcmp(p->face, q->face, sizeof(int32_t) * (size_t)p->face_start[p->nf]) == 0;
+}
+
+/* The run with fan points after a memo of the run without gives the plan
+ * the run with them alone gives, with the fan points the partition tries:
+ * kernel points of the stuck faces (each inside some sub-polygons only,
+ * so rows keep the memo's values), then of the whole polygon. */
+static int check_memo(int n, const unsigned char *common, const double *const *xy)
+{
+    enum { NF = 8 };
+    double fans[2 * 2 * NF], *face = malloc(2 * sizeof(double) * (size_t)n);
+    cm_diagset set;
+    CHECK(face && cm_diagset_from_matrix(&set, n, common) == 0);
+    cm_diagview view = {&set, NULL};
+    cm_sf_plan plain, again, alone, after;
+    cm_sf_memo *memo = NULL;
+    CHECK(cm_steinerfree_plan(n, &view, xy, 2, NULL, 0, &plain) == 0);
+    CHECK(cm_steinerfree_plan_memo(n, &view, xy, 2, &again, &memo) == 0);
+    CHECK(same_plan(&plain, &again));
+    size_t nf = 0;
+    for (long f = 0; f <= plain.nf && nf < NF; f++) {
+        const int32_t *v = f < plain.nf ? plain.face + plain.face_start[f] : NULL;
+        long m = f < plain.nf ? plain.face_start[f + 1] - plain.face_start[f] : n;
+        int star = 1;
+        for (int g = 0; g < 2 && star; g++) {
+            for (long i = 0; i < m; i++)
+                face[2 * i] = xy[g][2 * (v ? v[i] : i)], face[2 * i + 1] = xy[g][2 * (v ? v[i] : i) + 1];
+            star = cm_kernel_point(face, m, fans + 2 * (2 * nf + (size_t)g)) == 1;
+        }
+        nf += star;
+    }
+    for (size_t c = 1; c <= nf; c++) {
+        CHECK(cm_steinerfree_plan(n, &view, xy, 2, fans, c, &alone) == 0);
+        CHECK(cm_steinerfree_plan_fans(memo, fans, c, &after) == 0);
+        CHECK_MSG(same_plan(&alone, &after), "n %d, %zu fan points: the memo's plan differs", n, c);
+        cm_sf_plan_clear(&alone), cm_sf_plan_clear(&after);
+    }
+    cm_sf_memo_free(memo);
+    cm_sf_plan_clear(&plain), cm_sf_plan_clear(&again);
+    cm_diagset_clear(&set);
+    free(face);
+    return (int)nf;
+}
+
+static void test_memo(void)
+{
+    enum { N = 40 };
+    double a[2 * N], b[2 * N];
+    int32_t tri[3 * N], idx[N];
+    unsigned char common[N * N], vb[N * N];
+    int runs = 0;
+    for (uint64_t seed = 1; seed <= 60; seed++) {
+        int n = 16 + (int)(seed % 25);
+        int ok = seed % 2 ? rp_random_simple(a, n, seed) | rp_random_simple(b, n, seed + 500)
+                          : rp_star(a, n, seed) | rp_random_simple(b, n, seed + 900);
+        if (ok != 0) continue;
+        for (int i = 0; i < n; i++) idx[i] = i;
+        cm_polygon_triangulate(a, idx, n, tri, NULL), cm_visibility_table(a, n, tri, common);
+        cm_polygon_triangulate(b, idx, n, tri, NULL), cm_visibility_table(b, n, tri, vb);
+        for (int i = 0; i < n * n; i++) common[i] &= vb[i];
+        const double *xy[2] = {a, b};
+        runs += check_memo(n, common, xy) > 1;
+    }
+    CHECK(runs > 10);
+}
+
 /* Two stars: star-shaped in both, so a fan from kernel points merges all
  * stuck faces into one: cost at most 1, and the fan face is valid. */
 static void test_fan(void)
@@ -264,6 +336,7 @@ int main(void)
     test_against_enumeration();
     test_affine_image();
     test_fan();
+    test_memo();
     test_rows();
     return check_summary("test_steinerfree");
 }

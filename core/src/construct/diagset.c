@@ -43,18 +43,6 @@ int cm_diagrows_open(cm_diagrows *r, const cm_diagview *view, long m)
     return 0;
 }
 
-/* Index of the lowest set bit of a nonzero word. */
-static int lowest_bit(uint64_t bits)
-{
-#if defined(__GNUC__) || defined(__clang__)
-    return __builtin_ctzll(bits);
-#else
-    int i = 0;
-    while (!(bits & 1)) bits >>= 1, i++;
-    return i;
-#endif
-}
-
 long cm_diagrows_row(const cm_diagrows *r, long a, int32_t *out)
 {
     const cm_diagset *set = r->view->set;
@@ -62,7 +50,7 @@ long cm_diagrows_row(const cm_diagrows *r, long a, int32_t *out)
     const uint64_t *row = set->bits + (size_t)x * set->stride;
     for (size_t w = 0; w < set->stride; w++)
         for (uint64_t bits = row[w] & r->member[w]; bits; bits &= bits - 1)
-            out[count++] = r->local_of[64 * w + (size_t)lowest_bit(bits)];
+            out[count++] = r->local_of[64 * w + (size_t)cm_lowest_bit(bits)];
     return count;
 }
 

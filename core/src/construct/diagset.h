@@ -34,6 +34,18 @@ static inline int cm_diagset_has(const cm_diagset *s, long i, long j)
     return (int)(s->bits[(size_t)i * s->stride + (size_t)j / 64] >> (j % 64)) & 1;
 }
 
+/* Index of the lowest set bit of a nonzero word. */
+static inline int cm_lowest_bit(uint64_t bits)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    return __builtin_ctzll(bits);
+#else
+    int i = 0;
+    while (!(bits & 1)) bits >>= 1, i++;
+    return i;
+#endif
+}
+
 /* Sub-polygon vertex i is vertex map[i] of the set's polygon (map NULL:
  * the identity). */
 typedef struct cm_diagview {

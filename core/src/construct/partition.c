@@ -463,12 +463,13 @@ static cm_status plan_item(part *p, item *it, const cm_diagview *common)
     size_t k = p->k;
     double **l = local_xy(p, it), *cand = malloc(MAX_FANS * 2 * k * sizeof *cand);
     cm_sf_plan plan = {0}, other;
+    cm_sf_memo *memo = NULL;
     int fanned = 0, bad = !l || !cand;
-    if (!bad) bad = cm_steinerfree_plan(it->m, common, (const double *const *)l, k, NULL, 0, &plan) != 0;
+    if (!bad) bad = cm_steinerfree_plan_memo(it->m, common, (const double *const *)l, k, &plan, &memo) != 0;
     int count = bad || plan.cost < 2 ? 0 : fan_candidates(k, l, it->m, &plan, cand, MAX_FANS);
     bad |= count < 0;
     if (!bad && count > 0) {
-        bad = cm_steinerfree_plan(it->m, common, (const double *const *)l, k, cand, (size_t)count, &other) != 0;
+        bad = cm_steinerfree_plan_fans(memo, cand, (size_t)count, &other) != 0;
         if (!bad && other.cost < plan.cost) {
             cm_sf_plan_clear(&plan);
             plan = other, fanned = 1;
@@ -482,6 +483,7 @@ static cm_status plan_item(part *p, item *it, const cm_diagview *common)
         bad = apply_plan(p, it, &plan, fanned ? cand : NULL) != 0;
     }
     cm_sf_plan_clear(&plan); /* also when a later step ran out of memory */
+    cm_sf_memo_free(memo);
     free_xy(l, k);
     free(cand);
     p->st->seconds_dp += cm_seconds_now() - t0;
@@ -1369,7 +1371,8 @@ static int common_step(part *p, item *it, cm_status *s)
 {
     long m = it->m;
     cm_diagview view = local_common(p, it), *common = &view;
-    long chords = cm_steinerfree_count(m, common);
+    /* up to CM_DP_MAX_VERTICES only whether there is one matters */
+    long chords = cm_steinerfree_count_to(m, common, m <= CM_DP_MAX_VERTICES ? 1 : LONG_MAX);
     int done = 1;
     if (chords == 0) {
         done = 0;

@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/buf.h"
 #include "geom/predicates.h"
 
 typedef struct { long cost; double q; } val;
@@ -63,17 +64,38 @@ typedef struct dp {
     int32_t *arg;     /* per link: the chain's last vertex before l */
     unsigned char *by;
     int16_t *fan_of;  /* per link: the fan point of a BY_FAN face */
-    double *fan_fwd, *fan_rev; /* per fan point and link a < b (nfans rows
-                                  of links): quality of the fan triangle on
-                                  a -> b (b -> a), -1 if the point is not
-                                  strictly left of it */
+    /* A fan face from x lies outside the sub-polygon closed by each link
+     * of its chain and inside the one closed by its closing link, and x
+     * lies strictly inside the face: so each link serves x on one side
+     * only, the side geometry 0 puts x on (fan_sides). */
+    uint64_t *fwd_ok, *rev_ok; /* per link a < b: the fan points whose
+                                  triangle on a -> b (b -> a) is valid in
+                                  every geometry, on the side x can use */
+    double *fan_q;    /* per fan point and link (nfans rows of links): the
+                         quality of that triangle */
+    uint64_t *row_fans; /* per row i: the fan points inside the sub-polygon
+                           of its farthest link, all for the root's row:
+                           the only ones its faces can be fans from */
+    uint64_t fans_now;  /* row_fans of the row being solved */
+    uint64_t *facing;   /* per vertex v: the fan points strictly inside its
+                           corner, in every geometry, where v is convex
+                           (all where it is not): the only ones a segment
+                           from v into the polygon's interior can reach,
+                           so the only ones a fan face through v can be
+                           from */
+    long *reach;        /* per row i: the farthest l it needs, its farthest
+                           diagonal (the root's row: all) */
     val root;
     int32_t root_arg;
     unsigned char root_by;
     int16_t root_fan_of;
-    double *root_fan;  /* per fan point: the closing edge m-1 -> 0 */
+    uint64_t root_ok;  /* the fan points valid on the closing edge m-1 -> 0 */
+    double *root_fan;  /* per fan point: that triangle's quality */
     long nlinks;
     chains *plain, *fanned; /* the current row; fanned: nfans rows of m */
+    uint64_t *fan_best, *fan_more; /* per l, the current row: the fan points
+                                      whose chains to l exist (best), of two
+                                      or more links (more) */
 } dp;
 
 static int is_link(const dp *d, long a, long b)
@@ -106,17 +128,16 @@ static double triangle_quality(const dp *d, long a, long b, long c)
  * invalid in some geometry. */
 static double fan_min_angle(const dp *d, size_t x, long a, long b)
 {
+    for (size_t g = 0; g < d->k; g++) /* all first: most fail */
+        if (cm_orient2d(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->fans + 2 * (x * d->k + g)) <= 0) return -1.0;
     double q = NO_TRIANGLE;
-    for (size_t g = 0; g < d->k; g++) {
-        const double *pa = d->xy[g] + 2 * a, *pb = d->xy[g] + 2 * b, *f = d->fans + 2 * (x * d->k + g);
-        if (cm_orient2d(pa, pb, f) <= 0) return -1.0;
-        q = qmin(q, quality(pa, pb, f));
-    }
+    for (size_t g = 0; g < d->k; g++)
+        q = qmin(q, quality(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->fans + 2 * (x * d->k + g)));
     return q;
 }
 
-static double fwd(const dp *d, size_t x, long s) { return d->fan_fwd[x * (size_t)d->nlinks + (size_t)s]; }
-static double rev(const dp *d, size_t x, long s) { return d->fan_rev[x * (size_t)d->nlinks + (size_t)s]; }
+static double fan_q(const dp *d, size_t x, long s) { return d->fan_q[x * (size_t)d->nlinks + (size_t)s]; }
+static int has_fan(uint64_t set, size_t x) { return (int)(set >> x) & 1; }
 static chains *fanned(const dp *d, size_t x, long l) { return &d->fanned[x * (size_t)d->m + (size_t)l]; }
 
 static long find_link(const dp *d, long a, long b)
@@ -164,11 +185,12 @@ static int could_win(long cost, double q, val cur)
 /* G for the link (i, l) (or the root): the face on it closes a chain of
  * two links (a triangle), of three or more (a stuck face), or a fan chain
  * of three or more from a fan point whose triangle on the closing edge
- * l -> i is valid too (chord_fan(x) >= 0). */
-static void close_face(const dp *d, long i, long l, long chord, slot out)
+ * l -> i is valid too (x in rev_ok of the link, root_ok for the root). */
+static void close_face(const dp *d, long i, long l, long first, long chord, slot out)
 {
     *out.value = none, *out.arg = -1, *out.by = BY_TRIANGLE, *out.fan_of = -1;
-    for (long s = first_after(d, l, i); s < d->start[l + 1]; s++) {
+    uint64_t closing = (chord >= 0 ? d->rev_ok[chord] : d->root_ok) & d->fans_now;
+    for (long s = first; s < d->start[l + 1]; s++) {
         long a = d->left[s];
         val gl = d->g[s];
         const chains *pc = &d->plain[a];
@@ -177,11 +199,11 @@ static void close_face(const dp *d, long i, long l, long chord, slot out)
                   BY_TRIANGLE, (int32_t)a, -1, out);
         if (exists(pc->more))
             offer((val){pc->more.cost + gl.cost - 1, qmin(pc->more.q, gl.q)}, BY_FACE, (int32_t)a, -1, out);
-        for (size_t x = 0; x < d->nfans; x++) {
-            double closing = chord >= 0 ? rev(d, x, chord) : d->root_fan[x];
+        for (uint64_t b = closing & d->fwd_ok[s] & d->fan_more[a]; b; b &= b - 1) {
+            size_t x = (size_t)cm_lowest_bit(b);
             const chains *fc = fanned(d, x, a);
-            if (closing < 0 || fwd(d, x, s) < 0 || !exists(fc->more)) continue;
-            offer((val){fc->more.cost + gl.cost + 1, qmin(qmin(fc->more.q, gl.q), qmin(fwd(d, x, s), closing))},
+            double q = chord >= 0 ? fan_q(d, x, chord) : d->root_fan[x];
+            offer((val){fc->more.cost + gl.cost + 1, qmin(qmin(fc->more.q, gl.q), qmin(fan_q(d, x, s), q))},
                   BY_FAN, (int32_t)a, (int16_t)x, out);
         }
     }
@@ -204,95 +226,199 @@ static void finish(chains *c)
 }
 
 /* Chains from i to l, given G of the links into l and the row below l;
- * s: the link (i, l) or -1. A plain chain counts each link once (it adds
+ * s: the link (i, l) or -1; first: the first link into l from beyond i. A plain chain counts each link once (it adds
  * a face vertex); a fan chain only collects G, the fan face costs 1 in
  * all. */
-static void extend_chains(dp *d, long i, long l, long s)
+static void extend_chains(dp *d, long l, long s, long first)
 {
     chains *pc = &d->plain[l];
     pc->one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
     pc->more = none, pc->arg = -1;
-    for (size_t x = 0; x < d->nfans; x++) {
+    uint64_t fans = d->fans_now & d->facing[l];
+    for (uint64_t b = fans; b; b &= b - 1) {
+        size_t x = (size_t)cm_lowest_bit(b);
         chains *fc = fanned(d, x, l);
-        fc->one = s >= 0 && fwd(d, x, s) >= 0 ? (val){d->g[s].cost, qmin(d->g[s].q, fwd(d, x, s))} : none;
+        fc->one = s >= 0 && has_fan(d->fwd_ok[s], x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s))} : none;
         fc->more = none, fc->arg = -1;
     }
-    for (long t = first_after(d, l, i); t < d->start[l + 1]; t++) {
-        long a = d->left[t];
-        val gl = d->g[t];
-        extend(pc, a, &d->plain[a], gl, 0);
-        for (size_t x = 0; x < d->nfans; x++)
-            if (fwd(d, x, t) >= 0)
-                extend(fanned(d, x, l), a, fanned(d, x, a), (val){gl.cost, qmin(gl.q, fwd(d, x, t))}, 1);
-    }
+    for (long t = first; t < d->start[l + 1]; t++) extend(pc, d->left[t], &d->plain[d->left[t]], d->g[t], 0);
     finish(pc);
-    for (size_t x = 0; x < d->nfans; x++) finish(fanned(d, x, l));
+    if (!fans) {
+        d->fan_best[l] = d->fan_more[l] = 0;
+        return;
+    }
+    for (long t = first; t < d->start[l + 1]; t++) {
+        long a = d->left[t];
+        for (uint64_t b = fans & d->fwd_ok[t] & d->fan_best[a]; b; b &= b - 1) {
+            size_t x = (size_t)cm_lowest_bit(b);
+            extend(fanned(d, x, l), a, fanned(d, x, a), (val){d->g[t].cost, qmin(d->g[t].q, fan_q(d, x, t))}, 1);
+        }
+    }
+    uint64_t best = 0, more = 0;
+    for (uint64_t b = fans; b; b &= b - 1) {
+        size_t x = (size_t)cm_lowest_bit(b);
+        chains *fc = fanned(d, x, l);
+        finish(fc);
+        best |= (uint64_t)exists(fc->best) << x;
+        more |= (uint64_t)exists(fc->more) << x;
+    }
+    d->fan_best[l] = best, d->fan_more[l] = more;
 }
 
-/* The farthest l that row i needs: its farthest diagonal (the root's row
- * needs them all). */
-static long row_reach(const dp *d, long i)
-{
-    if (i == 0) return d->m - 1;
-    for (long j = d->m - 1; j > i + 1; j--)
-        if (cm_diagview_has(d->common, i, j)) return j;
-    return i + 1;
-}
-
-static void solve(dp *d)
+/* Rows from the last up. first[l]: the first link into l from beyond the
+ * row (a link from the row into l, if any, just before it). With a memo
+ * (a run without fan points over the same links), a row other than the
+ * root's whose sub-polygons hold no fan point keeps its values: G of such
+ * a link admits no fan face, and every link inside it is such a link. */
+static void solve(dp *d, long *first, int memo)
 {
     long m = d->m;
+    for (long l = 0; l < m; l++) first[l] = d->start[l + 1];
     for (long i = m - 2; i >= 0; i--) {
-        long last = row_reach(d, i);
+        long last = d->reach[i];
+        d->fans_now = d->row_fans[i] & d->facing[i];
+        int keep = memo && i > 0 && !d->row_fans[i];
         for (long l = i + 1; l <= last; l++) {
-            long s = find_link(d, i, l);
+            long f = first[l], s = f > d->start[l] && d->left[f - 1] == i ? f - 1 : -1;
+            if (keep) {
+                if (s >= 0) first[l] = s;
+                continue;
+            }
             if (l > i + 1) {
                 if (s >= 0)
-                    close_face(d, i, l, s, (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]});
+                    close_face(d, i, l, f, s, (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]});
                 else if (i == 0 && l == m - 1)
-                    close_face(d, i, l, -1, (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of});
+                    close_face(d, i, l, f, -1, (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of});
             }
-            extend_chains(d, i, l, s);
+            extend_chains(d, l, s, f);
+            if (s >= 0) first[l] = s;
         }
     }
 }
 
+/* Does the ray from x towards +x cross the segment p q? Half-open in y
+ * with the exact orientation: the parity of the crossings with a closed
+ * polyline is exact for every x off it. */
+static int ray_crosses(const double *p, const double *q, const double *x)
+{
+    if ((p[1] > x[1]) == (q[1] > x[1])) return 0;
+    int o = cm_orient2d(p, q, x);
+    return q[1] > p[1] ? o > 0 : o < 0;
+}
+
+/* The fan points inside the sub-polygon a, a+1, ..., b closed by the link
+ * (a, b), in geometry 0, of those in which; parity[v]: the fan points
+ * whose rays cross an odd number of the edges before v. Exact for points
+ * off its boundary; a point on it is strictly inside none of its faces, nor strictly on one
+ * side of a link through it, so either answer serves. */
+static uint64_t fans_inside(const dp *d, const uint64_t *parity, long a, long b, uint64_t which)
+{
+    uint64_t in = parity[a] ^ parity[b];
+    const double *pa = d->xy[0] + 2 * a, *pb = d->xy[0] + 2 * b;
+    for (uint64_t w = which; w; w &= w - 1) {
+        int x = cm_lowest_bit(w);
+        in ^= (uint64_t)ray_crosses(pb, pa, d->fans + 2 * (size_t)x * d->k) << x;
+    }
+    return in & which;
+}
+
+/* The links, by their right ends, and each row's reach. */
 static int build_links(dp *d)
 {
     long m = d->m, count = 0;
+    size_t cap = 0;
     d->start = calloc((size_t)m + 2, sizeof *d->start);
-    if (!d->start) return -1;
-    for (long b = 1; b < m; b++)
-        for (long a = 0; a < b; a++) count += is_link(d, a, b);
-    size_t c = (size_t)count + 1, f = d->nfans ? d->nfans : 1;
+    d->reach = malloc((size_t)m * sizeof *d->reach);
+    if (!d->start || !d->reach || cm_grow((void **)&d->left, &cap, 4 * (size_t)m, sizeof *d->left) != 0) return -1;
+    for (long i = 0; i < m; i++) d->reach[i] = i == 0 ? m - 1 : i + 1;
+    for (long b = 0; b < m; b++) {
+        d->start[b] = count;
+        for (long a = 0; a < b; a++) {
+            if (!is_link(d, a, b)) continue;
+            if (cm_grow((void **)&d->left, &cap, (size_t)count + 1, sizeof *d->left) != 0) return -1;
+            d->left[count++] = (int32_t)a;
+            if (a > 0 && b > a + 1) d->reach[a] = b; /* b ascends: the farthest last */
+        }
+    }
+    d->start[m] = d->start[m + 1] = count;
     d->nlinks = count;
-    d->left = malloc(c * sizeof *d->left);
+    return 0;
+}
+
+/* Fresh values: G of an edge is an empty triangulation, of a diagonal
+ * none yet. */
+static int init_values(dp *d)
+{
+    size_t c = (size_t)d->nlinks + 1;
     d->g = malloc(c * sizeof *d->g);
     d->arg = malloc(c * sizeof *d->arg);
     d->by = malloc(c);
     d->fan_of = malloc(c * sizeof *d->fan_of);
-    d->fan_fwd = malloc(f * c * sizeof *d->fan_fwd);
-    d->fan_rev = malloc(f * c * sizeof *d->fan_rev);
-    d->root_fan = malloc(f * sizeof *d->root_fan);
-    if (!d->left || !d->g || !d->arg || !d->by || !d->fan_of || !d->fan_fwd || !d->fan_rev || !d->root_fan)
-        return -1;
-    long s = 0;
-    for (long b = 0; b < m; b++) {
-        d->start[b] = s;
-        for (long a = 0; a < b; a++) {
-            if (!is_link(d, a, b)) continue;
-            d->left[s] = (int32_t)a;
-            d->g[s] = b == a + 1 ? (val){0, NO_TRIANGLE} : none;
+    if (!d->g || !d->arg || !d->by || !d->fan_of) return -1;
+    for (long b = 0; b < d->m; b++)
+        for (long s = d->start[b]; s < d->start[b + 1]; s++) {
+            d->g[s] = b == d->left[s] + 1 ? (val){0, NO_TRIANGLE} : none;
             d->arg[s] = -1, d->by[s] = BY_TRIANGLE, d->fan_of[s] = -1;
-            for (size_t x = 0; x < d->nfans; x++) {
-                d->fan_fwd[x * (size_t)count + (size_t)s] = fan_min_angle(d, x, a, b);
-                d->fan_rev[x * (size_t)count + (size_t)s] = b == a + 1 ? -1.0 : fan_min_angle(d, x, b, a);
-            }
-            s++;
+        }
+    return 0;
+}
+
+/* The fan triangles of every link and of the root, and each row's fan
+ * points. */
+static int build_fans(dp *d)
+{
+    long m = d->m;
+    size_t c = (size_t)d->nlinks + 1, f = d->nfans ? d->nfans : 1;
+    /* three blocks (many small programs run): per vertex, per link, the
+     * qualities */
+    d->row_fans = calloc(5 * (size_t)m, sizeof *d->row_fans);
+    d->fwd_ok = calloc(2 * c, sizeof *d->fwd_ok);
+    d->fan_q = malloc((f * c + f) * sizeof *d->fan_q);
+    if (!d->row_fans || !d->fwd_ok || !d->fan_q) return -1;
+    d->fan_best = d->row_fans + m, d->fan_more = d->row_fans + 2 * m, d->facing = d->row_fans + 3 * m;
+    d->rev_ok = d->fwd_ok + c, d->root_fan = d->fan_q + f * c;
+    uint64_t *parity = d->row_fans + 4 * m;
+    for (size_t x = 0; x < d->nfans; x++) {
+        const double *f0 = d->fans + 2 * x * d->k;
+        uint64_t odd = 0;
+        for (long v = 0; v + 1 < m; v++) {
+            odd ^= (uint64_t)ray_crosses(d->xy[0] + 2 * v, d->xy[0] + 2 * v + 2, f0);
+            parity[v + 1] |= odd << x;
         }
     }
-    d->start[m] = d->start[m + 1] = s;
-    for (size_t x = 0; x < d->nfans; x++) d->root_fan[x] = fan_min_angle(d, x, m - 1, 0);
+    if (d->nfans) d->row_fans[0] = d->nfans == 64 ? ~(uint64_t)0 : ((uint64_t)1 << d->nfans) - 1;
+    for (long v = 0; d->nfans && v < m; v++) {
+        d->facing[v] = d->row_fans[0];
+        for (size_t g = 0; g < d->k; g++) {
+            const double *p = d->xy[g] + 2 * (v > 0 ? v - 1 : m - 1), *q = d->xy[g] + 2 * v;
+            const double *r = d->xy[g] + 2 * (v + 1 < m ? v + 1 : 0);
+            if (cm_orient2d(p, q, r) <= 0) continue;
+            for (size_t x = 0; x < d->nfans; x++) {
+                const double *fx = d->fans + 2 * (x * d->k + g);
+                if (cm_orient2d(p, q, fx) <= 0 || cm_orient2d(q, r, fx) <= 0) d->facing[v] &= ~((uint64_t)1 << x);
+            }
+        }
+    }
+    for (long i = 1; i < m; i++)
+        if (d->nfans && d->reach[i] > i + 1) d->row_fans[i] = fans_inside(d, parity, i, d->reach[i], d->row_fans[0]);
+    for (long b = 0; b < m; b++)
+        for (long s = d->start[b]; s < d->start[b + 1]; s++) {
+            long a = d->left[s];
+            uint64_t ends = d->facing[a] & d->facing[b], in = fans_inside(d, parity, a, b, ends);
+            d->fwd_ok[s] = d->rev_ok[s] = 0;
+            for (uint64_t w = ends; w; w &= w - 1) {
+                size_t x = (size_t)cm_lowest_bit(w);
+                int inside = has_fan(in, x);
+                double q = inside ? (b == a + 1 ? -1.0 : fan_min_angle(d, x, b, a)) : fan_min_angle(d, x, a, b);
+                d->fan_q[x * (size_t)d->nlinks + (size_t)s] = q;
+                if (q >= 0) *(inside ? &d->rev_ok[s] : &d->fwd_ok[s]) |= (uint64_t)1 << x;
+            }
+        }
+    d->root_ok = 0;
+    for (size_t x = 0; x < d->nfans; x++) {
+        d->root_fan[x] = fan_min_angle(d, x, m - 1, 0);
+        if (d->root_fan[x] >= 0) d->root_ok |= (uint64_t)1 << x;
+    }
     return 0;
 }
 
@@ -324,7 +450,8 @@ static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link **stack, long *top,
                     long *cap)
 {
-    for (long l = i + 1; l <= a; l++) extend_chains(d, i, l, find_link(d, i, l));
+    d->fans_now = d->row_fans[i] & d->facing[i];
+    for (long l = i + 1; l <= a; l++) extend_chains(d, l, find_link(d, i, l), first_after(d, l, i));
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
     int32_t *f = p->face + p->face_start[p->nf];
@@ -395,48 +522,135 @@ void cm_sf_plan_clear(cm_sf_plan *plan)
     memset(plan, 0, sizeof *plan);
 }
 
-long cm_steinerfree_count(long m, const cm_diagview *common)
+long cm_steinerfree_count_to(long m, const cm_diagview *common, long limit)
 {
     long count = 0;
     cm_diagrows rows;
     int32_t *row = m >= CM_DIAGROWS_FROM ? malloc((size_t)m * sizeof *row) : NULL;
     if (row && cm_diagrows_open(&rows, common, m) == 0) {
-        for (long a = 0; a < m; a++) {
+        for (long a = 0; a < m && count < limit; a++) {
             long c = cm_diagrows_row(&rows, a, row);
             for (long t = 0; t < c; t++)
                 count += row[t] >= a + 2 && !(a == 0 && row[t] == m - 1);
         }
         cm_diagrows_close(&rows);
         free(row);
-        return count;
+        return count < limit ? count : limit;
     }
     free(row); /* out of memory: pair by pair */
-    for (long a = 0; a < m; a++)
+    for (long a = 0; a < m && count < limit; a++)
         for (long b = a + 2; b < m; b++)
             if (!(a == 0 && b == m - 1)) count += cm_diagview_has(common, a, b);
-    return count;
+    return count < limit ? count : limit;
+}
+
+long cm_steinerfree_count(long m, const cm_diagview *common)
+{
+    return cm_steinerfree_count_to(m, common, LONG_MAX);
+}
+
+struct cm_sf_memo {
+    dp d; /* the run's links and values */
+};
+
+/* Everything but the links (start, left, reach), which a memo may share. */
+static void free_run(dp *d)
+{
+    free(d->g), free(d->arg), free(d->by), free(d->fan_of);
+    free(d->fwd_ok), free(d->fan_q), free(d->plain), free(d->fanned), free(d->row_fans);
+}
+
+static void free_links(dp *d)
+{
+    free(d->start), free(d->left), free(d->reach);
+}
+
+/* One run over the links of *d (set up, values fresh or the memo's):
+ * the plan. 0 or -1. */
+static int run(dp *d, int memo, cm_sf_plan *plan)
+{
+    long m = d->m;
+    d->root = none, d->root_arg = -1, d->root_by = BY_TRIANGLE, d->root_fan_of = -1;
+    d->plain = malloc((size_t)m * sizeof *d->plain);
+    d->fanned = malloc((size_t)m * (d->nfans ? d->nfans : 1) * sizeof *d->fanned);
+    long *first = malloc((size_t)m * sizeof *first);
+    int status = -1;
+    if (d->plain && d->fanned && first && build_fans(d) == 0) {
+        solve(d, first, memo);
+        plan->cost = d->root.cost;
+        double q = qmin(d->root.q, 1.0);
+        plan->min_angle_deg = d->root.q >= NO_TRIANGLE ? 180.0 : asin(sqrt(q)) * 180.0 / 3.14159265358979323846;
+        status = read_plan(d, plan);
+    }
+    free(first);
+    if (status != 0) cm_sf_plan_clear(plan);
+    return status;
+}
+
+static void setup(dp *d, long m, const cm_diagview *common, const double *const *xy, size_t k)
+{
+    memset(d, 0, sizeof *d);
+    d->m = m, d->common = common, d->xy = xy, d->k = k;
 }
 
 int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *xy, size_t k,
                         const double *fans, size_t nfans, cm_sf_plan *plan)
 {
     memset(plan, 0, sizeof *plan);
+    if (fans && nfans > CM_SF_MAX_FANS) return -1;
     dp d;
-    memset(&d, 0, sizeof d);
-    d.m = m, d.common = common, d.xy = xy, d.k = k, d.fans = fans, d.nfans = fans ? nfans : 0;
-    d.root = none, d.root_fan_of = -1;
-    d.plain = malloc((size_t)m * sizeof *d.plain);
-    d.fanned = malloc((size_t)m * (d.nfans ? d.nfans : 1) * sizeof *d.fanned);
-    int status = -1;
-    if (d.plain && d.fanned && build_links(&d) == 0) {
-        solve(&d);
-        plan->cost = d.root.cost;
-        double q = qmin(d.root.q, 1.0);
-        plan->min_angle_deg = d.root.q >= NO_TRIANGLE ? 180.0 : asin(sqrt(q)) * 180.0 / 3.14159265358979323846;
-        status = read_plan(&d, plan);
-    }
-    free(d.start), free(d.left), free(d.g), free(d.arg), free(d.by), free(d.fan_of);
-    free(d.fan_fwd), free(d.fan_rev), free(d.root_fan), free(d.plain), free(d.fanned);
-    if (status != 0) cm_sf_plan_clear(plan);
+    setup(&d, m, common, xy, k);
+    d.fans = fans, d.nfans = fans ? nfans : 0;
+    int status = build_links(&d) == 0 && init_values(&d) == 0 ? run(&d, 0, plan) : -1;
+    free_run(&d), free_links(&d);
     return status;
+}
+
+int cm_steinerfree_plan_memo(long m, const cm_diagview *common, const double *const *xy, size_t k,
+                             cm_sf_plan *plan, cm_sf_memo **memo)
+{
+    memset(plan, 0, sizeof *plan);
+    *memo = calloc(1, sizeof **memo);
+    if (!*memo) return -1;
+    dp *d = &(*memo)->d;
+    setup(d, m, common, xy, k);
+    int status = build_links(d) == 0 && init_values(d) == 0 ? run(d, 0, plan) : -1;
+    if (status != 0) {
+        cm_sf_memo_free(*memo);
+        *memo = NULL;
+    }
+    return status;
+}
+
+int cm_steinerfree_plan_fans(const cm_sf_memo *memo, const double *fans, size_t nfans, cm_sf_plan *plan)
+{
+    memset(plan, 0, sizeof *plan);
+    if (nfans > CM_SF_MAX_FANS) return -1;
+    const dp *first = &memo->d;
+    size_t c = (size_t)first->nlinks + 1;
+    dp d;
+    setup(&d, first->m, first->common, first->xy, first->k);
+    d.fans = fans, d.nfans = fans ? nfans : 0;
+    d.start = first->start, d.left = first->left, d.reach = first->reach, d.nlinks = first->nlinks;
+    d.g = malloc(c * sizeof *d.g);
+    d.arg = malloc(c * sizeof *d.arg);
+    d.by = malloc(c);
+    d.fan_of = malloc(c * sizeof *d.fan_of);
+    int status = -1;
+    if (d.g && d.arg && d.by && d.fan_of) {
+        memcpy(d.g, first->g, c * sizeof *d.g);
+        memcpy(d.arg, first->arg, c * sizeof *d.arg);
+        memcpy(d.by, first->by, c);
+        memcpy(d.fan_of, first->fan_of, c * sizeof *d.fan_of);
+        status = run(&d, 1, plan);
+    }
+    free_run(&d); /* the links are the memo's */
+    return status;
+}
+
+void cm_sf_memo_free(cm_sf_memo *memo)
+{
+    if (!memo) return;
+    free_run(&memo->d), free_links(&memo->d);
+    free(memo);
 }

@@ -48,12 +48,30 @@ typedef struct cm_sf_plan {
  * (i, j) is a diagonal in every geometry (polygon edges are ignored);
  * xy[g] holds the 2m coordinates of geometry g; fans holds nfans fan
  * points, point x of geometry g at fans[2 (x k + g)] (NULL or 0: none).
- * Returns 0, or -1 out of memory. */
+ * At most CM_SF_MAX_FANS fan points. Returns 0, or -1 (out of memory, or
+ * too many fan points). */
+#define CM_SF_MAX_FANS 64
 int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *xy, size_t k,
                         const double *fans, size_t nfans, cm_sf_plan *plan);
 void cm_sf_plan_clear(cm_sf_plan *plan);
 
-/* Number of common diagonals in the table (each counted once). */
+/* A run without fan points can leave what a later run with them over the
+ * same polygon reuses: its links, and the values of the rows whose
+ * sub-polygons hold none of the fan points (those admit no fan face).
+ * cm_steinerfree_plan_memo is cm_steinerfree_plan without fan points,
+ * keeping *memo (free with cm_sf_memo_free; NULL on failure);
+ * cm_steinerfree_plan_fans is then cm_steinerfree_plan with fan points
+ * (the same plan), over the memo's polygon and table, which must live as
+ * long. */
+typedef struct cm_sf_memo cm_sf_memo;
+int cm_steinerfree_plan_memo(long m, const cm_diagview *common, const double *const *xy, size_t k,
+                             cm_sf_plan *plan, cm_sf_memo **memo);
+int cm_steinerfree_plan_fans(const cm_sf_memo *memo, const double *fans, size_t nfans, cm_sf_plan *plan);
+void cm_sf_memo_free(cm_sf_memo *memo);
+
+/* Number of common diagonals in the table (each counted once); _to: the
+ * same, or limit if there are at least limit. */
 long cm_steinerfree_count(long m, const cm_diagview *common);
+long cm_steinerfree_count_to(long m, const cm_diagview *common, long limit);
 
 #endif
