@@ -491,7 +491,8 @@ static int grow_scratch(cm_linkpart *lp, long nt)
 /* Pocket p's local index of its parent's local vertex i, -1 if none. */
 static long child_local(const pocket *p, long parent_k, long i)
 {
-    long d = (i - p->first + parent_k) % parent_k;
+    long d = i - p->first; /* both in [0, parent_k) */
+    if (d < 0) d += parent_k;
     return d < p->k - (p->hpos >= 0) ? d + (p->hpos == 0) : -1;
 }
 

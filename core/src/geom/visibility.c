@@ -445,25 +445,22 @@ void cm_vsource_clear(cm_vsource *vs)
     memset(vs, 0, sizeof *vs);
 }
 
-static int is_root_triangle(const cm_vsource *vs, long t)
-{
-    const int32_t *c = vs->tri + 3 * t;
-    for (int i = 0; i < 3; i++) {
-        if (vs->source >= 0 && c[i] == vs->source) return 1;
-        if (vs->source < 0 && c[i] == vs->k - 1 && c[(i + 1) % 3] == 0) return 1;
-    }
-    return 0;
-}
-
-/* Breadth-first from the roots: depth and the corner facing the parent. */
+/* Breadth-first from the roots (the source's fan, or the triangle on the
+ * window k-1 -> 0, both found from the fans): depth and the corner facing
+ * the parent. The dual graph is a tree, so these do not depend on the
+ * order. */
 static int root_tree(cm_vsource *vs)
 {
     long nt = vs->nt, head = 0, tail = 0;
     int32_t *queue = malloc((size_t)nt * sizeof *queue);
     if (!queue) return -1;
-    for (long t = 0; t < nt; t++) {
-        vs->depth[t] = -1, vs->up[t] = -1;
-        if (is_root_triangle(vs, t)) vs->depth[t] = 0, queue[tail++] = (int32_t)t;
+    for (long t = 0; t < nt; t++) vs->depth[t] = -1, vs->up[t] = -1;
+    long v = vs->source >= 0 ? vs->source : 0;
+    for (long f = vs->fan_start[v]; f < vs->fan_start[v + 1]; f++) {
+        int32_t t = vs->fan[f];
+        const int32_t *c = vs->tri + 3 * t;
+        if (vs->source < 0 && (c[0] == 0 ? c[2] : c[1] == 0 ? c[0] : c[1]) != vs->k - 1) continue;
+        vs->depth[t] = 0, queue[tail++] = t;
     }
     while (head < tail) {
         long t = queue[head++];
@@ -544,33 +541,51 @@ int cm_vsource_build(cm_vsource *vs, cm_xpool *pool, const long *ids, long k, lo
  * (k - 2 triangles, every vertex on the one boundary cycle, which is the
  * polygon), and counter-clockwise triangles over a disk whose boundary is
  * a simple polygon cover each of its points once (the winding number).
- * O(k). Returns 0 yes, 1 no, -1 out of memory. */
-static int triangulates(const cm_vsource *vs)
+ * The fans give the neighbours too: the triangle (v, x, y) of v's fan
+ * meets the one (v, y, z) across its edge v - y, the corner x's slot
+ * (none where y is v - 1). Every edge of a triangle is such an edge of
+ * one of its corners' fans, so nbr is filled. O(k). Returns 0 yes, 1 no,
+ * -1 out of memory. */
+static int triangulates(cm_vsource *vs)
 {
+    static const int after[3] = {1, 2, 0}, before[3] = {2, 0, 1};
     long k = vs->k;
-    int32_t *next = malloc((size_t)k * sizeof *next);
-    if (!next) return -1;
+    int32_t *next = malloc((size_t)k * sizeof *next), *from = malloc((size_t)k * sizeof *from);
+    if (!next || !from) {
+        free(next), free(from);
+        return -1;
+    }
     for (long v = 0; v < k; v++) next[v] = -1;
     int ok = 1;
     for (long v = 0; v < k && ok; v++) {
         long deg = vs->fan_start[v + 1] - vs->fan_start[v], steps = 0;
+        long vn = v + 1 == k ? 0 : v + 1, vp = v == 0 ? k - 1 : v - 1;
         for (long f = vs->fan_start[v]; f < vs->fan_start[v + 1]; f++) {
-            const int32_t *c = vs->tri + 3 * vs->fan[f];
+            long t = vs->fan[f];
+            const int32_t *c = vs->tri + 3 * t;
             int i = c[0] == v ? 0 : c[1] == v ? 1 : 2;
-            if (next[c[(i + 1) % 3]] >= 0) ok = 0;
-            next[c[(i + 1) % 3]] = c[(i + 2) % 3];
+            int32_t x = c[after[i]];
+            if (next[x] >= 0) ok = 0;
+            next[x] = c[before[i]], from[x] = (int32_t)t;
         }
-        for (long u = (v + 1) % k; ok && u != (v + k - 1) % k; steps++) {
+        for (long u = vn; ok && u != vp; steps++) {
             if (steps >= deg || next[u] < 0) ok = 0;
             else u = next[u];
         }
         ok = ok && steps == deg;
+        for (long f = vs->fan_start[v]; ok && f < vs->fan_start[v + 1]; f++) {
+            long t = vs->fan[f];
+            const int32_t *c = vs->tri + 3 * t;
+            int i = c[0] == v ? 0 : c[1] == v ? 1 : 2;
+            int32_t y = c[before[i]];
+            vs->nbr[3 * t + after[i]] = y == vp ? -1 : from[y];
+        }
         for (long f = vs->fan_start[v]; f < vs->fan_start[v + 1]; f++) {
             const int32_t *c = vs->tri + 3 * vs->fan[f];
             next[c[0]] = next[c[1]] = next[c[2]] = -1;
         }
     }
-    free(next);
+    free(next), free(from);
     return !ok;
 }
 
@@ -586,17 +601,18 @@ int cm_vsource_build_tri(cm_vsource *vs, cm_xpool *pool, const long *ids, long k
     if (!vs->nbr || !vs->up || !vs->depth || build_fans(vs) != 0) return -1;
     int s = triangulates(vs);
     if (s != 0) return s;
-    if (cm_tri_adjacency(vs->tri, vs->nt, vs->nbr) != 0) return -1;
     return cm_vsource_reroot(vs, source);
 }
 
-/* Narrows the cone (b, a) seen from p by a crossed diagonal from r (right)
- * to l (left). Returns 0 if the cone became empty. */
+/* Narrows the cone (b, a) seen from p, not empty, by a crossed diagonal
+ * from r (right) to l (left). Returns 0 if the cone became empty; when
+ * neither end moved it is the cone it was. */
 static int narrow(cm_xpool *pool, long p, long *a, long *b, long l, long r)
 {
-    if (cm_xorient(pool, p, *a, l) < 0) *a = l;
-    if (cm_xorient(pool, p, *b, r) > 0) *b = r;
-    return cm_xorient(pool, p, *b, *a) > 0;
+    int moved = 0;
+    if (cm_xorient(pool, p, *a, l) < 0) *a = l, moved = 1;
+    if (cm_xorient(pool, p, *b, r) > 0) *b = r, moved = 1;
+    return !moved || cm_xorient(pool, p, *b, *a) > 0;
 }
 
 /* From triangle t (not a root) up to the source, the cone starting at t's
