@@ -58,6 +58,7 @@ typedef struct dp {
     const double *const *xy;
     const double *fans; /* nfans candidates of k points (2 doubles each) */
     size_t k, nfans;
+    int tame; /* every coordinate and fan point tame (cm_coords_tame) */
     long *start;      /* links ending at l: left[start[l] .. start[l+1]) */
     int32_t *left;    /* ascending */
     val *g;           /* per link */
@@ -128,8 +129,10 @@ static double triangle_quality(const dp *d, long a, long b, long c)
  * invalid in some geometry. */
 static double fan_min_angle(const dp *d, size_t x, long a, long b)
 {
-    for (size_t g = 0; g < d->k; g++) /* all first: most fail */
-        if (cm_orient2d(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->fans + 2 * (x * d->k + g)) <= 0) return -1.0;
+    for (size_t g = 0; g < d->k; g++) { /* all first: most fail */
+        const double *pa = d->xy[g] + 2 * a, *pb = d->xy[g] + 2 * b, *px = d->fans + 2 * (x * d->k + g);
+        if ((d->tame ? cm_orient2d_tame(pa, pb, px) : cm_orient2d(pa, pb, px)) <= 0) return -1.0;
+    }
     double q = NO_TRIANGLE;
     for (size_t g = 0; g < d->k; g++)
         q = qmin(q, quality(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->fans + 2 * (x * d->k + g)));
@@ -617,6 +620,14 @@ static void setup(dp *d, long m, const cm_diagview *common, const double *const 
     d->m = m, d->common = common, d->xy = xy, d->k = k;
 }
 
+/* Sets the fan points and whether every point is tame. */
+static void set_fans(dp *d, const double *fans, size_t nfans)
+{
+    d->fans = fans, d->nfans = fans ? nfans : 0;
+    d->tame = !d->nfans || cm_coords_tame(d->fans, 2 * (long)(d->nfans * d->k));
+    for (size_t g = 0; g < d->k && d->tame; g++) d->tame = cm_coords_tame(d->xy[g], 2 * d->m);
+}
+
 int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *xy, size_t k,
                         const double *fans, size_t nfans, cm_sf_plan *plan)
 {
@@ -624,7 +635,7 @@ int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *
     if (fans && nfans > CM_SF_MAX_FANS) return -1;
     dp d;
     setup(&d, m, common, xy, k);
-    d.fans = fans, d.nfans = fans ? nfans : 0;
+    set_fans(&d, fans, nfans);
     int status = build_links(&d) == 0 && init_values(&d) == 0 ? run(&d, 0, plan) : -1;
     free_run(&d), free_links(&d);
     return status;
@@ -654,7 +665,7 @@ int cm_steinerfree_plan_fans(const cm_sf_memo *memo, const double *fans, size_t 
     size_t c = (size_t)first->nlinks + 1;
     dp d;
     setup(&d, first->m, first->common, first->xy, first->k);
-    d.fans = fans, d.nfans = fans ? nfans : 0;
+    set_fans(&d, fans, nfans);
     d.start = first->start, d.left = first->left, d.reach = first->reach, d.nlinks = first->nlinks;
     d.g = malloc(c * sizeof *d.g);
     d.arg = malloc(c * sizeof *d.arg);

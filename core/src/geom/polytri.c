@@ -22,6 +22,7 @@ typedef struct {
     long *prev, *next;
     signed char *convex, *ear;
     long remaining; /* vertices left on the ring */
+    int tame;       /* every coordinate tame (cm_coords_tame) */
     cm_pointgrid grid;
 } ring;
 
@@ -56,9 +57,13 @@ static long ear_range(const ring *r, long a, long b, long c, long cells[4])
 /* Is p inside or on the closed triangle abc (counter-clockwise, box its
  * bounding box)? Outside the box it is outside the triangle: compared
  * first, exactly. */
-static int in_ear(const double *pa, const double *pb, const double *pc, const double box[4], const double *p)
+static int in_ear(const double *pa, const double *pb, const double *pc, const double box[4], const double *p,
+                  int tame)
 {
     if (p[0] < box[0] || p[0] > box[2] || p[1] < box[1] || p[1] > box[3]) return 0;
+    if (tame)
+        return cm_orient2d_tame(pa, pb, p) >= 0 && cm_orient2d_tame(pb, pc, p) >= 0 &&
+               cm_orient2d_tame(pc, pa, p) >= 0;
     return cm_orient2d(pa, pb, p) >= 0 && cm_orient2d(pb, pc, p) >= 0 && cm_orient2d(pc, pa, p) >= 0;
 }
 
@@ -77,7 +82,7 @@ static int ear_blocked(const ring *r, long a, long b, long c)
     if (ncells > 4 * r->grid.count + 16 && ncells > r->remaining) {
         for (long v = r->next[c]; v != a; v = r->next[v]) {
             if (r->convex[v] > 0) continue;
-            if (in_ear(pa, pb, pc, box, P(r->idx[v]))) return 1;
+            if (in_ear(pa, pb, pc, box, P(r->idx[v]), r->tame)) return 1;
         }
         return 0;
     }
@@ -85,7 +90,7 @@ static int ear_blocked(const ring *r, long a, long b, long c)
         for (long cx = cells[0]; cx <= cells[1]; cx++)
             for (long v = r->grid.head[cy * r->grid.nx + cx]; v >= 0; v = r->grid.next[v]) {
                 if (v == a || v == b || v == c) continue;
-                if (in_ear(pa, pb, pc, box, P(r->idx[v]))) return 1;
+                if (in_ear(pa, pb, pc, box, P(r->idx[v]), r->tame)) return 1;
             }
     return 0;
 }
@@ -135,6 +140,8 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
         r.next[i] = (i + 1) % m;
         for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], P(idx[i])[c]), hi[c] = fmax(hi[c], P(idx[i])[c]);
     }
+    r.tame = 1;
+    for (long i = 0; i < m && r.tame; i++) r.tame = cm_coords_tame(P(idx[i]), 2);
     for (long i = 0; i < m; i++) {
         r.convex[i] = (signed char)cm_orient2d(P(idx[r.prev[i]]), P(idx[i]), P(idx[r.next[i]]));
         reflex += r.convex[i] <= 0;

@@ -28,6 +28,7 @@ typedef struct {
                                          of v, the triangle holding edge
                                          v -> v+1 */
     crossing *stack;
+    int tame; /* every coordinate tame (cm_coords_tame) */
     const int32_t *want; /* NULL, or want[j] = wanted vertices among 0..j-1 */
 } vis_ctx;
 
@@ -57,8 +58,14 @@ static void propagate(const vis_ctx *c, long s, unsigned char *row, long top)
         long base = x.tz - x.tz % 3, iz = x.tz - base;
         const int32_t *t = c->tri + base;
         int32_t z = t[iz], r = t[prev3[iz]], l = t[next3[iz]];
-        int oa = cm_orient2d(XY(c, s), XY(c, x.a), XY(c, z));
-        int ob = cm_orient2d(XY(c, s), XY(c, x.b), XY(c, z));
+        int oa, ob;
+        if (c->tame) {
+            oa = cm_orient2d_tame(XY(c, s), XY(c, x.a), XY(c, z));
+            ob = cm_orient2d_tame(XY(c, s), XY(c, x.b), XY(c, z));
+        } else {
+            oa = cm_orient2d(XY(c, s), XY(c, x.a), XY(c, z));
+            ob = cm_orient2d(XY(c, s), XY(c, x.b), XY(c, z));
+        }
         /* the edge r -> z lies opposite l, z -> l opposite r */
         int32_t across_rz = c->opp[base + next3[iz]];
         int32_t across_zl = c->opp[base + prev3[iz]];
@@ -114,7 +121,7 @@ cm_visrows *cm_visrows_create(const double *xy, long m, const int32_t *tri)
     v->first = malloc((size_t)m * sizeof *v->first);
     crossing *stack = malloc((size_t)(nt + 1) * sizeof *stack);
     int32_t *nbr = malloc((size_t)(3 * nt) * sizeof *nbr);
-    v->c = (vis_ctx){xy, m, tri, v->opp, v->first, stack, NULL};
+    v->c = (vis_ctx){xy, m, tri, v->opp, v->first, stack, cm_coords_tame(xy, 2 * m), NULL};
     if (!v->opp || !v->first || !stack || !nbr || cm_tri_adjacency(tri, nt, nbr) != 0) {
         free(nbr);
         cm_visrows_free(v);
