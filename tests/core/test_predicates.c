@@ -278,6 +278,43 @@ static void test_orient_extreme_random(void)
     }
 }
 
+/* cm_orient2d_tame skips the filter's magnitude checks for coordinates
+ * 0 or within 2^[-400, 400]: the same signs as the reference there,
+ * extremes of the range and nearly collinear triples included. */
+static void test_orient_tame(void)
+{
+    double edge[] = {0.0, 0x1p-400, -0x1p-400, 0x1p+400, -0x1p+400};
+    CHECK(cm_coords_tame(edge, 5));
+    double out_low = 0x1.fffffffffffffp-401, out_high = 0x1.0000000000001p+400;
+    CHECK(!cm_coords_tame(&out_low, 1) && !cm_coords_tame(&out_high, 1));
+    static const int ranges[][2] = {{-400, -360}, {360, 399}, {-400, 399}, {-60, 60}};
+    uint64_t state = 0x7a3e5;
+    int tested = 0, mismatches = 0;
+    for (int r = 0; r < 4; r++)
+        for (int trial = 0; trial < 4000; trial++) {
+            double p[3][2];
+            for (int m = 0; m < 3; m++)
+                for (int k = 0; k < 2; k++)
+                    p[m][k] = trial % 7 == 0 && k ? 0.0 : random_double(&state, ranges[r][0], ranges[r][1]);
+            if (trial % 2) { /* nearly collinear: c near the midpoint */
+                p[2][0] = p[0][0] / 2 + p[1][0] / 2;
+                p[2][1] = p[0][1] / 2 + p[1][1] / 2;
+            }
+            if (!cm_coords_tame(&p[0][0], 6)) continue;
+            tested++;
+            mismatches += cm_orient2d_tame(p[0], p[1], p[2]) != ref_orient2d(p[0], p[1], p[2]);
+            mismatches += cm_orient2d_tame(p[1], p[0], p[2]) != -ref_orient2d(p[0], p[1], p[2]);
+        }
+    for (int i = 0; i < 128; i++) /* the grid next to (0.5, 0.5) */
+        for (int j = 0; j < 128; j++) {
+            double p[2] = {0.5 + i * 0x1p-53, 0.5 + j * 0x1p-53}, q[2] = {12, 12}, c[2] = {24, 24};
+            tested++;
+            mismatches += cm_orient2d_tame(p, q, c) != ref_orient2d(p, q, c);
+        }
+    CHECK_MSG(tested > 20000, "only %d tame triples", tested);
+    CHECK_MSG(mismatches == 0, "%d of %d", mismatches, tested);
+}
+
 /* ---- incircle -------------------------------------------------------- */
 
 /* d walks a grid next to the fourth corner of the square through a, b, c;
@@ -597,6 +634,7 @@ int main(void)
     test_orient_grid(-1000);
     test_orient_exactly_collinear();
     test_orient_extreme_random();
+    test_orient_tame();
     test_incircle_grid(0);
     test_incircle_grid(900);
     test_incircle_grid(-900);

@@ -292,17 +292,18 @@ static int open_rows(const double *const *xy, const int32_t *const *tris, size_t
 }
 
 /* all[j] &= (vertex j sees vertex i in every geometry of r), j = 0..m-1:
- * the caller sets all[] to the candidates. Each geometry's cones look only
- * for the candidates still in. row: m bytes of scratch; want: m + 1
- * counts of scratch. */
-static void seen_by_all(const rowset *r, long i, long m, unsigned char *row, unsigned char *all, int32_t *want)
+ * the caller sets all[] to the candidates, none below lo. Each geometry's
+ * cones look only for the candidates still in. row: m bytes of scratch;
+ * want: m + 1 counts of scratch. */
+static void seen_by_all(const rowset *r, long i, long m, long lo, unsigned char *row, unsigned char *all,
+                        int32_t *want)
 {
+    memset(want, 0, ((size_t)lo + 1) * sizeof *want);
     for (size_t g = 0; g < r->k; g++) {
-        want[0] = 0;
-        for (long j = 0; j < m; j++) want[j + 1] = want[j] + all[j];
+        for (long j = lo; j < m; j++) want[j + 1] = want[j] + all[j];
         if (want[m] == 0) return;
         cm_visrows_row_wanted(r->rows[g], i, want, row);
-        for (long j = 0; j < m; j++) all[j] &= row[j];
+        for (long j = lo; j < m; j++) all[j] &= row[j];
     }
 }
 
@@ -324,7 +325,7 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
     for (long i = 0; i < m; i++) {
         memset(all, 0, (size_t)i + 1);
         memset(all + i + 1, 1, (size_t)(m - i - 1));
-        seen_by_all(&r, i, m, row, all, want);
+        seen_by_all(&r, i, m, i + 1, row, all, want);
         for (long j = i + 1; j < m; j++)
             if (all[j] && !(p && flat_pair(p, gid[i], gid[j]))) cm_diagset_add(common, i, j);
     }
@@ -590,7 +591,7 @@ static void best_at(const part *p, const item *it, const rowset *r, long i, unsi
         long span = (j - i + m) % m;
         all[j] = (span < m - span ? span : m - span) > *best;
     }
-    seen_by_all(r, i, m, row, all, want);
+    seen_by_all(r, i, m, 0, row, all, want);
     *bj = -1;
     for (long j = 0; j < m; j++) {
         long span = (j - i + m) % m, balance = span < m - span ? span : m - span;

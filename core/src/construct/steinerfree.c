@@ -58,6 +58,7 @@ typedef struct dp {
     const double *const *xy;
     const double *fans; /* nfans candidates of k points (2 doubles each) */
     size_t k, nfans;
+    int tame; /* every coordinate and fan point tame (cm_coords_tame) */
     long *start;      /* links ending at l: left[start[l] .. start[l+1]) */
     int32_t *left;    /* ascending */
     val *g;           /* per link */
@@ -128,8 +129,10 @@ static double triangle_quality(const dp *d, long a, long b, long c)
  * invalid in some geometry. */
 static double fan_min_angle(const dp *d, size_t x, long a, long b)
 {
-    for (size_t g = 0; g < d->k; g++) /* all first: most fail */
-        if (cm_orient2d(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->fans + 2 * (x * d->k + g)) <= 0) return -1.0;
+    for (size_t g = 0; g < d->k; g++) { /* all first: most fail */
+        const double *pa = d->xy[g] + 2 * a, *pb = d->xy[g] + 2 * b, *px = d->fans + 2 * (x * d->k + g);
+        if ((d->tame ? cm_orient2d_tame(pa, pb, px) : cm_orient2d(pa, pb, px)) <= 0) return -1.0;
+    }
     double q = NO_TRIANGLE;
     for (size_t g = 0; g < d->k; g++)
         q = qmin(q, quality(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->fans + 2 * (x * d->k + g)));
@@ -170,9 +173,18 @@ typedef struct {
     int16_t *fan_of;
 } slot;
 
-static void offer(val c, unsigned char how, int32_t a, int16_t fan, slot out)
+/* The best decomposition found so far, kept apart from the table while a
+ * link is solved (the table holds the links it is built from). */
+typedef struct {
+    val value;
+    int32_t arg;
+    unsigned char by;
+    int16_t fan_of;
+} pick;
+
+static inline void offer(val c, unsigned char how, int32_t a, int16_t fan, pick *out)
 {
-    if (better(c, *out.value)) *out.value = c, *out.arg = a, *out.by = how, *out.fan_of = fan;
+    if (better(c, out->value)) out->value = c, out->arg = a, out->by = how, out->fan_of = fan;
 }
 
 /* Could a value of this cost whose quality is at most qmin(q, anything)
@@ -188,25 +200,26 @@ static int could_win(long cost, double q, val cur)
  * l -> i is valid too (x in rev_ok of the link, root_ok for the root). */
 static void close_face(const dp *d, long i, long l, long first, long chord, slot out)
 {
-    *out.value = none, *out.arg = -1, *out.by = BY_TRIANGLE, *out.fan_of = -1;
+    pick p = {none, -1, BY_TRIANGLE, -1};
     uint64_t closing = (chord >= 0 ? d->rev_ok[chord] : d->root_ok) & d->fans_now;
     for (long s = first; s < d->start[l + 1]; s++) {
         long a = d->left[s];
         val gl = d->g[s];
         const chains *pc = &d->plain[a];
-        if (exists(pc->one) && could_win(pc->one.cost + gl.cost - 1, qmin(pc->one.q, gl.q), *out.value))
+        if (exists(pc->one) && could_win(pc->one.cost + gl.cost - 1, qmin(pc->one.q, gl.q), p.value))
             offer((val){pc->one.cost + gl.cost - 1, qmin(qmin(pc->one.q, gl.q), triangle_quality(d, i, a, l))},
-                  BY_TRIANGLE, (int32_t)a, -1, out);
+                  BY_TRIANGLE, (int32_t)a, -1, &p);
         if (exists(pc->more))
-            offer((val){pc->more.cost + gl.cost - 1, qmin(pc->more.q, gl.q)}, BY_FACE, (int32_t)a, -1, out);
+            offer((val){pc->more.cost + gl.cost - 1, qmin(pc->more.q, gl.q)}, BY_FACE, (int32_t)a, -1, &p);
         for (uint64_t b = closing & d->fwd_ok[s] & d->fan_more[a]; b; b &= b - 1) {
             size_t x = (size_t)cm_lowest_bit(b);
             const chains *fc = fanned(d, x, a);
             double q = chord >= 0 ? fan_q(d, x, chord) : d->root_fan[x];
             offer((val){fc->more.cost + gl.cost + 1, qmin(qmin(fc->more.q, gl.q), qmin(fan_q(d, x, s), q))},
-                  BY_FAN, (int32_t)a, (int16_t)x, out);
+                  BY_FAN, (int32_t)a, (int16_t)x, &p);
         }
     }
+    *out.value = p.value, *out.arg = p.arg, *out.by = p.by, *out.fan_of = p.fan_of;
 }
 
 /* Extends the chains of one kind into l: best of one link or more. */
@@ -241,7 +254,21 @@ static void extend_chains(dp *d, long l, long s, long first)
         fc->one = s >= 0 && has_fan(d->fwd_ok[s], x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s))} : none;
         fc->more = none, fc->arg = -1;
     }
-    for (long t = first; t < d->start[l + 1]; t++) extend(pc, d->left[t], &d->plain[d->left[t]], d->g[t], 0);
+    /* extend() for every plain link, the running best kept in locals
+     * (the rows below l are not l: nothing they hold changes here) */
+    val mv = none;
+    int32_t arg = -1;
+    unsigned char from_more = 0;
+    for (long t = first, end = d->start[l + 1]; t < end; t++) {
+        const chains *prev = &d->plain[d->left[t]];
+        if (!exists(prev->best)) continue;
+        long cost = prev->best.cost + d->g[t].cost + 1;
+        if (cost > mv.cost) continue;
+        val v = {cost, qmin(prev->best.q, d->g[t].q)};
+        if (better(v, mv)) mv = v, arg = d->left[t], from_more = prev->best_more;
+    }
+    pc->more = mv, pc->arg = arg;
+    if (arg >= 0) pc->from_more = from_more;
     finish(pc);
     if (!fans) {
         d->fan_best[l] = d->fan_more[l] = 0;
@@ -593,6 +620,14 @@ static void setup(dp *d, long m, const cm_diagview *common, const double *const 
     d->m = m, d->common = common, d->xy = xy, d->k = k;
 }
 
+/* Sets the fan points and whether every point is tame. */
+static void set_fans(dp *d, const double *fans, size_t nfans)
+{
+    d->fans = fans, d->nfans = fans ? nfans : 0;
+    d->tame = !d->nfans || cm_coords_tame(d->fans, 2 * (long)(d->nfans * d->k));
+    for (size_t g = 0; g < d->k && d->tame; g++) d->tame = cm_coords_tame(d->xy[g], 2 * d->m);
+}
+
 int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *xy, size_t k,
                         const double *fans, size_t nfans, cm_sf_plan *plan)
 {
@@ -600,7 +635,7 @@ int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *
     if (fans && nfans > CM_SF_MAX_FANS) return -1;
     dp d;
     setup(&d, m, common, xy, k);
-    d.fans = fans, d.nfans = fans ? nfans : 0;
+    set_fans(&d, fans, nfans);
     int status = build_links(&d) == 0 && init_values(&d) == 0 ? run(&d, 0, plan) : -1;
     free_run(&d), free_links(&d);
     return status;
@@ -630,7 +665,7 @@ int cm_steinerfree_plan_fans(const cm_sf_memo *memo, const double *fans, size_t 
     size_t c = (size_t)first->nlinks + 1;
     dp d;
     setup(&d, first->m, first->common, first->xy, first->k);
-    d.fans = fans, d.nfans = fans ? nfans : 0;
+    set_fans(&d, fans, nfans);
     d.start = first->start, d.left = first->left, d.reach = first->reach, d.nlinks = first->nlinks;
     d.g = malloc(c * sizeof *d.g);
     d.arg = malloc(c * sizeof *d.arg);

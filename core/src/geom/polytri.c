@@ -22,33 +22,67 @@ typedef struct {
     long *prev, *next;
     signed char *convex, *ear;
     long remaining; /* vertices left on the ring */
+    int tame;       /* every coordinate tame (cm_coords_tame) */
     cm_pointgrid grid;
 } ring;
+
+static double min3(double a, double b, double c)
+{
+    double m = a < b ? a : b;
+    return m < c ? m : c;
+}
+
+static double max3(double a, double b, double c)
+{
+    double m = a > b ? a : b;
+    return m > c ? m : c;
+}
+
+/* The bounding box of triangle abc: box = {x0, y0, x1, y1}. */
+static void ear_box(const ring *r, long a, long b, long c, double box[4])
+{
+    const double *xy = r->xy, *pa = P(r->idx[a]), *pb = P(r->idx[b]), *pc = P(r->idx[c]);
+    box[0] = min3(pa[0], pb[0], pc[0]), box[1] = min3(pa[1], pb[1], pc[1]);
+    box[2] = max3(pa[0], pb[0], pc[0]), box[3] = max3(pa[1], pb[1], pc[1]);
+}
 
 /* The grid cells under the bounding box of triangle abc (cm_pointgrid_range). */
 static long ear_range(const ring *r, long a, long b, long c, long cells[4])
 {
-    const double *xy = r->xy, *pa = P(r->idx[a]), *pb = P(r->idx[b]), *pc = P(r->idx[c]);
-    return cm_pointgrid_range(&r->grid, fmin(pa[0], fmin(pb[0], pc[0])), fmin(pa[1], fmin(pb[1], pc[1])),
-                              fmax(pa[0], fmax(pb[0], pc[0])), fmax(pa[1], fmax(pb[1], pc[1])), cells);
+    double box[4];
+    ear_box(r, a, b, c, box);
+    return cm_pointgrid_range(&r->grid, box[0], box[1], box[2], box[3], cells);
+}
+
+/* Is p inside or on the closed triangle abc (counter-clockwise, box its
+ * bounding box)? Outside the box it is outside the triangle: compared
+ * first, exactly. */
+static int in_ear(const double *pa, const double *pb, const double *pc, const double box[4], const double *p,
+                  int tame)
+{
+    if (p[0] < box[0] || p[0] > box[2] || p[1] < box[1] || p[1] > box[3]) return 0;
+    if (tame)
+        return cm_orient2d_tame(pa, pb, p) >= 0 && cm_orient2d_tame(pb, pc, p) >= 0 &&
+               cm_orient2d_tame(pc, pa, p) >= 0;
+    return cm_orient2d(pa, pb, p) >= 0 && cm_orient2d(pb, pc, p) >= 0 && cm_orient2d(pc, pa, p) >= 0;
 }
 
 /* Is any vertex of the ring (other than a, b, c) inside or on the closed
- * triangle abc? */
+ * triangle abc (strictly convex)? */
 static int ear_blocked(const ring *r, long a, long b, long c)
 {
     const double *xy = r->xy, *pa = P(r->idx[a]), *pb = P(r->idx[b]), *pc = P(r->idx[c]);
     long cells[4];
-    long ncells = ear_range(r, a, b, c, cells);
+    double box[4];
+    ear_box(r, a, b, c, box);
+    long ncells = cm_pointgrid_range(&r->grid, box[0], box[1], box[2], box[3], cells);
     /* a box of many more cells than reflex vertices: walk the ring instead
      * when it is the shorter walk (not for a near-convex ring, whose long
      * ears would each walk it whole) */
     if (ncells > 4 * r->grid.count + 16 && ncells > r->remaining) {
         for (long v = r->next[c]; v != a; v = r->next[v]) {
             if (r->convex[v] > 0) continue;
-            const double *p = P(r->idx[v]);
-            if (cm_orient2d(pa, pb, p) >= 0 && cm_orient2d(pb, pc, p) >= 0 && cm_orient2d(pc, pa, p) >= 0)
-                return 1;
+            if (in_ear(pa, pb, pc, box, P(r->idx[v]), r->tame)) return 1;
         }
         return 0;
     }
@@ -56,9 +90,7 @@ static int ear_blocked(const ring *r, long a, long b, long c)
         for (long cx = cells[0]; cx <= cells[1]; cx++)
             for (long v = r->grid.head[cy * r->grid.nx + cx]; v >= 0; v = r->grid.next[v]) {
                 if (v == a || v == b || v == c) continue;
-                const double *p = P(r->idx[v]);
-                if (cm_orient2d(pa, pb, p) >= 0 && cm_orient2d(pb, pc, p) >= 0 && cm_orient2d(pc, pa, p) >= 0)
-                    return 1;
+                if (in_ear(pa, pb, pc, box, P(r->idx[v]), r->tame)) return 1;
             }
     return 0;
 }
@@ -108,6 +140,8 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
         r.next[i] = (i + 1) % m;
         for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], P(idx[i])[c]), hi[c] = fmax(hi[c], P(idx[i])[c]);
     }
+    r.tame = 1;
+    for (long i = 0; i < m && r.tame; i++) r.tame = cm_coords_tame(P(idx[i]), 2);
     for (long i = 0; i < m; i++) {
         r.convex[i] = (signed char)cm_orient2d(P(idx[r.prev[i]]), P(idx[i]), P(idx[r.next[i]]));
         reflex += r.convex[i] <= 0;
@@ -229,16 +263,25 @@ static long corner_facing(const int32_t *nbr, long t, long other)
 
 /* Flips the edge opposite corner i of triangle t if it is not locally
  * Delaunay. Returns 1 if flipped. Triangles (a,b,c) with edge b-c shared by
- * u = (c,b,d): become (a,b,d) and (a,d,c). */
-static int flip_if_illegal(const double *xy, int32_t *tri, int32_t *nbr, long t, long i)
+ * u = (c,b,d): become (a,b,d) and (a,d,c). kept[s]: the vertex across the
+ * edge opposite slot s when that edge was last found to stay, -1 unknown;
+ * the decision is the same from either side (the in-circle sign is
+ * symmetric, the quad the same), and a triangle's slots are cleared when
+ * it changes, so a kept edge is not tested again until one side changes. */
+static int flip_if_illegal(const double *xy, int32_t *tri, int32_t *nbr, int32_t *kept, long t, long i)
 {
     long u = nbr[3 * t + i];
     if (u < 0) return 0;
     long j = corner_facing(nbr, u, t);
     int32_t a = tri[3 * t + i], b = tri[3 * t + (i + 1) % 3], c = tri[3 * t + (i + 2) % 3];
     int32_t d = tri[3 * u + j];
-    if (cm_incircle(P(a), P(b), P(c), P(d)) <= 0) return 0;
-    if (cm_orient2d(P(a), P(b), P(d)) <= 0 || cm_orient2d(P(a), P(d), P(c)) <= 0) return 0;
+    if (kept[3 * t + i] == d) return 0;
+    if (cm_incircle(P(a), P(b), P(c), P(d)) <= 0 || cm_orient2d(P(a), P(b), P(d)) <= 0 ||
+        cm_orient2d(P(a), P(d), P(c)) <= 0) {
+        kept[3 * t + i] = d, kept[3 * u + j] = a;
+        return 0;
+    }
+    for (int k = 0; k < 3; k++) kept[3 * t + k] = kept[3 * u + k] = -1;
     long t_ab = nbr[3 * t + (i + 2) % 3], t_ca = nbr[3 * t + (i + 1) % 3];
     long u_bd = nbr[3 * u + (j + 1) % 3], u_dc = nbr[3 * u + (j + 2) % 3];
     /* u's corners: d at j, c at j+1, b at j+2 (u = (c, b, d) rotated). */
@@ -256,9 +299,11 @@ static int make_delaunay(const double *xy, int32_t *tri, long nt, int (*fixed)(c
 {
     int32_t *nbr = malloc((size_t)(3 * nt) * sizeof *nbr);
     long *stack = malloc((size_t)(3 * nt) * sizeof *stack);
+    int32_t *kept = malloc((size_t)(3 * nt) * sizeof *kept);
     char *queued = calloc((size_t)nt, 1);
     int status = -1;
-    if (!nbr || !stack || !queued || cm_tri_adjacency(tri, nt, nbr) != 0) goto done;
+    if (!nbr || !stack || !kept || !queued || cm_tri_adjacency(tri, nt, nbr) != 0) goto done;
+    for (long s = 0; s < 3 * nt; s++) kept[s] = -1;
     /* A stack of triangles to re-examine; a flip re-queues both triangles. */
     long top = 0;
     for (long t = 0; t < nt; t++) stack[top++] = t, queued[t] = 1;
@@ -272,7 +317,7 @@ static int make_delaunay(const double *xy, int32_t *tri, long nt, int (*fixed)(c
         for (long i = 0; i < 3; i++) {
             long u = nbr[3 * t + i];
             if (u >= 0 && fixed && fixed(user, tri[3 * t + (i + 1) % 3], tri[3 * t + (i + 2) % 3])) continue;
-            if (u >= 0 && flip_if_illegal(xy, tri, nbr, t, i)) {
+            if (u >= 0 && flip_if_illegal(xy, tri, nbr, kept, t, i)) {
                 if (!queued[u]) stack[top++] = u, queued[u] = 1;
                 if (!queued[t]) stack[top++] = t, queued[t] = 1;
                 break;
@@ -281,7 +326,7 @@ static int make_delaunay(const double *xy, int32_t *tri, long nt, int (*fixed)(c
     }
     status = 0;
 done:
-    free(nbr), free(stack), free(queued);
+    free(nbr), free(stack), free(kept), free(queued);
     return status;
 }
 

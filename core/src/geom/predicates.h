@@ -24,6 +24,19 @@ static inline int cm_magnitude_within(double v, double min, double max)
     return m == 0.0 || (m >= min && m <= max);
 }
 
+/* Shewchuk's bound A on the differences: the sign, or 2 when it cannot
+ * decide. Valid when each difference is 0 or within CM_ORIENT_MIN..MAX. */
+static inline int cm_orient2d_bound_a(double acx, double bcx, double acy, double bcy)
+{
+#ifdef __clang__
+#pragma STDC FP_CONTRACT OFF
+#endif
+    double detleft = acx * bcy, detright = acy * bcx, det = detleft - detright;
+    double errbound = (3.0 + 16.0 * CM_EPS) * CM_EPS * (fabs(detleft) + fabs(detright));
+    if (fabs(det) > errbound) return (det > 0.0) - (det < 0.0);
+    return 2;
+}
+
 /* cm_orient2d's floating-point filter (Shewchuk's bound A): the sign, or
  * 2 when the bound cannot decide. Its error bound counts one rounding per
  * operation: it is only inline where no compiler may fuse a*b - c*d (see
@@ -37,12 +50,23 @@ static inline int cm_orient2d_filter(const double a[2], const double b[2], const
     if (cm_magnitude_within(acx, CM_ORIENT_MIN, CM_ORIENT_MAX) &&
         cm_magnitude_within(bcx, CM_ORIENT_MIN, CM_ORIENT_MAX) &&
         cm_magnitude_within(acy, CM_ORIENT_MIN, CM_ORIENT_MAX) &&
-        cm_magnitude_within(bcy, CM_ORIENT_MIN, CM_ORIENT_MAX)) {
-        double detleft = acx * bcy, detright = acy * bcx, det = detleft - detright;
-        double errbound = (3.0 + 16.0 * CM_EPS) * CM_EPS * (fabs(detleft) + fabs(detright));
-        if (fabs(det) > errbound) return (det > 0.0) - (det < 0.0);
-    }
+        cm_magnitude_within(bcy, CM_ORIENT_MIN, CM_ORIENT_MAX))
+        return cm_orient2d_bound_a(acx, bcx, acy, bcy);
     return 2;
+}
+
+/* Coordinates each 0 or within 2^[-400, 400] ("tame"): all are multiples
+ * of 2^-452, so a nonzero difference of two, rounded or not, lies within
+ * 2^[-452, 401], inside the filter's bounds: for points all tame the
+ * filter need not check its differences (cm_orient2d_tame). */
+#define CM_TAME_MIN 0x1p-400
+#define CM_TAME_MAX 0x1p+400
+
+static inline int cm_coords_tame(const double *v, long count)
+{
+    for (long i = 0; i < count; i++)
+        if (!cm_magnitude_within(v[i], CM_TAME_MIN, CM_TAME_MAX)) return 0;
+    return 1;
 }
 
 /* The stages after the filter (any input; exact). */
@@ -64,6 +88,20 @@ static inline int cm_orient2d(const double a[2], const double b[2], const double
 {
 #ifdef CM_ORIENT2D_INLINE
     int s = cm_orient2d_filter(a, b, c);
+    return s != 2 ? s : cm_orient2d_adaptive(a, b, c);
+#else
+    return cm_orient2d_compiled(a, b, c);
+#endif
+}
+
+/* cm_orient2d for tame points (cm_coords_tame): the same sign. */
+static inline int cm_orient2d_tame(const double a[2], const double b[2], const double c[2])
+{
+#ifdef CM_ORIENT2D_INLINE
+#ifdef __clang__
+#pragma STDC FP_CONTRACT OFF
+#endif
+    int s = cm_orient2d_bound_a(a[0] - c[0], b[0] - c[0], a[1] - c[1], b[1] - c[1]);
     return s != 2 ? s : cm_orient2d_adaptive(a, b, c);
 #else
     return cm_orient2d_compiled(a, b, c);

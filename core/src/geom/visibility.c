@@ -9,26 +9,26 @@
 #include "geom/polytri.h"
 #include "geom/predicates.h"
 
-static int corner_of(const int32_t *tri, long t, int32_t v)
-{
-    for (int i = 0; i < 3; i++)
-        if (tri[3 * t + i] == v) return i;
-    return -1;
-}
-
 /* ---- the visibility table (double coordinates) --------------------------- */
 
-/* A pending crossing: enter triangle t through its edge from r (right, as
- * seen from the source) to l, with the cone strictly between rays to b and
- * a (b clockwise of a). */
-typedef struct { int32_t t, r, l, b, a; } crossing;
+/* A pending crossing: enter the triangle of slot tz through its edge from r
+ * (right, as seen from the source) to l, with the cone strictly between
+ * rays to b and a (b clockwise of a). tz = 3t + corner of z, the vertex of
+ * t opposite the edge; t runs counter-clockwise r, z, l, so r and l are
+ * read from t. */
+typedef struct { int32_t tz, b, a; } crossing;
 
 typedef struct {
     const double *xy;
     long m;
-    const int32_t *tri, *nbr, *first; /* first[v]: 3t + corner of v, the
-                                         triangle holding edge v -> v+1 */
+    const int32_t *tri, *opp, *first; /* opp[3t + i]: the slot 3u + j of the
+                                         corner of the triangle u across the
+                                         edge opposite corner i of t, -1 on
+                                         the boundary; first[v]: 3t + corner
+                                         of v, the triangle holding edge
+                                         v -> v+1 */
     crossing *stack;
+    int tame; /* every coordinate tame (cm_coords_tame) */
     const int32_t *want; /* NULL, or want[j] = wanted vertices among 0..j-1 */
 } vis_ctx;
 
@@ -49,27 +49,34 @@ static int pocket_wanted(const vis_ctx *c, int32_t r, int32_t l)
     return c->want[c->m] > c->want[r + 1] || c->want[l] > 0;
 }
 
+static const int next3[3] = {1, 2, 0}, prev3[3] = {2, 0, 1};
+
 static void propagate(const vis_ctx *c, long s, unsigned char *row, long top)
 {
     while (top > 0) {
         crossing x = c->stack[--top];
-        const int32_t *t = c->tri + 3 * x.t;
-        int iz = 0;
-        while (t[iz] == x.r || t[iz] == x.l) iz++;
-        int32_t z = t[iz];
-        int oa = cm_orient2d(XY(c, s), XY(c, x.a), XY(c, z));
-        int ob = cm_orient2d(XY(c, s), XY(c, x.b), XY(c, z));
+        long base = x.tz - x.tz % 3, iz = x.tz - base;
+        const int32_t *t = c->tri + base;
+        int32_t z = t[iz], r = t[prev3[iz]], l = t[next3[iz]];
+        int oa, ob;
+        if (c->tame) {
+            oa = cm_orient2d_tame(XY(c, s), XY(c, x.a), XY(c, z));
+            ob = cm_orient2d_tame(XY(c, s), XY(c, x.b), XY(c, z));
+        } else {
+            oa = cm_orient2d(XY(c, s), XY(c, x.a), XY(c, z));
+            ob = cm_orient2d(XY(c, s), XY(c, x.b), XY(c, z));
+        }
         /* the edge r -> z lies opposite l, z -> l opposite r */
-        int32_t across_rz = c->nbr[3 * x.t + corner_of(c->tri, x.t, x.l)];
-        int32_t across_zl = c->nbr[3 * x.t + corner_of(c->tri, x.t, x.r)];
+        int32_t across_rz = c->opp[base + next3[iz]];
+        int32_t across_zl = c->opp[base + prev3[iz]];
         if (ob > 0 && oa < 0) {
             row[z] = 1;
-            if (across_rz >= 0 && pocket_wanted(c, x.r, z)) c->stack[top++] = (crossing){across_rz, x.r, z, x.b, z};
-            if (across_zl >= 0 && pocket_wanted(c, z, x.l)) c->stack[top++] = (crossing){across_zl, z, x.l, z, x.a};
+            if (across_rz >= 0 && pocket_wanted(c, r, z)) c->stack[top++] = (crossing){across_rz, x.b, z};
+            if (across_zl >= 0 && pocket_wanted(c, z, l)) c->stack[top++] = (crossing){across_zl, z, x.a};
         } else if (ob <= 0) {
-            if (across_zl >= 0 && pocket_wanted(c, z, x.l)) c->stack[top++] = (crossing){across_zl, z, x.l, x.b, x.a};
-        } else if (across_rz >= 0 && pocket_wanted(c, x.r, z)) {
-            c->stack[top++] = (crossing){across_rz, x.r, z, x.b, x.a};
+            if (across_zl >= 0 && pocket_wanted(c, z, l)) c->stack[top++] = (crossing){across_zl, x.b, x.a};
+        } else if (across_rz >= 0 && pocket_wanted(c, r, z)) {
+            c->stack[top++] = (crossing){across_rz, x.b, x.a};
         }
     }
 }
@@ -80,27 +87,28 @@ static void visible_from(const vis_ctx *c, long s, unsigned char *row)
     long top = 0;
     long slot = c->first[s];
     while (slot >= 0) {
-        long t = slot / 3, cs = slot % 3;
-        int32_t x = c->tri[3 * t + (cs + 1) % 3], y = c->tri[3 * t + (cs + 2) % 3];
+        long base = slot - slot % 3, cs = slot - base;
+        int32_t x = c->tri[base + next3[cs]], y = c->tri[base + prev3[cs]];
         if (!adjacent(c->m, s, x)) row[x] = 1;
         if (!adjacent(c->m, s, y)) row[y] = 1;
-        int32_t across = c->nbr[3 * t + cs];
-        if (across >= 0 && pocket_wanted(c, x, y)) c->stack[top++] = (crossing){across, x, y, x, y};
-        int32_t next = c->nbr[3 * t + (cs + 1) % 3];
-        slot = next >= 0 ? 3 * next + corner_of(c->tri, next, (int32_t)s) : -1;
+        int32_t across = c->opp[slot];
+        if (across >= 0 && pocket_wanted(c, x, y)) c->stack[top++] = (crossing){across, x, y};
+        /* across y -> s the next triangle runs s, y, w: s follows w */
+        int32_t next = c->opp[base + next3[cs]];
+        slot = next >= 0 ? next - next % 3 + next3[next % 3] : -1;
     }
     propagate(c, s, row, top);
 }
 
 struct cm_visrows {
     vis_ctx c;
-    int32_t *nbr, *first;
+    int32_t *opp, *first;
 };
 
 void cm_visrows_free(cm_visrows *v)
 {
     if (!v) return;
-    free(v->nbr), free(v->first), free(v->c.stack);
+    free(v->opp), free(v->first), free(v->c.stack);
     free(v);
 }
 
@@ -109,14 +117,25 @@ cm_visrows *cm_visrows_create(const double *xy, long m, const int32_t *tri)
     long nt = m - 2;
     cm_visrows *v = calloc(1, sizeof *v);
     if (!v) return NULL;
-    v->nbr = malloc((size_t)(3 * nt) * sizeof *v->nbr);
+    v->opp = malloc((size_t)(3 * nt) * sizeof *v->opp);
     v->first = malloc((size_t)m * sizeof *v->first);
     crossing *stack = malloc((size_t)(nt + 1) * sizeof *stack);
-    v->c = (vis_ctx){xy, m, tri, v->nbr, v->first, stack, NULL};
-    if (!v->nbr || !v->first || !stack || cm_tri_adjacency(tri, nt, v->nbr) != 0) {
+    int32_t *nbr = malloc((size_t)(3 * nt) * sizeof *nbr);
+    v->c = (vis_ctx){xy, m, tri, v->opp, v->first, stack, cm_coords_tame(xy, 2 * m), NULL};
+    if (!v->opp || !v->first || !stack || !nbr || cm_tri_adjacency(tri, nt, nbr) != 0) {
+        free(nbr);
         cm_visrows_free(v);
         return NULL;
     }
+    /* the slot of the neighbour's corner that faces back across the edge */
+    for (long i = 0; i < 3 * nt; i++) {
+        int32_t u = nbr[i];
+        int j = 0;
+        if (u >= 0)
+            while (nbr[3 * u + j] != i / 3) j++;
+        v->opp[i] = u >= 0 ? 3 * u + j : -1;
+    }
+    free(nbr);
     for (long i = 0; i < m; i++) v->first[i] = -1;
     for (long t = 0; t < nt; t++)
         for (int i = 0; i < 3; i++)
