@@ -188,15 +188,19 @@ typedef struct tracer {
 
 static pocket *tr_pocket(const tracer *tr) { return &tr->lp->pk[tr->P]; }
 
-/* x (on the line) lies beyond lb, in the ray's direction. */
-static int beyond(cm_xpool *pool, long la, long lb, long x)
+/* x (on line(a, b)) lies strictly past `from` (a point of that line) in
+ * the direction from a to b. */
+static int past(cm_xpool *pool, long a, long b, long from, long x)
 {
-    const double *pa = cm_xpool_xy(pool, la), *pb = cm_xpool_xy(pool, lb);
+    const double *pa = cm_xpool_xy(pool, a), *pb = cm_xpool_xy(pool, b);
     int axis = fabs(pb[0] - pa[0]) >= fabs(pb[1] - pa[1]) ? 0 : 1;
-    int dir = cm_xcompare(pool, lb, la, axis);
-    if (dir == 0) axis = 1 - axis, dir = cm_xcompare(pool, lb, la, axis);
-    return dir != 0 && cm_xcompare(pool, x, lb, axis) == dir;
+    int dir = cm_xcompare(pool, b, a, axis);
+    if (dir == 0) axis = 1 - axis, dir = cm_xcompare(pool, b, a, axis);
+    return dir != 0 && cm_xcompare(pool, x, from, axis) == dir;
 }
+
+/* x (on the line) lies beyond lb, in the ray's direction. */
+static int beyond(cm_xpool *pool, long la, long lb, long x) { return past(pool, la, lb, lb, x); }
 
 /* Appends local indices from..to (cyclic, inclusive) to list; 0 if the walk
  * would cross the pocket's window or its source. */
@@ -461,14 +465,7 @@ static int build_root(cm_linkpart *lp, pocket *p)
  * ones), not a triangulation from scratch. */
 
 /* x (on line(a, b)) lies strictly ahead of a, toward b. */
-static int ahead(cm_xpool *pool, long a, long b, long x)
-{
-    const double *pa = cm_xpool_xy(pool, a), *pb = cm_xpool_xy(pool, b);
-    int axis = fabs(pb[0] - pa[0]) >= fabs(pb[1] - pa[1]) ? 0 : 1;
-    int dir = cm_xcompare(pool, b, a, axis);
-    if (dir == 0) axis = 1 - axis, dir = cm_xcompare(pool, b, a, axis);
-    return dir != 0 && cm_xcompare(pool, x, a, axis) == dir;
-}
+static int ahead(cm_xpool *pool, long a, long b, long x) { return past(pool, a, b, a, x); }
 
 static int grow_scratch(cm_linkpart *lp, long nt)
 {
