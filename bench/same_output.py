@@ -3,10 +3,13 @@ the same byte for byte, and what does the new one cost against the old?
 
 usage: same_output.py --old BIN --new BIN [--quick] [--only REGEX]
                       [--modes index,auto] [--repeats N] [--gen-pairs BIN]
+                      [--args 'OPTIONS']
 
 The pairs are remesh_bench.py's (`--quick`: its 32-pair subset; `--only`:
 names matching a regular expression, added to the quick set when both are
-given). Each pair runs in each mode with each build, old and new
+given). `--args` adds options to every run of both builds (e.g.
+'--no-remesh --no-preview' to compare the construction alone). Each pair
+runs in each mode with each build, old and new
 interleaved, REPEATS times (the order swapped every other repeat, so load
 from other work hits both alike). Compared by SHA-256: every output mesh,
 report.json with its "seconds" object taken out (wall times), and the
@@ -25,6 +28,7 @@ import hashlib
 import json
 import math
 import os
+import shlex
 import shutil
 import statistics
 import subprocess
@@ -48,10 +52,10 @@ def digest(out):
     return sums
 
 
-def run(cli, pair, mode, out):
+def run(cli, pair, mode, out, extra=()):
     """CPU seconds, peak RSS (MB) and the outputs' digests of one run."""
     shutil.rmtree(out, ignore_errors=True)
-    cmd = [cli, "triangulate", *pair.files, "--out-dir", out]
+    cmd = [cli, "triangulate", *pair.files, "--out-dir", out, *extra]
     if mode != "index":
         cmd += ["--correspondence", mode]
     peak = out + ".rss"
@@ -78,6 +82,7 @@ def main(argv):
     ap.add_argument("--modes", default="index,auto")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--gen-pairs")
+    ap.add_argument("--args", default="", help="options added to every run of both builds")
     args = ap.parse_args(argv)
     gen = args.gen_pairs or os.path.join(os.path.dirname(os.path.abspath(args.new)), "cm_gen_pairs")
     work = tempfile.mkdtemp(prefix="same_output_")
@@ -99,7 +104,8 @@ def main(argv):
                 for r in range(args.repeats):
                     order = ("old", "new") if r % 2 == 0 else ("new", "old")
                     for build in order:
-                        got, error = run(getattr(args, build), pair, mode, os.path.join(work, "out"))
+                        got, error = run(getattr(args, build), pair, mode, os.path.join(work, "out"),
+                                         shlex.split(args.args))
                         if error:
                             print("%s %s %s: %s" % (pair.name, mode, build, error))
                             failed += 1
