@@ -215,6 +215,15 @@ static void tempered(const disk *d, const double *theta, double *p)
     p[d->nb] = 1.0;
 }
 
+/* Where tempered parameter q (modulo 1) lands on polygon 0 (p0: its
+ * tempered parameter per node), as a share of its perimeter below 1. */
+static double on_polygon0(const disk *d0, const double *p0, double q)
+{
+    q -= floor(q);
+    double u = lookup(p0, d0->s, d0->nb, q);
+    return u < 1.0 ? u : nextafter(1.0, 0.0);
+}
+
 /* params of polygon g (counter-clockwise positions): where its vertices
  * sit on polygon 0 when both are read by their tempered parameters, g's
  * disk turned onto polygon 0's by the automorphism x; fine (NULL, or
@@ -249,20 +258,14 @@ static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, dou
     qsort(offset, nb, sizeof *offset, cm_compare_doubles);
     double from = base + offset[nb / 2];
     for (size_t c = 0; c < n; c++) {
-        double q = from + pg[c * levels];
-        q -= floor(q);
-        double u = lookup(p0, d0->s, d0->nb, q);
-        params[c] = u < 1.0 ? u : nextafter(1.0, 0.0);
+        params[c] = on_polygon0(d0, p0, from + pg[c * levels]);
         /* between the vertices: g's nodes are evenly spaced along its
          * edges (levels of them per edge), read at CM_PARAM_FINE points */
         for (size_t l = 0; fine && l < CM_PARAM_FINE; l++) {
             double at = (double)(c * levels) + (double)(l * levels) / CM_PARAM_FINE;
             size_t j = (size_t)at;
             double f = at - (double)j, pj = j < nb ? pg[j] + f * (pg[j + 1] - pg[j]) : pg[nb];
-            q = from + pj;
-            q -= floor(q);
-            u = lookup(p0, d0->s, d0->nb, q);
-            fine[c * CM_PARAM_FINE + l] = l == 0 ? params[c] : u < 1.0 ? u : nextafter(1.0, 0.0);
+            fine[c * CM_PARAM_FINE + l] = l == 0 ? params[c] : on_polygon0(d0, p0, from + pj);
         }
     }
     free(theta), free(p0), free(pg);
