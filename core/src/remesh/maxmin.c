@@ -121,27 +121,29 @@ static int progress(void *instance, const lbfgsfloatval_t *x, const lbfgsfloatva
 
 /* Which vertices move and which triangles they touch; the smallest angle
  * of the others. 0, or -1 out of memory. */
-static int choose_moving(soft *s, const cm_mesh *mesh, double *xy, size_t nb)
+static int choose_moving(soft *s, const double *xy, size_t nt, const unsigned char *movable)
 {
     double least = HUGE_VAL;
-    double *tmin = malloc(mesh->nt * sizeof *tmin);
+    double *tmin = malloc(nt * sizeof *tmin);
     if (!tmin) return -1;
-    for (size_t t = 0; t < mesh->nt; t++) {
-        const int32_t *v = mesh->tri + 3 * t;
+    for (size_t t = 0; t < nt; t++) {
+        const int32_t *v = s->tri + 3 * t;
+        if (v[0] < 0) continue;
         const double *p[3] = {xy + 2 * v[0], xy + 2 * v[1], xy + 2 * v[2]};
         least = fmin(least, tmin[t] = min_angle_of(p));
     }
     s->nvar = s->nmoved = 0;
-    for (size_t t = 0; t < mesh->nt; t++) {
-        if (tmin[t] >= least + CM_MAXMIN_WARM) continue;
+    for (size_t t = 0; t < nt; t++) {
+        if (s->tri[3 * t] < 0 || tmin[t] >= least + CM_MAXMIN_WARM) continue;
         for (int c = 0; c < 3; c++) {
-            int32_t v = mesh->tri[3 * t + c];
-            if ((size_t)v >= nb && s->slot[v] < 0) s->var[s->nvar] = v, s->slot[v] = (int32_t)s->nvar++;
+            int32_t v = s->tri[3 * t + c];
+            if (movable[v] && s->slot[v] < 0) s->var[s->nvar] = v, s->slot[v] = (int32_t)s->nvar++;
         }
     }
     s->rest = HUGE_VAL;
-    for (size_t t = 0; t < mesh->nt; t++) {
-        const int32_t *v = mesh->tri + 3 * t;
+    for (size_t t = 0; t < nt; t++) {
+        const int32_t *v = s->tri + 3 * t;
+        if (v[0] < 0) continue;
         if (s->slot[v[0]] >= 0 || s->slot[v[1]] >= 0 || s->slot[v[2]] >= 0)
             s->moved[s->nmoved++] = (int32_t)t;
         else
@@ -161,10 +163,10 @@ static int exactly_valid(const soft *s, const lbfgsfloatval_t *x)
     return 1;
 }
 
-static cm_status polish_geometry(soft *s, const cm_mesh *mesh, double *xy, size_t nb, int max_iterations)
+static cm_status polish_geometry(soft *s, double *xy, size_t nt, const unsigned char *movable, int max_iterations)
 {
     s->xy = xy;
-    if (choose_moving(s, mesh, xy, nb)) return CM_ERR_NO_MEMORY;
+    if (choose_moving(s, xy, nt, movable)) return CM_ERR_NO_MEMORY;
     cm_status status = CM_OK;
     lbfgsfloatval_t *x = s->nvar ? lbfgs_malloc((int)(2 * s->nvar)) : NULL;
     s->best_x = s->nvar ? lbfgs_malloc((int)(2 * s->nvar)) : NULL;
@@ -198,19 +200,33 @@ static cm_status polish_geometry(soft *s, const cm_mesh *mesh, double *xy, size_
     return status;
 }
 
+cm_status cm_maxmin_polish_geometry(double *xy, size_t nv, const int32_t *tri, size_t nt, const unsigned char *movable,
+                                    int max_iterations, cm_progress *progress)
+{
+    if (nt == 0 || max_iterations <= 0) return CM_OK;
+    soft s = {.tri = tri, .progress = progress};
+    s.slot = malloc(nv * sizeof *s.slot);
+    s.var = malloc(nv * sizeof *s.var);
+    s.moved = malloc(nt * sizeof *s.moved);
+    s.angle = malloc(3 * nt * sizeof *s.angle);
+    cm_status status = s.slot && s.var && s.moved && s.angle ? CM_OK : CM_ERR_NO_MEMORY;
+    if (status == CM_OK) {
+        for (size_t v = 0; v < nv; v++) s.slot[v] = -1;
+        status = polish_geometry(&s, xy, nt, movable, max_iterations);
+    }
+    free(s.slot), free(s.var), free(s.moved), free(s.angle);
+    return status;
+}
+
 cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, int max_iterations, cm_progress *progress)
 {
-    if (mesh->nv <= nb || mesh->nt == 0 || max_iterations <= 0) return CM_OK;
-    soft s = {.tri = mesh->tri, .progress = progress};
-    s.slot = malloc(mesh->nv * sizeof *s.slot);
-    s.var = malloc(mesh->nv * sizeof *s.var);
-    s.moved = malloc(mesh->nt * sizeof *s.moved);
-    s.angle = malloc(3 * mesh->nt * sizeof *s.angle);
-    cm_status status = s.slot && s.var && s.moved && s.angle ? CM_OK : CM_ERR_NO_MEMORY;
-    if (status == CM_OK)
-        for (size_t v = 0; v < mesh->nv; v++) s.slot[v] = -1;
+    unsigned char *movable = malloc(mesh->nv ? mesh->nv : 1);
+    if (!movable) return CM_ERR_NO_MEMORY;
+    for (size_t v = 0; v < mesh->nv; v++) movable[v] = v >= nb;
+    cm_status status = CM_OK;
     for (size_t g = 0; g < mesh->k && status == CM_OK; g++)
-        status = polish_geometry(&s, mesh, mesh->xy[g], nb, max_iterations);
-    free(s.slot), free(s.var), free(s.moved), free(s.angle);
+        status = cm_maxmin_polish_geometry(mesh->xy[g], mesh->nv, mesh->tri, mesh->nt, movable, max_iterations,
+                                           progress);
+    free(movable);
     return status;
 }

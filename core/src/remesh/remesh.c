@@ -108,6 +108,8 @@
  * undone move is not tried again till the mesh near it changes
  * (step_out), and such a move was often kept on a later try before. */
 #define CM_FORCED_CLOSE 0.002
+/* L-BFGS iterations per geometry of the joint polish (maxmin.c). */
+#define CM_MAXMIN_ITERATIONS 400
 
 typedef struct tabu_set { /* keys (vertex pairs, forced moves) -> counts */
     uint64_t *keys;       /* 0: empty slot */
@@ -861,9 +863,6 @@ static cm_status finish(remesher *x, cm_remesh_report *rep)
     rep->min_angle_deg = cm_kmesh_min_angle(&x->km) * 180.0 / CM_PI;
     return CM_OK;
 }
-
-/* L-BFGS iterations per geometry of the joint polish (maxmin.c). */
-#define CM_MAXMIN_ITERATIONS 400
 
 /* The joint max-min polish of the written result; the report's smallest
  * angle is the polished mesh's. */
