@@ -42,7 +42,9 @@ typedef struct soft {
     size_t nvar;
     double rest;       /* the smallest angle of the triangles that do not move */
     double tau;
-    double *angle;     /* 3 nmoved */
+    double *tmin;      /* nmoved: each moving triangle's smallest angle */
+    int32_t *hot;      /* the moving triangles near the smallest angle */
+    double *angle;     /* 3 per hot triangle */
     double best;       /* the best smallest angle met, at best_x */
     lbfgsfloatval_t *best_x;
     cm_progress *progress;
@@ -62,11 +64,28 @@ static void corner_angles(const double *p[3], double out[3])
     }
 }
 
-static double min_angle_of(const double *p[3])
+/* Angles further than this many tau above the smallest weigh less than
+ * e^-36 (below a double's resolution of the sum): skipped. */
+#define CM_MAXMIN_CUT 36.0
+
+static double twice_area(const double *p[3])
 {
-    double a[3];
-    corner_angles(p, a);
-    return fmin(a[0], fmin(a[1], a[2]));
+    return (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+}
+
+/* The smallest angle of a counter-clockwise triangle with twice its area
+ * `cross`: it faces the shortest side, so its sine is cross over the two
+ * longer sides, and it is at most 60 degrees (one asin, no atan2). */
+static double smallest_angle(const double *p[3], double cross)
+{
+    double l[3];
+    for (int c = 0; c < 3; c++) {
+        double dx = p[(c + 1) % 3][0] - p[c][0], dy = p[(c + 1) % 3][1] - p[c][1];
+        l[c] = dx * dx + dy * dy;
+    }
+    double shortest = fmin(l[0], fmin(l[1], l[2]));
+    double longer = l[0] * l[1] * l[2] / shortest;
+    return asin(fmin(1.0, cross / sqrt(longer)));
 }
 
 /* Minus the soft smallest angle of the moving triangles and its gradient;
@@ -80,20 +99,28 @@ static lbfgsfloatval_t evaluate(void *instance, const lbfgsfloatval_t *x, lbfgsf
     for (size_t i = 0; i < s->nmoved; i++) {
         const int32_t *v = s->tri + 3 * s->moved[i];
         const double *p[3] = {position(s, x, v[0]), position(s, x, v[1]), position(s, x, v[2])};
-        double cross = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
+        double cross = twice_area(p);
         if (!(cross > 0)) return HUGE_VAL;
-        corner_angles(p, s->angle + 3 * i);
-        for (int c = 0; c < 3; c++) m = fmin(m, s->angle[3 * i + c]);
+        m = fmin(m, s->tmin[i] = smallest_angle(p, cross));
     }
     if (m > s->best) s->best = m, memcpy(s->best_x, x, (size_t)n * sizeof *x);
-    double sum = exp(-(s->rest - m) / s->tau);
-    for (size_t i = 0; i < 3 * s->nmoved; i++) sum += exp(-(s->angle[i] - m) / s->tau);
-    memset(g, 0, (size_t)n * sizeof *g);
+    double cut = m + CM_MAXMIN_CUT * s->tau, sum = s->rest < cut ? exp(-(s->rest - m) / s->tau) : 0;
+    size_t hot = 0;
     for (size_t i = 0; i < s->nmoved; i++) {
+        if (s->tmin[i] >= cut) continue;
         const int32_t *v = s->tri + 3 * s->moved[i];
+        const double *p[3] = {position(s, x, v[0]), position(s, x, v[1]), position(s, x, v[2])};
+        double *a = s->angle + 3 * hot;
+        corner_angles(p, a);
+        for (int c = 0; c < 3; c++) sum += a[c] < cut ? exp(-(a[c] - m) / s->tau) : 0;
+        s->hot[hot++] = s->moved[i];
+    }
+    memset(g, 0, (size_t)n * sizeof *g);
+    for (size_t i = 0; i < hot; i++) {
+        const int32_t *v = s->tri + 3 * s->hot[i];
         for (int c = 0; c < 3; c++) {
+            if (s->angle[3 * i + c] >= cut) continue;
             double w = exp(-(s->angle[3 * i + c] - m) / s->tau) / sum;
-            if (w < 1e-12) continue;
             int32_t at[3] = {v[c], v[(c + 1) % 3], v[(c + 2) % 3]};
             const double *a = position(s, x, at[0]), *b = position(s, x, at[1]), *d = position(s, x, at[2]);
             double ux = b[0] - a[0], uy = b[1] - a[1], vx = d[0] - a[0], vy = d[1] - a[1];
@@ -130,7 +157,8 @@ static int choose_moving(soft *s, const double *xy, size_t nt, const unsigned ch
         const int32_t *v = s->tri + 3 * t;
         if (v[0] < 0) continue;
         const double *p[3] = {xy + 2 * v[0], xy + 2 * v[1], xy + 2 * v[2]};
-        least = fmin(least, tmin[t] = min_angle_of(p));
+        double cross = twice_area(p);
+        least = fmin(least, tmin[t] = cross > 0 ? smallest_angle(p, cross) : 0);
     }
     s->nvar = s->nmoved = 0;
     for (size_t t = 0; t < nt; t++) {
@@ -209,12 +237,14 @@ cm_status cm_maxmin_polish_geometry(double *xy, size_t nv, const int32_t *tri, s
     s.var = malloc(nv * sizeof *s.var);
     s.moved = malloc(nt * sizeof *s.moved);
     s.angle = malloc(3 * nt * sizeof *s.angle);
-    cm_status status = s.slot && s.var && s.moved && s.angle ? CM_OK : CM_ERR_NO_MEMORY;
+    s.tmin = malloc(nt * sizeof *s.tmin);
+    s.hot = malloc(nt * sizeof *s.hot);
+    cm_status status = s.slot && s.var && s.moved && s.angle && s.tmin && s.hot ? CM_OK : CM_ERR_NO_MEMORY;
     if (status == CM_OK) {
         for (size_t v = 0; v < nv; v++) s.slot[v] = -1;
         status = polish_geometry(&s, xy, nt, movable, max_iterations);
     }
-    free(s.slot), free(s.var), free(s.moved), free(s.angle);
+    free(s.slot), free(s.var), free(s.moved), free(s.angle), free(s.tmin), free(s.hot);
     return status;
 }
 

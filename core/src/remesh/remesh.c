@@ -868,7 +868,7 @@ static cm_status finish(remesher *x, cm_remesh_report *rep)
  * angle is the polished mesh's. */
 static cm_status polish_jointly(cm_mesh *mesh, size_t nb, cm_progress *progress, cm_remesh_report *rep)
 {
-    cm_status s = cm_maxmin_polish(mesh, nb, getenv("CM_MM_S") ? atoi(getenv("CM_MM_S")) : CM_MAXMIN_ITERATIONS, progress);
+    cm_status s = cm_maxmin_polish(mesh, nb, CM_MAXMIN_ITERATIONS, progress);
     if (s != CM_OK) return s;
     double least = HUGE_VAL;
     for (size_t g = 0; g < mesh->k; g++)
