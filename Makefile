@@ -4,7 +4,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 
 # Debian packages the build, the tests, the demo and the bench need.
-DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev libfreetype-dev \
+DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev liblbfgs-dev libfreetype-dev \
   fonts-dejavu-core fonts-urw-base35 fonts-freefont-ttf fonts-liberation fonts-noto-core python3 python3-numpy python3-pytest python3-meshio \
   libopenmesh-dev libeigen3-dev pybind11-dev python3-dev \
   meshlab dpkg-dev qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev \

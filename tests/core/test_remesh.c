@@ -21,6 +21,7 @@
 #include "remesh/flip.h"
 #include "remesh/mapopt.h"
 #include "remesh/maprefine.h"
+#include "remesh/maxmin.h"
 #include "remesh/refine.h"
 #include "remesh/remesh.h"
 #include "remesh/smooth.h"
@@ -400,6 +401,67 @@ static void test_smoothing_variants(void)
                        smart ? "smart" : "plain", method_name[method], start * DEG, last * DEG);
                 cm_kmesh_free(&km);
             }
+}
+
+static double geometry_min_angle(const cm_mesh *m, size_t g)
+{
+    double least = HUGE_VAL;
+    for (size_t t = 0; t < m->nt; t++) {
+        const int32_t *v = m->tri + 3 * t;
+        least = fmin(least, cm_triangle_min_angle(m->xy[g] + 2 * v[0], m->xy[g] + 2 * v[1], m->xy[g] + 2 * v[2]));
+    }
+    return least;
+}
+
+/* The joint polish on random interior vertices (Fig. 7(e)'s mesh, two
+ * geometries made different by a shear): every geometry stays exactly
+ * counter-clockwise, the boundary and the connectivity are untouched, no
+ * smallest angle falls, and from random positions every one at least
+ * doubles. */
+static void test_joint_polish(void)
+{
+    for (int convex = 1; convex >= 0; convex--)
+        for (uint64_t seed = 1; seed <= 4; seed++) {
+            size_t n = 40;
+            double *poly = polygon(n);
+            cm_mesh m = {0};
+            int bad = convex ? rp_disc(poly, (int)n) : rp_star(poly, (int)n, (int)seed);
+            bad = bad || rm_build(poly, n, 60, seed, 2, &m);
+            free(poly);
+            if (bad) {
+                CHECK_MSG(0, "fixture mesh");
+                continue;
+            }
+            for (size_t v = 0; v < m.nv; v++) m.xy[1][2 * v] += 0.5 * m.xy[1][2 * v + 1];
+            cm_mesh before = m;
+            double *keep[2], start[2];
+            int32_t *tri = malloc(3 * m.nt * sizeof *tri);
+            for (size_t g = 0; g < 2; g++) {
+                keep[g] = malloc(2 * m.nv * sizeof(double));
+                memcpy(keep[g], m.xy[g], 2 * m.nv * sizeof(double));
+                start[g] = geometry_min_angle(&m, g);
+            }
+            memcpy(tri, m.tri, 3 * m.nt * sizeof *tri);
+            CHECK(cm_maxmin_polish(&m, n, 400, NULL) == CM_OK);
+            CHECK(m.nv == before.nv && m.nt == before.nt && !memcmp(tri, m.tri, 3 * m.nt * sizeof *tri));
+            for (size_t g = 0; g < 2; g++) {
+                CHECK_MSG(!memcmp(keep[g], m.xy[g], 2 * n * sizeof(double)), "boundary moved");
+                int ccw = 1;
+                for (size_t t = 0; t < m.nt; t++) {
+                    const int32_t *v = m.tri + 3 * t;
+                    ccw &= cm_orient2d(m.xy[g] + 2 * v[0], m.xy[g] + 2 * v[1], m.xy[g] + 2 * v[2]) > 0;
+                }
+                double now = geometry_min_angle(&m, g);
+                CHECK_MSG(ccw, "joint polish: a triangle turned");
+                printf("joint polish, %s seed %d geometry %zu: %.3f -> %.3f degrees\n", convex ? "disc" : "star", (int)seed, g,
+                       start[g] * DEG, now * DEG);
+                CHECK_MSG(now >= 2 * start[g], "%s seed %d geometry %zu: %.3f -> %.3f degrees",
+                          convex ? "disc" : "star", (int)seed, g, start[g] * DEG, now * DEG);
+                free(keep[g]);
+            }
+            free(tri);
+            cm_mesh_clear(&m);
+        }
 }
 
 static double area_spread(const cm_kmesh *km, size_t g)
@@ -902,6 +964,7 @@ int main(void)
     test_property_operations(60, 400);
     test_map_descent(30);
     test_smoothing_variants();
+    test_joint_polish();
     test_area_equalisation();
     test_refine_keeps_boundary();
     test_boundary_caps();

@@ -53,6 +53,7 @@
 #include "remesh/criteria.h"
 #include "remesh/flip.h"
 #include "remesh/mapopt.h"
+#include "remesh/maxmin.h"
 #include "remesh/maprefine.h"
 #include "remesh/refine.h"
 #include "remesh/smooth.h"
@@ -107,6 +108,8 @@
  * undone move is not tried again till the mesh near it changes
  * (step_out), and such a move was often kept on a later try before. */
 #define CM_FORCED_CLOSE 0.002
+/* L-BFGS iterations per geometry of the joint polish (maxmin.c). */
+#define CM_MAXMIN_ITERATIONS 400
 
 typedef struct tabu_set { /* keys (vertex pairs, forced moves) -> counts */
     uint64_t *keys;       /* 0: empty slot */
@@ -861,6 +864,23 @@ static cm_status finish(remesher *x, cm_remesh_report *rep)
     return CM_OK;
 }
 
+/* The joint max-min polish of the written result; the report's smallest
+ * angle is the polished mesh's. */
+static cm_status polish_jointly(cm_mesh *mesh, size_t nb, cm_progress *progress, cm_remesh_report *rep)
+{
+    cm_status s = cm_maxmin_polish(mesh, nb, CM_MAXMIN_ITERATIONS, progress);
+    if (s != CM_OK) return s;
+    double least = HUGE_VAL;
+    for (size_t g = 0; g < mesh->k; g++)
+        for (size_t t = 0; t < mesh->nt; t++) {
+            const int32_t *v = mesh->tri + 3 * t;
+            const double *xy = mesh->xy[g];
+            least = fmin(least, cm_triangle_min_angle(xy + 2 * v[0], xy + 2 * v[1], xy + 2 * v[2]));
+        }
+    rep->min_angle_deg = least * 180.0 / CM_PI;
+    return CM_OK;
+}
+
 cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, cm_remesh_boundary *splits,
                     cm_progress *progress, cm_remesh_report *rep, cm_error *err)
 {
@@ -893,6 +913,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
     free(bcap);
     if (s == CM_OK && splits) s = cm_kmesh_write_labels(&x.km, splits->edge, splits->t);
     if (s == CM_OK) s = cm_kmesh_write(&x.km, mesh);
+    if (s == CM_OK) s = polish_jointly(mesh, (size_t)x.km.nb, progress, rep);
     if (s == CM_OK && splits) splits->n = (size_t)x.km.nb;
     remesher_free(&x), remesher_free(&y);
     if (s == CM_ERR_INTERNAL) return cm_fail(err, s, "remesh: the construction is not a triangulated disk");
