@@ -240,30 +240,53 @@ static double agm(double a, double b)
     return a;
 }
 
+/* An arc of the circle from one corner of a quadruple to the next: its
+ * length in each view, in [0, 2 pi), and the length of its chord, 2 sin
+ * of half of it (NULL: not worked out). */
+typedef struct arc_views {
+    double gap[CM_BOUND_VIEWS];
+    const double *chord;
+} arc_views;
+
+static void arc_between(const double *angle, size_t n, long from, long to, arc_views *arc)
+{
+    for (int e = 0; e < CM_BOUND_VIEWS; e++) {
+        const double *view = angle + (size_t)e * n;
+        arc->gap[e] = view[to] - view[from];
+        if (arc->gap[e] < 0) arc->gap[e] += 2 * CM_PI;
+    }
+    arc->chord = NULL;
+}
+
+static double chord_of(const arc_views *arc, int view, double gap)
+{
+    return arc->chord ? arc->chord[view] : 2 * sin(0.5 * gap);
+}
+
 /* log of the modulus of the disk quadrilateral with corners at angles
  * t[0] < t[1] < t[2] < t[3] (cyclically), 0 on the arc t0..t1, 1 on
- * t2..t3: with the cross-ratio l = |t0t1| |t2t3| / (|t0t2| |t1t3|) (chords)
+ * t2..t3, given the arcs t0..t1, t1..t2, t2..t3: with the cross-ratio
+ * l = |t0t1| |t2t3| / (|t0t2| |t1t3|) (chords)
  * and s = sqrt(l), the half-plane points -1/k, -1, 1, 1/k with k = (1 - s)
  * / (1 + s) = (1 - l) / (1 + s)^2 give M = K'(k) / 2 K(k) = agm(1, k') / 2 agm(1, k). NAN when
  * two corners are too close to tell apart. */
-static double log_modulus(const double *angle, size_t n, const long q[4])
+static double log_modulus(const arc_views *const arc[3])
 {
     /* the view that separates the four corners best: the largest least
      * gap between consecutive corners */
     double gap[4] = {0}, sep = 0;
+    int best = 0;
     for (int e = 0; e < CM_BOUND_VIEWS; e++) {
-        const double *view = angle + (size_t)e * n;
         double g[4], least = INFINITY;
-        for (int i = 0; i < 3; i++) { /* angles in [0, 2 pi) */
-            g[i] = view[q[i + 1]] - view[q[i]];
-            if (g[i] < 0) g[i] += 2 * CM_PI;
-        }
+        for (int i = 0; i < 3; i++) g[i] = arc[i]->gap[e];
         g[3] = 2 * CM_PI - g[0] - g[1] - g[2];
-        for (int i = 0; i < 4; i++) least = fmin(least, g[i]);
-        if (least > sep) sep = least, memcpy(gap, g, sizeof g);
+        for (int i = 0; i < 4; i++) /* not fmin: a library call, in the hottest loop */
+            if (g[i] < least) least = g[i];
+        if (least > sep) sep = least, best = e, memcpy(gap, g, sizeof g);
     }
     if (!(sep > CM_BOUND_RESOLVED)) return NAN;
-    double ab = 2 * sin(0.5 * gap[0]), bc = 2 * sin(0.5 * gap[1]), cd = 2 * sin(0.5 * gap[2]);
+    double ab = chord_of(arc[0], best, gap[0]), bc = chord_of(arc[1], best, gap[1]);
+    double cd = chord_of(arc[2], best, gap[2]);
     double da = 2 * sin(0.5 * gap[3]), ac = 2 * sin(0.5 * (gap[0] + gap[1])), bd = 2 * sin(0.5 * (gap[1] + gap[2]));
     /* 1 - l = |t0t3| |t1t2| / (|t0t2| |t1t3|) (Ptolemy) keeps k accurate
      * when it is tiny, where (1 - s) / (1 + s) would round to 0 */
@@ -274,12 +297,56 @@ static double log_modulus(const double *angle, size_t n, const long q[4])
     return log(agm(1, kp) / (2 * lo));
 }
 
-/* log of the largest modulus ratio over the polygons; -1 when unknown. */
-static double spread(double *const *angle, size_t k, long n, const long q[4])
+/* The arcs between the coarse search's marks, worked out once: polygon g's
+ * arc from mark a to mark b at [(g m + a) m + b], its chords in chord. */
+typedef struct mark_arcs {
+    int m;
+    arc_views *arc;
+    double *chord;
+} mark_arcs;
+
+static int mark_arcs_make(mark_arcs *t, double *const *angle, size_t k, long n, const long *marks, int m)
+{
+    size_t count = k * (size_t)m * (size_t)m;
+    t->m = m;
+    t->arc = malloc(count * sizeof *t->arc);
+    t->chord = malloc(count * CM_BOUND_VIEWS * sizeof *t->chord);
+    if (!t->arc || !t->chord) {
+        free(t->arc), free(t->chord);
+        return -1;
+    }
+    for (size_t g = 0, at = 0; g < k; g++)
+        for (int a = 0; a < m; a++)
+            for (int b = 0; b < m; b++, at++) {
+                if (b <= a) continue; /* marks go round in order */
+                arc_views *arc = &t->arc[at];
+                double *chord = t->chord + at * CM_BOUND_VIEWS;
+                arc_between(angle[g], (size_t)n, marks[a], marks[b], arc);
+                for (int e = 0; e < CM_BOUND_VIEWS; e++) chord[e] = 2 * sin(0.5 * arc->gap[e]);
+                arc->chord = chord;
+            }
+    return 0;
+}
+
+/* log of the largest modulus ratio over the polygons; -1 when unknown.
+ * The arcs come from marks (mark indices j), or are worked out from
+ * angle when marks is NULL. */
+static double spread(double *const *angle, const mark_arcs *marks, const int *j, size_t k, long n,
+                     const long q[4])
 {
     double lo = INFINITY, hi = -INFINITY;
     for (size_t g = 0; g < k; g++) {
-        double l = log_modulus(angle[g], (size_t)n, q);
+        arc_views own[3];
+        const arc_views *arc[3];
+        for (int i = 0; i < 3; i++) {
+            if (marks) {
+                arc[i] = &marks->arc[((g * (size_t)marks->m) + (size_t)j[i]) * (size_t)marks->m + (size_t)j[i + 1]];
+            } else {
+                arc_between(angle[g], (size_t)n, q[i], q[i + 1], &own[i]);
+                arc[i] = &own[i];
+            }
+        }
+        double l = log_modulus(arc);
         if (isnan(l)) return -1;
         lo = fmin(lo, l), hi = fmax(hi, l);
     }
@@ -312,7 +379,7 @@ static void local_search(double *const *angle, size_t k, long n, long step, cand
                 for (int sign = -1; sign <= 1; sign += 2) {
                     long q[4];
                     if (!moved(c->q, i, sign * step, n, q)) continue;
-                    double r = spread(angle, k, n, q);
+                    double r = spread(angle, NULL, NULL, k, n, q);
                     if (r > c->score * (1 + 1e-9)) {
                         memcpy(c->q, q, sizeof q);
                         c->score = r, improved = 1;
@@ -328,12 +395,17 @@ static int search(double *const *angle, size_t k, long n, candidate *best)
     int nb = 0, m = n < CM_BOUND_MARKS ? (int)n : CM_BOUND_MARKS;
     long marks[CM_BOUND_MARKS];
     for (int j = 0; j < m; j++) marks[j] = (long)((double)j * (double)n / m) % n;
+    /* every arc between marks serves many quadruples; without the memory,
+     * each quadruple works out its own */
+    mark_arcs table;
+    const mark_arcs *arcs = mark_arcs_make(&table, angle, k, n, marks, m) == 0 ? &table : NULL;
     for (int a = 0; a < m; a++)
         for (int b = a + 1; b < m; b++)
             for (int c = b + 1; c < m; c++)
                 for (int d = c + 1; d < m; d++) {
                     candidate x = {{marks[a], marks[b], marks[c], marks[d]}, 0};
-                    x.score = spread(angle, k, n, x.q);
+                    int j[4] = {a, b, c, d};
+                    x.score = spread(angle, arcs, j, k, n, x.q);
                     if (x.score <= 0) continue;
                     if (nb == CM_BOUND_CANDIDATES && x.score <= best[nb - 1].score) continue;
                     int at = nb < CM_BOUND_CANDIDATES ? nb++ : nb - 1;
@@ -343,6 +415,7 @@ static int search(double *const *angle, size_t k, long n, candidate *best)
                         best[i] = best[i - 1], best[i - 1] = t;
                     }
                 }
+    if (arcs) free(table.arc), free(table.chord);
     long step = n / (2 * m) > 1 ? n / (2 * m) : 1;
     for (int i = 0; i < nb; i++) local_search(angle, k, n, step, &best[i]);
     return nb;

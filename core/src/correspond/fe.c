@@ -227,7 +227,11 @@ cm_status cm_fe_solve(cm_fe_mesh *m, long source, int refactor, cm_error *err)
 {
     const int *ap = m->a->p, *ai = m->a->i;
     memset(m->rhs, 0, (size_t)m->nv * sizeof *m->rhs);
-    for (int j = 0; j < (int)m->nv; j++)
+    /* Fixed values all 0 (a harmonic measure) contribute nothing: the
+     * loop below would only subtract zeros from +0. */
+    int loaded = 0;
+    for (long i = 0; i < m->nv && !loaded; i++) loaded = m->fixed[i] && m->u[i] != 0;
+    for (int j = 0; loaded && j < (int)m->nv; j++)
         for (int p = ap[j]; p < ap[j + 1]; p++) { /* upper triangle: both (i, j) and (j, i) */
             int i = ai[p];
             if (i == j) continue;
