@@ -194,6 +194,24 @@ static int could_win(long cost, double q, val cur)
     return cost < cur.cost || (cost == cur.cost && (q > cur.q || q != q));
 }
 
+/* G for the link (i, l) (or the root) when a triangle on it costs 0: a
+ * face of three or more links, or a fan face, costs at least 1, so only
+ * the triangles of cost 0 can win, in the order close_face offers them,
+ * and the row's chains are not needed (one[] is). 1 done, 0 not. */
+static int close_triangle(const dp *d, long i, long l, long first, slot out)
+{
+    pick p = {none, -1, BY_TRIANGLE, -1};
+    for (long s = first; s < d->start[l + 1]; s++) {
+        long a = d->left[s];
+        val gl = d->g[s], one = d->plain[a].one;
+        if (gl.cost == 0 && one.cost == 1 && could_win(0, qmin(one.q, gl.q), p.value))
+            offer((val){0, qmin(qmin(one.q, gl.q), triangle_quality(d, i, a, l))}, BY_TRIANGLE, (int32_t)a, -1, &p);
+    }
+    if (p.value.cost != 0) return 0;
+    *out.value = p.value, *out.arg = p.arg, *out.by = p.by, *out.fan_of = p.fan_of;
+    return 1;
+}
+
 /* G for the link (i, l) (or the root): the face on it closes a chain of
  * two links (a triangle), of three or more (a stuck face), or a fan chain
  * of three or more from a fan point whose triangle on the closing edge
@@ -292,17 +310,28 @@ static void extend_chains(dp *d, long l, long s, long first)
     d->fan_best[l] = best, d->fan_more[l] = more;
 }
 
+/* The chains from row i into l, once every link into l is solved: first[l]
+ * already moved to the link (i, l) if there is one. */
+static void extend_done(dp *d, long i, long l, const long *first)
+{
+    long f = first[l], s = f < d->start[l + 1] && d->left[f] == i ? f : -1;
+    extend_chains(d, l, s, s >= 0 ? f + 1 : f);
+}
+
 /* Rows from the last up. first[l]: the first link into l from beyond the
  * row (a link from the row into l, if any, just before it). With a memo
  * (a run without fan points over the same links), a row other than the
  * root's whose sub-polygons hold no fan point keeps its values: G of such
- * a link admits no fan face, and every link inside it is such a link. */
+ * a link admits no fan face, and every link inside it is such a link.
+ * A row's chains are extended only as far as a link of the row needs
+ * them: close_triangle is tried first where they are behind, and one[]
+ * is kept for every l. */
 static void solve(dp *d, long *first, int memo)
 {
     long m = d->m;
     for (long l = 0; l < m; l++) first[l] = d->start[l + 1];
     for (long i = m - 2; i >= 0; i--) {
-        long last = d->reach[i];
+        long last = d->reach[i], done = i;
         d->fans_now = d->row_fans[i] & d->facing[i];
         int keep = memo && i > 0 && !d->row_fans[i];
         for (long l = i + 1; l <= last; l++) {
@@ -311,13 +340,16 @@ static void solve(dp *d, long *first, int memo)
                 if (s >= 0) first[l] = s;
                 continue;
             }
-            if (l > i + 1) {
-                if (s >= 0)
-                    close_face(d, i, l, f, s, (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]});
-                else if (i == 0 && l == m - 1)
-                    close_face(d, i, l, f, -1, (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of});
+            int root = s < 0 && i == 0 && l == m - 1;
+            if (l > i + 1 && (s >= 0 || root)) {
+                slot out = s >= 0 ? (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]}
+                                  : (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of};
+                if (done + 1 == l || !close_triangle(d, i, l, f, out)) {
+                    while (done + 1 < l) extend_done(d, i, ++done, first);
+                    close_face(d, i, l, f, s, out);
+                }
             }
-            extend_chains(d, l, s, f);
+            d->plain[l].one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
             if (s >= 0) first[l] = s;
         }
     }
