@@ -330,9 +330,9 @@ done:
     return status;
 }
 
-int cm_polygon_ear_clip(const double *xy, const int32_t *idx, long m, int32_t *tri_out)
+int cm_polygon_ear_clip(const double *xy, const int32_t *idx, long m, int32_t *tri_out, cm_progress *progress)
 {
-    return clip_ears(xy, idx, m, tri_out, NULL, 1);
+    return clip_ears(xy, idx, m, tri_out, progress, 1);
 }
 
 int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t *tri_out,
