@@ -359,7 +359,8 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     r->stats.seconds_check = cm_seconds_now() - t2;
 
-    s = cm_result_measure(r);
+    /* without remeshing the mesh is the one remesh_stage measured */
+    s = cm_result_measure(r, o->remesh ? NULL : r->quality_before);
     if (s != CM_OK) return s;
     if (cm_progress_report(&progress, CM_STAGE_DONE, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
     return CM_OK;
@@ -1053,7 +1054,7 @@ static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, con
     if (s == CM_ERR_NO_MEMORY) cm_fail_status(&r->error, s);
     if (s != CM_OK) goto done;
     r->stats.seconds_check = cm_seconds_now() - t2;
-    s = cm_result_measure(r);
+    s = cm_result_measure(r, NULL);
     if (s == CM_OK && cm_progress_report(&progress, CM_STAGE_DONE, 0.0)) s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
     if (s == CM_OK) r->loop_start = start, r->num_loops = num_loops, start = NULL; /* the morph fills the holes */
     goto done;
