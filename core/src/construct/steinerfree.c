@@ -381,10 +381,21 @@ static uint64_t fans_inside(const dp *d, const uint64_t *parity, long a, long b,
     return in & which;
 }
 
+/* The first set vertex of a view whose vertices are consecutive in its
+ * set (map NULL, or map[i] = map[0] + i), else -1: its rows are read by
+ * words. */
+static long consecutive_base(const cm_diagview *v, long m)
+{
+    if (!v->map) return 0;
+    for (long i = 1; i < m; i++)
+        if (v->map[i] != v->map[0] + i) return -1;
+    return v->map[0];
+}
+
 /* The links, by their right ends, and each row's reach. */
 static int build_links(dp *d)
 {
-    long m = d->m, count = 0;
+    long m = d->m, count = 0, base = consecutive_base(d->common, m);
     size_t cap = 0;
     d->start = calloc((size_t)m + 2, sizeof *d->start);
     d->reach = malloc((size_t)m * sizeof *d->reach);
@@ -392,6 +403,27 @@ static int build_links(dp *d)
     for (long i = 0; i < m; i++) d->reach[i] = i == 0 ? m - 1 : i + 1;
     for (long b = 0; b < m; b++) {
         d->start[b] = count;
+        if (base >= 0 && b > 0) {
+            /* the diagonals a < b - 1 (not 0 for the closing edge) from the
+             * set's row of b, ascending, then the edge b - 1 */
+            const cm_diagset *set = d->common->set;
+            const uint64_t *row = set->bits + (size_t)(base + b) * set->stride;
+            long lo = base + (b == m - 1), hi = base + b - 1;
+            for (long w = lo / 64; 64 * w < hi; w++) {
+                uint64_t bits = row[w];
+                if (64 * w < lo) bits &= ~(uint64_t)0 << (lo - 64 * w);
+                if (64 * w + 64 > hi) bits &= ((uint64_t)1 << (hi - 64 * w)) - 1;
+                if (cm_grow((void **)&d->left, &cap, (size_t)count + 64 + 1, sizeof *d->left) != 0) return -1;
+                for (; bits; bits &= bits - 1) {
+                    long a = 64 * w + cm_lowest_bit(bits) - base;
+                    d->left[count++] = (int32_t)a;
+                    if (a > 0) d->reach[a] = b; /* b ascends: the farthest last */
+                }
+            }
+            if (cm_grow((void **)&d->left, &cap, (size_t)count + 1, sizeof *d->left) != 0) return -1;
+            d->left[count++] = (int32_t)(b - 1);
+            continue;
+        }
         for (long a = 0; a < b; a++) {
             if (!is_link(d, a, b)) continue;
             if (cm_grow((void **)&d->left, &cap, (size_t)count + 1, sizeof *d->left) != 0) return -1;
