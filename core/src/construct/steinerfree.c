@@ -23,6 +23,8 @@
 typedef struct { long cost; double q; } val;
 
 static const val none = {LONG_MAX, 0.0};
+/* Beyond every cost, with room to add two of them. */
+#define FAR (LONG_MAX / 4)
 #define NO_TRIANGLE 2.0 /* quality of a value without triangles */
 
 /* fmin without the library call (the same result for every pair of
@@ -94,6 +96,9 @@ typedef struct dp {
     double *root_fan;  /* per fan point: that triangle's quality */
     long nlinks;
     chains *plain, *fanned; /* the current row; fanned: nfans rows of m */
+    long *step_from;    /* per l, the current row: plain[l].best.cost + 1,
+                           FAR when there is none (the chains' hot loop
+                           reads these alone) */
     uint64_t *fan_best, *fan_more; /* per l, the current row: the fan points
                                       whose chains to l exist (best), of two
                                       or more links (more) */
@@ -274,20 +279,22 @@ static void extend_chains(dp *d, long l, long s, long first)
     }
     /* extend() for every plain link, the running best kept in locals
      * (the rows below l are not l: nothing they hold changes here) */
-    val mv = none;
+    val mv = {FAR - 1, 0.0}; /* none: every candidate costs less, but those
+                                from a missing chain (FAR or more) */
     int32_t arg = -1;
     unsigned char from_more = 0;
     for (long t = first, end = d->start[l + 1]; t < end; t++) {
-        const chains *prev = &d->plain[d->left[t]];
-        if (!exists(prev->best)) continue;
-        long cost = prev->best.cost + d->g[t].cost + 1;
+        int32_t a = d->left[t];
+        long cost = d->step_from[a] + d->g[t].cost; /* G of a solved link exists */
         if (cost > mv.cost) continue;
+        const chains *prev = &d->plain[a];
         val v = {cost, qmin(prev->best.q, d->g[t].q)};
-        if (better(v, mv)) mv = v, arg = d->left[t], from_more = prev->best_more;
+        if (better(v, mv)) mv = v, arg = a, from_more = prev->best_more;
     }
-    pc->more = mv, pc->arg = arg;
+    pc->more = arg >= 0 ? mv : none, pc->arg = arg;
     if (arg >= 0) pc->from_more = from_more;
     finish(pc);
+    d->step_from[l] = exists(pc->best) ? pc->best.cost + 1 : FAR;
     if (!fans) {
         d->fan_best[l] = d->fan_more[l] = 0;
         return;
@@ -648,7 +655,7 @@ struct cm_sf_memo {
 static void free_run(dp *d)
 {
     free(d->g), free(d->arg), free(d->by), free(d->fan_of);
-    free(d->fwd_ok), free(d->fan_q), free(d->plain), free(d->fanned), free(d->row_fans);
+    free(d->fwd_ok), free(d->fan_q), free(d->plain), free(d->step_from), free(d->fanned), free(d->row_fans);
 }
 
 static void free_links(dp *d)
@@ -663,10 +670,11 @@ static int run(dp *d, int memo, cm_sf_plan *plan)
     long m = d->m;
     d->root = none, d->root_arg = -1, d->root_by = BY_TRIANGLE, d->root_fan_of = -1;
     d->plain = malloc((size_t)m * sizeof *d->plain);
+    d->step_from = malloc((size_t)m * sizeof *d->step_from);
     d->fanned = malloc((size_t)m * (d->nfans ? d->nfans : 1) * sizeof *d->fanned);
     long *first = malloc((size_t)m * sizeof *first);
     int status = -1;
-    if (d->plain && d->fanned && first && build_fans(d) == 0) {
+    if (d->plain && d->step_from && d->fanned && first && build_fans(d) == 0) {
         solve(d, first, memo);
         plan->cost = d->root.cost;
         double q = qmin(d->root.q, 1.0);
