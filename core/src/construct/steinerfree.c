@@ -63,6 +63,11 @@ typedef struct dp {
     int tame; /* every coordinate and fan point tame (cm_coords_tame) */
     long *start;      /* links ending at l: left[start[l] .. start[l+1]) */
     int32_t *left;    /* ascending */
+    long *out_start;  /* links leaving a: out_link[out_start[a] ..
+                         out_start[a+1]), their right ends in out_to,
+                         ascending */
+    int32_t *out_link, *out_to;
+    long row_last;    /* the farthest l the current row's fan chains reach */
     val *g;           /* per link */
     int32_t *arg;     /* per link: the chain's last vertex before l */
     unsigned char *by;
@@ -265,18 +270,10 @@ static void finish(chains *c)
  * s: the link (i, l) or -1; first: the first link into l from beyond i. A plain chain counts each link once (it adds
  * a face vertex); a fan chain only collects G, the fan face costs 1 in
  * all. */
-static void extend_chains(dp *d, long l, long s, long first)
+static void extend_plain(dp *d, long l, long s, long first)
 {
     chains *pc = &d->plain[l];
     pc->one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
-    pc->more = none, pc->arg = -1;
-    uint64_t fans = d->fans_now & d->facing[l];
-    for (uint64_t b = fans; b; b &= b - 1) {
-        size_t x = (size_t)cm_lowest_bit(b);
-        chains *fc = fanned(d, x, l);
-        fc->one = s >= 0 && has_fan(d->fwd_ok[s], x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s))} : none;
-        fc->more = none, fc->arg = -1;
-    }
     /* extend() for every plain link, the running best kept in locals
      * (the rows below l are not l: nothing they hold changes here) */
     val mv = {FAR - 1, 0.0}; /* none: every candidate costs less, but those
@@ -295,26 +292,54 @@ static void extend_chains(dp *d, long l, long s, long first)
     if (arg >= 0) pc->from_more = from_more;
     finish(pc);
     d->step_from[l] = exists(pc->best) ? pc->best.cost + 1 : FAR;
+}
+
+/* A row's fan chains start empty; each vertex's, once done, extends those
+ * of the vertices after it within the row's reach over its links: into
+ * each l they arrive by ascending vertex, the order the plain ones are
+ * read in. */
+static void start_fans(dp *d, long i, long last)
+{
+    d->row_last = last;
+    for (uint64_t b = d->fans_now; b; b &= b - 1) {
+        size_t x = (size_t)cm_lowest_bit(b);
+        for (long l = i + 1; l <= last; l++) {
+            chains *fc = fanned(d, x, l);
+            fc->more = none, fc->arg = -1;
+        }
+    }
+}
+
+static void extend_fans(dp *d, long l, long s)
+{
+    uint64_t fans = d->fans_now & d->facing[l];
     if (!fans) {
         d->fan_best[l] = d->fan_more[l] = 0;
         return;
-    }
-    for (long t = first; t < d->start[l + 1]; t++) {
-        long a = d->left[t];
-        for (uint64_t b = fans & d->fwd_ok[t] & d->fan_best[a]; b; b &= b - 1) {
-            size_t x = (size_t)cm_lowest_bit(b);
-            extend(fanned(d, x, l), a, fanned(d, x, a), (val){d->g[t].cost, qmin(d->g[t].q, fan_q(d, x, t))}, 1);
-        }
     }
     uint64_t best = 0, more = 0;
     for (uint64_t b = fans; b; b &= b - 1) {
         size_t x = (size_t)cm_lowest_bit(b);
         chains *fc = fanned(d, x, l);
+        fc->one = s >= 0 && has_fan(d->fwd_ok[s], x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s))} : none;
         finish(fc);
         best |= (uint64_t)exists(fc->best) << x;
         more |= (uint64_t)exists(fc->more) << x;
     }
     d->fan_best[l] = best, d->fan_more[l] = more;
+    for (long o = d->out_start[l]; best && o < d->out_start[l + 1] && d->out_to[o] <= d->row_last; o++) {
+        long t = d->out_link[o], e = d->out_to[o];
+        for (uint64_t b = best & d->fwd_ok[t] & d->facing[e]; b; b &= b - 1) {
+            size_t x = (size_t)cm_lowest_bit(b);
+            extend(fanned(d, x, e), l, fanned(d, x, l), (val){d->g[t].cost, qmin(d->g[t].q, fan_q(d, x, t))}, 1);
+        }
+    }
+}
+
+static void extend_chains(dp *d, long l, long s, long first)
+{
+    extend_plain(d, l, s, first);
+    extend_fans(d, l, s);
 }
 
 /* The chains from row i into l, once every link into l is solved: first[l]
@@ -341,6 +366,7 @@ static void solve(dp *d, long *first, int memo)
         long last = d->reach[i], done = i;
         d->fans_now = d->row_fans[i] & d->facing[i];
         int keep = memo && i > 0 && !d->row_fans[i];
+        if (!keep) start_fans(d, i, last);
         for (long l = i + 1; l <= last; l++) {
             long f = first[l], s = f > d->start[l] && d->left[f - 1] == i ? f - 1 : -1;
             if (keep) {
@@ -440,6 +466,17 @@ static int build_links(dp *d)
     }
     d->start[m] = d->start[m + 1] = count;
     d->nlinks = count;
+    d->out_start = calloc((size_t)m + 2, sizeof *d->out_start);
+    d->out_link = malloc(2 * ((size_t)count + 1) * sizeof *d->out_link);
+    if (!d->out_start || !d->out_link) return -1;
+    d->out_to = d->out_link + count + 1;
+    for (long t = 0; t < count; t++) d->out_start[d->left[t] + 2]++;
+    for (long a = 0; a < m; a++) d->out_start[a + 2] += d->out_start[a + 1];
+    for (long b = 0; b < m; b++) /* b ascends: each list by right ends */
+        for (long t = d->start[b]; t < d->start[b + 1]; t++) {
+            long o = d->out_start[d->left[t] + 1]++;
+            d->out_link[o] = (int32_t)t, d->out_to[o] = (int32_t)b;
+        }
     return 0;
 }
 
@@ -549,6 +586,7 @@ static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link 
                     long *cap)
 {
     d->fans_now = d->row_fans[i] & d->facing[i];
+    start_fans(d, i, a);
     for (long l = i + 1; l <= a; l++) extend_chains(d, l, find_link(d, i, l), first_after(d, l, i));
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
@@ -660,7 +698,7 @@ static void free_run(dp *d)
 
 static void free_links(dp *d)
 {
-    free(d->start), free(d->left), free(d->reach);
+    free(d->start), free(d->left), free(d->reach), free(d->out_start), free(d->out_link);
 }
 
 /* One run over the links of *d (set up, values fresh or the memo's):
@@ -739,6 +777,7 @@ int cm_steinerfree_plan_fans(const cm_sf_memo *memo, const double *fans, size_t 
     setup(&d, first->m, first->common, first->xy, first->k);
     set_fans(&d, fans, nfans);
     d.start = first->start, d.left = first->left, d.reach = first->reach, d.nlinks = first->nlinks;
+    d.out_start = first->out_start, d.out_link = first->out_link, d.out_to = first->out_to;
     d.g = malloc(c * sizeof *d.g);
     d.arg = malloc(c * sizeof *d.arg);
     d.by = malloc(c);
