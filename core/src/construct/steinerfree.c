@@ -260,7 +260,7 @@ static inline void extend(chains *c, long a, const chains *prev, val step, int f
 }
 
 /* The chains into l are done: what extending them starts from. */
-static void finish(chains *c)
+static inline void finish(chains *c)
 {
     c->best = best_of(c->one, c->more);
     c->best_more = !better(c->one, c->more);
@@ -339,7 +339,7 @@ static void extend_fans(dp *d, long l, long s)
 static void extend_chains(dp *d, long l, long s, long first)
 {
     extend_plain(d, l, s, first);
-    extend_fans(d, l, s);
+    if (d->nfans) extend_fans(d, l, s); /* else fan_best and fan_more stay 0 */
 }
 
 /* The chains from row i into l, once every link into l is solved: first[l]
