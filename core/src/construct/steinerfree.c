@@ -377,7 +377,10 @@ static void solve(dp *d, long *first, int memo)
             if (l > i + 1 && (s >= 0 || root)) {
                 slot out = s >= 0 ? (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]}
                                   : (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of};
-                if (done + 1 == l || !close_triangle(d, i, l, f, out)) {
+                if (memo && s >= 0 && d->g[s].cost == 0) {
+                    /* the memo's G: a decomposition of cost 0 has no fan
+                     * face, so both runs find the same of cost 0 */
+                } else if (done + 1 == l || !close_triangle(d, i, l, f, out)) {
                     while (done + 1 < l) extend_done(d, i, ++done, first);
                     close_face(d, i, l, f, s, out);
                 }
