@@ -104,6 +104,7 @@ typedef struct dp {
     long *step_from;    /* per l, the current row: plain[l].best.cost + 1,
                            FAR when there is none (the chains' hot loop
                            reads these alone) */
+    uint64_t *fan_in;   /* per l, the current row: see start_fans */
     uint64_t *fan_best, *fan_more; /* per l, the current row: the fan points
                                       whose chains to l exist (best), of two
                                       or more links (more) */
@@ -297,31 +298,24 @@ static void extend_plain(dp *d, long l, long s, long first)
 /* A row's fan chains start empty; each vertex's, once done, extends those
  * of the vertices after it within the row's reach over its links: into
  * each l they arrive by ascending vertex, the order the plain ones are
- * read in. */
+ * read in. fan_in[l]: the fan points whose chains of two or more links
+ * into l have had a candidate (the others' entries are stale). */
 static void start_fans(dp *d, long i, long last)
 {
     d->row_last = last;
-    for (uint64_t b = d->fans_now; b; b &= b - 1) {
-        size_t x = (size_t)cm_lowest_bit(b);
-        for (long l = i + 1; l <= last; l++) {
-            chains *fc = fanned(d, x, l);
-            fc->more = none, fc->arg = -1;
-        }
-    }
+    for (long l = i + 1; l <= last; l++) d->fan_in[l] = 0;
 }
 
 static void extend_fans(dp *d, long l, long s)
 {
     uint64_t fans = d->fans_now & d->facing[l];
-    if (!fans) {
-        d->fan_best[l] = d->fan_more[l] = 0;
-        return;
-    }
+    uint64_t in = d->fan_in[l] & fans, ones = s >= 0 ? d->fwd_ok[s] & fans : 0;
     uint64_t best = 0, more = 0;
-    for (uint64_t b = fans; b; b &= b - 1) {
+    for (uint64_t b = in | ones; b; b &= b - 1) { /* the other fan points have no chain into l */
         size_t x = (size_t)cm_lowest_bit(b);
         chains *fc = fanned(d, x, l);
-        fc->one = s >= 0 && has_fan(d->fwd_ok[s], x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s))} : none;
+        fc->one = has_fan(ones, x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s))} : none;
+        if (!has_fan(in, x)) fc->more = none, fc->arg = -1;
         finish(fc);
         best |= (uint64_t)exists(fc->best) << x;
         more |= (uint64_t)exists(fc->more) << x;
@@ -331,7 +325,10 @@ static void extend_fans(dp *d, long l, long s)
         long t = d->out_link[o], e = d->out_to[o];
         for (uint64_t b = best & d->fwd_ok[t] & d->facing[e]; b; b &= b - 1) {
             size_t x = (size_t)cm_lowest_bit(b);
-            extend(fanned(d, x, e), l, fanned(d, x, l), (val){d->g[t].cost, qmin(d->g[t].q, fan_q(d, x, t))}, 1);
+            chains *fc = fanned(d, x, e);
+            if (!has_fan(d->fan_in[e], x)) fc->more = none, fc->arg = -1; /* its first candidate */
+            d->fan_in[e] |= (uint64_t)1 << x;
+            extend(fc, l, fanned(d, x, l), (val){d->g[t].cost, qmin(d->g[t].q, fan_q(d, x, t))}, 1);
         }
     }
 }
@@ -509,13 +506,14 @@ static int build_fans(dp *d)
     size_t c = (size_t)d->nlinks + 1, f = d->nfans ? d->nfans : 1;
     /* three blocks (many small programs run): per vertex, per link, the
      * qualities */
-    d->row_fans = calloc(5 * (size_t)m, sizeof *d->row_fans);
+    d->row_fans = calloc(6 * (size_t)m, sizeof *d->row_fans);
     d->fwd_ok = calloc(2 * c, sizeof *d->fwd_ok);
     d->fan_q = malloc((f * c + f) * sizeof *d->fan_q);
     if (!d->row_fans || !d->fwd_ok || !d->fan_q) return -1;
     d->fan_best = d->row_fans + m, d->fan_more = d->row_fans + 2 * m, d->facing = d->row_fans + 3 * m;
     d->rev_ok = d->fwd_ok + c, d->root_fan = d->fan_q + f * c;
     uint64_t *parity = d->row_fans + 4 * m;
+    d->fan_in = d->row_fans + 5 * m;
     for (size_t x = 0; x < d->nfans; x++) {
         const double *f0 = d->fans + 2 * x * d->k;
         uint64_t odd = 0;
