@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define MAX_N 64
 #define MAX_SIDE 8
@@ -393,8 +394,36 @@ static void test_shared_generators(void)
     free(xy);
 }
 
+/* cm_vertex_events_sort against qsort with the same order, on random
+ * points with many repeated coordinates, every length up to 300. */
+static int event_cmp(const void *pa, const void *pb)
+{
+    const cm_vertex_event *a = pa, *b = pb;
+    if (a->x != b->x) return a->x < b->x ? -1 : 1;
+    if (a->y != b->y) return a->y < b->y ? -1 : 1;
+    return (a->vertex > b->vertex) - (a->vertex < b->vertex);
+}
+
+static void test_event_sort(void)
+{
+    uint64_t state = 20261128;
+    int bad = 0;
+    cm_vertex_event e[300], want[300];
+    for (long n = 0; n <= 300; n++) {
+        for (long i = 0; i < n; i++) {
+            e[i] = (cm_vertex_event){(double)(next_random(&state) % 7), (double)(next_random(&state) % 5),
+                                     (long)(next_random(&state) % 1000)};
+            want[i] = e[i];
+        }
+        qsort(want, (size_t)n, sizeof *want, event_cmp);
+        bad += cm_vertex_events_sort(e, n) != 0 || (n && memcmp(e, want, (size_t)n * sizeof *e) != 0);
+    }
+    CHECK_MSG(bad == 0, "event sort: %d lengths differ from qsort", bad);
+}
+
 int main(void)
 {
+    test_event_sort();
     test_hand_made();
     test_random_against_brute_force();
     test_large_star();

@@ -10,6 +10,7 @@
 #include "check.h"
 #include "compatmesh/compatmesh.h"
 #include "remesh/kmesh.h"
+#include "geom/angle.h"
 #include "geom/looptri.h"
 #include "geom/predicates.h"
 #include "random_mesh.h"
@@ -958,9 +959,37 @@ static void test_min_angle_above(int count)
     CHECK(near > 0 && mismatches == 0);
 }
 
+/* cm_triangle_max_angle is the largest of the three cm_angle_at values,
+ * to the bit: also for nearly isosceles triangles (two longest edges
+ * within the factor it trusts, and just outside it), slivers and far
+ * scales. */
+static void test_max_angle(int count)
+{
+    rp_rng rng = {20261128};
+    int mismatches = 0;
+    for (int i = 0; i < count; i++) {
+        double scale = i % 7 == 0 ? 1e-200 : i % 7 == 1 ? 1e200 : 1.0, p[3][2];
+        for (int j = 0; j < 3; j++)
+            for (int d = 0; d < 2; d++) p[j][d] = scale * (rp_uniform(&rng) - 0.5);
+        if (i % 5 == 0) /* a sliver: the third point near the first two's line */
+            for (int d = 0; d < 2; d++) p[2][d] = 0.3 * p[0][d] + 0.7 * p[1][d] + scale * 1e-9 * rp_uniform(&rng);
+        if (i % 5 == 1 || i % 5 == 2) { /* the third point near the perpendicular bisector of the first two */
+            double mx = 0.5 * (p[0][0] + p[1][0]), my = 0.5 * (p[0][1] + p[1][1]);
+            double dx = p[1][0] - p[0][0], dy = p[1][1] - p[0][1], t = rp_uniform(&rng) * 2.0 - 1.0;
+            double off = i % 5 == 1 ? 1e-7 * (rp_uniform(&rng) - 0.5) : 0.0;
+            p[2][0] = mx - t * dy + off * dx, p[2][1] = my + t * dx + off * dy;
+        }
+        double want = fmax(cm_angle_at(p[0], p[1], p[2]), fmax(cm_angle_at(p[1], p[2], p[0]), cm_angle_at(p[2], p[0], p[1])));
+        double got = cm_triangle_max_angle(p[0], p[1], p[2]);
+        mismatches += memcmp(&want, &got, sizeof got) != 0;
+    }
+    CHECK_MSG(mismatches == 0, "max angle: %d of %d differ from the three angles' largest", mismatches, count);
+}
+
 int main(void)
 {
     test_min_angle_above(40000);
+    test_max_angle(200000);
     test_property_operations(60, 400);
     test_map_descent(30);
     test_smoothing_variants();

@@ -138,7 +138,7 @@ static cm_status build_checked(cm_result *r, const double *const *xy, size_t k, 
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "not a compatible triangulation: %s", detail);
     }
     r->stats.steiner_before_remesh = nv - n;
-    s = cm_result_measure(r);
+    s = cm_result_measure(r, NULL);
     if (s != CM_OK) return s;
     r->quality_before = malloc(k * sizeof *r->quality_before);
     if (!r->quality_before) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);

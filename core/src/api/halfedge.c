@@ -8,16 +8,40 @@
 
 typedef struct { int32_t lo, hi; int32_t slot; } corner_edge; /* slot = 3t + i */
 
-static int compare_corner_edges(const void *pa, const void *pb)
+/* One stable counting pass of from[0..ns-1] into to by the key lo (by_lo)
+ * or hi, keys below nv; count: nv + 1 of scratch. */
+static void count_pass(const corner_edge *from, corner_edge *to, size_t ns, size_t nv, int by_lo, size_t *count)
 {
-    const corner_edge *a = pa, *b = pb;
-    if (a->lo != b->lo) return a->lo < b->lo ? -1 : 1;
-    if (a->hi != b->hi) return a->hi < b->hi ? -1 : 1;
-    return (a->slot > b->slot) - (a->slot < b->slot);
+    memset(count, 0, (nv + 1) * sizeof *count);
+    for (size_t i = 0; i < ns; i++) count[(size_t)(by_lo ? from[i].lo : from[i].hi) + 1]++;
+    for (size_t v = 0; v < nv; v++) count[v + 1] += count[v];
+    for (size_t i = 0; i < ns; i++) to[count[by_lo ? from[i].lo : from[i].hi]++] = from[i];
 }
 
 static int32_t slot_from(const int32_t *tri, int32_t s) { return tri[s]; }
 static int32_t slot_to(const int32_t *tri, int32_t s) { return tri[s - s % 3 + (s + 1) % 3]; }
+
+/* The triangles' ns directed edges as (lo, hi, slot), sorted by lo, then
+ * hi, then slot: made by ascending slot, so a stable pass by hi, then one
+ * by lo, O(ns + nv) (vertices checked to be below nv). 0, or -1 out of
+ * memory. */
+static int sorted_corner_edges(const int32_t *tri, size_t ns, size_t nv, corner_edge *e)
+{
+    corner_edge *tmp = calloc(ns + 1, sizeof *tmp);
+    size_t *count = malloc((nv + 1) * sizeof *count);
+    if (tmp && count) {
+        for (size_t s = 0; s < ns; s++) {
+            int32_t a = slot_from(tri, (int32_t)s), b = slot_to(tri, (int32_t)s);
+            tmp[s] = (corner_edge){a < b ? a : b, a < b ? b : a, (int32_t)s};
+        }
+        count_pass(tmp, e, ns, nv, 0, count);
+        count_pass(e, tmp, ns, nv, 1, count);
+        memcpy(e, tmp, ns * sizeof *e);
+    }
+    int status = tmp && count ? 0 : -1;
+    free(tmp), free(count);
+    return status;
+}
 
 static cm_status check_orientation(cm_result *r)
 {
@@ -60,11 +84,10 @@ static long pair_edges(cm_result *r, const int32_t *boundary, const size_t *loop
     size_t ns = 3 * m->nt, n = r->n;
     corner_edge *e = malloc((ns + 1) * sizeof *e);
     if (!e) return -1;
-    for (size_t s = 0; s < ns; s++) {
-        int32_t a = slot_from(m->tri, (int32_t)s), b = slot_to(m->tri, (int32_t)s);
-        e[s] = (corner_edge){a < b ? a : b, a < b ? b : a, (int32_t)s};
+    if (sorted_corner_edges(m->tri, ns, m->nv, e) != 0) {
+        free(e);
+        return -1;
     }
-    qsort(e, ns, sizeof *e, compare_corner_edges);
     size_t interior = 0, on_boundary = 0;
     for (size_t i = 0; i < ns;) {
         size_t j = i + 1;

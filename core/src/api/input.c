@@ -11,30 +11,18 @@
 #include "geom/predicates.h"
 
 
-/* qsort has no context argument in C11: sort (index, coords) records. */
-typedef struct { double x, y; long i; } indexed_point;
-
-static int compare_indexed(const void *pa, const void *pb)
-{
-    const indexed_point *a = pa, *b = pb;
-    if (a->x != b->x) return a->x < b->x ? -1 : 1;
-    if (a->y != b->y) return a->y < b->y ? -1 : 1;
-    return a->i < b->i ? -1 : (a->i > b->i);
-}
-
 /* Finds two vertices with identical coordinates in O(n log n).
  * Returns 1 (and *first < *second), 0 if none, -1 out of memory. */
 static int first_repeated_vertex(const double *xy, long n, long *first, long *second)
 {
-    indexed_point *p = malloc((size_t)n * sizeof *p);
+    cm_vertex_event *p = malloc((size_t)n * sizeof *p);
     if (!p) return -1;
-    for (long i = 0; i < n; i++) p[i] = (indexed_point){xy[2 * i], xy[2 * i + 1], i};
-    qsort(p, (size_t)n, sizeof *p, compare_indexed);
-    int found = 0;
+    for (long i = 0; i < n; i++) p[i] = (cm_vertex_event){xy[2 * i], xy[2 * i + 1], i};
+    int found = cm_vertex_events_sort(p, n) != 0 ? -1 : 0;
     for (long i = 1; i < n && !found; i++) {
         if (p[i].x == p[i - 1].x && p[i].y == p[i - 1].y) {
-            *first = p[i - 1].i;
-            *second = p[i].i;
+            *first = p[i - 1].vertex;
+            *second = p[i].vertex;
             found = 1;
         }
     }

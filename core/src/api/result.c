@@ -18,12 +18,15 @@ void cm_result_clear_geometry(cm_result *r)
     r->nh = 0;
 }
 
-cm_status cm_result_measure(cm_result *r)
+cm_status cm_result_measure(cm_result *r, const cm_quality *known)
 {
     size_t k = r->mesh.k;
     r->quality = calloc(k, sizeof *r->quality);
     if (!r->quality) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-    for (size_t g = 0; g < k; g++) cm_mesh_quality(&r->mesh, g, &r->quality[g]);
+    for (size_t g = 0; g < k; g++) {
+        if (known) r->quality[g] = known[g];
+        else cm_mesh_quality(&r->mesh, g, &r->quality[g]);
+    }
     r->stats.vertices = r->mesh.nv;
     r->stats.steiner = r->mesh.nv - r->n;
     r->stats.triangles = r->mesh.nt;

@@ -27,7 +27,9 @@ struct cm_result {
 
 /* Drops all geometry, keeping status and message (a failed result). */
 void cm_result_clear_geometry(cm_result *r);
-/* Fills r->quality and the size stats of a checked result. */
-cm_status cm_result_measure(cm_result *r);
+/* Fills r->quality and the size stats of a checked result. known: NULL,
+ * or each geometry's quality already measured on this very mesh (the
+ * same triangles in the same order, the vertices at most renumbered). */
+cm_status cm_result_measure(cm_result *r, const cm_quality *known);
 
 #endif

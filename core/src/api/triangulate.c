@@ -66,17 +66,36 @@ static int32_t input_index(int32_t j, size_t n, int clockwise)
     return clockwise && j > 0 && (size_t)j < n ? (int32_t)(n - (size_t)j) : j;
 }
 
-/* The first compatible triangulation, by the chosen method. */
-static cm_status construct(cm_result *r, const double *const *geoms, const int32_t *const *tris,
+/* Each polygon's constrained Delaunay triangulation, into tris[g]. */
+static cm_status delaunay_tris(cm_result *r, const double *const *geoms, size_t k, size_t n, cm_progress *progress,
+                               int32_t *const *tris)
+{
+    int32_t *idx = malloc(n * sizeof *idx);
+    int t = idx ? 0 : CM_NO_MEMORY;
+    for (size_t i = 0; idx && i < n; i++) idx[i] = (int32_t)i;
+    for (size_t g = 0; t == 0 && g < k; g++) t = cm_polygon_triangulate(geoms[g], idx, (long)n, tris[g], progress);
+    free(idx);
+    if (t == CM_CANCELLED) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
+    if (t < 0) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    if (t > 0) return cm_fail(&r->error, CM_ERR_INTERNAL, "ear clipping found no ear");
+    return CM_OK;
+}
+
+/* The first compatible triangulation, by the chosen method. tris: each
+ * polygon's triangulation, the Delaunay one if delaunay (the overlay's
+ * input), else any (the partition only walks them); a partition that
+ * falls back to the overlay then makes the Delaunay ones in their place. */
+static cm_status construct(cm_result *r, const double *const *geoms, int32_t *const *tris, int delaunay,
                            size_t k, size_t n, const cm_on_edges *on, const cm_options *o, cm_progress *progress)
 {
+    const int32_t *const *given = (const int32_t *const *)tris;
     if (o->method == CM_METHOD_OVERLAY) {
         size_t centroids = 0;
-        return cm_overlay(geoms, tris, k, n, &r->mesh, &centroids, &r->error);
+        return cm_overlay(geoms, given, k, n, &r->mesh, &centroids, &r->error);
     }
     cm_partition_stats ps;
-    cm_status s = on ? cm_partition_on_edges(geoms, tris, k, n, on, progress, &r->mesh, &ps, &r->error)
-                     : cm_partition(geoms, tris, k, n, progress, &r->mesh, &ps, &r->error);
+    cm_status s = on ? cm_partition_on_edges(geoms, given, k, n, on, progress, &r->mesh, &ps, &r->error)
+                     : cm_partition(geoms, given, k, n, progress, &r->mesh, &ps, &r->error);
     r->stats.fallback_count = ps.fallback_count;
     if (s != CM_ERR_INTERNAL && s != CM_ERR_PRECISION) return s;
     /* A piece the overlay could not place in doubles (a sliver thinner
@@ -84,9 +103,10 @@ static cm_status construct(cm_result *r, const double *const *geoms, const int32
      * none, so the guaranteed construction runs on all of it. */
     cm_mesh_clear(&r->mesh);
     cm_error_init(&r->error);
+    if (!delaunay && (s = delaunay_tris(r, geoms, k, n, progress, tris)) != CM_OK) return s;
     size_t centroids = 0;
     r->stats.fallback_count++;
-    return cm_overlay(geoms, tris, k, n, &r->mesh, &centroids, &r->error);
+    return cm_overlay(geoms, given, k, n, &r->mesh, &centroids, &r->error);
 }
 
 /* on: where the boundary vertices lie on the inputs (NULL: all input
@@ -99,6 +119,10 @@ static cm_status build_first(cm_result *r, const double *const *polygons, const 
     cm_status s = CM_ERR_NO_MEMORY;
     double **geoms = calloc(k, sizeof *geoms);
     int32_t **tris = calloc(k, sizeof *tris), *idx = malloc(n * sizeof *idx);
+    /* the partition only walks the triangulations (visibility, the same
+     * whatever the triangulation): ear clipping alone serves it unless the
+     * ceiling or the overlay takes them */
+    int delaunay = (given && !clockwise) || o->ceiling || o->method == CM_METHOD_OVERLAY;
     if (!geoms || !tris || !idx) goto done;
     for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
     for (size_t g = 0; g < k; g++) {
@@ -113,8 +137,10 @@ static cm_status build_first(cm_result *r, const double *const *polygons, const 
         int t = 0;
         if (given && !clockwise) /* made on these very polygons */
             memcpy(tris[g], given[g], 3 * (n - 2) * sizeof *tris[g]);
-        else
+        else if (delaunay)
             t = cm_polygon_triangulate(geoms[g], idx, (long)n, tris[g], progress);
+        else
+            t = cm_polygon_ear_clip(geoms[g], idx, (long)n, tris[g], progress);
         if (t == CM_CANCELLED) s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
         if (t < 0) goto done;
         if (t > 0) {
@@ -140,7 +166,7 @@ static cm_status build_first(cm_result *r, const double *const *polygons, const 
             r->stats.distortion_quad[i] = b.quad[i] < 0 ? -1 : input_index((int32_t)b.quad[i], n, clockwise);
         r->stats.seconds_ceiling += cm_seconds_now() - t;
     }
-    s = construct(r, (const double *const *)geoms, (const int32_t *const *)tris, k, n, on, o, progress);
+    s = construct(r, (const double *const *)geoms, tris, delaunay, k, n, on, o, progress);
 done:
     if (geoms)
         for (size_t g = 0; g < k; g++) free(geoms[g]);
@@ -333,7 +359,8 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     r->stats.seconds_check = cm_seconds_now() - t2;
 
-    s = cm_result_measure(r);
+    /* without remeshing the mesh is the one remesh_stage measured */
+    s = cm_result_measure(r, o->remesh ? NULL : r->quality_before);
     if (s != CM_OK) return s;
     if (cm_progress_report(&progress, CM_STAGE_DONE, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
     return CM_OK;
@@ -1027,7 +1054,7 @@ static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, con
     if (s == CM_ERR_NO_MEMORY) cm_fail_status(&r->error, s);
     if (s != CM_OK) goto done;
     r->stats.seconds_check = cm_seconds_now() - t2;
-    s = cm_result_measure(r);
+    s = cm_result_measure(r, NULL);
     if (s == CM_OK && cm_progress_report(&progress, CM_STAGE_DONE, 0.0)) s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
     if (s == CM_OK) r->loop_start = start, r->num_loops = num_loops, start = NULL; /* the morph fills the holes */
     goto done;

@@ -283,7 +283,7 @@ static int open_rows(const double *const *xy, const int32_t *const *tris, size_t
     for (long i = 0; status == 0 && i < m; i++) idx[i] = (int32_t)i;
     for (size_t g = 0; status == 0 && g < k; g++) {
         const int32_t *t = tris ? tris[g] : r->tri + 3 * (size_t)m * g;
-        if (!tris) status = cm_polygon_ear_clip(xy[g], idx, m, r->tri + 3 * (size_t)m * g);
+        if (!tris) status = cm_polygon_ear_clip(xy[g], idx, m, r->tri + 3 * (size_t)m * g, NULL);
         if (status == 0 && !(r->rows[g] = cm_visrows_create(xy[g], m, t))) status = -1;
     }
     free(idx);

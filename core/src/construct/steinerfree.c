@@ -23,6 +23,8 @@
 typedef struct { long cost; double q; } val;
 
 static const val none = {LONG_MAX, 0.0};
+/* Beyond every cost, with room to add two of them. */
+#define FAR (LONG_MAX / 4)
 #define NO_TRIANGLE 2.0 /* quality of a value without triangles */
 
 /* fmin without the library call (the same result for every pair of
@@ -61,6 +63,11 @@ typedef struct dp {
     int tame; /* every coordinate and fan point tame (cm_coords_tame) */
     long *start;      /* links ending at l: left[start[l] .. start[l+1]) */
     int32_t *left;    /* ascending */
+    long *out_start;  /* links leaving a: out_link[out_start[a] ..
+                         out_start[a+1]), their right ends in out_to,
+                         ascending */
+    int32_t *out_link, *out_to;
+    long row_last;    /* the farthest l the current row's fan chains reach */
     val *g;           /* per link */
     int32_t *arg;     /* per link: the chain's last vertex before l */
     unsigned char *by;
@@ -94,6 +101,10 @@ typedef struct dp {
     double *root_fan;  /* per fan point: that triangle's quality */
     long nlinks;
     chains *plain, *fanned; /* the current row; fanned: nfans rows of m */
+    long *step_from;    /* per l, the current row: plain[l].best.cost + 1,
+                           FAR when there is none (the chains' hot loop
+                           reads these alone) */
+    uint64_t *fan_in;   /* per l, the current row: see start_fans */
     uint64_t *fan_best, *fan_more; /* per l, the current row: the fan points
                                       whose chains to l exist (best), of two
                                       or more links (more) */
@@ -194,6 +205,24 @@ static int could_win(long cost, double q, val cur)
     return cost < cur.cost || (cost == cur.cost && (q > cur.q || q != q));
 }
 
+/* G for the link (i, l) (or the root) when a triangle on it costs 0: a
+ * face of three or more links, or a fan face, costs at least 1, so only
+ * the triangles of cost 0 can win, in the order close_face offers them,
+ * and the row's chains are not needed (one[] is). 1 done, 0 not. */
+static int close_triangle(const dp *d, long i, long l, long first, slot out)
+{
+    pick p = {none, -1, BY_TRIANGLE, -1};
+    for (long s = first; s < d->start[l + 1]; s++) {
+        long a = d->left[s];
+        val gl = d->g[s], one = d->plain[a].one;
+        if (gl.cost == 0 && one.cost == 1 && could_win(0, qmin(one.q, gl.q), p.value))
+            offer((val){0, qmin(qmin(one.q, gl.q), triangle_quality(d, i, a, l))}, BY_TRIANGLE, (int32_t)a, -1, &p);
+    }
+    if (p.value.cost != 0) return 0;
+    *out.value = p.value, *out.arg = p.arg, *out.by = p.by, *out.fan_of = p.fan_of;
+    return 1;
+}
+
 /* G for the link (i, l) (or the root): the face on it closes a chain of
  * two links (a triangle), of three or more (a stuck face), or a fan chain
  * of three or more from a fan point whose triangle on the closing edge
@@ -232,7 +261,7 @@ static inline void extend(chains *c, long a, const chains *prev, val step, int f
 }
 
 /* The chains into l are done: what extending them starts from. */
-static void finish(chains *c)
+static inline void finish(chains *c)
 {
     c->best = best_of(c->one, c->more);
     c->best_more = !better(c->one, c->more);
@@ -242,82 +271,118 @@ static void finish(chains *c)
  * s: the link (i, l) or -1; first: the first link into l from beyond i. A plain chain counts each link once (it adds
  * a face vertex); a fan chain only collects G, the fan face costs 1 in
  * all. */
-static void extend_chains(dp *d, long l, long s, long first)
+static void extend_plain(dp *d, long l, long s, long first)
 {
     chains *pc = &d->plain[l];
     pc->one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
-    pc->more = none, pc->arg = -1;
-    uint64_t fans = d->fans_now & d->facing[l];
-    for (uint64_t b = fans; b; b &= b - 1) {
-        size_t x = (size_t)cm_lowest_bit(b);
-        chains *fc = fanned(d, x, l);
-        fc->one = s >= 0 && has_fan(d->fwd_ok[s], x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s))} : none;
-        fc->more = none, fc->arg = -1;
-    }
     /* extend() for every plain link, the running best kept in locals
      * (the rows below l are not l: nothing they hold changes here) */
-    val mv = none;
+    val mv = {FAR - 1, 0.0}; /* none: every candidate costs less, but those
+                                from a missing chain (FAR or more) */
     int32_t arg = -1;
     unsigned char from_more = 0;
     for (long t = first, end = d->start[l + 1]; t < end; t++) {
-        const chains *prev = &d->plain[d->left[t]];
-        if (!exists(prev->best)) continue;
-        long cost = prev->best.cost + d->g[t].cost + 1;
+        int32_t a = d->left[t];
+        long cost = d->step_from[a] + d->g[t].cost; /* G of a solved link exists */
         if (cost > mv.cost) continue;
+        const chains *prev = &d->plain[a];
         val v = {cost, qmin(prev->best.q, d->g[t].q)};
-        if (better(v, mv)) mv = v, arg = d->left[t], from_more = prev->best_more;
+        if (better(v, mv)) mv = v, arg = a, from_more = prev->best_more;
     }
-    pc->more = mv, pc->arg = arg;
+    pc->more = arg >= 0 ? mv : none, pc->arg = arg;
     if (arg >= 0) pc->from_more = from_more;
     finish(pc);
-    if (!fans) {
-        d->fan_best[l] = d->fan_more[l] = 0;
-        return;
-    }
-    for (long t = first; t < d->start[l + 1]; t++) {
-        long a = d->left[t];
-        for (uint64_t b = fans & d->fwd_ok[t] & d->fan_best[a]; b; b &= b - 1) {
-            size_t x = (size_t)cm_lowest_bit(b);
-            extend(fanned(d, x, l), a, fanned(d, x, a), (val){d->g[t].cost, qmin(d->g[t].q, fan_q(d, x, t))}, 1);
-        }
-    }
+    d->step_from[l] = exists(pc->best) ? pc->best.cost + 1 : FAR;
+}
+
+/* A row's fan chains start empty; each vertex's, once done, extends those
+ * of the vertices after it within the row's reach over its links: into
+ * each l they arrive by ascending vertex, the order the plain ones are
+ * read in. fan_in[l]: the fan points whose chains of two or more links
+ * into l have had a candidate (the others' entries are stale). */
+static void start_fans(dp *d, long i, long last)
+{
+    d->row_last = last;
+    for (long l = i + 1; l <= last; l++) d->fan_in[l] = 0;
+}
+
+static void extend_fans(dp *d, long l, long s)
+{
+    uint64_t fans = d->fans_now & d->facing[l];
+    uint64_t in = d->fan_in[l] & fans, ones = s >= 0 ? d->fwd_ok[s] & fans : 0;
     uint64_t best = 0, more = 0;
-    for (uint64_t b = fans; b; b &= b - 1) {
+    for (uint64_t b = in | ones; b; b &= b - 1) { /* the other fan points have no chain into l */
         size_t x = (size_t)cm_lowest_bit(b);
         chains *fc = fanned(d, x, l);
+        fc->one = has_fan(ones, x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s))} : none;
+        if (!has_fan(in, x)) fc->more = none, fc->arg = -1;
         finish(fc);
         best |= (uint64_t)exists(fc->best) << x;
         more |= (uint64_t)exists(fc->more) << x;
     }
     d->fan_best[l] = best, d->fan_more[l] = more;
+    for (long o = d->out_start[l]; best && o < d->out_start[l + 1] && d->out_to[o] <= d->row_last; o++) {
+        long t = d->out_link[o], e = d->out_to[o];
+        for (uint64_t b = best & d->fwd_ok[t] & d->facing[e]; b; b &= b - 1) {
+            size_t x = (size_t)cm_lowest_bit(b);
+            chains *fc = fanned(d, x, e);
+            if (!has_fan(d->fan_in[e], x)) fc->more = none, fc->arg = -1; /* its first candidate */
+            d->fan_in[e] |= (uint64_t)1 << x;
+            extend(fc, l, fanned(d, x, l), (val){d->g[t].cost, qmin(d->g[t].q, fan_q(d, x, t))}, 1);
+        }
+    }
+}
+
+static void extend_chains(dp *d, long l, long s, long first)
+{
+    extend_plain(d, l, s, first);
+    if (d->nfans) extend_fans(d, l, s); /* else fan_best and fan_more stay 0 */
+}
+
+/* The chains from row i into l, once every link into l is solved: first[l]
+ * already moved to the link (i, l) if there is one. */
+static void extend_done(dp *d, long i, long l, const long *first)
+{
+    long f = first[l], s = f < d->start[l + 1] && d->left[f] == i ? f : -1;
+    extend_chains(d, l, s, s >= 0 ? f + 1 : f);
 }
 
 /* Rows from the last up. first[l]: the first link into l from beyond the
  * row (a link from the row into l, if any, just before it). With a memo
  * (a run without fan points over the same links), a row other than the
  * root's whose sub-polygons hold no fan point keeps its values: G of such
- * a link admits no fan face, and every link inside it is such a link. */
+ * a link admits no fan face, and every link inside it is such a link.
+ * A row's chains are extended only as far as a link of the row needs
+ * them: close_triangle is tried first where they are behind, and one[]
+ * is kept for every l. */
 static void solve(dp *d, long *first, int memo)
 {
     long m = d->m;
     for (long l = 0; l < m; l++) first[l] = d->start[l + 1];
     for (long i = m - 2; i >= 0; i--) {
-        long last = d->reach[i];
+        long last = d->reach[i], done = i;
         d->fans_now = d->row_fans[i] & d->facing[i];
         int keep = memo && i > 0 && !d->row_fans[i];
+        if (!keep) start_fans(d, i, last);
         for (long l = i + 1; l <= last; l++) {
             long f = first[l], s = f > d->start[l] && d->left[f - 1] == i ? f - 1 : -1;
             if (keep) {
                 if (s >= 0) first[l] = s;
                 continue;
             }
-            if (l > i + 1) {
-                if (s >= 0)
-                    close_face(d, i, l, f, s, (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]});
-                else if (i == 0 && l == m - 1)
-                    close_face(d, i, l, f, -1, (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of});
+            int root = s < 0 && i == 0 && l == m - 1;
+            if (l > i + 1 && (s >= 0 || root)) {
+                slot out = s >= 0 ? (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]}
+                                  : (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of};
+                if (memo && s >= 0 && d->g[s].cost == 0) {
+                    /* the memo's G: a decomposition of cost 0 has no fan
+                     * face, so both runs find the same of cost 0 */
+                } else if (done + 1 == l || !close_triangle(d, i, l, f, out)) {
+                    while (done + 1 < l) extend_done(d, i, ++done, first);
+                    close_face(d, i, l, f, s, out);
+                }
             }
-            extend_chains(d, l, s, f);
+            d->plain[l].one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
             if (s >= 0) first[l] = s;
         }
     }
@@ -349,10 +414,21 @@ static uint64_t fans_inside(const dp *d, const uint64_t *parity, long a, long b,
     return in & which;
 }
 
+/* The first set vertex of a view whose vertices are consecutive in its
+ * set (map NULL, or map[i] = map[0] + i), else -1: its rows are read by
+ * words. */
+static long consecutive_base(const cm_diagview *v, long m)
+{
+    if (!v->map) return 0;
+    for (long i = 1; i < m; i++)
+        if (v->map[i] != v->map[0] + i) return -1;
+    return v->map[0];
+}
+
 /* The links, by their right ends, and each row's reach. */
 static int build_links(dp *d)
 {
-    long m = d->m, count = 0;
+    long m = d->m, count = 0, base = consecutive_base(d->common, m);
     size_t cap = 0;
     d->start = calloc((size_t)m + 2, sizeof *d->start);
     d->reach = malloc((size_t)m * sizeof *d->reach);
@@ -360,6 +436,27 @@ static int build_links(dp *d)
     for (long i = 0; i < m; i++) d->reach[i] = i == 0 ? m - 1 : i + 1;
     for (long b = 0; b < m; b++) {
         d->start[b] = count;
+        if (base >= 0 && b > 0) {
+            /* the diagonals a < b - 1 (not 0 for the closing edge) from the
+             * set's row of b, ascending, then the edge b - 1 */
+            const cm_diagset *set = d->common->set;
+            const uint64_t *row = set->bits + (size_t)(base + b) * set->stride;
+            long lo = base + (b == m - 1), hi = base + b - 1;
+            for (long w = lo / 64; 64 * w < hi; w++) {
+                uint64_t bits = row[w];
+                if (64 * w < lo) bits &= ~(uint64_t)0 << (lo - 64 * w);
+                if (64 * w + 64 > hi) bits &= ((uint64_t)1 << (hi - 64 * w)) - 1;
+                if (cm_grow((void **)&d->left, &cap, (size_t)count + 64 + 1, sizeof *d->left) != 0) return -1;
+                for (; bits; bits &= bits - 1) {
+                    long a = 64 * w + cm_lowest_bit(bits) - base;
+                    d->left[count++] = (int32_t)a;
+                    if (a > 0) d->reach[a] = b; /* b ascends: the farthest last */
+                }
+            }
+            if (cm_grow((void **)&d->left, &cap, (size_t)count + 1, sizeof *d->left) != 0) return -1;
+            d->left[count++] = (int32_t)(b - 1);
+            continue;
+        }
         for (long a = 0; a < b; a++) {
             if (!is_link(d, a, b)) continue;
             if (cm_grow((void **)&d->left, &cap, (size_t)count + 1, sizeof *d->left) != 0) return -1;
@@ -369,6 +466,17 @@ static int build_links(dp *d)
     }
     d->start[m] = d->start[m + 1] = count;
     d->nlinks = count;
+    d->out_start = calloc((size_t)m + 2, sizeof *d->out_start);
+    d->out_link = malloc(2 * ((size_t)count + 1) * sizeof *d->out_link);
+    if (!d->out_start || !d->out_link) return -1;
+    d->out_to = d->out_link + count + 1;
+    for (long t = 0; t < count; t++) d->out_start[d->left[t] + 2]++;
+    for (long a = 0; a < m; a++) d->out_start[a + 2] += d->out_start[a + 1];
+    for (long b = 0; b < m; b++) /* b ascends: each list by right ends */
+        for (long t = d->start[b]; t < d->start[b + 1]; t++) {
+            long o = d->out_start[d->left[t] + 1]++;
+            d->out_link[o] = (int32_t)t, d->out_to[o] = (int32_t)b;
+        }
     return 0;
 }
 
@@ -398,13 +506,14 @@ static int build_fans(dp *d)
     size_t c = (size_t)d->nlinks + 1, f = d->nfans ? d->nfans : 1;
     /* three blocks (many small programs run): per vertex, per link, the
      * qualities */
-    d->row_fans = calloc(5 * (size_t)m, sizeof *d->row_fans);
+    d->row_fans = calloc(6 * (size_t)m, sizeof *d->row_fans);
     d->fwd_ok = calloc(2 * c, sizeof *d->fwd_ok);
     d->fan_q = malloc((f * c + f) * sizeof *d->fan_q);
     if (!d->row_fans || !d->fwd_ok || !d->fan_q) return -1;
     d->fan_best = d->row_fans + m, d->fan_more = d->row_fans + 2 * m, d->facing = d->row_fans + 3 * m;
     d->rev_ok = d->fwd_ok + c, d->root_fan = d->fan_q + f * c;
     uint64_t *parity = d->row_fans + 4 * m;
+    d->fan_in = d->row_fans + 5 * m;
     for (size_t x = 0; x < d->nfans; x++) {
         const double *f0 = d->fans + 2 * x * d->k;
         uint64_t odd = 0;
@@ -478,6 +587,7 @@ static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link 
                     long *cap)
 {
     d->fans_now = d->row_fans[i] & d->facing[i];
+    start_fans(d, i, a);
     for (long l = i + 1; l <= a; l++) extend_chains(d, l, find_link(d, i, l), first_after(d, l, i));
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
@@ -584,12 +694,12 @@ struct cm_sf_memo {
 static void free_run(dp *d)
 {
     free(d->g), free(d->arg), free(d->by), free(d->fan_of);
-    free(d->fwd_ok), free(d->fan_q), free(d->plain), free(d->fanned), free(d->row_fans);
+    free(d->fwd_ok), free(d->fan_q), free(d->plain), free(d->step_from), free(d->fanned), free(d->row_fans);
 }
 
 static void free_links(dp *d)
 {
-    free(d->start), free(d->left), free(d->reach);
+    free(d->start), free(d->left), free(d->reach), free(d->out_start), free(d->out_link);
 }
 
 /* One run over the links of *d (set up, values fresh or the memo's):
@@ -599,10 +709,11 @@ static int run(dp *d, int memo, cm_sf_plan *plan)
     long m = d->m;
     d->root = none, d->root_arg = -1, d->root_by = BY_TRIANGLE, d->root_fan_of = -1;
     d->plain = malloc((size_t)m * sizeof *d->plain);
+    d->step_from = malloc((size_t)m * sizeof *d->step_from);
     d->fanned = malloc((size_t)m * (d->nfans ? d->nfans : 1) * sizeof *d->fanned);
     long *first = malloc((size_t)m * sizeof *first);
     int status = -1;
-    if (d->plain && d->fanned && first && build_fans(d) == 0) {
+    if (d->plain && d->step_from && d->fanned && first && build_fans(d) == 0) {
         solve(d, first, memo);
         plan->cost = d->root.cost;
         double q = qmin(d->root.q, 1.0);
@@ -667,6 +778,7 @@ int cm_steinerfree_plan_fans(const cm_sf_memo *memo, const double *fans, size_t 
     setup(&d, first->m, first->common, first->xy, first->k);
     set_fans(&d, fans, nfans);
     d.start = first->start, d.left = first->left, d.reach = first->reach, d.nlinks = first->nlinks;
+    d.out_start = first->out_start, d.out_link = first->out_link, d.out_to = first->out_to;
     d.g = malloc(c * sizeof *d.g);
     d.arg = malloc(c * sizeof *d.arg);
     d.by = malloc(c);

@@ -78,8 +78,22 @@ int cm_triangle_min_angle_above(const double a[2], const double b[2], const doub
     return atan2(area2, dot) > bound;
 }
 
+/* The largest of the three angles as cm_angle_at computes them. When one
+ * squared edge length exceeds both others by a factor 1 + 1e-6, the angle
+ * opposite it exceeds both others by far more than their rounding (at
+ * least about 1e-10 radians, against some 1e-15): it is that one, and the
+ * other two need no atan2. */
 double cm_triangle_max_angle(const double a[2], const double b[2], const double c[2])
 {
+    const double wider = 1.0 + 1e-6;
+    double lab = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+    double lbc = (c[0] - b[0]) * (c[0] - b[0]) + (c[1] - b[1]) * (c[1] - b[1]);
+    double lca = (a[0] - c[0]) * (a[0] - c[0]) + (a[1] - c[1]) * (a[1] - c[1]);
+    if (in_safe_range(lab + lbc + lca)) {
+        if (lab > wider * lbc && lab > wider * lca) return cm_angle_at(c, a, b);
+        if (lbc > wider * lab && lbc > wider * lca) return cm_angle_at(a, b, c);
+        if (lca > wider * lab && lca > wider * lbc) return cm_angle_at(b, c, a);
+    }
     return fmax(cm_angle_at(a, b, c), fmax(cm_angle_at(b, c, a), cm_angle_at(c, a, b)));
 }
 

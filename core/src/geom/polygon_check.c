@@ -20,6 +20,7 @@
 
 #include <stdint.h>
 #include <stdlib.h>
+#include <string.h>
 
 typedef struct status_node {
     long left, right, parent; /* treap links, -1 for none */
@@ -36,10 +37,7 @@ typedef struct scanline {
     long hit_a, hit_b; /* the offending pair, once found */
 } scanline;
 
-typedef struct vertex_event {
-    double x, y;
-    long vertex;
-} vertex_event;
+typedef cm_vertex_event vertex_event;
 
 /* ---- geometry -------------------------------------------------------- */
 
@@ -224,12 +222,40 @@ static int status_remove(scanline *sw, long s)
 
 /* ---- scan line ----------------------------------------------------------- */
 
-static int event_order(const void *pa, const void *pb)
+static int event_before(const vertex_event *a, const vertex_event *b)
 {
-    const vertex_event *a = pa, *b = pb;
-    if (a->x != b->x) return a->x < b->x ? -1 : 1;
-    if (a->y != b->y) return a->y < b->y ? -1 : 1;
-    return (a->vertex > b->vertex) - (a->vertex < b->vertex);
+    if (a->x != b->x) return a->x < b->x;
+    if (a->y != b->y) return a->y < b->y;
+    return a->vertex < b->vertex;
+}
+
+int cm_vertex_events_sort(cm_vertex_event *e, long n)
+{
+    enum { RUN = 8 };
+    for (long lo = 0; lo < n; lo += RUN) /* insertion sort of short runs */
+        for (long i = lo + 1; i < n && i < lo + RUN; i++) {
+            vertex_event x = e[i];
+            long j = i;
+            for (; j > lo && event_before(&x, &e[j - 1]); j--) e[j] = e[j - 1];
+            e[j] = x;
+        }
+    if (n <= RUN) return 0;
+    vertex_event *tmp = malloc((size_t)n * sizeof *tmp), *from = e, *to = tmp;
+    if (!tmp) return -1;
+    for (long width = RUN; width < n; width *= 2) {
+        for (long lo = 0; lo < n; lo += 2 * width) {
+            long mid = lo + width < n ? lo + width : n, hi = lo + 2 * width < n ? lo + 2 * width : n;
+            long a = lo, b = mid, k = lo;
+            while (a < mid && b < hi) to[k++] = event_before(&from[b], &from[a]) ? from[b++] : from[a++];
+            while (a < mid) to[k++] = from[a++];
+            while (b < hi) to[k++] = from[b++];
+        }
+        vertex_event *t = from;
+        from = to, to = t;
+    }
+    if (from != e) memcpy(e, from, (size_t)n * sizeof *e);
+    free(tmp);
+    return 0;
 }
 
 /* Edges ending at vertex v leave the status before edges starting there
@@ -264,7 +290,7 @@ static int run_scanline(scanline *sw, vertex_event *events)
 {
     for (long v = 0; v < sw->n; v++)
         events[v] = (vertex_event){sw->xy[2 * v], sw->xy[2 * v + 1], v};
-    qsort(events, (size_t)sw->n, sizeof *events, event_order);
+    if (cm_vertex_events_sort(events, sw->n) != 0) return -1;
     if (find_repeated_vertex(sw, events)) return 1;
     for (long k = 0; k < sw->n; k++)
         if (process_vertex(sw, events[k].vertex)) return 1;

@@ -22,4 +22,15 @@ int cm_polygon_find_intersection(const double *xy, long n, long *edge_a,
 int cm_loops_find_intersection(const double *xy, const size_t *loop_sizes, size_t num_loops,
                                long *edge_a, long *edge_b);
 
+/* A vertex of a polygon, for sorting by x, then y, then index: a total
+ * order for finite coordinates, so every sort gives the same result. */
+typedef struct cm_vertex_event {
+    double x, y;
+    long vertex;
+} cm_vertex_event;
+
+/* Sorts e[0..n-1] in that order (merge sort, O(n log n), the comparisons
+ * inline). 0, or -1 out of memory. */
+int cm_vertex_events_sort(cm_vertex_event *e, long n);
+
 #endif

@@ -21,6 +21,7 @@ typedef struct {
     const int32_t *idx;
     long *prev, *next;
     signed char *convex, *ear;
+    long *cells;    /* per ear: the grid cells under its bounding box */
     long remaining; /* vertices left on the ring */
     int tame;       /* every coordinate tame (cm_coords_tame) */
     cm_pointgrid grid;
@@ -46,14 +47,6 @@ static void ear_box(const ring *r, long a, long b, long c, double box[4])
     box[2] = max3(pa[0], pb[0], pc[0]), box[3] = max3(pa[1], pb[1], pc[1]);
 }
 
-/* The grid cells under the bounding box of triangle abc (cm_pointgrid_range). */
-static long ear_range(const ring *r, long a, long b, long c, long cells[4])
-{
-    double box[4];
-    ear_box(r, a, b, c, box);
-    return cm_pointgrid_range(&r->grid, box[0], box[1], box[2], box[3], cells);
-}
-
 /* Is p inside or on the closed triangle abc (counter-clockwise, box its
  * bounding box)? Outside the box it is outside the triangle: compared
  * first, exactly. */
@@ -68,14 +61,14 @@ static int in_ear(const double *pa, const double *pb, const double *pc, const do
 }
 
 /* Is any vertex of the ring (other than a, b, c) inside or on the closed
- * triangle abc (strictly convex)? */
-static int ear_blocked(const ring *r, long a, long b, long c)
+ * triangle abc (strictly convex)? Sets r->cells[b]. */
+static int ear_blocked(ring *r, long a, long b, long c)
 {
     const double *xy = r->xy, *pa = P(r->idx[a]), *pb = P(r->idx[b]), *pc = P(r->idx[c]);
     long cells[4];
     double box[4];
     ear_box(r, a, b, c, box);
-    long ncells = cm_pointgrid_range(&r->grid, box[0], box[1], box[2], box[3], cells);
+    long ncells = r->cells[b] = cm_pointgrid_range(&r->grid, box[0], box[1], box[2], box[3], cells);
     /* a box of many more cells than reflex vertices: walk the ring instead
      * when it is the shorter walk (not for a near-convex ring, whose long
      * ears would each walk it whole) */
@@ -114,13 +107,6 @@ static void update_vertex(ring *r, long v)
  * walked). */
 #define SMALL_EARS_FROM 2048
 
-/* Grid cells under the bounding box of the ear at v. */
-static long ear_cells(const ring *r, long v)
-{
-    long cells[4];
-    return ear_range(r, r->prev[v], v, r->next[v], cells);
-}
-
 /* small_first: clip the ears under at most `limit` grid cells first,
  * raising the limit after a round without one. Clipping next to the last
  * ear instead fans long chains from one vertex (a polygon's arc closed
@@ -130,11 +116,11 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
                      int small_first)
 {
     ring r = {xy, idx, malloc((size_t)m * sizeof(long)), malloc((size_t)m * sizeof(long)), malloc((size_t)m),
-              malloc((size_t)m), .grid = {.head = NULL}};
+              malloc((size_t)m), malloc((size_t)m * sizeof(long)), .grid = {.head = NULL}};
     int status = -1;
     double lo[2] = {P(idx[0])[0], P(idx[0])[1]}, hi[2] = {lo[0], lo[1]};
     long reflex = 0;
-    if (!r.prev || !r.next || !r.convex || !r.ear) goto done;
+    if (!r.prev || !r.next || !r.convex || !r.ear || !r.cells) goto done;
     for (long i = 0; i < m; i++) {
         r.prev[i] = (i + m - 1) % m;
         r.next[i] = (i + 1) % m;
@@ -162,7 +148,7 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
     long all_cells = r.grid.nx * r.grid.ny;
     status = 1;
     while (remaining > 3) {
-        if (r.ear[v] && (limit == LONG_MAX || ear_cells(&r, v) <= limit)) {
+        if (r.ear[v] && r.cells[v] <= limit) { /* an ear's cells: set with its flag */
             long a = r.prev[v], c = r.next[v];
             tri[3 * t] = idx[a], tri[3 * t + 1] = idx[v], tri[3 * t + 2] = idx[c];
             t++;
@@ -189,7 +175,7 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
     tri[3 * t] = idx[r.prev[v]], tri[3 * t + 1] = idx[v], tri[3 * t + 2] = idx[r.next[v]];
     status = 0;
 done:
-    free(r.prev), free(r.next), free(r.convex), free(r.ear);
+    free(r.prev), free(r.next), free(r.convex), free(r.ear), free(r.cells);
     cm_pointgrid_clear(&r.grid);
     return status;
 }
@@ -330,9 +316,9 @@ done:
     return status;
 }
 
-int cm_polygon_ear_clip(const double *xy, const int32_t *idx, long m, int32_t *tri_out)
+int cm_polygon_ear_clip(const double *xy, const int32_t *idx, long m, int32_t *tri_out, cm_progress *progress)
 {
-    return clip_ears(xy, idx, m, tri_out, NULL, 1);
+    return clip_ears(xy, idx, m, tri_out, progress, 1);
 }
 
 int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t *tri_out,

@@ -17,8 +17,10 @@ int cm_polygon_triangulate(const double *xy, const int32_t *idx, long m, int32_t
                            struct cm_progress *progress);
 
 /* The same by ear clipping alone, without the flips: any triangulation,
- * for uses that only walk it (visibility). 0, CM_NO_MEMORY or 1. */
-int cm_polygon_ear_clip(const double *xy, const int32_t *idx, long m, int32_t *tri_out);
+ * for uses that only walk it (visibility). 0, CM_NO_MEMORY, CM_CANCELLED
+ * or 1. */
+int cm_polygon_ear_clip(const double *xy, const int32_t *idx, long m, int32_t *tri_out,
+                        struct cm_progress *progress);
 
 /* Lawson flips of any triangulation to the constrained Delaunay one: the
  * edges without a neighbour and those fixed(user, a, b) calls fixed (may be
