@@ -932,6 +932,17 @@ static void test_cancel_and_clockwise(void)
     free(a), free(b);
 }
 
+/* Test triangle i: random points at scale 1, 1e-200 or 1e200 (by i % 7),
+ * every fifth a sliver (the third point near the first two's line). */
+static void random_triangle(rp_rng *rng, int i, double p[3][2])
+{
+    double scale = i % 7 == 0 ? 1e-200 : i % 7 == 1 ? 1e200 : 1.0;
+    for (int j = 0; j < 3; j++)
+        for (int d = 0; d < 2; d++) p[j][d] = scale * (rp_uniform(rng) - 0.5);
+    if (i % 5 == 0)
+        for (int d = 0; d < 2; d++) p[2][d] = 0.3 * p[0][d] + 0.7 * p[1][d] + scale * 1e-9 * rp_uniform(rng);
+}
+
 /* cm_triangle_min_angle_above decides as cm_triangle_min_angle's value
  * compared with the bound: bounds at the angle itself and a few ulps
  * either side, random ones, slivers, and coordinates near 1e-200 and
@@ -941,11 +952,8 @@ static void test_min_angle_above(int count)
     rp_rng rng = {20261124};
     int mismatches = 0, near = 0;
     for (int i = 0; i < count; i++) {
-        double scale = i % 7 == 0 ? 1e-200 : i % 7 == 1 ? 1e200 : 1.0, p[3][2];
-        for (int j = 0; j < 3; j++)
-            for (int d = 0; d < 2; d++) p[j][d] = scale * (rp_uniform(&rng) - 0.5);
-        if (i % 5 == 0) /* a sliver: the third point near the first two's line */
-            for (int d = 0; d < 2; d++) p[2][d] = 0.3 * p[0][d] + 0.7 * p[1][d] + scale * 1e-9 * rp_uniform(&rng);
+        double p[3][2];
+        random_triangle(&rng, i, p);
         double a = cm_triangle_min_angle(p[0], p[1], p[2]), bound;
         switch (i % 4) {
         case 0: bound = a; break;
@@ -968,11 +976,8 @@ static void test_max_angle(int count)
     rp_rng rng = {20261128};
     int mismatches = 0;
     for (int i = 0; i < count; i++) {
-        double scale = i % 7 == 0 ? 1e-200 : i % 7 == 1 ? 1e200 : 1.0, p[3][2];
-        for (int j = 0; j < 3; j++)
-            for (int d = 0; d < 2; d++) p[j][d] = scale * (rp_uniform(&rng) - 0.5);
-        if (i % 5 == 0) /* a sliver: the third point near the first two's line */
-            for (int d = 0; d < 2; d++) p[2][d] = 0.3 * p[0][d] + 0.7 * p[1][d] + scale * 1e-9 * rp_uniform(&rng);
+        double p[3][2];
+        random_triangle(&rng, i, p);
         if (i % 5 == 1 || i % 5 == 2) { /* the third point near the perpendicular bisector of the first two */
             double mx = 0.5 * (p[0][0] + p[1][0]), my = 0.5 * (p[0][1] + p[1][1]);
             double dx = p[1][0] - p[0][0], dy = p[1][1] - p[0][1], t = rp_uniform(&rng) * 2.0 - 1.0;
