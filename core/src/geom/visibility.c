@@ -626,12 +626,12 @@ int cm_vsource_build_tri(cm_vsource *vs, cm_xpool *pool, const long *ids, long k
 /* Narrows the cone (b, a) seen from p, not empty, by a crossed diagonal
  * from r (right) to l (left). Returns 0 if the cone became empty; when
  * neither end moved it is the cone it was. */
-static int narrow(cm_xpool *pool, long p, long *a, long *b, long l, long r)
+static int narrow(const cm_vsource *vs, long p, long *a, long *b, long l, long r)
 {
     int moved = 0;
-    if (cm_xorient(pool, p, *a, l) < 0) *a = l, moved = 1;
-    if (cm_xorient(pool, p, *b, r) > 0) *b = r, moved = 1;
-    return !moved || cm_xorient(pool, p, *b, *a) > 0;
+    if (cm_xorient_in(&vs->in, vs->pool, p, *a, l) < 0) *a = l, moved = 1;
+    if (cm_xorient_in(&vs->in, vs->pool, p, *b, r) > 0) *b = r, moved = 1;
+    return !moved || cm_xorient_in(&vs->in, vs->pool, p, *b, *a) > 0;
 }
 
 /* From triangle t (not a root) up to the source, the cone starting at t's
@@ -645,14 +645,14 @@ static int walk_up(const cm_vsource *vs, long p, long t, long *a, long *b)
     while (vs->up[t] >= 0) {
         c = vs->up[t];
         long l = ids[vs->tri[3 * t + (c + 2) % 3]], r = ids[vs->tri[3 * t + (c + 1) % 3]];
-        if (!narrow(vs->pool, p, &la, &lb, l, r)) return 0;
+        if (!narrow(vs, p, &la, &lb, l, r)) return 0;
         t = vs->nbr[3 * t + c];
     }
     if (vs->source < 0) {
-        if (!narrow(vs->pool, p, &la, &lb, ids[0], ids[vs->k - 1])) return 0;
+        if (!narrow(vs, p, &la, &lb, ids[0], ids[vs->k - 1])) return 0;
     } else {
         long s = ids[vs->source];
-        if (cm_xorient(vs->pool, p, lb, s) <= 0 || cm_xorient(vs->pool, p, s, la) <= 0) return 0;
+        if (cm_xorient_in(&vs->in, vs->pool, p, lb, s) <= 0 || cm_xorient_in(&vs->in, vs->pool, p, s, la) <= 0) return 0;
         la = lb = s;
     }
     *a = la, *b = lb;
@@ -688,7 +688,7 @@ int cm_vsource_point_cone(cm_vsource *vs, long p, long *a, long *b)
         const int32_t *c = vs->tri + 3 * t;
         int inside = 1;
         for (int i = 0; i < 3 && inside; i++)
-            inside = cm_xorient(vs->pool, vs->ids[c[i]], vs->ids[c[(i + 1) % 3]], p) > 0;
+            inside = cm_xorient_in(&vs->in, vs->pool, vs->ids[c[i]], vs->ids[c[(i + 1) % 3]], p) > 0;
         if (!inside) continue;
         if (vs->depth[t] == 0) return root_cone(vs, a, b);
         return walk_up(vs, p, t, a, b);

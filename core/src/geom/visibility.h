@@ -75,6 +75,8 @@ typedef struct cm_vsource {
     int32_t *depth;  /* per triangle */
     int32_t *fan_start, *fan; /* per vertex: incident triangles (CSR) */
     int32_t *low;    /* per vertex: incident triangle of least depth */
+    cm_xinputs in;   /* pool ids with coordinates at hand; set by the
+                        caller after building, none by default */
 } cm_vsource;
 
 /* Triangulates and roots. Returns 0, -1 out of memory, 1 if the polygon
