@@ -435,10 +435,12 @@ static int candidate(const pocket *p, long i)
     return p->source >= 0 ? i != p->source : i > 0 && i < p->k - 1;
 }
 
-/* The root pocket re-roots the cached triangulation of the polygon, and
- * takes the vertices its source sees from one pass of cone propagation
- * over it (O(triangles seen), where a walk from every vertex to the
- * source would cost O(m) each). */
+/* The root pocket takes the cached triangulation of the polygon and the
+ * vertices its source sees from one pass of cone propagation over it
+ * (O(triangles seen), where a walk from every vertex to the source would
+ * cost O(m) each). Nothing walks up its dual tree (its cones are the
+ * visibility row, its points' cones the sight test of lit_in), so the
+ * tree keeps the rooting it was built with. */
 static int build_root(cm_linkpart *lp, pocket *p)
 {
     if (lp->root_state == 0) {
@@ -453,8 +455,6 @@ static int build_root(cm_linkpart *lp, pocket *p)
                 return -1;
             }
         }
-    } else if (lp->root_state > 0 && cm_vsource_reroot(&lp->root, p->source) != 0) {
-        return -1;
     }
     if (lp->root_state < 0) return 1;
     lp->root.in = lp->in;
