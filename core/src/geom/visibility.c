@@ -459,7 +459,7 @@ int cm_xtriangulate(cm_xpool *pool, const long *ids, long k, int32_t *tri_out)
 
 void cm_vsource_clear(cm_vsource *vs)
 {
-    free(vs->tri), free(vs->nbr), free(vs->up), free(vs->depth);
+    free(vs->tri), free(vs->nbr), free(vs->up), free(vs->depth), free(vs->toward);
     free(vs->fan_start), free(vs->fan), free(vs->low);
     memset(vs, 0, sizeof *vs);
 }
@@ -493,6 +493,13 @@ static int root_tree(cm_vsource *vs)
         }
     }
     free(queue);
+    for (long t = 0; t < nt; t++) {
+        int c = vs->up[t];
+        int32_t *w = vs->toward + 3 * t;
+        w[0] = c < 0 ? -1 : vs->nbr[3 * t + c];
+        w[1] = c < 0 ? -1 : (int32_t)vs->ids[vs->tri[3 * t + (c + 2) % 3]];
+        w[2] = c < 0 ? -1 : (int32_t)vs->ids[vs->tri[3 * t + (c + 1) % 3]];
+    }
     return 0;
 }
 
@@ -538,7 +545,8 @@ static int finish_build(cm_vsource *vs, long source)
     vs->nbr = malloc(3 * nt * sizeof *vs->nbr);
     vs->up = malloc(nt * sizeof *vs->up);
     vs->depth = malloc(nt * sizeof *vs->depth);
-    if (!vs->nbr || !vs->up || !vs->depth) return -1;
+    vs->toward = malloc(3 * nt * sizeof *vs->toward);
+    if (!vs->nbr || !vs->up || !vs->depth || !vs->toward) return -1;
     if (cm_tri_adjacency(vs->tri, vs->nt, vs->nbr) != 0 || build_fans(vs) != 0) return -1;
     return cm_vsource_reroot(vs, source);
 }
@@ -617,7 +625,8 @@ int cm_vsource_build_tri(cm_vsource *vs, cm_xpool *pool, const long *ids, long k
     vs->nbr = malloc(3 * nt * sizeof *vs->nbr);
     vs->up = malloc(nt * sizeof *vs->up);
     vs->depth = malloc(nt * sizeof *vs->depth);
-    if (!vs->nbr || !vs->up || !vs->depth || build_fans(vs) != 0) return -1;
+    vs->toward = malloc(3 * nt * sizeof *vs->toward);
+    if (!vs->nbr || !vs->up || !vs->depth || !vs->toward || build_fans(vs) != 0) return -1;
     int s = triangulates(vs);
     if (s != 0) return s;
     return cm_vsource_reroot(vs, source);
@@ -639,15 +648,10 @@ static int narrow(const cm_vsource *vs, long p, long *a, long *b, long l, long r
 static int walk_up(const cm_vsource *vs, long p, long t, long *a, long *b)
 {
     const long *ids = vs->ids;
-    int c = vs->up[t];
-    long la = ids[vs->tri[3 * t + (c + 2) % 3]], lb = ids[vs->tri[3 * t + (c + 1) % 3]];
-    t = vs->nbr[3 * t + c];
-    while (vs->up[t] >= 0) {
-        c = vs->up[t];
-        long l = ids[vs->tri[3 * t + (c + 2) % 3]], r = ids[vs->tri[3 * t + (c + 1) % 3]];
-        if (!narrow(vs, p, &la, &lb, l, r)) return 0;
-        t = vs->nbr[3 * t + c];
-    }
+    const int32_t *w = vs->toward + 3 * t;
+    long la = w[1], lb = w[2];
+    for (w = vs->toward + 3 * (size_t)w[0]; w[0] >= 0; w = vs->toward + 3 * (size_t)w[0])
+        if (!narrow(vs, p, &la, &lb, w[1], w[2])) return 0;
     if (vs->source < 0) {
         if (!narrow(vs, p, &la, &lb, ids[0], ids[vs->k - 1])) return 0;
     } else {
