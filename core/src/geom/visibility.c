@@ -459,9 +459,26 @@ int cm_xtriangulate(cm_xpool *pool, const long *ids, long k, int32_t *tri_out)
 
 void cm_vsource_clear(cm_vsource *vs)
 {
-    free(vs->tri), free(vs->nbr), free(vs->up), free(vs->depth), free(vs->toward);
-    free(vs->fan_start), free(vs->fan), free(vs->low);
+    free(vs->tri), free(vs->nbr); /* nbr starts the block of the others */
     memset(vs, 0, sizeof *vs);
+}
+
+/* The arrays besides the triangles, in one block that nbr starts (one
+ * allocation per pocket, not seven). fan_start is zeroed. */
+static int alloc_arrays(cm_vsource *vs)
+{
+    size_t k = (size_t)vs->k, nt = (size_t)vs->nt;
+    int32_t *b = malloc((11 * nt + 2 * k + 2) * sizeof *b);
+    if (!b) return -1;
+    vs->nbr = b, b += 3 * nt;
+    vs->up = b, b += nt;
+    vs->depth = b, b += nt;
+    vs->toward = b, b += 3 * nt;
+    vs->fan = b, b += 3 * nt + 1;
+    vs->low = b, b += k;
+    vs->fan_start = b;
+    memset(vs->fan_start, 0, (k + 1) * sizeof *b);
+    return 0;
 }
 
 /* Breadth-first from the roots (the source's fan, or the triangle on the
@@ -471,8 +488,7 @@ void cm_vsource_clear(cm_vsource *vs)
 static int root_tree(cm_vsource *vs)
 {
     long nt = vs->nt, head = 0, tail = 0;
-    int32_t *queue = malloc((size_t)nt * sizeof *queue);
-    if (!queue) return -1;
+    int32_t *queue = vs->low; /* k > nt entries, filled only after this */
     for (long t = 0; t < nt; t++) vs->depth[t] = -1, vs->up[t] = -1;
     long v = vs->source >= 0 ? vs->source : 0;
     for (long f = vs->fan_start[v]; f < vs->fan_start[v + 1]; f++) {
@@ -492,7 +508,6 @@ static int root_tree(cm_vsource *vs)
             queue[tail++] = n;
         }
     }
-    free(queue);
     for (long t = 0; t < nt; t++) {
         int c = vs->up[t];
         int32_t *w = vs->toward + 3 * t;
@@ -503,19 +518,14 @@ static int root_tree(cm_vsource *vs)
     return 0;
 }
 
-static int build_fans(cm_vsource *vs)
+static void build_fans(cm_vsource *vs)
 {
     long k = vs->k, nt = vs->nt;
-    vs->fan_start = calloc((size_t)k + 1, sizeof *vs->fan_start);
-    vs->fan = malloc((size_t)(3 * nt + 1) * sizeof *vs->fan);
-    vs->low = malloc((size_t)k * sizeof *vs->low);
-    if (!vs->fan_start || !vs->fan || !vs->low) return -1;
     for (long s = 0; s < 3 * nt; s++) vs->fan_start[vs->tri[s] + 1]++;
     for (long v = 0; v < k; v++) vs->fan_start[v + 1] += vs->fan_start[v];
     for (long s = 0; s < 3 * nt; s++) vs->fan[vs->fan_start[vs->tri[s]]++] = (int32_t)(s / 3);
     for (long v = k; v > 0; v--) vs->fan_start[v] = vs->fan_start[v - 1];
     vs->fan_start[0] = 0;
-    return 0;
 }
 
 /* Per vertex, the incident triangle of least depth. */
@@ -541,13 +551,8 @@ int cm_vsource_reroot(cm_vsource *vs, long source)
 /* The arrays besides the triangles, and the rooting. */
 static int finish_build(cm_vsource *vs, long source)
 {
-    size_t nt = (size_t)vs->nt;
-    vs->nbr = malloc(3 * nt * sizeof *vs->nbr);
-    vs->up = malloc(nt * sizeof *vs->up);
-    vs->depth = malloc(nt * sizeof *vs->depth);
-    vs->toward = malloc(3 * nt * sizeof *vs->toward);
-    if (!vs->nbr || !vs->up || !vs->depth || !vs->toward) return -1;
-    if (cm_tri_adjacency(vs->tri, vs->nt, vs->nbr) != 0 || build_fans(vs) != 0) return -1;
+    if (alloc_arrays(vs) != 0 || cm_tri_adjacency(vs->tri, vs->nt, vs->nbr) != 0) return -1;
+    build_fans(vs);
     return cm_vsource_reroot(vs, source);
 }
 
@@ -577,11 +582,8 @@ static int triangulates(cm_vsource *vs)
 {
     static const int after[3] = {1, 2, 0}, before[3] = {2, 0, 1};
     long k = vs->k;
-    int32_t *next = malloc((size_t)k * sizeof *next), *from = malloc((size_t)k * sizeof *from);
-    if (!next || !from) {
-        free(next), free(from);
-        return -1;
-    }
+    int32_t *next = malloc(2 * (size_t)k * sizeof *next), *from = next + k;
+    if (!next) return -1;
     for (long v = 0; v < k; v++) next[v] = -1;
     int ok = 1;
     for (long v = 0; v < k && ok; v++) {
@@ -612,7 +614,7 @@ static int triangulates(cm_vsource *vs)
             next[c[0]] = next[c[1]] = next[c[2]] = -1;
         }
     }
-    free(next), free(from);
+    free(next);
     return !ok;
 }
 
@@ -621,12 +623,8 @@ int cm_vsource_build_tri(cm_vsource *vs, cm_xpool *pool, const long *ids, long k
     memset(vs, 0, sizeof *vs);
     vs->pool = pool, vs->ids = ids, vs->k = k, vs->nt = k - 2, vs->source = source;
     vs->tri = tri;
-    size_t nt = (size_t)vs->nt;
-    vs->nbr = malloc(3 * nt * sizeof *vs->nbr);
-    vs->up = malloc(nt * sizeof *vs->up);
-    vs->depth = malloc(nt * sizeof *vs->depth);
-    vs->toward = malloc(3 * nt * sizeof *vs->toward);
-    if (!vs->nbr || !vs->up || !vs->depth || !vs->toward || build_fans(vs) != 0) return -1;
+    if (alloc_arrays(vs) != 0) return -1;
+    build_fans(vs);
     int s = triangulates(vs);
     if (s != 0) return s;
     return cm_vsource_reroot(vs, source);
