@@ -52,6 +52,7 @@ struct cm_linkpart {
     unsigned char *how, *covered;
     long source; /* of the partition built last, -1 none */
     int max_level; /* pockets beyond this level were not processed */
+    int limit;     /* of the run under way: deeper pockets are not made */
     int truncated; /* some were: vertices in them are undetermined */
     long *all;   /* 0..m-1: the root pocket's ids */
     cm_vsource root; /* the polygon's triangulation, re-rooted per source */
@@ -225,7 +226,9 @@ static int append_chain(const pocket *p, long from, long to, long *list, long *c
 
 /* Cuts off the pocket on the shadow side of the window from local vertex
  * tr->start to `end`: a local vertex (h < 0) or the point h on the pocket
- * edge from local `end` to end + 1. Returns 0, -1 out of memory. */
+ * edge from local `end` to end + 1. Beyond the run's last level only its
+ * vertices are marked covered and the run truncated: such a pocket would
+ * never be processed. Returns 0, -1 out of memory. */
 static int emit_window(tracer *tr, long end, long h)
 {
     cm_linkpart *lp = tr->lp;
@@ -238,6 +241,14 @@ static int emit_window(tracer *tr, long end, long h)
     else
         ok = append_chain(p, tr->start, end, local, &count);
     long k = count + (h >= 0);
+    int level = p->level + 1;
+    if (ok && k >= 3 && level > lp->limit) {
+        for (long i = 0; i < count; i++)
+            if (local[i] != tr->start) lp->covered[local[i]] = 1;
+        free(local);
+        lp->truncated = 1;
+        return 0;
+    }
     long *ids = ok && k >= 3 ? malloc((size_t)k * sizeof *ids) : NULL;
     if (ids) {
         long o = 0;
@@ -247,7 +258,6 @@ static int emit_window(tracer *tr, long end, long h)
         for (long i = 0; i < count; i++)
             if (local[i] != tr->start) lp->covered[local[i]] = 1;
     }
-    int level = p->level + 1;
     long first = count > 0 ? local[0] : 0;
     free(local);
     if (!ids) return ok && k >= 3 ? -1 : 0;
@@ -740,7 +750,7 @@ static int run_levels(cm_linkpart *lp, long s, int max_level, const unsigned cha
     for (long v = 0; v < lp->m; v++) lp->dist[v] = -1, lp->how[v] = HOW_NONE;
     lp->dist[s] = 0;
     if (add_pocket(lp, lp->all, lp->m, 1, -1, s) < 0) return -1;
-    lp->truncated = 0;
+    lp->truncated = 0, lp->limit = max_level;
     int counted = 1;
     for (long P = 0; P < lp->npk; P++) {
         if (lp->pk[P].level > max_level) {
