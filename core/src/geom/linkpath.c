@@ -52,6 +52,7 @@ struct cm_linkpart {
     unsigned char *how, *covered;
     long source; /* of the partition built last, -1 none */
     int max_level; /* pockets beyond this level were not processed */
+    int limit;     /* of the run under way: deeper pockets are not made */
     int truncated; /* some were: vertices in them are undetermined */
     long *all;   /* 0..m-1: the root pocket's ids */
     cm_vsource root; /* the polygon's triangulation, re-rooted per source */
@@ -59,6 +60,7 @@ struct cm_linkpart {
     cm_visrows *rows;   /* visibility from a vertex over that triangulation */
     unsigned char *row; /* from the current source */
     int *seen;          /* per vertex: in how many pockets of one level */
+    cm_xinputs in;      /* the polygon's vertices (pool ids 0..m-1): xy */
     int derive;         /* derive pockets' triangulations from their parents' */
     long derived, clipped; /* pocket vertices triangulated either way */
     /* scratch of a derivation, per parent triangle */
@@ -66,6 +68,12 @@ struct cm_linkpart {
     int32_t *queue, *cut_r, *cut_l;
     long cap_scratch;
 };
+
+/* cm_xorient, the polygon's vertices read from lp->xy */
+static int orient(const cm_linkpart *lp, long a, long b, long c)
+{
+    return cm_xorient_in(&lp->in, lp->pool, a, b, c);
+}
 
 /* ---- set-up ------------------------------------------------------------- */
 
@@ -97,6 +105,7 @@ cm_linkpart *cm_linkpart_create(const double *xy, long m)
         cm_linkpart_free(lp);
         return NULL;
     }
+    lp->in = (cm_xinputs){lp->xy, m, cm_coords_tame(lp->xy, 2 * m)};
     return lp;
 }
 
@@ -217,7 +226,9 @@ static int append_chain(const pocket *p, long from, long to, long *list, long *c
 
 /* Cuts off the pocket on the shadow side of the window from local vertex
  * tr->start to `end`: a local vertex (h < 0) or the point h on the pocket
- * edge from local `end` to end + 1. Returns 0, -1 out of memory. */
+ * edge from local `end` to end + 1. Beyond the run's last level only its
+ * vertices are marked covered and the run truncated: such a pocket would
+ * never be processed. Returns 0, -1 out of memory. */
 static int emit_window(tracer *tr, long end, long h)
 {
     cm_linkpart *lp = tr->lp;
@@ -230,6 +241,14 @@ static int emit_window(tracer *tr, long end, long h)
     else
         ok = append_chain(p, tr->start, end, local, &count);
     long k = count + (h >= 0);
+    int level = p->level + 1;
+    if (ok && k >= 3 && level > lp->limit) {
+        for (long i = 0; i < count; i++)
+            if (local[i] != tr->start) lp->covered[local[i]] = 1;
+        free(local);
+        lp->truncated = 1;
+        return 0;
+    }
     long *ids = ok && k >= 3 ? malloc((size_t)k * sizeof *ids) : NULL;
     if (ids) {
         long o = 0;
@@ -239,7 +258,6 @@ static int emit_window(tracer *tr, long end, long h)
         for (long i = 0; i < count; i++)
             if (local[i] != tr->start) lp->covered[local[i]] = 1;
     }
-    int level = p->level + 1;
     long first = count > 0 ? local[0] : 0;
     free(local);
     if (!ids) return ok && k >= 3 ? -1 : 0;
@@ -265,8 +283,8 @@ static int leave_vertex(tracer *tr, long *t, long *r, long *l, long *hit)
         int c = 0;
         while (vs->tri[3 * tt + c] != tr->cur) c++;
         long x = vs->tri[3 * tt + (c + 1) % 3], y = vs->tri[3 * tt + (c + 2) % 3];
-        int ox = cm_xorient(pool, tr->la, tr->lb, p->ids[x]);
-        int oy = cm_xorient(pool, tr->la, tr->lb, p->ids[y]);
+        int ox = orient(tr->lp, tr->la, tr->lb, p->ids[x]);
+        int oy = orient(tr->lp, tr->la, tr->lb, p->ids[y]);
         if (ox < 0 && oy > 0) {
             *t = tt, *r = x, *l = y;
             return 0;
@@ -283,10 +301,9 @@ static int leave_vertex(tracer *tr, long *t, long *r, long *l, long *hit)
 static int continues_past(const cm_linkpart *lp, long P, long w, long behind)
 {
     const pocket *p = &lp->pk[P];
-    cm_xpool *pool = lp->pool;
     long wp = p->ids[(w + p->k - 1) % p->k], wv = p->ids[w], wn = p->ids[(w + 1) % p->k];
-    int turn = cm_xorient(pool, wp, wv, wn);
-    int in_left = cm_xorient(pool, wp, wv, behind) < 0, out_left = cm_xorient(pool, wv, wn, behind) < 0;
+    int turn = orient(lp, wp, wv, wn);
+    int in_left = orient(lp, wp, wv, behind) < 0, out_left = orient(lp, wv, wn, behind) < 0;
     if (turn > 0) return in_left && out_left;
     if (turn < 0) return in_left || out_left;
     return in_left;
@@ -300,7 +317,7 @@ static int pass_vertex(tracer *tr, long w)
     pocket *p = tr_pocket(tr);
     if (!continues_past(tr->lp, tr->P, w, tr->lb)) return emit_window(tr, w, -1);
     long wp = p->ids[(w + p->k - 1) % p->k];
-    if (cm_xorient(tr->lp->pool, tr->lb, p->ids[w], wp) == tr->side) {
+    if (orient(tr->lp, tr->lb, p->ids[w], wp) == tr->side) {
         if (emit_window(tr, w, -1) < 0) return -1;
         tr->start = w;
     }
@@ -337,7 +354,7 @@ static int trace(cm_linkpart *lp, long P, long i, long back, int side)
             int z = 0;
             while (vs->tri[3 * n + z] == r || vs->tri[3 * n + z] == l) z++;
             long zv = vs->tri[3 * n + z];
-            int o = cm_xorient(lp->pool, tr.la, tr.lb, p->ids[zv]);
+            int o = orient(lp, tr.la, tr.lb, p->ids[zv]);
             if (o == 0) {
                 hit = zv;
                 break;
@@ -363,7 +380,7 @@ static int window_side(const cm_linkpart *lp, long P, long i, long back, int wan
     long u = p->ids[i], nb[2] = {p->ids[(i + p->k - 1) % p->k], p->ids[(i + 1) % p->k]};
     int side = 0;
     for (int j = 0; j < 2; j++) {
-        int o = cm_xorient(lp->pool, back, u, nb[j]);
+        int o = orient(lp, back, u, nb[j]);
         if (o == 0) {
             if (beyond(lp->pool, back, u, nb[j])) return 0;
         } else if (side == 0) {
@@ -390,9 +407,10 @@ static int open_windows(cm_linkpart *lp, long P, long i, long a, long b)
 }
 
 /* n lies on the segment from e up to (not including) w, all collinear. */
-static int behind_on_segment(cm_xpool *pool, long e, long w, long n)
+static int behind_on_segment(const cm_linkpart *lp, long e, long w, long n)
 {
-    return n == e || (cm_xorient(pool, e, w, n) == 0 && !beyond(pool, e, w, n) && !beyond(pool, w, e, n));
+    cm_xpool *pool = lp->pool;
+    return n == e || (orient(lp, e, w, n) == 0 && !beyond(pool, e, w, n) && !beyond(pool, w, e, n));
 }
 
 /* A vertex that is not visible but whose sight line from an end of the
@@ -407,7 +425,7 @@ static int open_grazing_windows(cm_linkpart *lp, long P, long i)
     long u = p->ids[i], nb[2] = {p->ids[(i + p->k - 1) % p->k], p->ids[(i + 1) % p->k]};
     for (long e = 0; e < nends; e++) {
         if (ends[e] == u) continue;
-        if (!behind_on_segment(lp->pool, ends[e], u, nb[0]) && !behind_on_segment(lp->pool, ends[e], u, nb[1]))
+        if (!behind_on_segment(lp, ends[e], u, nb[0]) && !behind_on_segment(lp, ends[e], u, nb[1]))
             continue;
         int side = window_side(lp, P, i, ends[e], 0);
         if (side && trace(lp, P, i, ends[e], side) < 0) return -1;
@@ -427,10 +445,12 @@ static int candidate(const pocket *p, long i)
     return p->source >= 0 ? i != p->source : i > 0 && i < p->k - 1;
 }
 
-/* The root pocket re-roots the cached triangulation of the polygon, and
- * takes the vertices its source sees from one pass of cone propagation
- * over it (O(triangles seen), where a walk from every vertex to the
- * source would cost O(m) each). */
+/* The root pocket takes the cached triangulation of the polygon and the
+ * vertices its source sees from one pass of cone propagation over it
+ * (O(triangles seen), where a walk from every vertex to the source would
+ * cost O(m) each). Nothing walks up its dual tree (its cones are the
+ * visibility row, its points' cones the sight test of lit_in), so the
+ * tree keeps the rooting it was built with. */
 static int build_root(cm_linkpart *lp, pocket *p)
 {
     if (lp->root_state == 0) {
@@ -445,10 +465,9 @@ static int build_root(cm_linkpart *lp, pocket *p)
                 return -1;
             }
         }
-    } else if (lp->root_state > 0 && cm_vsource_reroot(&lp->root, p->source) != 0) {
-        return -1;
     }
     if (lp->root_state < 0) return 1;
+    lp->root.in = lp->in;
     cm_visrows_row(lp->rows, p->source, lp->row);
     p->vs = lp->root, p->shared = 1;
     return 0;
@@ -519,7 +538,7 @@ static int derive_triangles(cm_linkpart *lp, long P, int32_t *tri)
         int c = 0;
         while (vs->tri[3 * tt + c] != a) c++;
         long x = vs->tri[3 * tt + (c + 1) % 3], y = vs->tri[3 * tt + (c + 2) % 3];
-        int ox = cm_xorient(pool, A, B, q->ids[x]), oy = cm_xorient(pool, A, B, q->ids[y]);
+        int ox = orient(lp, A, B, q->ids[x]), oy = orient(lp, A, B, q->ids[y]);
         if (ox < 0 && oy > 0) {
             t = tt, r = x, l = y;
             continue;
@@ -553,7 +572,7 @@ static int derive_triangles(cm_linkpart *lp, long P, int32_t *tri)
             int z = 0;
             while (vs->tri[3 * n + z] == r || vs->tri[3 * n + z] == l) z++;
             long zv = vs->tri[3 * n + z];
-            int o = cm_xorient(pool, A, B, q->ids[zv]);
+            int o = orient(lp, A, B, q->ids[zv]);
             if (o == 0) {
                 if (zv != bv) return 1; /* through a vertex */
                 stamp[n] = gen;
@@ -601,7 +620,7 @@ static int derive_triangles(cm_linkpart *lp, long P, int32_t *tri)
                 int inside = 1;
                 for (int j = 1; j < 3 && inside; j++) {
                     long v = vs->tri[3 * tt + (c + j) % 3];
-                    inside = v == a || v == bv || cm_xorient(pool, A, B, q->ids[v]) == cs;
+                    inside = v == a || v == bv || orient(lp, A, B, q->ids[v]) == cs;
                 }
                 if (inside) stamp[n] = gen, lp->queue[nq++] = (int32_t)n;
             }
@@ -675,6 +694,7 @@ static int process_window(cm_linkpart *lp, long P)
         return 0; /* cannot happen for a simple polygon: leave it undetermined */
     }
     p->built = 1;
+    p->vs.in = lp->in;
     long k = p->k;
     memset(lp->covered, 0, (size_t)k);
     for (long i = 0; i < k; i++) {
@@ -730,7 +750,7 @@ static int run_levels(cm_linkpart *lp, long s, int max_level, const unsigned cha
     for (long v = 0; v < lp->m; v++) lp->dist[v] = -1, lp->how[v] = HOW_NONE;
     lp->dist[s] = 0;
     if (add_pocket(lp, lp->all, lp->m, 1, -1, s) < 0) return -1;
-    lp->truncated = 0;
+    lp->truncated = 0, lp->limit = max_level;
     int counted = 1;
     for (long P = 0; P < lp->npk; P++) {
         if (lp->pk[P].level > max_level) {

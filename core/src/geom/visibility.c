@@ -459,9 +459,26 @@ int cm_xtriangulate(cm_xpool *pool, const long *ids, long k, int32_t *tri_out)
 
 void cm_vsource_clear(cm_vsource *vs)
 {
-    free(vs->tri), free(vs->nbr), free(vs->up), free(vs->depth);
-    free(vs->fan_start), free(vs->fan), free(vs->low);
+    free(vs->tri), free(vs->nbr); /* nbr starts the block of the others */
     memset(vs, 0, sizeof *vs);
+}
+
+/* The arrays besides the triangles, in one block that nbr starts (one
+ * allocation per pocket, not seven). fan_start is zeroed. */
+static int alloc_arrays(cm_vsource *vs)
+{
+    size_t k = (size_t)vs->k, nt = (size_t)vs->nt;
+    int32_t *b = malloc((11 * nt + 2 * k + 2) * sizeof *b);
+    if (!b) return -1;
+    vs->nbr = b, b += 3 * nt;
+    vs->up = b, b += nt;
+    vs->depth = b, b += nt;
+    vs->toward = b, b += 3 * nt;
+    vs->fan = b, b += 3 * nt + 1;
+    vs->low = b, b += k;
+    vs->fan_start = b;
+    memset(vs->fan_start, 0, (k + 1) * sizeof *b);
+    return 0;
 }
 
 /* Breadth-first from the roots (the source's fan, or the triangle on the
@@ -471,8 +488,7 @@ void cm_vsource_clear(cm_vsource *vs)
 static int root_tree(cm_vsource *vs)
 {
     long nt = vs->nt, head = 0, tail = 0;
-    int32_t *queue = malloc((size_t)nt * sizeof *queue);
-    if (!queue) return -1;
+    int32_t *queue = vs->low; /* k > nt entries, filled only after this */
     for (long t = 0; t < nt; t++) vs->depth[t] = -1, vs->up[t] = -1;
     long v = vs->source >= 0 ? vs->source : 0;
     for (long f = vs->fan_start[v]; f < vs->fan_start[v + 1]; f++) {
@@ -492,23 +508,24 @@ static int root_tree(cm_vsource *vs)
             queue[tail++] = n;
         }
     }
-    free(queue);
+    for (long t = 0; t < nt; t++) {
+        int c = vs->up[t];
+        int32_t *w = vs->toward + 3 * t;
+        w[0] = c < 0 ? -1 : vs->nbr[3 * t + c];
+        w[1] = c < 0 ? -1 : (int32_t)vs->ids[vs->tri[3 * t + (c + 2) % 3]];
+        w[2] = c < 0 ? -1 : (int32_t)vs->ids[vs->tri[3 * t + (c + 1) % 3]];
+    }
     return 0;
 }
 
-static int build_fans(cm_vsource *vs)
+static void build_fans(cm_vsource *vs)
 {
     long k = vs->k, nt = vs->nt;
-    vs->fan_start = calloc((size_t)k + 1, sizeof *vs->fan_start);
-    vs->fan = malloc((size_t)(3 * nt + 1) * sizeof *vs->fan);
-    vs->low = malloc((size_t)k * sizeof *vs->low);
-    if (!vs->fan_start || !vs->fan || !vs->low) return -1;
     for (long s = 0; s < 3 * nt; s++) vs->fan_start[vs->tri[s] + 1]++;
     for (long v = 0; v < k; v++) vs->fan_start[v + 1] += vs->fan_start[v];
     for (long s = 0; s < 3 * nt; s++) vs->fan[vs->fan_start[vs->tri[s]]++] = (int32_t)(s / 3);
     for (long v = k; v > 0; v--) vs->fan_start[v] = vs->fan_start[v - 1];
     vs->fan_start[0] = 0;
-    return 0;
 }
 
 /* Per vertex, the incident triangle of least depth. */
@@ -534,12 +551,8 @@ int cm_vsource_reroot(cm_vsource *vs, long source)
 /* The arrays besides the triangles, and the rooting. */
 static int finish_build(cm_vsource *vs, long source)
 {
-    size_t nt = (size_t)vs->nt;
-    vs->nbr = malloc(3 * nt * sizeof *vs->nbr);
-    vs->up = malloc(nt * sizeof *vs->up);
-    vs->depth = malloc(nt * sizeof *vs->depth);
-    if (!vs->nbr || !vs->up || !vs->depth) return -1;
-    if (cm_tri_adjacency(vs->tri, vs->nt, vs->nbr) != 0 || build_fans(vs) != 0) return -1;
+    if (alloc_arrays(vs) != 0 || cm_tri_adjacency(vs->tri, vs->nt, vs->nbr) != 0) return -1;
+    build_fans(vs);
     return cm_vsource_reroot(vs, source);
 }
 
@@ -569,11 +582,8 @@ static int triangulates(cm_vsource *vs)
 {
     static const int after[3] = {1, 2, 0}, before[3] = {2, 0, 1};
     long k = vs->k;
-    int32_t *next = malloc((size_t)k * sizeof *next), *from = malloc((size_t)k * sizeof *from);
-    if (!next || !from) {
-        free(next), free(from);
-        return -1;
-    }
+    int32_t *next = malloc(2 * (size_t)k * sizeof *next), *from = next + k;
+    if (!next) return -1;
     for (long v = 0; v < k; v++) next[v] = -1;
     int ok = 1;
     for (long v = 0; v < k && ok; v++) {
@@ -604,7 +614,7 @@ static int triangulates(cm_vsource *vs)
             next[c[0]] = next[c[1]] = next[c[2]] = -1;
         }
     }
-    free(next), free(from);
+    free(next);
     return !ok;
 }
 
@@ -613,11 +623,8 @@ int cm_vsource_build_tri(cm_vsource *vs, cm_xpool *pool, const long *ids, long k
     memset(vs, 0, sizeof *vs);
     vs->pool = pool, vs->ids = ids, vs->k = k, vs->nt = k - 2, vs->source = source;
     vs->tri = tri;
-    size_t nt = (size_t)vs->nt;
-    vs->nbr = malloc(3 * nt * sizeof *vs->nbr);
-    vs->up = malloc(nt * sizeof *vs->up);
-    vs->depth = malloc(nt * sizeof *vs->depth);
-    if (!vs->nbr || !vs->up || !vs->depth || build_fans(vs) != 0) return -1;
+    if (alloc_arrays(vs) != 0) return -1;
+    build_fans(vs);
     int s = triangulates(vs);
     if (s != 0) return s;
     return cm_vsource_reroot(vs, source);
@@ -626,12 +633,12 @@ int cm_vsource_build_tri(cm_vsource *vs, cm_xpool *pool, const long *ids, long k
 /* Narrows the cone (b, a) seen from p, not empty, by a crossed diagonal
  * from r (right) to l (left). Returns 0 if the cone became empty; when
  * neither end moved it is the cone it was. */
-static int narrow(cm_xpool *pool, long p, long *a, long *b, long l, long r)
+static int narrow(const cm_vsource *vs, long p, long *a, long *b, long l, long r)
 {
     int moved = 0;
-    if (cm_xorient(pool, p, *a, l) < 0) *a = l, moved = 1;
-    if (cm_xorient(pool, p, *b, r) > 0) *b = r, moved = 1;
-    return !moved || cm_xorient(pool, p, *b, *a) > 0;
+    if (cm_xorient_in(&vs->in, vs->pool, p, *a, l) < 0) *a = l, moved = 1;
+    if (cm_xorient_in(&vs->in, vs->pool, p, *b, r) > 0) *b = r, moved = 1;
+    return !moved || cm_xorient_in(&vs->in, vs->pool, p, *b, *a) > 0;
 }
 
 /* From triangle t (not a root) up to the source, the cone starting at t's
@@ -639,20 +646,15 @@ static int narrow(cm_xpool *pool, long p, long *a, long *b, long l, long r)
 static int walk_up(const cm_vsource *vs, long p, long t, long *a, long *b)
 {
     const long *ids = vs->ids;
-    int c = vs->up[t];
-    long la = ids[vs->tri[3 * t + (c + 2) % 3]], lb = ids[vs->tri[3 * t + (c + 1) % 3]];
-    t = vs->nbr[3 * t + c];
-    while (vs->up[t] >= 0) {
-        c = vs->up[t];
-        long l = ids[vs->tri[3 * t + (c + 2) % 3]], r = ids[vs->tri[3 * t + (c + 1) % 3]];
-        if (!narrow(vs->pool, p, &la, &lb, l, r)) return 0;
-        t = vs->nbr[3 * t + c];
-    }
+    const int32_t *w = vs->toward + 3 * t;
+    long la = w[1], lb = w[2];
+    for (w = vs->toward + 3 * (size_t)w[0]; w[0] >= 0; w = vs->toward + 3 * (size_t)w[0])
+        if (!narrow(vs, p, &la, &lb, w[1], w[2])) return 0;
     if (vs->source < 0) {
-        if (!narrow(vs->pool, p, &la, &lb, ids[0], ids[vs->k - 1])) return 0;
+        if (!narrow(vs, p, &la, &lb, ids[0], ids[vs->k - 1])) return 0;
     } else {
         long s = ids[vs->source];
-        if (cm_xorient(vs->pool, p, lb, s) <= 0 || cm_xorient(vs->pool, p, s, la) <= 0) return 0;
+        if (cm_xorient_in(&vs->in, vs->pool, p, lb, s) <= 0 || cm_xorient_in(&vs->in, vs->pool, p, s, la) <= 0) return 0;
         la = lb = s;
     }
     *a = la, *b = lb;
@@ -688,7 +690,7 @@ int cm_vsource_point_cone(cm_vsource *vs, long p, long *a, long *b)
         const int32_t *c = vs->tri + 3 * t;
         int inside = 1;
         for (int i = 0; i < 3 && inside; i++)
-            inside = cm_xorient(vs->pool, vs->ids[c[i]], vs->ids[c[(i + 1) % 3]], p) > 0;
+            inside = cm_xorient_in(&vs->in, vs->pool, vs->ids[c[i]], vs->ids[c[(i + 1) % 3]], p) > 0;
         if (!inside) continue;
         if (vs->depth[t] == 0) return root_cone(vs, a, b);
         return walk_up(vs, p, t, a, b);

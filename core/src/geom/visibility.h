@@ -73,8 +73,14 @@ typedef struct cm_vsource {
     int32_t *up;     /* per triangle: corner opposite the edge toward the
                         root, -1 for root triangles */
     int32_t *depth;  /* per triangle */
+    int32_t *toward; /* per triangle: the neighbour toward the root (-1 for
+                        root triangles) and the pool ids of the left and
+                        right end of the edge to it, as seen from t: one
+                        read per step of a walk up the tree */
     int32_t *fan_start, *fan; /* per vertex: incident triangles (CSR) */
     int32_t *low;    /* per vertex: incident triangle of least depth */
+    cm_xinputs in;   /* pool ids with coordinates at hand; set by the
+                        caller after building, none by default */
 } cm_vsource;
 
 /* Triangulates and roots. Returns 0, -1 out of memory, 1 if the polygon

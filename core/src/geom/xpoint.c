@@ -23,6 +23,7 @@ struct cm_xpool {
     long n, cap;
     mpz_t s[3][3]; /* homogeneous scratch for up to three points */
     mpz_t t[8];    /* arithmetic scratch */
+    mpz_t l[2][3]; /* the two lines of an intersection */
 };
 
 cm_xpool *cm_xpool_create(void)
@@ -32,6 +33,8 @@ cm_xpool *cm_xpool_create(void)
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) mpz_init(pool->s[i][j]);
     for (int i = 0; i < 8; i++) mpz_init(pool->t[i]);
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 3; j++) mpz_init(pool->l[i][j]);
     return pool;
 }
 
@@ -55,6 +58,8 @@ void cm_xpool_free(cm_xpool *pool)
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) mpz_clear(pool->s[i][j]);
     for (int i = 0; i < 8; i++) mpz_clear(pool->t[i]);
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 3; j++) mpz_clear(pool->l[i][j]);
     free(pool->p);
     free(pool);
 }
@@ -138,8 +143,7 @@ static double ratio(const mpz_t x, const mpz_t w)
 
 long cm_xpool_intersect(cm_xpool *pool, long a, long b, long c, long d)
 {
-    mpz_t l1[3], l2[3];
-    for (int i = 0; i < 3; i++) mpz_init(l1[i]), mpz_init(l2[i]);
+    mpz_t *l1 = pool->l[0], *l2 = pool->l[1];
     homogeneous(pool, a, pool->s[0]);
     homogeneous(pool, b, pool->s[1]);
     cross3(pool, l1, pool->s[0], pool->s[1]);
@@ -147,7 +151,6 @@ long cm_xpool_intersect(cm_xpool *pool, long a, long b, long c, long d)
     homogeneous(pool, d, pool->s[1]);
     cross3(pool, l2, pool->s[0], pool->s[1]);
     cross3(pool, pool->s[2], l1, l2);
-    for (int i = 0; i < 3; i++) mpz_clear(l1[i]), mpz_clear(l2[i]);
     if (mpz_sgn(pool->s[2][2]) == 0) return -2;
 
     long id = append(pool);
