@@ -22,14 +22,15 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geom/angle.h"
 #include "geom/predicates.h"
 
 /* Vertices of triangles whose smallest angle is within this of the
  * geometry's (radians) move; the rest stay. */
-#define CM_MAXMIN_WARM (5.0 * 3.14159265358979323846 / 180.0)
+#define CM_MAXMIN_WARM (5.0 * CM_PI / 180.0)
 /* The schedule: tau (radians) and its share of the iterations. */
-static const double cm_maxmin_tau[] = {0.1 * 3.14159265358979323846 / 180.0,
-                                       0.03 * 3.14159265358979323846 / 180.0};
+static const double cm_maxmin_tau[] = {0.1 * CM_PI / 180.0,
+                                       0.03 * CM_PI / 180.0};
 static const double cm_maxmin_share[] = {0.4, 0.6};
 
 typedef struct soft {
