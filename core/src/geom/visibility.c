@@ -168,14 +168,26 @@ int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned c
 
 /* ---- the exact segment test ---------------------------------------------- */
 
-/* Does the direction from vertex i toward point q leave into the interior? */
-static int leaves_inward(const double *xy, long m, long i, const double q[2])
+/* The sign of the turn at vertex i (the orientation of its corner). */
+static int vertex_turn(const double *xy, long m, long i)
+{
+    return cm_orient2d(xy + 2 * ((i + m - 1) % m), xy + 2 * i, xy + 2 * ((i + 1) % m));
+}
+
+void cm_vertex_turns(const double *xy, long m, signed char *turn)
+{
+    for (long i = 0; i < m; i++) turn[i] = (signed char)vertex_turn(xy, m, i);
+}
+
+/* Does the direction from vertex i, whose turn is `turn`, toward point q
+ * leave into the interior? */
+static int leaves_inward(const double *xy, long m, long i, int turn, const double q[2])
 {
     const double *p = xy + 2 * ((i + m - 1) % m), *v = xy + 2 * i, *n = xy + 2 * ((i + 1) % m);
-    int turn = cm_orient2d(p, v, n);
-    int left_of_in = cm_orient2d(p, v, q) > 0, left_of_out = cm_orient2d(v, n, q) > 0;
-    if (turn > 0) return left_of_in && left_of_out;
-    if (turn < 0) return left_of_in || left_of_out;
+    int left_of_in = cm_orient2d(p, v, q) > 0;
+    /* the second side only where it can change the answer */
+    if (turn > 0) return left_of_in && cm_orient2d(v, n, q) > 0;
+    if (turn < 0) return left_of_in || cm_orient2d(v, n, q) > 0;
     return left_of_in;
 }
 
@@ -194,13 +206,15 @@ static int edge_touches_only_at_end(const double a[2], const double b[2], const 
 }
 
 /* The constant-time conditions of cm_segment_inside: distinct ends, not a
- * polygon edge, leaving inward at the ends that are vertices. */
-static int ends_inward(const double *xy, long m, long ia, const double a[2], long ib, const double b[2])
+ * polygon edge, leaving inward at the ends that are vertices (their turns
+ * read from turn when given). */
+static int ends_inward(const double *xy, long m, const signed char *turn, long ia, const double a[2], long ib,
+                       const double b[2])
 {
     if (a[0] == b[0] && a[1] == b[1]) return 0;
     if (ia >= 0 && ib >= 0 && adjacent(m, ia, ib)) return 0;
-    if (ia >= 0 && !leaves_inward(xy, m, ia, b)) return 0;
-    if (ib >= 0 && !leaves_inward(xy, m, ib, a)) return 0;
+    if (ia >= 0 && !leaves_inward(xy, m, ia, turn ? turn[ia] : vertex_turn(xy, m, ia), b)) return 0;
+    if (ib >= 0 && !leaves_inward(xy, m, ib, turn ? turn[ib] : vertex_turn(xy, m, ib), a)) return 0;
     return 1;
 }
 
@@ -240,7 +254,7 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
 {
     /* the constant-time conditions first: a segment leaving outward needs
      * no scan */
-    if (!ends_inward(xy, m, ia, a, ib, b) || !edges_clear(xy, m, ia, a, ib, b, 0, m)) return 0;
+    if (!ends_inward(xy, m, NULL, ia, a, ib, b) || !edges_clear(xy, m, ia, a, ib, b, 0, m)) return 0;
     if (ia < 0 && ib < 0) {
         /* No contact with the boundary: inside iff a is inside. */
         long crossings = 0;
@@ -255,10 +269,11 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
     return 1;
 }
 
-int cm_segment_inside_edges(const double *xy, long m, long ia, long ib, long first, long count)
+int cm_segment_inside_edges(const double *xy, long m, const signed char *turn, long ia, long ib, long first,
+                            long count)
 {
     const double *a = xy + 2 * ia, *b = xy + 2 * ib;
-    return ends_inward(xy, m, ia, a, ib, b) && edges_clear(xy, m, ia, a, ib, b, first, count);
+    return ends_inward(xy, m, turn, ia, a, ib, b) && edges_clear(xy, m, ia, a, ib, b, first, count);
 }
 
 /* ---- the kernel ----------------------------------------------------------- */
