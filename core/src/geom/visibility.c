@@ -301,11 +301,9 @@ int cm_kernel_point(const double *xy, long m, double out[2])
     double lo[2] = {xy[0], xy[1]}, hi[2] = {xy[0], xy[1]};
     for (long i = 1; i < m; i++)
         for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], xy[2 * i + c]), hi[c] = fmax(hi[c], xy[2 * i + c]);
-    double *a = malloc(2 * (size_t)(m + 8) * sizeof *a), *b = malloc(2 * (size_t)(m + 8) * sizeof *b);
-    if (!a || !b) {
-        free(a), free(b);
-        return -1;
-    }
+    /* the clipped polygon and the next one, in one block */
+    double *block = malloc(4 * (size_t)(m + 8) * sizeof *block), *a = block, *b = block + 2 * (m + 8);
+    if (!block) return -1;
     double pad = (hi[0] - lo[0]) + (hi[1] - lo[1]); /* any box around it */
     double box[8] = {lo[0] - pad, lo[1] - pad, hi[0] + pad, lo[1] - pad,
                      hi[0] + pad, hi[1] + pad, lo[0] - pad, hi[1] + pad};
@@ -332,7 +330,7 @@ int cm_kernel_point(const double *xy, long m, double out[2])
                 found = cm_orient2d(xy + 2 * i, xy + 2 * ((i + 1) % m), out) > 0;
         }
     }
-    free(a), free(b);
+    free(block);
     return found;
 }
 
