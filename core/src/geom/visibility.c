@@ -207,22 +207,35 @@ static int edge_touches_only_at_end(const double a[2], const double b[2], const 
 
 /* The constant-time conditions of cm_segment_inside: distinct ends, not a
  * polygon edge, leaving inward at the ends that are vertices (their turns
- * read from turn when given). */
+ * read from turn when given). convex: bit 0 (1) set when a (b) is a
+ * strictly convex vertex; the segment leaving inward there has both
+ * neighbours strictly to one side, so neither edge at that end can
+ * overlap it. */
 static int ends_inward(const double *xy, long m, const signed char *turn, long ia, const double a[2], long ib,
-                       const double b[2])
+                       const double b[2], int *convex)
 {
+    *convex = 0;
     if (a[0] == b[0] && a[1] == b[1]) return 0;
     if (ia >= 0 && ib >= 0 && adjacent(m, ia, ib)) return 0;
-    if (ia >= 0 && !leaves_inward(xy, m, ia, turn ? turn[ia] : vertex_turn(xy, m, ia), b)) return 0;
-    if (ib >= 0 && !leaves_inward(xy, m, ib, turn ? turn[ib] : vertex_turn(xy, m, ib), a)) return 0;
+    if (ia >= 0) {
+        int t = turn ? turn[ia] : vertex_turn(xy, m, ia);
+        if (!leaves_inward(xy, m, ia, t, b)) return 0;
+        *convex |= t > 0;
+    }
+    if (ib >= 0) {
+        int t = turn ? turn[ib] : vertex_turn(xy, m, ib);
+        if (!leaves_inward(xy, m, ib, t, a)) return 0;
+        *convex |= (t > 0) << 1;
+    }
     return 1;
 }
 
 /* Does the open segment ab miss the edges first .. first + count - 1
  * (cyclic; edge i runs from vertex i to i + 1), an edge at vertex ia or ib
- * touching it only there? */
+ * touching it only there? convex as from ends_inward: those ends' edges
+ * need no test. */
 static int edges_clear(const double *xy, long m, long ia, const double a[2], long ib, const double b[2],
-                       long first, long count)
+                       long first, long count, int convex)
 {
     /* ab's box: edges entirely to one side of it cannot meet ab (exact
      * comparisons, the test cm_segments_intersect starts with, here
@@ -234,11 +247,11 @@ static int edges_clear(const double *xy, long m, long ia, const double a[2], lon
         long j = i + 1 < m ? i + 1 : 0;
         const double *e0 = xy + 2 * i, *e1 = xy + 2 * j;
         if (ia == i || ia == j) {
-            if (!edge_touches_only_at_end(a, b, ia == i ? e1 : e0)) return 0;
+            if (!(convex & 1) && !edge_touches_only_at_end(a, b, ia == i ? e1 : e0)) return 0;
             continue;
         }
         if (ib == i || ib == j) {
-            if (!edge_touches_only_at_end(b, a, ib == i ? e1 : e0)) return 0;
+            if (!(convex & 2) && !edge_touches_only_at_end(b, a, ib == i ? e1 : e0)) return 0;
             continue;
         }
         if (boxed && ((e0[0] < lo[0] && e1[0] < lo[0]) || (e0[0] > hi[0] && e1[0] > hi[0]) ||
@@ -254,7 +267,9 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
 {
     /* the constant-time conditions first: a segment leaving outward needs
      * no scan */
-    if (!ends_inward(xy, m, NULL, ia, a, ib, b) || !edges_clear(xy, m, ia, a, ib, b, 0, m)) return 0;
+    int convex;
+    if (!ends_inward(xy, m, NULL, ia, a, ib, b, &convex) || !edges_clear(xy, m, ia, a, ib, b, 0, m, convex))
+        return 0;
     if (ia < 0 && ib < 0) {
         /* No contact with the boundary: inside iff a is inside. */
         long crossings = 0;
@@ -273,7 +288,8 @@ int cm_segment_inside_edges(const double *xy, long m, const signed char *turn, l
                             long count)
 {
     const double *a = xy + 2 * ia, *b = xy + 2 * ib;
-    return ends_inward(xy, m, turn, ia, a, ib, b) && edges_clear(xy, m, ia, a, ib, b, first, count);
+    int convex;
+    return ends_inward(xy, m, turn, ia, a, ib, b, &convex) && edges_clear(xy, m, ia, a, ib, b, first, count, convex);
 }
 
 /* ---- the kernel ----------------------------------------------------------- */
