@@ -253,7 +253,7 @@ static int close_triangle(const dp *d, long i, long l, long first, slot out)
 static void close_face(const dp *d, long i, long l, long first, long chord, slot out)
 {
     pick p = {none, -1, BY_TRIANGLE, -1};
-    uint64_t closing = (chord >= 0 ? d->rev_ok[chord] : d->root_ok) & d->fans_now;
+    uint64_t closing = d->fans_now ? (chord >= 0 ? d->rev_ok[chord] : d->root_ok) & d->fans_now : 0;
     for (long s = first; s < d->start[l + 1]; s++) {
         long a = d->left[s];
         val gl = d->g[s];
@@ -263,7 +263,7 @@ static void close_face(const dp *d, long i, long l, long first, long chord, slot
                   BY_TRIANGLE, (int32_t)a, -1, &p);
         if (exists(pc->more))
             offer((val){pc->more.cost + gl.cost - 1, qmin(pc->more.q, gl.q)}, BY_FACE, (int32_t)a, -1, &p);
-        for (uint64_t b = closing & d->fwd_ok[s] & d->fan_more[a]; b; b &= b - 1) {
+        for (uint64_t b = closing ? closing & d->fwd_ok[s] & d->fan_more[a] : 0; b; b &= b - 1) {
             size_t x = (size_t)cm_lowest_bit(b);
             const chains *fc = fanned(d, x, a);
             double q = chord >= 0 ? fan_q(d, x, chord, l, i) : d->root_fan[x]; /* on l -> i */
@@ -384,9 +384,9 @@ static void solve(dp *d, long *first, int memo)
     for (long l = 0; l < m; l++) first[l] = d->start[l + 1];
     for (long i = m - 2; i >= 0; i--) {
         long last = d->reach[i], done = i;
-        d->fans_now = d->row_fans[i] & d->facing[i];
-        int keep = memo && i > 0 && !d->row_fans[i];
-        if (!keep) start_fans(d, i, last);
+        d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
+        int keep = memo && i > 0 && (!d->nfans || !d->row_fans[i]);
+        if (!keep && d->nfans) start_fans(d, i, last);
         for (long l = i + 1; l <= last; l++) {
             long f = first[l], s = f > d->start[l] && d->left[f - 1] == i ? f - 1 : -1;
             if (keep) {
@@ -609,8 +609,8 @@ static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link **stack, long *top,
                     long *cap)
 {
-    d->fans_now = d->row_fans[i] & d->facing[i];
-    start_fans(d, i, a);
+    d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
+    if (d->nfans) start_fans(d, i, a);
     for (long l = i + 1; l <= a; l++) extend_chains(d, l, find_link(d, i, l), first_after(d, l, i));
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
@@ -733,10 +733,12 @@ static int run(dp *d, int memo, cm_sf_plan *plan)
     d->root = none, d->root_arg = -1, d->root_by = BY_TRIANGLE, d->root_fan_of = -1;
     d->plain = malloc((size_t)m * sizeof *d->plain);
     d->step_from = malloc((size_t)m * sizeof *d->step_from);
-    d->fanned = malloc((size_t)m * (d->nfans ? d->nfans : 1) * sizeof *d->fanned);
+    d->fanned = d->nfans ? malloc((size_t)m * d->nfans * sizeof *d->fanned) : NULL;
     long *first = malloc((size_t)m * sizeof *first);
     int status = -1;
-    if (d->plain && d->step_from && d->fanned && first && build_fans(d) == 0) {
+    /* without fan points no fan array is read (fans_now stays 0): the
+     * many small programs of the link cuts skip them */
+    if (d->plain && d->step_from && first && (!d->nfans || (d->fanned && build_fans(d) == 0))) {
         solve(d, first, memo);
         plan->cost = d->root.cost;
         double q = qmin(d->root.q, 1.0);
