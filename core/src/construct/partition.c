@@ -832,11 +832,12 @@ static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common
 {
     if (limit <= 1 && m > 3 && edge_without_triangle(m, common)) return 1; /* at least 1 */
     cm_diagview view = {common, NULL};
-    double *pos = malloc(2 * k * sizeof *pos);
-    int32_t *all = malloc((size_t)m * sizeof *all);
+    /* the kernel point and the whole polygon's face in one block */
+    double *pos = malloc(2 * k * sizeof *pos + (size_t)m * sizeof(int32_t));
+    int32_t *all = pos ? (int32_t *)(pos + 2 * k) : NULL;
     long cost = -1;
     cm_sf_plan plan;
-    if (pos && all && cm_steinerfree_plan(m, &view, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
+    if (pos && cm_steinerfree_plan(m, &view, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
         cost = 0;
         int whole = 0; /* the one face is the polygon, in its order: its test is the polygon's */
         for (long f = 0; f < plan.nf && cost >= 0 && cost < limit; f++) {
@@ -854,7 +855,7 @@ static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common
         }
         cm_sf_plan_clear(&plan);
     }
-    free(pos), free(all);
+    free(pos);
     return cost;
 }
 
