@@ -128,17 +128,51 @@ static int touches_only_at(const double *a, const double *b, const double *w)
     return !((w[axis] > a[axis]) == (b[axis] > a[axis]) && w[axis] != a[axis]);
 }
 
+/* cm_segment_inside between two vertices by its definition, every edge
+ * tested: not an edge, leaving inward at both ends (inside the corner:
+ * within a convex one, not within the outside of a reflex one), and no
+ * edge meeting the open segment (those at an end touching it only
+ * there). */
+static int inward(const double *xy, int n, int v, const double *q)
+{
+    const double *p = xy + 2 * ((v + n - 1) % n), *c = xy + 2 * v, *s = xy + 2 * ((v + 1) % n);
+    int turn = cm_orient2d(p, c, s), in = cm_orient2d(p, c, q) > 0, out = cm_orient2d(c, s, q) > 0;
+    return turn > 0 ? in && out : turn < 0 ? in || out : in;
+}
+
+static int segment_inside_by_definition(const double *xy, int n, int i, int j)
+{
+    const double *a = xy + 2 * i, *b = xy + 2 * j;
+    if ((i + 1) % n == j || (j + 1) % n == i || !inward(xy, n, i, b) || !inward(xy, n, j, a)) return 0;
+    for (int e = 0; e < n; e++) {
+        int f = (e + 1) % n;
+        const double *e0 = xy + 2 * e, *e1 = xy + 2 * f;
+        if (e == i || f == i) {
+            if (!touches_only_at(a, b, e == i ? e1 : e0)) return 0;
+        } else if (e == j || f == j) {
+            if (!touches_only_at(b, a, e == j ? e1 : e0)) return 0;
+        } else if (cm_segments_intersect(a, b, e0, e1) != 0) {
+            return 0;
+        }
+    }
+    return 1;
+}
+
 static void test_segment_inside_edges(void)
 {
-    long held = 0, inside = 0, outside = 0, bad = 0;
+    long held = 0, inside = 0, outside = 0, bad = 0, definition_bad = 0;
     for (int seed = 1; seed <= 6; seed++) {
         int n = 20 + 8 * seed;
         double *xy = malloc(sizeof(double) * 2 * (size_t)n);
         CHECK(xy && rp_random_simple(xy, n, 900 + (uint64_t)seed) == 0);
+        signed char turn[80]; /* the cached turns, on every other pair */
+        if (xy) cm_vertex_turns(xy, n, turn);
         rp_rng rng = {77 + (uint64_t)seed};
         for (int i = 0; xy && i < n; i++)
             for (int j = i + 2; j < n; j++) {
                 if (i == 0 && j == n - 1) continue;
+                definition_bad += cm_segment_inside(xy, n, i, xy + 2 * i, j, xy + 2 * j) !=
+                                  segment_inside_by_definition(xy, n, i, j);
                 long first = (long)rp_below(&rng, (uint64_t)n), count = 1 + (long)rp_below(&rng, (uint64_t)n);
                 const double *a = xy + 2 * i, *b = xy + 2 * j;
                 int premise = 1;
@@ -153,11 +187,12 @@ static void test_segment_inside_edges(void)
                 held++;
                 int full = cm_segment_inside(xy, n, i, a, j, b);
                 inside += full, outside += !full;
-                bad += cm_segment_inside_edges(xy, n, i, j, first, count) != full;
+                bad += cm_segment_inside_edges(xy, n, (i + j) % 2 ? turn : NULL, i, j, first, count) != full;
             }
         free(xy);
     }
     CHECK_MSG(bad == 0, "%ld of %ld restricted segment tests disagree", bad, held);
+    CHECK_MSG(definition_bad == 0, "%ld segment tests disagree with the definition", definition_bad);
     CHECK_MSG(inside > 50 && outside > 50, "premise held for %ld inside, %ld outside", inside, outside);
 }
 

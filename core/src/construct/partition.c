@@ -832,11 +832,12 @@ static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common
 {
     if (limit <= 1 && m > 3 && edge_without_triangle(m, common)) return 1; /* at least 1 */
     cm_diagview view = {common, NULL};
-    double *pos = malloc(2 * k * sizeof *pos);
-    int32_t *all = malloc((size_t)m * sizeof *all);
+    /* the kernel point and the whole polygon's face in one block */
+    double *pos = malloc(2 * k * sizeof *pos + (size_t)m * sizeof(int32_t));
+    int32_t *all = pos ? (int32_t *)(pos + 2 * k) : NULL;
     long cost = -1;
     cm_sf_plan plan;
-    if (pos && all && cm_steinerfree_plan(m, &view, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
+    if (pos && cm_steinerfree_plan(m, &view, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
         cost = 0;
         int whole = 0; /* the one face is the polygon, in its order: its test is the polygon's */
         for (long f = 0; f < plan.nf && cost >= 0 && cost < limit; f++) {
@@ -854,7 +855,7 @@ static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common
         }
         cm_sf_plan_clear(&plan);
     }
-    free(pos), free(all);
+    free(pos);
     return cost;
 }
 
@@ -897,7 +898,12 @@ static int half_diagonals(const face_ctx *f, size_t g, long from, long nc, const
                           cm_diagset *set)
 {
     long m = f->it->m;
-    if (cm_diagset_init(set, size) != 0) return -1;
+    signed char *turn = malloc((size_t)size);
+    if (!turn || cm_diagset_init(set, size) != 0) {
+        free(turn);
+        return -1;
+    }
+    cm_vertex_turns(h, size, turn); /* each corner's turn once, not per pair */
     for (long i = 0; i < size; i++)
         for (long j = i + 2; j < size; j++) {
             if (i == 0 && j == size - 1) continue; /* an edge */
@@ -912,12 +918,13 @@ static int half_diagonals(const face_ctx *f, size_t g, long from, long nc, const
                 /* one end is an end of P: a diagonal of the face, so only
                  * P's links (edges nc - 1 .. size - 1) and that end's new
                  * corner need a test */
-                seen = cm_segment_inside_edges(h, size, i, j, nc - 1, size - nc + 1);
+                seen = cm_segment_inside_edges(h, size, turn, i, j, nc - 1, size - nc + 1);
             } else if (seen) {
-                seen = cm_segment_inside(h, size, i, h + 2 * i, j, h + 2 * j);
+                seen = cm_segment_inside_edges(h, size, turn, i, j, 0, size);
             }
             if (seen) cm_diagset_add(set, i, j);
         }
+    free(turn);
     return 0;
 }
 
@@ -962,16 +969,16 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
     long m = f->it->m, nb = pr->links - 1, total = 0, key = 0;
     for (size_t g = k; g-- > 0;) key = key * memo->per_g + pick[g];
     if (memo->cost[key] != -2) return memo->cost[key];
-    double **xy = calloc(k, sizeof *xy);
+    /* one block for both halves in every geometry (a half has at most
+     * m + 1 + nb vertices): the link cuts run many small programs */
+    size_t most = 2 * (size_t)(m + 1 + nb);
+    double **xy = malloc(k * sizeof *xy + k * most * sizeof **xy);
     if (!xy) return -1;
+    for (size_t g = 0; g < k; g++) xy[g] = (double *)(xy + k) + g * most;
     for (int half = 0; half < 2 && total >= 0 && total < limit; half++) {
         long from = half == 0 ? pr->u : pr->v, to = half == 0 ? pr->v : pr->u;
-        long size = (to - from + m) % m + 1 + nb, bad = 0;
+        long size = (to - from + m) % m + 1 + nb;
         for (size_t g = 0; g < k; g++) {
-            xy[g] = malloc(2 * (size_t)size * sizeof **xy);
-            bad |= !xy[g];
-        }
-        for (size_t g = 0; g < k && !bad; g++) {
             long n = 0;
             for (long x = from;; x = (x + 1) % m) {
                 xy[g][2 * n] = f->l[g][2 * x], xy[g][2 * n + 1] = f->l[g][2 * x + 1], n++;
@@ -982,15 +989,14 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
                 xy[g][2 * n] = bends[g][2 * b], xy[g][2 * n + 1] = bends[g][2 * b + 1], n++;
             }
         }
-        long c = bad ? -1 : 0;
-        if (!bad && size > 3) {
+        long c = 0;
+        if (size > 3) {
             cm_diagset common = {0, 0, NULL};
             int s = half_common(f, memo, pr, half, pick, size, xy, &common);
             c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(k, size, xy, &common, limit - total);
             cm_diagset_clear(&common);
         }
         total = c < 0 ? -1 : c == LONG_MAX ? LONG_MAX : total + c;
-        for (size_t g = 0; g < k; g++) free(xy[g]), xy[g] = NULL;
     }
     free(xy);
     if (total >= 0) memo->cost[key] = total;

@@ -136,21 +136,44 @@ static double triangle_quality(const dp *d, long a, long b, long c)
     return q;
 }
 
-/* The triangle from fan point x on the directed edge a -> b, or -1 if
- * invalid in some geometry. */
-static double fan_min_angle(const dp *d, size_t x, long a, long b)
+/* Is the triangle from fan point x on the directed edge a -> b valid in
+ * every geometry? */
+static int fan_valid(const dp *d, size_t x, long a, long b)
 {
-    for (size_t g = 0; g < d->k; g++) { /* all first: most fail */
+    for (size_t g = 0; g < d->k; g++) {
         const double *pa = d->xy[g] + 2 * a, *pb = d->xy[g] + 2 * b, *px = d->fans + 2 * (x * d->k + g);
-        if ((d->tame ? cm_orient2d_tame(pa, pb, px) : cm_orient2d(pa, pb, px)) <= 0) return -1.0;
+        if ((d->tame ? cm_orient2d_tame(pa, pb, px) : cm_orient2d(pa, pb, px)) <= 0) return 0;
     }
+    return 1;
+}
+
+/* Worst geometry's quality of the triangle from fan point x on a -> b. */
+static double fan_quality(const dp *d, size_t x, long a, long b)
+{
     double q = NO_TRIANGLE;
     for (size_t g = 0; g < d->k; g++)
         q = qmin(q, quality(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->fans + 2 * (x * d->k + g)));
     return q;
 }
 
-static double fan_q(const dp *d, size_t x, long s) { return d->fan_q[x * (size_t)d->nlinks + (size_t)s]; }
+/* The triangle from fan point x on the directed edge a -> b, or -1 if
+ * invalid in some geometry. */
+static double fan_min_angle(const dp *d, size_t x, long a, long b)
+{
+    return fan_valid(d, x, a, b) ? fan_quality(d, x, a, b) : -1.0;
+}
+
+#define Q_UNKNOWN -2.0 /* a valid fan triangle's quality not computed yet */
+
+/* The quality of the valid triangle from fan point x on link s, directed
+ * a -> b as it was found valid (the same operands: the same double),
+ * computed when first read: most are never read. */
+static double fan_q(const dp *d, size_t x, long s, long a, long b)
+{
+    double *q = &d->fan_q[x * (size_t)d->nlinks + (size_t)s];
+    if (*q == Q_UNKNOWN) *q = fan_quality(d, x, a, b);
+    return *q;
+}
 static int has_fan(uint64_t set, size_t x) { return (int)(set >> x) & 1; }
 static chains *fanned(const dp *d, size_t x, long l) { return &d->fanned[x * (size_t)d->m + (size_t)l]; }
 
@@ -230,7 +253,7 @@ static int close_triangle(const dp *d, long i, long l, long first, slot out)
 static void close_face(const dp *d, long i, long l, long first, long chord, slot out)
 {
     pick p = {none, -1, BY_TRIANGLE, -1};
-    uint64_t closing = (chord >= 0 ? d->rev_ok[chord] : d->root_ok) & d->fans_now;
+    uint64_t closing = d->fans_now ? (chord >= 0 ? d->rev_ok[chord] : d->root_ok) & d->fans_now : 0;
     for (long s = first; s < d->start[l + 1]; s++) {
         long a = d->left[s];
         val gl = d->g[s];
@@ -240,11 +263,11 @@ static void close_face(const dp *d, long i, long l, long first, long chord, slot
                   BY_TRIANGLE, (int32_t)a, -1, &p);
         if (exists(pc->more))
             offer((val){pc->more.cost + gl.cost - 1, qmin(pc->more.q, gl.q)}, BY_FACE, (int32_t)a, -1, &p);
-        for (uint64_t b = closing & d->fwd_ok[s] & d->fan_more[a]; b; b &= b - 1) {
+        for (uint64_t b = closing ? closing & d->fwd_ok[s] & d->fan_more[a] : 0; b; b &= b - 1) {
             size_t x = (size_t)cm_lowest_bit(b);
             const chains *fc = fanned(d, x, a);
-            double q = chord >= 0 ? fan_q(d, x, chord) : d->root_fan[x];
-            offer((val){fc->more.cost + gl.cost + 1, qmin(qmin(fc->more.q, gl.q), qmin(fan_q(d, x, s), q))},
+            double q = chord >= 0 ? fan_q(d, x, chord, l, i) : d->root_fan[x]; /* on l -> i */
+            offer((val){fc->more.cost + gl.cost + 1, qmin(qmin(fc->more.q, gl.q), qmin(fan_q(d, x, s, a, l), q))},
                   BY_FAN, (int32_t)a, (int16_t)x, &p);
         }
     }
@@ -314,7 +337,7 @@ static void extend_fans(dp *d, long l, long s)
     for (uint64_t b = in | ones; b; b &= b - 1) { /* the other fan points have no chain into l */
         size_t x = (size_t)cm_lowest_bit(b);
         chains *fc = fanned(d, x, l);
-        fc->one = has_fan(ones, x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s))} : none;
+        fc->one = has_fan(ones, x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s, d->left[s], l))} : none;
         if (!has_fan(in, x)) fc->more = none, fc->arg = -1;
         finish(fc);
         best |= (uint64_t)exists(fc->best) << x;
@@ -328,7 +351,7 @@ static void extend_fans(dp *d, long l, long s)
             chains *fc = fanned(d, x, e);
             if (!has_fan(d->fan_in[e], x)) fc->more = none, fc->arg = -1; /* its first candidate */
             d->fan_in[e] |= (uint64_t)1 << x;
-            extend(fc, l, fanned(d, x, l), (val){d->g[t].cost, qmin(d->g[t].q, fan_q(d, x, t))}, 1);
+            extend(fc, l, fanned(d, x, l), (val){d->g[t].cost, qmin(d->g[t].q, fan_q(d, x, t, l, e))}, 1);
         }
     }
 }
@@ -361,9 +384,9 @@ static void solve(dp *d, long *first, int memo)
     for (long l = 0; l < m; l++) first[l] = d->start[l + 1];
     for (long i = m - 2; i >= 0; i--) {
         long last = d->reach[i], done = i;
-        d->fans_now = d->row_fans[i] & d->facing[i];
-        int keep = memo && i > 0 && !d->row_fans[i];
-        if (!keep) start_fans(d, i, last);
+        d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
+        int keep = memo && i > 0 && (!d->nfans || !d->row_fans[i]);
+        if (!keep && d->nfans) start_fans(d, i, last);
         for (long l = i + 1; l <= last; l++) {
             long f = first[l], s = f > d->start[l] && d->left[f - 1] == i ? f - 1 : -1;
             if (keep) {
@@ -545,9 +568,9 @@ static int build_fans(dp *d)
             for (uint64_t w = ends; w; w &= w - 1) {
                 size_t x = (size_t)cm_lowest_bit(w);
                 int inside = has_fan(in, x);
-                double q = inside ? (b == a + 1 ? -1.0 : fan_min_angle(d, x, b, a)) : fan_min_angle(d, x, a, b);
-                d->fan_q[x * (size_t)d->nlinks + (size_t)s] = q;
-                if (q >= 0) *(inside ? &d->rev_ok[s] : &d->fwd_ok[s]) |= (uint64_t)1 << x;
+                int ok = inside ? b != a + 1 && fan_valid(d, x, b, a) : fan_valid(d, x, a, b);
+                d->fan_q[x * (size_t)d->nlinks + (size_t)s] = Q_UNKNOWN;
+                if (ok) *(inside ? &d->rev_ok[s] : &d->fwd_ok[s]) |= (uint64_t)1 << x;
             }
         }
     d->root_ok = 0;
@@ -586,8 +609,8 @@ static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link **stack, long *top,
                     long *cap)
 {
-    d->fans_now = d->row_fans[i] & d->facing[i];
-    start_fans(d, i, a);
+    d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
+    if (d->nfans) start_fans(d, i, a);
     for (long l = i + 1; l <= a; l++) extend_chains(d, l, find_link(d, i, l), first_after(d, l, i));
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
@@ -710,10 +733,12 @@ static int run(dp *d, int memo, cm_sf_plan *plan)
     d->root = none, d->root_arg = -1, d->root_by = BY_TRIANGLE, d->root_fan_of = -1;
     d->plain = malloc((size_t)m * sizeof *d->plain);
     d->step_from = malloc((size_t)m * sizeof *d->step_from);
-    d->fanned = malloc((size_t)m * (d->nfans ? d->nfans : 1) * sizeof *d->fanned);
+    d->fanned = d->nfans ? malloc((size_t)m * d->nfans * sizeof *d->fanned) : NULL;
     long *first = malloc((size_t)m * sizeof *first);
     int status = -1;
-    if (d->plain && d->step_from && d->fanned && first && build_fans(d) == 0) {
+    /* without fan points no fan array is read (fans_now stays 0): the
+     * many small programs of the link cuts skip them */
+    if (d->plain && d->step_from && first && (!d->nfans || (d->fanned && build_fans(d) == 0))) {
         solve(d, first, memo);
         plan->cost = d->root.cost;
         double q = qmin(d->root.q, 1.0);

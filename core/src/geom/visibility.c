@@ -168,14 +168,26 @@ int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned c
 
 /* ---- the exact segment test ---------------------------------------------- */
 
-/* Does the direction from vertex i toward point q leave into the interior? */
-static int leaves_inward(const double *xy, long m, long i, const double q[2])
+/* The sign of the turn at vertex i (the orientation of its corner). */
+static int vertex_turn(const double *xy, long m, long i)
+{
+    return cm_orient2d(xy + 2 * ((i + m - 1) % m), xy + 2 * i, xy + 2 * ((i + 1) % m));
+}
+
+void cm_vertex_turns(const double *xy, long m, signed char *turn)
+{
+    for (long i = 0; i < m; i++) turn[i] = (signed char)vertex_turn(xy, m, i);
+}
+
+/* Does the direction from vertex i, whose turn is `turn`, toward point q
+ * leave into the interior? */
+static int leaves_inward(const double *xy, long m, long i, int turn, const double q[2])
 {
     const double *p = xy + 2 * ((i + m - 1) % m), *v = xy + 2 * i, *n = xy + 2 * ((i + 1) % m);
-    int turn = cm_orient2d(p, v, n);
-    int left_of_in = cm_orient2d(p, v, q) > 0, left_of_out = cm_orient2d(v, n, q) > 0;
-    if (turn > 0) return left_of_in && left_of_out;
-    if (turn < 0) return left_of_in || left_of_out;
+    int left_of_in = cm_orient2d(p, v, q) > 0;
+    /* the second side only where it can change the answer */
+    if (turn > 0) return left_of_in && cm_orient2d(v, n, q) > 0;
+    if (turn < 0) return left_of_in || cm_orient2d(v, n, q) > 0;
     return left_of_in;
 }
 
@@ -194,21 +206,36 @@ static int edge_touches_only_at_end(const double a[2], const double b[2], const 
 }
 
 /* The constant-time conditions of cm_segment_inside: distinct ends, not a
- * polygon edge, leaving inward at the ends that are vertices. */
-static int ends_inward(const double *xy, long m, long ia, const double a[2], long ib, const double b[2])
+ * polygon edge, leaving inward at the ends that are vertices (their turns
+ * read from turn when given). convex: bit 0 (1) set when a (b) is a
+ * strictly convex vertex; the segment leaving inward there has both
+ * neighbours strictly to one side, so neither edge at that end can
+ * overlap it. */
+static int ends_inward(const double *xy, long m, const signed char *turn, long ia, const double a[2], long ib,
+                       const double b[2], int *convex)
 {
+    *convex = 0;
     if (a[0] == b[0] && a[1] == b[1]) return 0;
     if (ia >= 0 && ib >= 0 && adjacent(m, ia, ib)) return 0;
-    if (ia >= 0 && !leaves_inward(xy, m, ia, b)) return 0;
-    if (ib >= 0 && !leaves_inward(xy, m, ib, a)) return 0;
+    if (ia >= 0) {
+        int t = turn ? turn[ia] : vertex_turn(xy, m, ia);
+        if (!leaves_inward(xy, m, ia, t, b)) return 0;
+        *convex |= t > 0;
+    }
+    if (ib >= 0) {
+        int t = turn ? turn[ib] : vertex_turn(xy, m, ib);
+        if (!leaves_inward(xy, m, ib, t, a)) return 0;
+        *convex |= (t > 0) << 1;
+    }
     return 1;
 }
 
 /* Does the open segment ab miss the edges first .. first + count - 1
  * (cyclic; edge i runs from vertex i to i + 1), an edge at vertex ia or ib
- * touching it only there? */
+ * touching it only there? convex as from ends_inward: those ends' edges
+ * need no test. */
 static int edges_clear(const double *xy, long m, long ia, const double a[2], long ib, const double b[2],
-                       long first, long count)
+                       long first, long count, int convex)
 {
     /* ab's box: edges entirely to one side of it cannot meet ab (exact
      * comparisons, the test cm_segments_intersect starts with, here
@@ -220,11 +247,11 @@ static int edges_clear(const double *xy, long m, long ia, const double a[2], lon
         long j = i + 1 < m ? i + 1 : 0;
         const double *e0 = xy + 2 * i, *e1 = xy + 2 * j;
         if (ia == i || ia == j) {
-            if (!edge_touches_only_at_end(a, b, ia == i ? e1 : e0)) return 0;
+            if (!(convex & 1) && !edge_touches_only_at_end(a, b, ia == i ? e1 : e0)) return 0;
             continue;
         }
         if (ib == i || ib == j) {
-            if (!edge_touches_only_at_end(b, a, ib == i ? e1 : e0)) return 0;
+            if (!(convex & 2) && !edge_touches_only_at_end(b, a, ib == i ? e1 : e0)) return 0;
             continue;
         }
         if (boxed && ((e0[0] < lo[0] && e1[0] < lo[0]) || (e0[0] > hi[0] && e1[0] > hi[0]) ||
@@ -240,7 +267,9 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
 {
     /* the constant-time conditions first: a segment leaving outward needs
      * no scan */
-    if (!ends_inward(xy, m, ia, a, ib, b) || !edges_clear(xy, m, ia, a, ib, b, 0, m)) return 0;
+    int convex;
+    if (!ends_inward(xy, m, NULL, ia, a, ib, b, &convex) || !edges_clear(xy, m, ia, a, ib, b, 0, m, convex))
+        return 0;
     if (ia < 0 && ib < 0) {
         /* No contact with the boundary: inside iff a is inside. */
         long crossings = 0;
@@ -255,10 +284,12 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
     return 1;
 }
 
-int cm_segment_inside_edges(const double *xy, long m, long ia, long ib, long first, long count)
+int cm_segment_inside_edges(const double *xy, long m, const signed char *turn, long ia, long ib, long first,
+                            long count)
 {
     const double *a = xy + 2 * ia, *b = xy + 2 * ib;
-    return ends_inward(xy, m, ia, a, ib, b) && edges_clear(xy, m, ia, a, ib, b, first, count);
+    int convex;
+    return ends_inward(xy, m, turn, ia, a, ib, b, &convex) && edges_clear(xy, m, ia, a, ib, b, first, count, convex);
 }
 
 /* ---- the kernel ----------------------------------------------------------- */
@@ -286,11 +317,9 @@ int cm_kernel_point(const double *xy, long m, double out[2])
     double lo[2] = {xy[0], xy[1]}, hi[2] = {xy[0], xy[1]};
     for (long i = 1; i < m; i++)
         for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], xy[2 * i + c]), hi[c] = fmax(hi[c], xy[2 * i + c]);
-    double *a = malloc(2 * (size_t)(m + 8) * sizeof *a), *b = malloc(2 * (size_t)(m + 8) * sizeof *b);
-    if (!a || !b) {
-        free(a), free(b);
-        return -1;
-    }
+    /* the clipped polygon and the next one, in one block */
+    double *block = malloc(4 * (size_t)(m + 8) * sizeof *block), *a = block, *b = block + 2 * (m + 8);
+    if (!block) return -1;
     double pad = (hi[0] - lo[0]) + (hi[1] - lo[1]); /* any box around it */
     double box[8] = {lo[0] - pad, lo[1] - pad, hi[0] + pad, lo[1] - pad,
                      hi[0] + pad, hi[1] + pad, lo[0] - pad, hi[1] + pad};
@@ -317,7 +346,7 @@ int cm_kernel_point(const double *xy, long m, double out[2])
                 found = cm_orient2d(xy + 2 * i, xy + 2 * ((i + 1) % m), out) > 0;
         }
     }
-    free(a), free(b);
+    free(block);
     return found;
 }
 
