@@ -318,8 +318,9 @@ int cm_kernel_point(const double *xy, long m, double out[2])
     for (long i = 1; i < m; i++)
         for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], xy[2 * i + c]), hi[c] = fmax(hi[c], xy[2 * i + c]);
     /* the clipped polygon and the next one, in one block */
-    double *block = malloc(4 * (size_t)(m + 8) * sizeof *block), *a = block, *b = block + 2 * (m + 8);
+    double *block = malloc(4 * (size_t)(m + 8) * sizeof *block);
     if (!block) return -1;
+    double *a = block, *b = block + 2 * (m + 8);
     double pad = (hi[0] - lo[0]) + (hi[1] - lo[1]); /* any box around it */
     double box[8] = {lo[0] - pad, lo[1] - pad, hi[0] + pad, lo[1] - pad,
                      hi[0] + pad, hi[1] + pad, lo[0] - pad, hi[1] + pad};
@@ -611,8 +612,9 @@ static int triangulates(cm_vsource *vs)
 {
     static const int after[3] = {1, 2, 0}, before[3] = {2, 0, 1};
     long k = vs->k;
-    int32_t *next = malloc(2 * (size_t)k * sizeof *next), *from = next + k;
+    int32_t *next = malloc(2 * (size_t)k * sizeof *next);
     if (!next) return -1;
+    int32_t *from = next + k;
     for (long v = 0; v < k; v++) next[v] = -1;
     int ok = 1;
     for (long v = 0; v < k && ok; v++) {
