@@ -66,19 +66,33 @@ static int32_t input_index(int32_t j, size_t n, int clockwise)
     return clockwise && j > 0 && (size_t)j < n ? (int32_t)(n - (size_t)j) : j;
 }
 
-/* Each polygon's constrained Delaunay triangulation, into tris[g]. */
-static cm_status delaunay_tris(cm_result *r, const double *const *geoms, size_t k, size_t n, cm_progress *progress,
-                               int32_t *const *tris)
+/* Each polygon geoms[g] triangulated into tris[g]: copied from given[g]
+ * (NULL: none), else its constrained Delaunay triangulation if delaunay,
+ * else by ear clipping alone. */
+static cm_status triangulate_each(cm_result *r, const double *const *geoms, size_t k, size_t n,
+                                  const int32_t *const *given, int delaunay, cm_progress *progress,
+                                  int32_t *const *tris)
 {
     int32_t *idx = malloc(n * sizeof *idx);
-    int t = idx ? 0 : CM_NO_MEMORY;
-    for (size_t i = 0; idx && i < n; i++) idx[i] = (int32_t)i;
-    for (size_t g = 0; t == 0 && g < k; g++) t = cm_polygon_triangulate(geoms[g], idx, (long)n, tris[g], progress);
+    if (!idx) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
+    cm_status s = CM_OK;
+    for (size_t g = 0; s == CM_OK && g < k; g++) {
+        int t = 0;
+        if (given)
+            memcpy(tris[g], given[g], 3 * (n - 2) * sizeof *tris[g]);
+        else if (delaunay)
+            t = cm_polygon_triangulate(geoms[g], idx, (long)n, tris[g], progress);
+        else
+            t = cm_polygon_ear_clip(geoms[g], idx, (long)n, tris[g], progress);
+        if (t == CM_CANCELLED) s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
+        else if (t < 0) s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        else if (t > 0) s = cm_fail(&r->error, CM_ERR_INTERNAL, "polygon %zu: ear clipping found no ear", g);
+        else if (cm_progress_report(progress, CM_STAGE_TRIANGULATE, (double)(g + 1) / (double)k))
+            s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
+    }
     free(idx);
-    if (t == CM_CANCELLED) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
-    if (t < 0) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-    if (t > 0) return cm_fail(&r->error, CM_ERR_INTERNAL, "ear clipping found no ear");
-    return CM_OK;
+    return s;
 }
 
 /* The first compatible triangulation, by the chosen method. tris: each
@@ -103,7 +117,7 @@ static cm_status construct(cm_result *r, const double *const *geoms, int32_t *co
      * none, so the guaranteed construction runs on all of it. */
     cm_mesh_clear(&r->mesh);
     cm_error_init(&r->error);
-    if (!delaunay && (s = delaunay_tris(r, geoms, k, n, progress, tris)) != CM_OK) return s;
+    if (!delaunay && (s = triangulate_each(r, geoms, k, n, NULL, 1, progress, tris)) != CM_OK) return s;
     size_t centroids = 0;
     r->stats.fallback_count++;
     return cm_overlay(geoms, given, k, n, &r->mesh, &centroids, &r->error);
@@ -118,13 +132,12 @@ static cm_status build_first(cm_result *r, const double *const *polygons, const 
 {
     cm_status s = CM_ERR_NO_MEMORY;
     double **geoms = calloc(k, sizeof *geoms);
-    int32_t **tris = calloc(k, sizeof *tris), *idx = malloc(n * sizeof *idx);
+    int32_t **tris = calloc(k, sizeof *tris);
     /* the partition only walks the triangulations (visibility, the same
      * whatever the triangulation): ear clipping alone serves it unless the
      * ceiling or the overlay takes them */
     int delaunay = (given && !clockwise) || o->ceiling || o->method == CM_METHOD_OVERLAY;
-    if (!geoms || !tris || !idx) goto done;
-    for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
+    if (!geoms || !tris) goto done;
     for (size_t g = 0; g < k; g++) {
         geoms[g] = malloc(2 * n * sizeof *geoms[g]);
         tris[g] = malloc(3 * (n - 2) * sizeof *tris[g]);
@@ -134,24 +147,11 @@ static cm_status build_first(cm_result *r, const double *const *polygons, const 
             geoms[g][2 * j] = polygons[g][2 * i];
             geoms[g][2 * j + 1] = polygons[g][2 * i + 1];
         }
-        int t = 0;
-        if (given && !clockwise) /* made on these very polygons */
-            memcpy(tris[g], given[g], 3 * (n - 2) * sizeof *tris[g]);
-        else if (delaunay)
-            t = cm_polygon_triangulate(geoms[g], idx, (long)n, tris[g], progress);
-        else
-            t = cm_polygon_ear_clip(geoms[g], idx, (long)n, tris[g], progress);
-        if (t == CM_CANCELLED) s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
-        if (t < 0) goto done;
-        if (t > 0) {
-            s = cm_fail(&r->error, CM_ERR_INTERNAL, "polygon %zu: ear clipping found no ear", g);
-            goto done;
-        }
-        if (cm_progress_report(progress, CM_STAGE_TRIANGULATE, (double)(g + 1) / (double)k)) {
-            s = cm_fail_status(&r->error, CM_ERR_CANCELLED);
-            goto done;
-        }
     }
+    /* given: made on these very polygons */
+    s = triangulate_each(r, (const double *const *)geoms, k, n, given && !clockwise ? given : NULL, delaunay,
+                         progress, tris);
+    if (s != CM_OK) goto done;
     if (o->ceiling) {
         double t = cm_seconds_now();
         cm_bound b;
@@ -172,7 +172,7 @@ done:
         for (size_t g = 0; g < k; g++) free(geoms[g]);
     if (tris)
         for (size_t g = 0; g < k; g++) free(tris[g]);
-    free(geoms), free(tris), free(idx);
+    free(geoms), free(tris);
     return s;
 }
 
