@@ -58,11 +58,7 @@ static const double *position(const soft *s, const lbfgsfloatval_t *x, int32_t v
 
 static void corner_angles(const double *p[3], double out[3])
 {
-    for (int c = 0; c < 3; c++) {
-        const double *a = p[c], *b = p[(c + 1) % 3], *d = p[(c + 2) % 3];
-        double ux = b[0] - a[0], uy = b[1] - a[1], vx = d[0] - a[0], vy = d[1] - a[1];
-        out[c] = atan2(ux * vy - uy * vx, ux * vx + uy * vy);
-    }
+    for (int c = 0; c < 3; c++) out[c] = cm_angle_at(p[c], p[(c + 1) % 3], p[(c + 2) % 3]);
 }
 
 /* Angles further than this many tau above the smallest weigh less than
@@ -72,21 +68,6 @@ static void corner_angles(const double *p[3], double out[3])
 static double twice_area(const double *p[3])
 {
     return (p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]);
-}
-
-/* The smallest angle of a counter-clockwise triangle with twice its area
- * `cross`: it faces the shortest side, so its sine is cross over the two
- * longer sides, and it is at most 60 degrees (one asin, no atan2). */
-static double smallest_angle(const double *p[3], double cross)
-{
-    double l[3];
-    for (int c = 0; c < 3; c++) {
-        double dx = p[(c + 1) % 3][0] - p[c][0], dy = p[(c + 1) % 3][1] - p[c][1];
-        l[c] = dx * dx + dy * dy;
-    }
-    double shortest = fmin(l[0], fmin(l[1], l[2]));
-    double longer = l[0] * l[1] * l[2] / shortest;
-    return asin(fmin(1.0, cross / sqrt(longer)));
 }
 
 /* Minus the soft smallest angle of the moving triangles and its gradient;
@@ -100,9 +81,8 @@ static lbfgsfloatval_t evaluate(void *instance, const lbfgsfloatval_t *x, lbfgsf
     for (size_t i = 0; i < s->nmoved; i++) {
         const int32_t *v = s->tri + 3 * s->moved[i];
         const double *p[3] = {position(s, x, v[0]), position(s, x, v[1]), position(s, x, v[2])};
-        double cross = twice_area(p);
-        if (!(cross > 0)) return HUGE_VAL;
-        m = fmin(m, s->tmin[i] = smallest_angle(p, cross));
+        if (!(twice_area(p) > 0)) return HUGE_VAL;
+        m = fmin(m, s->tmin[i] = cm_triangle_min_angle(p[0], p[1], p[2]));
     }
     if (m > s->best) s->best = m, memcpy(s->best_x, x, (size_t)n * sizeof *x);
     double cut = m + CM_MAXMIN_CUT * s->tau, sum = s->rest < cut ? exp(-(s->rest - m) / s->tau) : 0;
@@ -149,30 +129,27 @@ static int progress(void *instance, const lbfgsfloatval_t *x, const lbfgsfloatva
 
 /* Which vertices move and which triangles they touch; the smallest angle
  * of the others. 0, or -1 out of memory. */
-static int choose_moving(soft *s, const double *xy, size_t nt, const unsigned char *movable)
+static int choose_moving(soft *s, const double *xy, size_t nt, size_t nb)
 {
     double least = HUGE_VAL;
     double *tmin = malloc(nt * sizeof *tmin);
     if (!tmin) return -1;
     for (size_t t = 0; t < nt; t++) {
         const int32_t *v = s->tri + 3 * t;
-        if (v[0] < 0) continue;
         const double *p[3] = {xy + 2 * v[0], xy + 2 * v[1], xy + 2 * v[2]};
-        double cross = twice_area(p);
-        least = fmin(least, tmin[t] = cross > 0 ? smallest_angle(p, cross) : 0);
+        least = fmin(least, tmin[t] = cm_triangle_min_angle(p[0], p[1], p[2]));
     }
     s->nvar = s->nmoved = 0;
     for (size_t t = 0; t < nt; t++) {
-        if (s->tri[3 * t] < 0 || tmin[t] >= least + CM_MAXMIN_WARM) continue;
+        if (tmin[t] >= least + CM_MAXMIN_WARM) continue;
         for (int c = 0; c < 3; c++) {
             int32_t v = s->tri[3 * t + c];
-            if (movable[v] && s->slot[v] < 0) s->var[s->nvar] = v, s->slot[v] = (int32_t)s->nvar++;
+            if ((size_t)v >= nb && s->slot[v] < 0) s->var[s->nvar] = v, s->slot[v] = (int32_t)s->nvar++;
         }
     }
     s->rest = HUGE_VAL;
     for (size_t t = 0; t < nt; t++) {
         const int32_t *v = s->tri + 3 * t;
-        if (v[0] < 0) continue;
         if (s->slot[v[0]] >= 0 || s->slot[v[1]] >= 0 || s->slot[v[2]] >= 0)
             s->moved[s->nmoved++] = (int32_t)t;
         else
@@ -192,10 +169,10 @@ static int exactly_valid(const soft *s, const lbfgsfloatval_t *x)
     return 1;
 }
 
-static cm_status polish_geometry(soft *s, double *xy, size_t nt, const unsigned char *movable, int max_iterations)
+static cm_status polish_geometry(soft *s, double *xy, size_t nt, size_t nb, int max_iterations)
 {
     s->xy = xy;
-    if (choose_moving(s, xy, nt, movable)) return CM_ERR_NO_MEMORY;
+    if (choose_moving(s, xy, nt, nb)) return CM_ERR_NO_MEMORY;
     cm_status status = CM_OK;
     lbfgsfloatval_t *x = s->nvar ? lbfgs_malloc((int)(2 * s->nvar)) : NULL;
     s->best_x = s->nvar ? lbfgs_malloc((int)(2 * s->nvar)) : NULL;
@@ -229,11 +206,11 @@ static cm_status polish_geometry(soft *s, double *xy, size_t nt, const unsigned 
     return status;
 }
 
-cm_status cm_maxmin_polish_geometry(double *xy, size_t nv, const int32_t *tri, size_t nt, const unsigned char *movable,
-                                    int max_iterations, cm_progress *progress)
+cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, int max_iterations, cm_progress *progress)
 {
+    size_t nv = mesh->nv, nt = mesh->nt;
     if (nt == 0 || max_iterations <= 0) return CM_OK;
-    soft s = {.tri = tri, .progress = progress};
+    soft s = {.tri = mesh->tri, .progress = progress};
     s.slot = malloc(nv * sizeof *s.slot);
     s.var = malloc(nv * sizeof *s.var);
     s.moved = malloc(nt * sizeof *s.moved);
@@ -241,23 +218,9 @@ cm_status cm_maxmin_polish_geometry(double *xy, size_t nv, const int32_t *tri, s
     s.tmin = malloc(nt * sizeof *s.tmin);
     s.hot = malloc(nt * sizeof *s.hot);
     cm_status status = s.slot && s.var && s.moved && s.angle && s.tmin && s.hot ? CM_OK : CM_ERR_NO_MEMORY;
-    if (status == CM_OK) {
-        for (size_t v = 0; v < nv; v++) s.slot[v] = -1;
-        status = polish_geometry(&s, xy, nt, movable, max_iterations);
-    }
+    for (size_t v = 0; status == CM_OK && v < nv; v++) s.slot[v] = -1;
+    for (size_t g = 0; status == CM_OK && g < mesh->k; g++)
+        status = polish_geometry(&s, mesh->xy[g], nt, nb, max_iterations);
     free(s.slot), free(s.var), free(s.moved), free(s.angle), free(s.tmin), free(s.hot);
-    return status;
-}
-
-cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, int max_iterations, cm_progress *progress)
-{
-    unsigned char *movable = malloc(mesh->nv ? mesh->nv : 1);
-    if (!movable) return CM_ERR_NO_MEMORY;
-    for (size_t v = 0; v < mesh->nv; v++) movable[v] = v >= nb;
-    cm_status status = CM_OK;
-    for (size_t g = 0; g < mesh->k && status == CM_OK; g++)
-        status = cm_maxmin_polish_geometry(mesh->xy[g], mesh->nv, mesh->tri, mesh->nt, movable, max_iterations,
-                                           progress);
-    free(movable);
     return status;
 }

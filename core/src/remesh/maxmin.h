@@ -15,10 +15,4 @@
  * geometry. CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
 cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, int max_iterations, cm_progress *progress);
 
-/* The same for one geometry xy of nv vertex slots: triangles tri (3 nt;
- * one with tri[3 t] < 0 is dead and skipped), vertex v may move where
- * movable[v] is nonzero. */
-cm_status cm_maxmin_polish_geometry(double *xy, size_t nv, const int32_t *tri, size_t nt, const unsigned char *movable,
-                                    int max_iterations, cm_progress *progress);
-
 #endif
