@@ -479,13 +479,17 @@ static void test_capped_edges_split(void)
         } else {
             CHECK_MSG(n == 10 && least > bound, "mode %d: %zu boundary vertices, %g degrees", m, n, least);
             CHECK_MSG(contract_holds(r, in, counts, 2), "mode %d: output contract", m);
+            /* arclength keeps the split's parameters; auto's polish may
+             * slide the added points along their edges, in order */
             static const long edge[10] = {0, 0, 0, 0, 1, 2, 2, 2, 2, 3};
             static const double at[10] = {0, 0.25, 0.5, 0.75, 0, 0, 0.25, 0.5, 0.75, 0};
             for (size_t g = 0; g < 2 && n == 10; g++)
                 for (size_t i = 0; i < 10; i++) {
-                    double t;
+                    double t, before = 0;
                     long e = cm_result_boundary_source(r, g, i, &t);
-                    CHECK_MSG(e == edge[i] && t == at[i], "mode %d, polygon %zu, vertex %zu: edge %ld at %g", m, g, i,
+                    if (i > 0 && cm_result_boundary_source(r, g, i - 1, &before) != e) before = 0;
+                    int placed = m == 1 ? t == at[i] : (at[i] == 0 ? t == 0 : t > before && t < 1);
+                    CHECK_MSG(e == edge[i] && placed, "mode %d, polygon %zu, vertex %zu: edge %ld at %g", m, g, i,
                               e, t);
                 }
         }

@@ -443,7 +443,7 @@ static void test_joint_polish(void)
                 start[g] = geometry_min_angle(&m, g);
             }
             memcpy(tri, m.tri, 3 * m.nt * sizeof *tri);
-            CHECK(cm_maxmin_polish(&m, n, 400, NULL) == CM_OK);
+            CHECK(cm_maxmin_polish(&m, n, NULL, 400, NULL) == CM_OK);
             CHECK(m.nv == before.nv && m.nt == before.nt && !memcmp(tri, m.tri, 3 * m.nt * sizeof *tri));
             for (size_t g = 0; g < 2; g++) {
                 CHECK_MSG(!memcmp(keep[g], m.xy[g], 2 * n * sizeof(double)), "boundary moved");

@@ -23,6 +23,10 @@ struct cm_result {
      * loop_start[l + 1] - 1, the outer loop first; NULL without holes. */
     size_t *loop_start;
     size_t num_loops;
+    /* The remesher's smallest angle before its final joint polish: auto's
+     * second pairings are tried on it, so whether they run does not hang
+     * on the polish. */
+    double greedy_angle_deg;
 };
 
 /* Drops all geometry, keeping status and message (a failed result). */

@@ -197,6 +197,7 @@ static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o, cm_re
     r->stats.seconds_remesh = cm_seconds_now() - t;
     r->stats.remesh_iterations = report.iterations;
     r->stats.remesh_aim_deg = report.target_deg;
+    r->greedy_angle_deg = report.greedy_deg;
     return s;
 }
 
@@ -296,6 +297,19 @@ static int edge_between(void *ctx, size_t g, int32_t ea, double ta, int32_t eb, 
     return 1;
 }
 
+/* cm_remesh_boundary's place on r->boundary's labels. */
+static void edge_place(void *ctx, size_t g, int32_t e, double t, double xy[2])
+{
+    const edge_inputs *in = ctx;
+    cm_edge_point(in->polygons[g], in->counts[g], e, t, xy);
+}
+
+/* CM_CORRESPOND_AUTO and _SIMILARITY: the correspondence is chosen. */
+static int chosen_mode(const cm_options *o)
+{
+    return o->correspondence == CM_CORRESPOND_AUTO || o->correspondence == CM_CORRESPOND_SIMILARITY;
+}
+
 /* After boundary splits: r->boundary and the counts become the remeshed
  * boundary's, the mesh's first n vertices. 0 or -1 out of memory. */
 static int take_split_boundary(cm_result *r, size_t n)
@@ -342,10 +356,13 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
     if (on) free((void *)on->loop_start);
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     r->stats.seconds_build = cm_seconds_now() - t1 - (r->stats.seconds_ceiling - ceiling_before);
-    cm_remesh_boundary splits = {edge_between, (void *)edges, r->boundary.edge, r->boundary.t, n};
+    cm_remesh_boundary splits = {edge_between, (void *)edges, r->boundary.edge, r->boundary.t, n,
+                                 chosen_mode(o) ? edge_place : NULL, o->max_edge};
     s = remesh_stage(r, n, o, edges && on ? &splits : NULL, &progress);
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
-    if (splits.n > n && take_split_boundary(r, n = splits.n)) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    /* boundary points added, or slid along their edges */
+    if (edges && on && o->remesh && take_split_boundary(r, n = splits.n))
+        return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     if (clockwise) restore_input_order(&r->mesh, n);
     double t2 = cm_seconds_now();
     if (cm_progress_report(&progress, CM_STAGE_CHECK, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
@@ -386,12 +403,6 @@ static cm_status check_correspondence_options(cm_result *r, const cm_options *o)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "max_edge is %g; expected 0 (off) or a positive length",
                        o->max_edge);
     return CM_OK;
-}
-
-/* CM_CORRESPOND_AUTO and _SIMILARITY: the correspondence is chosen. */
-static int chosen_mode(const cm_options *o)
-{
-    return o->correspondence == CM_CORRESPOND_AUTO || o->correspondence == CM_CORRESPOND_SIMILARITY;
 }
 
 /* The correspondence bound of arc length from every polygon's first
@@ -738,11 +749,11 @@ static double least_angle(const cm_result *r, size_t k)
 
 /* Is r, made by auto's conformal pairing and remeshed by o, below that
  * share of its aim? */
-static int rescue_wanted(const cm_result *r, const cm_options *o, size_t k)
+static int rescue_wanted(const cm_result *r, const cm_options *o)
 {
     return o->correspondence == CM_CORRESPOND_AUTO && o->remesh &&
            r->stats.correspondence_choice == CM_CHOICE_CONFORMAL &&
-           least_angle(r, k) < CM_PAIRING_RESCUE_SHARE * r->stats.remesh_aim_deg;
+           r->greedy_angle_deg < CM_PAIRING_RESCUE_SHARE * r->stats.remesh_aim_deg;
 }
 
 /* *result becomes the better of itself and again, whose run ended with
@@ -777,7 +788,7 @@ static cm_status keep_better(cm_result **result, cm_result *again, cm_status s, 
 static cm_status linear_rescue(cm_result **result, const double *const *polygons, const size_t *counts, size_t k,
                                const cm_options *o)
 {
-    if (!rescue_wanted(*result, o, k)) return CM_OK;
+    if (!rescue_wanted(*result, o)) return CM_OK;
     cm_result *again = NULL;
     cm_options unused;
     const cm_options *same = o;
@@ -858,6 +869,15 @@ static int loop_edge_between(void *ctx, size_t g, int32_t ea, double ta, int32_t
     cm_edge_point(in->polygons[g].xy + 2 * s, count, *e, *t, xy);
     *e += (int32_t)s;
     return 1;
+}
+
+/* cm_remesh_boundary's place on the loops' labels. */
+static void loop_edge_place(void *ctx, size_t g, int32_t e, double t, double xy[2])
+{
+    const loop_edge_inputs *in = ctx;
+    const size_t *start = in->start + g * (in->L + 1);
+    size_t l = cm_loop_of(start, in->L, (size_t)e), s = start[l];
+    cm_edge_point(in->polygons[g].xy + 2 * s, start[l + 1] - s, e - (int32_t)s, t, xy);
 }
 
 /* After boundary splits with holes: the refined loops' new starts (loop
@@ -1039,11 +1059,13 @@ static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, con
     if (s != CM_OK) goto done;
     r->stats.seconds_build = cm_seconds_now() - t1 - r->stats.seconds_ceiling;
     r->mesh.loop_start = start, r->mesh.num_loops = num_loops; /* the remesher's boundary */
-    cm_remesh_boundary splits = {loop_edge_between, (void *)edges, r->boundary.edge, r->boundary.t, n};
+    cm_remesh_boundary splits = {loop_edge_between, (void *)edges, r->boundary.edge, r->boundary.t, n,
+                                 chosen_mode(o) ? loop_edge_place : NULL, o->max_edge};
     s = remesh_stage(r, n, o, splittable ? &splits : NULL, &progress);
     r->mesh.loop_start = NULL, r->mesh.num_loops = 0;
     if (s != CM_OK) goto done;
     if (splits.n > n && take_split_loops(r, n = splits.n, edges, start, &perm)) goto oom;
+    if (splittable && o->remesh && splits.n == n && take_split_boundary(r, n)) goto oom; /* slid points */
     if ((s = permute_loop_vertices(r, perm, n)) != CM_OK) goto done;
     double t2 = cm_seconds_now();
     if (cm_progress_report(&progress, CM_STAGE_CHECK, 0.0)) {
@@ -1225,7 +1247,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
  * outlines knows nothing of the holes) and the better result is kept. */
 static cm_status outer_rescue(cm_result **result, const cm_loops *polygons, size_t k, const cm_options *o)
 {
-    if (!rescue_wanted(*result, o, k)) return CM_OK;
+    if (!rescue_wanted(*result, o)) return CM_OK;
     cm_result *again = NULL;
     cm_options unused;
     const cm_options *same = o;

@@ -14,7 +14,15 @@
  * the positions kept are the best smallest angle met, checked with the
  * exact predicates before they replace the geometry. The geometries
  * share no positions, so each is polished on its own and the
- * connectivity, hence compatibility, never changes. */
+ * connectivity, hence compatibility, never changes.
+ *
+ * Where the correspondence is the tool's to choose, a boundary point the
+ * correspondence put on an input edge of this geometry (the other
+ * polygon's vertex, or a split) may slide along that edge: its variable
+ * is its arc length along the edge. Sliding changes which points
+ * correspond, never the polygon; a slide past a neighbour turns the
+ * boundary triangle between them, so the same orientation test keeps the
+ * boundary in order. */
 #include "remesh/maxmin.h"
 
 #include <lbfgs.h>
@@ -35,12 +43,21 @@ static const double cm_maxmin_share[] = {0.4, 0.6};
 
 typedef struct soft {
     const double *xy;  /* the geometry: positions of the vertices that stay */
+    size_t g;          /* its index */
+    const cm_maxmin_slide *slide;
+    const int32_t *next, *prev; /* boundary neighbours (with slide->max_piece) */
     const int32_t *tri;
     int32_t *moved;    /* triangles touching a moving vertex (indices into tri) */
     size_t nmoved;
     int32_t *slot;     /* per vertex: its variable pair, or -1 */
-    int32_t *var;      /* per variable pair: its vertex */
+    int32_t *var;      /* per variable: its vertex */
     size_t nvar;
+    int32_t *off;      /* per variable: its first value in x (two inside, one on an edge) */
+    int32_t *edge;     /* per variable: the input edge it slides on, or -1 */
+    double *along;     /* per variable: the edge's length and unit direction */
+    double *pos;       /* per variable: its position at the x last set */
+    double *gpos;      /* per variable: the gradient by its position */
+    size_t nx;
     double rest;       /* the smallest angle of the triangles that do not move */
     double tau;
     double *tmin;      /* nmoved: each moving triangle's smallest angle */
@@ -51,9 +68,37 @@ typedef struct soft {
     cm_progress *progress;
 } soft;
 
-static const double *position(const soft *s, const lbfgsfloatval_t *x, int32_t v)
+static const double *position(const soft *s, int32_t v)
 {
-    return s->slot[v] < 0 ? s->xy + 2 * v : x + 2 * s->slot[v];
+    return s->slot[v] < 0 ? s->xy + 2 * v : s->pos + 2 * s->slot[v];
+}
+
+/* The variables' positions at x. */
+static void set_positions(soft *s, const lbfgsfloatval_t *x)
+{
+    for (size_t j = 0; j < s->nvar; j++) {
+        const lbfgsfloatval_t *u = x + s->off[j];
+        if (s->edge[j] < 0)
+            s->pos[2 * j] = u[0], s->pos[2 * j + 1] = u[1];
+        else
+            s->slide->place(s->slide->ctx, s->g, s->edge[j], u[0] / s->along[3 * j], s->pos + 2 * j);
+    }
+}
+
+/* 1 if every slid point's boundary edges are at most max_piece long. */
+static int pieces_short(const soft *s)
+{
+    double limit = s->slide ? s->slide->max_piece : 0;
+    if (!(limit > 0)) return 1;
+    for (size_t j = 0; j < s->nvar; j++) {
+        if (s->edge[j] < 0) continue;
+        const double *p = s->pos + 2 * j;
+        for (int side = 0; side < 2; side++) {
+            const double *q = position(s, (side ? s->next : s->prev)[s->var[j]]);
+            if (hypot(q[0] - p[0], q[1] - p[1]) > limit) return 0;
+        }
+    }
+    return 1;
 }
 
 static void corner_angles(const double *p[3], double out[3])
@@ -77,33 +122,35 @@ static lbfgsfloatval_t evaluate(void *instance, const lbfgsfloatval_t *x, lbfgsf
 {
     (void)step;
     soft *s = instance;
+    set_positions(s, x);
     double m = s->rest;
     for (size_t i = 0; i < s->nmoved; i++) {
         const int32_t *v = s->tri + 3 * s->moved[i];
-        const double *p[3] = {position(s, x, v[0]), position(s, x, v[1]), position(s, x, v[2])};
+        const double *p[3] = {position(s, v[0]), position(s, v[1]), position(s, v[2])};
         if (!(twice_area(p) > 0)) return HUGE_VAL;
         m = fmin(m, s->tmin[i] = cm_triangle_min_angle(p[0], p[1], p[2]));
     }
+    if (!pieces_short(s)) return HUGE_VAL;
     if (m > s->best) s->best = m, memcpy(s->best_x, x, (size_t)n * sizeof *x);
     double cut = m + CM_MAXMIN_CUT * s->tau, sum = s->rest < cut ? exp(-(s->rest - m) / s->tau) : 0;
     size_t hot = 0;
     for (size_t i = 0; i < s->nmoved; i++) {
         if (s->tmin[i] >= cut) continue;
         const int32_t *v = s->tri + 3 * s->moved[i];
-        const double *p[3] = {position(s, x, v[0]), position(s, x, v[1]), position(s, x, v[2])};
+        const double *p[3] = {position(s, v[0]), position(s, v[1]), position(s, v[2])};
         double *a = s->angle + 3 * hot;
         corner_angles(p, a);
         for (int c = 0; c < 3; c++) sum += a[c] < cut ? exp(-(a[c] - m) / s->tau) : 0;
         s->hot[hot++] = s->moved[i];
     }
-    memset(g, 0, (size_t)n * sizeof *g);
+    memset(s->gpos, 0, 2 * s->nvar * sizeof *s->gpos);
     for (size_t i = 0; i < hot; i++) {
         const int32_t *v = s->tri + 3 * s->hot[i];
         for (int c = 0; c < 3; c++) {
             if (s->angle[3 * i + c] >= cut) continue;
             double w = exp(-(s->angle[3 * i + c] - m) / s->tau) / sum;
             int32_t at[3] = {v[c], v[(c + 1) % 3], v[(c + 2) % 3]};
-            const double *a = position(s, x, at[0]), *b = position(s, x, at[1]), *d = position(s, x, at[2]);
+            const double *a = position(s, at[0]), *b = position(s, at[1]), *d = position(s, at[2]);
             double ux = b[0] - a[0], uy = b[1] - a[1], vx = d[0] - a[0], vy = d[1] - a[1];
             double uu = ux * ux + uy * uy, vv = vx * vx + vy * vy;
             /* the angle is arg(d - a) - arg(b - a) */
@@ -112,10 +159,19 @@ static lbfgsfloatval_t evaluate(void *instance, const lbfgsfloatval_t *x, lbfgsf
             for (int e = 0; e < 3; e++) {
                 int32_t j = s->slot[at[e]];
                 if (j < 0) continue;
-                g[2 * j] -= w * grad[e][0], g[2 * j + 1] -= w * grad[e][1];
+                s->gpos[2 * j] -= w * grad[e][0], s->gpos[2 * j + 1] -= w * grad[e][1];
             }
         }
     }
+    for (size_t j = 0; j < s->nvar; j++) {
+        lbfgsfloatval_t *gj = g + s->off[j];
+        const double *d = s->gpos + 2 * j;
+        if (s->edge[j] < 0)
+            gj[0] = d[0], gj[1] = d[1];
+        else
+            gj[0] = d[0] * s->along[3 * j + 1] + d[1] * s->along[3 * j + 2];
+    }
+    (void)n;
     return -(m - s->tau * log(sum));
 }
 
@@ -127,24 +183,50 @@ static int progress(void *instance, const lbfgsfloatval_t *x, const lbfgsfloatva
     return cm_progress_check(((soft *)instance)->progress);
 }
 
-/* Which vertices move and which triangles they touch; the smallest angle
- * of the others. 0, or -1 out of memory. */
-static int choose_moving(soft *s, const double *xy, size_t nt, size_t nb)
+/* v as a variable of s: two values for a Steiner vertex, one (its arc
+ * length along its input edge) for a boundary point that slides. */
+static void add_variable(soft *s, int32_t v, size_t nb)
 {
-    double least = HUGE_VAL;
+    size_t j = s->nvar++;
+    s->var[j] = v, s->slot[v] = (int32_t)j, s->off[j] = (int32_t)s->nx, s->edge[j] = -1;
+    if ((size_t)v >= nb) {
+        s->nx += 2;
+        return;
+    }
+    const cm_maxmin_slide *sl = s->slide;
+    double a[2], b[2];
+    int32_t e = sl->edge[s->g][v];
+    sl->place(sl->ctx, s->g, e, 0.0, a), sl->place(sl->ctx, s->g, e, 1.0, b);
+    double len = hypot(b[0] - a[0], b[1] - a[1]);
+    s->edge[j] = e;
+    s->along[3 * j] = len, s->along[3 * j + 1] = (b[0] - a[0]) / len, s->along[3 * j + 2] = (b[1] - a[1]) / len;
+    s->nx += 1;
+}
+
+/* 1 if boundary vertex v of this geometry may slide. */
+static int slides(const soft *s, int32_t v)
+{
+    return s->slide && s->slide->t[s->g][v] > 0;
+}
+
+/* Which vertices move and which triangles they touch; the smallest angle
+ * of the others (and of all, *least). 0, or -1 out of memory. */
+static int choose_moving(soft *s, const double *xy, size_t nt, size_t nb, double *least)
+{
+    *least = HUGE_VAL;
     double *tmin = malloc(nt * sizeof *tmin);
     if (!tmin) return -1;
     for (size_t t = 0; t < nt; t++) {
         const int32_t *v = s->tri + 3 * t;
         const double *p[3] = {xy + 2 * v[0], xy + 2 * v[1], xy + 2 * v[2]};
-        least = fmin(least, tmin[t] = cm_triangle_min_angle(p[0], p[1], p[2]));
+        *least = fmin(*least, tmin[t] = cm_triangle_min_angle(p[0], p[1], p[2]));
     }
-    s->nvar = s->nmoved = 0;
+    s->nvar = s->nmoved = s->nx = 0;
     for (size_t t = 0; t < nt; t++) {
-        if (tmin[t] >= least + CM_MAXMIN_WARM) continue;
+        if (tmin[t] >= *least + CM_MAXMIN_WARM) continue;
         for (int c = 0; c < 3; c++) {
             int32_t v = s->tri[3 * t + c];
-            if ((size_t)v >= nb && s->slot[v] < 0) s->var[s->nvar] = v, s->slot[v] = (int32_t)s->nvar++;
+            if (s->slot[v] < 0 && ((size_t)v >= nb || slides(s, v))) add_variable(s, v, nb);
         }
     }
     s->rest = HUGE_VAL;
@@ -159,27 +241,36 @@ static int choose_moving(soft *s, const double *xy, size_t nt, size_t nb)
     return 0;
 }
 
-/* 1 if every moving triangle is counter-clockwise at x, exactly. */
-static int exactly_valid(const soft *s, const lbfgsfloatval_t *x)
+/* 1 if every moving triangle is counter-clockwise at x, exactly, and the
+ * slid points' boundary edges short enough. */
+static int exactly_valid(soft *s, const lbfgsfloatval_t *x)
 {
+    set_positions(s, x);
     for (size_t i = 0; i < s->nmoved; i++) {
         const int32_t *v = s->tri + 3 * s->moved[i];
-        if (cm_orient2d(position(s, x, v[0]), position(s, x, v[1]), position(s, x, v[2])) <= 0) return 0;
+        if (cm_orient2d(position(s, v[0]), position(s, v[1]), position(s, v[2])) <= 0) return 0;
     }
-    return 1;
+    return pieces_short(s);
 }
 
-static cm_status polish_geometry(soft *s, double *xy, size_t nt, size_t nb, int max_iterations)
+static cm_status polish_geometry(soft *s, size_t g, double *xy, size_t nt, size_t nb, int max_iterations)
 {
-    s->xy = xy;
-    if (choose_moving(s, xy, nt, nb)) return CM_ERR_NO_MEMORY;
+    s->xy = xy, s->g = g;
+    double least;
+    if (choose_moving(s, xy, nt, nb, &least)) return CM_ERR_NO_MEMORY;
     cm_status status = CM_OK;
-    lbfgsfloatval_t *x = s->nvar ? lbfgs_malloc((int)(2 * s->nvar)) : NULL;
-    s->best_x = s->nvar ? lbfgs_malloc((int)(2 * s->nvar)) : NULL;
-    if (s->nvar && (!x || !s->best_x)) status = CM_ERR_NO_MEMORY;
-    if (status == CM_OK && s->nvar) {
-        for (size_t j = 0; j < s->nvar; j++) x[2 * j] = xy[2 * s->var[j]], x[2 * j + 1] = xy[2 * s->var[j] + 1];
-        memcpy(s->best_x, x, 2 * s->nvar * sizeof *x);
+    lbfgsfloatval_t *x = s->nx ? lbfgs_malloc((int)s->nx) : NULL;
+    s->best_x = s->nx ? lbfgs_malloc((int)s->nx) : NULL;
+    if (s->nx && (!x || !s->best_x)) status = CM_ERR_NO_MEMORY;
+    if (status == CM_OK && s->nx) {
+        for (size_t j = 0; j < s->nvar; j++) {
+            const double *p = xy + 2 * s->var[j];
+            if (s->edge[j] < 0)
+                x[s->off[j]] = p[0], x[s->off[j] + 1] = p[1];
+            else
+                x[s->off[j]] = s->slide->t[g][s->var[j]] * s->along[3 * j];
+        }
+        memcpy(s->best_x, x, s->nx * sizeof *x);
         s->best = -HUGE_VAL;
         for (size_t round = 0; round < sizeof cm_maxmin_tau / sizeof *cm_maxmin_tau; round++) {
             lbfgs_parameter_t param;
@@ -189,16 +280,21 @@ static cm_status polish_geometry(soft *s, double *xy, size_t nt, size_t nb, int 
             param.epsilon = 1e-9;
             s->tau = cm_maxmin_tau[round];
             /* any end is fine: the best point met is what counts */
-            lbfgs((int)(2 * s->nvar), x, NULL, evaluate, progress, s, &param);
+            lbfgs((int)s->nx, x, NULL, evaluate, progress, s, &param);
             if (cm_progress_check(s->progress)) {
                 status = CM_ERR_CANCELLED;
                 break;
             }
-            memcpy(x, s->best_x, 2 * s->nvar * sizeof *x);
+            memcpy(x, s->best_x, s->nx * sizeof *x);
         }
-        if (status == CM_OK && exactly_valid(s, s->best_x))
-            for (size_t j = 0; j < s->nvar; j++)
-                xy[2 * s->var[j]] = s->best_x[2 * j], xy[2 * s->var[j] + 1] = s->best_x[2 * j + 1];
+        /* a slid point's start is its label's parameter times a length,
+         * not its exact position: keep only a gain */
+        if (status == CM_OK && s->best >= least && exactly_valid(s, s->best_x))
+            for (size_t j = 0; j < s->nvar; j++) {
+                int32_t v = s->var[j];
+                xy[2 * v] = s->pos[2 * j], xy[2 * v + 1] = s->pos[2 * j + 1];
+                if (s->edge[j] >= 0) s->slide->t[g][v] = s->best_x[s->off[j]] / s->along[3 * j];
+            }
     }
     for (size_t j = 0; j < s->nvar; j++) s->slot[s->var[j]] = -1;
     lbfgs_free(x), lbfgs_free(s->best_x);
@@ -206,21 +302,63 @@ static cm_status polish_geometry(soft *s, double *xy, size_t nt, size_t nb, int 
     return status;
 }
 
-cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, int max_iterations, cm_progress *progress)
+static int by_pair(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* next[v], prev[v]: boundary vertex v's neighbours along its loop (the
+ * edges between boundary vertices whose reverse is no triangle's). 0, or
+ * -1 out of memory. */
+static int boundary_neighbours(const int32_t *tri, size_t nt, size_t nb, int32_t *next, int32_t *prev)
+{
+    uint64_t *e = malloc(3 * nt * sizeof *e);
+    if (!e) return -1;
+    size_t m = 0;
+    for (size_t t = 0; t < 3 * nt; t++) {
+        uint64_t a = (uint64_t)tri[t], b = (uint64_t)tri[t - t % 3 + (t + 1) % 3];
+        if (a < nb && b < nb) e[m++] = a << 32 | b;
+    }
+    qsort(e, m, sizeof *e, by_pair);
+    for (size_t i = 0; i < m; i++) {
+        uint64_t a = e[i] >> 32, b = e[i] & 0xffffffffu, twin = b << 32 | a;
+        if (!bsearch(&twin, e, m, sizeof *e, by_pair)) next[a] = (int32_t)b, prev[b] = (int32_t)a;
+    }
+    free(e);
+    return 0;
+}
+
+cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, const cm_maxmin_slide *slide, int max_iterations,
+                           cm_progress *progress)
 {
     size_t nv = mesh->nv, nt = mesh->nt;
     if (nt == 0 || max_iterations <= 0) return CM_OK;
-    soft s = {.tri = mesh->tri, .progress = progress};
+    soft s = {.tri = mesh->tri, .slide = slide, .progress = progress};
+    int32_t *links = slide && slide->max_piece > 0 ? malloc(2 * nb * sizeof *links) : NULL;
     s.slot = malloc(nv * sizeof *s.slot);
     s.var = malloc(nv * sizeof *s.var);
+    s.off = malloc(nv * sizeof *s.off);
+    s.edge = malloc(nv * sizeof *s.edge);
+    s.along = malloc(3 * nv * sizeof *s.along);
+    s.pos = malloc(2 * nv * sizeof *s.pos);
+    s.gpos = malloc(2 * nv * sizeof *s.gpos);
     s.moved = malloc(nt * sizeof *s.moved);
     s.angle = malloc(3 * nt * sizeof *s.angle);
     s.tmin = malloc(nt * sizeof *s.tmin);
     s.hot = malloc(nt * sizeof *s.hot);
-    cm_status status = s.slot && s.var && s.moved && s.angle && s.tmin && s.hot ? CM_OK : CM_ERR_NO_MEMORY;
+    cm_status status = s.slot && s.var && s.off && s.edge && s.along && s.pos && s.gpos && s.moved && s.angle &&
+                               s.tmin && s.hot && (links || !(slide && slide->max_piece > 0))
+                           ? CM_OK
+                           : CM_ERR_NO_MEMORY;
+    if (status == CM_OK && links) {
+        s.next = links, s.prev = links + nb;
+        if (boundary_neighbours(mesh->tri, nt, nb, links, links + nb)) status = CM_ERR_NO_MEMORY;
+    }
     for (size_t v = 0; status == CM_OK && v < nv; v++) s.slot[v] = -1;
     for (size_t g = 0; status == CM_OK && g < mesh->k; g++)
-        status = polish_geometry(&s, mesh->xy[g], nt, nb, max_iterations);
-    free(s.slot), free(s.var), free(s.moved), free(s.angle), free(s.tmin), free(s.hot);
+        status = polish_geometry(&s, g, mesh->xy[g], nt, nb, max_iterations);
+    free(links), free(s.slot), free(s.var), free(s.off), free(s.edge), free(s.along), free(s.pos), free(s.gpos);
+    free(s.moved), free(s.angle), free(s.tmin), free(s.hot);
     return status;
 }

@@ -7,12 +7,28 @@
 #include "base/mesh.h"
 #include "base/progress.h"
 
+/* Boundary points that may slide along their input edge: those the
+ * correspondence put on an input edge (t > 0) when the correspondence is
+ * the tool's to choose. Labels as cm_remesh_boundary's, updated in
+ * place; place writes the point at parameter t of input edge e of
+ * geometry g (the one formula the labels' points come from). max_piece >
+ * 0: a slid point's boundary edges stay at most this long. */
+typedef struct cm_maxmin_slide {
+    int32_t *const *edge;
+    double *const *t;
+    void (*place)(void *ctx, size_t g, int32_t e, double t, double xy[2]);
+    void *ctx;
+    double max_piece;
+} cm_maxmin_slide;
+
 /* Moves the vertices nb .. nv - 1 of every geometry of mesh (the first nb
- * are the boundary, fixed) so that each geometry's smallest angle rises,
- * keeping every triangle counter-clockwise by the exact predicates. The
- * connectivity is unchanged, so the meshes stay compatible; no geometry's
- * smallest angle falls. At most max_iterations L-BFGS iterations per
- * geometry. CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
-cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, int max_iterations, cm_progress *progress);
+ * are the boundary, fixed unless slide allows them along their edges) so
+ * that each geometry's smallest angle rises, keeping every triangle
+ * counter-clockwise by the exact predicates. The connectivity is
+ * unchanged, so the meshes stay compatible; no geometry's smallest angle
+ * falls. At most max_iterations L-BFGS iterations per geometry. CM_OK,
+ * CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
+cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, const cm_maxmin_slide *slide, int max_iterations,
+                           cm_progress *progress);
 
 #endif

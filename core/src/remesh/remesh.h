@@ -15,6 +15,7 @@ typedef struct cm_remesh_report {
     long splits, split_attempts, collapses, flips;
     double target_deg;    /* the lowest triangle target after the boundary caps */
     double min_angle_deg; /* smallest angle of the result, all geometries */
+    double greedy_deg;    /* the same before the final joint polish */
 } cm_remesh_report;
 
 /* Boundary splits: the remesher may split boundary edges (refinement
@@ -23,13 +24,19 @@ typedef struct cm_remesh_report {
  * (k arrays of n, allocated with malloc), carried to the points added
  * through between(). On CM_OK the arrays are replaced by the final
  * boundary's, n of them: mesh vertices 0 .. n - 1, in loop order (vertex
- * 0 first; cm_kmesh_write). */
+ * 0 first; cm_kmesh_write). place: NULL, or (when the correspondence is
+ * the tool's to choose) the point at parameter t of input edge e of
+ * geometry g, and the final polish may slide the points with t > 0 along
+ * their edges (cm_maxmin_slide), keeping boundary edges at most
+ * max_piece long when that is > 0. */
 typedef struct cm_remesh_boundary {
     cm_kmesh_between between;
     void *ctx;
     int32_t **edge;
     double **t;
     size_t n;
+    void (*place)(void *ctx, size_t g, int32_t e, double t, double xy[2]);
+    double max_piece;
 } cm_remesh_boundary;
 
 /* Algorithm 1 on mesh (polygon vertices 0..n-1 counter-clockwise, each
