@@ -123,6 +123,26 @@ static cm_status construct(cm_result *r, const double *const *geoms, int32_t *co
     return cm_overlay(geoms, given, k, n, &r->mesh, &centroids, &r->error);
 }
 
+/* The ceiling of the k polygons geoms (n vertices each, counter-clockwise;
+ * tris: NULL or their triangulations) into r's stats; the quadruple in
+ * input numbering. */
+static cm_status take_ceiling(cm_result *r, const double *const *geoms, const int32_t *const *tris, size_t k,
+                              size_t n, int clockwise, cm_progress *progress)
+{
+    double t = cm_seconds_now();
+    cm_bound b;
+    cm_status s = cm_bound_compute(geoms, tris, k, n, progress, &b, &r->error);
+    if (s != CM_OK) return s;
+    r->stats.corner_fan_cap_deg = b.corner_fan_deg;
+    r->stats.correspondence_bound_deg = b.correspondence_deg;
+    r->stats.ceiling_deg = fmin(b.corner_fan_deg, b.correspondence_deg);
+    r->stats.modulus_distortion = b.distortion;
+    for (int i = 0; i < 4; i++)
+        r->stats.distortion_quad[i] = b.quad[i] < 0 ? -1 : input_index((int32_t)b.quad[i], n, clockwise);
+    r->stats.seconds_ceiling += cm_seconds_now() - t;
+    return CM_OK;
+}
+
 /* on: where the boundary vertices lie on the inputs (NULL: all input
  * vertices, the index correspondence and the pieces of polygons with
  * holes). given: NULL, or each polygon's cm_polygon_triangulate already
@@ -153,18 +173,8 @@ static cm_status build_first(cm_result *r, const double *const *polygons, const 
                          progress, tris);
     if (s != CM_OK) goto done;
     if (o->ceiling) {
-        double t = cm_seconds_now();
-        cm_bound b;
-        s = cm_bound_compute((const double *const *)geoms, (const int32_t *const *)tris, k, n, progress,
-                             &b, &r->error);
+        s = take_ceiling(r, (const double *const *)geoms, (const int32_t *const *)tris, k, n, clockwise, progress);
         if (s != CM_OK) goto done;
-        r->stats.corner_fan_cap_deg = b.corner_fan_deg;
-        r->stats.correspondence_bound_deg = b.correspondence_deg;
-        r->stats.ceiling_deg = fmin(b.corner_fan_deg, b.correspondence_deg);
-        r->stats.modulus_distortion = b.distortion;
-        for (int i = 0; i < 4; i++)
-            r->stats.distortion_quad[i] = b.quad[i] < 0 ? -1 : input_index((int32_t)b.quad[i], n, clockwise);
-        r->stats.seconds_ceiling += cm_seconds_now() - t;
     }
     s = construct(r, (const double *const *)geoms, tris, delaunay, k, n, on, o, progress);
 done:
@@ -357,12 +367,15 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
     r->stats.seconds_build = cm_seconds_now() - t1 - (r->stats.seconds_ceiling - ceiling_before);
     cm_remesh_boundary splits = {edge_between, (void *)edges, r->boundary.edge, r->boundary.t, n,
-                                 chosen_mode(o) ? edge_place : NULL, o->max_edge};
+                                 chosen_mode(o) ? edge_place : NULL, o->max_edge, 0};
     s = remesh_stage(r, n, o, edges && on ? &splits : NULL, &progress);
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
-    /* boundary points added, or slid along their edges */
-    if (edges && on && o->remesh && take_split_boundary(r, n = splits.n))
-        return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    if (splits.n > n && take_split_boundary(r, n = splits.n)) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    if (splits.slid) { /* points slid along their edges: the ceiling of the correspondence made */
+        if (take_split_boundary(r, n)) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+        if (o->ceiling && (s = take_ceiling(r, (const double *const *)r->boundary.xy, NULL, k, n, 0, &progress)))
+            return s;
+    }
     if (clockwise) restore_input_order(&r->mesh, n);
     double t2 = cm_seconds_now();
     if (cm_progress_report(&progress, CM_STAGE_CHECK, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
@@ -1060,12 +1073,12 @@ static cm_status run_loops(cm_result *r, const cm_loops *polygons, size_t k, con
     r->stats.seconds_build = cm_seconds_now() - t1 - r->stats.seconds_ceiling;
     r->mesh.loop_start = start, r->mesh.num_loops = num_loops; /* the remesher's boundary */
     cm_remesh_boundary splits = {loop_edge_between, (void *)edges, r->boundary.edge, r->boundary.t, n,
-                                 chosen_mode(o) ? loop_edge_place : NULL, o->max_edge};
+                                 chosen_mode(o) ? loop_edge_place : NULL, o->max_edge, 0};
     s = remesh_stage(r, n, o, splittable ? &splits : NULL, &progress);
     r->mesh.loop_start = NULL, r->mesh.num_loops = 0;
     if (s != CM_OK) goto done;
     if (splits.n > n && take_split_loops(r, n = splits.n, edges, start, &perm)) goto oom;
-    if (splittable && o->remesh && splits.n == n && take_split_boundary(r, n)) goto oom; /* slid points */
+    if (splits.slid && splits.n == n && take_split_boundary(r, n)) goto oom; /* slid points */
     if ((s = permute_loop_vertices(r, perm, n)) != CM_OK) goto done;
     double t2 = cm_seconds_now();
     if (cm_progress_report(&progress, CM_STAGE_CHECK, 0.0)) {

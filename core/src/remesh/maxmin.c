@@ -58,6 +58,7 @@ typedef struct soft {
     double *pos;       /* per variable: its position at the x last set */
     double *gpos;      /* per variable: the gradient by its position */
     size_t nx;
+    size_t slid;       /* boundary points moved so far */
     double rest;       /* the smallest angle of the triangles that do not move */
     double tau;
     double *tmin;      /* nmoved: each moving triangle's smallest angle */
@@ -293,7 +294,8 @@ static cm_status polish_geometry(soft *s, size_t g, double *xy, size_t nt, size_
             for (size_t j = 0; j < s->nvar; j++) {
                 int32_t v = s->var[j];
                 xy[2 * v] = s->pos[2 * j], xy[2 * v + 1] = s->pos[2 * j + 1];
-                if (s->edge[j] >= 0) s->slide->t[g][v] = s->best_x[s->off[j]] / s->along[3 * j];
+                double t = s->edge[j] < 0 ? 0 : s->best_x[s->off[j]] / s->along[3 * j];
+                if (s->edge[j] >= 0 && t != s->slide->t[g][v]) s->slide->t[g][v] = t, s->slid++;
             }
     }
     for (size_t j = 0; j < s->nvar; j++) s->slot[s->var[j]] = -1;
@@ -329,7 +331,7 @@ static int boundary_neighbours(const int32_t *tri, size_t nt, size_t nb, int32_t
     return 0;
 }
 
-cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, const cm_maxmin_slide *slide, int max_iterations,
+cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, cm_maxmin_slide *slide, int max_iterations,
                            cm_progress *progress)
 {
     size_t nv = mesh->nv, nt = mesh->nt;
@@ -358,6 +360,7 @@ cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, const cm_maxmin_slide *slid
     for (size_t v = 0; status == CM_OK && v < nv; v++) s.slot[v] = -1;
     for (size_t g = 0; status == CM_OK && g < mesh->k; g++)
         status = polish_geometry(&s, g, mesh->xy[g], nt, nb, max_iterations);
+    if (slide) slide->slid = s.slid;
     free(links), free(s.slot), free(s.var), free(s.off), free(s.edge), free(s.along), free(s.pos), free(s.gpos);
     free(s.moved), free(s.angle), free(s.tmin), free(s.hot);
     return status;

@@ -19,6 +19,7 @@ typedef struct cm_maxmin_slide {
     void (*place)(void *ctx, size_t g, int32_t e, double t, double xy[2]);
     void *ctx;
     double max_piece;
+    size_t slid; /* out: how many boundary points moved */
 } cm_maxmin_slide;
 
 /* Moves the vertices nb .. nv - 1 of every geometry of mesh (the first nb
@@ -28,7 +29,7 @@ typedef struct cm_maxmin_slide {
  * unchanged, so the meshes stay compatible; no geometry's smallest angle
  * falls. At most max_iterations L-BFGS iterations per geometry. CM_OK,
  * CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
-cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, const cm_maxmin_slide *slide, int max_iterations,
+cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, cm_maxmin_slide *slide, int max_iterations,
                            cm_progress *progress);
 
 #endif

@@ -866,15 +866,16 @@ static cm_status finish(remesher *x, cm_remesh_report *rep)
 
 /* The joint max-min polish of the written result; the report's smallest
  * angle is the polished mesh's. */
-static cm_status polish_jointly(cm_mesh *mesh, size_t nb, const cm_remesh_boundary *splits, cm_progress *progress,
+static cm_status polish_jointly(cm_mesh *mesh, size_t nb, cm_remesh_boundary *splits, cm_progress *progress,
                                 cm_remesh_report *rep)
 {
     cm_maxmin_slide slide = {0};
     if (splits && splits->place)
-        slide = (cm_maxmin_slide){splits->edge, splits->t, splits->place, splits->ctx, splits->max_piece};
+        slide = (cm_maxmin_slide){splits->edge, splits->t, splits->place, splits->ctx, splits->max_piece, 0};
     rep->greedy_deg = rep->min_angle_deg;
     cm_status s = cm_maxmin_polish(mesh, nb, slide.place ? &slide : NULL, CM_MAXMIN_ITERATIONS, progress);
     if (s != CM_OK) return s;
+    if (splits) splits->slid = slide.slid;
     double least = HUGE_VAL;
     for (size_t g = 0; g < mesh->k; g++)
         for (size_t t = 0; t < mesh->nt; t++) {

@@ -28,7 +28,9 @@ typedef struct cm_remesh_report {
  * the tool's to choose) the point at parameter t of input edge e of
  * geometry g, and the final polish may slide the points with t > 0 along
  * their edges (cm_maxmin_slide), keeping boundary edges at most
- * max_piece long when that is > 0. */
+ * max_piece long when that is > 0; slid: how many it moved (the
+ * correspondence is then no longer the one the ceiling was computed
+ * for). */
 typedef struct cm_remesh_boundary {
     cm_kmesh_between between;
     void *ctx;
@@ -37,6 +39,7 @@ typedef struct cm_remesh_boundary {
     size_t n;
     void (*place)(void *ctx, size_t g, int32_t e, double t, double xy[2]);
     double max_piece;
+    size_t slid;
 } cm_remesh_boundary;
 
 /* Algorithm 1 on mesh (polygon vertices 0..n-1 counter-clockwise, each
