@@ -483,6 +483,7 @@ static void test_capped_edges_split(void)
              * slide the added points along their edges, in order */
             static const long edge[10] = {0, 0, 0, 0, 1, 2, 2, 2, 2, 3};
             static const double at[10] = {0, 0.25, 0.5, 0.75, 0, 0, 0.25, 0.5, 0.75, 0};
+            int slid = 0;
             for (size_t g = 0; g < 2 && n == 10; g++)
                 for (size_t i = 0; i < 10; i++) {
                     double t, before = 0;
@@ -491,7 +492,13 @@ static void test_capped_edges_split(void)
                     int placed = m == 1 ? t == at[i] : (at[i] == 0 ? t == 0 : t > before && t < 1);
                     CHECK_MSG(e == edge[i] && placed, "mode %d, polygon %zu, vertex %zu: edge %ld at %g", m, g, i,
                               e, t);
+                    slid += t != at[i];
                 }
+            /* the slide gains here (end pieces shorter than the middle
+             * ones), and the ceiling is the slid correspondence's */
+            CHECK_MSG(m == 1 || slid > 0, "auto: no point slid");
+            CHECK_MSG(least <= cm_result_stats(r)->ceiling_deg, "mode %d: %g degrees above the ceiling %g", m, least,
+                      cm_result_stats(r)->ceiling_deg);
         }
         cm_result_free(r);
     }
