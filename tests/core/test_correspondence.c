@@ -504,6 +504,38 @@ static void test_capped_edges_split(void)
     }
 }
 
+/* The same rectangles in auto with max_edge 3: six pieces of each long
+ * side (16 / 3 rounded up), 1.33 and 2.67 long. The polish slides the
+ * points of the second geometry towards its middle, which only the limit
+ * stops: every boundary edge stays at most 3, in order, on its edge. */
+static void test_slide_keeps_max_edge(void)
+{
+    const double a[8] = {0, 0, 8, 0, 8, 1, 0, 1}, b[8] = {1, 2, 17, 2, 17, 4, 1, 4};
+    const double *in[2] = {a, b};
+    size_t counts[2] = {4, 4};
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = CM_CORRESPOND_AUTO, o.max_edge = 3.0;
+    cm_result *r = NULL;
+    CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r) == CM_OK, "%s", cm_result_message(r));
+    if (cm_result_status(r) == CM_OK) {
+        size_t n = cm_result_stats(r)->n;
+        CHECK_MSG(n == 14 && contract_holds(r, in, counts, 2), "%zu boundary vertices, contract", n);
+        double longest = 0;
+        int slid = 0;
+        for (size_t i = 0; i < n; i++) {
+            const double *p = cm_result_vertices(r, 1) + 2 * i, *q = cm_result_vertices(r, 1) + 2 * ((i + 1) % n);
+            longest = fmax(longest, hypot(q[0] - p[0], q[1] - p[1]));
+            double t;
+            cm_result_boundary_source(r, 1, i, &t);
+            slid += t != 0 && fabs(6 * t - round(6 * t)) > 1e-9;
+        }
+        CHECK_MSG(longest <= 3.0 && longest > 16.0 / 6 && slid > 0, "longest boundary edge %g, %d points slid", longest,
+                  slid);
+    }
+    cm_result_free(r);
+}
+
 /* Do boundary vertices u and w of polygon g lie on one of its input edges
  * (count input vertices)? */
 static int on_one_edge(const cm_result *r, size_t g, size_t u, size_t w, size_t count)
@@ -557,6 +589,7 @@ int main(void)
     test_similarity_mode();
     test_choice_reported();
     test_capped_edges_split();
+    test_slide_keeps_max_edge();
     test_no_diagonal_along_an_input_edge();
     return check_summary("test_correspondence");
 }
