@@ -61,7 +61,7 @@ typedef struct soft {
     size_t slid;       /* boundary points moved so far */
     double rest;       /* the smallest angle of the triangles that do not move */
     double tau;
-    double *tmin;      /* nmoved: each moving triangle's smallest angle */
+    double *tmin;      /* nmoved: sin^2 of each moving triangle's smallest angle */
     int32_t *hot;      /* the moving triangles near the smallest angle */
     double *angle;     /* 3 per hot triangle */
     double best;       /* the best smallest angle met, at best_x */
@@ -124,19 +124,30 @@ static lbfgsfloatval_t evaluate(void *instance, const lbfgsfloatval_t *x, lbfgsf
     (void)step;
     soft *s = instance;
     set_positions(s, x);
-    double m = s->rest;
+    /* sin^2 orders the triangles' smallest angles (each at most 60
+     * degrees) as the angles do, without an atan2 each: the angle itself
+     * only for the least */
+    double least2 = HUGE_VAL;
+    size_t lowest = 0;
     for (size_t i = 0; i < s->nmoved; i++) {
         const int32_t *v = s->tri + 3 * s->moved[i];
         const double *p[3] = {position(s, v[0]), position(s, v[1]), position(s, v[2])};
         if (!(twice_area(p) > 0)) return HUGE_VAL;
-        m = fmin(m, s->tmin[i] = cm_triangle_min_angle(p[0], p[1], p[2]));
+        s->tmin[i] = cm_triangle_min_angle_sin2(p[0], p[1], p[2]);
+        if (s->tmin[i] < least2) least2 = s->tmin[i], lowest = i;
     }
     if (!pieces_short(s)) return HUGE_VAL;
+    double m = s->rest;
+    if (s->nmoved) {
+        const int32_t *v = s->tri + 3 * s->moved[lowest];
+        m = fmin(m, cm_triangle_min_angle(position(s, v[0]), position(s, v[1]), position(s, v[2])));
+    }
     if (m > s->best) s->best = m, memcpy(s->best_x, x, (size_t)n * sizeof *x);
     double cut = m + CM_MAXMIN_CUT * s->tau, sum = s->rest < cut ? exp(-(s->rest - m) / s->tau) : 0;
+    double cut2 = sin(fmin(cut, CM_PI / 2)), hot_above = cut2 * cut2;
     size_t hot = 0;
     for (size_t i = 0; i < s->nmoved; i++) {
-        if (s->tmin[i] >= cut) continue;
+        if (s->tmin[i] >= hot_above) continue;
         const int32_t *v = s->tri + 3 * s->moved[i];
         const double *p[3] = {position(s, v[0]), position(s, v[1]), position(s, v[2])};
         double *a = s->angle + 3 * hot;
