@@ -125,6 +125,8 @@ typedef struct part {
     cm_error *err;
     cm_progress *progress;
     const cm_on_edges *on;  /* NULL: every boundary vertex is an input vertex */
+    cm_sf_work *sf;         /* the link cuts' small programs' arrays, made
+                               on first use */
 } part;
 
 /* The input edge before input vertex e of geometry g: e - 1, or the last
@@ -828,8 +830,9 @@ static int edge_without_triangle(long m, const cm_diagset *common)
     return 0;
 }
 
-static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common, long limit)
+static long polygon_cost(part *p, long m, double **xy, const cm_diagset *common, long limit)
 {
+    size_t k = p->k;
     if (limit <= 1 && m > 3 && edge_without_triangle(m, common)) return 1; /* at least 1 */
     cm_diagview view = {common, NULL};
     /* the kernel point and the whole polygon's face in one block */
@@ -837,7 +840,8 @@ static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common
     int32_t *all = pos ? (int32_t *)(pos + 2 * k) : NULL;
     long cost = -1;
     cm_sf_plan plan;
-    if (pos && cm_steinerfree_plan(m, &view, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
+    if (!p->sf) p->sf = cm_sf_work_new();
+    if (pos && p->sf && cm_steinerfree_plan_in(p->sf, m, &view, (const double *const *)xy, k, &plan) == 0) {
         cost = 0;
         int whole = 0; /* the one face is the polygon, in its order: its test is the polygon's */
         for (long f = 0; f < plan.nf && cost >= 0 && cost < limit; f++) {
@@ -853,7 +857,6 @@ static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common
             int star = kernel_points(k, xy, all, m, pos);
             cost = star < 0 ? -1 : star ? 1 : cost;
         }
-        cm_sf_plan_clear(&plan);
     }
     free(pos);
     return cost;
@@ -993,7 +996,7 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
         if (size > 3) {
             cm_diagset common = {0, 0, NULL};
             int s = half_common(f, memo, pr, half, pick, size, xy, &common);
-            c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(k, size, xy, &common, limit - total);
+            c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(f->p, size, xy, &common, limit - total);
             cm_diagset_clear(&common);
         }
         total = c < 0 ? -1 : c == LONG_MAX ? LONG_MAX : total + c;
@@ -1494,6 +1497,7 @@ static void part_free(part *p)
     free(p->tab);
     for (long i = 0; i < p->top; i++) item_free(&p->stack[i]);
     free(p->stack);
+    cm_sf_work_free(p->sf);
 }
 
 static cm_status partition_run(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,
