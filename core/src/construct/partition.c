@@ -870,6 +870,12 @@ typedef struct {
     cm_diagset *diag;     /* [(half * k + g) * per_g + choice] */
     signed char *state;   /* same index: 0 not yet, 1 done, 2 not simple */
     long *cost;           /* [choice_0 + per_g * (choice_1 + ...)], -2 unknown */
+    /* for each combination's halves (at most `most` vertices each), one
+     * block for all: their coordinates in every geometry and their common
+     * diagonals' bits */
+    long most;
+    double **xy;
+    uint64_t *common_bits;
 } cut_memo;
 
 /* The face's own diagonals in every geometry (once per face). 1, 0 not
@@ -953,7 +959,8 @@ static int half_common(face_ctx *f, cut_memo *memo, const pair *pr, int half, co
         }
         if (memo->state[at] == 2) return 1;
     }
-    if (cm_diagset_init(common, m) != 0) return -1;
+    /* every word is written below: the memo's block needs no zeroing */
+    common->n = m, common->stride = ((size_t)m + 63) / 64, common->bits = memo->common_bits;
     size_t words = common->stride * (size_t)m;
     for (size_t w = 0; w < words; w++) {
         uint64_t bits = ~(uint64_t)0;
@@ -974,12 +981,7 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
     long m = f->it->m, nb = pr->links - 1, total = 0, key = 0;
     for (size_t g = k; g-- > 0;) key = key * memo->per_g + pick[g];
     if (memo->cost[key] != -2) return memo->cost[key];
-    /* one block for both halves in every geometry (a half has at most
-     * m + 1 + nb vertices): the link cuts run many small programs */
-    size_t most = 2 * (size_t)(m + 1 + nb);
-    double **xy = malloc(k * sizeof *xy + k * most * sizeof **xy);
-    if (!xy) return -1;
-    for (size_t g = 0; g < k; g++) xy[g] = (double *)(xy + k) + g * most;
+    double **xy = memo->xy;
     for (int half = 0; half < 2 && total >= 0 && total < limit; half++) {
         long from = half == 0 ? pr->u : pr->v, to = half == 0 ? pr->v : pr->u;
         long size = (to - from + m) % m + 1 + nb;
@@ -999,11 +1001,9 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
             cm_diagset common = {0, 0, NULL};
             int s = half_common(f, memo, pr, half, pick, size, xy, &common);
             c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(f->p, size, xy, &common, limit - total);
-            cm_diagset_clear(&common);
         }
         total = c < 0 ? -1 : c == LONG_MAX ? LONG_MAX : total + c;
     }
-    free(xy);
     if (total >= 0) memo->cost[key] = total;
     return total;
 }
@@ -1088,7 +1088,7 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
     int search = m <= REFINE_SEARCH_MAX;
     choices *c = calloc(k, sizeof *c);
     long *pick = calloc(k, sizeof *pick), *cur = calloc(k, sizeof *cur), best = LONG_MAX;
-    cut_memo memo = {0, NULL, NULL, NULL};
+    cut_memo memo = {0, NULL, NULL, NULL, m + 1 + want, NULL, NULL};
     int result = c && pick && cur ? 1 : -1;
     for (size_t g = 0; g < k && result == 1; g++) {
         double *path = NULL;
@@ -1111,7 +1111,11 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
         memo.state = calloc(2 * k * (size_t)memo.per_g, sizeof *memo.state);
         memo.cost = malloc(combos * sizeof *memo.cost);
         for (size_t i = 0; memo.cost && i < combos; i++) memo.cost[i] = -2;
-        if (!memo.diag || !memo.state || !memo.cost) result = -1;
+        size_t coords = 2 * (size_t)memo.most, words = ((size_t)memo.most + 63) / 64 * (size_t)memo.most;
+        memo.xy = malloc(k * sizeof *memo.xy + k * coords * sizeof **memo.xy + words * sizeof *memo.common_bits);
+        for (size_t g = 0; memo.xy && g < k; g++) memo.xy[g] = (double *)(memo.xy + k) + g * coords;
+        if (memo.xy) memo.common_bits = (uint64_t *)((double *)(memo.xy + k) + k * coords);
+        if (!memo.diag || !memo.state || !memo.cost || !memo.xy) result = -1;
     }
     if (result == 1 && search) best = cut_cost(f, pr, bends, cur, &memo, LONG_MAX);
     for (int pass = 0; pass < 2 && result == 1 && search && best > 0; pass++)
@@ -1125,7 +1129,7 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
                 bends[g] = c[g].bends + per * pick[g], cur[g] = pick[g];
             }
     for (size_t i = 0; memo.diag && i < 2 * k * (size_t)memo.per_g; i++) cm_diagset_clear(&memo.diag[i]);
-    free(memo.diag), free(memo.state), free(memo.cost), free(cur);
+    free(memo.diag), free(memo.state), free(memo.cost), free(memo.xy), free(cur);
     /* hand over copies of the picked choices */
     for (size_t g = 0; g < k; g++) {
         double *b = result == 1 ? malloc(sizeof(double) * (size_t)(per > 0 ? per : 1)) : NULL;
