@@ -296,18 +296,35 @@ static int open_rows(const double *const *xy, const int32_t *const *tris, size_t
 /* all[j] &= (vertex j sees vertex i in every geometry of r), j = 0..m-1:
  * the caller sets all[] to the candidates, none below lo. Each geometry's
  * cones look only for the candidates still in. row: m bytes of scratch;
- * want: m + 1 counts of scratch. */
+ * want: m + 1 counts of scratch. The geometries go in turn, *lead's
+ * first: the result is the same in any order, but a walk after the first
+ * enters only the pockets holding a vertex seen so far, so the geometry
+ * that sees least is best first. With learn, *lead passes to a later
+ * geometry that kept under half of what the lead saw. */
 static void seen_by_all(const rowset *r, long i, long m, long lo, unsigned char *row, unsigned char *all,
-                        int32_t *want)
+                        int32_t *want, size_t *lead, int learn)
 {
     memset(want, 0, ((size_t)lo + 1) * sizeof *want);
-    for (size_t g = 0; g < r->k; g++) {
+    long lead_seen = 0, least = LONG_MAX;
+    size_t next = *lead;
+    for (size_t t = 0; t < r->k; t++) {
+        size_t g = t == 0 ? *lead : t <= *lead ? t - 1 : t; /* the lead, then the others in order */
         for (long j = lo; j < m; j++) want[j + 1] = want[j] + all[j];
         if (want[m] == 0) return;
+        if (t == 1) lead_seen = want[m];
         cm_visrows_row_wanted(r->rows[g], i, want, row);
-        for (long j = lo; j < m; j++) all[j] &= row[j];
+        long seen = 0;
+        if (learn && t > 0)
+            for (long j = lo; j < m; j++) all[j] &= row[j], seen += all[j];
+        else
+            for (long j = lo; j < m; j++) all[j] &= row[j];
+        if (learn && t > 0 && seen < least) least = seen, next = g;
     }
+    if (learn && 2 * least < lead_seen) *lead = next;
 }
+
+/* The table's rows that decide which geometry's walk comes first. */
+#define LEAD_EVERY 4
 
 /* The common diagonals: pairs that see each other in every geometry, one
  * row of each geometry's visibility at a time (O(k m) memory beside the
@@ -324,10 +341,11 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
     status = -1;
     if (!row || !want || cm_diagset_init(common, m) != 0) goto done;
     unsigned char *all = row + m;
+    size_t lead = 0;
     for (long i = 0; i < m; i++) {
         memset(all, 0, (size_t)i + 1);
         memset(all + i + 1, 1, (size_t)(m - i - 1));
-        seen_by_all(&r, i, m, i + 1, row, all, want);
+        seen_by_all(&r, i, m, i + 1, row, all, want, &lead, i % LEAD_EVERY == 0);
         for (long j = i + 1; j < m; j++)
             if (all[j] && !(p && flat_pair(p, gid[i], gid[j]))) cm_diagset_add(common, i, j);
     }
@@ -593,7 +611,8 @@ static void best_at(const part *p, const item *it, const rowset *r, long i, unsi
         long span = (j - i + m) % m;
         all[j] = (span < m - span ? span : m - span) > *best;
     }
-    seen_by_all(r, i, m, 0, row, all, want);
+    size_t lead = 0;
+    seen_by_all(r, i, m, 0, row, all, want, &lead, 0);
     *bj = -1;
     for (long j = 0; j < m; j++) {
         long span = (j - i + m) % m, balance = span < m - span ? span : m - span;
