@@ -849,18 +849,16 @@ static int edge_without_triangle(long m, const cm_diagset *common)
     return 0;
 }
 
-static long polygon_cost(part *p, long m, double **xy, const cm_diagset *common, long limit)
+static long polygon_cost(part *p, long m, double **xy, const cm_diagset *common, long limit, double *pos,
+                         int32_t *all)
 {
     size_t k = p->k;
     if (limit <= 1 && m > 3 && edge_without_triangle(m, common)) return 1; /* at least 1 */
     cm_diagview view = {common, NULL};
-    /* the kernel point and the whole polygon's face in one block */
-    double *pos = malloc(2 * k * sizeof *pos + (size_t)m * sizeof(int32_t));
-    int32_t *all = pos ? (int32_t *)(pos + 2 * k) : NULL;
     long cost = -1;
     cm_sf_plan plan;
     if (!p->sf) p->sf = cm_sf_work_new();
-    if (pos && p->sf && cm_steinerfree_plan_in(p->sf, m, &view, (const double *const *)xy, k, &plan) == 0) {
+    if (p->sf && cm_steinerfree_plan_in(p->sf, m, &view, (const double *const *)xy, k, &plan) == 0) {
         cost = 0;
         int whole = 0; /* the one face is the polygon, in its order: its test is the polygon's */
         for (long f = 0; f < plan.nf && cost >= 0 && cost < limit; f++) {
@@ -877,7 +875,6 @@ static long polygon_cost(part *p, long m, double **xy, const cm_diagset *common,
             cost = star < 0 ? -1 : star ? 1 : cost;
         }
     }
-    free(pos);
     return cost;
 }
 
@@ -890,11 +887,13 @@ typedef struct {
     signed char *state;   /* same index: 0 not yet, 1 done, 2 not simple */
     long *cost;           /* [choice_0 + per_g * (choice_1 + ...)], -2 unknown */
     /* for each combination's halves (at most `most` vertices each), one
-     * block for all: their coordinates in every geometry and their common
-     * diagonals' bits */
+     * block for all: their coordinates in every geometry, their common
+     * diagonals' bits, and polygon_cost's kernel point and whole face */
     long most;
     double **xy;
     uint64_t *common_bits;
+    double *pos;
+    int32_t *all;
 } cut_memo;
 
 /* The face's own diagonals in every geometry (once per face). 1, 0 not
@@ -1019,7 +1018,7 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
         if (size > 3) {
             cm_diagset common = {0, 0, NULL};
             int s = half_common(f, memo, pr, half, pick, size, xy, &common);
-            c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(f->p, size, xy, &common, limit - total);
+            c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(f->p, size, xy, &common, limit - total, memo->pos, memo->all);
         }
         total = c < 0 ? -1 : c == LONG_MAX ? LONG_MAX : total + c;
     }
@@ -1107,7 +1106,7 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
     int search = m <= REFINE_SEARCH_MAX;
     choices *c = calloc(k, sizeof *c);
     long *pick = calloc(k, sizeof *pick), *cur = calloc(k, sizeof *cur), best = LONG_MAX;
-    cut_memo memo = {0, NULL, NULL, NULL, m + 1 + want, NULL, NULL};
+    cut_memo memo = {0, NULL, NULL, NULL, m + 1 + want, NULL, NULL, NULL, NULL};
     int result = c && pick && cur ? 1 : -1;
     for (size_t g = 0; g < k && result == 1; g++) {
         double *path = NULL;
@@ -1131,9 +1130,14 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
         memo.cost = malloc(combos * sizeof *memo.cost);
         for (size_t i = 0; memo.cost && i < combos; i++) memo.cost[i] = -2;
         size_t coords = 2 * (size_t)memo.most, words = ((size_t)memo.most + 63) / 64 * (size_t)memo.most;
-        memo.xy = malloc(k * sizeof *memo.xy + k * coords * sizeof **memo.xy + words * sizeof *memo.common_bits);
+        memo.xy = malloc(k * sizeof *memo.xy + (k * coords + 2 * k) * sizeof **memo.xy +
+                         words * sizeof *memo.common_bits + (size_t)memo.most * sizeof *memo.all);
         for (size_t g = 0; memo.xy && g < k; g++) memo.xy[g] = (double *)(memo.xy + k) + g * coords;
-        if (memo.xy) memo.common_bits = (uint64_t *)((double *)(memo.xy + k) + k * coords);
+        if (memo.xy) {
+            memo.pos = (double *)(memo.xy + k) + k * coords;
+            memo.common_bits = (uint64_t *)(memo.pos + 2 * k);
+            memo.all = (int32_t *)(memo.common_bits + words);
+        }
         if (!memo.diag || !memo.state || !memo.cost || !memo.xy) result = -1;
     }
     if (result == 1 && search) best = cut_cost(f, pr, bends, cur, &memo, LONG_MAX);
