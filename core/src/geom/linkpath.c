@@ -1004,21 +1004,24 @@ static int no_fold(const double *p, const double *q, const double *r)
     return (q[axis] > p[axis]) == (r[axis] > q[axis]);
 }
 
+/* Point i of the path u, bends[0..nb-1], v (n = nb + 2 points). */
+static const double *path_point(const double *xy, long u, long v, const double *bends, long n, long i)
+{
+    return i == 0 ? xy + 2 * u : i == n - 1 ? xy + 2 * v : bends + 2 * (i - 1);
+}
+
 int cm_path_valid(const double *xy, long m, long u, long v, const double *bends, long nb)
 {
     long n = nb + 2;
-    const double **pt = malloc((size_t)n * sizeof *pt);
-    if (!pt) return 0;
-    pt[0] = xy + 2 * u, pt[n - 1] = xy + 2 * v;
-    for (long i = 0; i < nb; i++) pt[i + 1] = bends + 2 * i;
+#define PT(i) path_point(xy, u, v, bends, n, i)
     int ok = 1;
     for (long i = 0; ok && i + 1 < n; i++)
-        ok = cm_segment_inside(xy, m, i == 0 ? u : -1, pt[i], i + 1 == n - 1 ? v : -1, pt[i + 1]);
-    for (long i = 0; ok && i + 2 < n; i++) ok = no_fold(pt[i], pt[i + 1], pt[i + 2]);
+        ok = cm_segment_inside(xy, m, i == 0 ? u : -1, PT(i), i + 1 == n - 1 ? v : -1, PT(i + 1));
+    for (long i = 0; ok && i + 2 < n; i++) ok = no_fold(PT(i), PT(i + 1), PT(i + 2));
     for (long i = 0; ok && i + 1 < n; i++)
         for (long j = i + 2; ok && j + 1 < n; j++)
-            ok = cm_segments_intersect(pt[i], pt[i + 1], pt[j], pt[j + 1]) == 0;
-    free(pt);
+            ok = cm_segments_intersect(PT(i), PT(i + 1), PT(j), PT(j + 1)) == 0;
+#undef PT
     return ok;
 }
 
