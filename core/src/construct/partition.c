@@ -125,6 +125,8 @@ typedef struct part {
     cm_error *err;
     cm_progress *progress;
     const cm_on_edges *on;  /* NULL: every boundary vertex is an input vertex */
+    cm_sf_work *sf;         /* the link cuts' small programs' arrays, made
+                               on first use */
 } part;
 
 /* The input edge before input vertex e of geometry g: e - 1, or the last
@@ -294,18 +296,35 @@ static int open_rows(const double *const *xy, const int32_t *const *tris, size_t
 /* all[j] &= (vertex j sees vertex i in every geometry of r), j = 0..m-1:
  * the caller sets all[] to the candidates, none below lo. Each geometry's
  * cones look only for the candidates still in. row: m bytes of scratch;
- * want: m + 1 counts of scratch. */
+ * want: m + 1 counts of scratch. The geometries go in turn, *lead's
+ * first: the result is the same in any order, but a walk after the first
+ * enters only the pockets holding a vertex seen so far, so the geometry
+ * that sees least is best first. With learn, *lead passes to a later
+ * geometry that kept under half of what the lead saw. */
 static void seen_by_all(const rowset *r, long i, long m, long lo, unsigned char *row, unsigned char *all,
-                        int32_t *want)
+                        int32_t *want, size_t *lead, int learn)
 {
     memset(want, 0, ((size_t)lo + 1) * sizeof *want);
-    for (size_t g = 0; g < r->k; g++) {
+    long lead_seen = 0, least = LONG_MAX;
+    size_t next = *lead;
+    for (size_t t = 0; t < r->k; t++) {
+        size_t g = t == 0 ? *lead : t <= *lead ? t - 1 : t; /* the lead, then the others in order */
         for (long j = lo; j < m; j++) want[j + 1] = want[j] + all[j];
         if (want[m] == 0) return;
+        if (t == 1) lead_seen = want[m];
         cm_visrows_row_wanted(r->rows[g], i, want, row);
-        for (long j = lo; j < m; j++) all[j] &= row[j];
+        long seen = 0;
+        if (learn && t > 0)
+            for (long j = lo; j < m; j++) all[j] &= row[j], seen += all[j];
+        else
+            for (long j = lo; j < m; j++) all[j] &= row[j];
+        if (learn && t > 0 && seen < least) least = seen, next = g;
     }
+    if (learn && 2 * least < lead_seen) *lead = next;
 }
+
+/* The table's rows that decide which geometry's walk comes first. */
+#define LEAD_EVERY 4
 
 /* The common diagonals: pairs that see each other in every geometry, one
  * row of each geometry's visibility at a time (O(k m) memory beside the
@@ -322,10 +341,11 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
     status = -1;
     if (!row || !want || cm_diagset_init(common, m) != 0) goto done;
     unsigned char *all = row + m;
+    size_t lead = 0;
     for (long i = 0; i < m; i++) {
         memset(all, 0, (size_t)i + 1);
         memset(all + i + 1, 1, (size_t)(m - i - 1));
-        seen_by_all(&r, i, m, i + 1, row, all, want);
+        seen_by_all(&r, i, m, i + 1, row, all, want, &lead, i % LEAD_EVERY == 0);
         for (long j = i + 1; j < m; j++)
             if (all[j] && !(p && flat_pair(p, gid[i], gid[j]))) cm_diagset_add(common, i, j);
     }
@@ -591,7 +611,8 @@ static void best_at(const part *p, const item *it, const rowset *r, long i, unsi
         long span = (j - i + m) % m;
         all[j] = (span < m - span ? span : m - span) > *best;
     }
-    seen_by_all(r, i, m, 0, row, all, want);
+    size_t lead = 0;
+    seen_by_all(r, i, m, 0, row, all, want, &lead, 0);
     *bj = -1;
     for (long j = 0; j < m; j++) {
         long span = (j - i + m) % m, balance = span < m - span ? span : m - span;
@@ -828,16 +849,16 @@ static int edge_without_triangle(long m, const cm_diagset *common)
     return 0;
 }
 
-static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common, long limit)
+static long polygon_cost(part *p, long m, double **xy, const cm_diagset *common, long limit, double *pos,
+                         int32_t *all)
 {
+    size_t k = p->k;
     if (limit <= 1 && m > 3 && edge_without_triangle(m, common)) return 1; /* at least 1 */
     cm_diagview view = {common, NULL};
-    /* the kernel point and the whole polygon's face in one block */
-    double *pos = malloc(2 * k * sizeof *pos + (size_t)m * sizeof(int32_t));
-    int32_t *all = pos ? (int32_t *)(pos + 2 * k) : NULL;
     long cost = -1;
     cm_sf_plan plan;
-    if (pos && cm_steinerfree_plan(m, &view, (const double *const *)xy, k, NULL, 0, &plan) == 0) {
+    if (!p->sf) p->sf = cm_sf_work_new();
+    if (p->sf && cm_steinerfree_plan_in(p->sf, m, &view, (const double *const *)xy, k, &plan) == 0) {
         cost = 0;
         int whole = 0; /* the one face is the polygon, in its order: its test is the polygon's */
         for (long f = 0; f < plan.nf && cost >= 0 && cost < limit; f++) {
@@ -853,9 +874,7 @@ static long polygon_cost(size_t k, long m, double **xy, const cm_diagset *common
             int star = kernel_points(k, xy, all, m, pos);
             cost = star < 0 ? -1 : star ? 1 : cost;
         }
-        cm_sf_plan_clear(&plan);
     }
-    free(pos);
     return cost;
 }
 
@@ -867,6 +886,14 @@ typedef struct {
     cm_diagset *diag;     /* [(half * k + g) * per_g + choice] */
     signed char *state;   /* same index: 0 not yet, 1 done, 2 not simple */
     long *cost;           /* [choice_0 + per_g * (choice_1 + ...)], -2 unknown */
+    /* for each combination's halves (at most `most` vertices each), one
+     * block for all: their coordinates in every geometry, their common
+     * diagonals' bits, and polygon_cost's kernel point and whole face */
+    long most;
+    double **xy;
+    uint64_t *common_bits;
+    double *pos;
+    int32_t *all;
 } cut_memo;
 
 /* The face's own diagonals in every geometry (once per face). 1, 0 not
@@ -910,10 +937,12 @@ static int half_diagonals(const face_ctx *f, size_t g, long from, long nc, const
             int inner = i >= 1 && j <= nc - 2, chain = j <= nc - 1, seen;
             /* chain vertices that do not see each other in the face do
              * not in the half either */
-            seen = !chain || cm_diagset_has(&f->own[g], (from + i) % m, (from + j) % m);
+            /* chain vertices are from + i < from + nc <= from + m */
+            seen = !chain || cm_diagset_has(&f->own[g], from + i < m ? from + i : from + i - m,
+                                            from + j < m ? from + j : from + j - m);
             if (seen && inner) {
                 for (long e = nc - 1; seen && e < size; e++) /* the path's links */
-                    seen = cm_segments_intersect(h + 2 * i, h + 2 * j, h + 2 * e, h + 2 * ((e + 1) % size)) == 0;
+                    seen = cm_segments_intersect(h + 2 * i, h + 2 * j, h + 2 * e, h + 2 * (e + 1 < size ? e + 1 : 0)) == 0;
             } else if (seen && chain && !(i == 0 && j == nc - 1)) {
                 /* one end is an end of P: a diagonal of the face, so only
                  * P's links (edges nc - 1 .. size - 1) and that end's new
@@ -948,7 +977,8 @@ static int half_common(face_ctx *f, cut_memo *memo, const pair *pr, int half, co
         }
         if (memo->state[at] == 2) return 1;
     }
-    if (cm_diagset_init(common, m) != 0) return -1;
+    /* every word is written below: the memo's block needs no zeroing */
+    common->n = m, common->stride = ((size_t)m + 63) / 64, common->bits = memo->common_bits;
     size_t words = common->stride * (size_t)m;
     for (size_t w = 0; w < words; w++) {
         uint64_t bits = ~(uint64_t)0;
@@ -969,18 +999,13 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
     long m = f->it->m, nb = pr->links - 1, total = 0, key = 0;
     for (size_t g = k; g-- > 0;) key = key * memo->per_g + pick[g];
     if (memo->cost[key] != -2) return memo->cost[key];
-    /* one block for both halves in every geometry (a half has at most
-     * m + 1 + nb vertices): the link cuts run many small programs */
-    size_t most = 2 * (size_t)(m + 1 + nb);
-    double **xy = malloc(k * sizeof *xy + k * most * sizeof **xy);
-    if (!xy) return -1;
-    for (size_t g = 0; g < k; g++) xy[g] = (double *)(xy + k) + g * most;
+    double **xy = memo->xy;
     for (int half = 0; half < 2 && total >= 0 && total < limit; half++) {
         long from = half == 0 ? pr->u : pr->v, to = half == 0 ? pr->v : pr->u;
         long size = (to - from + m) % m + 1 + nb;
         for (size_t g = 0; g < k; g++) {
             long n = 0;
-            for (long x = from;; x = (x + 1) % m) {
+            for (long x = from;; x = x + 1 < m ? x + 1 : 0) {
                 xy[g][2 * n] = f->l[g][2 * x], xy[g][2 * n + 1] = f->l[g][2 * x + 1], n++;
                 if (x == to) break;
             }
@@ -993,12 +1018,10 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
         if (size > 3) {
             cm_diagset common = {0, 0, NULL};
             int s = half_common(f, memo, pr, half, pick, size, xy, &common);
-            c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(k, size, xy, &common, limit - total);
-            cm_diagset_clear(&common);
+            c = s < 0 ? -1 : s > 0 ? LONG_MAX : polygon_cost(f->p, size, xy, &common, limit - total, memo->pos, memo->all);
         }
         total = c < 0 ? -1 : c == LONG_MAX ? LONG_MAX : total + c;
     }
-    free(xy);
     if (total >= 0) memo->cost[key] = total;
     return total;
 }
@@ -1009,7 +1032,7 @@ static double free_run(const double *xy, long m, const double p[2], const double
 {
     double best = INFINITY;
     for (long i = 0; i < m; i++) {
-        const double *a = xy + 2 * i, *b = xy + 2 * ((i + 1) % m);
+        const double *a = xy + 2 * i, *b = xy + 2 * (i + 1 < m ? i + 1 : 0);
         double ex = b[0] - a[0], ey = b[1] - a[1], den = dir[0] * ey - dir[1] * ex;
         if (den == 0) continue;
         double t = ((a[0] - p[0]) * ey - (a[1] - p[1]) * ex) / den;
@@ -1083,7 +1106,7 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
     int search = m <= REFINE_SEARCH_MAX;
     choices *c = calloc(k, sizeof *c);
     long *pick = calloc(k, sizeof *pick), *cur = calloc(k, sizeof *cur), best = LONG_MAX;
-    cut_memo memo = {0, NULL, NULL, NULL};
+    cut_memo memo = {0, NULL, NULL, NULL, m + 1 + want, NULL, NULL, NULL, NULL};
     int result = c && pick && cur ? 1 : -1;
     for (size_t g = 0; g < k && result == 1; g++) {
         double *path = NULL;
@@ -1106,7 +1129,16 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
         memo.state = calloc(2 * k * (size_t)memo.per_g, sizeof *memo.state);
         memo.cost = malloc(combos * sizeof *memo.cost);
         for (size_t i = 0; memo.cost && i < combos; i++) memo.cost[i] = -2;
-        if (!memo.diag || !memo.state || !memo.cost) result = -1;
+        size_t coords = 2 * (size_t)memo.most, words = ((size_t)memo.most + 63) / 64 * (size_t)memo.most;
+        memo.xy = malloc(k * sizeof *memo.xy + (k * coords + 2 * k) * sizeof **memo.xy +
+                         words * sizeof *memo.common_bits + (size_t)memo.most * sizeof *memo.all);
+        for (size_t g = 0; memo.xy && g < k; g++) memo.xy[g] = (double *)(memo.xy + k) + g * coords;
+        if (memo.xy) {
+            memo.pos = (double *)(memo.xy + k) + k * coords;
+            memo.common_bits = (uint64_t *)(memo.pos + 2 * k);
+            memo.all = (int32_t *)(memo.common_bits + words);
+        }
+        if (!memo.diag || !memo.state || !memo.cost || !memo.xy) result = -1;
     }
     if (result == 1 && search) best = cut_cost(f, pr, bends, cur, &memo, LONG_MAX);
     for (int pass = 0; pass < 2 && result == 1 && search && best > 0; pass++)
@@ -1120,7 +1152,7 @@ static int build_cut(face_ctx *f, const pair *pr, double **bends, long *cost)
                 bends[g] = c[g].bends + per * pick[g], cur[g] = pick[g];
             }
     for (size_t i = 0; memo.diag && i < 2 * k * (size_t)memo.per_g; i++) cm_diagset_clear(&memo.diag[i]);
-    free(memo.diag), free(memo.state), free(memo.cost), free(cur);
+    free(memo.diag), free(memo.state), free(memo.cost), free(memo.xy), free(cur);
     /* hand over copies of the picked choices */
     for (size_t g = 0; g < k; g++) {
         double *b = result == 1 ? malloc(sizeof(double) * (size_t)(per > 0 ? per : 1)) : NULL;
@@ -1494,6 +1526,7 @@ static void part_free(part *p)
     free(p->tab);
     for (long i = 0; i < p->top; i++) item_free(&p->stack[i]);
     free(p->stack);
+    cm_sf_work_free(p->sf);
 }
 
 static cm_status partition_run(const double *const *geoms, const int32_t *const *tris, size_t k, size_t n,

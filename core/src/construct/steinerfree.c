@@ -54,7 +54,17 @@ typedef struct chains {
     unsigned char best_more; /* a chain extending this one extends `more` */
 } chains;
 
+/* The arrays a run without fan points takes from a workspace. */
+enum { W_START, W_REACH, W_LEFT, W_OUT_START, W_OUT_LINK, W_G, W_ARG, W_BY, W_FAN_OF, W_TRI, W_FACE,
+       W_FACE_START, W_FACE_FAN, W_STACK, W_SLOTS };
+
+struct cm_sf_work {
+    void *buf[W_SLOTS];
+    size_t bytes[W_SLOTS];
+};
+
 typedef struct dp {
+    cm_sf_work *work; /* NULL: every array its own allocation */
     long m;
     const cm_diagview *common;
     const double *const *xy;
@@ -109,6 +119,31 @@ typedef struct dp {
                                       whose chains to l exist (best), of two
                                       or more links (more) */
 } dp;
+
+/* n elements of size bytes (zeroed if asked): the workspace's slot, kept
+ * for its next run, or a fresh allocation without one. */
+static void *take(cm_sf_work *w, int slot, size_t n, size_t size, int zero)
+{
+    size_t bytes = n * size;
+    if (!w) return zero ? calloc(n, size) : malloc(bytes);
+    if (w->bytes[slot] < bytes) {
+        size_t want = bytes > 2 * w->bytes[slot] ? bytes : 2 * w->bytes[slot];
+        void *b = malloc(want);
+        if (!b) return NULL;
+        free(w->buf[slot]);
+        w->buf[slot] = b, w->bytes[slot] = want;
+    }
+    if (zero) memset(w->buf[slot], 0, bytes);
+    return w->buf[slot];
+}
+
+/* cm_grow for the links' left ends, in the workspace's slot if any. */
+static int grow_left(dp *d, size_t *cap, size_t need)
+{
+    int r = cm_grow((void **)&d->left, cap, need, sizeof *d->left);
+    if (d->work) d->work->buf[W_LEFT] = d->left, d->work->bytes[W_LEFT] = *cap * sizeof *d->left;
+    return r;
+}
 
 static int is_link(const dp *d, long a, long b)
 {
@@ -453,9 +488,10 @@ static int build_links(dp *d)
 {
     long m = d->m, count = 0, base = consecutive_base(d->common, m);
     size_t cap = 0;
-    d->start = calloc((size_t)m + 2, sizeof *d->start);
-    d->reach = malloc((size_t)m * sizeof *d->reach);
-    if (!d->start || !d->reach || cm_grow((void **)&d->left, &cap, 4 * (size_t)m, sizeof *d->left) != 0) return -1;
+    if (d->work) d->left = d->work->buf[W_LEFT], cap = d->work->bytes[W_LEFT] / sizeof *d->left;
+    d->start = take(d->work, W_START, (size_t)m + 2, sizeof *d->start, 1);
+    d->reach = take(d->work, W_REACH, (size_t)m, sizeof *d->reach, 0);
+    if (!d->start || !d->reach || grow_left(d, &cap, 4 * (size_t)m) != 0) return -1;
     for (long i = 0; i < m; i++) d->reach[i] = i == 0 ? m - 1 : i + 1;
     for (long b = 0; b < m; b++) {
         d->start[b] = count;
@@ -469,28 +505,28 @@ static int build_links(dp *d)
                 uint64_t bits = row[w];
                 if (64 * w < lo) bits &= ~(uint64_t)0 << (lo - 64 * w);
                 if (64 * w + 64 > hi) bits &= ((uint64_t)1 << (hi - 64 * w)) - 1;
-                if (cm_grow((void **)&d->left, &cap, (size_t)count + 64 + 1, sizeof *d->left) != 0) return -1;
+                if (grow_left(d, &cap, (size_t)count + 64 + 1) != 0) return -1;
                 for (; bits; bits &= bits - 1) {
                     long a = 64 * w + cm_lowest_bit(bits) - base;
                     d->left[count++] = (int32_t)a;
                     if (a > 0) d->reach[a] = b; /* b ascends: the farthest last */
                 }
             }
-            if (cm_grow((void **)&d->left, &cap, (size_t)count + 1, sizeof *d->left) != 0) return -1;
+            if (grow_left(d, &cap, (size_t)count + 1) != 0) return -1;
             d->left[count++] = (int32_t)(b - 1);
             continue;
         }
         for (long a = 0; a < b; a++) {
             if (!is_link(d, a, b)) continue;
-            if (cm_grow((void **)&d->left, &cap, (size_t)count + 1, sizeof *d->left) != 0) return -1;
+            if (grow_left(d, &cap, (size_t)count + 1) != 0) return -1;
             d->left[count++] = (int32_t)a;
             if (a > 0 && b > a + 1) d->reach[a] = b; /* b ascends: the farthest last */
         }
     }
     d->start[m] = d->start[m + 1] = count;
     d->nlinks = count;
-    d->out_start = calloc((size_t)m + 2, sizeof *d->out_start);
-    d->out_link = malloc(2 * ((size_t)count + 1) * sizeof *d->out_link);
+    d->out_start = take(d->work, W_OUT_START, (size_t)m + 2, sizeof *d->out_start, 1);
+    d->out_link = take(d->work, W_OUT_LINK, 2 * ((size_t)count + 1), sizeof *d->out_link, 0);
     if (!d->out_start || !d->out_link) return -1;
     d->out_to = d->out_link + count + 1;
     for (long t = 0; t < count; t++) d->out_start[d->left[t] + 2]++;
@@ -508,10 +544,10 @@ static int build_links(dp *d)
 static int init_values(dp *d)
 {
     size_t c = (size_t)d->nlinks + 1;
-    d->g = malloc(c * sizeof *d->g);
-    d->arg = malloc(c * sizeof *d->arg);
-    d->by = malloc(c);
-    d->fan_of = malloc(c * sizeof *d->fan_of);
+    d->g = take(d->work, W_G, c, sizeof *d->g, 0);
+    d->arg = take(d->work, W_ARG, c, sizeof *d->arg, 0);
+    d->by = take(d->work, W_BY, c, 1, 0);
+    d->fan_of = take(d->work, W_FAN_OF, c, sizeof *d->fan_of, 0);
     if (!d->g || !d->arg || !d->by || !d->fan_of) return -1;
     for (long b = 0; b < d->m; b++)
         for (long s = d->start[b]; s < d->start[b + 1]; s++) {
@@ -585,17 +621,11 @@ static int build_fans(dp *d)
 
 typedef struct { long a, b; } link;
 
-static int push_link(link **stack, long *top, long *cap, long a, long b)
+/* The stack holds at most the plan's m - 2 diagonals and the closing
+ * edge (each pushed once). */
+static void push_link(link *stack, long *top, long a, long b)
 {
-    if (b <= a + 1) return 0;
-    if (*top == *cap) {
-        long c = *cap ? 2 * *cap : 64;
-        link *s = realloc(*stack, (size_t)c * sizeof *s);
-        if (!s) return -1;
-        *stack = s, *cap = c;
-    }
-    (*stack)[(*top)++] = (link){a, b};
-    return 0;
+    if (b > a + 1) stack[(*top)++] = (link){a, b};
 }
 
 static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
@@ -606,8 +636,7 @@ static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 
 /* The face on link (i, j) whose chain ends with link (a, j): its vertices
  * go to the plan, its links to the stack. */
-static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link **stack, long *top,
-                    long *cap)
+static void add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link *stack, long *top)
 {
     d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
     if (d->nfans) start_fans(d, i, a);
@@ -631,24 +660,23 @@ static int add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link 
     p->face_fan[p->nf] = fan;
     p->face_start[p->nf + 1] = p->face_start[p->nf] + count;
     p->nf++;
-    for (long x = 0; x + 1 < count; x++)
-        if (push_link(stack, top, cap, f[x], f[x + 1]) != 0) return -1;
-    return 0;
+    for (long x = 0; x + 1 < count; x++) push_link(stack, top, f[x], f[x + 1]);
 }
 
 static int read_plan(dp *d, cm_sf_plan *p)
 {
     long m = d->m;
-    p->tri = malloc(3 * (size_t)m * sizeof *p->tri);
-    p->face = malloc(3 * (size_t)m * sizeof *p->face);
-    p->face_start = calloc((size_t)m + 1, sizeof *p->face_start);
-    p->face_fan = malloc((size_t)m * sizeof *p->face_fan);
-    link *stack = NULL;
-    long top = 0, cap = 0;
-    if (!p->tri || !p->face || !p->face_start || !p->face_fan || push_link(&stack, &top, &cap, 0, m - 1) != 0) {
-        free(stack);
+    p->tri = take(d->work, W_TRI, 3 * (size_t)m, sizeof *p->tri, 0);
+    p->face = take(d->work, W_FACE, 3 * (size_t)m, sizeof *p->face, 0);
+    p->face_start = take(d->work, W_FACE_START, (size_t)m + 1, sizeof *p->face_start, 1);
+    p->face_fan = take(d->work, W_FACE_FAN, (size_t)m, sizeof *p->face_fan, 0);
+    link *stack = take(d->work, W_STACK, (size_t)m, sizeof *stack, 0);
+    long top = 0;
+    if (!p->tri || !p->face || !p->face_start || !p->face_fan || !stack) {
+        if (!d->work) free(stack);
         return -1;
     }
+    push_link(stack, &top, 0, m - 1);
     while (top > 0) {
         link l = stack[--top];
         int32_t a;
@@ -660,19 +688,14 @@ static int read_plan(dp *d, cm_sf_plan *p)
             long s = find_link(d, l.a, l.b);
             a = d->arg[s], by = d->by[s], fan = d->fan_of[s];
         }
-        int bad;
         if (by == BY_TRIANGLE) {
             plan_add_triangle(p, l.a, a, l.b);
-            bad = push_link(&stack, &top, &cap, l.a, a) || push_link(&stack, &top, &cap, a, l.b);
+            push_link(stack, &top, l.a, a), push_link(stack, &top, a, l.b);
         } else {
-            bad = add_face(d, p, l.a, a, l.b, by == BY_FAN ? fan : -1, &stack, &top, &cap);
-        }
-        if (bad) {
-            free(stack);
-            return -1;
+            add_face(d, p, l.a, a, l.b, by == BY_FAN ? fan : -1, stack, &top);
         }
     }
-    free(stack);
+    if (!d->work) free(stack);
     return 0;
 }
 
@@ -713,15 +736,17 @@ struct cm_sf_memo {
     dp d; /* the run's links and values */
 };
 
-/* Everything but the links (start, left, reach), which a memo may share. */
+/* Everything but the links (start, left, reach), which a memo may share;
+ * the values stay in a workspace. */
 static void free_run(dp *d)
 {
-    free(d->g), free(d->arg), free(d->by), free(d->fan_of);
     free(d->fwd_ok), free(d->fan_q), free(d->plain), free(d->step_from), free(d->fanned), free(d->row_fans);
+    if (!d->work) free(d->g), free(d->arg), free(d->by), free(d->fan_of);
 }
 
 static void free_links(dp *d)
 {
+    if (d->work) return; /* the workspace's */
     free(d->start), free(d->left), free(d->reach), free(d->out_start), free(d->out_link);
 }
 
@@ -731,6 +756,9 @@ static int run(dp *d, int memo, cm_sf_plan *plan)
 {
     long m = d->m;
     d->root = none, d->root_arg = -1, d->root_by = BY_TRIANGLE, d->root_fan_of = -1;
+    /* the row's arrays fresh from malloc even with a workspace: the
+     * compiler then knows they alias nothing (the loops below read the
+     * links' arrays while writing these) */
     d->plain = malloc((size_t)m * sizeof *d->plain);
     d->step_from = malloc((size_t)m * sizeof *d->step_from);
     d->fanned = d->nfans ? malloc((size_t)m * d->nfans * sizeof *d->fanned) : NULL;
@@ -746,6 +774,10 @@ static int run(dp *d, int memo, cm_sf_plan *plan)
         status = read_plan(d, plan);
     }
     free(first);
+    if (d->work) {
+        if (status != 0) memset(plan, 0, sizeof *plan);
+        return status;
+    }
     if (status != 0) cm_sf_plan_clear(plan);
     return status;
 }
@@ -756,11 +788,12 @@ static void setup(dp *d, long m, const cm_diagview *common, const double *const 
     d->m = m, d->common = common, d->xy = xy, d->k = k;
 }
 
-/* Sets the fan points and whether every point is tame. */
+/* Sets the fan points and whether every point is tame (read by the fan
+ * tests alone: not looked at without fan points). */
 static void set_fans(dp *d, const double *fans, size_t nfans)
 {
     d->fans = fans, d->nfans = fans ? nfans : 0;
-    d->tame = !d->nfans || cm_coords_tame(d->fans, 2 * (long)(d->nfans * d->k));
+    d->tame = d->nfans && cm_coords_tame(d->fans, 2 * (long)(d->nfans * d->k));
     for (size_t g = 0; g < d->k && d->tame; g++) d->tame = cm_coords_tame(d->xy[g], 2 * d->m);
 }
 
@@ -774,6 +807,31 @@ int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *
     set_fans(&d, fans, nfans);
     int status = build_links(&d) == 0 && init_values(&d) == 0 ? run(&d, 0, plan) : -1;
     free_run(&d), free_links(&d);
+    return status;
+}
+
+cm_sf_work *cm_sf_work_new(void)
+{
+    return calloc(1, sizeof(cm_sf_work));
+}
+
+void cm_sf_work_free(cm_sf_work *work)
+{
+    if (!work) return;
+    for (int s = 0; s < W_SLOTS; s++) free(work->buf[s]);
+    free(work);
+}
+
+int cm_steinerfree_plan_in(cm_sf_work *work, long m, const cm_diagview *common, const double *const *xy, size_t k,
+                           cm_sf_plan *plan)
+{
+    memset(plan, 0, sizeof *plan);
+    dp d;
+    setup(&d, m, common, xy, k);
+    set_fans(&d, NULL, 0);
+    d.work = work;
+    int status = build_links(&d) == 0 && init_values(&d) == 0 ? run(&d, 0, plan) : -1;
+    free_run(&d);
     return status;
 }
 

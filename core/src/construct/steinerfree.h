@@ -55,6 +55,17 @@ int cm_steinerfree_plan(long m, const cm_diagview *common, const double *const *
                         const double *fans, size_t nfans, cm_sf_plan *plan);
 void cm_sf_plan_clear(cm_sf_plan *plan);
 
+/* Buffers kept from one run to the next: many small programs (the link
+ * cuts' halves) without allocations of their own. cm_steinerfree_plan_in
+ * is cm_steinerfree_plan without fan points, every array (the plan's too)
+ * in work: the plan lives until work's next run or cm_sf_work_free, and is
+ * not cleared. */
+typedef struct cm_sf_work cm_sf_work;
+cm_sf_work *cm_sf_work_new(void);
+void cm_sf_work_free(cm_sf_work *work);
+int cm_steinerfree_plan_in(cm_sf_work *work, long m, const cm_diagview *common, const double *const *xy, size_t k,
+                           cm_sf_plan *plan);
+
 /* A run without fan points can leave what a later run with them over the
  * same polygon reuses: its links, and the values of the rows whose
  * sub-polygons hold none of the fan points (those admit no fan face).

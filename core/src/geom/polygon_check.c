@@ -41,19 +41,21 @@ typedef cm_vertex_event vertex_event;
 
 /* ---- geometry -------------------------------------------------------- */
 
+/* Vertices and edges are numbered 0..n-1 (no integer division: these are
+ * read at every step of the sweep). */
 static const double *vertex_at(const scanline *sw, long v)
 {
-    return sw->xy + 2 * (v % sw->n);
+    return sw->xy + 2 * v;
 }
 
 static long succ_of(const scanline *sw, long v)
 {
-    return sw->succ ? sw->succ[v] : (v + 1) % sw->n;
+    return sw->succ ? sw->succ[v] : v + 1 < sw->n ? v + 1 : 0;
 }
 
 static long pred_of(const scanline *sw, long v)
 {
-    return sw->pred ? sw->pred[v] : (v + sw->n - 1) % sw->n;
+    return sw->pred ? sw->pred[v] : v > 0 ? v - 1 : sw->n - 1;
 }
 
 static const double *edge_start(const scanline *sw, long e)

@@ -36,7 +36,7 @@ typedef struct {
 
 static int adjacent(long m, long s, long v)
 {
-    return v == (s + 1) % m || s == (v + 1) % m;
+    return v == (s + 1 < m ? s + 1 : 0) || s == (v + 1 < m ? v + 1 : 0);
 }
 
 /* Is a wanted vertex strictly between r and l on the chain r, r+1, ..., l
@@ -171,7 +171,7 @@ int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned c
 /* The sign of the turn at vertex i (the orientation of its corner). */
 static int vertex_turn(const double *xy, long m, long i)
 {
-    return cm_orient2d(xy + 2 * ((i + m - 1) % m), xy + 2 * i, xy + 2 * ((i + 1) % m));
+    return cm_orient2d(xy + 2 * (i > 0 ? i - 1 : m - 1), xy + 2 * i, xy + 2 * (i + 1 < m ? i + 1 : 0));
 }
 
 void cm_vertex_turns(const double *xy, long m, signed char *turn)
@@ -183,7 +183,7 @@ void cm_vertex_turns(const double *xy, long m, signed char *turn)
  * leave into the interior? */
 static int leaves_inward(const double *xy, long m, long i, int turn, const double q[2])
 {
-    const double *p = xy + 2 * ((i + m - 1) % m), *v = xy + 2 * i, *n = xy + 2 * ((i + 1) % m);
+    const double *p = xy + 2 * (i > 0 ? i - 1 : m - 1), *v = xy + 2 * i, *n = xy + 2 * (i + 1 < m ? i + 1 : 0);
     int left_of_in = cm_orient2d(p, v, q) > 0;
     /* the second side only where it can change the answer */
     if (turn > 0) return left_of_in && cm_orient2d(v, n, q) > 0;
@@ -299,7 +299,7 @@ static long clip_half_plane(const double *in, long n, const double *a, const dou
 {
     long count = 0;
     for (long i = 0; i < n; i++) {
-        const double *p = in + 2 * i, *q = in + 2 * ((i + 1) % n);
+        const double *p = in + 2 * i, *q = in + 2 * (i + 1 < n ? i + 1 : 0);
         double sp = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
         double sq = (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]);
         if (sp >= 0) out[2 * count] = p[0], out[2 * count + 1] = p[1], count++;
@@ -327,7 +327,7 @@ int cm_kernel_point(const double *xy, long m, double out[2])
     memcpy(a, box, sizeof box);
     long n = 4;
     for (long i = 0; i < m && n >= 3; i++) {
-        n = clip_half_plane(a, n, xy + 2 * i, xy + 2 * ((i + 1) % m), b);
+        n = clip_half_plane(a, n, xy + 2 * i, xy + 2 * (i + 1 < m ? i + 1 : 0), b);
         double *t = a;
         a = b, b = t;
     }
@@ -336,7 +336,7 @@ int cm_kernel_point(const double *xy, long m, double out[2])
         /* area centroid: inside the kernel even when it is thin */
         double area = 0, cx = 0, cy = 0;
         for (long i = 0; i < n; i++) {
-            const double *p = a + 2 * i, *q = a + 2 * ((i + 1) % n);
+            const double *p = a + 2 * i, *q = a + 2 * (i + 1 < n ? i + 1 : 0);
             double w = p[0] * q[1] - q[0] * p[1];
             area += w, cx += (p[0] + q[0]) * w, cy += (p[1] + q[1]) * w;
         }
@@ -344,7 +344,7 @@ int cm_kernel_point(const double *xy, long m, double out[2])
             out[0] = cx / (3 * area), out[1] = cy / (3 * area);
             found = 1;
             for (long i = 0; i < m && found; i++)
-                found = cm_orient2d(xy + 2 * i, xy + 2 * ((i + 1) % m), out) > 0;
+                found = cm_orient2d(xy + 2 * i, xy + 2 * (i + 1 < m ? i + 1 : 0), out) > 0;
         }
     }
     free(block);
