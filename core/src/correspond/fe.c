@@ -269,22 +269,14 @@ long cm_fe_sample_interior(cm_fe_mesh *m, long *sample)
     return ns;
 }
 
-long cm_fe_deepest(const cm_fe_mesh *m, size_t n, const long *sample, long ns)
-{
-    double best = -1;
-    long deepest = sample[0];
-    for (long j = 0; j < ns; j++) {
-        double d = cm_fe_depth2(m, n, m->xy + 2 * sample[j]);
-        if (d > best) best = d, deepest = sample[j];
-    }
-    return deepest;
-}
-
-double cm_fe_depth2(const cm_fe_mesh *m, size_t n, const double *p)
+/* The squared distance from p to the polygon (its first n nodes), or, as
+ * soon as some edge is no farther than floor, that edge's: a node no
+ * deeper than the deepest so far needs no more edges. */
+static double depth2_above(const cm_fe_mesh *m, size_t n, const double *p, double floor)
 {
     double dist = INFINITY;
-    for (size_t i = 0; i < n; i++) {
-        const double *a = m->xy + 2 * i, *b = m->xy + 2 * ((i + 1) % n);
+    for (size_t i = 0; i < n && dist > floor; i++) {
+        const double *a = m->xy + 2 * i, *b = m->xy + 2 * (i + 1 < n ? i + 1 : 0);
         double ex = b[0] - a[0], ey = b[1] - a[1], px = p[0] - a[0], py = p[1] - a[1];
         double t = fmin(1.0, fmax(0.0, (px * ex + py * ey) / (ex * ex + ey * ey)));
         double dx = px - t * ex, dy = py - t * ey;
@@ -292,6 +284,18 @@ double cm_fe_depth2(const cm_fe_mesh *m, size_t n, const double *p)
     }
     return dist;
 }
+
+long cm_fe_deepest(const cm_fe_mesh *m, size_t n, const long *sample, long ns)
+{
+    double best = -1;
+    long deepest = sample[0];
+    for (long j = 0; j < ns; j++) {
+        double d = depth2_above(m, n, m->xy + 2 * sample[j], best);
+        if (d > best) best = d, deepest = sample[j];
+    }
+    return deepest;
+}
+
 
 cm_status cm_fe_harmonic_measure(cm_fe_mesh *m, long source, int refactor, double *w, cm_error *err)
 {

@@ -48,9 +48,6 @@ double cm_fe_tri(const cm_fe_mesh *m, long t, double d[3][2]);
  * the fixed set is that of the last call (its factorization is reused). */
 cm_status cm_fe_solve(cm_fe_mesh *m, long source, int refactor, cm_error *err);
 
-/* Squared distance from p to the polygon (its first n nodes). */
-double cm_fe_depth2(const cm_fe_mesh *m, size_t n, const double *p);
-
 /* Up to CM_FE_SAMPLE interior nodes spread over the node numbering, into
  * sample; how many (0: none). Leaves the boundary fixed at 0 (m->fixed,
  * m->u). */
