@@ -320,7 +320,7 @@ static void seen_by_all(const rowset *r, long i, long m, long lo, unsigned char 
             for (long j = lo; j < m; j++) all[j] &= row[j];
         if (learn && t > 0 && seen < least) least = seen, next = g;
     }
-    if (learn && 2 * least < lead_seen) *lead = next;
+    if (learn && least < lead_seen && 2 * least < lead_seen) *lead = next; /* least: LONG_MAX when none followed */
 }
 
 /* The table's rows that decide which geometry's walk comes first. */
