@@ -183,7 +183,6 @@ static lbfgsfloatval_t evaluate(void *instance, const lbfgsfloatval_t *x, lbfgsf
         else
             gj[0] = d[0] * s->along[3 * j + 1] + d[1] * s->along[3 * j + 2];
     }
-    (void)n;
     return -(m - s->tau * log(sum));
 }
 
@@ -300,7 +299,7 @@ static cm_status polish_geometry(soft *s, size_t g, double *xy, size_t nt, size_
             memcpy(x, s->best_x, s->nx * sizeof *x);
         }
         /* a slid point's start is its label's parameter times a length,
-         * not its exact position: keep only a gain */
+         * not its exact position: keep nothing worse than the start */
         if (status == CM_OK && s->best >= least && exactly_valid(s, s->best_x))
             for (size_t j = 0; j < s->nvar; j++) {
                 int32_t v = s->var[j];
