@@ -364,6 +364,24 @@ static void start_fans(dp *d, long i, long last)
     for (long l = i + 1; l <= last; l++) d->fan_in[l] = 0;
 }
 
+/* A fan chain of row i serves only a fan face closed by a link (i, j)
+ * (the root for row 0) whose closing triangle from its fan point is valid,
+ * and only up to the vertex before j: the row's fan points are cut to those
+ * of its closing links, and its fan chains end before the last of them.
+ * The chains read stay the same. Returns that last vertex. */
+static long closers(dp *d, long i)
+{
+    uint64_t fans = d->fans_now, used = 0;
+    long last = i;
+    for (long o = d->out_start[i]; fans && o < d->out_start[i + 1]; o++) {
+        uint64_t c = d->rev_ok[d->out_link[o]] & fans;
+        if (c) used |= c, last = d->out_to[o];
+    }
+    if (i == 0 && (d->root_ok & fans)) used |= d->root_ok & fans, last = d->m - 1;
+    d->fans_now = used;
+    return last - 1;
+}
+
 static void extend_fans(dp *d, long l, long s)
 {
     uint64_t fans = d->fans_now & d->facing[l];
@@ -394,7 +412,9 @@ static void extend_fans(dp *d, long l, long s)
 static void extend_chains(dp *d, long l, long s, long first)
 {
     extend_plain(d, l, s, first);
-    if (d->nfans) extend_fans(d, l, s); /* else fan_best and fan_more stay 0 */
+    /* else fan_best and fan_more stay 0, or are not read (beyond the row's
+     * fan chains' reach) */
+    if (d->nfans && l <= d->row_last) extend_fans(d, l, s);
 }
 
 /* The chains from row i into l, once every link into l is solved: first[l]
@@ -421,7 +441,7 @@ static void solve(dp *d, long *first, int memo)
         long last = d->reach[i], done = i;
         d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
         int keep = memo && i > 0 && (!d->nfans || !d->row_fans[i]);
-        if (!keep && d->nfans) start_fans(d, i, last);
+        if (!keep && d->nfans) start_fans(d, i, closers(d, i));
         for (long l = i + 1; l <= last; l++) {
             long f = first[l], s = f > d->start[l] && d->left[f - 1] == i ? f - 1 : -1;
             if (keep) {
