@@ -353,17 +353,6 @@ static void extend_plain(dp *d, long l, long s, long first)
     d->step_from[l] = exists(pc->best) ? pc->best.cost + 1 : FAR;
 }
 
-/* A row's fan chains start empty; each vertex's, once done, extends those
- * of the vertices after it within the row's reach over its links: into
- * each l they arrive by ascending vertex, the order the plain ones are
- * read in. fan_in[l]: the fan points whose chains of two or more links
- * into l have had a candidate (the others' entries are stale). */
-static void start_fans(dp *d, long i, long last)
-{
-    d->row_last = last;
-    for (long l = i + 1; l <= last; l++) d->fan_in[l] = 0;
-}
-
 /* A fan chain of row i serves only a fan face closed by a link (i, j)
  * (the root for row 0) whose closing triangle from its fan point is valid,
  * and only up to the vertex before j: the row's fan points are cut to those
@@ -380,6 +369,18 @@ static long closers(dp *d, long i)
     if (i == 0 && (d->root_ok & fans)) used |= d->root_ok & fans, last = d->m - 1;
     d->fans_now = used;
     return last - 1;
+}
+
+/* A row's fan chains start empty; each vertex's, once done, extends those
+ * of the vertices after it within the row's reach over its links: into
+ * each l they arrive by ascending vertex, the order the plain ones are
+ * read in. fan_in[l]: the fan points whose chains of two or more links
+ * into l have had a candidate (the others' entries are stale). */
+static void start_fans(dp *d, long i, long last)
+{
+    long reach = closers(d, i);
+    d->row_last = last < reach ? last : reach;
+    for (long l = i + 1; l <= d->row_last; l++) d->fan_in[l] = 0;
 }
 
 static void extend_fans(dp *d, long l, long s)
@@ -441,7 +442,7 @@ static void solve(dp *d, long *first, int memo)
         long last = d->reach[i], done = i;
         d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
         int keep = memo && i > 0 && (!d->nfans || !d->row_fans[i]);
-        if (!keep && d->nfans) start_fans(d, i, closers(d, i));
+        if (!keep && d->nfans) start_fans(d, i, last);
         for (long l = i + 1; l <= last; l++) {
             long f = first[l], s = f > d->start[l] && d->left[f - 1] == i ? f - 1 : -1;
             if (keep) {
@@ -659,7 +660,7 @@ static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 static void add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link *stack, long *top)
 {
     d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
-    if (d->nfans) start_fans(d, i, a);
+    if (d->nfans) start_fans(d, i, fan >= 0 ? a : i); /* a fan face reads its fan point's chains alone */
     for (long l = i + 1; l <= a; l++) extend_chains(d, l, find_link(d, i, l), first_after(d, l, i));
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
