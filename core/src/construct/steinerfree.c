@@ -387,6 +387,10 @@ static void extend_fans(dp *d, long l, long s)
 {
     uint64_t fans = d->fans_now & d->facing[l];
     uint64_t in = d->fan_in[l] & fans, ones = s >= 0 ? d->fwd_ok[s] & fans : 0;
+    if (!(in | ones)) { /* no fan chain into l: none goes on from it */
+        d->fan_best[l] = d->fan_more[l] = 0;
+        return;
+    }
     uint64_t best = 0, more = 0;
     for (uint64_t b = in | ones; b; b &= b - 1) { /* the other fan points have no chain into l */
         size_t x = (size_t)cm_lowest_bit(b);
