@@ -43,7 +43,7 @@ static int adjacent(long m, long s, long v)
 /* Is a wanted vertex strictly between r and l on the chain r, r+1, ..., l
  * (cyclic)? That chain is the pocket beyond the edge from r to l: the only
  * vertices a cone crossing that edge can reach. */
-static int pocket_wanted(const vis_ctx *c, int32_t r, int32_t l)
+static inline int pocket_wanted(const vis_ctx *c, int32_t r, int32_t l)
 {
     if (!c->want) { /* a wanted vertex: one of lo..m-1 */
         if (c->lo == 0) return 1;
