@@ -220,6 +220,12 @@ static void check_table(const double *xy, int n, const char *what)
     for (int u = n - 1; rows && row && u >= 0; u--) {
         cm_visrows_row(rows, u, row);
         CHECK_MSG(memcmp(row, vis + (size_t)u * (size_t)n, (size_t)n) == 0, "%s: row %d differs", what, u);
+        /* from vertex lo on: the same entries there */
+        for (int lo = 1; lo <= n; lo += 1 + lo / 3) {
+            cm_visrows_row_from(rows, u, lo, row);
+            CHECK_MSG(memcmp(row + lo, vis + (size_t)u * (size_t)n + lo, (size_t)(n - lo)) == 0,
+                      "%s: row %d from %d differs", what, u, lo);
+        }
     }
     cm_visrows_free(rows);
     free(row);

@@ -294,21 +294,28 @@ static int open_rows(const double *const *xy, const int32_t *const *tris, size_t
 }
 
 /* all[j] &= (vertex j sees vertex i in every geometry of r), j = 0..m-1:
- * the caller sets all[] to the candidates, none below lo. Each geometry's
+ * the caller sets all[] to the candidates, none below lo (every one from
+ * lo on with from_lo: the first walk then needs no counts). Each geometry's
  * cones look only for the candidates still in. row: m bytes of scratch;
  * want: m + 1 counts of scratch. The geometries go in turn, *lead's
  * first: the result is the same in any order, but a walk after the first
  * enters only the pockets holding a vertex seen so far, so the geometry
  * that sees least is best first. With learn, *lead passes to a later
  * geometry that kept under half of what the lead saw. */
-static void seen_by_all(const rowset *r, long i, long m, long lo, unsigned char *row, unsigned char *all,
-                        int32_t *want, size_t *lead, int learn)
+static void seen_by_all(const rowset *r, long i, long m, long lo, int from_lo, unsigned char *row,
+                        unsigned char *all, int32_t *want, size_t *lead, int learn)
 {
     memset(want, 0, ((size_t)lo + 1) * sizeof *want);
     long lead_seen = 0, least = LONG_MAX;
     size_t next = *lead;
     for (size_t t = 0; t < r->k; t++) {
         size_t g = t == 0 ? *lead : t <= *lead ? t - 1 : t; /* the lead, then the others in order */
+        if (t == 0 && from_lo) {
+            if (lo >= m) return;
+            cm_visrows_row_from(r->rows[g], i, lo, row);
+            memcpy(all + lo, row + lo, (size_t)(m - lo));
+            continue;
+        }
         for (long j = lo; j < m; j++) want[j + 1] = want[j] + all[j];
         if (want[m] == 0) return;
         if (t == 1) lead_seen = want[m];
@@ -345,7 +352,7 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
     for (long i = 0; i < m; i++) {
         memset(all, 0, (size_t)i + 1);
         memset(all + i + 1, 1, (size_t)(m - i - 1));
-        seen_by_all(&r, i, m, i + 1, row, all, want, &lead, i % LEAD_EVERY == 0);
+        seen_by_all(&r, i, m, i + 1, 1, row, all, want, &lead, i % LEAD_EVERY == 0);
         for (long j = i + 1; j < m; j++)
             if (all[j] && !(p && flat_pair(p, gid[i], gid[j]))) cm_diagset_add(common, i, j);
     }
@@ -612,7 +619,7 @@ static void best_at(const part *p, const item *it, const rowset *r, long i, unsi
         all[j] = (span < m - span ? span : m - span) > *best;
     }
     size_t lead = 0;
-    seen_by_all(r, i, m, 0, row, all, want, &lead, 0);
+    seen_by_all(r, i, m, 0, 0, row, all, want, &lead, 0);
     *bj = -1;
     for (long j = 0; j < m; j++) {
         long span = (j - i + m) % m, balance = span < m - span ? span : m - span;

@@ -353,6 +353,24 @@ static void extend_plain(dp *d, long l, long s, long first)
     d->step_from[l] = exists(pc->best) ? pc->best.cost + 1 : FAR;
 }
 
+/* A fan chain of row i serves only a fan face closed by a link (i, j)
+ * (the root for row 0) whose closing triangle from its fan point is valid,
+ * and only up to the vertex before j: the row's fan points are cut to those
+ * of its closing links, and its fan chains end before the last of them.
+ * The chains read stay the same. Returns that last vertex. */
+static long closers(dp *d, long i)
+{
+    uint64_t fans = d->fans_now, used = 0;
+    long last = i;
+    for (long o = d->out_start[i]; fans && o < d->out_start[i + 1]; o++) {
+        uint64_t c = d->rev_ok[d->out_link[o]] & fans;
+        if (c) used |= c, last = d->out_to[o];
+    }
+    if (i == 0 && (d->root_ok & fans)) used |= d->root_ok & fans, last = d->m - 1;
+    d->fans_now = used;
+    return last - 1;
+}
+
 /* A row's fan chains start empty; each vertex's, once done, extends those
  * of the vertices after it within the row's reach over its links: into
  * each l they arrive by ascending vertex, the order the plain ones are
@@ -360,14 +378,19 @@ static void extend_plain(dp *d, long l, long s, long first)
  * into l have had a candidate (the others' entries are stale). */
 static void start_fans(dp *d, long i, long last)
 {
-    d->row_last = last;
-    for (long l = i + 1; l <= last; l++) d->fan_in[l] = 0;
+    long reach = closers(d, i);
+    d->row_last = last < reach ? last : reach;
+    for (long l = i + 1; l <= d->row_last; l++) d->fan_in[l] = 0;
 }
 
 static void extend_fans(dp *d, long l, long s)
 {
     uint64_t fans = d->fans_now & d->facing[l];
     uint64_t in = d->fan_in[l] & fans, ones = s >= 0 ? d->fwd_ok[s] & fans : 0;
+    if (!(in | ones)) { /* no fan chain into l: none goes on from it */
+        d->fan_best[l] = d->fan_more[l] = 0;
+        return;
+    }
     uint64_t best = 0, more = 0;
     for (uint64_t b = in | ones; b; b &= b - 1) { /* the other fan points have no chain into l */
         size_t x = (size_t)cm_lowest_bit(b);
@@ -394,7 +417,9 @@ static void extend_fans(dp *d, long l, long s)
 static void extend_chains(dp *d, long l, long s, long first)
 {
     extend_plain(d, l, s, first);
-    if (d->nfans) extend_fans(d, l, s); /* else fan_best and fan_more stay 0 */
+    /* else fan_best and fan_more stay 0, or are not read (beyond the row's
+     * fan chains' reach) */
+    if (d->nfans && l <= d->row_last) extend_fans(d, l, s);
 }
 
 /* The chains from row i into l, once every link into l is solved: first[l]
@@ -639,7 +664,7 @@ static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 static void add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link *stack, long *top)
 {
     d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
-    if (d->nfans) start_fans(d, i, a);
+    if (d->nfans) start_fans(d, i, fan >= 0 ? a : i); /* a fan face reads its fan point's chains alone */
     for (long l = i + 1; l <= a; l++) extend_chains(d, l, find_link(d, i, l), first_after(d, l, i));
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;

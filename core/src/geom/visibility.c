@@ -30,6 +30,7 @@ typedef struct {
     crossing *stack;
     int tame; /* every coordinate tame (cm_coords_tame) */
     const int32_t *want; /* NULL, or want[j] = wanted vertices among 0..j-1 */
+    long lo;             /* without want: the vertices lo..m-1 wanted */
 } vis_ctx;
 
 #define XY(c, v) ((c)->xy + 2 * (size_t)(v))
@@ -42,9 +43,13 @@ static int adjacent(long m, long s, long v)
 /* Is a wanted vertex strictly between r and l on the chain r, r+1, ..., l
  * (cyclic)? That chain is the pocket beyond the edge from r to l: the only
  * vertices a cone crossing that edge can reach. */
-static int pocket_wanted(const vis_ctx *c, int32_t r, int32_t l)
+static inline int pocket_wanted(const vis_ctx *c, int32_t r, int32_t l)
 {
-    if (!c->want) return 1;
+    if (!c->want) { /* a wanted vertex: one of lo..m-1 */
+        if (c->lo == 0) return 1;
+        if (r < l) return l - 1 >= (r + 1 > c->lo ? r + 1 : c->lo);
+        return c->m - 1 >= (r + 1 > c->lo ? r + 1 : c->lo) || l - 1 >= c->lo;
+    }
     if (r < l) return c->want[l] > c->want[r + 1];
     return c->want[c->m] > c->want[r + 1] || c->want[l] > 0;
 }
@@ -121,7 +126,7 @@ cm_visrows *cm_visrows_create(const double *xy, long m, const int32_t *tri)
     v->first = malloc((size_t)m * sizeof *v->first);
     crossing *stack = malloc((size_t)(nt + 1) * sizeof *stack);
     int32_t *nbr = malloc((size_t)(3 * nt) * sizeof *nbr);
-    v->c = (vis_ctx){xy, m, tri, v->opp, v->first, stack, cm_coords_tame(xy, 2 * m), NULL};
+    v->c = (vis_ctx){xy, m, tri, v->opp, v->first, stack, cm_coords_tame(xy, 2 * m), NULL, 0};
     if (!v->opp || !v->first || !stack || !nbr || cm_tri_adjacency(tri, nt, nbr) != 0) {
         free(nbr);
         cm_visrows_free(v);
@@ -155,6 +160,14 @@ void cm_visrows_row_wanted(cm_visrows *v, long s, const int32_t *want, unsigned 
     v->c.want = want;
     visible_from(&v->c, s, row);
     v->c.want = NULL;
+}
+
+void cm_visrows_row_from(cm_visrows *v, long s, long lo, unsigned char *row)
+{
+    memset(row, 0, (size_t)v->c.m);
+    v->c.lo = lo;
+    visible_from(&v->c, s, row);
+    v->c.lo = 0;
 }
 
 int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned char *vis)

@@ -33,6 +33,8 @@ void cm_visrows_row(cm_visrows *v, long s, unsigned char *row);
  * vertices among 0..j-1. row[j] is exact for every wanted j; the cones
  * skip the pockets without one, so other entries may be 0 where s sees j. */
 void cm_visrows_row_wanted(cm_visrows *v, long s, const int32_t *want, unsigned char *row);
+/* The same with the vertices lo..m-1 wanted (no counts to make). */
+void cm_visrows_row_from(cm_visrows *v, long s, long lo, unsigned char *row);
 void cm_visrows_free(cm_visrows *v);
 
 /* 1 if the open segment ab lies strictly inside the simple counter-clockwise
