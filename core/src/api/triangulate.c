@@ -207,7 +207,7 @@ static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o, cm_re
     r->stats.seconds_remesh = cm_seconds_now() - t;
     r->stats.remesh_iterations = report.iterations;
     r->stats.remesh_aim_deg = report.target_deg;
-    r->greedy_angle_deg = report.greedy_deg;
+    r->greedy_angle_deg = report.min_angle_deg;
     return s;
 }
 
@@ -370,12 +370,13 @@ static cm_status run_pipeline(cm_result *r, const double *const *polygons, const
                                  chosen_mode(o) ? edge_place : NULL, o->max_edge, 0};
     s = remesh_stage(r, n, o, edges && on ? &splits : NULL, &progress);
     if (s != CM_OK) return hint_at_range(r, s, polygons, k, n);
-    if (splits.n > n && take_split_boundary(r, n = splits.n)) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-    if (splits.slid) { /* points slid along their edges: the ceiling of the correspondence made */
-        if (take_split_boundary(r, n)) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-        if (o->ceiling && (s = take_ceiling(r, (const double *const *)r->boundary.xy, NULL, k, n, 0, &progress)))
-            return s;
-    }
+    /* boundary points added or slid along their edges */
+    if ((splits.n > n || splits.slid) && take_split_boundary(r, n = splits.n))
+        return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    /* slid: the ceiling of the correspondence made */
+    if (splits.slid && o->ceiling &&
+        (s = take_ceiling(r, (const double *const *)r->boundary.xy, NULL, k, n, 0, &progress)) != CM_OK)
+        return s;
     if (clockwise) restore_input_order(&r->mesh, n);
     double t2 = cm_seconds_now();
     if (cm_progress_report(&progress, CM_STAGE_CHECK, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);

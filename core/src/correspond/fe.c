@@ -296,7 +296,6 @@ long cm_fe_deepest(const cm_fe_mesh *m, size_t n, const long *sample, long ns)
     return deepest;
 }
 
-
 cm_status cm_fe_harmonic_measure(cm_fe_mesh *m, long source, int refactor, double *w, cm_error *err)
 {
     memset(m->fixed, 0, (size_t)m->nv);

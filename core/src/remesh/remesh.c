@@ -864,27 +864,17 @@ static cm_status finish(remesher *x, cm_remesh_report *rep)
     return CM_OK;
 }
 
-/* The joint max-min polish of the written result; the report's smallest
- * angle is the polished mesh's. */
-static cm_status polish_jointly(cm_mesh *mesh, size_t nb, cm_remesh_boundary *splits, cm_progress *progress,
-                                cm_remesh_report *rep)
+/* The joint max-min polish of the written result (the report keeps the
+ * smallest angle the stages above reached; the caller measures the
+ * result). */
+static cm_status polish_jointly(cm_mesh *mesh, size_t nb, cm_remesh_boundary *splits, cm_progress *progress)
 {
     cm_maxmin_slide slide = {0};
     if (splits && splits->place)
         slide = (cm_maxmin_slide){splits->edge, splits->t, splits->place, splits->ctx, splits->max_piece, 0};
-    rep->greedy_deg = rep->min_angle_deg;
     cm_status s = cm_maxmin_polish(mesh, nb, slide.place ? &slide : NULL, CM_MAXMIN_ITERATIONS, progress);
-    if (s != CM_OK) return s;
-    if (splits) splits->slid = slide.slid;
-    double least = HUGE_VAL;
-    for (size_t g = 0; g < mesh->k; g++)
-        for (size_t t = 0; t < mesh->nt; t++) {
-            const int32_t *v = mesh->tri + 3 * t;
-            const double *xy = mesh->xy[g];
-            least = fmin(least, cm_triangle_min_angle(xy + 2 * v[0], xy + 2 * v[1], xy + 2 * v[2]));
-        }
-    rep->min_angle_deg = least * 180.0 / CM_PI;
-    return CM_OK;
+    if (s == CM_OK && splits) splits->slid = slide.slid;
+    return s;
 }
 
 cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, cm_remesh_boundary *splits,
@@ -919,7 +909,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
     free(bcap);
     if (s == CM_OK && splits) s = cm_kmesh_write_labels(&x.km, splits->edge, splits->t);
     if (s == CM_OK) s = cm_kmesh_write(&x.km, mesh);
-    if (s == CM_OK) s = polish_jointly(mesh, (size_t)x.km.nb, splits, progress, rep);
+    if (s == CM_OK) s = polish_jointly(mesh, (size_t)x.km.nb, splits, progress);
     if (s == CM_OK && splits) splits->n = (size_t)x.km.nb;
     remesher_free(&x), remesher_free(&y);
     if (s == CM_ERR_INTERNAL) return cm_fail(err, s, "remesh: the construction is not a triangulated disk");

@@ -14,8 +14,8 @@ typedef struct cm_remesh_report {
     size_t iterations;    /* refinement rounds */
     long splits, split_attempts, collapses, flips;
     double target_deg;    /* the lowest triangle target after the boundary caps */
-    double min_angle_deg; /* smallest angle of the result, all geometries */
-    double greedy_deg;    /* the same before the final joint polish */
+    double min_angle_deg; /* smallest angle, all geometries, before the final
+                             joint polish (the caller measures the result) */
 } cm_remesh_report;
 
 /* Boundary splits: the remesher may split boundary edges (refinement
