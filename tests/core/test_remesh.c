@@ -65,9 +65,11 @@ static int construct(const double *const *in, size_t k, size_t n, cm_mesh *m)
     return ok ? 0 : -1;
 }
 
-/* The cached keys and candidate heaps agree with the geometry. */
-static int keys_fresh(const cm_kmesh *km)
+/* The cached keys and candidate heaps agree with the geometry (the
+ * candidates as read by the refinement). */
+static int keys_fresh(cm_kmesh *km)
 {
+    const cm_heap *eq = cm_kmesh_candidates(km);
     for (int32_t t = 0; t < km->nt; t++) {
         if (!cm_kmesh_tri_live(km, t)) {
             if (cm_heap_contains(&km->tq, t)) return 0;
@@ -84,7 +86,7 @@ static int keys_fresh(const cm_kmesh *km)
             int32_t o = km->opp[c];
             if (o < 0 || o < c) continue;
             int want = km->slack[t] < 0 || km->slack[o / 3] < 0;
-            if (want != cm_heap_contains(&km->eq, c) || cm_heap_contains(&km->eq, o)) return 0;
+            if (want != cm_heap_contains(eq, c) || cm_heap_contains(eq, o)) return 0;
         }
     }
     return 1;

@@ -34,6 +34,13 @@ int cm_heap_reserve(cm_heap *h, int32_t cap)
     return 0;
 }
 
+/* Smaller key first, equal keys by id: the order is total, so what the
+ * heap yields never depends on the order of the updates that built it. */
+static inline int before(const cm_heap *h, int32_t a, int32_t b)
+{
+    return h->key[a] < h->key[b] || (h->key[a] == h->key[b] && a < b);
+}
+
 static void place(cm_heap *h, int32_t i, int32_t id)
 {
     h->ids[i] = id;
@@ -43,10 +50,9 @@ static void place(cm_heap *h, int32_t i, int32_t id)
 static void sift_up(cm_heap *h, int32_t i)
 {
     int32_t id = h->ids[i];
-    double k = h->key[id];
     while (i > 0) {
         int32_t parent = (i - 1) / 2;
-        if (h->key[h->ids[parent]] <= k) break;
+        if (!before(h, id, h->ids[parent])) break;
         place(h, i, h->ids[parent]);
         i = parent;
     }
@@ -56,12 +62,11 @@ static void sift_up(cm_heap *h, int32_t i)
 static void sift_down(cm_heap *h, int32_t i)
 {
     int32_t id = h->ids[i];
-    double k = h->key[id];
     for (;;) {
         int32_t child = 2 * i + 1;
         if (child >= h->size) break;
-        if (child + 1 < h->size && h->key[h->ids[child + 1]] < h->key[h->ids[child]]) child++;
-        if (h->key[h->ids[child]] >= k) break;
+        if (child + 1 < h->size && before(h, h->ids[child + 1], h->ids[child])) child++;
+        if (!before(h, h->ids[child], id)) break;
         place(h, i, h->ids[child]);
         i = child;
     }
@@ -114,7 +119,7 @@ int32_t cm_heap_smallest(const cm_heap *h, int32_t max, double below, int32_t *o
     while (nw > 0 && count < max) {
         int32_t best = 0; /* the frontier stays below 2 * max: a linear scan is enough */
         for (int32_t j = 1; j < nw; j++)
-            if (h->key[h->ids[work[j]]] < h->key[h->ids[work[best]]]) best = j;
+            if (before(h, h->ids[work[j]], h->ids[work[best]])) best = j;
         int32_t i = work[best];
         work[best] = work[--nw];
         if (h->key[h->ids[i]] >= below) break;

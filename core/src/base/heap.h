@@ -1,6 +1,7 @@
-/* An indexed binary min-heap over ids 0..cap-1, keyed by doubles: the
- * remesher's priority queues (worst triangle first, best collapse first)
- * with O(log n) insert, update and removal by id. */
+/* An indexed binary min-heap over ids 0..cap-1, keyed by doubles (equal
+ * keys: the smaller id first): the remesher's priority queues (worst
+ * triangle first, best collapse first) with O(log n) insert, update and
+ * removal by id. */
 #ifndef CM_HEAP_H
 #define CM_HEAP_H
 

@@ -64,10 +64,11 @@ static int reserve_triangles(cm_kmesh *km, int32_t need)
     size_t c = (size_t)cap;
     if (resize(&km->tri, 3 * c, sizeof *km->tri) || resize(&km->opp, 3 * c, sizeof *km->opp) ||
         resize(&km->tkey, c, sizeof *km->tkey) || resize(&km->slack, c, sizeof *km->slack) ||
-        resize(&km->tang, c * km->k, sizeof *km->tang) ||
+        resize(&km->tang, c * km->k, sizeof *km->tang) || resize(&km->eq_stale, 3 * c, sizeof *km->eq_stale) ||
+        resize(&km->eq_pending, 3 * c, sizeof *km->eq_pending) ||
         cm_heap_reserve(&km->tq, cap) || cm_heap_reserve(&km->eq, 3 * cap) || reserve_list(&km->free_t, cap))
         return -1;
-    for (int32_t i = 3 * km->cap_t; i < 3 * cap; i++) km->tri[i] = -1, km->opp[i] = -1;
+    for (int32_t i = 3 * km->cap_t; i < 3 * cap; i++) km->tri[i] = -1, km->opp[i] = -1, km->eq_stale[i] = 0;
     for (int32_t t = km->cap_t; t < cap; t++) km->tkey[t] = CM_PI, km->slack[t] = 0, km->tang[(size_t)t * km->k] = NAN;
     km->cap_t = cap;
     return 0;
@@ -118,7 +119,7 @@ void cm_kmesh_free(cm_kmesh *km)
         for (size_t g = 0; g < km->k; g++) free(km->xy[g]);
     free(km->xy), free(km->tri), free(km->opp), free(km->vc), free(km->scale);
     free(km->tkey), free(km->tang), free(km->slack), free(km->mark), free(km->bcap), free(km->bnext), free(km->vcap), free(km->vdirty);
-    free(km->bedge), free(km->bt);
+    free(km->bedge), free(km->bt), free(km->eq_stale), free(km->eq_pending);
     cm_ibuf_free(&km->free_v), cm_ibuf_free(&km->free_t);
     cm_heap_free(&km->tq), cm_heap_free(&km->eq);
     memset(km, 0, sizeof *km);
@@ -161,9 +162,8 @@ double cm_kmesh_split_score(const cm_kmesh *km, int32_t c)
 /* Files the edge opposite c under its smaller corner, if a triangle
  * beside it still falls short of its target (a boundary edge only with
  * boundary splits). */
-static void update_edge(cm_kmesh *km, int32_t c)
+static void file_edge(cm_kmesh *km, int32_t c)
 {
-    if (km->eq_dropped) return;
     int32_t o = km->opp[c];
     if (o < 0) {
         if (km->between && km->slack[c / 3] < 0)
@@ -178,6 +178,37 @@ static void update_edge(cm_kmesh *km, int32_t c)
         cm_heap_set(&km->eq, lo, -cm_kmesh_split_score(km, c));
     else
         cm_heap_remove(&km->eq, lo);
+}
+
+/* The edge opposite c changed: filed again when the candidates are next
+ * read. Its score then comes from the keys and positions of that time,
+ * which are those the last change left, so the heap holds what filing at
+ * every change would have left. */
+static void update_edge(cm_kmesh *km, int32_t c)
+{
+    if (km->eq_dropped || km->eq_stale[c]) return;
+    km->eq_stale[c] = 1;
+    km->eq_pending[km->eq_npending++] = c; /* each corner once: room for all */
+}
+
+const cm_heap *cm_kmesh_candidates(cm_kmesh *km)
+{
+    for (int32_t i = 0; i < km->eq_npending; i++) {
+        int32_t c = km->eq_pending[i], o = km->opp[c];
+        if (!km->eq_stale[c]) continue; /* filed with its twin */
+        km->eq_stale[c] = 0;
+        if (km->tri[c] < 0) continue; /* died: out of the heap already */
+        if (o >= 0) km->eq_stale[o] = 0;
+        file_edge(km, c);
+    }
+    km->eq_npending = 0;
+    return &km->eq;
+}
+
+void cm_kmesh_forget_candidate(cm_kmesh *km, int32_t c)
+{
+    cm_kmesh_candidates(km);
+    cm_heap_remove(&km->eq, km->opp[c] < 0 || c < km->opp[c] ? c : km->opp[c]);
 }
 
 /* Sets t's key, its slack and the heap entries that depend on them. */
@@ -289,6 +320,8 @@ int cm_kmesh_allow_boundary_splits(cm_kmesh *km, cm_kmesh_between between, void 
 void cm_kmesh_drop_candidates(cm_kmesh *km)
 {
     while (cm_heap_pop(&km->eq) >= 0) {}
+    for (int32_t i = 0; i < km->eq_npending; i++) km->eq_stale[km->eq_pending[i]] = 0;
+    km->eq_npending = 0;
     km->eq_dropped = 1;
 }
 

@@ -18,7 +18,9 @@
  * boundary allows less: see cm_kmesh_set_caps), in a min-heap, so the
  * worst triangle is always at hand; and a max-heap of the refinement
  * candidates, the interior edges beside a triangle of negative slack, by
- * the split score of eq. (5). Every operation below keeps them current.
+ * the split score of eq. (5). Every operation below keeps them current;
+ * the candidates' scores are worked out when the heap is next read (a
+ * repair moves the same vertices many times between two reads).
  *
  * Operations do not check validity: the callers (flip.c, smooth.c, ...)
  * test each candidate exactly with cm_kmesh_tri_ok first. */
@@ -57,8 +59,13 @@ typedef struct cm_kmesh {
                               geometry; the first NaN when not known */
     double *slack;         /* triangle: tkey minus its target */
     cm_heap tq;            /* live triangles by slack */
-    cm_heap eq;            /* candidate edges (smaller corner) by -score */
+    cm_heap eq;            /* candidate edges (smaller corner) by -score;
+                              read it through cm_kmesh_candidates */
     int eq_dropped;        /* eq emptied and no longer kept */
+    uint8_t *eq_stale;     /* 3 per triangle: the corner's edge changed
+                              since eq last filed it */
+    int32_t *eq_pending;   /* the stale corners, each once */
+    int32_t eq_npending;
     double target;         /* radians; 0 until cm_kmesh_set_caps */
     double *bcap;          /* per boundary vertex i: cap of edge i -> bnext[i] */
     int32_t *bnext;        /* per vertex: the next along its boundary loop,
@@ -202,6 +209,12 @@ void cm_kmesh_set_caps(cm_kmesh *km, double target, const double *bcap, const do
  * so cm_refine_candidates finds none (keeping it costs a score, with a
  * square root, per edge of every changed triangle). */
 void cm_kmesh_drop_candidates(cm_kmesh *km);
+/* The refinement candidates, with every edge changed since the last read
+ * filed again (the same heap as if each change had filed it at once). */
+const cm_heap *cm_kmesh_candidates(cm_kmesh *km);
+/* Takes the edge opposite c out of the candidates until a triangle beside
+ * it changes again. */
+void cm_kmesh_forget_candidate(cm_kmesh *km, int32_t c);
 /* Split score of eq. (5) of the edge opposite c (interior, or boundary
  * with boundary splits): the largest
  * relative length over geometries over alpha_min(e)^2. */

@@ -81,10 +81,10 @@ static int32_t split_boundary(cm_kmesh *km, int32_t c, double *pts)
     return m;
 }
 
-long cm_refine_candidates(const cm_kmesh *km, long max, int32_t *out)
+long cm_refine_candidates(cm_kmesh *km, long max, int32_t *out)
 {
     if (max > INT32_MAX / 4) max = INT32_MAX / 4;
-    return cm_heap_smallest(&km->eq, (int32_t)max, 0.0, out, out + max);
+    return cm_heap_smallest(cm_kmesh_candidates(km), (int32_t)max, 0.0, out, out + max);
 }
 
 int32_t cm_refine_split(cm_kmesh *km, int32_t c)

@@ -22,7 +22,7 @@ long cm_refine_step(cm_kmesh *km, long k_split, cm_work *touched);
 int cm_refine_take_quad(cm_kmesh *km, int32_t c, uint32_t stamp);
 /* The up to max best candidate edges (corners), best first, into out
  * (room for 3 * max). Returns how many. */
-long cm_refine_candidates(const cm_kmesh *km, long max, int32_t *out);
+long cm_refine_candidates(cm_kmesh *km, long max, int32_t *out);
 /* Splits the edge opposite c at its midpoint in every geometry if the new
  * triangles are valid in all: returns the new vertex, -2 when invalid or
  * a boundary edge without boundary splits (CM_SPLIT_NO_FIT), CM_NO_MEMORY.

@@ -388,11 +388,6 @@ static int settle_by(remesher *x, double gain)
 
 static int settle(remesher *x) { return settle_by(x, 0.0); }
 
-static void forget_edge(cm_kmesh *km, int32_t c)
-{
-    cm_heap_remove(&km->eq, km->opp[c] < 0 || c < km->opp[c] ? c : km->opp[c]);
-}
-
 /* Splits the edge opposite c and repairs around the new vertex, as one
  * transaction. Returns 1 kept, 0 undone or impossible, -1 out of memory. */
 static int try_split(remesher *x, int32_t c)
@@ -404,13 +399,13 @@ static int try_split(remesher *x, int32_t c)
     if (m == CM_NO_MEMORY) return cm_kmesh_tx_commit(km), -1;
     if (m == CM_SPLIT_NO_FIT) {
         cm_kmesh_tx_commit(km);
-        forget_edge(km, c);
+        cm_kmesh_forget_candidate(km, c);
         return tabu_add(&x->tabu, a, b, CM_SPLIT_TRIES) ? -1 : 0;
     }
     if (queue_around(x, m) || improve(x, CM_IMPROVE_SWEEPS)) return cm_kmesh_tx_commit(km), -1;
     int kept = settle(x);
     if (kept != 0) return kept;
-    forget_edge(km, c); /* restored: c is that edge again */
+    cm_kmesh_forget_candidate(km, c); /* restored: c is that edge again */
     return tabu_add(&x->tabu, a, b, 1) ? -1 : 0;
 }
 
@@ -438,9 +433,9 @@ static int worth_trying(remesher *x, int32_t c)
     cm_kmesh *km = &x->km;
     if (km->tri[c] < 0 || (km->opp[c] < 0 && !km->between)) return 0;
     int32_t rep = km->opp[c] < 0 || c < km->opp[c] ? c : km->opp[c];
-    if (!cm_heap_contains(&km->eq, rep)) return 0;
+    if (!cm_heap_contains(cm_kmesh_candidates(km), rep)) return 0;
     if (tabu_count(&x->tabu, km->tri[cm_next(c)], km->tri[cm_prev(c)]) < CM_SPLIT_TRIES) return 1;
-    cm_heap_remove(&km->eq, rep);
+    cm_kmesh_forget_candidate(km, c);
     return 0;
 }
 
