@@ -42,7 +42,7 @@ static void disk_free(disk *d)
     memset(d, 0, sizeof *d);
 }
 
-static void balance(disk *d);
+static int balance(disk *d);
 
 static cm_status disk_build(const double *input, size_t n, int reversed, disk *d, int *usable, cm_error *err)
 {
@@ -87,7 +87,7 @@ static cm_status disk_build(const double *input, size_t n, int reversed, disk *d
             double total = d->s[nb];
             for (size_t j = 0; j <= nb; j++) d->s[j] /= total;
             d->s[nb] = 1.0, d->theta[nb] = 2 * CM_PI;
-            balance(d);
+            if (balance(d)) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
         }
     }
     free(xy), free(w);
@@ -102,30 +102,39 @@ static cm_status disk_build(const double *input, size_t n, int reversed, disk *d
  * the polygons are similar, whichever interior node each was seen from;
  * by halving steps towards the mean, composed. Angles stay from 0 at
  * vertex 0, non-decreasing. */
-static void balance(disk *d)
+static int balance(disk *d)
 {
     size_t nb = d->nb;
+    /* the nodes on the circle and their weights, the same every step */
+    double complex *at = malloc(nb * sizeof *at);
+    double *weight = malloc(nb * sizeof *weight);
+    if (!at || !weight) {
+        free(at), free(weight);
+        return -1;
+    }
+    for (size_t j = 0; j < nb; j++) {
+        at[j] = cexp(I * d->theta[j]);
+        weight[j] = 0.5 * ((j + 1 < nb ? d->s[j + 1] : 1.0) - (j ? d->s[j - 1] : d->s[nb - 1] - 1.0));
+    }
     double complex a = 0;
     for (int it = 0; it < BALANCE_ITERATIONS; it++) {
         double complex mean = 0;
-        for (size_t j = 0; j < nb; j++) {
-            double complex w = cexp(I * d->theta[j]);
-            double weight = 0.5 * ((j + 1 < nb ? d->s[j + 1] : 1.0) - (j ? d->s[j - 1] : d->s[nb - 1] - 1.0));
-            mean += weight * (w - a) / (1 - conj(a) * w);
-        }
+        for (size_t j = 0; j < nb; j++) mean += weight[j] * (at[j] - a) / (1 - conj(a) * at[j]);
         if (cabs(mean) < BALANCE_TOLERANCE) break;
         double complex b = 0.5 * mean;
         a = (b + a) / (1 + conj(a) * b);
     }
     double prev = 0, first = 0;
     for (size_t j = 0; j < nb; j++) {
-        double complex w = cexp(I * d->theta[j]);
+        double complex w = at[j];
         double t = carg((w - a) / (1 - conj(a) * w));
         if (j == 0) first = t;
         t = j ? prev + fmax(0.0, remainder(t - prev, 2 * CM_PI)) : t;
         d->theta[j] = t - first, prev = t;
     }
     for (size_t j = 1; j < nb; j++) d->theta[j] = fmin(fmax(d->theta[j], d->theta[j - 1]), 2 * CM_PI);
+    free(at), free(weight);
+    return 0;
 }
 
 /* The largest j < len with a[j] <= x (a non-decreasing, a[0] <= x). */
