@@ -315,3 +315,94 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
     free(disks), free(w0);
     return s;
 }
+
+/* ---- memo -------------------------------------------------------------------- */
+
+struct cm_conformal_memo {
+    int held, found;
+    size_t k, total;  /* polygons; their vertices in all */
+    size_t *counts;   /* k */
+    int *orientation; /* k */
+    double *xy;       /* 2 total: the polygons one after another */
+    double *params;   /* total */
+    double *fine;     /* (total - counts[0]) CM_PARAM_FINE: polygons 1 .. k - 1 */
+};
+
+cm_conformal_memo *cm_conformal_memo_new(void) { return calloc(1, sizeof(cm_conformal_memo)); }
+
+static void memo_clear(cm_conformal_memo *memo)
+{
+    free(memo->counts), free(memo->orientation), free(memo->xy), free(memo->params), free(memo->fine);
+    memset(memo, 0, sizeof *memo);
+}
+
+void cm_conformal_memo_free(cm_conformal_memo *memo)
+{
+    if (memo) memo_clear(memo);
+    free(memo);
+}
+
+static int memo_matches(const cm_conformal_memo *memo, const double *const *polygons, const size_t *counts,
+                        size_t k, const int *orientation)
+{
+    if (!memo->held || memo->k != k || memcmp(memo->counts, counts, k * sizeof *counts) ||
+        memcmp(memo->orientation, orientation, k * sizeof *orientation))
+        return 0;
+    for (size_t g = 0, at = 0; g < k; at += counts[g], g++)
+        if (memcmp(memo->xy + 2 * at, polygons[g], 2 * counts[g] * sizeof *memo->xy)) return 0;
+    return 1;
+}
+
+/* Copies between the memo's arrays and the caller's: to the caller when
+ * recall, else into the memo. */
+static void memo_copy(cm_conformal_memo *memo, const double *const *polygons, double *const *params,
+                      double *const *fine, int recall)
+{
+    for (size_t g = 0, at = 0; g < memo->k; at += memo->counts[g], g++) {
+        size_t c = memo->counts[g], fine_at = (at - memo->counts[0]) * CM_PARAM_FINE;
+        double *kept = memo->params + at, *kept_fine = g ? memo->fine + fine_at : NULL;
+        if (!recall) memcpy(memo->xy + 2 * at, polygons[g], 2 * c * sizeof *memo->xy);
+        memcpy(recall ? params[g] : kept, recall ? kept : params[g], c * sizeof *kept);
+        if (g) memcpy(recall ? fine[g] : kept_fine, recall ? kept_fine : fine[g], c * CM_PARAM_FINE * sizeof *kept);
+    }
+}
+
+/* Remembers a call's polygons and result (silently not, out of memory). */
+static void memo_store(cm_conformal_memo *memo, const double *const *polygons, const size_t *counts, size_t k,
+                       const int *orientation, double *const *params, double *const *fine, int found)
+{
+    memo_clear(memo);
+    size_t total = 0;
+    for (size_t g = 0; g < k; g++) total += counts[g];
+    memo->counts = malloc(k * sizeof *memo->counts);
+    memo->orientation = malloc(k * sizeof *memo->orientation);
+    memo->xy = malloc(2 * total * sizeof *memo->xy);
+    memo->params = malloc(total * sizeof *memo->params);
+    memo->fine = malloc(((total - counts[0]) * CM_PARAM_FINE + 1) * sizeof *memo->fine);
+    if (!memo->counts || !memo->orientation || !memo->xy || !memo->params || !memo->fine) {
+        memo_clear(memo);
+        return;
+    }
+    memcpy(memo->counts, counts, k * sizeof *counts);
+    memcpy(memo->orientation, orientation, k * sizeof *orientation);
+    memo->k = k, memo->total = total, memo->found = found;
+    if (found) memo_copy(memo, polygons, params, fine, 0);
+    else
+        for (size_t g = 0, at = 0; g < k; at += counts[g], g++)
+            memcpy(memo->xy + 2 * at, polygons[g], 2 * counts[g] * sizeof *memo->xy);
+    memo->held = 1;
+}
+
+cm_status cm_correspond_conformal_memo(cm_conformal_memo *memo, const double *const *polygons, const size_t *counts,
+                                       size_t k, const int *orientation, double *const *params,
+                                       double *const *fine, int *found, cm_error *err)
+{
+    if (memo && fine && k && memo_matches(memo, polygons, counts, k, orientation)) {
+        *found = memo->found;
+        if (*found) memo_copy(memo, polygons, params, fine, 1);
+        return CM_OK;
+    }
+    cm_status s = cm_correspond_conformal(polygons, counts, k, orientation, params, fine, found, err);
+    if (memo && fine && k && s == CM_OK) memo_store(memo, polygons, counts, k, orientation, params, fine, *found);
+    return s;
+}
