@@ -149,13 +149,32 @@ static size_t below(const double *a, size_t len, double x)
     return lo;
 }
 
+/* The same, sought from *near on (that j, found again when x moves
+ * little: it is unique), which becomes the j found. */
+static size_t below_near(const double *a, size_t len, double x, size_t *near)
+{
+    size_t j = *near;
+    if (j < len && a[j] <= x) {
+        for (int step = 0; step < 8 && j + 1 < len && a[j + 1] <= x; step++) j++;
+        if (j + 1 < len && a[j + 1] <= x) j += below(a + j, len - j, x);
+    } else {
+        j = below(a, len, x);
+    }
+    return *near = j;
+}
+
+/* y at j, x of the piecewise-linear table (xs, ys), j below x. */
+static double lookup_at(const double *xs, const double *ys, size_t j, double x)
+{
+    double dx = xs[j + 1] - xs[j];
+    return dx > 0 ? ys[j] + (x - xs[j]) / dx * (ys[j + 1] - ys[j]) : ys[j];
+}
+
 /* y at x of the piecewise-linear table (xs, ys), len + 1 points, x in
  * [xs[0], xs[len]]. */
 static double lookup(const double *xs, const double *ys, size_t len, double x)
 {
-    size_t j = below(xs, len, x);
-    double dx = xs[j + 1] - xs[j];
-    return dx > 0 ? ys[j] + (x - xs[j]) / dx * (ys[j + 1] - ys[j]) : ys[j];
+    return lookup_at(xs, ys, below(xs, len, x), x);
 }
 
 /* The search's view of one pair: m angles evenly spaced on the circle, as
@@ -174,13 +193,15 @@ typedef struct search {
 static double cost(const search *q, double rho)
 {
     double prev = 0, sum = 0, sum2 = 0;
+    size_t near = 0; /* the points go round: each lands at or after the last */
     for (size_t i = 0; i < q->m; i++) {
         double t = carg(q->w[i] * cexp(-I * rho));
         if (i == 0) t = t < 0 ? t + 2 * CM_PI : t;
         else t = prev + remainder(t - prev, 2 * CM_PI);
         prev = t;
         double turns = floor(t / (2 * CM_PI));
-        double d = turns + lookup(q->g->theta, q->g->s, q->g->nb, t - 2 * CM_PI * turns) - q->s0[i];
+        double x = t - 2 * CM_PI * turns;
+        double d = turns + lookup_at(q->g->theta, q->g->s, below_near(q->g->theta, q->g->nb, x, &near), x) - q->s0[i];
         sum += d, sum2 += d * d;
     }
     double mean = sum / (double)q->m;
