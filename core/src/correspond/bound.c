@@ -275,17 +275,20 @@ static double log_modulus(const arc_views *const arc[3])
 {
     /* the view that separates the four corners best: the largest least
      * gap between consecutive corners */
-    double gap[4] = {0}, sep = 0;
+    const double *g0 = arc[0]->gap, *g1 = arc[1]->gap, *g2 = arc[2]->gap;
+    double sep = 0;
     int best = 0;
     for (int e = 0; e < CM_BOUND_VIEWS; e++) {
-        double g[4], least = INFINITY;
-        for (int i = 0; i < 3; i++) g[i] = arc[i]->gap[e];
-        g[3] = 2 * CM_PI - g[0] - g[1] - g[2];
-        for (int i = 0; i < 4; i++) /* not fmin: a library call, in the hottest loop */
-            if (g[i] < least) least = g[i];
-        if (least > sep) sep = least, best = e, memcpy(gap, g, sizeof g);
+        /* not fmin: a library call, in the hottest loop */
+        double least = INFINITY, g3 = 2 * CM_PI - g0[e] - g1[e] - g2[e];
+        if (g0[e] < least) least = g0[e];
+        if (g1[e] < least) least = g1[e];
+        if (g2[e] < least) least = g2[e];
+        if (g3 < least) least = g3;
+        if (least > sep) sep = least, best = e;
     }
     if (!(sep > CM_BOUND_RESOLVED)) return NAN;
+    double gap[4] = {g0[best], g1[best], g2[best], 2 * CM_PI - g0[best] - g1[best] - g2[best]};
     double ab = chord_of(arc[0], best, gap[0]), bc = chord_of(arc[1], best, gap[1]);
     double cd = chord_of(arc[2], best, gap[2]);
     double da = 2 * sin(0.5 * gap[3]), ac = 2 * sin(0.5 * (gap[0] + gap[1])), bd = 2 * sin(0.5 * (gap[1] + gap[2]));
