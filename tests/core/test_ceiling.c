@@ -7,6 +7,7 @@
 
 #include "check.h"
 #include "correspond/bound.h"
+#include "geom/polytri.h"
 #include "random_polygons.h"
 #include "result_check.h"
 
@@ -235,6 +236,46 @@ static void cancels(void)
     free(a), free(b);
 }
 
+/* The memo gives what computing gives: the same polygons recalled (also
+ * with their triangulations given, the ones computing would make), other
+ * polygons or another triangulation computed afresh. */
+static int same_bound(const cm_bound *a, const cm_bound *b)
+{
+    return a->corner_fan_deg == b->corner_fan_deg && a->correspondence_deg == b->correspondence_deg &&
+           a->distortion == b->distortion && !memcmp(a->quad, b->quad, sizeof a->quad);
+}
+
+static void memo_recalls_what_computing_gives(void)
+{
+    enum { N = 20 };
+    double a[2 * N], b[2 * N], c[2 * N];
+    CHECK(rp_star(a, N, 5) == 0 && rp_star(b, N, 6) == 0 && rp_star(c, N, 7) == 0);
+    const double *ab[2] = {a, b}, *ac[2] = {a, c};
+    int32_t ta[3 * (N - 2)], tb[3 * (N - 2)], fan[3 * (N - 2)];
+    int32_t idx[N];
+    for (int i = 0; i < N; i++) idx[i] = i;
+    CHECK(cm_polygon_triangulate(a, idx, N, ta, NULL) == 0 && cm_polygon_triangulate(b, idx, N, tb, NULL) == 0);
+    for (int t = 0; t < N - 2; t++) fan[3 * t] = 0, fan[3 * t + 1] = t + 1, fan[3 * t + 2] = t + 2;
+    const int32_t *cdt[2] = {ta, tb}, *other[2] = {ta, fan};
+    cm_bound fresh_ab, fresh_ac, fresh_other, got;
+    cm_error err;
+    cm_error_init(&err);
+    cm_bound_memo *memo = cm_bound_memo_new();
+    CHECK(memo != NULL);
+    CHECK(cm_bound_compute(ab, NULL, 2, N, NULL, &fresh_ab, &err) == CM_OK);
+    CHECK(cm_bound_compute(ac, NULL, 2, N, NULL, &fresh_ac, &err) == CM_OK);
+    CHECK(cm_bound_compute(ab, other, 2, N, NULL, &fresh_other, &err) == CM_OK);
+    CHECK(!same_bound(&fresh_ab, &fresh_ac) && !same_bound(&fresh_ab, &fresh_other));
+    for (int round = 0; round < 2; round++) { /* computed, then recalled */
+        CHECK(cm_bound_compute_memo(memo, ab, NULL, 2, N, NULL, &got, &err) == CM_OK && same_bound(&got, &fresh_ab));
+        CHECK(cm_bound_compute_memo(memo, ab, cdt, 2, N, NULL, &got, &err) == CM_OK && same_bound(&got, &fresh_ab));
+        CHECK(cm_bound_compute_memo(memo, ac, NULL, 2, N, NULL, &got, &err) == CM_OK && same_bound(&got, &fresh_ac));
+        CHECK(cm_bound_compute_memo(memo, ab, other, 2, N, NULL, &got, &err) == CM_OK &&
+              same_bound(&got, &fresh_other));
+    }
+    cm_bound_memo_free(memo);
+}
+
 int main(void)
 {
     rectangle_modulus(3, 1);
@@ -245,5 +286,6 @@ int main(void)
     for (uint64_t seed = 1; seed <= 3; seed++) affine_image(seed);
     never_below_reached();
     cancels();
+    memo_recalls_what_computing_gives();
     return check_summary("test_ceiling");
 }

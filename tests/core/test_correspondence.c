@@ -243,6 +243,34 @@ static void test_conformal_similar_copy(void)
     cm_boundary_map_clear(&map);
 }
 
+/* The memo gives what computing gives: the same polygons recalled, a
+ * changed one computed afresh. */
+static void test_conformal_memo(void)
+{
+    enum { N = 30, F = CM_PARAM_FINE };
+    double a[2 * N], b[2 * N], fresh[2][N], fresh_fine[N * F], got[2][N], got_fine[N * F];
+    CHECK(rp_star(a, N, 3) == 0 && rp_star(b, N, 4) == 0);
+    const double *in[2] = {a, b};
+    size_t counts[2] = {N, N};
+    int orientation[2] = {orientation_of(a, N), orientation_of(b, N)}, found = 0;
+    cm_error err = {0};
+    cm_conformal_memo *memo = cm_conformal_memo_new();
+    CHECK(memo != NULL);
+    for (int change = 0; change < 2; change++) {
+        if (change) b[0] += 0.01; /* polygon 1 moved: computed afresh */
+        double *fp[2] = {fresh[0], fresh[1]}, *ff[2] = {NULL, fresh_fine};
+        double *gp[2] = {got[0], got[1]}, *gf[2] = {NULL, got_fine};
+        CHECK(cm_correspond_conformal(in, counts, 2, orientation, fp, ff, &found, &err) == CM_OK && found);
+        for (int round = 0; round < 2; round++) { /* computed (or recalled, after the first), then recalled */
+            memset(got, 0, sizeof got), memset(got_fine, 0, sizeof got_fine);
+            CHECK(cm_correspond_conformal_memo(memo, in, counts, 2, orientation, gp, gf, &found, &err) == CM_OK &&
+                  found);
+            CHECK(!memcmp(got, fresh, sizeof got) && !memcmp(got_fine, fresh_fine, sizeof got_fine));
+        }
+    }
+    cm_conformal_memo_free(memo);
+}
+
 /* A disc's 64 evenly spaced vertices on a square's 4 sides: the conformal
  * map crowds a convex corner (its parameter grows slowly there), so they
  * lie farther apart near the corners than near the middle of a side.
@@ -585,6 +613,7 @@ int main(void)
     test_bad_pins();
     test_conformal_similar_copy();
     test_conformal_between_vertices();
+    test_conformal_memo();
     test_auto_conformal_identity();
     test_similarity_mode();
     test_choice_reported();

@@ -5,6 +5,8 @@
 #include "base/error.h"
 #include "base/mesh.h"
 #include "correspond/arclength.h"
+#include "correspond/bound.h"
+#include "correspond/conformal.h"
 
 struct cm_result {
     cm_error error;   /* status; message and location of a failure */
@@ -27,6 +29,11 @@ struct cm_result {
      * second pairings are tried on it, so whether they run does not hang
      * on the polish. */
     double greedy_angle_deg;
+    /* The caps and the conformal correspondence already computed in this
+     * call (shared by a second pairing's result, owned by the call), or
+     * NULL. */
+    cm_bound_memo *bounds;
+    cm_conformal_memo *conformal;
 };
 
 /* Drops all geometry, keeping status and message (a failed result). */

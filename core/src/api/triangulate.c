@@ -131,7 +131,7 @@ static cm_status take_ceiling(cm_result *r, const double *const *geoms, const in
 {
     double t = cm_seconds_now();
     cm_bound b;
-    cm_status s = cm_bound_compute(geoms, tris, k, n, progress, &b, &r->error);
+    cm_status s = cm_bound_compute_memo(r->bounds, geoms, tris, k, n, progress, &b, &r->error);
     if (s != CM_OK) return s;
     r->stats.corner_fan_cap_deg = b.corner_fan_deg;
     r->stats.correspondence_bound_deg = b.correspondence_deg;
@@ -429,7 +429,8 @@ static cm_status bound_before(cm_result *r, const double *const *polygons, const
     cm_bound b;
     cm_status s = cm_correspond_arclength(polygons, counts, k, orientation, NULL, 0, &from_first, &r->error);
     if (s == CM_OK)
-        s = cm_bound_compute((const double *const *)from_first.xy, NULL, k, from_first.n, NULL, &b, &r->error);
+        s = cm_bound_compute_memo(r->bounds, (const double *const *)from_first.xy, NULL, k, from_first.n, NULL, &b,
+                                  &r->error);
     if (s == CM_OK) r->stats.correspondence_bound_before_deg = b.correspondence_deg;
     cm_boundary_map_clear(&from_first);
     r->stats.seconds_ceiling += cm_seconds_now() - t;
@@ -450,7 +451,9 @@ static cm_status conformal(cm_result *r, const double *const *polygons, const si
     cm_status s = all && params && all_fine && fine ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     for (size_t g = 0, at = 0; s == CM_OK && g < k; at += counts[g], g++)
         params[g] = all + at, fine[g] = g ? all_fine + at * CM_PARAM_FINE : NULL;
-    if (s == CM_OK) s = cm_correspond_conformal(polygons, counts, k, orientation, params, fine, found, &r->error);
+    if (s == CM_OK)
+        s = cm_correspond_conformal_memo(r->conformal, polygons, counts, k, orientation, params, fine, found,
+                                         &r->error);
     if (s == CM_OK && *found)
         s = cm_correspond_params(polygons, counts, k, orientation, (const double *const *)params,
                                  linear ? NULL : (const double *const *)fine, out, &r->error);
@@ -464,7 +467,8 @@ static cm_status conformal(cm_result *r, const double *const *polygons, const si
 static cm_status ceiling_bound_of(cm_result *r, const cm_boundary_map *map, double *deg, double *bound_deg)
 {
     cm_bound b;
-    cm_status s = cm_bound_compute((const double *const *)map->xy, NULL, map->k, map->n, NULL, &b, &r->error);
+    cm_status s = cm_bound_compute_memo(r->bounds, (const double *const *)map->xy, NULL, map->k, map->n, NULL, &b,
+                                        &r->error);
     *deg = fmin(b.corner_fan_deg, b.correspondence_deg);
     if (bound_deg) *bound_deg = b.correspondence_deg;
     return s;
@@ -807,7 +811,22 @@ static cm_status linear_rescue(cm_result **result, const double *const *polygons
     cm_options unused;
     const cm_options *same = o;
     if (!new_result(&again, &same, &unused)) return CM_OK;
+    again->bounds = (*result)->bounds, again->conformal = (*result)->conformal;
     return keep_better(result, again, run_arclength(again, polygons, counts, k, o, NULL, 1), k);
+}
+
+/* The memos of one call, for what an auto run asks more than once. */
+static void memos_start(cm_result *r, const cm_options *o)
+{
+    r->bounds = o->ceiling ? cm_bound_memo_new() : NULL;
+    r->conformal = o->correspondence == CM_CORRESPOND_AUTO ? cm_conformal_memo_new() : NULL;
+}
+
+/* r: the call's result, whichever run it came from (all share the memos). */
+static void memos_end(cm_result *r)
+{
+    cm_bound_memo_free(r->bounds), cm_conformal_memo_free(r->conformal);
+    r->bounds = NULL, r->conformal = NULL;
 }
 
 cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *counts,
@@ -821,14 +840,16 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
     }
     cm_status s = check_remesh_options(r, options);
     if (s == CM_OK) s = check_correspondence_options(r, options);
+    memos_start(r, options);
     if (s == CM_OK && options->correspondence != CM_CORRESPOND_INDEX) {
         s = run_arclength(r, polygons, counts, k, options, NULL, 0);
         if (s == CM_OK) s = linear_rescue(result, polygons, counts, k, options);
-        r = *result;
     } else if (s == CM_OK && options->max_edge > 0)
         s = run_index_split(r, polygons, counts, k, options);
     else if (s == CM_OK)
         s = run_pipeline(r, polygons, counts, k, NULL, NULL, options);
+    r = *result;
+    memos_end(r);
     if (s != CM_OK) cm_result_clear_geometry(r);
     return cm_error_close(&r->error, s);
 }
@@ -1266,6 +1287,7 @@ static cm_status outer_rescue(cm_result **result, const cm_loops *polygons, size
     cm_options unused;
     const cm_options *same = o;
     if (!new_result(&again, &same, &unused)) return CM_OK;
+    again->bounds = (*result)->bounds, again->conformal = (*result)->conformal;
     return keep_better(result, again, run_loops_arclength(again, polygons, k, o, LOOP_BY_START), k);
 }
 
@@ -1296,11 +1318,13 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
         s = cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
     if (s == CM_OK) s = check_remesh_options(r, options);
     if (s == CM_OK) s = check_correspondence_options(r, options);
+    memos_start(r, options);
     if (s == CM_OK && (options->correspondence != CM_CORRESPOND_INDEX || options->max_edge > 0))
         s = run_loops_arclength(r, polygons, k, options, LOOP_OUTER);
     else if (s == CM_OK) s = run_loops(r, polygons, k, NULL, options);
     if (s == CM_OK) s = outer_rescue(result, polygons, k, options);
     r = *result;
+    memos_end(r);
     if (s != CM_OK) cm_result_clear_geometry(r);
     return cm_error_close(&r->error, s);
 }

@@ -53,6 +53,7 @@
 
 #include "correspond/fe.h"
 #include "geom/angle.h"
+#include "geom/polytri.h"
 
 /* The finite element mesh of each polygon is split into four until it has
  * at least this many triangles (a rectangle's moduli come out exact; what
@@ -274,17 +275,20 @@ static double log_modulus(const arc_views *const arc[3])
 {
     /* the view that separates the four corners best: the largest least
      * gap between consecutive corners */
-    double gap[4] = {0}, sep = 0;
+    const double *g0 = arc[0]->gap, *g1 = arc[1]->gap, *g2 = arc[2]->gap;
+    double sep = 0;
     int best = 0;
     for (int e = 0; e < CM_BOUND_VIEWS; e++) {
-        double g[4], least = INFINITY;
-        for (int i = 0; i < 3; i++) g[i] = arc[i]->gap[e];
-        g[3] = 2 * CM_PI - g[0] - g[1] - g[2];
-        for (int i = 0; i < 4; i++) /* not fmin: a library call, in the hottest loop */
-            if (g[i] < least) least = g[i];
-        if (least > sep) sep = least, best = e, memcpy(gap, g, sizeof g);
+        /* not fmin: a library call, in the hottest loop */
+        double least = INFINITY, g3 = 2 * CM_PI - g0[e] - g1[e] - g2[e];
+        if (g0[e] < least) least = g0[e];
+        if (g1[e] < least) least = g1[e];
+        if (g2[e] < least) least = g2[e];
+        if (g3 < least) least = g3;
+        if (least > sep) sep = least, best = e;
     }
     if (!(sep > CM_BOUND_RESOLVED)) return NAN;
+    double gap[4] = {g0[best], g1[best], g2[best], 2 * CM_PI - g0[best] - g1[best] - g2[best]};
     double ab = chord_of(arc[0], best, gap[0]), bc = chord_of(arc[1], best, gap[1]);
     double cd = chord_of(arc[2], best, gap[2]);
     double da = 2 * sin(0.5 * gap[3]), ac = 2 * sin(0.5 * (gap[0] + gap[1])), bd = 2 * sin(0.5 * (gap[1] + gap[2]));
@@ -479,5 +483,93 @@ cm_status cm_bound_modulus(const double *xy, const int32_t *tri, size_t n, const
     cm_status s = cm_fe_build(&m, xy, tri, n, CM_BOUND_MIN_TRIANGLES, &usable, err);
     if (s == CM_OK && usable) s = fe_modulus_range(&m, quad, lower, upper, err);
     cm_fe_free(&m);
+    return s;
+}
+
+/* ---- memo -------------------------------------------------------------------- */
+
+/* Computations remembered; a run asks for a handful at most. */
+#define CM_BOUND_MEMO_SIZE 8
+
+typedef struct memo_entry {
+    size_t k, n;
+    double *xy;   /* k polygons' 2 n coordinates, one after another */
+    int32_t *tri; /* their triangulations, 3 (n - 2) each */
+    cm_bound b;
+} memo_entry;
+
+struct cm_bound_memo {
+    memo_entry entry[CM_BOUND_MEMO_SIZE];
+    int count, next; /* entries held; the one replaced next */
+};
+
+cm_bound_memo *cm_bound_memo_new(void) { return calloc(1, sizeof(cm_bound_memo)); }
+
+void cm_bound_memo_free(cm_bound_memo *memo)
+{
+    if (!memo) return;
+    for (int e = 0; e < memo->count; e++) free(memo->entry[e].xy), free(memo->entry[e].tri);
+    free(memo);
+}
+
+static int memo_matches(const memo_entry *e, const double *const *geoms, const int32_t *const *tris, size_t k,
+                        size_t n)
+{
+    if (e->k != k || e->n != n) return 0;
+    for (size_t g = 0; g < k; g++)
+        if (memcmp(e->xy + 2 * n * g, geoms[g], 2 * n * sizeof *e->xy) ||
+            memcmp(e->tri + 3 * (n - 2) * g, tris[g], 3 * (n - 2) * sizeof *e->tri))
+            return 0;
+    return 1;
+}
+
+/* Remembers b for these polygons (silently not, out of memory). */
+static void memo_store(cm_bound_memo *memo, const double *const *geoms, const int32_t *const *tris, size_t k,
+                       size_t n, const cm_bound *b)
+{
+    double *xy = malloc(2 * n * k * sizeof *xy);
+    int32_t *tri = malloc(3 * (n - 2) * k * sizeof *tri);
+    if (!xy || !tri) {
+        free(xy), free(tri);
+        return;
+    }
+    for (size_t g = 0; g < k; g++) {
+        memcpy(xy + 2 * n * g, geoms[g], 2 * n * sizeof *xy);
+        memcpy(tri + 3 * (n - 2) * g, tris[g], 3 * (n - 2) * sizeof *tri);
+    }
+    memo_entry *e = &memo->entry[memo->next];
+    if (memo->count == CM_BOUND_MEMO_SIZE) free(e->xy), free(e->tri);
+    else memo->count++;
+    *e = (memo_entry){k, n, xy, tri, *b};
+    memo->next = (memo->next + 1) % CM_BOUND_MEMO_SIZE;
+}
+
+cm_status cm_bound_compute_memo(cm_bound_memo *memo, const double *const *geoms, const int32_t *const *tris,
+                                size_t k, size_t n, cm_progress *progress, cm_bound *out, cm_error *err)
+{
+    if (!memo || n < 4 || k == 0) return cm_bound_compute(geoms, tris, k, n, progress, out, err);
+    /* the triangulations cm_fe_build would make, made here to key on */
+    int32_t *own = NULL, **made = NULL;
+    if (!tris) {
+        own = malloc(3 * (n - 2) * k * sizeof *own + n * sizeof(int32_t));
+        made = malloc(k * sizeof *made);
+        int32_t *idx = own ? own + 3 * (n - 2) * k : NULL;
+        for (size_t i = 0; idx && i < n; i++) idx[i] = (int32_t)i;
+        for (size_t g = 0; own && made && g < k; g++) {
+            made[g] = own + 3 * (n - 2) * g;
+            if (cm_polygon_triangulate(geoms[g], idx, (long)n, made[g], NULL) != 0) break;
+            if (g + 1 == k) tris = (const int32_t *const *)made;
+        }
+    }
+    cm_status s = CM_OK;
+    int hit = 0;
+    for (int e = 0; tris && e < memo->count && !hit; e++)
+        if (memo_matches(&memo->entry[e], geoms, tris, k, n)) *out = memo->entry[e].b, hit = 1;
+    if (!hit) {
+        /* tris still NULL: cm_fe_build meets what failed above, and says so */
+        s = cm_bound_compute(geoms, tris, k, n, progress, out, err);
+        if (s == CM_OK && tris) memo_store(memo, geoms, tris, k, n, out);
+    }
+    free(own), free(made);
     return s;
 }

@@ -38,6 +38,25 @@ double cm_corner_fan_cap(const double *const *geoms, size_t k, size_t n);
 cm_status cm_bound_compute(const double *const *geoms, const int32_t *const *tris, size_t k,
                            size_t n, cm_progress *progress, cm_bound *out, cm_error *err);
 
+/* The caps of polygons already seen in one run: an auto run asks for the
+ * same boundaries more than once (the correspondence it chose, then the
+ * pipeline on it; a second pairing's run on the same input). Entries are
+ * keyed by the polygons' coordinates and the triangulations the finite
+ * element meshes start from, so a hit is the very value a computation
+ * would give. */
+typedef struct cm_bound_memo cm_bound_memo;
+
+/* An empty memo (NULL out of memory: cm_bound_compute_memo then computes
+ * every time). */
+cm_bound_memo *cm_bound_memo_new(void);
+void cm_bound_memo_free(cm_bound_memo *memo);
+
+/* cm_bound_compute, recalled from memo (NULL: none) when the polygons and
+ * their triangulations (tris, or those cm_polygon_triangulate makes when
+ * NULL) were computed before. */
+cm_status cm_bound_compute_memo(cm_bound_memo *memo, const double *const *geoms, const int32_t *const *tris,
+                                size_t k, size_t n, cm_progress *progress, cm_bound *out, cm_error *err);
+
 /* K(alpha): the largest dilatation of an affine map between two triangles
  * whose angles are all at least alpha (radians), vertex to vertex. */
 double cm_bound_dilatation(double alpha);

@@ -42,7 +42,7 @@ static void disk_free(disk *d)
     memset(d, 0, sizeof *d);
 }
 
-static void balance(disk *d);
+static int balance(disk *d);
 
 static cm_status disk_build(const double *input, size_t n, int reversed, disk *d, int *usable, cm_error *err)
 {
@@ -87,7 +87,7 @@ static cm_status disk_build(const double *input, size_t n, int reversed, disk *d
             double total = d->s[nb];
             for (size_t j = 0; j <= nb; j++) d->s[j] /= total;
             d->s[nb] = 1.0, d->theta[nb] = 2 * CM_PI;
-            balance(d);
+            if (balance(d)) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
         }
     }
     free(xy), free(w);
@@ -102,30 +102,39 @@ static cm_status disk_build(const double *input, size_t n, int reversed, disk *d
  * the polygons are similar, whichever interior node each was seen from;
  * by halving steps towards the mean, composed. Angles stay from 0 at
  * vertex 0, non-decreasing. */
-static void balance(disk *d)
+static int balance(disk *d)
 {
     size_t nb = d->nb;
+    /* the nodes on the circle and their weights, the same every step */
+    double complex *at = malloc(nb * sizeof *at);
+    double *weight = malloc(nb * sizeof *weight);
+    if (!at || !weight) {
+        free(at), free(weight);
+        return -1;
+    }
+    for (size_t j = 0; j < nb; j++) {
+        at[j] = cexp(I * d->theta[j]);
+        weight[j] = 0.5 * ((j + 1 < nb ? d->s[j + 1] : 1.0) - (j ? d->s[j - 1] : d->s[nb - 1] - 1.0));
+    }
     double complex a = 0;
     for (int it = 0; it < BALANCE_ITERATIONS; it++) {
         double complex mean = 0;
-        for (size_t j = 0; j < nb; j++) {
-            double complex w = cexp(I * d->theta[j]);
-            double weight = 0.5 * ((j + 1 < nb ? d->s[j + 1] : 1.0) - (j ? d->s[j - 1] : d->s[nb - 1] - 1.0));
-            mean += weight * (w - a) / (1 - conj(a) * w);
-        }
+        for (size_t j = 0; j < nb; j++) mean += weight[j] * (at[j] - a) / (1 - conj(a) * at[j]);
         if (cabs(mean) < BALANCE_TOLERANCE) break;
         double complex b = 0.5 * mean;
         a = (b + a) / (1 + conj(a) * b);
     }
     double prev = 0, first = 0;
     for (size_t j = 0; j < nb; j++) {
-        double complex w = cexp(I * d->theta[j]);
+        double complex w = at[j];
         double t = carg((w - a) / (1 - conj(a) * w));
         if (j == 0) first = t;
         t = j ? prev + fmax(0.0, remainder(t - prev, 2 * CM_PI)) : t;
         d->theta[j] = t - first, prev = t;
     }
     for (size_t j = 1; j < nb; j++) d->theta[j] = fmin(fmax(d->theta[j], d->theta[j - 1]), 2 * CM_PI);
+    free(at), free(weight);
+    return 0;
 }
 
 /* The largest j < len with a[j] <= x (a non-decreasing, a[0] <= x). */
@@ -140,13 +149,32 @@ static size_t below(const double *a, size_t len, double x)
     return lo;
 }
 
+/* The same, sought from *near on (that j, found again when x moves
+ * little: it is unique), which becomes the j found. */
+static size_t below_near(const double *a, size_t len, double x, size_t *near)
+{
+    size_t j = *near;
+    if (j < len && a[j] <= x) {
+        for (int step = 0; step < 8 && j + 1 < len && a[j + 1] <= x; step++) j++;
+        if (j + 1 < len && a[j + 1] <= x) j += below(a + j, len - j, x);
+    } else {
+        j = below(a, len, x);
+    }
+    return *near = j;
+}
+
+/* y at j, x of the piecewise-linear table (xs, ys), j below x. */
+static double lookup_at(const double *xs, const double *ys, size_t j, double x)
+{
+    double dx = xs[j + 1] - xs[j];
+    return dx > 0 ? ys[j] + (x - xs[j]) / dx * (ys[j + 1] - ys[j]) : ys[j];
+}
+
 /* y at x of the piecewise-linear table (xs, ys), len + 1 points, x in
  * [xs[0], xs[len]]. */
 static double lookup(const double *xs, const double *ys, size_t len, double x)
 {
-    size_t j = below(xs, len, x);
-    double dx = xs[j + 1] - xs[j];
-    return dx > 0 ? ys[j] + (x - xs[j]) / dx * (ys[j + 1] - ys[j]) : ys[j];
+    return lookup_at(xs, ys, below(xs, len, x), x);
 }
 
 /* The search's view of one pair: m angles evenly spaced on the circle, as
@@ -165,13 +193,15 @@ typedef struct search {
 static double cost(const search *q, double rho)
 {
     double prev = 0, sum = 0, sum2 = 0;
+    size_t near = 0; /* the points go round: each lands at or after the last */
     for (size_t i = 0; i < q->m; i++) {
         double t = carg(q->w[i] * cexp(-I * rho));
         if (i == 0) t = t < 0 ? t + 2 * CM_PI : t;
         else t = prev + remainder(t - prev, 2 * CM_PI);
         prev = t;
         double turns = floor(t / (2 * CM_PI));
-        double d = turns + lookup(q->g->theta, q->g->s, q->g->nb, t - 2 * CM_PI * turns) - q->s0[i];
+        double x = t - 2 * CM_PI * turns;
+        double d = turns + lookup_at(q->g->theta, q->g->s, below_near(q->g->theta, q->g->nb, x, &near), x) - q->s0[i];
         sum += d, sum2 += d * d;
     }
     double mean = sum / (double)q->m;
@@ -304,5 +334,96 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
     if (s == CM_OK) *found = usable;
     for (size_t g = 0; disks && g < k; g++) disk_free(&disks[g]);
     free(disks), free(w0);
+    return s;
+}
+
+/* ---- memo -------------------------------------------------------------------- */
+
+struct cm_conformal_memo {
+    int held, found;
+    size_t k, total;  /* polygons; their vertices in all */
+    size_t *counts;   /* k */
+    int *orientation; /* k */
+    double *xy;       /* 2 total: the polygons one after another */
+    double *params;   /* total */
+    double *fine;     /* (total - counts[0]) CM_PARAM_FINE: polygons 1 .. k - 1 */
+};
+
+cm_conformal_memo *cm_conformal_memo_new(void) { return calloc(1, sizeof(cm_conformal_memo)); }
+
+static void memo_clear(cm_conformal_memo *memo)
+{
+    free(memo->counts), free(memo->orientation), free(memo->xy), free(memo->params), free(memo->fine);
+    memset(memo, 0, sizeof *memo);
+}
+
+void cm_conformal_memo_free(cm_conformal_memo *memo)
+{
+    if (memo) memo_clear(memo);
+    free(memo);
+}
+
+static int memo_matches(const cm_conformal_memo *memo, const double *const *polygons, const size_t *counts,
+                        size_t k, const int *orientation)
+{
+    if (!memo->held || memo->k != k || memcmp(memo->counts, counts, k * sizeof *counts) ||
+        memcmp(memo->orientation, orientation, k * sizeof *orientation))
+        return 0;
+    for (size_t g = 0, at = 0; g < k; at += counts[g], g++)
+        if (memcmp(memo->xy + 2 * at, polygons[g], 2 * counts[g] * sizeof *memo->xy)) return 0;
+    return 1;
+}
+
+/* Copies between the memo's arrays and the caller's: to the caller when
+ * recall, else into the memo. */
+static void memo_copy(cm_conformal_memo *memo, const double *const *polygons, double *const *params,
+                      double *const *fine, int recall)
+{
+    for (size_t g = 0, at = 0; g < memo->k; at += memo->counts[g], g++) {
+        size_t c = memo->counts[g], fine_at = (at - memo->counts[0]) * CM_PARAM_FINE;
+        double *kept = memo->params + at, *kept_fine = g ? memo->fine + fine_at : NULL;
+        if (!recall) memcpy(memo->xy + 2 * at, polygons[g], 2 * c * sizeof *memo->xy);
+        memcpy(recall ? params[g] : kept, recall ? kept : params[g], c * sizeof *kept);
+        if (g) memcpy(recall ? fine[g] : kept_fine, recall ? kept_fine : fine[g], c * CM_PARAM_FINE * sizeof *kept);
+    }
+}
+
+/* Remembers a call's polygons and result (silently not, out of memory). */
+static void memo_store(cm_conformal_memo *memo, const double *const *polygons, const size_t *counts, size_t k,
+                       const int *orientation, double *const *params, double *const *fine, int found)
+{
+    memo_clear(memo);
+    size_t total = 0;
+    for (size_t g = 0; g < k; g++) total += counts[g];
+    memo->counts = malloc(k * sizeof *memo->counts);
+    memo->orientation = malloc(k * sizeof *memo->orientation);
+    memo->xy = malloc(2 * total * sizeof *memo->xy);
+    memo->params = malloc(total * sizeof *memo->params);
+    memo->fine = malloc(((total - counts[0]) * CM_PARAM_FINE + 1) * sizeof *memo->fine);
+    if (!memo->counts || !memo->orientation || !memo->xy || !memo->params || !memo->fine) {
+        memo_clear(memo);
+        return;
+    }
+    memcpy(memo->counts, counts, k * sizeof *counts);
+    memcpy(memo->orientation, orientation, k * sizeof *orientation);
+    memo->k = k, memo->total = total, memo->found = found;
+    if (found) memo_copy(memo, polygons, params, fine, 0);
+    else
+        for (size_t g = 0, at = 0; g < k; at += counts[g], g++)
+            memcpy(memo->xy + 2 * at, polygons[g], 2 * counts[g] * sizeof *memo->xy);
+    memo->held = 1;
+}
+
+cm_status cm_correspond_conformal_memo(cm_conformal_memo *memo, const double *const *polygons, const size_t *counts,
+                                       size_t k, const int *orientation, double *const *params,
+                                       double *const *fine, int *found, cm_error *err)
+{
+    if (memo && fine && k && memo_matches(memo, polygons, counts, k, orientation)) {
+        *found = memo->found;
+        if (*found) memo_copy(memo, polygons, params, fine, 1);
+        return CM_OK;
+    }
+    cm_status s = cm_correspond_conformal(polygons, counts, k, orientation, params, fine, found, err);
+    if (memo && fine && k && s == CM_OK) memo_store(memo, polygons, counts, k, orientation, params, fine, *found);
     return s;
 }

@@ -45,4 +45,19 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
                                   const int *orientation, double *const *params, double *const *fine, int *found,
                                   cm_error *err);
 
+/* The last conformal correspondence made in one run, recalled when the
+ * same polygons ask again (auto's second pairing reads the same
+ * parameter, only linearly between the vertices). */
+typedef struct cm_conformal_memo cm_conformal_memo;
+/* An empty memo (NULL out of memory: nothing is then recalled). */
+cm_conformal_memo *cm_conformal_memo_new(void);
+void cm_conformal_memo_free(cm_conformal_memo *memo);
+
+/* cm_correspond_conformal, recalled from memo (NULL: none) when the
+ * polygons (coordinates, counts, orientation) are those of its last call
+ * with fine given. */
+cm_status cm_correspond_conformal_memo(cm_conformal_memo *memo, const double *const *polygons, const size_t *counts,
+                                       size_t k, const int *orientation, double *const *params,
+                                       double *const *fine, int *found, cm_error *err);
+
 #endif

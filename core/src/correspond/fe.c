@@ -80,10 +80,11 @@ static int split(cm_fe_mesh *m)
 double cm_fe_tri(const cm_fe_mesh *m, long t, double d[3][2])
 {
     const int32_t *v = m->tri + 3 * t;
-    for (int i = 0; i < 3; i++) {
-        const double *p = m->xy + 2 * v[(i + 1) % 3], *q = m->xy + 2 * v[(i + 2) % 3];
-        d[i][0] = q[0] - p[0], d[i][1] = q[1] - p[1];
-    }
+    const double *a = m->xy + 2 * v[0], *b = m->xy + 2 * v[1], *c = m->xy + 2 * v[2];
+    /* the edge opposite corner i, from corner i + 1 to i + 2 */
+    d[0][0] = c[0] - b[0], d[0][1] = c[1] - b[1];
+    d[1][0] = a[0] - c[0], d[1][1] = a[1] - c[1];
+    d[2][0] = b[0] - a[0], d[2][1] = b[1] - a[1];
     return d[0][0] * d[1][1] - d[0][1] * d[1][0];
 }
 
@@ -271,11 +272,15 @@ long cm_fe_sample_interior(cm_fe_mesh *m, long *sample)
 
 /* The squared distance from p to the polygon (its first n nodes), or, as
  * soon as some edge is no farther than floor, that edge's: a node no
- * deeper than the deepest so far needs no more edges. */
-static double depth2_above(const cm_fe_mesh *m, size_t n, const double *p, double floor)
+ * deeper than the deepest so far needs no more edges. The edges are tried
+ * from *near on (the least of the distances, whatever their order), and
+ * *near becomes the edge that stopped the scan: the next node, most often
+ * a neighbour, is likely near it too. */
+static double depth2_above(const cm_fe_mesh *m, size_t n, const double *p, double floor, size_t *near)
 {
     double dist = INFINITY;
-    for (size_t i = 0; i < n && dist > floor; i++) {
+    for (size_t k = 0, i = *near; k < n && dist > floor; k++, i = i + 1 < n ? i + 1 : 0) {
+        *near = i;
         const double *a = m->xy + 2 * i, *b = m->xy + 2 * (i + 1 < n ? i + 1 : 0);
         double ex = b[0] - a[0], ey = b[1] - a[1], px = p[0] - a[0], py = p[1] - a[1];
         double t = fmin(1.0, fmax(0.0, (px * ex + py * ey) / (ex * ex + ey * ey)));
@@ -289,8 +294,9 @@ long cm_fe_deepest(const cm_fe_mesh *m, size_t n, const long *sample, long ns)
 {
     double best = -1;
     long deepest = sample[0];
+    size_t near = 0;
     for (long j = 0; j < ns; j++) {
-        double d = depth2_above(m, n, m->xy + 2 * sample[j], best);
+        double d = depth2_above(m, n, m->xy + 2 * sample[j], best, &near);
         if (d > best) best = d, deepest = sample[j];
     }
     return deepest;
