@@ -34,8 +34,14 @@
 #include "remesh/maxmin.h"
 #include "remesh/refine.h"
 
-/* Rings of vertices around a move that the polish moves. */
+/* Rings of vertices around a move that the polish moves; the nearest
+ * of them move while their stars' triangles, counted once per star,
+ * number at most CM_PMOVE_TRIS_MAX (a two-ring region of a mesh of
+ * degree 6 counts about 250): beside vertices of high degree (fans in a star
+ * polygon) each try's polish otherwise cost more than the joint polish
+ * (star_n1000: the run took 6 times its CPU). */
 #define CM_PMOVE_RINGS 2
+#define CM_PMOVE_TRIS_MAX 600
 /* L-BFGS iterations per geometry of each local polish. */
 #define CM_PMOVE_ITERATIONS 100
 /* The worst triangles (by slack) a round looks at. */
@@ -61,7 +67,7 @@ typedef struct mover {
 } mover;
 
 /* The vertices within CM_PMOVE_RINGS rings of seeds[0 .. ns) (live
- * ones) into x->ring. 0 or -1 out of memory. */
+ * ones) into x->ring, nearest first. 0 or -1 out of memory. */
 static int rings(mover *x, const int32_t *seeds, int ns)
 {
     cm_kmesh *km = x->km;
@@ -128,7 +134,9 @@ static int polish_ring(mover *x)
         int32_t v = x->ring.a[i];
         if (km->vc[v] < 0 || cm_kmesh_is_boundary(km, v)) continue;
         long m = cm_kmesh_star(km, v, &x->star);
-        if (m < 0 || cm_ibuf_push(&x->var, v)) return -1;
+        if (m < 0) return -1;
+        if (x->tris.n + (size_t)m > CM_PMOVE_TRIS_MAX) continue;
+        if (cm_ibuf_push(&x->var, v)) return -1;
         for (long j = 0; j < m; j++)
             if (cm_ibuf_push(&x->tris, x->star.a[j] / 3)) return -1;
     }
