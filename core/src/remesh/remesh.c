@@ -41,7 +41,12 @@
  * aim, the map-aware one runs on the same construction and the better
  * result is kept; when that is short of it too, its forced moves run
  * again around the CM_STEP_OUT_WIDE worst triangles instead of the
- * CM_STEP_OUT_WORST. */
+ * CM_STEP_OUT_WORST.
+ *
+ * The result written, the joint max-min polish moves its vertices
+ * (maxmin.c); where the worst triangle has reached CM_PMOVE_SHARE of its
+ * aim, moves scored by that polish (polish_moves.c) then change the
+ * connectivity the polish cannot, and the mesh is written again. */
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
