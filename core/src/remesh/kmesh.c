@@ -482,6 +482,25 @@ static int32_t *write_order(const cm_kmesh *km)
     return index;
 }
 
+cm_status cm_kmesh_read_back(cm_kmesh *km, const cm_mesh *m, const int32_t *const *edge, const double *const *t)
+{
+    int32_t *index = write_order(km);
+    if (!index) return CM_ERR_NO_MEMORY;
+    for (int32_t v = 0; v < km->nv; v++) {
+        int32_t i = index[v];
+        if (i < 0) continue;
+        for (size_t g = 0; g < km->k; g++) {
+            memcpy(km->xy[g] + 2 * (size_t)v, m->xy[g] + 2 * (size_t)i, 2 * sizeof(double));
+            if (edge && km->bedge && cm_kmesh_is_boundary(km, v))
+                km->bedge[km->k * (size_t)v + g] = edge[g][i], km->bt[km->k * (size_t)v + g] = t[g][i];
+        }
+    }
+    for (int32_t tr = 0; tr < km->nt; tr++)
+        if (cm_kmesh_tri_live(km, tr)) cm_kmesh_touch(km, tr);
+    free(index);
+    return CM_OK;
+}
+
 cm_status cm_kmesh_write_labels(const cm_kmesh *km, int32_t **edge, double **t)
 {
     int32_t *index = write_order(km);

@@ -128,6 +128,13 @@ cm_status cm_kmesh_write(const cm_kmesh *km, cm_mesh *m);
  * cm_kmesh_write numbers it, km->nb of them. CM_OK or CM_ERR_NO_MEMORY
  * (the arrays unchanged). */
 cm_status cm_kmesh_write_labels(const cm_kmesh *km, int32_t **edge, double **t);
+/* The inverse of cm_kmesh_write for positions: every vertex of km takes
+ * its coordinates from m, the mesh cm_kmesh_write wrote from km and
+ * whose vertices moved since (the joint polish), and with edge != NULL
+ * and boundary splits allowed each boundary vertex its labels (as
+ * cm_kmesh_write_labels numbered them). Every key is recomputed. CM_OK
+ * or CM_ERR_NO_MEMORY. */
+cm_status cm_kmesh_read_back(cm_kmesh *km, const cm_mesh *m, const int32_t *const *edge, const double *const *t);
 void cm_kmesh_free(cm_kmesh *km);
 
 /* Corners at v in counter-clockwise order; for a boundary vertex the first

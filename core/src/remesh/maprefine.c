@@ -152,6 +152,16 @@ static int32_t insert_at(cm_kmesh *km, int32_t t, const double bary[3], double *
     return cm_kmesh_insert(km, t, pts);
 }
 
+int32_t cm_insert_bary(cm_kmesh *km, int32_t t, const double bary[3])
+{
+    if (!cm_kmesh_tri_live(km, t)) return -2;
+    double *pts = malloc(2 * km->k * sizeof *pts);
+    if (!pts) return -1;
+    int32_t m = insert_at(km, t, bary, pts);
+    free(pts);
+    return m;
+}
+
 int32_t cm_mid_insert(cm_kmesh *km, int32_t t)
 {
     double bary[3];

@@ -23,6 +23,10 @@ int cm_mid_circumcentre(const cm_kmesh *km, int32_t t, double bary[3]);
  * at least a small margin) and the three new triangles are valid in all.
  * Returns the vertex, -2 when not, -1 out of memory. */
 int32_t cm_mid_insert(cm_kmesh *km, int32_t t);
+/* Inserts a vertex inside triangle t at the barycentric coordinates bary
+ * in every geometry if the three new triangles are valid in all. Returns
+ * the vertex, -2 when not, -1 out of memory. */
+int32_t cm_insert_bary(cm_kmesh *km, int32_t t, const double bary[3]);
 
 /* Flips edges from `edges` (corners; emptied) while the smaller middle
  * angle of the two triangles rises and the quad is strictly convex in

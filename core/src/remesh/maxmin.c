@@ -264,54 +264,97 @@ static int exactly_valid(soft *s, const lbfgsfloatval_t *x)
     return pieces_short(s);
 }
 
+/* The schedule of L-BFGS runs from the variables' positions (a slid
+ * point's from its label), the best point met kept in s->best_x. 1 if
+ * it is exactly valid and its smallest angle at least `least` (s->pos
+ * then holds its positions), 0 if not, CM_ERR_NO_MEMORY or
+ * CM_ERR_CANCELLED as negative statuses. */
+static int descend(soft *s, const double *xy, double least, int max_iterations)
+{
+    if (!s->nx) return 0;
+    lbfgsfloatval_t *x = lbfgs_malloc((int)s->nx);
+    s->best_x = lbfgs_malloc((int)s->nx);
+    int result = x && s->best_x ? 0 : -CM_ERR_NO_MEMORY;
+    for (size_t j = 0; !result && j < s->nvar; j++) {
+        const double *p = xy + 2 * s->var[j];
+        if (s->edge[j] < 0)
+            x[s->off[j]] = p[0], x[s->off[j] + 1] = p[1];
+        else
+            x[s->off[j]] = s->slide->t[s->g][s->var[j]] * s->along[3 * j];
+    }
+    if (!result) {
+        memcpy(s->best_x, x, s->nx * sizeof *x);
+        s->best = -HUGE_VAL;
+    }
+    for (size_t round = 0; !result && round < sizeof cm_maxmin_tau / sizeof *cm_maxmin_tau; round++) {
+        lbfgs_parameter_t param;
+        lbfgs_parameter_init(&param);
+        param.max_iterations = (int)ceil(cm_maxmin_share[round] * max_iterations);
+        param.linesearch = LBFGS_LINESEARCH_BACKTRACKING;
+        param.epsilon = 1e-9;
+        s->tau = cm_maxmin_tau[round];
+        /* any end is fine: the best point met is what counts */
+        lbfgs((int)s->nx, x, NULL, evaluate, progress, s, &param);
+        if (cm_progress_check(s->progress)) result = -CM_ERR_CANCELLED;
+        memcpy(x, s->best_x, s->nx * sizeof *x);
+    }
+    /* a slid point's start is its label's parameter times a length,
+     * not its exact position: keep nothing worse than the start */
+    if (!result) result = s->best >= least && exactly_valid(s, s->best_x);
+    lbfgs_free(x);
+    return result;
+}
+
 static cm_status polish_geometry(soft *s, size_t g, double *xy, size_t nt, size_t nb, int max_iterations)
 {
     s->xy = xy, s->g = g;
     double least;
     if (choose_moving(s, xy, nt, nb, &least)) return CM_ERR_NO_MEMORY;
-    cm_status status = CM_OK;
-    lbfgsfloatval_t *x = s->nx ? lbfgs_malloc((int)s->nx) : NULL;
-    s->best_x = s->nx ? lbfgs_malloc((int)s->nx) : NULL;
-    if (s->nx && (!x || !s->best_x)) status = CM_ERR_NO_MEMORY;
-    if (status == CM_OK && s->nx) {
+    int better = descend(s, xy, least, max_iterations);
+    if (better > 0)
         for (size_t j = 0; j < s->nvar; j++) {
-            const double *p = xy + 2 * s->var[j];
-            if (s->edge[j] < 0)
-                x[s->off[j]] = p[0], x[s->off[j] + 1] = p[1];
-            else
-                x[s->off[j]] = s->slide->t[g][s->var[j]] * s->along[3 * j];
+            int32_t v = s->var[j];
+            xy[2 * v] = s->pos[2 * j], xy[2 * v + 1] = s->pos[2 * j + 1];
+            double t = s->edge[j] < 0 ? 0 : s->best_x[s->off[j]] / s->along[3 * j];
+            if (s->edge[j] >= 0 && t != s->slide->t[g][v]) s->slide->t[g][v] = t, s->slid++;
         }
-        memcpy(s->best_x, x, s->nx * sizeof *x);
-        s->best = -HUGE_VAL;
-        for (size_t round = 0; round < sizeof cm_maxmin_tau / sizeof *cm_maxmin_tau; round++) {
-            lbfgs_parameter_t param;
-            lbfgs_parameter_init(&param);
-            param.max_iterations = (int)ceil(cm_maxmin_share[round] * max_iterations);
-            param.linesearch = LBFGS_LINESEARCH_BACKTRACKING;
-            param.epsilon = 1e-9;
-            s->tau = cm_maxmin_tau[round];
-            /* any end is fine: the best point met is what counts */
-            lbfgs((int)s->nx, x, NULL, evaluate, progress, s, &param);
-            if (cm_progress_check(s->progress)) {
-                status = CM_ERR_CANCELLED;
-                break;
-            }
-            memcpy(x, s->best_x, s->nx * sizeof *x);
-        }
-        /* a slid point's start is its label's parameter times a length,
-         * not its exact position: keep nothing worse than the start */
-        if (status == CM_OK && s->best >= least && exactly_valid(s, s->best_x))
-            for (size_t j = 0; j < s->nvar; j++) {
-                int32_t v = s->var[j];
-                xy[2 * v] = s->pos[2 * j], xy[2 * v + 1] = s->pos[2 * j + 1];
-                double t = s->edge[j] < 0 ? 0 : s->best_x[s->off[j]] / s->along[3 * j];
-                if (s->edge[j] >= 0 && t != s->slide->t[g][v]) s->slide->t[g][v] = t, s->slid++;
-            }
-    }
     for (size_t j = 0; j < s->nvar; j++) s->slot[s->var[j]] = -1;
-    lbfgs_free(x), lbfgs_free(s->best_x);
+    lbfgs_free(s->best_x);
     s->best_x = NULL;
-    return status;
+    return better < 0 ? (cm_status)-better : CM_OK;
+}
+
+int cm_maxmin_local(const int32_t *tri, const double *xy, size_t nv, const int32_t *var, size_t nvar,
+                    const int32_t *tris, size_t ntris, int max_iterations, cm_progress *progress, double *out)
+{
+    soft s = {.xy = xy, .tri = tri, .progress = progress, .rest = HUGE_VAL};
+    s.slot = malloc(nv * sizeof *s.slot);
+    s.var = malloc(nvar * sizeof *s.var);
+    s.off = malloc(nvar * sizeof *s.off);
+    s.edge = malloc(nvar * sizeof *s.edge);
+    s.pos = malloc(2 * nvar * sizeof *s.pos);
+    s.gpos = malloc(2 * nvar * sizeof *s.gpos);
+    s.moved = malloc(ntris * sizeof *s.moved);
+    s.angle = malloc(3 * ntris * sizeof *s.angle);
+    s.tmin = malloc(ntris * sizeof *s.tmin);
+    s.hot = malloc(ntris * sizeof *s.hot);
+    int result = -CM_ERR_NO_MEMORY;
+    if (s.slot && s.var && s.off && s.edge && s.pos && s.gpos && s.moved && s.angle && s.tmin && s.hot) {
+        for (size_t v = 0; v < nv; v++) s.slot[v] = -1;
+        for (size_t j = 0; j < nvar; j++) add_variable(&s, var[j], 0);
+        double least = HUGE_VAL;
+        for (size_t i = 0; i < ntris; i++) {
+            const int32_t *v = tri + 3 * (size_t)tris[i];
+            s.moved[s.nmoved++] = tris[i];
+            least = fmin(least, cm_triangle_min_angle(xy + 2 * v[0], xy + 2 * v[1], xy + 2 * v[2]));
+        }
+        result = descend(&s, xy, least, max_iterations);
+        if (result > 0) memcpy(out, s.pos, 2 * nvar * sizeof *out);
+        lbfgs_free(s.best_x);
+    }
+    free(s.slot), free(s.var), free(s.off), free(s.edge), free(s.pos), free(s.gpos);
+    free(s.moved), free(s.angle), free(s.tmin), free(s.hot);
+    return result;
 }
 
 static int by_pair(const void *a, const void *b)

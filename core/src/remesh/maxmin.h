@@ -32,4 +32,15 @@ typedef struct cm_maxmin_slide {
 cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, cm_maxmin_slide *slide, int max_iterations,
                            cm_progress *progress);
 
+/* The same ascent on a part of one geometry xy (nv vertices, triangles
+ * tri): the vertices var[0 .. nvar) move at once, everything else stays,
+ * to raise the smallest angle of the triangles tris[0 .. ntris) (indices
+ * into tri; every triangle touching a moving vertex must be listed).
+ * Returns 1 with the new positions in out (2 nvar doubles) when they are
+ * exactly valid (every listed triangle strictly counter-clockwise) and
+ * that smallest angle did not fall; 0 when there is nothing better to
+ * write; -CM_ERR_NO_MEMORY or -CM_ERR_CANCELLED. */
+int cm_maxmin_local(const int32_t *tri, const double *xy, size_t nv, const int32_t *var, size_t nvar,
+                    const int32_t *tris, size_t ntris, int max_iterations, cm_progress *progress, double *out);
+
 #endif

@@ -41,7 +41,12 @@
  * aim, the map-aware one runs on the same construction and the better
  * result is kept; when that is short of it too, its forced moves run
  * again around the CM_STEP_OUT_WIDE worst triangles instead of the
- * CM_STEP_OUT_WORST. */
+ * CM_STEP_OUT_WORST.
+ *
+ * The result written, the joint max-min polish moves its vertices
+ * (maxmin.c); where the worst triangle has reached CM_PMOVE_SHARE of its
+ * aim, moves scored by that polish (polish_moves.c) then change the
+ * connectivity the polish cannot, and the mesh is written again. */
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
@@ -55,6 +60,7 @@
 #include "remesh/mapopt.h"
 #include "remesh/maxmin.h"
 #include "remesh/maprefine.h"
+#include "remesh/polish_moves.h"
 #include "remesh/refine.h"
 #include "remesh/smooth.h"
 #include "base/clock.h"
@@ -110,6 +116,13 @@
 #define CM_FORCED_CLOSE 0.002
 /* L-BFGS iterations per geometry of the joint polish (maxmin.c). */
 #define CM_MAXMIN_ITERATIONS 400
+/* Moves the polish-scored stage may try (polish_moves.c), and the share
+ * of its aim the worst triangle must have reached for the stage to run:
+ * further below, what holds it is the correspondence (index mode's hard
+ * pairs end near 0.4 of it), and 200 tries there cost 60 % more CPU for
+ * about 1 % of angle. */
+#define CM_PMOVE_TRIES 200
+#define CM_PMOVE_SHARE 0.5
 
 typedef struct tabu_set { /* keys (vertex pairs, forced moves) -> counts */
     uint64_t *keys;       /* 0: empty slot */
@@ -872,6 +885,23 @@ static cm_status polish_jointly(cm_mesh *mesh, size_t nb, cm_remesh_boundary *sp
     return s;
 }
 
+/* Moves scored by the polish on the polished result (polish_moves.c):
+ * the kmesh takes the polished positions back, and the mesh is written
+ * again when a move was kept. */
+static cm_status polish_moves(remesher *x, cm_mesh *mesh, size_t n, cm_remesh_boundary *splits)
+{
+    cm_kmesh *km = &x->km;
+    const int32_t *const *edge = splits ? (const int32_t *const *)splits->edge : NULL;
+    const double *const *t = splits ? (const double *const *)splits->t : NULL;
+    if (cm_kmesh_read_back(km, mesh, edge, t)) return CM_ERR_NO_MEMORY;
+    if (cm_kmesh_min_slack(km) < -(1 - CM_PMOVE_SHARE) * x->target) return CM_OK;
+    long kept = cm_polish_moves(km, CM_PMOVE_TRIES, budget_of(x->o, n) - (km->live_v - km->n), x->progress);
+    if (kept < 0) return stop_status(x);
+    if (kept == 0) return CM_OK;
+    cm_status s = splits ? cm_kmesh_write_labels(km, splits->edge, splits->t) : CM_OK;
+    return s == CM_OK ? cm_kmesh_write(km, mesh) : s;
+}
+
 cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, cm_remesh_boundary *splits,
                     cm_progress *progress, cm_remesh_report *rep, cm_error *err)
 {
@@ -905,6 +935,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
     if (s == CM_OK && splits) s = cm_kmesh_write_labels(&x.km, splits->edge, splits->t);
     if (s == CM_OK) s = cm_kmesh_write(&x.km, mesh);
     if (s == CM_OK) s = polish_jointly(mesh, (size_t)x.km.nb, splits, progress);
+    if (s == CM_OK) s = polish_moves(&x, mesh, n, splits);
     if (s == CM_OK && splits) splits->n = (size_t)x.km.nb;
     remesher_free(&x), remesher_free(&y);
     if (s == CM_ERR_INTERNAL) return cm_fail(err, s, "remesh: the construction is not a triangulated disk");

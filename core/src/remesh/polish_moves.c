@@ -1,0 +1,285 @@
+/* Connectivity changes scored by the polish (polish_moves.h).
+ *
+ * After the joint max-min polish (maxmin.c) the worst triangles sit in
+ * sets that hold each other: no motion of the vertices with the
+ * connectivity fixed frees them, and the greedy forced moves (a move,
+ * then one-vertex flips and smoothing) judge a move by a repair too weak
+ * to show what it allows. Here a move near one of the worst triangles (a
+ * flip, an edge split, a Steiner vertex collapsed onto a neighbour, a
+ * vertex inserted at the centroid, or no move at all) is followed by the
+ * polish itself on the Steiner vertices within CM_PMOVE_RINGS rings of
+ * it, in every geometry, and kept only when the smallest slack of the
+ * triangles around it rose (by CM_PMOVE_GAIN) and no triangle of the
+ * whole mesh fell below its smallest angle before the move. Everything
+ * runs as a kmesh transaction: a move undone leaves the mesh exactly as it
+ * was. The moves are checked with the exact predicates (flip.c,
+ * collapse.c, refine.c, maprefine.c) and the polish keeps only exactly
+ * valid positions, so every kept state is valid in every geometry, and
+ * the connectivity is one for all.
+ *
+ * The gains come from the connectivity changes (bench/REMESH.md, "Moves
+ * scored by the polish"): the polish alone near the worst triangle, tried
+ * alone, left the smallest angle where the joint polish had put it;
+ * flips and splits followed by it raised auto's near misses by up to
+ * 25 %. */
+#include "remesh/polish_moves.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "remesh/collapse.h"
+#include "remesh/flip.h"
+#include "remesh/maprefine.h"
+#include "remesh/maxmin.h"
+#include "remesh/refine.h"
+
+/* Rings of vertices around a move that the polish moves; the nearest
+ * of them move while their stars' triangles, counted once per star,
+ * number at most CM_PMOVE_TRIS_MAX (a two-ring region of a mesh of
+ * degree 6 counts about 250): beside vertices of high degree (fans in a star
+ * polygon) each try's polish otherwise cost more than the joint polish
+ * (star_n1000: the run took 6 times its CPU). */
+#define CM_PMOVE_RINGS 2
+#define CM_PMOVE_TRIS_MAX 600
+/* L-BFGS iterations per geometry of each local polish. */
+#define CM_PMOVE_ITERATIONS 100
+/* The worst triangles (by slack) a round looks at. */
+#define CM_PMOVE_WORST 8
+/* The rise of the smallest slack around a move that keeps it (radians);
+ * the polish alone must gain more, about 0.06 degrees: it is kept often
+ * for less, and each kept move lets every undone one run again, so its
+ * small gains took the tries the connectivity changes gain with (tries
+ * were used up on every pair measured). */
+#define CM_PMOVE_GAIN 1e-5
+#define CM_PMOVE_POLISH_GAIN 1e-3
+
+enum pmove { PM_POLISH, PM_FLIP, PM_SPLIT, PM_COLLAPSE, PM_INSERT, PM_KINDS };
+
+typedef struct mover {
+    cm_kmesh *km;
+    cm_progress *progress;
+    cm_ibuf star, ring, var, tris;
+    double *pts;
+    size_t pts_cap;
+    uint64_t *failed; /* moves undone since the last kept one */
+    size_t nfailed, failed_cap;
+} mover;
+
+/* The vertices within CM_PMOVE_RINGS rings of seeds[0 .. ns) (live
+ * ones) into x->ring, nearest first. 0 or -1 out of memory. */
+static int rings(mover *x, const int32_t *seeds, int ns)
+{
+    cm_kmesh *km = x->km;
+    uint32_t stamp = cm_kmesh_new_stamp(km);
+    x->ring.n = 0;
+    for (int i = 0; i < ns; i++)
+        if (seeds[i] >= 0 && km->vc[seeds[i]] >= 0 && km->mark[seeds[i]] != stamp) {
+            km->mark[seeds[i]] = stamp;
+            if (cm_ibuf_push(&x->ring, seeds[i])) return -1;
+        }
+    size_t from = 0;
+    for (int r = 0; r < CM_PMOVE_RINGS; r++) {
+        size_t to = x->ring.n;
+        for (size_t i = from; i < to; i++) {
+            long m = cm_kmesh_star(km, x->ring.a[i], &x->star);
+            if (m < 0) return -1;
+            for (long j = 0; j < m; j++) {
+                int32_t c = x->star.a[j];
+                for (int e = 0; e < 2; e++) {
+                    int32_t w = km->tri[e ? cm_prev(c) : cm_next(c)];
+                    if (km->mark[w] == stamp) continue;
+                    km->mark[w] = stamp;
+                    if (cm_ibuf_push(&x->ring, w)) return -1;
+                }
+            }
+        }
+        from = to;
+    }
+    return 0;
+}
+
+/* The smallest slack and smallest key of the triangles around the ring's
+ * live vertices. 0 or -1 out of memory. */
+static int ring_quality(mover *x, double *slack, double *key)
+{
+    cm_kmesh *km = x->km;
+    *slack = *key = HUGE_VAL;
+    for (size_t i = 0; i < x->ring.n; i++) {
+        int32_t v = x->ring.a[i];
+        if (km->vc[v] < 0) continue;
+        long m = cm_kmesh_star(km, v, &x->star);
+        if (m < 0) return -1;
+        for (long j = 0; j < m; j++) {
+            int32_t t = x->star.a[j] / 3;
+            *slack = fmin(*slack, km->slack[t]), *key = fmin(*key, km->tkey[t]);
+        }
+    }
+    return 0;
+}
+
+static int by_id(const void *a, const void *b)
+{
+    int32_t x = *(const int32_t *)a, y = *(const int32_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* The local polish of the ring's live interior vertices in every
+ * geometry. 0, or -1 out of memory or cancelled. */
+static int polish_ring(mover *x)
+{
+    cm_kmesh *km = x->km;
+    x->var.n = x->tris.n = 0;
+    for (size_t i = 0; i < x->ring.n; i++) {
+        int32_t v = x->ring.a[i];
+        if (km->vc[v] < 0 || cm_kmesh_is_boundary(km, v)) continue;
+        long m = cm_kmesh_star(km, v, &x->star);
+        if (m < 0) return -1;
+        if (x->tris.n + (size_t)m > CM_PMOVE_TRIS_MAX) continue;
+        if (cm_ibuf_push(&x->var, v)) return -1;
+        for (long j = 0; j < m; j++)
+            if (cm_ibuf_push(&x->tris, x->star.a[j] / 3)) return -1;
+    }
+    if (!x->var.n) return 0;
+    qsort(x->tris.a, x->tris.n, sizeof *x->tris.a, by_id);
+    size_t nt = 0;
+    for (size_t i = 0; i < x->tris.n; i++)
+        if (!nt || x->tris.a[nt - 1] != x->tris.a[i]) x->tris.a[nt++] = x->tris.a[i];
+    x->tris.n = nt;
+    void *p = x->pts;
+    if (cm_grow(&p, &x->pts_cap, 2 * x->var.n, sizeof *x->pts)) return -1;
+    x->pts = p;
+    for (size_t g = 0; g < km->k; g++) {
+        int r = cm_maxmin_local(km->tri, km->xy[g], (size_t)km->nv, x->var.a, x->var.n, x->tris.a, x->tris.n,
+                                CM_PMOVE_ITERATIONS, x->progress, x->pts);
+        if (r < 0) return -1;
+        if (r == 0) continue;
+        for (size_t j = 0; j < x->var.n; j++) {
+            if (cm_kmesh_star(km, x->var.a[j], &x->star) < 0) return -1;
+            cm_kmesh_move(km, g, x->var.a[j], x->pts + 2 * j, &x->star);
+        }
+    }
+    return 0;
+}
+
+/* A move as a key: its kind and the vertices it acts on (the edge for a
+ * flip or a split, the directed edge for a collapse, the triangle for
+ * the rest). */
+static uint64_t move_key(const cm_kmesh *km, enum pmove kind, int32_t c)
+{
+    uint64_t a = (uint32_t)km->tri[c], b = (uint32_t)km->tri[cm_next(c)], d = (uint32_t)km->tri[cm_prev(c)];
+    if (kind == PM_FLIP || kind == PM_SPLIT) a = b < d ? b : d, b = b < d ? d : b;
+    else if (kind != PM_COLLAPSE) a = a * 0x9E3779B97F4A7C15ull ^ b * 0xC2B2AE3D27D4EB4Full ^ d, b = 0;
+    return (uint64_t)kind << 60 ^ a << 30 ^ b;
+}
+
+static int failed_before(const mover *x, uint64_t key)
+{
+    for (size_t i = 0; i < x->nfailed; i++)
+        if (x->failed[i] == key) return 1;
+    return 0;
+}
+
+static int remember_failed(mover *x, uint64_t key)
+{
+    void *p = x->failed;
+    if (cm_grow(&p, &x->failed_cap, x->nfailed + 1, sizeof *x->failed)) return -1;
+    x->failed = p;
+    x->failed[x->nfailed++] = key;
+    return 0;
+}
+
+/* One move on corner c (its edge: flip, split; its vertex onto the next:
+ * collapse; its triangle: polish alone, insertion) with the local
+ * polish, as a transaction kept when the ring's smallest slack rose and
+ * no triangle fell below `least` (the whole mesh's smallest angle).
+ * Returns 1 kept, 0 undone or impossible, -1 out of memory or cancelled. */
+static int try_move(mover *x, enum pmove kind, int32_t c, double least)
+{
+    cm_kmesh *km = x->km;
+    int32_t t = c / 3, o = km->opp[c];
+    if ((kind == PM_FLIP || kind == PM_SPLIT) && o < 0) return 0;
+    if (kind == PM_COLLAPSE && cm_kmesh_is_boundary(km, km->tri[c])) return 0;
+    int32_t seeds[4] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)], o >= 0 ? km->tri[o] : -1};
+    double before, after, key;
+    if (rings(x, seeds, 4) || ring_quality(x, &before, &key) || cm_kmesh_tx_begin(km)) return -1;
+    int done = 0;
+    if (kind == PM_POLISH) {
+        done = 1;
+    } else if (kind == PM_FLIP) {
+        done = cm_flip_if_valid(km, c);
+    } else if (kind == PM_COLLAPSE) {
+        done = cm_collapse_try(km, c, &x->star);
+    } else {
+        static const double centroid[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};
+        int32_t m = kind == PM_SPLIT ? cm_refine_split(km, c) : cm_insert_bary(km, t, centroid);
+        done = m >= 0 ? 1 : m == CM_SPLIT_NO_FIT ? 0 : -1;
+        if (m >= 0 && cm_ibuf_push(&x->ring, m)) done = -1;
+    }
+    if (done <= 0) {
+        cm_kmesh_tx_commit(km); /* nothing changed */
+        return done;
+    }
+    if (polish_ring(x) || ring_quality(x, &after, &key)) return cm_kmesh_tx_commit(km), -1;
+    if (after > before + (kind == PM_POLISH ? CM_PMOVE_POLISH_GAIN : CM_PMOVE_GAIN) && key >= least) {
+        cm_kmesh_tx_commit(km);
+        return 1;
+    }
+    return cm_kmesh_tx_rollback(km) ? -1 : 0;
+}
+
+/* The corners of triangle t and of its neighbours (up to 12). */
+static int corners_near(const cm_kmesh *km, int32_t t, int32_t *out)
+{
+    int m = 0;
+    for (int32_t c = 3 * t; c < 3 * t + 3; c++) out[m++] = c;
+    for (int32_t c = 3 * t; c < 3 * t + 3; c++) {
+        int32_t o = km->opp[c];
+        if (o < 0) continue;
+        for (int32_t d = 3 * (o / 3); d < 3 * (o / 3) + 3; d++) out[m++] = d;
+    }
+    return m;
+}
+
+long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_progress *progress)
+{
+    mover x = {.km = km, .progress = progress};
+    int32_t worst[CM_PMOVE_WORST], work[2 * CM_PMOVE_WORST], near[12];
+    long tries = 0, kept = 0;
+    double least = cm_kmesh_min_angle(km);
+    while (tries < max_tries && cm_kmesh_min_slack(km) < 0) {
+        int32_t nw = cm_heap_smallest(&km->tq, CM_PMOVE_WORST, 0.0, worst, work);
+        int gained = 0;
+        for (int32_t i = 0; i < nw && !gained && tries < max_tries; i++) {
+            if (!cm_kmesh_tri_live(km, worst[i])) continue;
+            int m = corners_near(km, worst[i], near);
+            for (int kind = 0; kind < PM_KINDS && !gained && tries < max_tries; kind++) {
+                int adds = kind == PM_SPLIT || kind == PM_INSERT;
+                if (adds && steiner_left <= 0) continue;
+                /* the polish alone and an insertion: on the worst triangle only */
+                int mk = kind == PM_POLISH || kind == PM_INSERT ? 1 : m;
+                for (int j = 0; j < mk && !gained && tries < max_tries; j++) {
+                    if (km->tri[near[j]] < 0) continue;
+                    uint64_t key = move_key(km, (enum pmove)kind, near[j]);
+                    if (failed_before(&x, key)) continue;
+                    int s = try_move(&x, (enum pmove)kind, near[j], least);
+                    tries++;
+                    if (s < 0 || (s == 0 && remember_failed(&x, key))) {
+                        kept = -1;
+                        goto done;
+                    }
+                    if (s > 0) {
+                        gained = 1, kept++, steiner_left -= adds;
+                        x.nfailed = 0;
+                        least = cm_kmesh_min_angle(km);
+                    }
+                }
+            }
+        }
+        if (!gained) break;
+    }
+done:
+    cm_ibuf_free(&x.star), cm_ibuf_free(&x.ring), cm_ibuf_free(&x.var), cm_ibuf_free(&x.tris);
+    free(x.pts), free(x.failed);
+    return kept;
+}

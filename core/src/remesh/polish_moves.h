@@ -1,0 +1,20 @@
+/* Connectivity changes scored by the joint polish: moves near the worst
+ * triangles, each followed by the max-min polish of a small
+ * neighbourhood in every geometry (polish_moves.c says why). */
+#ifndef CM_REMESH_POLISH_MOVES_H
+#define CM_REMESH_POLISH_MOVES_H
+
+#include "base/progress.h"
+#include "remesh/kmesh.h"
+
+/* Tries moves (a polish alone, a flip, a split, a Steiner vertex's
+ * removal, an insertion) around the triangles furthest below their aim,
+ * each with the local polish, keeping one only when the smallest slack of
+ * the triangles around it rose and the smallest angle of the whole mesh
+ * (all geometries) did not fall; every kept state is exactly valid in
+ * every geometry and the connectivity stays shared. At most max_tries
+ * moves; at most steiner_left vertices added. Returns the moves kept, or
+ * -1 out of memory or cancelled (progress says which). */
+long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_progress *progress);
+
+#endif
