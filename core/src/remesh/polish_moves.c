@@ -53,6 +53,10 @@
  * were used up on every pair measured). */
 #define CM_PMOVE_GAIN 1e-5
 #define CM_PMOVE_POLISH_GAIN 1e-3
+/* Tries in a row without a kept move that end the stage: later gains are
+ * rare (the same angles on the pairs that gain, bench/REMESH.md), and a
+ * pair where nothing gains otherwise pays for every try of the budget. */
+#define CM_PMOVE_IDLE 40
 
 enum pmove { PM_POLISH, PM_FLIP, PM_SPLIT, PM_COLLAPSE, PM_INSERT, PM_KINDS };
 
@@ -241,35 +245,40 @@ static int corners_near(const cm_kmesh *km, int32_t t, int32_t *out)
     return m;
 }
 
+static int tries_left(long tries, long idle, long max_tries)
+{
+    return tries < max_tries && idle < CM_PMOVE_IDLE;
+}
+
 long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_progress *progress)
 {
     mover x = {.km = km, .progress = progress};
     int32_t worst[CM_PMOVE_WORST], work[2 * CM_PMOVE_WORST], near[12];
-    long tries = 0, kept = 0;
+    long tries = 0, kept = 0, idle = 0;
     double least = cm_kmesh_min_angle(km);
-    while (tries < max_tries && cm_kmesh_min_slack(km) < 0) {
+    while (tries_left(tries, idle, max_tries) && cm_kmesh_min_slack(km) < 0) {
         int32_t nw = cm_heap_smallest(&km->tq, CM_PMOVE_WORST, 0.0, worst, work);
         int gained = 0;
-        for (int32_t i = 0; i < nw && !gained && tries < max_tries; i++) {
+        for (int32_t i = 0; i < nw && !gained && tries_left(tries, idle, max_tries); i++) {
             if (!cm_kmesh_tri_live(km, worst[i])) continue;
             int m = corners_near(km, worst[i], near);
-            for (int kind = 0; kind < PM_KINDS && !gained && tries < max_tries; kind++) {
+            for (int kind = 0; kind < PM_KINDS && !gained && tries_left(tries, idle, max_tries); kind++) {
                 int adds = kind == PM_SPLIT || kind == PM_INSERT;
                 if (adds && steiner_left <= 0) continue;
                 /* the polish alone and an insertion: on the worst triangle only */
                 int mk = kind == PM_POLISH || kind == PM_INSERT ? 1 : m;
-                for (int j = 0; j < mk && !gained && tries < max_tries; j++) {
+                for (int j = 0; j < mk && !gained && tries_left(tries, idle, max_tries); j++) {
                     if (km->tri[near[j]] < 0) continue;
                     uint64_t key = move_key(km, (enum pmove)kind, near[j]);
                     if (failed_before(&x, key)) continue;
                     int s = try_move(&x, (enum pmove)kind, near[j], least);
-                    tries++;
+                    tries++, idle++;
                     if (s < 0 || (s == 0 && remember_failed(&x, key))) {
                         kept = -1;
                         goto done;
                     }
                     if (s > 0) {
-                        gained = 1, kept++, steiner_left -= adds;
+                        gained = 1, kept++, steiner_left -= adds, idle = 0;
                         x.nfailed = 0;
                         least = cm_kmesh_min_angle(km);
                     }

@@ -13,7 +13,8 @@
  * the triangles around it rose and the smallest angle of the whole mesh
  * (all geometries) did not fall; every kept state is exactly valid in
  * every geometry and the connectivity stays shared. At most max_tries
- * moves; at most steiner_left vertices added. Returns the moves kept, or
+ * moves, ending after CM_PMOVE_IDLE in a row without a kept one; at most
+ * steiner_left vertices added. Returns the moves kept, or
  * -1 out of memory or cancelled (progress says which). */
 long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_progress *progress);
 
