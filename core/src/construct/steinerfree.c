@@ -78,6 +78,8 @@ typedef struct dp {
                          ascending */
     int32_t *out_link, *out_to;
     long row_last;    /* the farthest l the current row's fan chains reach */
+    long fan_bound;   /* the current row: a fan chain costing this or more
+                         serves no fan face that can win (see closers) */
     val *g;           /* per link */
     int32_t *arg;     /* per link: the chain's last vertex before l */
     unsigned char *by;
@@ -357,17 +359,23 @@ static void extend_plain(dp *d, long l, long s, long first)
  * (the root for row 0) whose closing triangle from its fan point is valid,
  * and only up to the vertex before j: the row's fan points are cut to those
  * of its closing links, and its fan chains end before the last of them.
- * The chains read stay the same. Returns that last vertex. */
+ * A link whose G costs 0 closes none (its triangulation stays). G of a
+ * link held now (the memo's while the row is solved) bounds the cost of
+ * the face that wins on it (the values only get better with fan points),
+ * and a fan face costs one more than its chain: a chain costing the most
+ * of those G or more is not read, nor extended (costs only grow). The
+ * chains read stay the same. Returns that last vertex. */
 static long closers(dp *d, long i)
 {
     uint64_t fans = d->fans_now, used = 0;
-    long last = i;
+    long last = i, bound = 0;
     for (long o = d->out_start[i]; fans && o < d->out_start[i + 1]; o++) {
-        uint64_t c = d->rev_ok[d->out_link[o]] & fans;
-        if (c) used |= c, last = d->out_to[o];
+        long t = d->out_link[o];
+        uint64_t c = d->g[t].cost ? d->rev_ok[t] & fans : 0;
+        if (c) used |= c, last = d->out_to[o], bound = d->g[t].cost > bound ? d->g[t].cost : bound;
     }
-    if (i == 0 && (d->root_ok & fans)) used |= d->root_ok & fans, last = d->m - 1;
-    d->fans_now = used;
+    if (i == 0 && (d->root_ok & fans)) used |= d->root_ok & fans, last = d->m - 1, bound = FAR;
+    d->fans_now = used, d->fan_bound = bound;
     return last - 1;
 }
 
@@ -398,8 +406,8 @@ static void extend_fans(dp *d, long l, long s)
         fc->one = has_fan(ones, x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s, d->left[s], l))} : none;
         if (!has_fan(in, x)) fc->more = none, fc->arg = -1;
         finish(fc);
-        best |= (uint64_t)exists(fc->best) << x;
-        more |= (uint64_t)exists(fc->more) << x;
+        best |= (uint64_t)(fc->best.cost < d->fan_bound) << x;
+        more |= (uint64_t)(fc->more.cost < d->fan_bound) << x;
     }
     d->fan_best[l] = best, d->fan_more[l] = more;
     for (long o = d->out_start[l]; best && o < d->out_start[l + 1] && d->out_to[o] <= d->row_last; o++) {
