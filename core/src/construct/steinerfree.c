@@ -303,21 +303,14 @@ static void close_face(const dp *d, long i, long l, long first, long chord, slot
         for (uint64_t b = closing ? closing & d->fwd_ok[s] & d->fan_more[a] : 0; b; b &= b - 1) {
             size_t x = (size_t)cm_lowest_bit(b);
             const chains *fc = fanned(d, x, a);
-            double q = chord >= 0 ? fan_q(d, x, chord, l, i) : d->root_fan[x]; /* on l -> i */
-            offer((val){fc->more.cost + gl.cost + 1, qmin(qmin(fc->more.q, gl.q), qmin(fan_q(d, x, s, a, l), q))},
-                  BY_FAN, (int32_t)a, (int16_t)x, &p);
+            long cost = fc->more.cost + gl.cost + 1;
+            double q = qmin(fc->more.q, gl.q); /* the fan triangles' qualities only lower it */
+            if (!could_win(cost, q, p.value)) continue;
+            double closing_q = chord >= 0 ? fan_q(d, x, chord, l, i) : d->root_fan[x]; /* on l -> i */
+            offer((val){cost, qmin(q, qmin(fan_q(d, x, s, a, l), closing_q))}, BY_FAN, (int32_t)a, (int16_t)x, &p);
         }
     }
     *out.value = p.value, *out.arg = p.arg, *out.by = p.by, *out.fan_of = p.fan_of;
-}
-
-/* Extends the chains of one kind into l: best of one link or more. */
-static inline void extend(chains *c, long a, const chains *prev, val step, int fan)
-{
-    val from = prev->best;
-    if (!exists(from)) return;
-    val v = {from.cost + step.cost + (fan ? 0 : 1), qmin(from.q, step.q)};
-    if (better(v, c->more)) c->more = v, c->arg = (int32_t)a, c->from_more = prev->best_more;
 }
 
 /* The chains into l are done: what extending them starts from. */
@@ -335,8 +328,9 @@ static void extend_plain(dp *d, long l, long s, long first)
 {
     chains *pc = &d->plain[l];
     pc->one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
-    /* extend() for every plain link, the running best kept in locals
-     * (the rows below l are not l: nothing they hold changes here) */
+    /* every plain link extends the best chain into its left end by one
+     * link, the running best kept in locals (the rows below l are not l:
+     * nothing they hold changes here) */
     val mv = {FAR - 1, 0.0}; /* none: every candidate costs less, but those
                                 from a missing chain (FAR or more) */
     int32_t arg = -1;
@@ -415,9 +409,17 @@ static void extend_fans(dp *d, long l, long s)
         for (uint64_t b = best & d->fwd_ok[t] & d->facing[e]; b; b &= b - 1) {
             size_t x = (size_t)cm_lowest_bit(b);
             chains *fc = fanned(d, x, e);
-            if (!has_fan(d->fan_in[e], x)) fc->more = none, fc->arg = -1; /* its first candidate */
-            d->fan_in[e] |= (uint64_t)1 << x;
-            extend(fc, l, fanned(d, x, l), (val){d->g[t].cost, qmin(d->g[t].q, fan_q(d, x, t, l, e))}, 1);
+            const chains *from = fanned(d, x, l);
+            long cost = from->best.cost + d->g[t].cost;
+            double q = qmin(from->best.q, d->g[t].q); /* the fan triangle's quality only lowers it */
+            if (!has_fan(d->fan_in[e], x)) {
+                fc->more = none, fc->arg = -1; /* its first candidate */
+                d->fan_in[e] |= (uint64_t)1 << x;
+            } else if (!could_win(cost, q, fc->more)) {
+                continue;
+            }
+            val v = {cost, qmin(q, fan_q(d, x, t, l, e))};
+            if (better(v, fc->more)) fc->more = v, fc->arg = (int32_t)l, fc->from_more = from->best_more;
         }
     }
 }
