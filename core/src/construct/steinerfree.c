@@ -470,7 +470,9 @@ static void solve(dp *d, long *first, int memo)
                 if (memo && s >= 0 && d->g[s].cost == 0) {
                     /* the memo's G: a decomposition of cost 0 has no fan
                      * face, so both runs find the same of cost 0 */
-                } else if (done + 1 == l || !close_triangle(d, i, l, f, out)) {
+                } else if ((memo && s >= 0) || done + 1 == l || !close_triangle(d, i, l, f, out)) {
+                    /* with a memo, a link here has no triangulation (the
+                     * memo would have found it): no triangle of cost 0 */
                     while (done + 1 < l) extend_done(d, i, ++done, first);
                     close_face(d, i, l, f, s, out);
                 }
