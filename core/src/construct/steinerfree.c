@@ -454,15 +454,14 @@ static void solve(dp *d, long *first, int memo)
     for (long l = 0; l < m; l++) first[l] = d->start[l + 1];
     for (long i = m - 2; i >= 0; i--) {
         long last = d->reach[i], done = i;
+        if (memo && i > 0 && (!d->nfans || !d->row_fans[i])) { /* kept: only first[] moves, over the row's links */
+            for (long o = d->out_start[i]; o < d->out_start[i + 1]; o++) first[d->out_to[o]] = d->out_link[o];
+            continue;
+        }
         d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
-        int keep = memo && i > 0 && (!d->nfans || !d->row_fans[i]);
-        if (!keep && d->nfans) start_fans(d, i, last);
+        if (d->nfans) start_fans(d, i, last);
         for (long l = i + 1; l <= last; l++) {
             long f = first[l], s = f > d->start[l] && d->left[f - 1] == i ? f - 1 : -1;
-            if (keep) {
-                if (s >= 0) first[l] = s;
-                continue;
-            }
             int root = s < 0 && i == 0 && l == m - 1;
             if (l > i + 1 && (s >= 0 || root)) {
                 slot out = s >= 0 ? (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]}
