@@ -460,10 +460,14 @@ static void solve(dp *d, long *first, int memo)
         }
         d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
         if (d->nfans) start_fans(d, i, last);
-        for (long l = i + 1; l <= last; l++) {
-            long f = first[l], s = f > d->start[l] && d->left[f - 1] == i ? f - 1 : -1;
-            int root = s < 0 && i == 0 && l == m - 1;
-            if (l > i + 1 && (s >= 0 || root)) {
+        for (long l = i + 1; l <= last; l++) d->plain[l].one = none; /* set below where (i, l) is a link */
+        /* the row's links by right end (first[l] is just past each), then
+         * for row 0 the root, closed by the edge (m - 1, 0) */
+        for (long o = d->out_start[i]; o <= d->out_start[i + 1]; o++) {
+            int root = o == d->out_start[i + 1];
+            if (root && i > 0) break;
+            long s = root ? -1 : d->out_link[o], l = root ? m - 1 : d->out_to[o], f = first[l];
+            if (l > i + 1) {
                 slot out = s >= 0 ? (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]}
                                   : (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of};
                 if (memo && s >= 0 && d->g[s].cost == 0) {
@@ -476,8 +480,9 @@ static void solve(dp *d, long *first, int memo)
                     close_face(d, i, l, f, s, out);
                 }
             }
-            d->plain[l].one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
-            if (s >= 0) first[l] = s;
+            if (root) break;
+            d->plain[l].one = (val){d->g[s].cost + 1, d->g[s].q};
+            first[l] = s;
         }
     }
 }
