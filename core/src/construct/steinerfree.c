@@ -451,7 +451,9 @@ static void extend_done(dp *d, long i, long l, const long *first)
 static void solve(dp *d, long *first, int memo)
 {
     long m = d->m;
-    for (long l = 0; l < m; l++) first[l] = d->start[l + 1];
+    /* one[] holds none but where a row sets it for its links (close_*
+     * read it, extend_plain sets it again): those are cleared after it */
+    for (long l = 0; l < m; l++) first[l] = d->start[l + 1], d->plain[l].one = none;
     for (long i = m - 2; i >= 0; i--) {
         long last = d->reach[i], done = i;
         if (memo && i > 0 && (!d->nfans || !d->row_fans[i])) { /* kept: only first[] moves, over the row's links */
@@ -460,7 +462,6 @@ static void solve(dp *d, long *first, int memo)
         }
         d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
         if (d->nfans) start_fans(d, i, last);
-        for (long l = i + 1; l <= last; l++) d->plain[l].one = none; /* set below where (i, l) is a link */
         /* the row's links by right end (first[l] is just past each), then
          * for row 0 the root, closed by the edge (m - 1, 0) */
         for (long o = d->out_start[i]; o <= d->out_start[i + 1]; o++) {
@@ -484,6 +485,7 @@ static void solve(dp *d, long *first, int memo)
             d->plain[l].one = (val){d->g[s].cost + 1, d->g[s].q};
             first[l] = s;
         }
+        for (long o = d->out_start[i]; o < d->out_start[i + 1]; o++) d->plain[d->out_to[o]].one = none;
     }
 }
 
