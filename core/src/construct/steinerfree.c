@@ -155,7 +155,7 @@ static int is_link(const dp *d, long a, long b)
 }
 
 /* sin^2 of the smallest angle of the triangle pa, pb, pc. */
-static double quality(const double *pa, const double *pb, const double *pc)
+static inline double quality(const double *pa, const double *pb, const double *pc)
 {
     double ux = pb[0] - pa[0], uy = pb[1] - pa[1], vx = pc[0] - pa[0], vy = pc[1] - pa[1];
     double wx = pc[0] - pb[0], wy = pc[1] - pb[1];
