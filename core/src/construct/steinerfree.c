@@ -165,7 +165,7 @@ static inline double quality(const double *pa, const double *pb, const double *p
 }
 
 /* Worst geometry's quality of triangle (a, b, c). */
-static double triangle_quality(const dp *d, long a, long b, long c)
+static inline double triangle_quality(const dp *d, long a, long b, long c)
 {
     double q = NO_TRIANGLE;
     for (size_t g = 0; g < d->k; g++)
