@@ -320,34 +320,6 @@ static inline void finish(chains *c)
     c->best_more = !better(c->one, c->more);
 }
 
-/* Chains from i to l, given G of the links into l and the row below l;
- * s: the link (i, l) or -1; first: the first link into l from beyond i. A plain chain counts each link once (it adds
- * a face vertex); a fan chain only collects G, the fan face costs 1 in
- * all. */
-static void extend_plain(dp *d, long l, long s, long first)
-{
-    chains *pc = &d->plain[l];
-    pc->one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
-    /* every plain link extends the best chain into its left end by one
-     * link, the running best kept in locals (the rows below l are not l:
-     * nothing they hold changes here) */
-    val mv = {FAR - 1, 0.0}; /* none: every candidate costs less, but those
-                                from a missing chain (FAR or more) */
-    int32_t arg = -1;
-    unsigned char from_more = 0;
-    for (long t = first, end = d->start[l + 1]; t < end; t++) {
-        int32_t a = d->left[t];
-        long cost = d->step_from[a] + d->g[t].cost; /* G of a solved link exists */
-        if (cost > mv.cost) continue;
-        const chains *prev = &d->plain[a];
-        val v = {cost, qmin(prev->best.q, d->g[t].q)};
-        if (better(v, mv)) mv = v, arg = a, from_more = prev->best_more;
-    }
-    pc->more = arg >= 0 ? mv : none, pc->arg = arg;
-    if (arg >= 0) pc->from_more = from_more;
-    finish(pc);
-    d->step_from[l] = exists(pc->best) ? pc->best.cost + 1 : FAR;
-}
 
 /* A fan chain of row i serves only a fan face closed by a link (i, j)
  * (the root for row 0) whose closing triangle from its fan point is valid,
@@ -424,20 +396,49 @@ static void extend_fans(dp *d, long l, long s)
     }
 }
 
-static void extend_chains(dp *d, long l, long s, long first)
+/* The chains from row i into l = lo..hi, once every link into them is
+ * solved: first[l] is the link (i, l) if there is one, else the first link
+ * into l from beyond i. A plain chain counts each link once (it adds a
+ * face vertex); a fan chain only collects G, the fan face costs 1 in all.
+ * The plain chains go first over the whole range (they read no fan
+ * chain), in one call: the arrays stay in registers. */
+static void extend_range(dp *d, long i, long lo, long hi, const long *first)
 {
-    extend_plain(d, l, s, first);
-    /* else fan_best and fan_more stay 0, or are not read (beyond the row's
-     * fan chains' reach) */
-    if (d->nfans && l <= d->row_last) extend_fans(d, l, s);
-}
-
-/* The chains from row i into l, once every link into l is solved: first[l]
- * already moved to the link (i, l) if there is one. */
-static void extend_done(dp *d, long i, long l, const long *first)
-{
-    long f = first[l], s = f < d->start[l + 1] && d->left[f] == i ? f : -1;
-    extend_chains(d, l, s, s >= 0 ? f + 1 : f);
+    chains *plain = d->plain;
+    long *step_from = d->step_from;
+    const val *g = d->g;
+    const int32_t *left = d->left;
+    const long *start = d->start;
+    for (long l = lo; l <= hi; l++) {
+        long f = first[l], end = start[l + 1], s = f < end && left[f] == i ? f : -1;
+        chains *pc = &plain[l];
+        pc->one = s >= 0 ? (val){g[s].cost + 1, g[s].q} : none;
+        /* every plain link extends the best chain into its left end by
+         * one link, the running best kept in locals (the rows below l are
+         * not l: nothing they hold changes here) */
+        val mv = {FAR - 1, 0.0}; /* none: every candidate costs less, but
+                                    those from a missing chain (FAR or more) */
+        int32_t arg = -1;
+        unsigned char from_more = 0;
+        for (long t = s >= 0 ? f + 1 : f; t < end; t++) {
+            int32_t a = left[t];
+            long cost = step_from[a] + g[t].cost; /* G of a solved link exists */
+            if (cost > mv.cost) continue;
+            const chains *prev = &plain[a];
+            val v = {cost, qmin(prev->best.q, g[t].q)};
+            if (better(v, mv)) mv = v, arg = a, from_more = prev->best_more;
+        }
+        pc->more = arg >= 0 ? mv : none, pc->arg = arg;
+        if (arg >= 0) pc->from_more = from_more;
+        finish(pc);
+        step_from[l] = exists(pc->best) ? pc->best.cost + 1 : FAR;
+    }
+    /* beyond the row's fan chains' reach fan_best and fan_more stay 0, or
+     * are not read */
+    for (long l = lo; d->nfans && l <= hi && l <= d->row_last; l++) {
+        long f = first[l];
+        extend_fans(d, l, f < start[l + 1] && left[f] == i ? f : -1);
+    }
 }
 
 /* Rows from the last up. first[l]: the first link into l from beyond the
@@ -477,7 +478,7 @@ static void solve(dp *d, long *first, int memo)
                 } else if ((memo && s >= 0) || done + 1 == l || !close_triangle(d, i, l, f, out)) {
                     /* with a memo, a link here has no triangulation (the
                      * memo would have found it): no triangle of cost 0 */
-                    while (done + 1 < l) extend_done(d, i, ++done, first);
+                    if (done + 1 < l) extend_range(d, i, done + 1, l - 1, first), done = l - 1;
                     close_face(d, i, l, f, s, out);
                 }
             }
@@ -678,12 +679,16 @@ static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 }
 
 /* The face on link (i, j) whose chain ends with link (a, j): its vertices
- * go to the plan, its links to the stack. */
-static void add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link *stack, long *top)
+ * go to the plan, its links to the stack. first: m longs of scratch. */
+static void add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link *stack, long *top, long *first)
 {
     d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
     if (d->nfans) start_fans(d, i, fan >= 0 ? a : i); /* a fan face reads its fan point's chains alone */
-    for (long l = i + 1; l <= a; l++) extend_chains(d, l, find_link(d, i, l), first_after(d, l, i));
+    for (long l = i + 1; l <= a; l++) {
+        long s = find_link(d, i, l);
+        first[l] = s >= 0 ? s : first_after(d, l, i);
+    }
+    extend_range(d, i, i + 1, a, first);
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
     int32_t *f = p->face + p->face_start[p->nf];
@@ -706,7 +711,7 @@ static void add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link
     for (long x = 0; x + 1 < count; x++) push_link(stack, top, f[x], f[x + 1]);
 }
 
-static int read_plan(dp *d, cm_sf_plan *p)
+static int read_plan(dp *d, cm_sf_plan *p, long *first)
 {
     long m = d->m;
     p->tri = take(d->work, W_TRI, 3 * (size_t)m, sizeof *p->tri, 0);
@@ -735,7 +740,7 @@ static int read_plan(dp *d, cm_sf_plan *p)
             plan_add_triangle(p, l.a, a, l.b);
             push_link(stack, &top, l.a, a), push_link(stack, &top, a, l.b);
         } else {
-            add_face(d, p, l.a, a, l.b, by == BY_FAN ? fan : -1, stack, &top);
+            add_face(d, p, l.a, a, l.b, by == BY_FAN ? fan : -1, stack, &top, first);
         }
     }
     if (!d->work) free(stack);
@@ -814,7 +819,7 @@ static int run(dp *d, int memo, cm_sf_plan *plan)
         plan->cost = d->root.cost;
         double q = qmin(d->root.q, 1.0);
         plan->min_angle_deg = d->root.q >= NO_TRIANGLE ? 180.0 : asin(sqrt(q)) * 180.0 / 3.14159265358979323846;
-        status = read_plan(d, plan);
+        status = read_plan(d, plan, first); /* first[] done with: add_face's scratch */
     }
     free(first);
     if (d->work) {
