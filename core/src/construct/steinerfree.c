@@ -357,41 +357,47 @@ static void start_fans(dp *d, long i, long last)
     for (long l = i + 1; l <= d->row_last; l++) d->fan_in[l] = 0;
 }
 
-static void extend_fans(dp *d, long l, long s)
+static void extend_fans(dp *d, long i, long lo, long hi, const long *first)
 {
-    uint64_t fans = d->fans_now & d->facing[l];
-    uint64_t in = d->fan_in[l] & fans, ones = s >= 0 ? d->fwd_ok[s] & fans : 0;
-    if (!(in | ones)) { /* no fan chain into l: none goes on from it */
-        d->fan_best[l] = d->fan_more[l] = 0;
-        return;
-    }
-    uint64_t best = 0, more = 0;
-    for (uint64_t b = in | ones; b; b &= b - 1) { /* the other fan points have no chain into l */
-        size_t x = (size_t)cm_lowest_bit(b);
-        chains *fc = fanned(d, x, l);
-        fc->one = has_fan(ones, x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s, d->left[s], l))} : none;
-        if (!has_fan(in, x)) fc->more = none, fc->arg = -1;
-        finish(fc);
-        best |= (uint64_t)(fc->best.cost < d->fan_bound) << x;
-        more |= (uint64_t)(fc->more.cost < d->fan_bound) << x;
-    }
-    d->fan_best[l] = best, d->fan_more[l] = more;
-    for (long o = d->out_start[l]; best && o < d->out_start[l + 1] && d->out_to[o] <= d->row_last; o++) {
-        long t = d->out_link[o], e = d->out_to[o];
-        for (uint64_t b = best & d->fwd_ok[t] & d->facing[e]; b; b &= b - 1) {
+    const val *g = d->g;
+    const uint64_t *fwd_ok = d->fwd_ok, *facing = d->facing;
+    uint64_t *fan_in = d->fan_in;
+    for (long l = lo; l <= hi && l <= d->row_last; l++) {
+        long f = first[l], s = f < d->start[l + 1] && d->left[f] == i ? f : -1;
+        uint64_t fans = d->fans_now & facing[l];
+        uint64_t in = fan_in[l] & fans, ones = s >= 0 ? fwd_ok[s] & fans : 0;
+        if (!(in | ones)) { /* no fan chain into l: none goes on from it */
+            d->fan_best[l] = d->fan_more[l] = 0;
+            continue;
+        }
+        uint64_t best = 0, more = 0;
+        for (uint64_t b = in | ones; b; b &= b - 1) { /* the other fan points have no chain into l */
             size_t x = (size_t)cm_lowest_bit(b);
-            chains *fc = fanned(d, x, e);
-            const chains *from = fanned(d, x, l);
-            long cost = from->best.cost + d->g[t].cost;
-            double q = qmin(from->best.q, d->g[t].q); /* the fan triangle's quality only lowers it */
-            if (!has_fan(d->fan_in[e], x)) {
-                fc->more = none, fc->arg = -1; /* its first candidate */
-                d->fan_in[e] |= (uint64_t)1 << x;
-            } else if (!could_win(cost, q, fc->more)) {
-                continue;
+            chains *fc = fanned(d, x, l);
+            fc->one = has_fan(ones, x) ? (val){g[s].cost, qmin(g[s].q, fan_q(d, x, s, i, l))} : none;
+            if (!has_fan(in, x)) fc->more = none, fc->arg = -1;
+            finish(fc);
+            best |= (uint64_t)(fc->best.cost < d->fan_bound) << x;
+            more |= (uint64_t)(fc->more.cost < d->fan_bound) << x;
+        }
+        d->fan_best[l] = best, d->fan_more[l] = more;
+        for (long o = d->out_start[l]; best && o < d->out_start[l + 1] && d->out_to[o] <= d->row_last; o++) {
+            long t = d->out_link[o], e = d->out_to[o];
+            for (uint64_t b = best & fwd_ok[t] & facing[e]; b; b &= b - 1) {
+                size_t x = (size_t)cm_lowest_bit(b);
+                chains *fc = fanned(d, x, e);
+                const chains *from = fanned(d, x, l);
+                long cost = from->best.cost + g[t].cost;
+                double q = qmin(from->best.q, g[t].q); /* the fan triangle's quality only lowers it */
+                if (!has_fan(fan_in[e], x)) {
+                    fc->more = none, fc->arg = -1; /* its first candidate */
+                    fan_in[e] |= (uint64_t)1 << x;
+                } else if (!could_win(cost, q, fc->more)) {
+                    continue;
+                }
+                val v = {cost, qmin(q, fan_q(d, x, t, l, e))};
+                if (better(v, fc->more)) fc->more = v, fc->arg = (int32_t)l, fc->from_more = from->best_more;
             }
-            val v = {cost, qmin(q, fan_q(d, x, t, l, e))};
-            if (better(v, fc->more)) fc->more = v, fc->arg = (int32_t)l, fc->from_more = from->best_more;
         }
     }
 }
@@ -435,10 +441,7 @@ static void extend_range(dp *d, long i, long lo, long hi, const long *first)
     }
     /* beyond the row's fan chains' reach fan_best and fan_more stay 0, or
      * are not read */
-    for (long l = lo; d->nfans && l <= hi && l <= d->row_last; l++) {
-        long f = first[l];
-        extend_fans(d, l, f < start[l + 1] && left[f] == i ? f : -1);
-    }
+    if (d->nfans) extend_fans(d, i, lo, hi, first);
 }
 
 /* Rows from the last up. first[l]: the first link into l from beyond the
