@@ -56,8 +56,11 @@ static inline int pocket_wanted(const vis_ctx *c, int32_t r, int32_t l)
 
 static const int next3[3] = {1, 2, 0}, prev3[3] = {2, 0, 1};
 
-static void propagate(const vis_ctx *c, long s, unsigned char *row, long top)
+static void propagate(const vis_ctx *ctx, long s, unsigned char *row, long top)
 {
+    /* a copy: the marks written to row (bytes) could otherwise be the
+     * context's fields for the compiler, read again after each */
+    const vis_ctx cv = *ctx, *c = &cv;
     while (top > 0) {
         crossing x = c->stack[--top];
         long base = x.tz - x.tz % 3, iz = x.tz - base;
@@ -87,8 +90,9 @@ static void propagate(const vis_ctx *c, long s, unsigned char *row, long top)
 }
 
 /* Walks the fan of s counter-clockwise from the triangle holding s -> s+1. */
-static void visible_from(const vis_ctx *c, long s, unsigned char *row)
+static void visible_from(const vis_ctx *ctx, long s, unsigned char *row)
 {
+    const vis_ctx cv = *ctx, *c = &cv; /* as in propagate */
     long top = 0;
     long slot = c->first[s];
     while (slot >= 0) {
