@@ -50,8 +50,10 @@ typedef struct chains {
     val one, more;   /* exactly one link; two or more */
     val best;        /* best_of(one, more), once l is done */
     int32_t arg;     /* for `more`: the vertex before l */
-    unsigned char from_more; /* `more` extends a chain of two or more */
-    unsigned char best_more; /* a chain extending this one extends `more` */
+    /* flags as int, not char: a char store could be any object for the
+     * compiler, the hot loops' arrays and bounds would be read again */
+    int from_more; /* `more` extends a chain of two or more */
+    int best_more; /* a chain extending this one extends `more` */
 } chains;
 
 /* The arrays a run without fan points takes from a workspace. */
@@ -425,7 +427,7 @@ static void extend_range(dp *d, long i, long lo, long hi, const long *first)
         val mv = {FAR - 1, 0.0}; /* none: every candidate costs less, but
                                     those from a missing chain (FAR or more) */
         int32_t arg = -1;
-        unsigned char from_more = 0;
+        int from_more = 0;
         for (long t = s >= 0 ? f + 1 : f; t < end; t++) {
             int32_t a = left[t];
             long cost = step_from[a] + g[t].cost; /* G of a solved link exists */
