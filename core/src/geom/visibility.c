@@ -42,13 +42,13 @@ static int adjacent(long m, long s, long v)
 
 /* Is a wanted vertex strictly between r and l on the chain r, r+1, ..., l
  * (cyclic)? That chain is the pocket beyond the edge from r to l: the only
- * vertices a cone crossing that edge can reach. */
+ * vertices a cone crossing that edge can reach. r and l end a diagonal
+ * (the walk crosses no polygon edge): the chain holds a vertex. */
 static inline int pocket_wanted(const vis_ctx *c, int32_t r, int32_t l)
 {
-    if (!c->want) { /* a wanted vertex: one of lo..m-1 */
-        if (c->lo == 0) return 1;
-        if (r < l) return l - 1 >= (r + 1 > c->lo ? r + 1 : c->lo);
-        return c->m - 1 >= (r + 1 > c->lo ? r + 1 : c->lo) || l - 1 >= c->lo;
+    if (!c->want) { /* a wanted vertex: one of lo..m-1; r < l: l >= r + 2 */
+        if (r < l) return l > c->lo;
+        return (r < c->m - 1 && c->lo < c->m) || l > c->lo; /* r + 1..m - 1, then 0..l - 1 */
     }
     if (r < l) return c->want[l] > c->want[r + 1];
     return c->want[c->m] > c->want[r + 1] || c->want[l] > 0;
