@@ -365,7 +365,7 @@ static void extend_fans(dp *d, long i, long lo, long hi, const long *first)
     const uint64_t *fwd_ok = d->fwd_ok, *facing = d->facing;
     uint64_t *fan_in = d->fan_in;
     for (long l = lo; l <= hi && l <= d->row_last; l++) {
-        long f = first[l], s = f < d->start[l + 1] && d->left[f] == i ? f : -1;
+        long f = first[l], s = exists(d->plain[l].one) ? f : -1;
         uint64_t fans = d->fans_now & facing[l];
         uint64_t in = fan_in[l] & fans, ones = s >= 0 ? fwd_ok[s] & fans : 0;
         if (!(in | ones)) { /* no fan chain into l: none goes on from it */
@@ -406,7 +406,8 @@ static void extend_fans(dp *d, long i, long lo, long hi, const long *first)
 
 /* The chains from row i into l = lo..hi, once every link into them is
  * solved: first[l] is the link (i, l) if there is one, else the first link
- * into l from beyond i. A plain chain counts each link once (it adds a
+ * into l from beyond i; plain[l].one is set (none where (i, l) is not a
+ * link: it tells which). A plain chain counts each link once (it adds a
  * face vertex); a fan chain only collects G, the fan face costs 1 in all.
  * The plain chains go first over the whole range (they read no fan
  * chain), in one call: the arrays stay in registers. */
@@ -418,9 +419,8 @@ static void extend_range(dp *d, long i, long lo, long hi, const long *first)
     const int32_t *left = d->left;
     const long *start = d->start;
     for (long l = lo; l <= hi; l++) {
-        long f = first[l], end = start[l + 1], s = f < end && left[f] == i ? f : -1;
+        long f = first[l], end = start[l + 1];
         chains *pc = &plain[l];
-        pc->one = s >= 0 ? (val){g[s].cost + 1, g[s].q} : none;
         /* every plain link extends the best chain into its left end by
          * one link, the running best kept in locals (the rows below l are
          * not l: nothing they hold changes here) */
@@ -428,7 +428,7 @@ static void extend_range(dp *d, long i, long lo, long hi, const long *first)
                                     those from a missing chain (FAR or more) */
         int32_t arg = -1;
         int from_more = 0;
-        for (long t = s >= 0 ? f + 1 : f; t < end; t++) {
+        for (long t = exists(pc->one) ? f + 1 : f; t < end; t++) {
             int32_t a = left[t];
             long cost = step_from[a] + g[t].cost; /* G of a solved link exists */
             if (cost > mv.cost) continue;
@@ -692,6 +692,7 @@ static void add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link
     for (long l = i + 1; l <= a; l++) {
         long s = find_link(d, i, l);
         first[l] = s >= 0 ? s : first_after(d, l, i);
+        d->plain[l].one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
     }
     extend_range(d, i, i + 1, a, first);
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
