@@ -175,13 +175,20 @@ static inline double triangle_quality(const dp *d, long a, long b, long c)
     return q;
 }
 
+/* The orientation of a, b, c: the fan tests' points (fan points and
+ * vertices) all tame, the filter need not check its differences. */
+static inline int orient(const dp *d, const double *a, const double *b, const double *c)
+{
+    return d->tame ? cm_orient2d_tame(a, b, c) : cm_orient2d(a, b, c);
+}
+
 /* Is the triangle from fan point x on the directed edge a -> b valid in
  * every geometry? */
 static int fan_valid(const dp *d, size_t x, long a, long b)
 {
     for (size_t g = 0; g < d->k; g++) {
         const double *pa = d->xy[g] + 2 * a, *pb = d->xy[g] + 2 * b, *px = d->fans + 2 * (x * d->k + g);
-        if ((d->tame ? cm_orient2d_tame(pa, pb, px) : cm_orient2d(pa, pb, px)) <= 0) return 0;
+        if (orient(d, pa, pb, px) <= 0) return 0;
     }
     return 1;
 }
@@ -498,10 +505,10 @@ static void solve(dp *d, long *first, int memo)
 /* Does the ray from x towards +x cross the segment p q? Half-open in y
  * with the exact orientation: the parity of the crossings with a closed
  * polyline is exact for every x off it. */
-static int ray_crosses(const double *p, const double *q, const double *x)
+static int ray_crosses(const dp *d, const double *p, const double *q, const double *x)
 {
     if ((p[1] > x[1]) == (q[1] > x[1])) return 0;
-    int o = cm_orient2d(p, q, x);
+    int o = orient(d, p, q, x);
     return q[1] > p[1] ? o > 0 : o < 0;
 }
 
@@ -516,7 +523,7 @@ static uint64_t fans_inside(const dp *d, const uint64_t *parity, long a, long b,
     const double *pa = d->xy[0] + 2 * a, *pb = d->xy[0] + 2 * b;
     for (uint64_t w = which; w; w &= w - 1) {
         int x = cm_lowest_bit(w);
-        in ^= (uint64_t)ray_crosses(pb, pa, d->fans + 2 * (size_t)x * d->k) << x;
+        in ^= (uint64_t)ray_crosses(d, pb, pa, d->fans + 2 * (size_t)x * d->k) << x;
     }
     return in & which;
 }
@@ -626,7 +633,7 @@ static int build_fans(dp *d)
         const double *f0 = d->fans + 2 * x * d->k;
         uint64_t odd = 0;
         for (long v = 0; v + 1 < m; v++) {
-            odd ^= (uint64_t)ray_crosses(d->xy[0] + 2 * v, d->xy[0] + 2 * v + 2, f0);
+            odd ^= (uint64_t)ray_crosses(d, d->xy[0] + 2 * v, d->xy[0] + 2 * v + 2, f0);
             parity[v + 1] |= odd << x;
         }
     }
@@ -636,10 +643,10 @@ static int build_fans(dp *d)
         for (size_t g = 0; g < d->k; g++) {
             const double *p = d->xy[g] + 2 * (v > 0 ? v - 1 : m - 1), *q = d->xy[g] + 2 * v;
             const double *r = d->xy[g] + 2 * (v + 1 < m ? v + 1 : 0);
-            if (cm_orient2d(p, q, r) <= 0) continue;
+            if (orient(d, p, q, r) <= 0) continue;
             for (size_t x = 0; x < d->nfans; x++) {
                 const double *fx = d->fans + 2 * (x * d->k + g);
-                if (cm_orient2d(p, q, fx) <= 0 || cm_orient2d(q, r, fx) <= 0) d->facing[v] &= ~((uint64_t)1 << x);
+                if (orient(d, p, q, fx) <= 0 || orient(d, q, r, fx) <= 0) d->facing[v] &= ~((uint64_t)1 << x);
             }
         }
     }
