@@ -575,8 +575,10 @@ static int strictly_below(const double a[2], const double b[2], const double c[2
     return a[x] < c[x] && a[x] < d[x] && b[x] < c[x] && b[x] < d[x];
 }
 
-int cm_segments_intersect(const double a[2], const double b[2],
-                          const double c[2], const double d[2])
+/* tame: the four points tame (cm_coords_tame), the filter need not check
+ * its differences. */
+static inline int segments_intersect(const double a[2], const double b[2], const double c[2], const double d[2],
+                                     int tame)
 {
     /* Most segment pairs a polygon scan meets are far apart: disjoint
      * bounding boxes settle them without a predicate. */
@@ -585,9 +587,11 @@ int cm_segments_intersect(const double a[2], const double b[2],
         return 0;
     /* c and d strictly on one side of line ab (or a and b of line cd):
      * no common point, whatever the other two tests say. */
-    int abc = cm_orient2d(a, b, c), abd = cm_orient2d(a, b, d);
+    int abc = tame ? cm_orient2d_tame(a, b, c) : cm_orient2d(a, b, c);
+    int abd = tame ? cm_orient2d_tame(a, b, d) : cm_orient2d(a, b, d);
     if (abc * abd > 0) return 0;
-    int cda = cm_orient2d(c, d, a), cdb = cm_orient2d(c, d, b);
+    int cda = tame ? cm_orient2d_tame(c, d, a) : cm_orient2d(c, d, a);
+    int cdb = tame ? cm_orient2d_tame(c, d, b) : cm_orient2d(c, d, b);
     if (cda * cdb > 0) return 0;
     if (abc * abd < 0 && cda * cdb < 0) return 1;
     if ((abc == 0 && between_collinear(a, b, c)) ||
@@ -596,6 +600,17 @@ int cm_segments_intersect(const double a[2], const double b[2],
         (cdb == 0 && between_collinear(c, d, b)))
         return 2;
     return 0;
+}
+
+int cm_segments_intersect(const double a[2], const double b[2],
+                          const double c[2], const double d[2])
+{
+    return segments_intersect(a, b, c, d, 0);
+}
+
+int cm_segments_intersect_tame(const double a[2], const double b[2], const double c[2], const double d[2])
+{
+    return segments_intersect(a, b, c, d, 1);
 }
 
 /* ---- polygon orientation --------------------------------------------------- */

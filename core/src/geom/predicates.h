@@ -118,6 +118,8 @@ int cm_incircle(const double a[2], const double b[2], const double c[2],
  * other segment, or collinear overlap). */
 int cm_segments_intersect(const double a[2], const double b[2],
                           const double c[2], const double d[2]);
+/* The same for tame points (cm_coords_tame). */
+int cm_segments_intersect_tame(const double a[2], const double b[2], const double c[2], const double d[2]);
 
 /* Sign of the signed area of the closed polygon xy[0..n-1] (exact). */
 int cm_polygon_orientation(const double *xy, long n);

@@ -185,26 +185,35 @@ int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned c
 
 /* ---- the exact segment test ---------------------------------------------- */
 
-/* The sign of the turn at vertex i (the orientation of its corner). */
-static int vertex_turn(const double *xy, long m, long i)
+/* The orientation of a, b, c; tame: the points tame (cm_coords_tame), the
+ * filter need not check its differences. */
+static inline int orient(int tame, const double a[2], const double b[2], const double c[2])
 {
-    return cm_orient2d(xy + 2 * (i > 0 ? i - 1 : m - 1), xy + 2 * i, xy + 2 * (i + 1 < m ? i + 1 : 0));
+    return tame ? cm_orient2d_tame(a, b, c) : cm_orient2d(a, b, c);
 }
 
-void cm_vertex_turns(const double *xy, long m, signed char *turn)
+/* The sign of the turn at vertex i (the orientation of its corner). */
+static int vertex_turn(const double *xy, long m, long i, int tame)
 {
-    for (long i = 0; i < m; i++) turn[i] = (signed char)vertex_turn(xy, m, i);
+    return orient(tame, xy + 2 * (i > 0 ? i - 1 : m - 1), xy + 2 * i, xy + 2 * (i + 1 < m ? i + 1 : 0));
+}
+
+int cm_vertex_turns(const double *xy, long m, signed char *turn)
+{
+    int tame = cm_coords_tame(xy, 2 * m);
+    for (long i = 0; i < m; i++) turn[i] = (signed char)vertex_turn(xy, m, i, tame);
+    return tame;
 }
 
 /* Does the direction from vertex i, whose turn is `turn`, toward point q
  * leave into the interior? */
-static int leaves_inward(const double *xy, long m, long i, int turn, const double q[2])
+static int leaves_inward(const double *xy, long m, long i, int turn, const double q[2], int tame)
 {
     const double *p = xy + 2 * (i > 0 ? i - 1 : m - 1), *v = xy + 2 * i, *n = xy + 2 * (i + 1 < m ? i + 1 : 0);
-    int left_of_in = cm_orient2d(p, v, q) > 0;
+    int left_of_in = orient(tame, p, v, q) > 0;
     /* the second side only where it can change the answer */
-    if (turn > 0) return left_of_in && cm_orient2d(v, n, q) > 0;
-    if (turn < 0) return left_of_in || cm_orient2d(v, n, q) > 0;
+    if (turn > 0) return left_of_in && orient(tame, v, n, q) > 0;
+    if (turn < 0) return left_of_in || orient(tame, v, n, q) > 0;
     return left_of_in;
 }
 
@@ -217,9 +226,9 @@ static int same_direction(const double a[2], const double b[2], const double w[2
 
 /* The polygon edge from a (a vertex, an end of segment ab) to w may meet
  * ab only at a. */
-static int edge_touches_only_at_end(const double a[2], const double b[2], const double w[2])
+static int edge_touches_only_at_end(const double a[2], const double b[2], const double w[2], int tame)
 {
-    return cm_orient2d(a, b, w) != 0 || !same_direction(a, b, w);
+    return orient(tame, a, b, w) != 0 || !same_direction(a, b, w);
 }
 
 /* The constant-time conditions of cm_segment_inside: distinct ends, not a
@@ -229,19 +238,19 @@ static int edge_touches_only_at_end(const double a[2], const double b[2], const 
  * neighbours strictly to one side, so neither edge at that end can
  * overlap it. */
 static int ends_inward(const double *xy, long m, const signed char *turn, long ia, const double a[2], long ib,
-                       const double b[2], int *convex)
+                       const double b[2], int *convex, int tame)
 {
     *convex = 0;
     if (a[0] == b[0] && a[1] == b[1]) return 0;
     if (ia >= 0 && ib >= 0 && adjacent(m, ia, ib)) return 0;
     if (ia >= 0) {
-        int t = turn ? turn[ia] : vertex_turn(xy, m, ia);
-        if (!leaves_inward(xy, m, ia, t, b)) return 0;
+        int t = turn ? turn[ia] : vertex_turn(xy, m, ia, tame);
+        if (!leaves_inward(xy, m, ia, t, b, tame)) return 0;
         *convex |= t > 0;
     }
     if (ib >= 0) {
-        int t = turn ? turn[ib] : vertex_turn(xy, m, ib);
-        if (!leaves_inward(xy, m, ib, t, a)) return 0;
+        int t = turn ? turn[ib] : vertex_turn(xy, m, ib, tame);
+        if (!leaves_inward(xy, m, ib, t, a, tame)) return 0;
         *convex |= (t > 0) << 1;
     }
     return 1;
@@ -252,7 +261,7 @@ static int ends_inward(const double *xy, long m, const signed char *turn, long i
  * touching it only there? convex as from ends_inward: those ends' edges
  * need no test. */
 static int edges_clear(const double *xy, long m, long ia, const double a[2], long ib, const double b[2],
-                       long first, long count, int convex)
+                       long first, long count, int convex, int tame)
 {
     /* ab's box: edges entirely to one side of it cannot meet ab (exact
      * comparisons, the test cm_segments_intersect starts with, here
@@ -264,17 +273,17 @@ static int edges_clear(const double *xy, long m, long ia, const double a[2], lon
         long j = i + 1 < m ? i + 1 : 0;
         const double *e0 = xy + 2 * i, *e1 = xy + 2 * j;
         if (ia == i || ia == j) {
-            if (!(convex & 1) && !edge_touches_only_at_end(a, b, ia == i ? e1 : e0)) return 0;
+            if (!(convex & 1) && !edge_touches_only_at_end(a, b, ia == i ? e1 : e0, tame)) return 0;
             continue;
         }
         if (ib == i || ib == j) {
-            if (!(convex & 2) && !edge_touches_only_at_end(b, a, ib == i ? e1 : e0)) return 0;
+            if (!(convex & 2) && !edge_touches_only_at_end(b, a, ib == i ? e1 : e0, tame)) return 0;
             continue;
         }
         if (boxed && ((e0[0] < lo[0] && e1[0] < lo[0]) || (e0[0] > hi[0] && e1[0] > hi[0]) ||
                       (e0[1] < lo[1] && e1[1] < lo[1]) || (e0[1] > hi[1] && e1[1] > hi[1])))
             continue;
-        if (cm_segments_intersect(a, b, e0, e1) != 0) return 0;
+        if ((tame ? cm_segments_intersect_tame(a, b, e0, e1) : cm_segments_intersect(a, b, e0, e1)) != 0) return 0;
     }
     return 1;
 }
@@ -285,7 +294,7 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
     /* the constant-time conditions first: a segment leaving outward needs
      * no scan */
     int convex;
-    if (!ends_inward(xy, m, NULL, ia, a, ib, b, &convex) || !edges_clear(xy, m, ia, a, ib, b, 0, m, convex))
+    if (!ends_inward(xy, m, NULL, ia, a, ib, b, &convex, 0) || !edges_clear(xy, m, ia, a, ib, b, 0, m, convex, 0))
         return 0;
     if (ia < 0 && ib < 0) {
         /* No contact with the boundary: inside iff a is inside. */
@@ -301,12 +310,13 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
     return 1;
 }
 
-int cm_segment_inside_edges(const double *xy, long m, const signed char *turn, long ia, long ib, long first,
-                            long count)
+int cm_segment_inside_edges(const double *xy, long m, const signed char *turn, int tame, long ia, long ib,
+                            long first, long count)
 {
     const double *a = xy + 2 * ia, *b = xy + 2 * ib;
     int convex;
-    return ends_inward(xy, m, turn, ia, a, ib, b, &convex) && edges_clear(xy, m, ia, a, ib, b, first, count, convex);
+    return ends_inward(xy, m, turn, ia, a, ib, b, &convex, tame) &&
+           edges_clear(xy, m, ia, a, ib, b, first, count, convex, tame);
 }
 
 /* ---- the kernel ----------------------------------------------------------- */
