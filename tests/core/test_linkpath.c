@@ -174,6 +174,8 @@ static void test_segment_inside_edges(void)
                 if (i == 0 && j == n - 1) continue;
                 definition_bad += cm_segment_inside(xy, n, i, xy + 2 * i, j, xy + 2 * j) !=
                                   segment_inside_by_definition(xy, n, i, j);
+                definition_bad += cm_segment_inside_tame(xy, n, i, xy + 2 * i, j, xy + 2 * j) !=
+                                  segment_inside_by_definition(xy, n, i, j);
                 long first = (long)rp_below(&rng, (uint64_t)n), count = 1 + (long)rp_below(&rng, (uint64_t)n);
                 const double *a = xy + 2 * i, *b = xy + 2 * j;
                 int premise = 1;

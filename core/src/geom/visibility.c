@@ -288,13 +288,14 @@ static int edges_clear(const double *xy, long m, long ia, const double a[2], lon
     return 1;
 }
 
-int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long ib,
-                      const double b[2])
+static int segment_inside(const double *xy, long m, long ia, const double a[2], long ib, const double b[2],
+                          int tame)
 {
     /* the constant-time conditions first: a segment leaving outward needs
      * no scan */
     int convex;
-    if (!ends_inward(xy, m, NULL, ia, a, ib, b, &convex, 0) || !edges_clear(xy, m, ia, a, ib, b, 0, m, convex, 0))
+    if (!ends_inward(xy, m, NULL, ia, a, ib, b, &convex, tame) ||
+        !edges_clear(xy, m, ia, a, ib, b, 0, m, convex, tame))
         return 0;
     if (ia < 0 && ib < 0) {
         /* No contact with the boundary: inside iff a is inside. */
@@ -302,12 +303,22 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
         for (long i = 0; i < m; i++) {
             const double *e0 = xy + 2 * i, *e1 = xy + 2 * (i + 1 < m ? i + 1 : 0);
             int up = e0[1] <= a[1] && e1[1] > a[1], down = e1[1] <= a[1] && e0[1] > a[1];
-            if (up && cm_orient2d(e0, e1, a) > 0) crossings++;
-            if (down && cm_orient2d(e0, e1, a) < 0) crossings++;
+            if (up && orient(tame, e0, e1, a) > 0) crossings++;
+            if (down && orient(tame, e0, e1, a) < 0) crossings++;
         }
         return (int)(crossings & 1);
     }
     return 1;
+}
+
+int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long ib, const double b[2])
+{
+    return segment_inside(xy, m, ia, a, ib, b, 0);
+}
+
+int cm_segment_inside_tame(const double *xy, long m, long ia, const double a[2], long ib, const double b[2])
+{
+    return segment_inside(xy, m, ia, a, ib, b, 1);
 }
 
 int cm_segment_inside_edges(const double *xy, long m, const signed char *turn, int tame, long ia, long ib,

@@ -42,6 +42,8 @@ void cm_visrows_free(cm_visrows *v);
  * (b) is a point that must itself lie strictly inside. Exact, O(m). */
 int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long ib,
                       const double b[2]);
+/* The same when xy, a and b are all tame (cm_coords_tame). */
+int cm_segment_inside_tame(const double *xy, long m, long ia, const double a[2], long ib, const double b[2]);
 /* The same for the segment between vertices ia and ib when only the edges
  * first .. first + count - 1 (cyclic; edge i from vertex i to i + 1) can
  * meet it, the others known to miss the open segment and to touch it at
