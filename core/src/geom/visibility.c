@@ -336,10 +336,14 @@ int cm_segment_inside_edges(const double *xy, long m, const signed char *turn, i
 static long clip_half_plane(const double *in, long n, const double *a, const double *b, double *out)
 {
     long count = 0;
+    if (n <= 0) return 0;
+    /* each point's side once: the next edge's start is this one's end (the
+     * same operands, the same double) */
+    double s0 = (b[0] - a[0]) * (in[1] - a[1]) - (b[1] - a[1]) * (in[0] - a[0]), sq = s0;
     for (long i = 0; i < n; i++) {
         const double *p = in + 2 * i, *q = in + 2 * (i + 1 < n ? i + 1 : 0);
-        double sp = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
-        double sq = (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]);
+        double sp = sq;
+        sq = i + 1 < n ? (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]) : s0;
         if (sp >= 0) out[2 * count] = p[0], out[2 * count + 1] = p[1], count++;
         if ((sp >= 0) != (sq >= 0)) {
             double t = sp / (sp - sq);
