@@ -144,6 +144,7 @@ static void *take(cm_sf_work *w, int slot, size_t n, size_t size, int zero)
 /* cm_grow for the links' left ends, in the workspace's slot if any. */
 static int grow_left(dp *d, size_t *cap, size_t need)
 {
+    if (need <= *cap) return 0; /* the usual case, without the call */
     int r = cm_grow((void **)&d->left, cap, need, sizeof *d->left);
     if (d->work) d->work->buf[W_LEFT] = d->left, d->work->bytes[W_LEFT] = *cap * sizeof *d->left;
     return r;
