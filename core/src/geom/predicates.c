@@ -386,6 +386,13 @@ int cm_orient2d_adaptive(const double a[2], const double b[2], const double c[2]
      * determinant is l - r with l = l1 + l0, r = r1 + r0 exactly, and
      * rounding is monotone, so l1 > r1 implies l > r. */
     double dx[4] = {a[0] - c[0], b[0] - c[0], a[1] - c[1], b[1] - c[1]};
+    /* A difference is 0 only where the two coordinates are equal: a zero
+     * factor in each product makes both exactly 0 (points on one
+     * axis-parallel line, or repeated: the filter's usual undecided case
+     * in outlines), the other factors finite. */
+    if ((dx[0] == 0.0 || dx[3] == 0.0) && (dx[2] == 0.0 || dx[1] == 0.0) && fabs(dx[0]) <= DBL_MAX &&
+        fabs(dx[1]) <= DBL_MAX && fabs(dx[2]) <= DBL_MAX && fabs(dx[3]) <= DBL_MAX)
+        return 0;
     if (cm_diff_tail(a[0], c[0], dx[0]) == 0.0 && cm_diff_tail(b[0], c[0], dx[1]) == 0.0 &&
         cm_diff_tail(a[1], c[1], dx[2]) == 0.0 && cm_diff_tail(b[1], c[1], dx[3]) == 0.0 &&
         all_within(dx, 4, ORIENT_EXACT_MIN, CM_ORIENT_MAX)) {
