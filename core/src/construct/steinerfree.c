@@ -330,7 +330,6 @@ static inline void finish(chains *c)
     c->best_more = !better(c->one, c->more);
 }
 
-
 /* A fan chain of row i serves only a fan face closed by a link (i, j)
  * (the root for row 0) whose closing triangle from its fan point is valid,
  * and only up to the vertex before j: the row's fan points are cut to those
@@ -367,6 +366,7 @@ static void start_fans(dp *d, long i, long last)
     for (long l = i + 1; l <= d->row_last; l++) d->fan_in[l] = 0;
 }
 
+/* The fan chains from row i into l = lo..hi, as extend_range says. */
 static void extend_fans(dp *d, long i, long lo, long hi, const long *first)
 {
     const val *g = d->g;
@@ -465,8 +465,8 @@ static void extend_range(dp *d, long i, long lo, long hi, const long *first)
 static void solve(dp *d, long *first, int memo)
 {
     long m = d->m;
-    /* one[] holds none but where a row sets it for its links (close_*
-     * read it, extend_plain sets it again): those are cleared after it */
+    /* one[] holds none but where a row sets it for its links (close_* and
+     * the chains' range read it): those are cleared after the row */
     for (long l = 0; l < m; l++) first[l] = d->start[l + 1], d->plain[l].one = none;
     for (long i = m - 2; i >= 0; i--) {
         long last = d->reach[i], done = i;
