@@ -176,11 +176,11 @@ static inline double triangle_quality(const dp *d, long a, long b, long c)
     return q;
 }
 
-/* The orientation of a, b, c: the fan tests' points (fan points and
- * vertices) all tame, the filter need not check its differences. */
+/* The orientation of a, b, c, fan points or vertices: where all are tame
+ * the filter need not check its differences. */
 static inline int orient(const dp *d, const double *a, const double *b, const double *c)
 {
-    return d->tame ? cm_orient2d_tame(a, b, c) : cm_orient2d(a, b, c);
+    return cm_orient2d_either(d->tame, a, b, c);
 }
 
 /* Is the triangle from fan point x on the directed edge a -> b valid in

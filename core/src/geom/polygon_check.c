@@ -90,7 +90,7 @@ static const double *edge_right(const scanline *sw, long e)
  * differences). */
 static int orient(const scanline *sw, const double a[2], const double b[2], const double c[2])
 {
-    return sw->tame ? cm_orient2d_tame(a, b, c) : cm_orient2d(a, b, c);
+    return cm_orient2d_either(sw->tame, a, b, c);
 }
 
 /* Edge `first` (u to v) is followed by edge `second` (v to w): they

@@ -93,8 +93,7 @@ static int ear_blocked(ring *r, long a, long b, long c)
 static int turn(const ring *r, long u, long v, long w)
 {
     const double *xy = r->xy;
-    return r->tame ? cm_orient2d_tame(P(r->idx[u]), P(r->idx[v]), P(r->idx[w]))
-                   : cm_orient2d(P(r->idx[u]), P(r->idx[v]), P(r->idx[w]));
+    return cm_orient2d_either(r->tame, P(r->idx[u]), P(r->idx[v]), P(r->idx[w]));
 }
 
 static void set_turn(ring *r, long v)

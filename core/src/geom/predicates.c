@@ -594,11 +594,9 @@ static inline int segments_intersect(const double a[2], const double b[2], const
         return 0;
     /* c and d strictly on one side of line ab (or a and b of line cd):
      * no common point, whatever the other two tests say. */
-    int abc = tame ? cm_orient2d_tame(a, b, c) : cm_orient2d(a, b, c);
-    int abd = tame ? cm_orient2d_tame(a, b, d) : cm_orient2d(a, b, d);
+    int abc = cm_orient2d_either(tame, a, b, c), abd = cm_orient2d_either(tame, a, b, d);
     if (abc * abd > 0) return 0;
-    int cda = tame ? cm_orient2d_tame(c, d, a) : cm_orient2d(c, d, a);
-    int cdb = tame ? cm_orient2d_tame(c, d, b) : cm_orient2d(c, d, b);
+    int cda = cm_orient2d_either(tame, c, d, a), cdb = cm_orient2d_either(tame, c, d, b);
     if (cda * cdb > 0) return 0;
     if (abc * abd < 0 && cda * cdb < 0) return 1;
     if ((abc == 0 && between_collinear(a, b, c)) ||

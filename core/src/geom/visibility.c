@@ -185,17 +185,10 @@ int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned c
 
 /* ---- the exact segment test ---------------------------------------------- */
 
-/* The orientation of a, b, c; tame: the points tame (cm_coords_tame), the
- * filter need not check its differences. */
-static inline int orient(int tame, const double a[2], const double b[2], const double c[2])
-{
-    return tame ? cm_orient2d_tame(a, b, c) : cm_orient2d(a, b, c);
-}
-
 /* The sign of the turn at vertex i (the orientation of its corner). */
 static int vertex_turn(const double *xy, long m, long i, int tame)
 {
-    return orient(tame, xy + 2 * (i > 0 ? i - 1 : m - 1), xy + 2 * i, xy + 2 * (i + 1 < m ? i + 1 : 0));
+    return cm_orient2d_either(tame, xy + 2 * (i > 0 ? i - 1 : m - 1), xy + 2 * i, xy + 2 * (i + 1 < m ? i + 1 : 0));
 }
 
 int cm_vertex_turns(const double *xy, long m, signed char *turn)
@@ -210,10 +203,10 @@ int cm_vertex_turns(const double *xy, long m, signed char *turn)
 static int leaves_inward(const double *xy, long m, long i, int turn, const double q[2], int tame)
 {
     const double *p = xy + 2 * (i > 0 ? i - 1 : m - 1), *v = xy + 2 * i, *n = xy + 2 * (i + 1 < m ? i + 1 : 0);
-    int left_of_in = orient(tame, p, v, q) > 0;
+    int left_of_in = cm_orient2d_either(tame, p, v, q) > 0;
     /* the second side only where it can change the answer */
-    if (turn > 0) return left_of_in && orient(tame, v, n, q) > 0;
-    if (turn < 0) return left_of_in || orient(tame, v, n, q) > 0;
+    if (turn > 0) return left_of_in && cm_orient2d_either(tame, v, n, q) > 0;
+    if (turn < 0) return left_of_in || cm_orient2d_either(tame, v, n, q) > 0;
     return left_of_in;
 }
 
@@ -228,7 +221,7 @@ static int same_direction(const double a[2], const double b[2], const double w[2
  * ab only at a. */
 static int edge_touches_only_at_end(const double a[2], const double b[2], const double w[2], int tame)
 {
-    return orient(tame, a, b, w) != 0 || !same_direction(a, b, w);
+    return cm_orient2d_either(tame, a, b, w) != 0 || !same_direction(a, b, w);
 }
 
 /* The constant-time conditions of cm_segment_inside: distinct ends, not a
@@ -303,8 +296,8 @@ static int segment_inside(const double *xy, long m, long ia, const double a[2], 
         for (long i = 0; i < m; i++) {
             const double *e0 = xy + 2 * i, *e1 = xy + 2 * (i + 1 < m ? i + 1 : 0);
             int up = e0[1] <= a[1] && e1[1] > a[1], down = e1[1] <= a[1] && e0[1] > a[1];
-            if (up && orient(tame, e0, e1, a) > 0) crossings++;
-            if (down && orient(tame, e0, e1, a) < 0) crossings++;
+            if (up && cm_orient2d_either(tame, e0, e1, a) > 0) crossings++;
+            if (down && cm_orient2d_either(tame, e0, e1, a) < 0) crossings++;
         }
         return (int)(crossings & 1);
     }
