@@ -166,12 +166,15 @@ static void test_segment_inside_edges(void)
         double *xy = malloc(sizeof(double) * 2 * (size_t)n);
         CHECK(xy && rp_random_simple(xy, n, 900 + (uint64_t)seed) == 0);
         signed char turn[80]; /* the cached turns, on every other pair */
-        if (xy) cm_vertex_turns(xy, n, turn);
+        int tame = xy ? cm_vertex_turns(xy, n, turn) : 0;
+        CHECK(!xy || tame); /* random points: tame, the tame orientations are tested */
         rp_rng rng = {77 + (uint64_t)seed};
         for (int i = 0; xy && i < n; i++)
             for (int j = i + 2; j < n; j++) {
                 if (i == 0 && j == n - 1) continue;
                 definition_bad += cm_segment_inside(xy, n, i, xy + 2 * i, j, xy + 2 * j) !=
+                                  segment_inside_by_definition(xy, n, i, j);
+                definition_bad += cm_segment_inside_tame(xy, n, i, xy + 2 * i, j, xy + 2 * j) !=
                                   segment_inside_by_definition(xy, n, i, j);
                 long first = (long)rp_below(&rng, (uint64_t)n), count = 1 + (long)rp_below(&rng, (uint64_t)n);
                 const double *a = xy + 2 * i, *b = xy + 2 * j;
@@ -187,7 +190,8 @@ static void test_segment_inside_edges(void)
                 held++;
                 int full = cm_segment_inside(xy, n, i, a, j, b);
                 inside += full, outside += !full;
-                bad += cm_segment_inside_edges(xy, n, (i + j) % 2 ? turn : NULL, i, j, first, count) != full;
+                bad += cm_segment_inside_edges(xy, n, (i + j) % 2 ? turn : NULL, (i + j) % 3 ? tame : 0, i, j, first,
+                                               count) != full;
             }
         free(xy);
     }

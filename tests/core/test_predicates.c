@@ -251,6 +251,34 @@ static void test_orient_exact_differences(void)
     CHECK_MSG(zeros > 5000 && zeros < 15000, "%d exactly collinear of 20000", zeros);
 }
 
+/* Triples where some points share a coordinate (outline points on
+ * axis-parallel lines, at any scale), against the reference: where a zero
+ * difference sits in each product the sign is 0 without expansions, and
+ * where only one product has one it is not. */
+static void test_orient_shared_coordinates(void)
+{
+    uint64_t state = 0x5eed1234;
+    int mismatches = 0, zeros = 0;
+    for (int trial = 0; trial < 20000; trial++) {
+        int e = -1074 + (int)random_below(&state, 1074 + 970);
+        double p[3][2];
+        for (int m = 0; m < 3; m++)
+            for (int k = 0; k < 2; k++)
+                p[m][k] = ldexp((double)(random_below(&state, 1L << 30) - (1L << 29)), e);
+        /* one to three of the points take another's x or y */
+        for (int c = 0, n = 1 + (int)random_below(&state, 3); c < n; c++) {
+            int to = (int)random_below(&state, 3), from = (int)random_below(&state, 3), k = (int)random_below(&state, 2);
+            p[to][k] = p[from][k];
+        }
+        int s = cm_orient2d(p[0], p[1], p[2]);
+        mismatches += s != ref_orient2d(p[0], p[1], p[2]);
+        mismatches += cm_orient2d_adaptive(p[2], p[0], p[1]) != s;
+        zeros += s == 0;
+    }
+    CHECK_MSG(mismatches == 0, "%d", mismatches);
+    CHECK_MSG(zeros > 1000 && zeros < 19000, "%d of 20000 on one line", zeros);
+}
+
 static void test_orient_extreme_random(void)
 {
     static const int ranges[][2] = {
@@ -633,6 +661,7 @@ int main(void)
     test_orient_grid(1000);
     test_orient_grid(-1000);
     test_orient_exactly_collinear();
+    test_orient_shared_coordinates();
     test_orient_extreme_random();
     test_orient_tame();
     test_incircle_grid(0);

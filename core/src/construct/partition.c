@@ -937,7 +937,7 @@ static int half_diagonals(const face_ctx *f, size_t g, long from, long nc, const
         free(turn);
         return -1;
     }
-    cm_vertex_turns(h, size, turn); /* each corner's turn once, not per pair */
+    int tame = cm_vertex_turns(h, size, turn); /* each corner's turn once, not per pair */
     for (long i = 0; i < size; i++)
         for (long j = i + 2; j < size; j++) {
             if (i == 0 && j == size - 1) continue; /* an edge */
@@ -949,14 +949,15 @@ static int half_diagonals(const face_ctx *f, size_t g, long from, long nc, const
                                             from + j < m ? from + j : from + j - m);
             if (seen && inner) {
                 for (long e = nc - 1; seen && e < size; e++) /* the path's links */
-                    seen = cm_segments_intersect(h + 2 * i, h + 2 * j, h + 2 * e, h + 2 * (e + 1 < size ? e + 1 : 0)) == 0;
+                    seen = (tame ? cm_segments_intersect_tame : cm_segments_intersect)(
+                               h + 2 * i, h + 2 * j, h + 2 * e, h + 2 * (e + 1 < size ? e + 1 : 0)) == 0;
             } else if (seen && chain && !(i == 0 && j == nc - 1)) {
                 /* one end is an end of P: a diagonal of the face, so only
                  * P's links (edges nc - 1 .. size - 1) and that end's new
                  * corner need a test */
-                seen = cm_segment_inside_edges(h, size, turn, i, j, nc - 1, size - nc + 1);
+                seen = cm_segment_inside_edges(h, size, turn, tame, i, j, nc - 1, size - nc + 1);
             } else if (seen) {
-                seen = cm_segment_inside_edges(h, size, turn, i, j, 0, size);
+                seen = cm_segment_inside_edges(h, size, turn, tame, i, j, 0, size);
             }
             if (seen) cm_diagset_add(set, i, j);
         }

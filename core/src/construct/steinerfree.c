@@ -50,8 +50,10 @@ typedef struct chains {
     val one, more;   /* exactly one link; two or more */
     val best;        /* best_of(one, more), once l is done */
     int32_t arg;     /* for `more`: the vertex before l */
-    unsigned char from_more; /* `more` extends a chain of two or more */
-    unsigned char best_more; /* a chain extending this one extends `more` */
+    /* flags as int, not char: a char store could be any object for the
+     * compiler, the hot loops' arrays and bounds would be read again */
+    int from_more; /* `more` extends a chain of two or more */
+    int best_more; /* a chain extending this one extends `more` */
 } chains;
 
 /* The arrays a run without fan points takes from a workspace. */
@@ -78,6 +80,8 @@ typedef struct dp {
                          ascending */
     int32_t *out_link, *out_to;
     long row_last;    /* the farthest l the current row's fan chains reach */
+    long fan_bound;   /* the current row: a fan chain costing this or more
+                         serves no fan face that can win (see closers) */
     val *g;           /* per link */
     int32_t *arg;     /* per link: the chain's last vertex before l */
     unsigned char *by;
@@ -140,6 +144,7 @@ static void *take(cm_sf_work *w, int slot, size_t n, size_t size, int zero)
 /* cm_grow for the links' left ends, in the workspace's slot if any. */
 static int grow_left(dp *d, size_t *cap, size_t need)
 {
+    if (need <= *cap) return 0; /* the usual case, without the call */
     int r = cm_grow((void **)&d->left, cap, need, sizeof *d->left);
     if (d->work) d->work->buf[W_LEFT] = d->left, d->work->bytes[W_LEFT] = *cap * sizeof *d->left;
     return r;
@@ -153,7 +158,7 @@ static int is_link(const dp *d, long a, long b)
 }
 
 /* sin^2 of the smallest angle of the triangle pa, pb, pc. */
-static double quality(const double *pa, const double *pb, const double *pc)
+static inline double quality(const double *pa, const double *pb, const double *pc)
 {
     double ux = pb[0] - pa[0], uy = pb[1] - pa[1], vx = pc[0] - pa[0], vy = pc[1] - pa[1];
     double wx = pc[0] - pb[0], wy = pc[1] - pb[1];
@@ -163,12 +168,19 @@ static double quality(const double *pa, const double *pb, const double *pc)
 }
 
 /* Worst geometry's quality of triangle (a, b, c). */
-static double triangle_quality(const dp *d, long a, long b, long c)
+static inline double triangle_quality(const dp *d, long a, long b, long c)
 {
     double q = NO_TRIANGLE;
     for (size_t g = 0; g < d->k; g++)
         q = qmin(q, quality(d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->xy[g] + 2 * c));
     return q;
+}
+
+/* The orientation of a, b, c, fan points or vertices: where all are tame
+ * the filter need not check its differences. */
+static inline int orient(const dp *d, const double *a, const double *b, const double *c)
+{
+    return cm_orient2d_either(d->tame, a, b, c);
 }
 
 /* Is the triangle from fan point x on the directed edge a -> b valid in
@@ -177,7 +189,7 @@ static int fan_valid(const dp *d, size_t x, long a, long b)
 {
     for (size_t g = 0; g < d->k; g++) {
         const double *pa = d->xy[g] + 2 * a, *pb = d->xy[g] + 2 * b, *px = d->fans + 2 * (x * d->k + g);
-        if ((d->tame ? cm_orient2d_tame(pa, pb, px) : cm_orient2d(pa, pb, px)) <= 0) return 0;
+        if (orient(d, pa, pb, px) <= 0) return 0;
     }
     return 1;
 }
@@ -301,21 +313,14 @@ static void close_face(const dp *d, long i, long l, long first, long chord, slot
         for (uint64_t b = closing ? closing & d->fwd_ok[s] & d->fan_more[a] : 0; b; b &= b - 1) {
             size_t x = (size_t)cm_lowest_bit(b);
             const chains *fc = fanned(d, x, a);
-            double q = chord >= 0 ? fan_q(d, x, chord, l, i) : d->root_fan[x]; /* on l -> i */
-            offer((val){fc->more.cost + gl.cost + 1, qmin(qmin(fc->more.q, gl.q), qmin(fan_q(d, x, s, a, l), q))},
-                  BY_FAN, (int32_t)a, (int16_t)x, &p);
+            long cost = fc->more.cost + gl.cost + 1;
+            double q = qmin(fc->more.q, gl.q); /* the fan triangles' qualities only lower it */
+            if (!could_win(cost, q, p.value)) continue;
+            double closing_q = chord >= 0 ? fan_q(d, x, chord, l, i) : d->root_fan[x]; /* on l -> i */
+            offer((val){cost, qmin(q, qmin(fan_q(d, x, s, a, l), closing_q))}, BY_FAN, (int32_t)a, (int16_t)x, &p);
         }
     }
     *out.value = p.value, *out.arg = p.arg, *out.by = p.by, *out.fan_of = p.fan_of;
-}
-
-/* Extends the chains of one kind into l: best of one link or more. */
-static inline void extend(chains *c, long a, const chains *prev, val step, int fan)
-{
-    val from = prev->best;
-    if (!exists(from)) return;
-    val v = {from.cost + step.cost + (fan ? 0 : 1), qmin(from.q, step.q)};
-    if (better(v, c->more)) c->more = v, c->arg = (int32_t)a, c->from_more = prev->best_more;
 }
 
 /* The chains into l are done: what extending them starts from. */
@@ -325,49 +330,27 @@ static inline void finish(chains *c)
     c->best_more = !better(c->one, c->more);
 }
 
-/* Chains from i to l, given G of the links into l and the row below l;
- * s: the link (i, l) or -1; first: the first link into l from beyond i. A plain chain counts each link once (it adds
- * a face vertex); a fan chain only collects G, the fan face costs 1 in
- * all. */
-static void extend_plain(dp *d, long l, long s, long first)
-{
-    chains *pc = &d->plain[l];
-    pc->one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
-    /* extend() for every plain link, the running best kept in locals
-     * (the rows below l are not l: nothing they hold changes here) */
-    val mv = {FAR - 1, 0.0}; /* none: every candidate costs less, but those
-                                from a missing chain (FAR or more) */
-    int32_t arg = -1;
-    unsigned char from_more = 0;
-    for (long t = first, end = d->start[l + 1]; t < end; t++) {
-        int32_t a = d->left[t];
-        long cost = d->step_from[a] + d->g[t].cost; /* G of a solved link exists */
-        if (cost > mv.cost) continue;
-        const chains *prev = &d->plain[a];
-        val v = {cost, qmin(prev->best.q, d->g[t].q)};
-        if (better(v, mv)) mv = v, arg = a, from_more = prev->best_more;
-    }
-    pc->more = arg >= 0 ? mv : none, pc->arg = arg;
-    if (arg >= 0) pc->from_more = from_more;
-    finish(pc);
-    d->step_from[l] = exists(pc->best) ? pc->best.cost + 1 : FAR;
-}
-
 /* A fan chain of row i serves only a fan face closed by a link (i, j)
  * (the root for row 0) whose closing triangle from its fan point is valid,
  * and only up to the vertex before j: the row's fan points are cut to those
  * of its closing links, and its fan chains end before the last of them.
- * The chains read stay the same. Returns that last vertex. */
+ * A link whose G costs 0 closes none (its triangulation stays). G of a
+ * link held now (the memo's while the row is solved) bounds the cost of
+ * the face that wins on it (the values only get better with fan points),
+ * and a fan face costs one more than its chain: a chain costing the most
+ * of those G or more is not read, nor extended (costs only grow). The
+ * chains read stay the same. Returns that last vertex. */
 static long closers(dp *d, long i)
 {
     uint64_t fans = d->fans_now, used = 0;
-    long last = i;
+    long last = i, bound = 0;
     for (long o = d->out_start[i]; fans && o < d->out_start[i + 1]; o++) {
-        uint64_t c = d->rev_ok[d->out_link[o]] & fans;
-        if (c) used |= c, last = d->out_to[o];
+        long t = d->out_link[o];
+        uint64_t c = d->g[t].cost ? d->rev_ok[t] & fans : 0;
+        if (c) used |= c, last = d->out_to[o], bound = d->g[t].cost > bound ? d->g[t].cost : bound;
     }
-    if (i == 0 && (d->root_ok & fans)) used |= d->root_ok & fans, last = d->m - 1;
-    d->fans_now = used;
+    if (i == 0 && (d->root_ok & fans)) used |= d->root_ok & fans, last = d->m - 1, bound = FAR;
+    d->fans_now = used, d->fan_bound = bound;
     return last - 1;
 }
 
@@ -383,51 +366,92 @@ static void start_fans(dp *d, long i, long last)
     for (long l = i + 1; l <= d->row_last; l++) d->fan_in[l] = 0;
 }
 
-static void extend_fans(dp *d, long l, long s)
+/* The fan chains from row i into l = lo..hi, as extend_range says. */
+static void extend_fans(dp *d, long i, long lo, long hi, const long *first)
 {
-    uint64_t fans = d->fans_now & d->facing[l];
-    uint64_t in = d->fan_in[l] & fans, ones = s >= 0 ? d->fwd_ok[s] & fans : 0;
-    if (!(in | ones)) { /* no fan chain into l: none goes on from it */
-        d->fan_best[l] = d->fan_more[l] = 0;
-        return;
-    }
-    uint64_t best = 0, more = 0;
-    for (uint64_t b = in | ones; b; b &= b - 1) { /* the other fan points have no chain into l */
-        size_t x = (size_t)cm_lowest_bit(b);
-        chains *fc = fanned(d, x, l);
-        fc->one = has_fan(ones, x) ? (val){d->g[s].cost, qmin(d->g[s].q, fan_q(d, x, s, d->left[s], l))} : none;
-        if (!has_fan(in, x)) fc->more = none, fc->arg = -1;
-        finish(fc);
-        best |= (uint64_t)exists(fc->best) << x;
-        more |= (uint64_t)exists(fc->more) << x;
-    }
-    d->fan_best[l] = best, d->fan_more[l] = more;
-    for (long o = d->out_start[l]; best && o < d->out_start[l + 1] && d->out_to[o] <= d->row_last; o++) {
-        long t = d->out_link[o], e = d->out_to[o];
-        for (uint64_t b = best & d->fwd_ok[t] & d->facing[e]; b; b &= b - 1) {
+    const val *g = d->g;
+    const uint64_t *fwd_ok = d->fwd_ok, *facing = d->facing;
+    uint64_t *fan_in = d->fan_in;
+    for (long l = lo; l <= hi && l <= d->row_last; l++) {
+        long f = first[l], s = exists(d->plain[l].one) ? f : -1;
+        uint64_t fans = d->fans_now & facing[l];
+        uint64_t in = fan_in[l] & fans, ones = s >= 0 ? fwd_ok[s] & fans : 0;
+        if (!(in | ones)) { /* no fan chain into l: none goes on from it */
+            d->fan_best[l] = d->fan_more[l] = 0;
+            continue;
+        }
+        uint64_t best = 0, more = 0;
+        for (uint64_t b = in | ones; b; b &= b - 1) { /* the other fan points have no chain into l */
             size_t x = (size_t)cm_lowest_bit(b);
-            chains *fc = fanned(d, x, e);
-            if (!has_fan(d->fan_in[e], x)) fc->more = none, fc->arg = -1; /* its first candidate */
-            d->fan_in[e] |= (uint64_t)1 << x;
-            extend(fc, l, fanned(d, x, l), (val){d->g[t].cost, qmin(d->g[t].q, fan_q(d, x, t, l, e))}, 1);
+            chains *fc = fanned(d, x, l);
+            fc->one = has_fan(ones, x) ? (val){g[s].cost, qmin(g[s].q, fan_q(d, x, s, i, l))} : none;
+            if (!has_fan(in, x)) fc->more = none, fc->arg = -1;
+            finish(fc);
+            best |= (uint64_t)(fc->best.cost < d->fan_bound) << x;
+            more |= (uint64_t)(fc->more.cost < d->fan_bound) << x;
+        }
+        d->fan_best[l] = best, d->fan_more[l] = more;
+        for (long o = d->out_start[l]; best && o < d->out_start[l + 1] && d->out_to[o] <= d->row_last; o++) {
+            long t = d->out_link[o], e = d->out_to[o];
+            for (uint64_t b = best & fwd_ok[t] & facing[e]; b; b &= b - 1) {
+                size_t x = (size_t)cm_lowest_bit(b);
+                chains *fc = fanned(d, x, e);
+                const chains *from = fanned(d, x, l);
+                long cost = from->best.cost + g[t].cost;
+                double q = qmin(from->best.q, g[t].q); /* the fan triangle's quality only lowers it */
+                if (!has_fan(fan_in[e], x)) {
+                    fc->more = none, fc->arg = -1; /* its first candidate */
+                    fan_in[e] |= (uint64_t)1 << x;
+                } else if (!could_win(cost, q, fc->more)) {
+                    continue;
+                }
+                val v = {cost, qmin(q, fan_q(d, x, t, l, e))};
+                if (better(v, fc->more)) fc->more = v, fc->arg = (int32_t)l, fc->from_more = from->best_more;
+            }
         }
     }
 }
 
-static void extend_chains(dp *d, long l, long s, long first)
+/* The chains from row i into l = lo..hi, once every link into them is
+ * solved: first[l] is the link (i, l) if there is one, else the first link
+ * into l from beyond i; plain[l].one is set (none where (i, l) is not a
+ * link: it tells which). A plain chain counts each link once (it adds a
+ * face vertex); a fan chain only collects G, the fan face costs 1 in all.
+ * The plain chains go first over the whole range (they read no fan
+ * chain), in one call: the arrays stay in registers. */
+static void extend_range(dp *d, long i, long lo, long hi, const long *first)
 {
-    extend_plain(d, l, s, first);
-    /* else fan_best and fan_more stay 0, or are not read (beyond the row's
-     * fan chains' reach) */
-    if (d->nfans && l <= d->row_last) extend_fans(d, l, s);
-}
-
-/* The chains from row i into l, once every link into l is solved: first[l]
- * already moved to the link (i, l) if there is one. */
-static void extend_done(dp *d, long i, long l, const long *first)
-{
-    long f = first[l], s = f < d->start[l + 1] && d->left[f] == i ? f : -1;
-    extend_chains(d, l, s, s >= 0 ? f + 1 : f);
+    chains *plain = d->plain;
+    long *step_from = d->step_from;
+    const val *g = d->g;
+    const int32_t *left = d->left;
+    const long *start = d->start;
+    for (long l = lo; l <= hi; l++) {
+        long f = first[l], end = start[l + 1];
+        chains *pc = &plain[l];
+        /* every plain link extends the best chain into its left end by
+         * one link, the running best kept in locals (the rows below l are
+         * not l: nothing they hold changes here) */
+        val mv = {FAR - 1, 0.0}; /* none: every candidate costs less, but
+                                    those from a missing chain (FAR or more) */
+        int32_t arg = -1;
+        int from_more = 0;
+        for (long t = exists(pc->one) ? f + 1 : f; t < end; t++) {
+            int32_t a = left[t];
+            long cost = step_from[a] + g[t].cost; /* G of a solved link exists */
+            if (cost > mv.cost) continue;
+            const chains *prev = &plain[a];
+            val v = {cost, qmin(prev->best.q, g[t].q)};
+            if (better(v, mv)) mv = v, arg = a, from_more = prev->best_more;
+        }
+        pc->more = arg >= 0 ? mv : none, pc->arg = arg;
+        if (arg >= 0) pc->from_more = from_more;
+        finish(pc);
+        step_from[l] = exists(pc->best) ? pc->best.cost + 1 : FAR;
+    }
+    /* beyond the row's fan chains' reach fan_best and fan_more stay 0, or
+     * are not read */
+    if (d->nfans) extend_fans(d, i, lo, hi, first);
 }
 
 /* Rows from the last up. first[l]: the first link into l from beyond the
@@ -441,43 +465,51 @@ static void extend_done(dp *d, long i, long l, const long *first)
 static void solve(dp *d, long *first, int memo)
 {
     long m = d->m;
-    for (long l = 0; l < m; l++) first[l] = d->start[l + 1];
+    /* one[] holds none but where a row sets it for its links (close_* and
+     * the chains' range read it): those are cleared after the row */
+    for (long l = 0; l < m; l++) first[l] = d->start[l + 1], d->plain[l].one = none;
     for (long i = m - 2; i >= 0; i--) {
         long last = d->reach[i], done = i;
+        if (memo && i > 0 && (!d->nfans || !d->row_fans[i])) { /* kept: only first[] moves, over the row's links */
+            for (long o = d->out_start[i]; o < d->out_start[i + 1]; o++) first[d->out_to[o]] = d->out_link[o];
+            continue;
+        }
         d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
-        int keep = memo && i > 0 && (!d->nfans || !d->row_fans[i]);
-        if (!keep && d->nfans) start_fans(d, i, last);
-        for (long l = i + 1; l <= last; l++) {
-            long f = first[l], s = f > d->start[l] && d->left[f - 1] == i ? f - 1 : -1;
-            if (keep) {
-                if (s >= 0) first[l] = s;
-                continue;
-            }
-            int root = s < 0 && i == 0 && l == m - 1;
-            if (l > i + 1 && (s >= 0 || root)) {
+        if (d->nfans) start_fans(d, i, last);
+        /* the row's links by right end (first[l] is just past each), then
+         * for row 0 the root, closed by the edge (m - 1, 0) */
+        for (long o = d->out_start[i]; o <= d->out_start[i + 1]; o++) {
+            int root = o == d->out_start[i + 1];
+            if (root && i > 0) break;
+            long s = root ? -1 : d->out_link[o], l = root ? m - 1 : d->out_to[o], f = first[l];
+            if (l > i + 1) {
                 slot out = s >= 0 ? (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]}
                                   : (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of};
                 if (memo && s >= 0 && d->g[s].cost == 0) {
                     /* the memo's G: a decomposition of cost 0 has no fan
                      * face, so both runs find the same of cost 0 */
-                } else if (done + 1 == l || !close_triangle(d, i, l, f, out)) {
-                    while (done + 1 < l) extend_done(d, i, ++done, first);
+                } else if ((memo && s >= 0) || done + 1 == l || !close_triangle(d, i, l, f, out)) {
+                    /* with a memo, a link here has no triangulation (the
+                     * memo would have found it): no triangle of cost 0 */
+                    if (done + 1 < l) extend_range(d, i, done + 1, l - 1, first), done = l - 1;
                     close_face(d, i, l, f, s, out);
                 }
             }
-            d->plain[l].one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
-            if (s >= 0) first[l] = s;
+            if (root) break;
+            d->plain[l].one = (val){d->g[s].cost + 1, d->g[s].q};
+            first[l] = s;
         }
+        for (long o = d->out_start[i]; o < d->out_start[i + 1]; o++) d->plain[d->out_to[o]].one = none;
     }
 }
 
 /* Does the ray from x towards +x cross the segment p q? Half-open in y
  * with the exact orientation: the parity of the crossings with a closed
  * polyline is exact for every x off it. */
-static int ray_crosses(const double *p, const double *q, const double *x)
+static int ray_crosses(const dp *d, const double *p, const double *q, const double *x)
 {
     if ((p[1] > x[1]) == (q[1] > x[1])) return 0;
-    int o = cm_orient2d(p, q, x);
+    int o = orient(d, p, q, x);
     return q[1] > p[1] ? o > 0 : o < 0;
 }
 
@@ -492,7 +524,7 @@ static uint64_t fans_inside(const dp *d, const uint64_t *parity, long a, long b,
     const double *pa = d->xy[0] + 2 * a, *pb = d->xy[0] + 2 * b;
     for (uint64_t w = which; w; w &= w - 1) {
         int x = cm_lowest_bit(w);
-        in ^= (uint64_t)ray_crosses(pb, pa, d->fans + 2 * (size_t)x * d->k) << x;
+        in ^= (uint64_t)ray_crosses(d, pb, pa, d->fans + 2 * (size_t)x * d->k) << x;
     }
     return in & which;
 }
@@ -602,7 +634,7 @@ static int build_fans(dp *d)
         const double *f0 = d->fans + 2 * x * d->k;
         uint64_t odd = 0;
         for (long v = 0; v + 1 < m; v++) {
-            odd ^= (uint64_t)ray_crosses(d->xy[0] + 2 * v, d->xy[0] + 2 * v + 2, f0);
+            odd ^= (uint64_t)ray_crosses(d, d->xy[0] + 2 * v, d->xy[0] + 2 * v + 2, f0);
             parity[v + 1] |= odd << x;
         }
     }
@@ -612,10 +644,10 @@ static int build_fans(dp *d)
         for (size_t g = 0; g < d->k; g++) {
             const double *p = d->xy[g] + 2 * (v > 0 ? v - 1 : m - 1), *q = d->xy[g] + 2 * v;
             const double *r = d->xy[g] + 2 * (v + 1 < m ? v + 1 : 0);
-            if (cm_orient2d(p, q, r) <= 0) continue;
+            if (orient(d, p, q, r) <= 0) continue;
             for (size_t x = 0; x < d->nfans; x++) {
                 const double *fx = d->fans + 2 * (x * d->k + g);
-                if (cm_orient2d(p, q, fx) <= 0 || cm_orient2d(q, r, fx) <= 0) d->facing[v] &= ~((uint64_t)1 << x);
+                if (orient(d, p, q, fx) <= 0 || orient(d, q, r, fx) <= 0) d->facing[v] &= ~((uint64_t)1 << x);
             }
         }
     }
@@ -660,12 +692,17 @@ static void plan_add_triangle(cm_sf_plan *p, long a, long b, long c)
 }
 
 /* The face on link (i, j) whose chain ends with link (a, j): its vertices
- * go to the plan, its links to the stack. */
-static void add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link *stack, long *top)
+ * go to the plan, its links to the stack. first: m longs of scratch. */
+static void add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link *stack, long *top, long *first)
 {
     d->fans_now = d->nfans ? d->row_fans[i] & d->facing[i] : 0;
     if (d->nfans) start_fans(d, i, fan >= 0 ? a : i); /* a fan face reads its fan point's chains alone */
-    for (long l = i + 1; l <= a; l++) extend_chains(d, l, find_link(d, i, l), first_after(d, l, i));
+    for (long l = i + 1; l <= a; l++) {
+        long s = find_link(d, i, l);
+        first[l] = s >= 0 ? s : first_after(d, l, i);
+        d->plain[l].one = s >= 0 ? (val){d->g[s].cost + 1, d->g[s].q} : none;
+    }
+    extend_range(d, i, i + 1, a, first);
     const chains *row = fan >= 0 ? fanned(d, (size_t)fan, 0) : d->plain;
     long count = 0, v = a;
     int32_t *f = p->face + p->face_start[p->nf];
@@ -688,7 +725,7 @@ static void add_face(dp *d, cm_sf_plan *p, long i, long a, long j, int fan, link
     for (long x = 0; x + 1 < count; x++) push_link(stack, top, f[x], f[x + 1]);
 }
 
-static int read_plan(dp *d, cm_sf_plan *p)
+static int read_plan(dp *d, cm_sf_plan *p, long *first)
 {
     long m = d->m;
     p->tri = take(d->work, W_TRI, 3 * (size_t)m, sizeof *p->tri, 0);
@@ -717,7 +754,7 @@ static int read_plan(dp *d, cm_sf_plan *p)
             plan_add_triangle(p, l.a, a, l.b);
             push_link(stack, &top, l.a, a), push_link(stack, &top, a, l.b);
         } else {
-            add_face(d, p, l.a, a, l.b, by == BY_FAN ? fan : -1, stack, &top);
+            add_face(d, p, l.a, a, l.b, by == BY_FAN ? fan : -1, stack, &top, first);
         }
     }
     if (!d->work) free(stack);
@@ -796,7 +833,7 @@ static int run(dp *d, int memo, cm_sf_plan *plan)
         plan->cost = d->root.cost;
         double q = qmin(d->root.q, 1.0);
         plan->min_angle_deg = d->root.q >= NO_TRIANGLE ? 180.0 : asin(sqrt(q)) * 180.0 / 3.14159265358979323846;
-        status = read_plan(d, plan);
+        status = read_plan(d, plan, first); /* first[] done with: add_face's scratch */
     }
     free(first);
     if (d->work) {

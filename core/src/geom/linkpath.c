@@ -797,7 +797,9 @@ int cm_link_distances(cm_linkpart *lp, long s, int *dist)
 
 static int sees(const cm_linkpart *lp, long vertex, const double p[2], const double y[2])
 {
-    return cm_segment_inside(lp->xy, lp->m, vertex, p, -1, y);
+    return (lp->in.tame && cm_coords_tame(p, 2) && cm_coords_tame(y, 2) ? cm_segment_inside_tame
+                                                                      : cm_segment_inside)(lp->xy, lp->m, vertex, p,
+                                                                                           -1, y);
 }
 
 /* Is the point y lit in pocket Q (visible from its source)? If so, *a, *b
@@ -1015,8 +1017,11 @@ int cm_path_valid(const double *xy, long m, long u, long v, const double *bends,
     long n = nb + 2;
 #define PT(i) path_point(xy, u, v, bends, n, i)
     int ok = 1;
+    /* O(m) once, against O(m) per link */
+    int (*inside)(const double *, long, long, const double *, long, const double *) =
+        cm_coords_tame(xy, 2 * m) && cm_coords_tame(bends, 2 * nb) ? cm_segment_inside_tame : cm_segment_inside;
     for (long i = 0; ok && i + 1 < n; i++)
-        ok = cm_segment_inside(xy, m, i == 0 ? u : -1, PT(i), i + 1 == n - 1 ? v : -1, PT(i + 1));
+        ok = inside(xy, m, i == 0 ? u : -1, PT(i), i + 1 == n - 1 ? v : -1, PT(i + 1));
     for (long i = 0; ok && i + 2 < n; i++) ok = no_fold(PT(i), PT(i + 1), PT(i + 2));
     for (long i = 0; ok && i + 1 < n; i++)
         for (long j = i + 2; ok && j + 1 < n; j++)

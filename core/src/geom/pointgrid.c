@@ -6,9 +6,9 @@
 
 static long cell_of(double v, double v0, double f, long n)
 {
-    double c = floor((v - v0) * f);
+    double c = (v - v0) * f;
     if (!(c >= 0)) return 0; /* also NaN */
-    return c >= (double)n ? n - 1 : (long)c;
+    return c >= (double)n ? n - 1 : (long)c; /* 0 <= c < n: the cast is floor */
 }
 
 int cm_pointgrid_init(cm_pointgrid *g, long capacity, const double lo[2], const double hi[2],

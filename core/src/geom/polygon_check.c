@@ -35,6 +35,7 @@ typedef struct scanline {
     status_node *node; /* indexed by edge */
     long root;
     long hit_a, hit_b; /* the offending pair, once found */
+    int tame;          /* every coordinate tame (cm_coords_tame) */
 } scanline;
 
 typedef cm_vertex_event vertex_event;
@@ -85,13 +86,20 @@ static const double *edge_right(const scanline *sw, long e)
     return cm_point_less(t, s) ? s : t;
 }
 
+/* The orientation of a, b, c (tame points: the filter need not check its
+ * differences). */
+static int orient(const scanline *sw, const double a[2], const double b[2], const double c[2])
+{
+    return cm_orient2d_either(sw->tame, a, b, c);
+}
+
 /* Edge `first` (u to v) is followed by edge `second` (v to w): they
  * overlap beyond v only when collinear with u and w on the same side. */
 static int consecutive_overlap(const scanline *sw, long first, long second)
 {
     const double *u = edge_start(sw, first), *v = edge_end(sw, first);
     const double *w = edge_end(sw, second);
-    return cm_orient2d(u, v, w) == 0 && cm_point_less(u, v) == cm_point_less(w, v);
+    return orient(sw, u, v, w) == 0 && cm_point_less(u, v) == cm_point_less(w, v);
 }
 
 static int edges_offend(const scanline *sw, long i, long j)
@@ -122,8 +130,8 @@ static int compare_at(const scanline *sw, long s, const double p[2], long t)
 {
     const double *t_left = edge_left(sw, t), *t_right = edge_right(sw, t);
     if (same_point(t_left, p))
-        return cm_orient2d(p, t_right, edge_right(sw, s));
-    return cm_orient2d(t_left, t_right, p);
+        return orient(sw, p, t_right, edge_right(sw, s));
+    return orient(sw, t_left, t_right, p);
 }
 
 /* ---- treap ----------------------------------------------------------- */
@@ -325,7 +333,7 @@ static int find_intersection(scanline *sw, long *edge_a, long *edge_b)
 int cm_polygon_find_intersection(const double *xy, long n, long *edge_a,
                                  long *edge_b)
 {
-    scanline sw = {xy, n, NULL, NULL, NULL, -1, -1, -1};
+    scanline sw = {xy, n, NULL, NULL, NULL, -1, -1, -1, cm_coords_tame(xy, 2 * n)};
     return find_intersection(&sw, edge_a, edge_b);
 }
 
@@ -346,7 +354,7 @@ int cm_loops_find_intersection(const double *xy, const size_t *loop_sizes, size_
             }
             start += m;
         }
-        scanline sw = {xy, n, succ, pred, NULL, -1, -1, -1};
+        scanline sw = {xy, n, succ, pred, NULL, -1, -1, -1, cm_coords_tame(xy, 2 * n)};
         found = find_intersection(&sw, edge_a, edge_b);
     }
     free(succ), free(pred);

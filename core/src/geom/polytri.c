@@ -88,10 +88,18 @@ static int ear_blocked(ring *r, long a, long b, long c)
     return 0;
 }
 
+/* The turn at v between its ring neighbours (tame points: the filter
+ * need not check its differences). */
+static int turn(const ring *r, long u, long v, long w)
+{
+    const double *xy = r->xy;
+    return cm_orient2d_either(r->tame, P(r->idx[u]), P(r->idx[v]), P(r->idx[w]));
+}
+
 static void set_turn(ring *r, long v)
 {
     const double *xy = r->xy;
-    r->convex[v] = (signed char)cm_orient2d(P(r->idx[r->prev[v]]), P(r->idx[v]), P(r->idx[r->next[v]]));
+    r->convex[v] = (signed char)turn(r, r->prev[v], v, r->next[v]);
     if (r->convex[v] > 0) cm_pointgrid_remove(&r->grid, v);
     else if (r->grid.cell[v] < 0) cm_pointgrid_insert(&r->grid, v, P(r->idx[v])[0], P(r->idx[v])[1]);
 }
@@ -129,7 +137,7 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
     r.tame = 1;
     for (long i = 0; i < m && r.tame; i++) r.tame = cm_coords_tame(P(idx[i]), 2);
     for (long i = 0; i < m; i++) {
-        r.convex[i] = (signed char)cm_orient2d(P(idx[r.prev[i]]), P(idx[i]), P(idx[r.next[i]]));
+        r.convex[i] = (signed char)turn(&r, r.prev[i], i, r.next[i]);
         reflex += r.convex[i] <= 0;
     }
     r.remaining = m;
@@ -171,7 +179,7 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
             v = r.next[v];
         }
     }
-    if (cm_orient2d(P(idx[r.prev[v]]), P(idx[v]), P(idx[r.next[v]])) <= 0) goto done;
+    if (turn(&r, r.prev[v], v, r.next[v]) <= 0) goto done;
     tri[3 * t] = idx[r.prev[v]], tri[3 * t + 1] = idx[v], tri[3 * t + 2] = idx[r.next[v]];
     status = 0;
 done:

@@ -386,6 +386,13 @@ int cm_orient2d_adaptive(const double a[2], const double b[2], const double c[2]
      * determinant is l - r with l = l1 + l0, r = r1 + r0 exactly, and
      * rounding is monotone, so l1 > r1 implies l > r. */
     double dx[4] = {a[0] - c[0], b[0] - c[0], a[1] - c[1], b[1] - c[1]};
+    /* A difference is 0 only where the two coordinates are equal: a zero
+     * factor in each product makes both exactly 0 (points on one
+     * axis-parallel line, or repeated: the filter's usual undecided case
+     * in outlines), the other factors finite. */
+    if ((dx[0] == 0.0 || dx[3] == 0.0) && (dx[2] == 0.0 || dx[1] == 0.0) && fabs(dx[0]) <= DBL_MAX &&
+        fabs(dx[1]) <= DBL_MAX && fabs(dx[2]) <= DBL_MAX && fabs(dx[3]) <= DBL_MAX)
+        return 0;
     if (cm_diff_tail(a[0], c[0], dx[0]) == 0.0 && cm_diff_tail(b[0], c[0], dx[1]) == 0.0 &&
         cm_diff_tail(a[1], c[1], dx[2]) == 0.0 && cm_diff_tail(b[1], c[1], dx[3]) == 0.0 &&
         all_within(dx, 4, ORIENT_EXACT_MIN, CM_ORIENT_MAX)) {
@@ -575,8 +582,10 @@ static int strictly_below(const double a[2], const double b[2], const double c[2
     return a[x] < c[x] && a[x] < d[x] && b[x] < c[x] && b[x] < d[x];
 }
 
-int cm_segments_intersect(const double a[2], const double b[2],
-                          const double c[2], const double d[2])
+/* tame: the four points tame (cm_coords_tame), the filter need not check
+ * its differences. */
+static inline int segments_intersect(const double a[2], const double b[2], const double c[2], const double d[2],
+                                     int tame)
 {
     /* Most segment pairs a polygon scan meets are far apart: disjoint
      * bounding boxes settle them without a predicate. */
@@ -585,9 +594,9 @@ int cm_segments_intersect(const double a[2], const double b[2],
         return 0;
     /* c and d strictly on one side of line ab (or a and b of line cd):
      * no common point, whatever the other two tests say. */
-    int abc = cm_orient2d(a, b, c), abd = cm_orient2d(a, b, d);
+    int abc = cm_orient2d_either(tame, a, b, c), abd = cm_orient2d_either(tame, a, b, d);
     if (abc * abd > 0) return 0;
-    int cda = cm_orient2d(c, d, a), cdb = cm_orient2d(c, d, b);
+    int cda = cm_orient2d_either(tame, c, d, a), cdb = cm_orient2d_either(tame, c, d, b);
     if (cda * cdb > 0) return 0;
     if (abc * abd < 0 && cda * cdb < 0) return 1;
     if ((abc == 0 && between_collinear(a, b, c)) ||
@@ -596,6 +605,17 @@ int cm_segments_intersect(const double a[2], const double b[2],
         (cdb == 0 && between_collinear(c, d, b)))
         return 2;
     return 0;
+}
+
+int cm_segments_intersect(const double a[2], const double b[2],
+                          const double c[2], const double d[2])
+{
+    return segments_intersect(a, b, c, d, 0);
+}
+
+int cm_segments_intersect_tame(const double a[2], const double b[2], const double c[2], const double d[2])
+{
+    return segments_intersect(a, b, c, d, 1);
 }
 
 /* ---- polygon orientation --------------------------------------------------- */

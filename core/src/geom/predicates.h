@@ -108,6 +108,12 @@ static inline int cm_orient2d_tame(const double a[2], const double b[2], const d
 #endif
 }
 
+/* cm_orient2d_tame where the points are known tame, else cm_orient2d. */
+static inline int cm_orient2d_either(int tame, const double a[2], const double b[2], const double c[2])
+{
+    return tame ? cm_orient2d_tame(a, b, c) : cm_orient2d(a, b, c);
+}
+
 /* +1 if d lies strictly inside the circle through a, b, c (given
  * counter-clockwise), -1 outside, 0 on it. */
 int cm_incircle(const double a[2], const double b[2], const double c[2],
@@ -118,6 +124,8 @@ int cm_incircle(const double a[2], const double b[2], const double c[2],
  * other segment, or collinear overlap). */
 int cm_segments_intersect(const double a[2], const double b[2],
                           const double c[2], const double d[2]);
+/* The same for tame points (cm_coords_tame). */
+int cm_segments_intersect_tame(const double a[2], const double b[2], const double c[2], const double d[2]);
 
 /* Sign of the signed area of the closed polygon xy[0..n-1] (exact). */
 int cm_polygon_orientation(const double *xy, long n);

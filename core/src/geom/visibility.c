@@ -42,13 +42,13 @@ static int adjacent(long m, long s, long v)
 
 /* Is a wanted vertex strictly between r and l on the chain r, r+1, ..., l
  * (cyclic)? That chain is the pocket beyond the edge from r to l: the only
- * vertices a cone crossing that edge can reach. */
+ * vertices a cone crossing that edge can reach. r and l end a diagonal
+ * (the walk crosses no polygon edge): the chain holds a vertex. */
 static inline int pocket_wanted(const vis_ctx *c, int32_t r, int32_t l)
 {
-    if (!c->want) { /* a wanted vertex: one of lo..m-1 */
-        if (c->lo == 0) return 1;
-        if (r < l) return l - 1 >= (r + 1 > c->lo ? r + 1 : c->lo);
-        return c->m - 1 >= (r + 1 > c->lo ? r + 1 : c->lo) || l - 1 >= c->lo;
+    if (!c->want) { /* a wanted vertex: one of lo..m-1; r < l: l >= r + 2 */
+        if (r < l) return l > c->lo;
+        return (r < c->m - 1 && c->lo < c->m) || l > c->lo; /* r + 1..m - 1, then 0..l - 1 */
     }
     if (r < l) return c->want[l] > c->want[r + 1];
     return c->want[c->m] > c->want[r + 1] || c->want[l] > 0;
@@ -56,8 +56,11 @@ static inline int pocket_wanted(const vis_ctx *c, int32_t r, int32_t l)
 
 static const int next3[3] = {1, 2, 0}, prev3[3] = {2, 0, 1};
 
-static void propagate(const vis_ctx *c, long s, unsigned char *row, long top)
+static void propagate(const vis_ctx *ctx, long s, unsigned char *row, long top)
 {
+    /* a copy: the marks written to row (bytes) could otherwise be the
+     * context's fields for the compiler, read again after each */
+    const vis_ctx cv = *ctx, *c = &cv;
     while (top > 0) {
         crossing x = c->stack[--top];
         long base = x.tz - x.tz % 3, iz = x.tz - base;
@@ -87,8 +90,9 @@ static void propagate(const vis_ctx *c, long s, unsigned char *row, long top)
 }
 
 /* Walks the fan of s counter-clockwise from the triangle holding s -> s+1. */
-static void visible_from(const vis_ctx *c, long s, unsigned char *row)
+static void visible_from(const vis_ctx *ctx, long s, unsigned char *row)
 {
+    const vis_ctx cv = *ctx, *c = &cv; /* as in propagate */
     long top = 0;
     long slot = c->first[s];
     while (slot >= 0) {
@@ -182,25 +186,27 @@ int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned c
 /* ---- the exact segment test ---------------------------------------------- */
 
 /* The sign of the turn at vertex i (the orientation of its corner). */
-static int vertex_turn(const double *xy, long m, long i)
+static int vertex_turn(const double *xy, long m, long i, int tame)
 {
-    return cm_orient2d(xy + 2 * (i > 0 ? i - 1 : m - 1), xy + 2 * i, xy + 2 * (i + 1 < m ? i + 1 : 0));
+    return cm_orient2d_either(tame, xy + 2 * (i > 0 ? i - 1 : m - 1), xy + 2 * i, xy + 2 * (i + 1 < m ? i + 1 : 0));
 }
 
-void cm_vertex_turns(const double *xy, long m, signed char *turn)
+int cm_vertex_turns(const double *xy, long m, signed char *turn)
 {
-    for (long i = 0; i < m; i++) turn[i] = (signed char)vertex_turn(xy, m, i);
+    int tame = cm_coords_tame(xy, 2 * m);
+    for (long i = 0; i < m; i++) turn[i] = (signed char)vertex_turn(xy, m, i, tame);
+    return tame;
 }
 
 /* Does the direction from vertex i, whose turn is `turn`, toward point q
  * leave into the interior? */
-static int leaves_inward(const double *xy, long m, long i, int turn, const double q[2])
+static int leaves_inward(const double *xy, long m, long i, int turn, const double q[2], int tame)
 {
     const double *p = xy + 2 * (i > 0 ? i - 1 : m - 1), *v = xy + 2 * i, *n = xy + 2 * (i + 1 < m ? i + 1 : 0);
-    int left_of_in = cm_orient2d(p, v, q) > 0;
+    int left_of_in = cm_orient2d_either(tame, p, v, q) > 0;
     /* the second side only where it can change the answer */
-    if (turn > 0) return left_of_in && cm_orient2d(v, n, q) > 0;
-    if (turn < 0) return left_of_in || cm_orient2d(v, n, q) > 0;
+    if (turn > 0) return left_of_in && cm_orient2d_either(tame, v, n, q) > 0;
+    if (turn < 0) return left_of_in || cm_orient2d_either(tame, v, n, q) > 0;
     return left_of_in;
 }
 
@@ -213,9 +219,9 @@ static int same_direction(const double a[2], const double b[2], const double w[2
 
 /* The polygon edge from a (a vertex, an end of segment ab) to w may meet
  * ab only at a. */
-static int edge_touches_only_at_end(const double a[2], const double b[2], const double w[2])
+static int edge_touches_only_at_end(const double a[2], const double b[2], const double w[2], int tame)
 {
-    return cm_orient2d(a, b, w) != 0 || !same_direction(a, b, w);
+    return cm_orient2d_either(tame, a, b, w) != 0 || !same_direction(a, b, w);
 }
 
 /* The constant-time conditions of cm_segment_inside: distinct ends, not a
@@ -225,19 +231,19 @@ static int edge_touches_only_at_end(const double a[2], const double b[2], const 
  * neighbours strictly to one side, so neither edge at that end can
  * overlap it. */
 static int ends_inward(const double *xy, long m, const signed char *turn, long ia, const double a[2], long ib,
-                       const double b[2], int *convex)
+                       const double b[2], int *convex, int tame)
 {
     *convex = 0;
     if (a[0] == b[0] && a[1] == b[1]) return 0;
     if (ia >= 0 && ib >= 0 && adjacent(m, ia, ib)) return 0;
     if (ia >= 0) {
-        int t = turn ? turn[ia] : vertex_turn(xy, m, ia);
-        if (!leaves_inward(xy, m, ia, t, b)) return 0;
+        int t = turn ? turn[ia] : vertex_turn(xy, m, ia, tame);
+        if (!leaves_inward(xy, m, ia, t, b, tame)) return 0;
         *convex |= t > 0;
     }
     if (ib >= 0) {
-        int t = turn ? turn[ib] : vertex_turn(xy, m, ib);
-        if (!leaves_inward(xy, m, ib, t, a)) return 0;
+        int t = turn ? turn[ib] : vertex_turn(xy, m, ib, tame);
+        if (!leaves_inward(xy, m, ib, t, a, tame)) return 0;
         *convex |= (t > 0) << 1;
     }
     return 1;
@@ -248,7 +254,7 @@ static int ends_inward(const double *xy, long m, const signed char *turn, long i
  * touching it only there? convex as from ends_inward: those ends' edges
  * need no test. */
 static int edges_clear(const double *xy, long m, long ia, const double a[2], long ib, const double b[2],
-                       long first, long count, int convex)
+                       long first, long count, int convex, int tame)
 {
     /* ab's box: edges entirely to one side of it cannot meet ab (exact
      * comparisons, the test cm_segments_intersect starts with, here
@@ -260,28 +266,29 @@ static int edges_clear(const double *xy, long m, long ia, const double a[2], lon
         long j = i + 1 < m ? i + 1 : 0;
         const double *e0 = xy + 2 * i, *e1 = xy + 2 * j;
         if (ia == i || ia == j) {
-            if (!(convex & 1) && !edge_touches_only_at_end(a, b, ia == i ? e1 : e0)) return 0;
+            if (!(convex & 1) && !edge_touches_only_at_end(a, b, ia == i ? e1 : e0, tame)) return 0;
             continue;
         }
         if (ib == i || ib == j) {
-            if (!(convex & 2) && !edge_touches_only_at_end(b, a, ib == i ? e1 : e0)) return 0;
+            if (!(convex & 2) && !edge_touches_only_at_end(b, a, ib == i ? e1 : e0, tame)) return 0;
             continue;
         }
         if (boxed && ((e0[0] < lo[0] && e1[0] < lo[0]) || (e0[0] > hi[0] && e1[0] > hi[0]) ||
                       (e0[1] < lo[1] && e1[1] < lo[1]) || (e0[1] > hi[1] && e1[1] > hi[1])))
             continue;
-        if (cm_segments_intersect(a, b, e0, e1) != 0) return 0;
+        if ((tame ? cm_segments_intersect_tame(a, b, e0, e1) : cm_segments_intersect(a, b, e0, e1)) != 0) return 0;
     }
     return 1;
 }
 
-int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long ib,
-                      const double b[2])
+static int segment_inside(const double *xy, long m, long ia, const double a[2], long ib, const double b[2],
+                          int tame)
 {
     /* the constant-time conditions first: a segment leaving outward needs
      * no scan */
     int convex;
-    if (!ends_inward(xy, m, NULL, ia, a, ib, b, &convex) || !edges_clear(xy, m, ia, a, ib, b, 0, m, convex))
+    if (!ends_inward(xy, m, NULL, ia, a, ib, b, &convex, tame) ||
+        !edges_clear(xy, m, ia, a, ib, b, 0, m, convex, tame))
         return 0;
     if (ia < 0 && ib < 0) {
         /* No contact with the boundary: inside iff a is inside. */
@@ -289,20 +296,31 @@ int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long
         for (long i = 0; i < m; i++) {
             const double *e0 = xy + 2 * i, *e1 = xy + 2 * (i + 1 < m ? i + 1 : 0);
             int up = e0[1] <= a[1] && e1[1] > a[1], down = e1[1] <= a[1] && e0[1] > a[1];
-            if (up && cm_orient2d(e0, e1, a) > 0) crossings++;
-            if (down && cm_orient2d(e0, e1, a) < 0) crossings++;
+            if (up && cm_orient2d_either(tame, e0, e1, a) > 0) crossings++;
+            if (down && cm_orient2d_either(tame, e0, e1, a) < 0) crossings++;
         }
         return (int)(crossings & 1);
     }
     return 1;
 }
 
-int cm_segment_inside_edges(const double *xy, long m, const signed char *turn, long ia, long ib, long first,
-                            long count)
+int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long ib, const double b[2])
+{
+    return segment_inside(xy, m, ia, a, ib, b, 0);
+}
+
+int cm_segment_inside_tame(const double *xy, long m, long ia, const double a[2], long ib, const double b[2])
+{
+    return segment_inside(xy, m, ia, a, ib, b, 1);
+}
+
+int cm_segment_inside_edges(const double *xy, long m, const signed char *turn, int tame, long ia, long ib,
+                            long first, long count)
 {
     const double *a = xy + 2 * ia, *b = xy + 2 * ib;
     int convex;
-    return ends_inward(xy, m, turn, ia, a, ib, b, &convex) && edges_clear(xy, m, ia, a, ib, b, first, count, convex);
+    return ends_inward(xy, m, turn, ia, a, ib, b, &convex, tame) &&
+           edges_clear(xy, m, ia, a, ib, b, first, count, convex, tame);
 }
 
 /* ---- the kernel ----------------------------------------------------------- */
@@ -311,10 +329,14 @@ int cm_segment_inside_edges(const double *xy, long m, const signed char *turn, l
 static long clip_half_plane(const double *in, long n, const double *a, const double *b, double *out)
 {
     long count = 0;
+    if (n <= 0) return 0;
+    /* each point's side once: the next edge's start is this one's end (the
+     * same operands, the same double) */
+    double s0 = (b[0] - a[0]) * (in[1] - a[1]) - (b[1] - a[1]) * (in[0] - a[0]), sq = s0;
     for (long i = 0; i < n; i++) {
         const double *p = in + 2 * i, *q = in + 2 * (i + 1 < n ? i + 1 : 0);
-        double sp = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
-        double sq = (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]);
+        double sp = sq;
+        sq = i + 1 < n ? (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]) : s0;
         if (sp >= 0) out[2 * count] = p[0], out[2 * count + 1] = p[1], count++;
         if ((sp >= 0) != (sq >= 0)) {
             double t = sp / (sp - sq);

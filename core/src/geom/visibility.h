@@ -42,16 +42,20 @@ void cm_visrows_free(cm_visrows *v);
  * (b) is a point that must itself lie strictly inside. Exact, O(m). */
 int cm_segment_inside(const double *xy, long m, long ia, const double a[2], long ib,
                       const double b[2]);
+/* The same when xy, a and b are all tame (cm_coords_tame). */
+int cm_segment_inside_tame(const double *xy, long m, long ia, const double a[2], long ib, const double b[2]);
 /* The same for the segment between vertices ia and ib when only the edges
  * first .. first + count - 1 (cyclic; edge i from vertex i to i + 1) can
  * meet it, the others known to miss the open segment and to touch it at
  * most at its ends: the end directions and those edges are tested (all m
  * edges from 0: the full test). turn: the vertices' turns from
- * cm_vertex_turns, or NULL to compute the two needed. Exact, O(count). */
-int cm_segment_inside_edges(const double *xy, long m, const signed char *turn, long ia, long ib, long first,
-                            long count);
-/* turn[i]: the sign of the orientation of the corner at vertex i (exact). */
-void cm_vertex_turns(const double *xy, long m, signed char *turn);
+ * cm_vertex_turns, or NULL to compute the two needed; tame: what
+ * cm_vertex_turns returned (or 0). Exact, O(count). */
+int cm_segment_inside_edges(const double *xy, long m, const signed char *turn, int tame, long ia, long ib,
+                            long first, long count);
+/* turn[i]: the sign of the orientation of the corner at vertex i (exact).
+ * Returns 1 if every coordinate is tame (cm_coords_tame), else 0. */
+int cm_vertex_turns(const double *xy, long m, signed char *turn);
 
 /* A point strictly inside the kernel of the simple counter-clockwise
  * polygon xy[0..m-1] (the points that see the whole polygon), found by
