@@ -317,6 +317,18 @@ int cm_kmesh_allow_boundary_splits(cm_kmesh *km, cm_kmesh_between between, void 
     return 0;
 }
 
+int cm_kmesh_corners_near(const cm_kmesh *km, int32_t t, int32_t out[12])
+{
+    int m = 0;
+    for (int32_t c = 3 * t; c < 3 * t + 3; c++) out[m++] = c;
+    for (int32_t c = 3 * t; c < 3 * t + 3; c++) {
+        int32_t o = km->opp[c];
+        if (o < 0) continue;
+        for (int32_t d = 3 * (o / 3); d < 3 * (o / 3) + 3; d++) out[m++] = d;
+    }
+    return m;
+}
+
 void cm_kmesh_drop_candidates(cm_kmesh *km)
 {
     while (cm_heap_pop(&km->eq) >= 0) {}

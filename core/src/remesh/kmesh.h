@@ -204,6 +204,10 @@ int cm_kmesh_check(const cm_kmesh *km);
 /* A fresh value for km->mark[v] == stamp tests (vertex sets). */
 uint32_t cm_kmesh_new_stamp(cm_kmesh *km);
 
+/* Writes the corners of triangle t and of its neighbours (up to 12) to
+ * out: where moves around t start. Returns how many. */
+int cm_kmesh_corners_near(const cm_kmesh *km, int32_t t, int32_t out[12]);
+
 /* Smallest slack over live triangles (radians), pi when empty. */
 double cm_kmesh_min_slack(const cm_kmesh *km);
 /* Smallest angle over all triangles and geometries (radians); O(t). */

@@ -324,23 +324,41 @@ static cm_status polish_geometry(soft *s, size_t g, double *xy, size_t nt, size_
     return better < 0 ? (cm_status)-better : CM_OK;
 }
 
+/* The work arrays of a polish: slots for nv vertices (all -1), nvar
+ * variables (slid along an edge when `sliding`), ntris moving triangles.
+ * 0, or -1 out of memory (what was made is freed by soft_free). */
+static int soft_alloc(soft *s, size_t nv, size_t nvar, size_t ntris, int sliding)
+{
+    s->slot = malloc(nv * sizeof *s->slot);
+    s->var = malloc(nvar * sizeof *s->var);
+    s->off = malloc(nvar * sizeof *s->off);
+    s->edge = malloc(nvar * sizeof *s->edge);
+    s->along = sliding ? malloc(3 * nvar * sizeof *s->along) : NULL;
+    s->pos = malloc(2 * nvar * sizeof *s->pos);
+    s->gpos = malloc(2 * nvar * sizeof *s->gpos);
+    s->moved = malloc(ntris * sizeof *s->moved);
+    s->angle = malloc(3 * ntris * sizeof *s->angle);
+    s->tmin = malloc(ntris * sizeof *s->tmin);
+    s->hot = malloc(ntris * sizeof *s->hot);
+    if (!s->slot || !s->var || !s->off || !s->edge || (sliding && !s->along) || !s->pos || !s->gpos || !s->moved ||
+        !s->angle || !s->tmin || !s->hot)
+        return -1;
+    for (size_t v = 0; v < nv; v++) s->slot[v] = -1;
+    return 0;
+}
+
+static void soft_free(soft *s)
+{
+    free(s->slot), free(s->var), free(s->off), free(s->edge), free(s->along), free(s->pos), free(s->gpos);
+    free(s->moved), free(s->angle), free(s->tmin), free(s->hot);
+}
+
 int cm_maxmin_local(const int32_t *tri, const double *xy, size_t nv, const int32_t *var, size_t nvar,
                     const int32_t *tris, size_t ntris, int max_iterations, cm_progress *progress, double *out)
 {
     soft s = {.xy = xy, .tri = tri, .progress = progress, .rest = HUGE_VAL};
-    s.slot = malloc(nv * sizeof *s.slot);
-    s.var = malloc(nvar * sizeof *s.var);
-    s.off = malloc(nvar * sizeof *s.off);
-    s.edge = malloc(nvar * sizeof *s.edge);
-    s.pos = malloc(2 * nvar * sizeof *s.pos);
-    s.gpos = malloc(2 * nvar * sizeof *s.gpos);
-    s.moved = malloc(ntris * sizeof *s.moved);
-    s.angle = malloc(3 * ntris * sizeof *s.angle);
-    s.tmin = malloc(ntris * sizeof *s.tmin);
-    s.hot = malloc(ntris * sizeof *s.hot);
     int result = -CM_ERR_NO_MEMORY;
-    if (s.slot && s.var && s.off && s.edge && s.pos && s.gpos && s.moved && s.angle && s.tmin && s.hot) {
-        for (size_t v = 0; v < nv; v++) s.slot[v] = -1;
+    if (soft_alloc(&s, nv, nvar, ntris, 0) == 0) {
         for (size_t j = 0; j < nvar; j++) add_variable(&s, var[j], 0);
         double least = HUGE_VAL;
         for (size_t i = 0; i < ntris; i++) {
@@ -352,8 +370,7 @@ int cm_maxmin_local(const int32_t *tri, const double *xy, size_t nv, const int32
         if (result > 0) memcpy(out, s.pos, 2 * nvar * sizeof *out);
         lbfgs_free(s.best_x);
     }
-    free(s.slot), free(s.var), free(s.off), free(s.edge), free(s.pos), free(s.gpos);
-    free(s.moved), free(s.angle), free(s.tmin), free(s.hot);
+    soft_free(&s);
     return result;
 }
 
@@ -391,30 +408,17 @@ cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, cm_maxmin_slide *slide, int
     if (nt == 0 || max_iterations <= 0) return CM_OK;
     soft s = {.tri = mesh->tri, .slide = slide, .progress = progress};
     int32_t *links = slide && slide->max_piece > 0 ? malloc(2 * nb * sizeof *links) : NULL;
-    s.slot = malloc(nv * sizeof *s.slot);
-    s.var = malloc(nv * sizeof *s.var);
-    s.off = malloc(nv * sizeof *s.off);
-    s.edge = malloc(nv * sizeof *s.edge);
-    s.along = malloc(3 * nv * sizeof *s.along);
-    s.pos = malloc(2 * nv * sizeof *s.pos);
-    s.gpos = malloc(2 * nv * sizeof *s.gpos);
-    s.moved = malloc(nt * sizeof *s.moved);
-    s.angle = malloc(3 * nt * sizeof *s.angle);
-    s.tmin = malloc(nt * sizeof *s.tmin);
-    s.hot = malloc(nt * sizeof *s.hot);
-    cm_status status = s.slot && s.var && s.off && s.edge && s.along && s.pos && s.gpos && s.moved && s.angle &&
-                               s.tmin && s.hot && (links || !(slide && slide->max_piece > 0))
+    cm_status status = soft_alloc(&s, nv, nv, nt, 1) == 0 && (links || !(slide && slide->max_piece > 0))
                            ? CM_OK
                            : CM_ERR_NO_MEMORY;
     if (status == CM_OK && links) {
         s.next = links, s.prev = links + nb;
         if (boundary_neighbours(mesh->tri, nt, nb, links, links + nb)) status = CM_ERR_NO_MEMORY;
     }
-    for (size_t v = 0; status == CM_OK && v < nv; v++) s.slot[v] = -1;
     for (size_t g = 0; status == CM_OK && g < mesh->k; g++)
         status = polish_geometry(&s, g, mesh->xy[g], nt, nb, max_iterations);
     if (slide) slide->slid = s.slid;
-    free(links), free(s.slot), free(s.var), free(s.off), free(s.edge), free(s.along), free(s.pos), free(s.gpos);
-    free(s.moved), free(s.angle), free(s.tmin), free(s.hot);
+    free(links);
+    soft_free(&s);
     return status;
 }

@@ -232,19 +232,6 @@ static int try_move(mover *x, enum pmove kind, int32_t c, double least)
     return cm_kmesh_tx_rollback(km) ? -1 : 0;
 }
 
-/* The corners of triangle t and of its neighbours (up to 12). */
-static int corners_near(const cm_kmesh *km, int32_t t, int32_t *out)
-{
-    int m = 0;
-    for (int32_t c = 3 * t; c < 3 * t + 3; c++) out[m++] = c;
-    for (int32_t c = 3 * t; c < 3 * t + 3; c++) {
-        int32_t o = km->opp[c];
-        if (o < 0) continue;
-        for (int32_t d = 3 * (o / 3); d < 3 * (o / 3) + 3; d++) out[m++] = d;
-    }
-    return m;
-}
-
 static int tries_left(long tries, long idle, long max_tries)
 {
     return tries < max_tries && idle < CM_PMOVE_IDLE;
@@ -261,7 +248,7 @@ long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_progres
         int gained = 0;
         for (int32_t i = 0; i < nw && !gained && tries_left(tries, idle, max_tries); i++) {
             if (!cm_kmesh_tri_live(km, worst[i])) continue;
-            int m = corners_near(km, worst[i], near);
+            int m = cm_kmesh_corners_near(km, worst[i], near);
             for (int kind = 0; kind < PM_KINDS && !gained && tries_left(tries, idle, max_tries); kind++) {
                 int adds = kind == PM_SPLIT || kind == PM_INSERT;
                 if (adds && steiner_left <= 0) continue;

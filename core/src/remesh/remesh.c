@@ -600,19 +600,6 @@ static uint64_t forced_key(const cm_kmesh *km, enum forced_move kind, int32_t c)
     return ((uint64_t)kind << 62 | a << 31 | b) + 1;
 }
 
-/* The corners of triangle t and of its neighbours (up to 12). */
-static int corners_near(const cm_kmesh *km, int32_t t, int32_t *out)
-{
-    int m = 0;
-    for (int32_t c = 3 * t; c < 3 * t + 3; c++) out[m++] = c;
-    for (int32_t c = 3 * t; c < 3 * t + 3; c++) {
-        int32_t o = km->opp[c];
-        if (o < 0) continue;
-        for (int32_t d = 3 * (o / 3); d < 3 * (o / 3) + 3; d++) out[m++] = d;
-    }
-    return m;
-}
-
 static int grow_changed(failed_moves *f, size_t need)
 {
     size_t old = f->cap;
@@ -699,7 +686,7 @@ static cm_status step_out(remesher *x, size_t n, int32_t window, long max_tries)
          * and the two corners of one edge, name the same move again. */
         for (int32_t i = 0; i < nw && !gained && tries < max_tries; i++) {
             if (!cm_kmesh_tri_live(km, worst[i])) continue;
-            int m = corners_near(km, worst[i], near);
+            int m = cm_kmesh_corners_near(km, worst[i], near);
             for (int kind = 0; kind < FORCED_MOVES && !gained; kind++) {
                 if ((kind == FORCED_SPLIT || kind == FORCED_INSERT) && km->live_v - km->n >= budget) continue;
                 if (kind == FORCED_INSERT && x->o->remesher != CM_REMESHER_MAP) continue;
