@@ -54,6 +54,7 @@
 #include "geom/predicates.h"
 #include "construct/steinerfree.h"
 #include "geom/visibility.h"
+#include "base/cycle.h"
 
 /* Beyond this, the dynamic program's O(m (m + c)) work is skipped. */
 #define DP_WORK_LIMIT 6e7
@@ -950,7 +951,7 @@ static int half_diagonals(const face_ctx *f, size_t g, long from, long nc, const
             if (seen && inner) {
                 for (long e = nc - 1; seen && e < size; e++) /* the path's links */
                     seen = (tame ? cm_segments_intersect_tame : cm_segments_intersect)(
-                               h + 2 * i, h + 2 * j, h + 2 * e, h + 2 * (e + 1 < size ? e + 1 : 0)) == 0;
+                               h + 2 * i, h + 2 * j, h + 2 * e, h + 2 * cm_cycle_next(e, size)) == 0;
             } else if (seen && chain && !(i == 0 && j == nc - 1)) {
                 /* one end is an end of P: a diagonal of the face, so only
                  * P's links (edges nc - 1 .. size - 1) and that end's new
@@ -1013,7 +1014,7 @@ static long cut_cost(face_ctx *f, const pair *pr, double **bends, const long *pi
         long size = (to - from + m) % m + 1 + nb;
         for (size_t g = 0; g < k; g++) {
             long n = 0;
-            for (long x = from;; x = x + 1 < m ? x + 1 : 0) {
+            for (long x = from;; x = cm_cycle_next(x, m)) {
                 xy[g][2 * n] = f->l[g][2 * x], xy[g][2 * n + 1] = f->l[g][2 * x + 1], n++;
                 if (x == to) break;
             }
@@ -1040,7 +1041,7 @@ static double free_run(const double *xy, long m, const double p[2], const double
 {
     double best = INFINITY;
     for (long i = 0; i < m; i++) {
-        const double *a = xy + 2 * i, *b = xy + 2 * (i + 1 < m ? i + 1 : 0);
+        const double *a = xy + 2 * i, *b = xy + 2 * cm_cycle_next(i, m);
         double ex = b[0] - a[0], ey = b[1] - a[1], den = dir[0] * ey - dir[1] * ex;
         if (den == 0) continue;
         double t = ((a[0] - p[0]) * ey - (a[1] - p[1]) * ex) / den;

@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "base/buf.h"
+#include "base/cycle.h"
 #include "geom/predicates.h"
 
 typedef struct { long cost; double q; } val;
@@ -642,8 +643,8 @@ static int build_fans(dp *d)
     for (long v = 0; d->nfans && v < m; v++) {
         d->facing[v] = d->row_fans[0];
         for (size_t g = 0; g < d->k; g++) {
-            const double *p = d->xy[g] + 2 * (v > 0 ? v - 1 : m - 1), *q = d->xy[g] + 2 * v;
-            const double *r = d->xy[g] + 2 * (v + 1 < m ? v + 1 : 0);
+            const double *p = d->xy[g] + 2 * cm_cycle_prev(v, m), *q = d->xy[g] + 2 * v;
+            const double *r = d->xy[g] + 2 * cm_cycle_next(v, m);
             if (orient(d, p, q, r) <= 0) continue;
             for (size_t x = 0; x < d->nfans; x++) {
                 const double *fx = d->fans + 2 * (x * d->k + g);

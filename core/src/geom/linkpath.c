@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/cycle.h"
 #include "geom/angle.h"
 #include "geom/predicates.h"
 #include "geom/visibility.h"
@@ -163,7 +164,7 @@ static long add_pocket(cm_linkpart *lp, long *ids, long k, int level, long paren
 /* The constructed point on polygon edge e -> e+1 where line(a, b) meets it. */
 static long add_hit_point(cm_linkpart *lp, long a, long b, long e)
 {
-    long id = cm_xpool_intersect(lp->pool, a, b, e, e + 1 < lp->m ? e + 1 : 0);
+    long id = cm_xpool_intersect(lp->pool, a, b, e, cm_cycle_next(e, lp->m));
     if (id < 0) return id;
     long slot = id - lp->m;
     if (slot >= lp->nsupport) {
@@ -215,7 +216,7 @@ static int beyond(cm_xpool *pool, long la, long lb, long x) { return past(pool, 
  * would cross the pocket's window or its source. */
 static int append_chain(const pocket *p, long from, long to, long *list, long *count)
 {
-    for (long i = from;; i = i + 1 < p->k ? i + 1 : 0) {
+    for (long i = from;; i = cm_cycle_next(i, p->k)) {
         if (p->source >= 0 && i == p->source) return 0;
         list[(*count)++] = i;
         if (i == to) return 1;
@@ -301,7 +302,7 @@ static int leave_vertex(tracer *tr, long *t, long *r, long *l, long *hit)
 static int continues_past(const cm_linkpart *lp, long P, long w, long behind)
 {
     const pocket *p = &lp->pk[P];
-    long wp = p->ids[w > 0 ? w - 1 : p->k - 1], wv = p->ids[w], wn = p->ids[w + 1 < p->k ? w + 1 : 0];
+    long wp = p->ids[cm_cycle_prev(w, p->k)], wv = p->ids[w], wn = p->ids[cm_cycle_next(w, p->k)];
     int turn = orient(lp, wp, wv, wn);
     int in_left = orient(lp, wp, wv, behind) < 0, out_left = orient(lp, wv, wn, behind) < 0;
     if (turn > 0) return in_left && out_left;
@@ -316,7 +317,7 @@ static int pass_vertex(tracer *tr, long w)
 {
     pocket *p = tr_pocket(tr);
     if (!continues_past(tr->lp, tr->P, w, tr->lb)) return emit_window(tr, w, -1);
-    long wp = p->ids[w > 0 ? w - 1 : p->k - 1];
+    long wp = p->ids[cm_cycle_prev(w, p->k)];
     if (orient(tr->lp, tr->lb, p->ids[w], wp) == tr->side) {
         if (emit_window(tr, w, -1) < 0) return -1;
         tr->start = w;
@@ -377,7 +378,7 @@ static int trace(cm_linkpart *lp, long P, long i, long back, int side)
 static int window_side(const cm_linkpart *lp, long P, long i, long back, int want)
 {
     const pocket *p = &lp->pk[P];
-    long u = p->ids[i], nb[2] = {p->ids[i > 0 ? i - 1 : p->k - 1], p->ids[i + 1 < p->k ? i + 1 : 0]};
+    long u = p->ids[i], nb[2] = {p->ids[cm_cycle_prev(i, p->k)], p->ids[cm_cycle_next(i, p->k)]};
     int side = 0;
     for (int j = 0; j < 2; j++) {
         int o = orient(lp, back, u, nb[j]);
@@ -422,7 +423,7 @@ static int open_grazing_windows(cm_linkpart *lp, long P, long i)
     long ends[2], nends = 0;
     if (p->source >= 0) ends[nends++] = p->ids[p->source];
     else ends[nends++] = p->ids[0], ends[nends++] = p->ids[p->k - 1];
-    long u = p->ids[i], nb[2] = {p->ids[i > 0 ? i - 1 : p->k - 1], p->ids[i + 1 < p->k ? i + 1 : 0]};
+    long u = p->ids[i], nb[2] = {p->ids[cm_cycle_prev(i, p->k)], p->ids[cm_cycle_next(i, p->k)]};
     for (long e = 0; e < nends; e++) {
         if (ends[e] == u) continue;
         if (!behind_on_segment(lp, ends[e], u, nb[0]) && !behind_on_segment(lp, ends[e], u, nb[1]))
@@ -882,7 +883,7 @@ static double ray_free(const cm_linkpart *lp, const double p[2], const double di
 {
     double best = INFINITY;
     for (long i = 0; i < lp->m; i++) {
-        const double *a = lp->xy + 2 * i, *b = lp->xy + 2 * (i + 1 < lp->m ? i + 1 : 0);
+        const double *a = lp->xy + 2 * i, *b = lp->xy + 2 * cm_cycle_next(i, lp->m);
         double ex = b[0] - a[0], ey = b[1] - a[1];
         double den = dir[0] * ey - dir[1] * ex;
         if (den == 0) continue;

@@ -16,6 +16,7 @@
  * comparison that returns "on the line". */
 #include "geom/polygon_check.h"
 
+#include "base/cycle.h"
 #include "geom/predicates.h"
 
 #include <stdint.h>
@@ -51,12 +52,12 @@ static const double *vertex_at(const scanline *sw, long v)
 
 static long succ_of(const scanline *sw, long v)
 {
-    return sw->succ ? sw->succ[v] : v + 1 < sw->n ? v + 1 : 0;
+    return sw->succ ? sw->succ[v] : cm_cycle_next(v, sw->n);
 }
 
 static long pred_of(const scanline *sw, long v)
 {
-    return sw->pred ? sw->pred[v] : v > 0 ? v - 1 : sw->n - 1;
+    return sw->pred ? sw->pred[v] : cm_cycle_prev(v, sw->n);
 }
 
 static const double *edge_start(const scanline *sw, long e)

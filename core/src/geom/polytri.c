@@ -10,6 +10,7 @@
 #include "geom/polytri.h"
 #include "base/progress.h"
 #include "geom/predicates.h"
+#include "base/cycle.h"
 
 #define P(v) (xy + 2 * (size_t)(v))
 
@@ -130,8 +131,8 @@ static int clip_ears(const double *xy, const int32_t *idx, long m, int32_t *tri,
     long reflex = 0;
     if (!r.prev || !r.next || !r.convex || !r.ear || !r.cells) goto done;
     for (long i = 0; i < m; i++) {
-        r.prev[i] = i > 0 ? i - 1 : m - 1;
-        r.next[i] = i + 1 < m ? i + 1 : 0;
+        r.prev[i] = cm_cycle_prev(i, m);
+        r.next[i] = cm_cycle_next(i, m);
         for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], P(idx[i])[c]), hi[c] = fmax(hi[c], P(idx[i])[c]);
     }
     r.tame = 1;

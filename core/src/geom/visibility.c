@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/cycle.h"
 #include "geom/pointgrid.h"
 #include "geom/polytri.h"
 #include "geom/predicates.h"
@@ -37,7 +38,7 @@ typedef struct {
 
 static int adjacent(long m, long s, long v)
 {
-    return v == (s + 1 < m ? s + 1 : 0) || s == (v + 1 < m ? v + 1 : 0);
+    return v == cm_cycle_next(s, m) || s == cm_cycle_next(v, m);
 }
 
 /* Is a wanted vertex strictly between r and l on the chain r, r+1, ..., l
@@ -188,7 +189,7 @@ int cm_visibility_table(const double *xy, long m, const int32_t *tri, unsigned c
 /* The sign of the turn at vertex i (the orientation of its corner). */
 static int vertex_turn(const double *xy, long m, long i, int tame)
 {
-    return cm_orient2d_either(tame, xy + 2 * (i > 0 ? i - 1 : m - 1), xy + 2 * i, xy + 2 * (i + 1 < m ? i + 1 : 0));
+    return cm_orient2d_either(tame, xy + 2 * cm_cycle_prev(i, m), xy + 2 * i, xy + 2 * cm_cycle_next(i, m));
 }
 
 int cm_vertex_turns(const double *xy, long m, signed char *turn)
@@ -202,7 +203,7 @@ int cm_vertex_turns(const double *xy, long m, signed char *turn)
  * leave into the interior? */
 static int leaves_inward(const double *xy, long m, long i, int turn, const double q[2], int tame)
 {
-    const double *p = xy + 2 * (i > 0 ? i - 1 : m - 1), *v = xy + 2 * i, *n = xy + 2 * (i + 1 < m ? i + 1 : 0);
+    const double *p = xy + 2 * cm_cycle_prev(i, m), *v = xy + 2 * i, *n = xy + 2 * cm_cycle_next(i, m);
     int left_of_in = cm_orient2d_either(tame, p, v, q) > 0;
     /* the second side only where it can change the answer */
     if (turn > 0) return left_of_in && cm_orient2d_either(tame, v, n, q) > 0;
@@ -262,8 +263,8 @@ static int edges_clear(const double *xy, long m, long ia, const double a[2], lon
     const double lo[2] = {a[0] < b[0] ? a[0] : b[0], a[1] < b[1] ? a[1] : b[1]};
     const double hi[2] = {a[0] < b[0] ? b[0] : a[0], a[1] < b[1] ? b[1] : a[1]};
     int boxed = a[0] == a[0] && a[1] == a[1] && b[0] == b[0] && b[1] == b[1];
-    for (long c = 0, i = first; c < count; c++, i = i + 1 < m ? i + 1 : 0) {
-        long j = i + 1 < m ? i + 1 : 0;
+    for (long c = 0, i = first; c < count; c++, i = cm_cycle_next(i, m)) {
+        long j = cm_cycle_next(i, m);
         const double *e0 = xy + 2 * i, *e1 = xy + 2 * j;
         if (ia == i || ia == j) {
             if (!(convex & 1) && !edge_touches_only_at_end(a, b, ia == i ? e1 : e0, tame)) return 0;
@@ -294,7 +295,7 @@ static int segment_inside(const double *xy, long m, long ia, const double a[2], 
         /* No contact with the boundary: inside iff a is inside. */
         long crossings = 0;
         for (long i = 0; i < m; i++) {
-            const double *e0 = xy + 2 * i, *e1 = xy + 2 * (i + 1 < m ? i + 1 : 0);
+            const double *e0 = xy + 2 * i, *e1 = xy + 2 * cm_cycle_next(i, m);
             int up = e0[1] <= a[1] && e1[1] > a[1], down = e1[1] <= a[1] && e0[1] > a[1];
             if (up && cm_orient2d_either(tame, e0, e1, a) > 0) crossings++;
             if (down && cm_orient2d_either(tame, e0, e1, a) < 0) crossings++;
@@ -334,7 +335,7 @@ static long clip_half_plane(const double *in, long n, const double *a, const dou
      * same operands, the same double) */
     double s0 = (b[0] - a[0]) * (in[1] - a[1]) - (b[1] - a[1]) * (in[0] - a[0]), sq = s0;
     for (long i = 0; i < n; i++) {
-        const double *p = in + 2 * i, *q = in + 2 * (i + 1 < n ? i + 1 : 0);
+        const double *p = in + 2 * i, *q = in + 2 * cm_cycle_next(i, n);
         double sp = sq;
         sq = i + 1 < n ? (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]) : s0;
         if (sp >= 0) out[2 * count] = p[0], out[2 * count + 1] = p[1], count++;
@@ -362,7 +363,7 @@ int cm_kernel_point(const double *xy, long m, double out[2])
     memcpy(a, box, sizeof box);
     long n = 4;
     for (long i = 0; i < m && n >= 3; i++) {
-        n = clip_half_plane(a, n, xy + 2 * i, xy + 2 * (i + 1 < m ? i + 1 : 0), b);
+        n = clip_half_plane(a, n, xy + 2 * i, xy + 2 * cm_cycle_next(i, m), b);
         double *t = a;
         a = b, b = t;
     }
@@ -371,7 +372,7 @@ int cm_kernel_point(const double *xy, long m, double out[2])
         /* area centroid: inside the kernel even when it is thin */
         double area = 0, cx = 0, cy = 0;
         for (long i = 0; i < n; i++) {
-            const double *p = a + 2 * i, *q = a + 2 * (i + 1 < n ? i + 1 : 0);
+            const double *p = a + 2 * i, *q = a + 2 * cm_cycle_next(i, n);
             double w = p[0] * q[1] - q[0] * p[1];
             area += w, cx += (p[0] + q[0]) * w, cy += (p[1] + q[1]) * w;
         }
@@ -379,7 +380,7 @@ int cm_kernel_point(const double *xy, long m, double out[2])
             out[0] = cx / (3 * area), out[1] = cy / (3 * area);
             found = 1;
             for (long i = 0; i < m && found; i++)
-                found = cm_orient2d(xy + 2 * i, xy + 2 * (i + 1 < m ? i + 1 : 0), out) > 0;
+                found = cm_orient2d(xy + 2 * i, xy + 2 * cm_cycle_next(i, m), out) > 0;
         }
     }
     free(block);
