@@ -374,15 +374,13 @@ static int memo_matches(const cm_conformal_memo *memo, const double *const *poly
     return 1;
 }
 
-/* Copies between the memo's arrays and the caller's: to the caller when
- * recall, else into the memo. */
-static void memo_copy(cm_conformal_memo *memo, const double *const *polygons, double *const *params,
-                      double *const *fine, int recall)
+/* Copies the parameters between the memo and the caller: to the caller
+ * when recall, else into the memo. */
+static void memo_copy(cm_conformal_memo *memo, double *const *params, double *const *fine, int recall)
 {
     for (size_t g = 0, at = 0; g < memo->k; at += memo->counts[g], g++) {
         size_t c = memo->counts[g], fine_at = (at - memo->counts[0]) * CM_PARAM_FINE;
         double *kept = memo->params + at, *kept_fine = g ? memo->fine + fine_at : NULL;
-        if (!recall) memcpy(memo->xy + 2 * at, polygons[g], 2 * c * sizeof *memo->xy);
         memcpy(recall ? params[g] : kept, recall ? kept : params[g], c * sizeof *kept);
         if (g) memcpy(recall ? fine[g] : kept_fine, recall ? kept_fine : fine[g], c * CM_PARAM_FINE * sizeof *kept);
     }
@@ -407,10 +405,9 @@ static void memo_store(cm_conformal_memo *memo, const double *const *polygons, c
     memcpy(memo->counts, counts, k * sizeof *counts);
     memcpy(memo->orientation, orientation, k * sizeof *orientation);
     memo->k = k, memo->total = total, memo->found = found;
-    if (found) memo_copy(memo, polygons, params, fine, 0);
-    else
-        for (size_t g = 0, at = 0; g < k; at += counts[g], g++)
-            memcpy(memo->xy + 2 * at, polygons[g], 2 * counts[g] * sizeof *memo->xy);
+    for (size_t g = 0, at = 0; g < k; at += counts[g], g++)
+        memcpy(memo->xy + 2 * at, polygons[g], 2 * counts[g] * sizeof *memo->xy);
+    if (found) memo_copy(memo, params, fine, 0);
     memo->held = 1;
 }
 
@@ -420,7 +417,7 @@ cm_status cm_correspond_conformal_memo(cm_conformal_memo *memo, const double *co
 {
     if (memo && fine && k && memo_matches(memo, polygons, counts, k, orientation)) {
         *found = memo->found;
-        if (*found) memo_copy(memo, polygons, params, fine, 1);
+        if (*found) memo_copy(memo, params, fine, 1);
         return CM_OK;
     }
     cm_status s = cm_correspond_conformal(polygons, counts, k, orientation, params, fine, found, err);
