@@ -50,9 +50,9 @@ static void laplacian_target(const ring *r, double out[2])
 }
 
 /* Each neighbour p_i rotates the edge p_i -> v onto the bisector of the
- * link polygon's angle at p_i; the average of the rotated points, weighted
- * by 1 / alpha_i^2 when `weighted`. */
-static int angle_target(const ring *r, int weighted, double out[2])
+ * link polygon's angle alpha_i at p_i; the average of the rotated points,
+ * weighted by 1 / alpha_i^power (eq. 1: power 0; eq. 2: power 2). */
+static int angle_target(const ring *r, double power, double out[2])
 {
     const double *c = r->c;
     double x = 0, y = 0, wsum = 0;
@@ -63,7 +63,9 @@ static int angle_target(const ring *r, int weighted, double out[2])
         double a1 = atan2(nx * dy - ny * dx, nx * dx + ny * dy); /* from p_{i+1} to v */
         double a2 = atan2(dx * qy - dy * qx, dx * qx + dy * qy); /* from v to p_{i-1} */
         double beta = 0.5 * (a2 - a1), alpha = a1 + a2;
-        double w = weighted ? 1.0 / fmax(alpha * alpha, 1e-12) : 1.0;
+        double w = power == 0   ? 1.0
+                   : power == 2 ? 1.0 / fmax(alpha * alpha, 1e-12)
+                                : 1.0 / fmax(pow(fabs(alpha), power), 1e-12);
         double cb = cos(beta), sb = sin(beta);
         x += w * (p[0] + cb * dx - sb * dy);
         y += w * (p[1] + sb * dx + cb * dy);
@@ -80,7 +82,7 @@ static int target_of(const ring *r, cm_smoothing method, double out[2])
     case CM_SMOOTH_LAPLACIAN: laplacian_target(r, out); return 0;
     case CM_SMOOTH_ANGLE: return angle_target(r, 0, out);
     case CM_SMOOTH_WEIGHTED:
-    case CM_SMOOTH_COMBINED: return angle_target(r, 1, out);
+    case CM_SMOOTH_COMBINED: return angle_target(r, 2, out);
     }
     return -1;
 }
@@ -277,13 +279,28 @@ int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *st
     return 1;
 }
 
-long cm_smooth_pass(cm_kmesh *km, cm_smoothing method, int smart)
+/* A plain move of interior live v in geometry g to the angle-based target
+ * with weights 1 / alpha_i^power. Returns 1 moved, 0 not, -1 out of memory. */
+static int smooth_power(cm_kmesh *km, size_t g, int32_t v, double power, cm_ibuf *star)
+{
+    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0) return 0;
+    long m = cm_kmesh_star(km, v, star);
+    if (m < 0) return m == -1 ? -1 : 0;
+    ring r;
+    double q[2];
+    if (ring_of(km, g, v, star, &r) || angle_target(&r, power, q)) return 0;
+    return try_move(km, g, v, star, &r, q, 0, 0);
+}
+
+/* One sweep: method (smart or not), or, with power >= 0, smooth_power. */
+static long sweep(cm_kmesh *km, cm_smoothing method, int smart, double power)
 {
     cm_ibuf star = {0};
     long moves = 0;
     for (int32_t v = km->n; v < km->nv; v++)
         for (size_t g = 0; g < km->k && km->vc[v] >= 0; g++) {
-            int s = cm_smooth_vertex(km, g, v, method, smart, &star);
+            int s = power >= 0 ? smooth_power(km, g, v, power, &star)
+                               : cm_smooth_vertex(km, g, v, method, smart, &star);
             if (s < 0) {
                 cm_ibuf_free(&star);
                 return -1;
@@ -293,3 +310,7 @@ long cm_smooth_pass(cm_kmesh *km, cm_smoothing method, int smart)
     cm_ibuf_free(&star);
     return moves;
 }
+
+long cm_smooth_pass(cm_kmesh *km, cm_smoothing method, int smart) { return sweep(km, method, smart, -1); }
+
+long cm_smooth_pass_power(cm_kmesh *km, double power) { return sweep(km, CM_SMOOTH_WEIGHTED, 0, power); }

@@ -31,5 +31,10 @@ int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *st
 /* One sweep over all Steiner vertices in every geometry. Returns the number
  * of moves, -1 out of memory. */
 long cm_smooth_pass(cm_kmesh *km, cm_smoothing method, int smart);
+/* One sweep of plain moves to the angle-based target with weights
+ * 1 / alpha_i^power, alpha_i the link polygon's angle at neighbour i
+ * (power 0: eq. 1, 2: eq. 2), for bench/table1.c's study of the weights.
+ * Returns the number of moves, -1 out of memory. */
+long cm_smooth_pass_power(cm_kmesh *km, double power);
 
 #endif
