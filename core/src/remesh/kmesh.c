@@ -836,6 +836,13 @@ void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const c
     }
 }
 
+void cm_kmesh_slide(cm_kmesh *km, size_t g, int32_t v, const double p[2], double t, const cm_ibuf *star)
+{
+    cm_log_vertex(km, v); /* before the label changes: the log keeps it */
+    km->bt[km->k * (size_t)v + g] = t;
+    cm_kmesh_move(km, g, v, p, star);
+}
+
 /* ---- full check ---------------------------------------------------------- */
 
 int cm_kmesh_check(const cm_kmesh *km)

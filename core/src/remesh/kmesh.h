@@ -7,7 +7,9 @@
  * (or its loops, cm_mesh.loop_start, the holes clockwise), and never move;
  * with boundary splits (cm_kmesh_allow_boundary_splits) vertices added on
  * a boundary edge join them (bnext[v] >= 0 marks a boundary vertex), and
- * never move either; every other vertex is an interior Steiner vertex.
+ * never move either (but along their input edges in the polish-scored
+ * moves at the end: cm_kmesh_slide); every other vertex is an interior
+ * Steiner vertex.
  * Removed
  * triangles and vertices leave dead slots (tri[3t] = -1, vc[v] = -1) that
  * later insertions reuse; cm_kmesh_write compacts.
@@ -179,6 +181,12 @@ void cm_kmesh_collapse(cm_kmesh *km, int32_t c, const cm_ibuf *star);
  * its star's vertices become dirty for the smoothing in g and for
  * cm_smooth_optimize. */
 void cm_kmesh_move(cm_kmesh *km, size_t g, int32_t v, const double p[2], const cm_ibuf *star);
+/* Slides boundary vertex v of geometry g along its input edge: to p,
+ * the point at parameter t of that edge (its label's edge stays), with
+ * the keys refreshed as by cm_kmesh_move. The joint polish's and its
+ * local form's slide, for the stages after which no boundary vertex is
+ * assumed fixed. */
+void cm_kmesh_slide(cm_kmesh *km, size_t g, int32_t v, const double p[2], double t, const cm_ibuf *star);
 
 /* Transactions: after cm_kmesh_tx_begin every change is logged until
  * commit or rollback; rollback restores the mesh exactly (vdirty too, but

@@ -21,6 +21,7 @@ struct cm_kmesh_log {
     cm_ibuf vsave;           /* 3 per vertex: v, vc, bnext */
     cm_dbuf keys;            /* tkey per saved triangle (NaN: was dead) */
     cm_dbuf pos;             /* 2k per saved vertex */
+    cm_dbuf bt;              /* k per saved vertex with boundary labels */
     cm_ibuf flog;            /* free-list operations, 4 * value + kind */
     cm_ibuf dlog;            /* vdirty changes, 2 per change: v, old value */
     int32_t nv, nt, live_v, live_t, nb;
@@ -93,6 +94,8 @@ void cm_log_vertex(cm_kmesh *km, int32_t v)
     for (size_t g = 0; g < km->k; g++)
         if (push_double(&log->pos, km->xy[g][2 * (size_t)v]) || push_double(&log->pos, km->xy[g][2 * (size_t)v + 1]))
             goto fail;
+    for (size_t g = 0; km->bt && g < km->k; g++) /* a slid boundary point's parameter */
+        if (push_double(&log->bt, km->bt[km->k * (size_t)v + g])) goto fail;
     return;
 fail:
     log->failed = 1;
@@ -119,7 +122,7 @@ int cm_kmesh_tx_begin(cm_kmesh *km)
         log->id = 1;
     }
     log->active = 1, log->failed = 0;
-    log->tsave.n = log->vsave.n = log->flog.n = log->dlog.n = 0, log->keys.n = log->pos.n = 0;
+    log->tsave.n = log->vsave.n = log->flog.n = log->dlog.n = 0, log->keys.n = log->pos.n = log->bt.n = 0;
     log->nv = km->nv, log->nt = km->nt, log->live_v = km->live_v, log->live_t = km->live_t, log->nb = km->nb;
     return 0;
 }
@@ -164,7 +167,7 @@ long cm_log_undo(cm_kmesh *km)
     log->active = 0;
     if (log->failed) return -1;
     undo_free_lists(km);
-    size_t nt = log->tsave.n / 7, d = 0;
+    size_t nt = log->tsave.n / 7, d = 0, l = 0;
     for (size_t i = 0; i < nt; i++) {
         const int32_t *rec = log->tsave.a + 7 * i;
         for (int j = 0; j < 3; j++) km->tri[3 * rec[0] + j] = rec[1 + j], km->opp[3 * rec[0] + j] = rec[4 + j];
@@ -174,6 +177,7 @@ long cm_log_undo(cm_kmesh *km)
         km->vc[v] = log->vsave.a[3 * i + 1], km->bnext[v] = log->vsave.a[3 * i + 2];
         for (size_t g = 0; g < km->k; g++, d += 2)
             km->xy[g][2 * (size_t)v] = log->pos.a[d], km->xy[g][2 * (size_t)v + 1] = log->pos.a[d + 1];
+        for (size_t g = 0; km->bt && g < km->k; g++) km->bt[km->k * (size_t)v + g] = log->bt.a[l++];
     }
     for (size_t i = log->dlog.n / 2; i-- > 0;) km->vdirty[log->dlog.a[2 * i]] = (uint16_t)log->dlog.a[2 * i + 1];
     km->nv = log->nv, km->nt = log->nt, km->live_v = log->live_v, km->live_t = log->live_t, km->nb = log->nb;
@@ -198,7 +202,7 @@ double cm_log_saved_key(const struct cm_kmesh_log *log, size_t i)
 void cm_kmesh_log_free(struct cm_kmesh_log *log)
 {
     if (!log) return;
-    free(log->tseen), free(log->vseen), free(log->keys.a), free(log->pos.a);
+    free(log->tseen), free(log->vseen), free(log->keys.a), free(log->pos.a), free(log->bt.a);
     cm_ibuf_free(&log->tsave), cm_ibuf_free(&log->vsave), cm_ibuf_free(&log->flog), cm_ibuf_free(&log->dlog);
     free(log);
 }

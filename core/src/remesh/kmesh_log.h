@@ -1,7 +1,7 @@
 /* The undo log behind the mesh's transactions, for kmesh.c only: every
  * change to a triangle slot, a vertex or a free list goes through the
  * hooks first (no-ops outside a transaction; a vertex's record holds its
- * corner, position and bnext); cm_log_undo restores what
+ * corner, position, bnext and, with boundary labels, its parameters); cm_log_undo restores what
  * they saved. */
 #ifndef CM_KMESH_LOG_H
 #define CM_KMESH_LOG_H

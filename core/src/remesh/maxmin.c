@@ -196,11 +196,11 @@ static int progress(void *instance, const lbfgsfloatval_t *x, const lbfgsfloatva
 
 /* v as a variable of s: two values for a Steiner vertex, one (its arc
  * length along its input edge) for a boundary point that slides. */
-static void add_variable(soft *s, int32_t v, size_t nb)
+static void add_variable(soft *s, int32_t v, int on_edge)
 {
     size_t j = s->nvar++;
     s->var[j] = v, s->slot[v] = (int32_t)j, s->off[j] = (int32_t)s->nx, s->edge[j] = -1;
-    if ((size_t)v >= nb) {
+    if (!on_edge) {
         s->nx += 2;
         return;
     }
@@ -237,7 +237,7 @@ static int choose_moving(soft *s, const double *xy, size_t nt, size_t nb, double
         if (tmin[t] >= *least + CM_MAXMIN_WARM) continue;
         for (int c = 0; c < 3; c++) {
             int32_t v = s->tri[3 * t + c];
-            if (s->slot[v] < 0 && ((size_t)v >= nb || slides(s, v))) add_variable(s, v, nb);
+            if (s->slot[v] < 0 && ((size_t)v >= nb || slides(s, v))) add_variable(s, v, (size_t)v < nb);
         }
     }
     s->rest = HUGE_VAL;
@@ -354,12 +354,14 @@ static void soft_free(soft *s)
 }
 
 int cm_maxmin_local(const int32_t *tri, const double *xy, size_t nv, const int32_t *var, size_t nvar,
-                    const int32_t *tris, size_t ntris, int max_iterations, cm_progress *progress, double *out)
+                    const int32_t *tris, size_t ntris, const cm_maxmin_slide *slide, size_t g, int max_iterations,
+                    cm_progress *progress, double *out, double *out_t)
 {
-    soft s = {.xy = xy, .tri = tri, .progress = progress, .rest = HUGE_VAL};
+    soft s = {.xy = xy, .g = g, .slide = slide, .tri = tri, .progress = progress, .rest = HUGE_VAL};
+    if (slide) s.next = slide->next, s.prev = slide->prev;
     int result = -CM_ERR_NO_MEMORY;
-    if (soft_alloc(&s, nv, nvar, ntris, 0) == 0) {
-        for (size_t j = 0; j < nvar; j++) add_variable(&s, var[j], 0);
+    if (soft_alloc(&s, nv, nvar, ntris, slide != NULL) == 0) {
+        for (size_t j = 0; j < nvar; j++) add_variable(&s, var[j], slide && slide->edge[g][var[j]] >= 0);
         double least = HUGE_VAL;
         for (size_t i = 0; i < ntris; i++) {
             const int32_t *v = tri + 3 * (size_t)tris[i];
@@ -367,7 +369,11 @@ int cm_maxmin_local(const int32_t *tri, const double *xy, size_t nv, const int32
             least = fmin(least, cm_triangle_min_angle(xy + 2 * v[0], xy + 2 * v[1], xy + 2 * v[2]));
         }
         result = descend(&s, xy, least, max_iterations);
-        if (result > 0) memcpy(out, s.pos, 2 * nvar * sizeof *out);
+        if (result > 0) {
+            memcpy(out, s.pos, 2 * nvar * sizeof *out);
+            for (size_t j = 0; j < nvar; j++)
+                if (s.edge[j] >= 0) out_t[j] = s.best_x[s.off[j]] / s.along[3 * j];
+        }
         lbfgs_free(s.best_x);
     }
     soft_free(&s);

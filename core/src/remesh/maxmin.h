@@ -20,6 +20,9 @@ typedef struct cm_maxmin_slide {
     void *ctx;
     double max_piece;
     size_t slid; /* out: how many boundary points moved */
+    /* cm_maxmin_local only, with max_piece > 0: each boundary vertex's
+     * neighbours along its loop (the joint polish finds them itself) */
+    const int32_t *next, *prev;
 } cm_maxmin_slide;
 
 /* Moves the vertices nb .. nv - 1 of every geometry of mesh (the first nb
@@ -32,15 +35,21 @@ typedef struct cm_maxmin_slide {
 cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, cm_maxmin_slide *slide, int max_iterations,
                            cm_progress *progress);
 
-/* The same ascent on a part of one geometry xy (nv vertices, triangles
+/* The same ascent on a part of geometry g, xy (nv vertices, triangles
  * tri): the vertices var[0 .. nvar) move at once, everything else stays,
  * to raise the smallest angle of the triangles tris[0 .. ntris) (indices
  * into tri; every triangle touching a moving vertex must be listed).
- * Returns 1 with the new positions in out (2 nvar doubles) when they are
- * exactly valid (every listed triangle strictly counter-clockwise) and
- * that smallest angle did not fall; 0 when there is nothing better to
- * write; -CM_ERR_NO_MEMORY or -CM_ERR_CANCELLED. */
+ * With slide, a listed vertex v with slide->edge[g][v] >= 0 is a
+ * boundary point that slides along that input edge from parameter
+ * slide->t[g][v] (the others move freely); without, every listed vertex
+ * moves freely. Returns 1 with the new positions in out (2 nvar doubles)
+ * and a slid point's parameter in out_t (nvar doubles; the others' are
+ * left as they were) when they are exactly valid (every listed triangle
+ * strictly counter-clockwise, slid pieces short enough) and that
+ * smallest angle did not fall; 0 when there is nothing better to write;
+ * -CM_ERR_NO_MEMORY or -CM_ERR_CANCELLED. */
 int cm_maxmin_local(const int32_t *tri, const double *xy, size_t nv, const int32_t *var, size_t nvar,
-                    const int32_t *tris, size_t ntris, int max_iterations, cm_progress *progress, double *out);
+                    const int32_t *tris, size_t ntris, const cm_maxmin_slide *slide, size_t g, int max_iterations,
+                    cm_progress *progress, double *out, double *out_t);
 
 #endif

@@ -17,6 +17,13 @@
  * valid positions, so every kept state is valid in every geometry, and
  * the connectivity is one for all.
  *
+ * With a slide (the correspondence the tool's to choose), the polish
+ * also slides the ring's boundary points that lie inside an input edge
+ * of a geometry along that edge (their labels' parameters change, in the
+ * transaction), and boundary edges split too: on the auto glyph pairs
+ * short of their floor the worst triangles often have such a point, or
+ * a long boundary edge, as a corner.
+ *
  * The gains come from the connectivity changes (bench/REMESH.md, "Moves
  * scored by the polish"): the polish alone near the worst triangle, tried
  * alone, left the smallest angle where the joint polish had put it;
@@ -63,9 +70,17 @@ enum pmove { PM_POLISH, PM_FLIP, PM_SPLIT, PM_COLLAPSE, PM_INSERT, PM_KINDS };
 typedef struct mover {
     cm_kmesh *km;
     cm_progress *progress;
-    cm_ibuf star, ring, var, tris;
-    double *pts;
-    size_t pts_cap;
+    cm_ibuf star, ring, var, tris, gvar;
+    double *pts, *pts_t;
+    size_t pts_cap, pts_t_cap;
+    /* boundary points slide (NULL: they stay): the labels of the polished
+     * region's vertices in the form cm_maxmin_local reads, per vertex */
+    cm_maxmin_slide *slide;
+    cm_maxmin_slide labels;
+    int32_t **edge_rows, *next, *prev;
+    double **t_rows;
+    size_t rows_cap;
+    size_t slides; /* boundary points slid by the try under way */
     uint64_t *failed; /* moves undone since the last kept one */
     size_t nfailed, failed_cap;
 } mover;
@@ -128,18 +143,67 @@ static int by_id(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* Room for the labels of km->nv vertices. 0, or -1 out of memory. */
+static int grow_rows(mover *x)
+{
+    cm_kmesh *km = x->km;
+    size_t need = (size_t)km->nv, cap = x->rows_cap;
+    if (need <= cap) return 0;
+    for (size_t g = 0; g < km->k; g++) {
+        size_t c = cap;
+        void *p = x->edge_rows[g];
+        if (cm_grow(&p, &c, need, sizeof **x->edge_rows)) return -1;
+        x->edge_rows[g] = p, c = cap, p = x->t_rows[g];
+        if (cm_grow(&p, &c, need, sizeof **x->t_rows)) return -1;
+        x->t_rows[g] = p;
+    }
+    size_t c = cap;
+    void *p = x->next;
+    if (cm_grow(&p, &c, need, sizeof *x->next)) return -1;
+    x->next = p, c = cap, p = x->prev;
+    if (cm_grow(&p, &c, need, sizeof *x->prev)) return -1;
+    x->prev = p, x->rows_cap = c;
+    x->labels.edge = x->edge_rows, x->labels.t = x->t_rows, x->labels.next = x->next, x->labels.prev = x->prev;
+    return 0;
+}
+
+/* The labels of boundary vertex v (its star in x->star) for the polish:
+ * where it lies inside an input edge of a geometry it slides there,
+ * elsewhere (an input vertex of it) it stays. */
+static void label_boundary(mover *x, int32_t v, long m)
+{
+    cm_kmesh *km = x->km;
+    for (size_t g = 0; g < km->k; g++) {
+        size_t a = km->k * (size_t)v + g;
+        x->edge_rows[g][v] = km->bt[a] > 0 ? km->bedge[a] : -1, x->t_rows[g][v] = km->bt[a];
+    }
+    x->next[v] = km->bnext[v], x->prev[v] = km->tri[cm_prev(x->star.a[m - 1])];
+}
+
+/* 1 if v moves in geometry g: an interior vertex, or a boundary point
+ * that slides there. */
+static int moves_in(const mover *x, size_t g, int32_t v)
+{
+    return !cm_kmesh_is_boundary(x->km, v) || x->edge_rows[g][v] >= 0;
+}
+
 /* The local polish of the ring's live interior vertices in every
- * geometry. 0, or -1 out of memory or cancelled. */
+ * geometry, and of its boundary points where they slide. 0, or -1 out of
+ * memory or cancelled. */
 static int polish_ring(mover *x)
 {
     cm_kmesh *km = x->km;
     x->var.n = x->tris.n = 0;
+    if (x->slide && grow_rows(x)) return -1;
     for (size_t i = 0; i < x->ring.n; i++) {
         int32_t v = x->ring.a[i];
-        if (km->vc[v] < 0 || cm_kmesh_is_boundary(km, v)) continue;
+        int boundary = km->vc[v] >= 0 && cm_kmesh_is_boundary(km, v);
+        if (km->vc[v] < 0 || (boundary && !x->slide)) continue;
         long m = cm_kmesh_star(km, v, &x->star);
         if (m < 0) return -1;
         if (x->tris.n + (size_t)m > CM_PMOVE_TRIS_MAX) continue;
+        if (boundary) label_boundary(x, v, m);
+        for (size_t g = 0; x->slide && !boundary && g < km->k; g++) x->edge_rows[g][v] = -1; /* moves freely */
         if (cm_ibuf_push(&x->var, v)) return -1;
         for (long j = 0; j < m; j++)
             if (cm_ibuf_push(&x->tris, x->star.a[j] / 3)) return -1;
@@ -152,15 +216,28 @@ static int polish_ring(mover *x)
     x->tris.n = nt;
     void *p = x->pts;
     if (cm_grow(&p, &x->pts_cap, 2 * x->var.n, sizeof *x->pts)) return -1;
-    x->pts = p;
+    x->pts = p, p = x->pts_t;
+    if (cm_grow(&p, &x->pts_t_cap, x->var.n, sizeof *x->pts_t)) return -1;
+    x->pts_t = p;
     for (size_t g = 0; g < km->k; g++) {
-        int r = cm_maxmin_local(km->tri, km->xy[g], (size_t)km->nv, x->var.a, x->var.n, x->tris.a, x->tris.n,
-                                CM_PMOVE_ITERATIONS, x->progress, x->pts);
+        x->gvar.n = 0;
+        for (size_t j = 0; j < x->var.n; j++)
+            if ((!x->slide || moves_in(x, g, x->var.a[j])) && cm_ibuf_push(&x->gvar, x->var.a[j])) return -1;
+        if (!x->gvar.n) continue;
+        int r = cm_maxmin_local(km->tri, km->xy[g], (size_t)km->nv, x->gvar.a, x->gvar.n, x->tris.a, x->tris.n,
+                                x->slide ? &x->labels : NULL, g, CM_PMOVE_ITERATIONS, x->progress, x->pts,
+                                x->pts_t);
         if (r < 0) return -1;
         if (r == 0) continue;
-        for (size_t j = 0; j < x->var.n; j++) {
-            if (cm_kmesh_star(km, x->var.a[j], &x->star) < 0) return -1;
-            cm_kmesh_move(km, g, x->var.a[j], x->pts + 2 * j, &x->star);
+        for (size_t j = 0; j < x->gvar.n; j++) {
+            int32_t v = x->gvar.a[j];
+            if (cm_kmesh_star(km, v, &x->star) < 0) return -1;
+            if (!cm_kmesh_is_boundary(km, v)) {
+                cm_kmesh_move(km, g, v, x->pts + 2 * j, &x->star);
+            } else if (x->pts_t[j] != x->t_rows[g][v]) {
+                cm_kmesh_slide(km, g, v, x->pts + 2 * j, x->pts_t[j], &x->star);
+                x->t_rows[g][v] = x->pts_t[j], x->slides++;
+            }
         }
     }
     return 0;
@@ -202,9 +279,12 @@ static int try_move(mover *x, enum pmove kind, int32_t c, double least)
 {
     cm_kmesh *km = x->km;
     int32_t t = c / 3, o = km->opp[c];
-    if ((kind == PM_FLIP || kind == PM_SPLIT) && o < 0) return 0;
+    /* a boundary edge splits only where the polish slides its points
+     * (the variant measured: bench/REMESH.md) */
+    if ((kind == PM_FLIP || (kind == PM_SPLIT && !x->slide)) && o < 0) return 0;
     if (kind == PM_COLLAPSE && cm_kmesh_is_boundary(km, km->tri[c])) return 0;
     int32_t seeds[4] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)], o >= 0 ? km->tri[o] : -1};
+    x->slides = 0;
     double before, after, key;
     if (rings(x, seeds, 4) || ring_quality(x, &before, &key) || cm_kmesh_tx_begin(km)) return -1;
     int done = 0;
@@ -227,6 +307,7 @@ static int try_move(mover *x, enum pmove kind, int32_t c, double least)
     if (polish_ring(x) || ring_quality(x, &after, &key)) return cm_kmesh_tx_commit(km), -1;
     if (after > before + (kind == PM_POLISH ? CM_PMOVE_POLISH_GAIN : CM_PMOVE_GAIN) && key >= least) {
         cm_kmesh_tx_commit(km);
+        if (x->slide) x->slide->slid += x->slides;
         return 1;
     }
     return cm_kmesh_tx_rollback(km) ? -1 : 0;
@@ -237,9 +318,17 @@ static int tries_left(long tries, long idle, long max_tries)
     return tries < max_tries && idle < CM_PMOVE_IDLE;
 }
 
-long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_progress *progress)
+long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_maxmin_slide *slide, cm_progress *progress)
 {
-    mover x = {.km = km, .progress = progress};
+    mover x = {.km = km, .progress = progress, .slide = slide && km->bt ? slide : NULL};
+    if (x.slide) {
+        x.labels = *slide;
+        x.edge_rows = calloc(km->k, sizeof *x.edge_rows), x.t_rows = calloc(km->k, sizeof *x.t_rows);
+        if (!x.edge_rows || !x.t_rows) {
+            free(x.edge_rows), free(x.t_rows);
+            return -1;
+        }
+    }
     int32_t worst[CM_PMOVE_WORST], work[2 * CM_PMOVE_WORST], near[12];
     long tries = 0, kept = 0, idle = 0;
     double least = cm_kmesh_min_angle(km);
@@ -275,7 +364,9 @@ long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_progres
         if (!gained) break;
     }
 done:
-    cm_ibuf_free(&x.star), cm_ibuf_free(&x.ring), cm_ibuf_free(&x.var), cm_ibuf_free(&x.tris);
-    free(x.pts), free(x.failed);
+    cm_ibuf_free(&x.star), cm_ibuf_free(&x.ring), cm_ibuf_free(&x.var), cm_ibuf_free(&x.tris), cm_ibuf_free(&x.gvar);
+    free(x.pts), free(x.pts_t), free(x.failed), free(x.next), free(x.prev);
+    for (size_t g = 0; x.slide && g < km->k; g++) free(x.edge_rows[g]), free(x.t_rows[g]);
+    free(x.edge_rows), free(x.t_rows);
     return kept;
 }

@@ -6,6 +6,7 @@
 
 #include "base/progress.h"
 #include "remesh/kmesh.h"
+#include "remesh/maxmin.h"
 
 /* Tries moves (a polish alone, a flip, a split, a Steiner vertex's
  * removal, an insertion) around the triangles furthest below their aim,
@@ -14,8 +15,12 @@
  * (all geometries) did not fall; every kept state is exactly valid in
  * every geometry and the connectivity stays shared. At most max_tries
  * moves, ending after CM_PMOVE_IDLE in a row without a kept one; at most
- * steiner_left vertices added. Returns the moves kept, or
+ * steiner_left vertices added. With slide (its place, ctx and max_piece;
+ * NULL where the correspondence is not the tool's to choose), the
+ * polish after each move also slides the boundary points that lie inside
+ * an input edge along it, as the joint polish does, and adds to
+ * slide->slid the points the kept moves slid. Returns the moves kept, or
  * -1 out of memory or cancelled (progress says which). */
-long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_progress *progress);
+long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_maxmin_slide *slide, cm_progress *progress);
 
 #endif
