@@ -23,6 +23,8 @@ typedef struct ring {
     double link2[CM_SMOOTH_MAX_DEGREE];   /* |p[i+1] - p[i]|^2: the same for every trial point */
     long m;
     long worst;                           /* triangle (p[i], p[i+1]) last found smallest */
+    double den_lo;                        /* > 0: ring_sin2's den is at least this, above
+                                             CM_ANGLE_SAFE_LO, wherever the trial point */
 } ring;
 
 static int ring_of(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring *r)
@@ -34,10 +36,16 @@ static int ring_of(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star,
         const double *q = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[i < r->m ? i : 0])]);
         r->p[i][0] = q[0], r->p[i][1] = q[1];
     }
+    double link_lo = HUGE_VAL;
     for (long i = 0; i < r->m; i++) {
         double dx = r->p[i + 1][0] - r->p[i][0], dy = r->p[i + 1][1] - r->p[i][1];
         r->link2[i] = dx * dx + dy * dy;
+        if (r->link2[i] < link_lo) link_lo = r->link2[i];
     }
+    /* ring_sin2's den multiplies the two longest squared sides: one is at
+     * least the link edge's, the other at least a quarter of it (triangle
+     * inequality), so den >= link2^2 / 4 but for rounding. */
+    r->den_lo = link_lo > 0x1p-498 ? 0.24 * link_lo * link_lo : 0;
     r->worst = 0;
     return 0;
 }
@@ -94,8 +102,10 @@ int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing metho
 
 /* cm_triangle_min_angle_sin2(q, p[i], p[i+1]), the same arithmetic with
  * the link edge's squared length taken from the ring; or, when that is
- * certainly below `floor` (> 0), floor itself without the division. */
-static inline double ring_sin2(const ring *r, const double q[2], long i, double floor)
+ * certainly below `floor` (> 0), floor itself without the division.
+ * `bounded`: den is known to be at least r->den_lo and floor * den, when
+ * positive, above 2^-900, so only overflow needs a test. */
+static inline double ring_sin2(const ring *r, const double q[2], long i, double floor, int bounded)
 {
     const double *b = r->p[i], *c = r->p[i + 1];
     double abx = b[0] - q[0], aby = b[1] - q[1], cax = q[0] - c[0], cay = q[1] - c[1];
@@ -104,6 +114,11 @@ static inline double ring_sin2(const ring *r, const double q[2], long i, double 
     if (lab <= lbc && lab <= lca) den = lbc * lca;
     else if (lbc <= lca) den = lab * lca;
     else den = lab * lbc;
+    if (bounded) {
+        if (!(den < CM_ANGLE_SAFE_HI)) return cm_triangle_min_angle_sin2_wide(q, b, c);
+        if (cross * cross < floor * den * (1 - 0x1p-40)) return floor;
+        return cross * cross / den;
+    }
     if (!(den > CM_ANGLE_SAFE_LO && den < CM_ANGLE_SAFE_HI) && den != 0) return cm_triangle_min_angle_sin2_wide(q, b, c);
     double bar = floor * den;
     if (bar > 0x1p-900 && cross * cross < bar * (1 - 0x1p-40)) return floor; /* the rounded quotient is below floor */
@@ -114,23 +129,29 @@ static inline double ring_sin2(const ring *r, const double q[2], long i, double 
  * 90 degrees, no atan2: this runs for every candidate position). Only
  * values above `floor` matter to the callers: the scan stops at the first
  * triangle at or below it and returns a value at or below floor. */
-static inline double star_sin2_above(ring *r, const double q[2], double floor)
+static inline double star_scan(ring *r, const double q[2], double floor, int bounded)
 {
     double lo = 1.0;
     long m = r->m, w = r->worst, lo_at = w;
     for (long i = w; i < m; i++) { /* from the last worst: it fails first */
-        double s = ring_sin2(r, q, i, floor);
+        double s = ring_sin2(r, q, i, floor, bounded);
         if (s < lo) lo = s, lo_at = i;
         if (!(lo > floor)) goto done;
     }
     for (long i = 0; i < w; i++) {
-        double s = ring_sin2(r, q, i, floor);
+        double s = ring_sin2(r, q, i, floor, bounded);
         if (s < lo) lo = s, lo_at = i;
         if (!(lo > floor)) break;
     }
 done:
     r->worst = lo_at;
     return lo;
+}
+
+static inline double star_sin2_above(ring *r, const double q[2], double floor)
+{
+    if (r->den_lo > 0 && (floor <= 0 || floor * r->den_lo > 0x1p-900)) return star_scan(r, q, floor, 1);
+    return star_scan(r, q, floor, 0);
 }
 
 static double star_sin2(ring *r, const double q[2]) { return star_sin2_above(r, q, -1.0); }
