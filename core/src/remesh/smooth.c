@@ -129,10 +129,10 @@ static inline double ring_sin2(const ring *r, const double q[2], long i, double 
  * 90 degrees, no atan2: this runs for every candidate position). Only
  * values above `floor` matter to the callers: the scan stops at the first
  * triangle at or below it and returns a value at or below floor. */
-static inline double star_scan(ring *r, const double q[2], double floor, int bounded)
+static inline double star_scan(const ring *r, const double q[2], double floor, int bounded, long *worst)
 {
     double lo = 1.0;
-    long m = r->m, w = r->worst, lo_at = w;
+    long m = r->m, w = *worst, lo_at = w;
     for (long i = w; i < m; i++) { /* from the last worst: it fails first */
         double s = ring_sin2(r, q, i, floor, bounded);
         if (s < lo) lo = s, lo_at = i;
@@ -144,17 +144,18 @@ static inline double star_scan(ring *r, const double q[2], double floor, int bou
         if (!(lo > floor)) break;
     }
 done:
-    r->worst = lo_at;
+    *worst = lo_at;
     return lo;
 }
 
-static inline double star_sin2_above(ring *r, const double q[2], double floor)
+/* *worst: where the scan starts, then the triangle it found smallest. */
+static inline double star_sin2_above(const ring *r, const double q[2], double floor, long *worst)
 {
-    if (r->den_lo > 0 && (floor <= 0 || floor * r->den_lo > 0x1p-900)) return star_scan(r, q, floor, 1);
-    return star_scan(r, q, floor, 0);
+    if (r->den_lo > 0 && (floor <= 0 || floor * r->den_lo > 0x1p-900)) return star_scan(r, q, floor, 1, worst);
+    return star_scan(r, q, floor, 0, worst);
 }
 
-static double star_sin2(ring *r, const double q[2]) { return star_sin2_above(r, q, -1.0); }
+static double star_sin2(ring *r, const double q[2]) { return star_sin2_above(r, q, -1.0, &r->worst); }
 
 /* Is v at q strictly inside its link polygon's kernel (every triangle
  * counter-clockwise)? Exact: a triangle whose determinant clears its
@@ -208,7 +209,7 @@ static int try_move(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring
     double s = smart ? sin(fmin(before + CM_SMOOTH_GAIN, 0.5 * CM_PI)) : 0, floor = s * s * (1 - 1e-9);
     for (int attempt = 0; attempt < (smart ? CM_SMART_TRIES : 1); attempt++) {
         if (p[0] == c[0] && p[1] == c[1]) return 0;
-        double sp = smart ? star_sin2_above(r, p, floor) : 0;
+        double sp = smart ? star_sin2_above(r, p, floor, &r->worst) : 0;
         if ((!smart || (sp > floor && sin2_to_angle(sp) > before + CM_SMOOTH_GAIN)) && star_valid(r, p)) {
             cm_kmesh_move(km, g, v, p, star);
             return 1;
@@ -284,11 +285,13 @@ int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *st
         if (!(dx * dx + dy * dy > near2 * (1 + 1e-9))) step = fmin(step, hypot(dx, dy));
     }
     step *= 0.25;
+    long from[8]; /* per direction: the triangle that last stopped its scan, likely again */
+    for (int d = 0; d < 8; d++) from[d] = r.worst;
     for (int it = 0; it < CM_OPTIMIZE_STEPS && step > 0; it++) {
         int improved = 0;
         for (int d = 0; d < 8; d++) {
             double p[2] = {best[0] + step * dir[d][0], best[1] + step * dir[d][1]};
-            double qp = star_sin2_above(&r, p, q);
+            double qp = star_sin2_above(&r, p, q, &from[d]);
             if (qp > q && star_valid(&r, p)) q = qp, best[0] = p[0], best[1] = p[1], improved = 1;
         }
         if (!improved) step *= 0.5;
