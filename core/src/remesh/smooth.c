@@ -65,7 +65,7 @@ static int angle_target(const ring *r, int weighted, double out[2])
     const double *c = r->c;
     double x = 0, y = 0, wsum = 0;
     for (long i = 0; i < r->m; i++) {
-        const double *p = r->p[i], *pn = r->p[(i + 1) % r->m], *pp = r->p[(i + r->m - 1) % r->m];
+        const double *p = r->p[i], *pn = r->p[i + 1], *pp = r->p[i ? i - 1 : r->m - 1];
         double dx = c[0] - p[0], dy = c[1] - p[1];
         double nx = pn[0] - p[0], ny = pn[1] - p[1], qx = pp[0] - p[0], qy = pp[1] - p[1];
         double a1 = atan2(nx * dy - ny * dx, nx * dx + ny * dy); /* from p_{i+1} to v */
