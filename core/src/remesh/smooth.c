@@ -149,13 +149,22 @@ done:
 }
 
 /* *worst: where the scan starts, then the triangle it found smallest. */
-static inline double star_sin2_above(const ring *r, const double q[2], double floor, long *worst)
+/* May the scans with this floor take ring_sin2's bounded path? */
+static int scan_bounded(const ring *r, double floor)
 {
-    if (r->den_lo > 0 && (floor <= 0 || floor * r->den_lo > 0x1p-900)) return star_scan(r, q, floor, 1, worst);
-    return star_scan(r, q, floor, 0, worst);
+    return r->den_lo > 0 && (floor <= 0 || floor * r->den_lo > 0x1p-900);
 }
 
-static double star_sin2(ring *r, const double q[2]) { return star_sin2_above(r, q, -1.0, &r->worst); }
+/* bounded: scan_bounded(r, floor), found once for many trial points. */
+static inline double star_sin2_above(const ring *r, const double q[2], double floor, int bounded, long *worst)
+{
+    return bounded ? star_scan(r, q, floor, 1, worst) : star_scan(r, q, floor, 0, worst);
+}
+
+static double star_sin2(ring *r, const double q[2])
+{
+    return star_sin2_above(r, q, -1.0, scan_bounded(r, -1.0), &r->worst);
+}
 
 /* Is v at q strictly inside its link polygon's kernel (every triangle
  * counter-clockwise)? Exact: a triangle whose determinant clears its
@@ -207,9 +216,10 @@ static int try_move(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring
     /* Just below sin^2 of the angle a smart move must beat: positions at
      * or under it fail the test without the full scan or the asin. */
     double s = smart ? sin(fmin(before + CM_SMOOTH_GAIN, 0.5 * CM_PI)) : 0, floor = s * s * (1 - 1e-9);
+    int bounded = scan_bounded(r, floor);
     for (int attempt = 0; attempt < (smart ? CM_SMART_TRIES : 1); attempt++) {
         if (p[0] == c[0] && p[1] == c[1]) return 0;
-        double sp = smart ? star_sin2_above(r, p, floor, &r->worst) : 0;
+        double sp = smart ? star_sin2_above(r, p, floor, bounded, &r->worst) : 0;
         if ((!smart || (sp > floor && sin2_to_angle(sp) > before + CM_SMOOTH_GAIN)) && star_valid(r, p)) {
             cm_kmesh_move(km, g, v, p, star);
             return 1;
@@ -287,12 +297,14 @@ int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *st
     step *= 0.25;
     long from[8]; /* per direction: the triangle that last stopped its scan, likely again */
     for (int d = 0; d < 8; d++) from[d] = r.worst;
+    int bounded = scan_bounded(&r, q);
     for (int it = 0; it < CM_OPTIMIZE_STEPS && step > 0; it++) {
         int improved = 0;
         for (int d = 0; d < 8; d++) {
             double p[2] = {best[0] + step * dir[d][0], best[1] + step * dir[d][1]};
-            double qp = star_sin2_above(&r, p, q, &from[d]);
-            if (qp > q && star_valid(&r, p)) q = qp, best[0] = p[0], best[1] = p[1], improved = 1;
+            double qp = star_sin2_above(&r, p, q, bounded, &from[d]);
+            if (qp > q && star_valid(&r, p))
+                q = qp, best[0] = p[0], best[1] = p[1], improved = 1, bounded = scan_bounded(&r, q);
         }
         if (!improved) step *= 0.5;
     }
