@@ -167,6 +167,15 @@ static double star_sin2(ring *r, const double q[2])
     return star_sin2_above(r, q, -1.0, scan_bounded(r, -1.0), &r->worst);
 }
 
+double cm_smooth_star_sin2(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, const double q[2],
+                           double floor, long start)
+{
+    ring r;
+    if (ring_of(km, g, v, star, &r)) return NAN;
+    long worst = start % r.m;
+    return star_sin2_above(&r, q, floor, scan_bounded(&r, floor), &worst);
+}
+
 /* Is v at q strictly inside its link polygon's kernel (every triangle
  * counter-clockwise)? Exact: a triangle whose determinant clears its
  * rounding by a wide margin (products far from overflow and underflow;
