@@ -1039,22 +1039,39 @@ static void test_max_angle(int count)
     CHECK_MSG(mismatches == 0, "max angle: %d of %d differ from the three angles' largest", mismatches, count);
 }
 
-/* The smallest cm_triangle_min_angle_sin2(q, p_i, p_i+1) over v's link
- * polygon p in geometry g: the reference for the position search's scan. */
+/* cm_triangle_min_angle_sin2 with den picked by comparisons, as the
+ * smallest angle is opposite the shortest side. */
+static double min_angle_sin2_reference(const double a[2], const double b[2], const double c[2])
+{
+    double abx = b[0] - a[0], aby = b[1] - a[1], bcx = c[0] - b[0], bcy = c[1] - b[1];
+    double cax = a[0] - c[0], cay = a[1] - c[1];
+    double lab = abx * abx + aby * aby, lbc = bcx * bcx + bcy * bcy, lca = cax * cax + cay * cay;
+    double cross = abx * cay - aby * cax, den;
+    if (lab <= lbc && lab <= lca) den = lbc * lca;
+    else if (lbc <= lca) den = lab * lca;
+    else den = lab * lbc;
+    if (!(den > CM_ANGLE_SAFE_LO && den < CM_ANGLE_SAFE_HI) && den != 0)
+        return cm_triangle_min_angle_sin2_wide(a, b, c);
+    return den > 0 ? cross * cross / den : 0.0;
+}
+
+/* Its smallest value over v's link polygon p in geometry g, (q, p_i,
+ * p_i+1): the reference for the position search's scan. */
 static double star_sin2_reference(const cm_kmesh *km, size_t g, const cm_ibuf *star, const double q[2])
 {
     double lo = 1.0;
     for (size_t i = 0; i < star->n; i++) {
         const double *b = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[i])]);
         const double *c = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[(i + 1) % star->n])]);
-        lo = fmin(lo, cm_triangle_min_angle_sin2(q, b, c));
+        lo = fmin(lo, min_angle_sin2_reference(q, b, c));
     }
     return lo;
 }
 
 /* The position search's star scan and its shortcuts (no range tests
  * where the ring's shortest link edge bounds den from below, den as the
- * largest of three products, a start anywhere) against the reference:
+ * largest of three products, cm_sin2_den, a start anywhere) against the
+ * reference:
  * the same bits above the floor, at or below it otherwise. Meshes scaled
  * by 2^-560 .. 2^480, around where the range tests fire (squared link
  * lengths near 2^-498, products near 2^+-1000); trial points near v, on

@@ -100,9 +100,6 @@ int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing metho
     return ring_of(km, g, v, star, &r) ? -1 : target_of(&r, method, out);
 }
 
-/* The larger of a and b, without a branch. */
-static inline double larger(double a, double b) { return a > b ? a : b; }
-
 /* cm_triangle_min_angle_sin2(q, p[i], p[i+1]), the same arithmetic with
  * the link edge's squared length taken from the ring; or, when that is
  * certainly below `floor` (> 0), floor itself without the division.
@@ -113,8 +110,7 @@ static inline double ring_sin2(const ring *r, const double q[2], long i, double 
     const double *b = r->p[i], *c = r->p[i + 1];
     double abx = b[0] - q[0], aby = b[1] - q[1], cax = q[0] - c[0], cay = q[1] - c[1];
     double lab = abx * abx + aby * aby, lbc = r->link2[i], lca = cax * cax + cay * cay;
-    double cross = abx * cay - aby * cax;
-    double den = larger(larger(lab * lbc, lab * lca), lbc * lca);
+    double cross = abx * cay - aby * cax, den = cm_sin2_den(lab, lbc, lca);
     if (bounded) {
         if (!(den < CM_ANGLE_SAFE_HI)) return cm_triangle_min_angle_sin2_wide(q, b, c);
         if (cross * cross < floor * den * (1 - 0x1p-40)) return floor;
