@@ -145,14 +145,14 @@ done:
     return lo;
 }
 
-/* *worst: where the scan starts, then the triangle it found smallest. */
 /* May the scans with this floor take ring_sin2's bounded path? */
 static int scan_bounded(const ring *r, double floor)
 {
     return r->den_lo > 0 && (floor <= 0 || floor * r->den_lo > 0x1p-900);
 }
 
-/* bounded: scan_bounded(r, floor), found once for many trial points. */
+/* bounded: scan_bounded(r, floor), found once for many trial points;
+ * *worst: where the scan starts, then the triangle it found smallest. */
 static inline double star_sin2_above(const ring *r, const double q[2], double floor, int bounded, long *worst)
 {
     return bounded ? star_scan(r, q, floor, 1, worst) : star_scan(r, q, floor, 0, worst);
