@@ -1089,8 +1089,119 @@ static void test_max_angle(int count)
     CHECK_MSG(mismatches == 0, "max angle: %d of %d differ from the three angles' largest", mismatches, count);
 }
 
+/* cm_triangle_min_angle_sin2 with den picked by comparisons, as the
+ * smallest angle is opposite the shortest side. */
+static double min_angle_sin2_reference(const double a[2], const double b[2], const double c[2])
+{
+    double abx = b[0] - a[0], aby = b[1] - a[1], bcx = c[0] - b[0], bcy = c[1] - b[1];
+    double cax = a[0] - c[0], cay = a[1] - c[1];
+    double lab = abx * abx + aby * aby, lbc = bcx * bcx + bcy * bcy, lca = cax * cax + cay * cay;
+    double cross = abx * cay - aby * cax, den;
+    if (lab <= lbc && lab <= lca) den = lbc * lca;
+    else if (lbc <= lca) den = lab * lca;
+    else den = lab * lbc;
+    if (!(den > CM_ANGLE_SAFE_LO && den < CM_ANGLE_SAFE_HI) && den != 0)
+        return cm_triangle_min_angle_sin2_wide(a, b, c);
+    return den > 0 ? cross * cross / den : 0.0;
+}
+
+/* Its smallest value over v's link polygon p in geometry g, (q, p_i,
+ * p_i+1): the reference for the position search's scan. */
+static double star_sin2_reference(const cm_kmesh *km, size_t g, const cm_ibuf *star, const double q[2])
+{
+    double lo = 1.0;
+    for (size_t i = 0; i < star->n; i++) {
+        const double *b = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[i])]);
+        const double *c = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[(i + 1) % star->n])]);
+        lo = fmin(lo, min_angle_sin2_reference(q, b, c));
+    }
+    return lo;
+}
+
+/* The position search's star scan and its shortcuts (no range tests
+ * where the ring's shortest link edge bounds den from below, den as the
+ * largest of three products, cm_sin2_den, a start anywhere) against the
+ * reference:
+ * the same bits above the floor, at or below it otherwise. Meshes scaled
+ * by 2^-560 .. 2^480, around where the range tests fire (squared link
+ * lengths near 2^-498, products near 2^+-1000); trial points near v, on
+ * a link vertex, mid-edge and far; floors -1, 0, tiny, random, and the
+ * value itself and its neighbours. */
+static void test_star_scan(int pairs)
+{
+    static const int shift[] = {0, -200, -240, -247, -248, -249, -250, -251, -252, -256, -300, -500, -560,
+                                200, 240, 248, 249, 250, 251, 252, 256, 300, 480};
+    long checked = 0, above = 0, wrong = 0;
+    for (int seed = 0; seed < pairs; seed++) {
+        double *a, *b;
+        cm_mesh m;
+        cm_kmesh km;
+        if (random_kmesh(seed, &a, &b, &m, &km)) continue;
+        for (int32_t t = 0, nt = km.nt; t < nt; t += 3) { /* interior vertices of degree 3 and more */
+            if (!cm_kmesh_tri_live(&km, t)) continue;
+            double pts[4];
+            for (size_t g = 0; g < 2; g++)
+                for (int d = 0; d < 2; d++)
+                    pts[2 * g + d] = (cm_kmesh_pos(&km, g, km.tri[3 * t])[d] + cm_kmesh_pos(&km, g, km.tri[3 * t + 1])[d] +
+                                      cm_kmesh_pos(&km, g, km.tri[3 * t + 2])[d]) / 3;
+            CHECK(cm_kmesh_insert(&km, t, pts) >= 0);
+        }
+        size_t coords = 2 * (size_t)km.nv;
+        double *orig[2];
+        for (size_t g = 0; g < 2; g++) {
+            orig[g] = malloc(coords * sizeof *orig[g]);
+            memcpy(orig[g], km.xy[g], coords * sizeof *orig[g]);
+        }
+        rp_rng rng = {(uint64_t)seed * 104729 + 1};
+        cm_ibuf star = {0};
+        for (size_t s = 0; s < sizeof shift / sizeof *shift; s++) {
+            for (size_t g = 0; g < 2; g++)
+                for (size_t i = 0; i < coords; i++) km.xy[g][i] = ldexp(orig[g][i], shift[s]);
+            for (int32_t v = km.n; v < km.nv; v++) {
+                if (km.vc[v] < 0 || cm_kmesh_is_boundary(&km, v) || cm_kmesh_star(&km, v, &star) < 3) continue;
+                for (size_t g = 0; g < 2; g++) {
+                    const double *c = cm_kmesh_pos(&km, g, v), *p0 = cm_kmesh_pos(&km, g, km.tri[cm_next(star.a[0])]);
+                    const double *p1 = cm_kmesh_pos(&km, g, km.tri[cm_next(star.a[1])]);
+                    double reach = hypot(p0[0] - c[0], p0[1] - c[1]);
+                    for (int trial = 0; trial < 16; trial++) {
+                        double q[2] = {c[0], c[1]}, mid[2] = {0.5 * (p0[0] + p1[0]), 0.5 * (p0[1] + p1[1])};
+                        if (trial == 1) q[0] = p0[0], q[1] = p0[1];
+                        else if (trial == 2) q[0] = mid[0], q[1] = mid[1];
+                        else if (trial == 3) q[0] += 1e3 * reach, q[1] -= 1e3 * reach;
+                        else if (trial < 8) { /* a sliver whose sin^2 underflows: 2^-1000 .. 2^-1090 */
+                            double off = ldexp(1.0, -500 - 15 * (trial - 4));
+                            q[0] = mid[0] - off * (p1[1] - p0[1]), q[1] = mid[1] + off * (p1[0] - p0[0]);
+                        } else q[0] += reach * (rp_uniform(&rng) - 0.5), q[1] += reach * (rp_uniform(&rng) - 0.5);
+                        double want = star_sin2_reference(&km, g, &star, q), floor;
+                        switch ((int)(rp_uniform(&rng) * 7)) {
+                        case 0: floor = -1.0; break;
+                        case 1: floor = 0.0; break;
+                        case 2: floor = 0x1p-1000; break;
+                        case 3: floor = want; break;
+                        case 4: floor = nextafter(want, 0.0); break;
+                        case 5: floor = nextafter(want, 1.0); break;
+                        default: floor = 0.75 * rp_uniform(&rng); break;
+                        }
+                        double got = cm_smooth_star_sin2(&km, g, v, &star, q, floor, (long)(rp_uniform(&rng) * 64));
+                        checked++;
+                        if (want > floor) above++, wrong += memcmp(&want, &got, sizeof got) != 0;
+                        else wrong += got > floor;
+                    }
+                }
+            }
+        }
+        for (size_t g = 0; g < 2; g++) free(orig[g]);
+        cm_ibuf_free(&star), cm_kmesh_free(&km), cm_mesh_clear(&m);
+        free(a), free(b);
+    }
+    CHECK_MSG(wrong == 0, "star scan: %ld of %ld trials differ from the reference", wrong, checked);
+    CHECK_MSG(above > checked / 4, "star scan: only %ld of %ld trials above their floor", above, checked);
+    printf("star scan: %ld trials, %ld above their floor\n", checked, above);
+}
+
 int main(void)
 {
+    test_star_scan(40);
     test_min_angle_above(40000);
     test_max_angle(200000);
     test_property_operations(60, 400);

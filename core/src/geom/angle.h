@@ -26,6 +26,17 @@ double cm_triangle_max_angle(const double a[2], const double b[2], const double 
 
 double cm_triangle_min_angle_sin2_wide(const double a[2], const double b[2], const double c[2]);
 
+/* The product of the two largest of a triangle's three squared side
+ * lengths: the largest of the three products (rounding is monotone), the
+ * same bits as picking the pair by comparisons, without those branches
+ * (data-dependent, so mispredicted: most of the position search's time). */
+static inline double cm_sin2_den(double lab, double lbc, double lca)
+{
+    double a = lab * lbc, b = lab * lca, c = lbc * lca;
+    a = a > b ? a : b;
+    return a > c ? a : c;
+}
+
 /* sin^2 of the smallest angle of triangle abc: cheaper, same order. Inline:
  * the smoothing's position searches call it for every trial point. */
 static inline double cm_triangle_min_angle_sin2(const double a[2], const double b[2],
@@ -35,10 +46,7 @@ static inline double cm_triangle_min_angle_sin2(const double a[2], const double 
     double bcx = c[0] - b[0], bcy = c[1] - b[1];
     double cax = a[0] - c[0], cay = a[1] - c[1];
     double lab = abx * abx + aby * aby, lbc = bcx * bcx + bcy * bcy, lca = cax * cax + cay * cay;
-    double cross = abx * cay - aby * cax, den;
-    if (lab <= lbc && lab <= lca) den = lbc * lca;
-    else if (lbc <= lca) den = lab * lca;
-    else den = lab * lbc;
+    double cross = abx * cay - aby * cax, den = cm_sin2_den(lab, lbc, lca);
     /* den, the product of the two longest squared lengths, bounds cross^2:
      * in range, nothing above overflowed. */
     if (!(den > CM_ANGLE_SAFE_LO && den < CM_ANGLE_SAFE_HI) && den != 0)

@@ -23,6 +23,8 @@ typedef struct ring {
     double link2[CM_SMOOTH_MAX_DEGREE];   /* |p[i+1] - p[i]|^2: the same for every trial point */
     long m;
     long worst;                           /* triangle (p[i], p[i+1]) last found smallest */
+    double den_lo;                        /* > 0: ring_sin2's den is at least this, above
+                                             CM_ANGLE_SAFE_LO, wherever the trial point */
 } ring;
 
 static int ring_of(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring *r)
@@ -34,10 +36,16 @@ static int ring_of(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star,
         const double *q = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[i < r->m ? i : 0])]);
         r->p[i][0] = q[0], r->p[i][1] = q[1];
     }
+    double link_lo = HUGE_VAL;
     for (long i = 0; i < r->m; i++) {
         double dx = r->p[i + 1][0] - r->p[i][0], dy = r->p[i + 1][1] - r->p[i][1];
         r->link2[i] = dx * dx + dy * dy;
+        if (r->link2[i] < link_lo) link_lo = r->link2[i];
     }
+    /* ring_sin2's den multiplies the two longest squared sides: one is at
+     * least the link edge's, the other at least a quarter of it (triangle
+     * inequality), so den >= link2^2 / 4 but for rounding. */
+    r->den_lo = link_lo > 0x1p-498 ? 0.24 * link_lo * link_lo : 0;
     r->worst = 0;
     return 0;
 }
@@ -57,7 +65,7 @@ static int angle_target(const ring *r, double power, double out[2])
     const double *c = r->c;
     double x = 0, y = 0, wsum = 0;
     for (long i = 0; i < r->m; i++) {
-        const double *p = r->p[i], *pn = r->p[(i + 1) % r->m], *pp = r->p[(i + r->m - 1) % r->m];
+        const double *p = r->p[i], *pn = r->p[i + 1], *pp = r->p[i ? i - 1 : r->m - 1];
         double dx = c[0] - p[0], dy = c[1] - p[1];
         double nx = pn[0] - p[0], ny = pn[1] - p[1], qx = pp[0] - p[0], qy = pp[1] - p[1];
         double a1 = atan2(nx * dy - ny * dx, nx * dx + ny * dy); /* from p_{i+1} to v */
@@ -96,16 +104,20 @@ int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing metho
 
 /* cm_triangle_min_angle_sin2(q, p[i], p[i+1]), the same arithmetic with
  * the link edge's squared length taken from the ring; or, when that is
- * certainly below `floor` (> 0), floor itself without the division. */
-static inline double ring_sin2(const ring *r, const double q[2], long i, double floor)
+ * certainly below `floor` (> 0), floor itself without the division.
+ * `bounded`: den is known to be at least r->den_lo and floor * den, when
+ * positive, above 2^-900, so only overflow needs a test. */
+static inline double ring_sin2(const ring *r, const double q[2], long i, double floor, int bounded)
 {
     const double *b = r->p[i], *c = r->p[i + 1];
     double abx = b[0] - q[0], aby = b[1] - q[1], cax = q[0] - c[0], cay = q[1] - c[1];
     double lab = abx * abx + aby * aby, lbc = r->link2[i], lca = cax * cax + cay * cay;
-    double cross = abx * cay - aby * cax, den;
-    if (lab <= lbc && lab <= lca) den = lbc * lca;
-    else if (lbc <= lca) den = lab * lca;
-    else den = lab * lbc;
+    double cross = abx * cay - aby * cax, den = cm_sin2_den(lab, lbc, lca);
+    if (bounded) {
+        if (!(den < CM_ANGLE_SAFE_HI)) return cm_triangle_min_angle_sin2_wide(q, b, c);
+        if (cross * cross < floor * den * (1 - 0x1p-40)) return floor;
+        return cross * cross / den;
+    }
     if (!(den > CM_ANGLE_SAFE_LO && den < CM_ANGLE_SAFE_HI) && den != 0) return cm_triangle_min_angle_sin2_wide(q, b, c);
     double bar = floor * den;
     if (bar > 0x1p-900 && cross * cross < bar * (1 - 0x1p-40)) return floor; /* the rounded quotient is below floor */
@@ -116,26 +128,51 @@ static inline double ring_sin2(const ring *r, const double q[2], long i, double 
  * 90 degrees, no atan2: this runs for every candidate position). Only
  * values above `floor` matter to the callers: the scan stops at the first
  * triangle at or below it and returns a value at or below floor. */
-static inline double star_sin2_above(ring *r, const double q[2], double floor)
+static inline double star_scan(const ring *r, const double q[2], double floor, int bounded, long *worst)
 {
     double lo = 1.0;
-    long m = r->m, w = r->worst, lo_at = w;
+    long m = r->m, w = *worst, lo_at = w;
     for (long i = w; i < m; i++) { /* from the last worst: it fails first */
-        double s = ring_sin2(r, q, i, floor);
+        double s = ring_sin2(r, q, i, floor, bounded);
         if (s < lo) lo = s, lo_at = i;
         if (!(lo > floor)) goto done;
     }
     for (long i = 0; i < w; i++) {
-        double s = ring_sin2(r, q, i, floor);
+        double s = ring_sin2(r, q, i, floor, bounded);
         if (s < lo) lo = s, lo_at = i;
         if (!(lo > floor)) break;
     }
 done:
-    r->worst = lo_at;
+    *worst = lo_at;
     return lo;
 }
 
-static double star_sin2(ring *r, const double q[2]) { return star_sin2_above(r, q, -1.0); }
+/* May the scans with this floor take ring_sin2's bounded path? */
+static int scan_bounded(const ring *r, double floor)
+{
+    return r->den_lo > 0 && (floor <= 0 || floor * r->den_lo > 0x1p-900);
+}
+
+/* bounded: scan_bounded(r, floor), found once for many trial points;
+ * *worst: where the scan starts, then the triangle it found smallest. */
+static inline double star_sin2_above(const ring *r, const double q[2], double floor, int bounded, long *worst)
+{
+    return bounded ? star_scan(r, q, floor, 1, worst) : star_scan(r, q, floor, 0, worst);
+}
+
+static double star_sin2(ring *r, const double q[2])
+{
+    return star_sin2_above(r, q, -1.0, scan_bounded(r, -1.0), &r->worst);
+}
+
+double cm_smooth_star_sin2(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, const double q[2],
+                           double floor, long start)
+{
+    ring r;
+    if (ring_of(km, g, v, star, &r)) return NAN;
+    long worst = start % r.m;
+    return star_sin2_above(&r, q, floor, scan_bounded(&r, floor), &worst);
+}
 
 /* Is v at q strictly inside its link polygon's kernel (every triangle
  * counter-clockwise)? Exact: a triangle whose determinant clears its
@@ -187,9 +224,10 @@ static int try_move(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring
     /* Just below sin^2 of the angle a smart move must beat: positions at
      * or under it fail the test without the full scan or the asin. */
     double s = smart ? sin(fmin(before + CM_SMOOTH_GAIN, 0.5 * CM_PI)) : 0, floor = s * s * (1 - 1e-9);
+    int bounded = scan_bounded(r, floor);
     for (int attempt = 0; attempt < (smart ? CM_SMART_TRIES : 1); attempt++) {
         if (p[0] == c[0] && p[1] == c[1]) return 0;
-        double sp = smart ? star_sin2_above(r, p, floor) : 0;
+        double sp = smart ? star_sin2_above(r, p, floor, bounded, &r->worst) : 0;
         if ((!smart || (sp > floor && sin2_to_angle(sp) > before + CM_SMOOTH_GAIN)) && star_valid(r, p)) {
             cm_kmesh_move(km, g, v, p, star);
             return 1;
@@ -265,12 +303,16 @@ int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *st
         if (!(dx * dx + dy * dy > near2 * (1 + 1e-9))) step = fmin(step, hypot(dx, dy));
     }
     step *= 0.25;
+    long from[8]; /* per direction: the triangle that last stopped its scan, likely again */
+    for (int d = 0; d < 8; d++) from[d] = r.worst;
+    int bounded = scan_bounded(&r, q);
     for (int it = 0; it < CM_OPTIMIZE_STEPS && step > 0; it++) {
         int improved = 0;
         for (int d = 0; d < 8; d++) {
             double p[2] = {best[0] + step * dir[d][0], best[1] + step * dir[d][1]};
-            double qp = star_sin2_above(&r, p, q);
-            if (qp > q && star_valid(&r, p)) q = qp, best[0] = p[0], best[1] = p[1], improved = 1;
+            double qp = star_sin2_above(&r, p, q, bounded, &from[d]);
+            if (qp > q && star_valid(&r, p))
+                q = qp, best[0] = p[0], best[1] = p[1], improved = 1, bounded = scan_bounded(&r, q);
         }
         if (!improved) step *= 0.5;
     }

@@ -28,6 +28,14 @@ int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing metho
 int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star);
 /* cm_smooth_optimize for interior live v with its star given. */
 int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star);
+/* The smallest sin^2 of the angles of interior v's triangles in geometry
+ * g with v at q, as the position search scans them: from the triangle of
+ * star corner `start`, stopping at the first at or below `floor`. Above
+ * floor it is the smallest cm_triangle_min_angle_sin2(q, ...) to the bit;
+ * else some value at or below floor. NaN for a degree the smoothing
+ * leaves alone. For tests of the scan's shortcuts. */
+double cm_smooth_star_sin2(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, const double q[2],
+                           double floor, long start);
 /* One sweep over all Steiner vertices in every geometry. Returns the number
  * of moves, -1 out of memory. */
 long cm_smooth_pass(cm_kmesh *km, cm_smoothing method, int smart);
