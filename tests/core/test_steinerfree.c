@@ -244,6 +244,41 @@ static void test_memo(void)
     CHECK(runs > 10);
 }
 
+/* Beyond the doubles' squares a triangle's quality is NaN (inf / inf):
+ * the program takes the worst of the other geometries' then. A polygon
+ * and its exact image scaled by 2^300 (every squared length product
+ * overflows) plan as the polygon with itself, fan point or not. */
+static void test_huge_scale(void)
+{
+    enum { N = 40 };
+    double a[2 * N], b[2 * N], fans[4];
+    int32_t tri[3 * N], idx[N];
+    unsigned char common[N * N];
+    int runs = 0;
+    for (uint64_t seed = 1; seed <= 20; seed++) {
+        int n = 12 + (int)seed;
+        if ((seed % 2 ? rp_random_simple(a, n, seed) : rp_star(a, n, seed)) != 0) continue;
+        for (int i = 0; i < 2 * n; i++) b[i] = ldexp(a[i], 300);
+        for (int i = 0; i < n; i++) idx[i] = i;
+        CHECK(cm_polygon_triangulate(a, idx, n, tri, NULL) == 0);
+        cm_visibility_table(a, n, tri, common);
+        int star = cm_kernel_point(a, n, fans) == 1;
+        fans[2] = ldexp(fans[0], 300), fans[3] = ldexp(fans[1], 300);
+        const double same[4] = {fans[0], fans[1], fans[0], fans[1]};
+        const double *xy_same[2] = {a, a}, *xy_huge[2] = {a, b};
+        for (int with_fan = 0; with_fan <= star; with_fan++) {
+            cm_sf_plan p, q;
+            CHECK(plan_matrix(n, common, xy_same, with_fan ? same : NULL, (size_t)with_fan, &p) == 0);
+            CHECK(plan_matrix(n, common, xy_huge, with_fan ? fans : NULL, (size_t)with_fan, &q) == 0);
+            CHECK_MSG(same_plan(&p, &q) && p.nt > 0 && q.min_angle_deg == q.min_angle_deg,
+                      "seed %d, fan %d: the huge image plans differently", (int)seed, with_fan);
+            runs += with_fan;
+            cm_sf_plan_clear(&p), cm_sf_plan_clear(&q);
+        }
+    }
+    CHECK(runs > 3);
+}
+
 /* Two stars: star-shaped in both, so a fan from kernel points merges all
  * stuck faces into one: cost at most 1, and the fan face is valid. */
 static void test_fan(void)
@@ -337,6 +372,7 @@ int main(void)
     test_affine_image();
     test_fan();
     test_memo();
+    test_huge_scale();
     test_rows();
     return check_summary("test_steinerfree");
 }

@@ -28,11 +28,14 @@ static const val none = {LONG_MAX, 0.0};
 #define FAR (LONG_MAX / 4)
 #define NO_TRIANGLE 2.0 /* quality of a value without triangles */
 
-/* fmin without the library call (the same result for every pair of
- * doubles, NaN included; qualities are never -0). */
+/* fmin without the library call, for a that is not NaN: one minsd. Only
+ * quality() can give NaN (inf / inf, squared lengths beyond the doubles),
+ * and only as b: every value's quality is a qmin starting from
+ * NO_TRIANGLE, so never NaN, and squared lengths are not either.
+ * Qualities are never -0 (equal values: either is the same). */
 static inline double qmin(double a, double b)
 {
-    return a < b || b != b ? a : b;
+    return b < a ? b : a;
 }
 
 static int better(val a, val b)
