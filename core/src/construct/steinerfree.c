@@ -273,10 +273,11 @@ static inline void offer(val c, unsigned char how, int32_t a, int16_t fan, pick 
 }
 
 /* Could a value of this cost whose quality is at most qmin(q, anything)
- * beat cur? The triangle's quality is worth computing only then. */
+ * beat cur? The triangle's quality is worth computing only then. (q is
+ * never NaN: see qmin.) */
 static int could_win(long cost, double q, val cur)
 {
-    return cost < cur.cost || (cost == cur.cost && (q > cur.q || q != q));
+    return cost < cur.cost || (cost == cur.cost && q > cur.q);
 }
 
 /* G for the link (i, l) (or the root) when a triangle on it costs 0: a
@@ -627,11 +628,12 @@ static int build_fans(dp *d)
     /* three blocks (many small programs run): per vertex, per link, the
      * qualities */
     d->row_fans = calloc(6 * (size_t)m, sizeof *d->row_fans);
-    d->fwd_ok = calloc(2 * c, sizeof *d->fwd_ok);
+    d->fwd_ok = malloc(2 * c * sizeof *d->fwd_ok); /* each link's set below */
     d->fan_q = malloc((f * c + f) * sizeof *d->fan_q);
     if (!d->row_fans || !d->fwd_ok || !d->fan_q) return -1;
     d->fan_best = d->row_fans + m, d->fan_more = d->row_fans + 2 * m, d->facing = d->row_fans + 3 * m;
     d->rev_ok = d->fwd_ok + c, d->root_fan = d->fan_q + f * c;
+    d->fwd_ok[c - 1] = d->rev_ok[c - 1] = 0; /* past the links */
     uint64_t *parity = d->row_fans + 4 * m;
     d->fan_in = d->row_fans + 5 * m;
     for (size_t x = 0; x < d->nfans; x++) {
