@@ -350,12 +350,13 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
     if (!row || !want || cm_diagset_init(common, m) != 0) goto done;
     unsigned char *all = row + m;
     size_t lead = 0;
+    const part *flats = p && p->on ? p : NULL; /* only points on edges make flat pairs */
     for (long i = 0; i < m; i++) {
         memset(all, 0, (size_t)i + 1);
         memset(all + i + 1, 1, (size_t)(m - i - 1));
         seen_by_all(&r, i, m, i + 1, 1, row, all, want, &lead, i % LEAD_EVERY == 0);
         for (long j = i + 1; j < m; j++)
-            if (all[j] && !(p && flat_pair(p, gid[i], gid[j]))) cm_diagset_add(common, i, j);
+            if (all[j] && !(flats && flat_pair(flats, gid[i], gid[j]))) cm_diagset_add(common, i, j);
     }
     status = 0;
 done:
