@@ -77,6 +77,8 @@ typedef struct dp {
     const double *fans; /* nfans candidates of k points (2 doubles each) */
     size_t k, nfans;
     int tame; /* every coordinate and fan point tame (cm_coords_tame) */
+    double *fan_diff; /* tame: per fan point and geometry, each vertex
+                         minus the fan point (m pairs), else NULL */
     long *start;      /* links ending at l: left[start[l] .. start[l+1]) */
     int32_t *left;    /* ascending */
     long *out_start;  /* links leaving a: out_link[out_start[a] ..
@@ -188,12 +190,18 @@ static inline int orient(const dp *d, const double *a, const double *b, const do
 }
 
 /* Is the triangle from fan point x on the directed edge a -> b valid in
- * every geometry? */
+ * every geometry? With tame points the filter reads the differences from
+ * the fan point made once (fan_diff), the same doubles it would make. */
 static int fan_valid(const dp *d, size_t x, long a, long b)
 {
-    for (size_t g = 0; g < d->k; g++) {
-        const double *pa = d->xy[g] + 2 * a, *pb = d->xy[g] + 2 * b, *px = d->fans + 2 * (x * d->k + g);
-        if (orient(d, pa, pb, px) <= 0) return 0;
+    for (size_t g = 0, xg = x * d->k; g < d->k; g++, xg++) {
+        int o = 2;
+        if (d->fan_diff) {
+            const double *diff = d->fan_diff + 2 * xg * (size_t)d->m;
+            o = cm_orient2d_bound_a(diff[2 * a], diff[2 * b], diff[2 * a + 1], diff[2 * b + 1]);
+        }
+        if (o == 2) o = orient(d, d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->fans + 2 * xg);
+        if (o <= 0) return 0;
     }
     return 1;
 }
@@ -636,6 +644,20 @@ static int build_fans(dp *d)
     d->fwd_ok[c - 1] = d->rev_ok[c - 1] = 0; /* past the links */
     uint64_t *parity = d->row_fans + 4 * m;
     d->fan_in = d->row_fans + 5 * m;
+    /* the fan tests' differences, while they fit a modest block (else
+     * the filter makes its own), where the filter may be inline (see
+     * CM_ORIENT2D_INLINE) */
+#ifdef CM_ORIENT2D_INLINE
+    if (d->tame && d->nfans * d->k * (size_t)m <= ((size_t)1 << 20) &&
+        (d->fan_diff = malloc(2 * d->nfans * d->k * (size_t)m * sizeof *d->fan_diff)))
+        for (size_t x = 0; x < d->nfans; x++)
+            for (size_t g = 0; g < d->k; g++) {
+                const double *px = d->fans + 2 * (x * d->k + g);
+                double *diff = d->fan_diff + 2 * (x * d->k + g) * (size_t)m;
+                for (long v = 0; v < m; v++)
+                    diff[2 * v] = d->xy[g][2 * v] - px[0], diff[2 * v + 1] = d->xy[g][2 * v + 1] - px[1];
+            }
+#endif
     for (size_t x = 0; x < d->nfans; x++) {
         const double *f0 = d->fans + 2 * x * d->k;
         uint64_t odd = 0;
@@ -809,6 +831,7 @@ struct cm_sf_memo {
 static void free_run(dp *d)
 {
     free(d->fwd_ok), free(d->fan_q), free(d->plain), free(d->step_from), free(d->fanned), free(d->row_fans);
+    free(d->fan_diff);
     if (!d->work) free(d->g), free(d->arg), free(d->by), free(d->fan_of);
 }
 
