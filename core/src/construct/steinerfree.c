@@ -61,7 +61,7 @@ typedef struct chains {
 } chains;
 
 /* The arrays a run without fan points takes from a workspace. */
-enum { W_START, W_REACH, W_LEFT, W_OUT_START, W_OUT_LINK, W_G, W_ARG, W_BY, W_FAN_OF, W_TRI, W_FACE,
+enum { W_START, W_REACH, W_LEFT, W_OUT_START, W_OUT_LINK, W_G, W_G_COST, W_ARG, W_BY, W_FAN_OF, W_TRI, W_FACE,
        W_FACE_START, W_FACE_FAN, W_STACK, W_SLOTS };
 
 struct cm_sf_work {
@@ -89,6 +89,8 @@ typedef struct dp {
     long fan_bound;   /* the current row: a fan chain costing this or more
                          serves no fan face that can win (see closers) */
     val *g;           /* per link */
+    long *g_cost;     /* per link: g[].cost again, all the chains' hot loop
+                         reads (one index with left[], no 16-byte stride) */
     int32_t *arg;     /* per link: the chain's last vertex before l */
     unsigned char *by;
     int16_t *fan_of;  /* per link: the fan point of a BY_FAN face */
@@ -261,6 +263,7 @@ static long first_after(const dp *d, long l, long i)
 /* The best decomposition so far for one link (or the root). */
 typedef struct {
     val *value;
+    long *cost; /* the link's g_cost, NULL for the root */
     int32_t *arg;
     unsigned char *by;
     int16_t *fan_of;
@@ -303,6 +306,7 @@ static int close_triangle(const dp *d, long i, long l, long first, slot out)
     }
     if (p.value.cost != 0) return 0;
     *out.value = p.value, *out.arg = p.arg, *out.by = p.by, *out.fan_of = p.fan_of;
+    if (out.cost) *out.cost = p.value.cost;
     return 1;
 }
 
@@ -334,6 +338,7 @@ static void close_face(const dp *d, long i, long l, long first, long chord, slot
         }
     }
     *out.value = p.value, *out.arg = p.arg, *out.by = p.by, *out.fan_of = p.fan_of;
+    if (out.cost) *out.cost = p.value.cost;
 }
 
 /* The chains into l are done: what extending them starts from. */
@@ -437,6 +442,7 @@ static void extend_range(dp *d, long i, long lo, long hi, const long *first)
     chains *plain = d->plain;
     long *step_from = d->step_from;
     const val *g = d->g;
+    const long *g_cost = d->g_cost;
     const int32_t *left = d->left;
     const long *start = d->start;
     for (long l = lo; l <= hi; l++) {
@@ -451,7 +457,7 @@ static void extend_range(dp *d, long i, long lo, long hi, const long *first)
         int from_more = 0;
         for (long t = exists(pc->one) ? f + 1 : f; t < end; t++) {
             int32_t a = left[t];
-            long cost = step_from[a] + g[t].cost; /* G of a solved link exists */
+            long cost = step_from[a] + g_cost[t]; /* G of a solved link exists */
             if (cost > mv.cost) continue;
             const chains *prev = &plain[a];
             val v = {cost, qmin(prev->best.q, g[t].q)};
@@ -496,8 +502,8 @@ static void solve(dp *d, long *first, int memo)
             if (root && i > 0) break;
             long s = root ? -1 : d->out_link[o], l = root ? m - 1 : d->out_to[o], f = first[l];
             if (l > i + 1) {
-                slot out = s >= 0 ? (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]}
-                                  : (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of};
+                slot out = s >= 0 ? (slot){&d->g[s], &d->g_cost[s], &d->arg[s], &d->by[s], &d->fan_of[s]}
+                                  : (slot){&d->root, NULL, &d->root_arg, &d->root_by, &d->root_fan_of};
                 if (memo && s >= 0 && d->g[s].cost == 0) {
                     /* the memo's G: a decomposition of cost 0 has no fan
                      * face, so both runs find the same of cost 0 */
@@ -615,13 +621,15 @@ static int init_values(dp *d)
 {
     size_t c = (size_t)d->nlinks + 1;
     d->g = take(d->work, W_G, c, sizeof *d->g, 0);
+    d->g_cost = take(d->work, W_G_COST, c, sizeof *d->g_cost, 0);
     d->arg = take(d->work, W_ARG, c, sizeof *d->arg, 0);
     d->by = take(d->work, W_BY, c, 1, 0);
     d->fan_of = take(d->work, W_FAN_OF, c, sizeof *d->fan_of, 0);
-    if (!d->g || !d->arg || !d->by || !d->fan_of) return -1;
+    if (!d->g || !d->g_cost || !d->arg || !d->by || !d->fan_of) return -1;
     for (long b = 0; b < d->m; b++)
         for (long s = d->start[b]; s < d->start[b + 1]; s++) {
             d->g[s] = b == d->left[s] + 1 ? (val){0, NO_TRIANGLE} : none;
+            d->g_cost[s] = d->g[s].cost;
             d->arg[s] = -1, d->by[s] = BY_TRIANGLE, d->fan_of[s] = -1;
         }
     return 0;
@@ -832,7 +840,7 @@ static void free_run(dp *d)
 {
     free(d->fwd_ok), free(d->fan_q), free(d->plain), free(d->step_from), free(d->fanned), free(d->row_fans);
     free(d->fan_diff);
-    if (!d->work) free(d->g), free(d->arg), free(d->by), free(d->fan_of);
+    if (!d->work) free(d->g), free(d->g_cost), free(d->arg), free(d->by), free(d->fan_of);
 }
 
 static void free_links(dp *d)
@@ -954,12 +962,14 @@ int cm_steinerfree_plan_fans(const cm_sf_memo *memo, const double *fans, size_t 
     d.start = first->start, d.left = first->left, d.reach = first->reach, d.nlinks = first->nlinks;
     d.out_start = first->out_start, d.out_link = first->out_link, d.out_to = first->out_to;
     d.g = malloc(c * sizeof *d.g);
+    d.g_cost = malloc(c * sizeof *d.g_cost);
     d.arg = malloc(c * sizeof *d.arg);
     d.by = malloc(c);
     d.fan_of = malloc(c * sizeof *d.fan_of);
     int status = -1;
-    if (d.g && d.arg && d.by && d.fan_of) {
+    if (d.g && d.g_cost && d.arg && d.by && d.fan_of) {
         memcpy(d.g, first->g, c * sizeof *d.g);
+        memcpy(d.g_cost, first->g_cost, c * sizeof *d.g_cost);
         memcpy(d.arg, first->arg, c * sizeof *d.arg);
         memcpy(d.by, first->by, c);
         memcpy(d.fan_of, first->fan_of, c * sizeof *d.fan_of);
