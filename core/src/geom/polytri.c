@@ -51,7 +51,7 @@ static void ear_box(const ring *r, long a, long b, long c, double box[4])
 /* Is p inside or on the closed triangle abc (counter-clockwise, box its
  * bounding box)? Outside the box it is outside the triangle: compared
  * first, exactly. */
-static int in_ear(const double *pa, const double *pb, const double *pc, const double box[4], const double *p,
+static inline int in_ear(const double *pa, const double *pb, const double *pc, const double box[4], const double *p,
                   int tame)
 {
     if (p[0] < box[0] || p[0] > box[2] || p[1] < box[1] || p[1] > box[3]) return 0;
