@@ -71,13 +71,15 @@ static void propagate(const vis_ctx *ctx, long s, unsigned char *row, long top)
         crossing x = c->stack[--top];
         const slot_view *sv = &c->view[x.tz];
         int32_t z = sv->z, r = sv->r, l = sv->l;
-        int oa, ob;
+        /* z on or right of ray b: the cone goes on across z -> l alone,
+         * whatever ray a says (not asked) */
+        int oa = 0, ob;
         if (c->tame) {
-            oa = cm_orient2d_tame(XY(c, s), XY(c, x.a), XY(c, z));
             ob = cm_orient2d_tame(XY(c, s), XY(c, x.b), XY(c, z));
+            if (ob > 0) oa = cm_orient2d_tame(XY(c, s), XY(c, x.a), XY(c, z));
         } else {
-            oa = cm_orient2d(XY(c, s), XY(c, x.a), XY(c, z));
             ob = cm_orient2d(XY(c, s), XY(c, x.b), XY(c, z));
+            if (ob > 0) oa = cm_orient2d(XY(c, s), XY(c, x.a), XY(c, z));
         }
         int32_t across_rz = sv->across_rz, across_zl = sv->across_zl;
         if (ob > 0 && oa < 0) {
