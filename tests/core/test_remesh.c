@@ -992,54 +992,6 @@ static void random_triangle(rp_rng *rng, int i, double p[3][2])
         for (int d = 0; d < 2; d++) p[2][d] = 0.3 * p[0][d] + 0.7 * p[1][d] + scale * 1e-9 * rp_uniform(rng);
 }
 
-/* cm_triangle_min_angle_above decides as cm_triangle_min_angle's value
- * compared with the bound: bounds at the angle itself and a few ulps
- * either side, random ones, slivers, and coordinates near 1e-200 and
- * 1e200 (the long double path). */
-static void test_min_angle_above(int count)
-{
-    rp_rng rng = {20261124};
-    int mismatches = 0, near = 0;
-    for (int i = 0; i < count; i++) {
-        double p[3][2];
-        random_triangle(&rng, i, p);
-        double a = cm_triangle_min_angle(p[0], p[1], p[2]), bound;
-        switch (i % 4) {
-        case 0: bound = a; break;
-        case 1: bound = nextafter(nextafter(a, 0.0), 0.0); break;
-        case 2: bound = nextafter(a, 1.0); break;
-        default: bound = rp_uniform(&rng) * 1.2; break;
-        }
-        near += i % 4 != 3;
-        mismatches += cm_triangle_min_angle_above(p[0], p[1], p[2], bound, tan(bound)) != (a > bound);
-    }
-    CHECK(near > 0 && mismatches == 0);
-}
-
-/* cm_triangle_max_angle is the largest of the three cm_angle_at values,
- * to the bit: also for nearly isosceles triangles (two longest edges
- * within the factor it trusts, and just outside it), slivers and far
- * scales. */
-static void test_max_angle(int count)
-{
-    rp_rng rng = {20261128};
-    int mismatches = 0;
-    for (int i = 0; i < count; i++) {
-        double p[3][2];
-        random_triangle(&rng, i, p);
-        if (i % 5 == 1 || i % 5 == 2) { /* the third point near the perpendicular bisector of the first two */
-            double mx = 0.5 * (p[0][0] + p[1][0]), my = 0.5 * (p[0][1] + p[1][1]);
-            double dx = p[1][0] - p[0][0], dy = p[1][1] - p[0][1], t = rp_uniform(&rng) * 2.0 - 1.0;
-            double off = i % 5 == 1 ? 1e-7 * (rp_uniform(&rng) - 0.5) : 0.0;
-            p[2][0] = mx - t * dy + off * dx, p[2][1] = my + t * dx + off * dy;
-        }
-        double want = fmax(cm_angle_at(p[0], p[1], p[2]), fmax(cm_angle_at(p[1], p[2], p[0]), cm_angle_at(p[2], p[0], p[1])));
-        double got = cm_triangle_max_angle(p[0], p[1], p[2]);
-        mismatches += memcmp(&want, &got, sizeof got) != 0;
-    }
-    CHECK_MSG(mismatches == 0, "max angle: %d of %d differ from the three angles' largest", mismatches, count);
-}
-
 /* cm_triangle_max_angle_below decides as cm_triangle_max_angle's value
  * compared with the bound, and cm_triangle_min_angle_rank counts the
  * bounds cm_triangle_min_angle's value is above: bounds at the angles
@@ -1115,6 +1067,54 @@ static void test_mesh_quality(void)
                   got.pct_below_20deg != (double)below[2] * (100.0 / (double)nt);
     }
     CHECK_MSG(differ == 0, "mesh quality: %d of 200 meshes differ from the plain loop", differ);
+}
+
+/* cm_triangle_min_angle_above decides as cm_triangle_min_angle's value
+ * compared with the bound: bounds at the angle itself and a few ulps
+ * either side, random ones, slivers, and coordinates near 1e-200 and
+ * 1e200 (the long double path). */
+static void test_min_angle_above(int count)
+{
+    rp_rng rng = {20261124};
+    int mismatches = 0, near = 0;
+    for (int i = 0; i < count; i++) {
+        double p[3][2];
+        random_triangle(&rng, i, p);
+        double a = cm_triangle_min_angle(p[0], p[1], p[2]), bound;
+        switch (i % 4) {
+        case 0: bound = a; break;
+        case 1: bound = nextafter(nextafter(a, 0.0), 0.0); break;
+        case 2: bound = nextafter(a, 1.0); break;
+        default: bound = rp_uniform(&rng) * 1.2; break;
+        }
+        near += i % 4 != 3;
+        mismatches += cm_triangle_min_angle_above(p[0], p[1], p[2], bound, tan(bound)) != (a > bound);
+    }
+    CHECK(near > 0 && mismatches == 0);
+}
+
+/* cm_triangle_max_angle is the largest of the three cm_angle_at values,
+ * to the bit: also for nearly isosceles triangles (two longest edges
+ * within the factor it trusts, and just outside it), slivers and far
+ * scales. */
+static void test_max_angle(int count)
+{
+    rp_rng rng = {20261128};
+    int mismatches = 0;
+    for (int i = 0; i < count; i++) {
+        double p[3][2];
+        random_triangle(&rng, i, p);
+        if (i % 5 == 1 || i % 5 == 2) { /* the third point near the perpendicular bisector of the first two */
+            double mx = 0.5 * (p[0][0] + p[1][0]), my = 0.5 * (p[0][1] + p[1][1]);
+            double dx = p[1][0] - p[0][0], dy = p[1][1] - p[0][1], t = rp_uniform(&rng) * 2.0 - 1.0;
+            double off = i % 5 == 1 ? 1e-7 * (rp_uniform(&rng) - 0.5) : 0.0;
+            p[2][0] = mx - t * dy + off * dx, p[2][1] = my + t * dx + off * dy;
+        }
+        double want = fmax(cm_angle_at(p[0], p[1], p[2]), fmax(cm_angle_at(p[1], p[2], p[0]), cm_angle_at(p[2], p[0], p[1])));
+        double got = cm_triangle_max_angle(p[0], p[1], p[2]);
+        mismatches += memcmp(&want, &got, sizeof got) != 0;
+    }
+    CHECK_MSG(mismatches == 0, "max angle: %d of %d differ from the three angles' largest", mismatches, count);
 }
 
 int main(void)
