@@ -513,6 +513,35 @@ static void test_random_polygons(void)
     if (rp_comb(xy, 48, 6) == 0) check_polygon(xy, 48, 0, "comb 48");
 }
 
+/* cm_path_valid_in with the polygon's tameness given says what
+ * cm_path_valid says, and a polygon's exact image scaled by 2^450 (not
+ * tame: the full segment tests) what the polygon says (tame tests), on
+ * single- and double-bend candidates over random stars and polygons. */
+static void test_path_valid_in(void)
+{
+    enum { N = 24 };
+    double xy[2 * N], big[2 * N], y[4], ybig[4];
+    rp_rng rng = {2026112901};
+    long differ = 0, valid = 0, tried = 0;
+    for (uint64_t seed = 1; seed <= 12; seed++) {
+        if ((seed % 2 ? rp_star(xy, N, seed) : rp_random_simple(xy, N, seed)) != 0) continue;
+        for (int i = 0; i < 2 * N; i++) big[i] = ldexp(xy[i], 450);
+        int tame = cm_coords_tame(xy, 2 * N), wild = cm_coords_tame(big, 2 * N);
+        CHECK(tame && !wild);
+        for (int trial = 0; trial < 200; trial++) {
+            long u = (long)(rp_next(&rng) % N), v = (long)(rp_next(&rng) % N), nb = 1 + trial % 2;
+            if (u == v) continue;
+            for (int i = 0; i < 2 * nb; i++) y[i] = 2.2 * rp_uniform(&rng) - 1.1, ybig[i] = ldexp(y[i], 450);
+            int plain = cm_path_valid(xy, N, u, v, y, nb);
+            differ += cm_path_valid_in(xy, N, tame, u, v, y, nb) != plain;
+            differ += cm_path_valid_in(big, N, wild, u, v, ybig, nb) != plain;
+            valid += plain, tried++;
+        }
+    }
+    CHECK_MSG(differ == 0 && valid > 20 && valid < tried, "path_valid_in: %ld differ, %ld of %ld valid", differ,
+              valid, tried);
+}
+
 /* Pockets triangulated from their parents' give the distances of pockets
  * ear-clipped from scratch, from every source, capped or not, and paths of
  * the same length that are valid; most pocket vertices go the derived way
@@ -672,6 +701,7 @@ int main(void)
     test_spiral_corridor();
     test_comb();
     test_random_polygons();
+    test_path_valid_in();
     test_needed_distances();
     test_derived_pockets();
     return check_summary("test_linkpath");

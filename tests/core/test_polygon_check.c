@@ -58,14 +58,20 @@ static int brute_find(const double *xy, long n, long *a, long *b)
     return 0;
 }
 
-/* Runs the sweep and the brute force; counts a failure if they disagree or
- * the reported pair is not ordered and offending. Returns the verdict. */
+/* Runs the sweep (sorting its events, and on events sorted beforehand)
+ * and the brute force; counts a failure if they disagree or the reported
+ * pair is not ordered and offending. Returns the verdict. */
 static int cross_check(const double *xy, long n, int *disagreements)
 {
-    long a = -2, b = -2, ba = -1, bb = -1;
+    long a = -2, b = -2, ba = -1, bb = -1, sa = -2, sb = -2;
     int sweep = cm_polygon_find_intersection(xy, n, &a, &b);
     int brute = brute_find(xy, n, &ba, &bb);
-    int ok = sweep == brute;
+    cm_vertex_event *events = malloc((size_t)n * sizeof *events);
+    for (long v = 0; events && v < n; v++) events[v] = (cm_vertex_event){xy[2 * v], xy[2 * v + 1], v};
+    int given = events && cm_vertex_events_sort(events, n) == 0
+                    ? cm_polygon_find_intersection_sorted(xy, n, events, &sa, &sb) : -1;
+    free(events);
+    int ok = sweep == brute && given == sweep && sa == a && sb == b;
     if (ok && sweep == 1)
         ok = 0 <= a && a < b && b < n && brute_pair_offends(xy, n, a, b);
     if (ok && sweep == 0) ok = a == -1 && b == -1;

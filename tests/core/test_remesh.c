@@ -9,6 +9,7 @@
 
 #include "check.h"
 #include "compatmesh/compatmesh.h"
+#include "api/quality.h"
 #include "remesh/kmesh.h"
 #include "geom/angle.h"
 #include "geom/looptri.h"
@@ -1041,6 +1042,83 @@ static void random_triangle(rp_rng *rng, int i, double p[3][2])
         for (int d = 0; d < 2; d++) p[2][d] = 0.3 * p[0][d] + 0.7 * p[1][d] + scale * 1e-9 * rp_uniform(rng);
 }
 
+/* cm_triangle_max_angle_below decides as cm_triangle_max_angle's value
+ * compared with the bound, and cm_triangle_min_angle_rank counts the
+ * bounds cm_triangle_min_angle's value is above: bounds at the angles
+ * themselves and a few ulps either side, random ones, nearly isosceles
+ * triangles, slivers and far scales. */
+static void test_angle_bounds(int count)
+{
+    rp_rng rng = {20261129};
+    int mismatches = 0;
+    for (int i = 0; i < count; i++) {
+        double p[3][2];
+        random_triangle(&rng, i, p);
+        if (i % 6 == 4) { /* the third point near the perpendicular bisector of the first two */
+            double mx = 0.5 * (p[0][0] + p[1][0]), my = 0.5 * (p[0][1] + p[1][1]);
+            double dx = p[1][0] - p[0][0], dy = p[1][1] - p[0][1], t = rp_uniform(&rng) * 2.0 - 1.0;
+            p[2][0] = mx - t * dy, p[2][1] = my + t * dx;
+        }
+        double hi = cm_triangle_max_angle(p[0], p[1], p[2]), lo = cm_triangle_min_angle(p[0], p[1], p[2]);
+        double near[5] = {hi, nextafter(hi, 0.0), nextafter(hi, 4.0), nextafter(nextafter(hi, 4.0), 4.0),
+                          CM_PI / 3 + rp_uniform(&rng) * 2.0};
+        for (int j = 0; j < 5; j++)
+            mismatches += cm_triangle_max_angle_below(p[0], p[1], p[2], near[j], cos(near[j])) != (hi < near[j]);
+        double bound[4] = {nextafter(lo, 0.0), lo, nextafter(lo, 2.0), rp_uniform(&rng) * 1.5}, tans[4];
+        if (bound[3] < bound[2]) { /* ascending */
+            double x = bound[3];
+            int at = 3;
+            for (; at > 0 && bound[at - 1] > x; at--) bound[at] = bound[at - 1];
+            bound[at] = x;
+        }
+        int want = 0;
+        for (int j = 0; j < 4; j++) tans[j] = tan(bound[j]), want += lo > bound[j];
+        mismatches += cm_triangle_min_angle_rank(p[0], p[1], p[2], bound, tans, 4) != want;
+    }
+    CHECK_MSG(mismatches == 0, "angle bounds: %d mismatches in %d triangles", mismatches, count);
+}
+
+/* cm_mesh_quality against the plain loop over every triangle's angles,
+ * to the bit: random meshes at several scales, with slivers. */
+static void test_mesh_quality(void)
+{
+    rp_rng rng = {20261130};
+    enum { NT = 400 };
+    double xy[3 * 2 * NT];
+    int32_t tri[3 * NT];
+    double *geoms[1] = {xy};
+    int differ = 0;
+    for (int round = 0; round < 200; round++) {
+        size_t nt = 1 + (size_t)(rp_next(&rng) % NT);
+        for (size_t t = 0; t < nt; t++) {
+            double p[3][2];
+            random_triangle(&rng, round * 7 + (int)t, p);
+            if (round % 2 && t % 3 == 0) /* skinny ones, counted at each bound */
+                for (int d = 0; d < 2; d++) p[2][d] = 0.5 * (p[0][d] + p[1][d]) + rp_uniform(&rng) * 0.3 * (p[1][1 - d] - p[0][1 - d]);
+            for (int j = 0; j < 3; j++) xy[6 * t + 2 * j] = p[j][0], xy[6 * t + 2 * j + 1] = p[j][1];
+            for (int j = 0; j < 3; j++) tri[3 * t + j] = (int32_t)(3 * t + (size_t)j);
+        }
+        cm_mesh mesh = {0};
+        mesh.k = 1, mesh.nv = 3 * nt, mesh.nt = nt, mesh.xy = geoms, mesh.tri = tri;
+        cm_quality got, want = {0};
+        cm_mesh_quality(&mesh, 0, &got);
+        size_t below[3] = {0, 0, 0};
+        want.min_angle_deg = 180.0, want.max_angle_deg = 0.0;
+        for (size_t t = 0; t < nt; t++) {
+            const double *a = xy + 6 * t, *b = a + 2, *c = a + 4;
+            double lo = cm_triangle_min_angle(a, b, c) * (180.0 / CM_PI);
+            want.min_angle_deg = fmin(want.min_angle_deg, lo);
+            want.max_angle_deg = fmax(want.max_angle_deg, cm_triangle_max_angle(a, b, c) * (180.0 / CM_PI));
+            below[0] += lo < 10.0, below[1] += lo < 15.0, below[2] += lo < 20.0;
+        }
+        differ += got.min_angle_deg != want.min_angle_deg || got.max_angle_deg != want.max_angle_deg ||
+                  got.pct_below_10deg != (double)below[0] * (100.0 / (double)nt) ||
+                  got.pct_below_15deg != (double)below[1] * (100.0 / (double)nt) ||
+                  got.pct_below_20deg != (double)below[2] * (100.0 / (double)nt);
+    }
+    CHECK_MSG(differ == 0, "mesh quality: %d of 200 meshes differ from the plain loop", differ);
+}
+
 /* cm_triangle_min_angle_above decides as cm_triangle_min_angle's value
  * compared with the bound: bounds at the angle itself and a few ulps
  * either side, random ones, slivers, and coordinates near 1e-200 and
@@ -1204,6 +1282,8 @@ int main(void)
     test_star_scan(40);
     test_min_angle_above(40000);
     test_max_angle(200000);
+    test_angle_bounds(100000);
+    test_mesh_quality();
     test_property_operations(60, 400);
     test_map_descent(30);
     test_smoothing_variants();

@@ -181,26 +181,17 @@ static int same_plan(const cm_sf_plan *p, const cm_sf_plan *q)
     return memcmp(p->face, q->face, sizeof(int32_t) * (size_t)p->face_start[p->nf]) == 0;
 }
 
-/* The run with fan points after a memo of the run without gives the plan
- * the run with them alone gives, with the fan points the partition tries:
- * kernel points of the stuck faces (each inside some sub-polygons only,
- * so rows keep the memo's values), then of the whole polygon. */
-static int check_memo(int n, const unsigned char *common, const double *const *xy)
+/* The fan points the partition tries: kernel points of the stuck faces of
+ * plan (each inside some sub-polygons only, so rows keep the memo's
+ * values), then of the whole polygon; up to max, 2 per geometry each. */
+static size_t stuck_face_fans(int n, const double *const *xy, const cm_sf_plan *plan, double *fans, size_t max)
 {
-    enum { NF = 8 };
-    double fans[2 * 2 * NF], *face = malloc(2 * sizeof(double) * (size_t)n);
-    cm_diagset set;
-    CHECK(face && cm_diagset_from_matrix(&set, n, common) == 0);
-    cm_diagview view = {&set, NULL};
-    cm_sf_plan plain, again, alone, after;
-    cm_sf_memo *memo = NULL;
-    CHECK(cm_steinerfree_plan(n, &view, xy, 2, NULL, 0, &plain) == 0);
-    CHECK(cm_steinerfree_plan_memo(n, &view, xy, 2, &again, &memo) == 0);
-    CHECK(same_plan(&plain, &again));
+    double *face = malloc(2 * sizeof(double) * (size_t)n);
+    CHECK(face != NULL);
     size_t nf = 0;
-    for (long f = 0; f <= plain.nf && nf < NF; f++) {
-        const int32_t *v = f < plain.nf ? plain.face + plain.face_start[f] : NULL;
-        long m = f < plain.nf ? plain.face_start[f + 1] - plain.face_start[f] : n;
+    for (long f = 0; face && f <= plan->nf && nf < max; f++) {
+        const int32_t *v = f < plan->nf ? plan->face + plan->face_start[f] : NULL;
+        long m = f < plan->nf ? plan->face_start[f + 1] - plan->face_start[f] : n;
         int star = 1;
         for (int g = 0; g < 2 && star; g++) {
             for (long i = 0; i < m; i++)
@@ -209,6 +200,26 @@ static int check_memo(int n, const unsigned char *common, const double *const *x
         }
         nf += star;
     }
+    free(face);
+    return nf;
+}
+
+/* The run with fan points after a memo of the run without gives the plan
+ * the run with them alone gives, with the fan points the partition
+ * tries. */
+static int check_memo(int n, const unsigned char *common, const double *const *xy)
+{
+    enum { NF = 8 };
+    double fans[2 * 2 * NF];
+    cm_diagset set;
+    CHECK(cm_diagset_from_matrix(&set, n, common) == 0);
+    cm_diagview view = {&set, NULL};
+    cm_sf_plan plain, again, alone, after;
+    cm_sf_memo *memo = NULL;
+    CHECK(cm_steinerfree_plan(n, &view, xy, 2, NULL, 0, &plain) == 0);
+    CHECK(cm_steinerfree_plan_memo(n, &view, xy, 2, &again, &memo) == 0);
+    CHECK(same_plan(&plain, &again));
+    size_t nf = stuck_face_fans(n, xy, &plain, fans, NF);
     for (size_t c = 1; c <= nf; c++) {
         CHECK(cm_steinerfree_plan(n, &view, xy, 2, fans, c, &alone) == 0);
         CHECK(cm_steinerfree_plan_fans(memo, fans, c, &after) == 0);
@@ -218,7 +229,6 @@ static int check_memo(int n, const unsigned char *common, const double *const *x
     cm_sf_memo_free(memo);
     cm_sf_plan_clear(&plain), cm_sf_plan_clear(&again);
     cm_diagset_clear(&set);
-    free(face);
     return (int)nf;
 }
 
@@ -242,6 +252,109 @@ static void test_memo(void)
         runs += check_memo(n, common, xy) > 1;
     }
     CHECK(runs > 10);
+}
+
+/* The plan of two geometries, with one fan point (NULL: none). */
+static void plan_two(int n, const unsigned char *common, const double *p, const double *q, const double *fan,
+                     cm_sf_plan *plan)
+{
+    const double *xy[2] = {p, q};
+    CHECK(plan_matrix(n, common, xy, fan, fan ? 1 : 0, plan) == 0);
+}
+
+/* Beyond the doubles' squares a triangle's quality is NaN (inf / inf):
+ * the program takes the worst of the other geometries' then. A polygon
+ * and its exact image scaled by 2^300 (every squared length product
+ * overflows; tame coordinates) or by 2^420 (not tame: the fan tests'
+ * filter makes its own differences) plan as the polygon with itself, fan
+ * point or not. Two stars plan the same in either order. */
+static void test_scale_and_order(void)
+{
+    enum { N = 40 };
+    double a[2 * N], b[2 * N], c[2 * N], fa[2], fb[2];
+    int32_t tri[3 * N], idx[N];
+    unsigned char common[N * N], vb[N * N];
+    int runs = 0, swapped = 0;
+    for (uint64_t seed = 1; seed <= 20; seed++) {
+        int n = 12 + (int)seed;
+        if ((seed % 2 ? rp_random_simple(a, n, seed) : rp_star(a, n, seed)) != 0) continue;
+        for (int i = 0; i < n; i++) idx[i] = i;
+        CHECK(cm_polygon_triangulate(a, idx, n, tri, NULL) == 0);
+        cm_visibility_table(a, n, tri, common);
+        int star = cm_kernel_point(a, n, fa) == 1;
+        for (int shift = 300; shift <= 420; shift += 120) {
+            for (int i = 0; i < 2 * n; i++) b[i] = ldexp(a[i], shift);
+            double same[4] = {fa[0], fa[1], fa[0], fa[1]}, scaled[4] = {fa[0], fa[1], ldexp(fa[0], shift), ldexp(fa[1], shift)};
+            for (int with_fan = 0; with_fan <= star; with_fan++) {
+                cm_sf_plan p, q;
+                plan_two(n, common, a, a, with_fan ? same : NULL, &p);
+                plan_two(n, common, a, b, with_fan ? scaled : NULL, &q);
+                CHECK_MSG(same_plan(&p, &q) && p.nt > 0 && q.min_angle_deg == q.min_angle_deg,
+                          "seed %d, scale 2^%d, fan %d: the image plans differently", (int)seed, shift, with_fan);
+                runs += with_fan;
+                cm_sf_plan_clear(&p), cm_sf_plan_clear(&q);
+            }
+        }
+        if (seed % 2 || rp_star(c, n, seed + 40) != 0 || cm_kernel_point(c, n, fb) != 1 || !star) continue;
+        CHECK(cm_polygon_triangulate(c, idx, n, tri, NULL) == 0);
+        cm_visibility_table(c, n, tri, vb);
+        for (int i = 0; i < n * n; i++) vb[i] &= common[i];
+        double ab[4] = {fa[0], fa[1], fb[0], fb[1]}, ba[4] = {fb[0], fb[1], fa[0], fa[1]};
+        cm_sf_plan p, q;
+        plan_two(n, vb, a, c, ab, &p);
+        plan_two(n, vb, c, a, ba, &q);
+        CHECK_MSG(same_plan(&p, &q), "seed %d: two stars plan differently in the other order", (int)seed);
+        swapped += p.nf > 0;
+        cm_sf_plan_clear(&p), cm_sf_plan_clear(&q);
+    }
+    CHECK(runs > 6 && swapped > 2);
+}
+
+/* With tame coordinates the fan tests' filter reads differences made once;
+ * otherwise it makes its own. One coordinate 0 made 2^-450 (not tame) in
+ * a pair of stars whose other coordinates are far from 0 changes no
+ * double the program computes but the filter's path: the plans with the
+ * stuck faces' fan points stay the same. */
+static void test_fans_tame_or_not(void)
+{
+    enum { N = 40, NF = 8 };
+    double a[2 * N], b[2 * N], fans[2 * 2 * NF];
+    int32_t tri[3 * N], idx[N];
+    unsigned char common[N * N], vb[N * N];
+    int runs = 0;
+    for (uint64_t seed = 1; seed <= 30; seed++) {
+        int n = 12 + (int)(seed % 25), far = 1;
+        CHECK(rp_star(a, n, seed) == 0 && rp_star(b, n, seed + 77) == 0);
+        double x0 = b[0];
+        for (int i = 0; i < n; i++) b[2 * i] -= x0; /* vertex 0 of b on x = 0 */
+        for (int i = 0; i < 2 * n; i++) far &= fabs(a[i]) > 1e-3 && (i == 0 || fabs(b[i]) > 1e-3);
+        if (!far || b[0] != 0.0) continue;
+        for (int i = 0; i < n; i++) idx[i] = i;
+        cm_polygon_triangulate(a, idx, n, tri, NULL), cm_visibility_table(a, n, tri, common);
+        cm_polygon_triangulate(b, idx, n, tri, NULL), cm_visibility_table(b, n, tri, vb);
+        for (int i = 0; i < n * n; i++) common[i] &= vb[i];
+        const double *xy[2] = {a, b};
+        cm_sf_plan plain, tame, wild;
+        CHECK(plan_matrix(n, common, xy, NULL, 0, &plain) == 0);
+        size_t nf = stuck_face_fans(n, xy, &plain, fans, NF);
+        for (size_t i = 0; i < 2 * 2 * nf; i++) far &= fabs(fans[i]) > 1e-3;
+        for (int mixed = 0; mixed < 2 && nf > 1 && far; mixed++) {
+            if (mixed) /* geometry 1 of each fan point from the next face: valid on other edges in each geometry */
+                for (size_t x = 0; x < nf; x++) {
+                    double *p = fans + 2 * (2 * x + 1), *q = fans + 2 * (2 * ((x + 1) % nf) + 1), t[2] = {p[0], p[1]};
+                    if (x + 1 < nf) p[0] = q[0], p[1] = q[1], q[0] = t[0], q[1] = t[1];
+                }
+            b[0] = 0.0;
+            CHECK(plan_matrix(n, common, xy, fans, nf, &tame) == 0);
+            b[0] = 0x1p-450;
+            CHECK(plan_matrix(n, common, xy, fans, nf, &wild) == 0);
+            CHECK_MSG(same_plan(&tame, &wild), "seed %d: the fan plans differ, tame or not", (int)seed);
+            runs += tame.nf > 0 && tame.cost < plain.cost;
+            cm_sf_plan_clear(&tame), cm_sf_plan_clear(&wild);
+        }
+        cm_sf_plan_clear(&plain);
+    }
+    CHECK(runs > 5);
 }
 
 /* Two stars: star-shaped in both, so a fan from kernel points merges all
@@ -337,6 +450,8 @@ int main(void)
     test_affine_image();
     test_fan();
     test_memo();
+    test_scale_and_order();
+    test_fans_tame_or_not();
     test_rows();
     return check_summary("test_steinerfree");
 }

@@ -11,21 +11,39 @@
 #include "geom/predicates.h"
 
 
+/* The vertices as events sorted by cm_vertex_events_sort, or NULL out of
+ * memory. */
+static cm_vertex_event *sorted_vertices(const double *xy, long n)
+{
+    cm_vertex_event *p = malloc((size_t)n * sizeof *p);
+    if (!p) return NULL;
+    for (long i = 0; i < n; i++) p[i] = (cm_vertex_event){xy[2 * i], xy[2 * i + 1], i};
+    if (cm_vertex_events_sort(p, n) == 0) return p;
+    free(p);
+    return NULL;
+}
+
+/* Two vertices with identical coordinates, adjacent in the sorted events.
+ * Returns 1 (and *first < *second) or 0 if none. */
+static int repeated_in(const cm_vertex_event *p, long n, long *first, long *second)
+{
+    for (long i = 1; i < n; i++) {
+        if (p[i].x == p[i - 1].x && p[i].y == p[i - 1].y) {
+            *first = p[i - 1].vertex;
+            *second = p[i].vertex;
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* Finds two vertices with identical coordinates in O(n log n).
  * Returns 1 (and *first < *second), 0 if none, -1 out of memory. */
 static int first_repeated_vertex(const double *xy, long n, long *first, long *second)
 {
-    cm_vertex_event *p = malloc((size_t)n * sizeof *p);
+    cm_vertex_event *p = sorted_vertices(xy, n);
     if (!p) return -1;
-    for (long i = 0; i < n; i++) p[i] = (cm_vertex_event){xy[2 * i], xy[2 * i + 1], i};
-    int found = cm_vertex_events_sort(p, n) != 0 ? -1 : 0;
-    for (long i = 1; i < n && !found; i++) {
-        if (p[i].x == p[i - 1].x && p[i].y == p[i - 1].y) {
-            *first = p[i - 1].vertex;
-            *second = p[i].vertex;
-            found = 1;
-        }
-    }
+    int found = repeated_in(p, n, first, second);
     free(p);
     return found;
 }
@@ -48,9 +66,11 @@ static cm_status check_one_polygon(const double *xy, long n, long g, cm_error *e
         }
     }
     long a, b;
-    int rep = first_repeated_vertex(xy, n, &a, &b);
-    if (rep < 0) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-    if (rep) {
+    /* sorted once: for repeated vertices, then for the scan line */
+    cm_vertex_event *sorted = sorted_vertices(xy, n);
+    if (!sorted) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    if (repeated_in(sorted, n, &a, &b)) {
+        free(sorted);
         cm_fail_at(err, g, b, a);
         return cm_fail(err, CM_ERR_REPEATED_VERTEX,
                        "polygon %ld: vertex %ld repeats vertex %ld (%.17g, %.17g)",
@@ -58,10 +78,12 @@ static cm_status check_one_polygon(const double *xy, long n, long g, cm_error *e
     }
     /* All vertices on one line: say so, rather than report the overlap. */
     if (all_collinear(xy, n)) {
+        free(sorted);
         cm_fail_at(err, g, -1, -1);
         return cm_fail(err, CM_ERR_ZERO_AREA, "polygon %ld has zero area (all vertices on one line)", g);
     }
-    int hit = cm_polygon_find_intersection(xy, n, &a, &b);
+    int hit = cm_polygon_find_intersection_sorted(xy, n, sorted, &a, &b);
+    free(sorted);
     if (hit < 0) return cm_fail_status(err, CM_ERR_NO_MEMORY);
     if (hit) {
         cm_fail_at(err, g, a, b);

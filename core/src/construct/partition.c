@@ -350,12 +350,13 @@ static int common_table(const double *const *xy, const int32_t *const *tris, siz
     if (!row || !want || cm_diagset_init(common, m) != 0) goto done;
     unsigned char *all = row + m;
     size_t lead = 0;
+    const part *flats = p && p->on ? p : NULL; /* only points on edges make flat pairs */
     for (long i = 0; i < m; i++) {
         memset(all, 0, (size_t)i + 1);
         memset(all + i + 1, 1, (size_t)(m - i - 1));
         seen_by_all(&r, i, m, i + 1, 1, row, all, want, &lead, i % LEAD_EVERY == 0);
         for (long j = i + 1; j < m; j++)
-            if (all[j] && !(p && flat_pair(p, gid[i], gid[j]))) cm_diagset_add(common, i, j);
+            if (all[j] && !(flats && flat_pair(flats, gid[i], gid[j]))) cm_diagset_add(common, i, j);
     }
     status = 0;
 done:
@@ -782,6 +783,7 @@ static double *refine_path(const double *xy, long m, long u, long v, const doubl
     double *pts = malloc(2 * (size_t)(want + 1) * sizeof *pts);
     double *cand = malloc(2 * (size_t)(want + 1) * sizeof *cand);
     long *order = malloc((size_t)(want + 2) * sizeof *order);
+    int tame = cm_coords_tame(xy, 2 * m); /* once for all the candidates */
     if (!pts || !cand || !order) goto fail;
     if (nb > 0) memcpy(pts, b, 2 * (size_t)nb * sizeof *pts);
     while (nb < want) {
@@ -811,7 +813,7 @@ static double *refine_path(const double *xy, long m, long u, long v, const doubl
                     memcpy(cand, pts, 2 * (size_t)best * sizeof *cand);
                     cand[2 * best] = q[0], cand[2 * best + 1] = q[1];
                     memcpy(cand + 2 * (best + 1), pts + 2 * best, 2 * (size_t)(nb - best) * sizeof *cand);
-                    if (cm_path_valid(xy, m, u, v, cand, nb + 1)) {
+                    if (cm_path_valid_in(xy, m, tame, u, v, cand, nb + 1)) {
                         double *t = pts;
                         pts = cand, cand = t;
                         done = 1;
@@ -1059,12 +1061,13 @@ static long sample_bends(const double *xy, long m, long u, long v, double *out, 
     double a0 = atan2(pn[1] - pu[1], pn[0] - pu[0]), span = atan2(pp[1] - pu[1], pp[0] - pu[0]) - a0;
     while (span <= 0) span += 2 * CM_PI;
     long count = 0;
+    int tame = cm_coords_tame(xy, 2 * m); /* once for all the candidates */
     for (int fi = 1; fi < 8 && count < max; fi++) {
         double angle = a0 + span * fi / 8.0, dir[2] = {cos(angle), sin(angle)};
         double run = free_run(xy, m, pu, dir);
         for (int di = 1; di < 4 && isfinite(run) && count < max; di++) {
             double y[2] = {pu[0] + run * di / 4.0 * dir[0], pu[1] + run * di / 4.0 * dir[1]};
-            if (cm_path_valid(xy, m, u, v, y, 1)) out[2 * count] = y[0], out[2 * count + 1] = y[1], count++;
+            if (cm_path_valid_in(xy, m, tame, u, v, y, 1)) out[2 * count] = y[0], out[2 * count + 1] = y[1], count++;
         }
     }
     return count;

@@ -28,11 +28,14 @@ static const val none = {LONG_MAX, 0.0};
 #define FAR (LONG_MAX / 4)
 #define NO_TRIANGLE 2.0 /* quality of a value without triangles */
 
-/* fmin without the library call (the same result for every pair of
- * doubles, NaN included; qualities are never -0). */
+/* fmin without the library call, for a that is not NaN: one minsd. Only
+ * quality() can give NaN (inf / inf, squared lengths beyond the doubles),
+ * and only as b: every value's quality is a qmin starting from
+ * NO_TRIANGLE, so never NaN, and squared lengths are not either.
+ * Qualities are never -0 (equal values: either is the same). */
 static inline double qmin(double a, double b)
 {
-    return a < b || b != b ? a : b;
+    return b < a ? b : a;
 }
 
 static int better(val a, val b)
@@ -58,7 +61,7 @@ typedef struct chains {
 } chains;
 
 /* The arrays a run without fan points takes from a workspace. */
-enum { W_START, W_REACH, W_LEFT, W_OUT_START, W_OUT_LINK, W_G, W_ARG, W_BY, W_FAN_OF, W_TRI, W_FACE,
+enum { W_START, W_REACH, W_LEFT, W_OUT_START, W_OUT_LINK, W_G, W_G_COST, W_ARG, W_BY, W_FAN_OF, W_TRI, W_FACE,
        W_FACE_START, W_FACE_FAN, W_STACK, W_SLOTS };
 
 struct cm_sf_work {
@@ -74,6 +77,8 @@ typedef struct dp {
     const double *fans; /* nfans candidates of k points (2 doubles each) */
     size_t k, nfans;
     int tame; /* every coordinate and fan point tame (cm_coords_tame) */
+    double *fan_diff; /* tame: per fan point and geometry, each vertex
+                         minus the fan point (m pairs), else NULL */
     long *start;      /* links ending at l: left[start[l] .. start[l+1]) */
     int32_t *left;    /* ascending */
     long *out_start;  /* links leaving a: out_link[out_start[a] ..
@@ -84,6 +89,8 @@ typedef struct dp {
     long fan_bound;   /* the current row: a fan chain costing this or more
                          serves no fan face that can win (see closers) */
     val *g;           /* per link */
+    long *g_cost;     /* per link: g[].cost again, all the chains' hot loop
+                         reads (one index with left[], no 16-byte stride) */
     int32_t *arg;     /* per link: the chain's last vertex before l */
     unsigned char *by;
     int16_t *fan_of;  /* per link: the fan point of a BY_FAN face */
@@ -185,12 +192,18 @@ static inline int orient(const dp *d, const double *a, const double *b, const do
 }
 
 /* Is the triangle from fan point x on the directed edge a -> b valid in
- * every geometry? */
+ * every geometry? With tame points the filter reads the differences from
+ * the fan point made once (fan_diff), the same doubles it would make. */
 static int fan_valid(const dp *d, size_t x, long a, long b)
 {
-    for (size_t g = 0; g < d->k; g++) {
-        const double *pa = d->xy[g] + 2 * a, *pb = d->xy[g] + 2 * b, *px = d->fans + 2 * (x * d->k + g);
-        if (orient(d, pa, pb, px) <= 0) return 0;
+    for (size_t g = 0, xg = x * d->k; g < d->k; g++, xg++) {
+        int o = 2;
+        if (d->fan_diff) {
+            const double *diff = d->fan_diff + 2 * xg * (size_t)d->m;
+            o = cm_orient2d_bound_a(diff[2 * a], diff[2 * b], diff[2 * a + 1], diff[2 * b + 1]);
+        }
+        if (o == 2) o = orient(d, d->xy[g] + 2 * a, d->xy[g] + 2 * b, d->fans + 2 * xg);
+        if (o <= 0) return 0;
     }
     return 1;
 }
@@ -250,6 +263,7 @@ static long first_after(const dp *d, long l, long i)
 /* The best decomposition so far for one link (or the root). */
 typedef struct {
     val *value;
+    long *cost; /* the link's g_cost, NULL for the root */
     int32_t *arg;
     unsigned char *by;
     int16_t *fan_of;
@@ -270,10 +284,11 @@ static inline void offer(val c, unsigned char how, int32_t a, int16_t fan, pick 
 }
 
 /* Could a value of this cost whose quality is at most qmin(q, anything)
- * beat cur? The triangle's quality is worth computing only then. */
+ * beat cur? The triangle's quality is worth computing only then. (q is
+ * never NaN: see qmin.) */
 static int could_win(long cost, double q, val cur)
 {
-    return cost < cur.cost || (cost == cur.cost && (q > cur.q || q != q));
+    return cost < cur.cost || (cost == cur.cost && q > cur.q);
 }
 
 /* G for the link (i, l) (or the root) when a triangle on it costs 0: a
@@ -291,6 +306,7 @@ static int close_triangle(const dp *d, long i, long l, long first, slot out)
     }
     if (p.value.cost != 0) return 0;
     *out.value = p.value, *out.arg = p.arg, *out.by = p.by, *out.fan_of = p.fan_of;
+    if (out.cost) *out.cost = p.value.cost;
     return 1;
 }
 
@@ -322,6 +338,7 @@ static void close_face(const dp *d, long i, long l, long first, long chord, slot
         }
     }
     *out.value = p.value, *out.arg = p.arg, *out.by = p.by, *out.fan_of = p.fan_of;
+    if (out.cost) *out.cost = p.value.cost;
 }
 
 /* The chains into l are done: what extending them starts from. */
@@ -425,6 +442,7 @@ static void extend_range(dp *d, long i, long lo, long hi, const long *first)
     chains *plain = d->plain;
     long *step_from = d->step_from;
     const val *g = d->g;
+    const long *g_cost = d->g_cost;
     const int32_t *left = d->left;
     const long *start = d->start;
     for (long l = lo; l <= hi; l++) {
@@ -439,7 +457,7 @@ static void extend_range(dp *d, long i, long lo, long hi, const long *first)
         int from_more = 0;
         for (long t = exists(pc->one) ? f + 1 : f; t < end; t++) {
             int32_t a = left[t];
-            long cost = step_from[a] + g[t].cost; /* G of a solved link exists */
+            long cost = step_from[a] + g_cost[t]; /* G of a solved link exists */
             if (cost > mv.cost) continue;
             const chains *prev = &plain[a];
             val v = {cost, qmin(prev->best.q, g[t].q)};
@@ -484,8 +502,8 @@ static void solve(dp *d, long *first, int memo)
             if (root && i > 0) break;
             long s = root ? -1 : d->out_link[o], l = root ? m - 1 : d->out_to[o], f = first[l];
             if (l > i + 1) {
-                slot out = s >= 0 ? (slot){&d->g[s], &d->arg[s], &d->by[s], &d->fan_of[s]}
-                                  : (slot){&d->root, &d->root_arg, &d->root_by, &d->root_fan_of};
+                slot out = s >= 0 ? (slot){&d->g[s], &d->g_cost[s], &d->arg[s], &d->by[s], &d->fan_of[s]}
+                                  : (slot){&d->root, NULL, &d->root_arg, &d->root_by, &d->root_fan_of};
                 if (memo && s >= 0 && d->g[s].cost == 0) {
                     /* the memo's G: a decomposition of cost 0 has no fan
                      * face, so both runs find the same of cost 0 */
@@ -603,13 +621,15 @@ static int init_values(dp *d)
 {
     size_t c = (size_t)d->nlinks + 1;
     d->g = take(d->work, W_G, c, sizeof *d->g, 0);
+    d->g_cost = take(d->work, W_G_COST, c, sizeof *d->g_cost, 0);
     d->arg = take(d->work, W_ARG, c, sizeof *d->arg, 0);
     d->by = take(d->work, W_BY, c, 1, 0);
     d->fan_of = take(d->work, W_FAN_OF, c, sizeof *d->fan_of, 0);
-    if (!d->g || !d->arg || !d->by || !d->fan_of) return -1;
+    if (!d->g || !d->g_cost || !d->arg || !d->by || !d->fan_of) return -1;
     for (long b = 0; b < d->m; b++)
         for (long s = d->start[b]; s < d->start[b + 1]; s++) {
             d->g[s] = b == d->left[s] + 1 ? (val){0, NO_TRIANGLE} : none;
+            d->g_cost[s] = d->g[s].cost;
             d->arg[s] = -1, d->by[s] = BY_TRIANGLE, d->fan_of[s] = -1;
         }
     return 0;
@@ -624,13 +644,28 @@ static int build_fans(dp *d)
     /* three blocks (many small programs run): per vertex, per link, the
      * qualities */
     d->row_fans = calloc(6 * (size_t)m, sizeof *d->row_fans);
-    d->fwd_ok = calloc(2 * c, sizeof *d->fwd_ok);
+    d->fwd_ok = malloc(2 * c * sizeof *d->fwd_ok); /* each link's set below */
     d->fan_q = malloc((f * c + f) * sizeof *d->fan_q);
     if (!d->row_fans || !d->fwd_ok || !d->fan_q) return -1;
     d->fan_best = d->row_fans + m, d->fan_more = d->row_fans + 2 * m, d->facing = d->row_fans + 3 * m;
     d->rev_ok = d->fwd_ok + c, d->root_fan = d->fan_q + f * c;
+    d->fwd_ok[c - 1] = d->rev_ok[c - 1] = 0; /* past the links */
     uint64_t *parity = d->row_fans + 4 * m;
     d->fan_in = d->row_fans + 5 * m;
+    /* the fan tests' differences, while they fit a modest block (else
+     * the filter makes its own), where the filter may be inline (see
+     * CM_ORIENT2D_INLINE) */
+#ifdef CM_ORIENT2D_INLINE
+    if (d->tame && d->nfans * d->k * (size_t)m <= ((size_t)1 << 20) &&
+        (d->fan_diff = malloc(2 * d->nfans * d->k * (size_t)m * sizeof *d->fan_diff)))
+        for (size_t x = 0; x < d->nfans; x++)
+            for (size_t g = 0; g < d->k; g++) {
+                const double *px = d->fans + 2 * (x * d->k + g);
+                double *diff = d->fan_diff + 2 * (x * d->k + g) * (size_t)m;
+                for (long v = 0; v < m; v++)
+                    diff[2 * v] = d->xy[g][2 * v] - px[0], diff[2 * v + 1] = d->xy[g][2 * v + 1] - px[1];
+            }
+#endif
     for (size_t x = 0; x < d->nfans; x++) {
         const double *f0 = d->fans + 2 * x * d->k;
         uint64_t odd = 0;
@@ -804,7 +839,8 @@ struct cm_sf_memo {
 static void free_run(dp *d)
 {
     free(d->fwd_ok), free(d->fan_q), free(d->plain), free(d->step_from), free(d->fanned), free(d->row_fans);
-    if (!d->work) free(d->g), free(d->arg), free(d->by), free(d->fan_of);
+    free(d->fan_diff);
+    if (!d->work) free(d->g), free(d->g_cost), free(d->arg), free(d->by), free(d->fan_of);
 }
 
 static void free_links(dp *d)
@@ -926,12 +962,14 @@ int cm_steinerfree_plan_fans(const cm_sf_memo *memo, const double *fans, size_t 
     d.start = first->start, d.left = first->left, d.reach = first->reach, d.nlinks = first->nlinks;
     d.out_start = first->out_start, d.out_link = first->out_link, d.out_to = first->out_to;
     d.g = malloc(c * sizeof *d.g);
+    d.g_cost = malloc(c * sizeof *d.g_cost);
     d.arg = malloc(c * sizeof *d.arg);
     d.by = malloc(c);
     d.fan_of = malloc(c * sizeof *d.fan_of);
     int status = -1;
-    if (d.g && d.arg && d.by && d.fan_of) {
+    if (d.g && d.g_cost && d.arg && d.by && d.fan_of) {
         memcpy(d.g, first->g, c * sizeof *d.g);
+        memcpy(d.g_cost, first->g_cost, c * sizeof *d.g_cost);
         memcpy(d.arg, first->arg, c * sizeof *d.arg);
         memcpy(d.by, first->by, c);
         memcpy(d.fan_of, first->fan_of, c * sizeof *d.fan_of);

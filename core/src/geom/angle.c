@@ -3,6 +3,7 @@
  * of the squared lengths leaves [2^-1000, 2^1000] the same formulas run in
  * long double (a wider exponent), so angles do not depend on the scale. */
 #include <math.h>
+#include <stddef.h>
 
 #include "geom/angle.h"
 
@@ -62,20 +63,35 @@ double cm_triangle_min_angle(const double a[2], const double b[2], const double 
     return min_angle_terms(a, b, c, &area2, &dot) ? atan2(area2, dot) : min_angle_wide(a, b, c);
 }
 
+int cm_triangle_min_angle_rank(const double a[2], const double b[2], const double c[2], const double *bound,
+                               const double *tan_bound, int n)
+{
+    double area2, dot, angle = -1.0; /* -1: the atan2 not taken yet */
+    int k = 0;
+    if (!min_angle_terms(a, b, c, &area2, &dot)) {
+        angle = min_angle_wide(a, b, c);
+        while (k < n && angle > bound[k]) k++;
+        return k;
+    }
+    for (; k < n; k++) {
+        /* The smallest angle is at most 60 degrees, so dot > 0 but for a
+         * degenerate triangle; atan2 and tan are off by an ulp or two, far
+         * inside the margin. */
+        if (dot > 0) {
+            double edge = dot * tan_bound[k];
+            if (area2 > edge * (1 + 1e-9)) continue;
+            if (area2 < edge * (1 - 1e-9)) break;
+        }
+        if (angle < 0) angle = atan2(area2, dot);
+        if (!(angle > bound[k])) break;
+    }
+    return k;
+}
+
 int cm_triangle_min_angle_above(const double a[2], const double b[2], const double c[2], double bound,
                                 double tan_bound)
 {
-    double area2, dot;
-    if (!min_angle_terms(a, b, c, &area2, &dot)) return min_angle_wide(a, b, c) > bound;
-    /* The smallest angle is at most 60 degrees, so dot > 0 but for a
-     * degenerate triangle; atan2 and tan are off by an ulp or two, far
-     * inside the margin. */
-    if (dot > 0) {
-        double edge = dot * tan_bound;
-        if (area2 > edge * (1 + 1e-9)) return 1;
-        if (area2 < edge * (1 - 1e-9)) return 0;
-    }
-    return atan2(area2, dot) > bound;
+    return cm_triangle_min_angle_rank(a, b, c, &bound, &tan_bound, 1);
 }
 
 /* The largest of the three angles as cm_angle_at computes them. When one
@@ -95,6 +111,34 @@ double cm_triangle_max_angle(const double a[2], const double b[2], const double 
         if (lca > wider * lab && lca > wider * lbc) return cm_angle_at(b, c, a);
     }
     return fmax(cm_angle_at(a, b, c), fmax(cm_angle_at(b, c, a), cm_angle_at(c, a, b)));
+}
+
+int cm_triangle_max_angle_below(const double a[2], const double b[2], const double c[2], double bound,
+                                double cos_bound)
+{
+    const double wider = 1.0 + 1e-6;
+    double lab = (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]);
+    double lbc = (c[0] - b[0]) * (c[0] - b[0]) + (c[1] - b[1]) * (c[1] - b[1]);
+    double lca = (a[0] - c[0]) * (a[0] - c[0]) + (a[1] - c[1]) * (a[1] - c[1]);
+    const double *p = NULL, *q = NULL, *r = NULL; /* the largest angle at p, as cm_angle_at(p, q, r) */
+    if (in_safe_range(lab + lbc + lca)) {
+        if (lab > wider * lbc && lab > wider * lca) p = c, q = a, r = b;
+        else if (lbc > wider * lab && lbc > wider * lca) p = a, q = b, r = c;
+        else if (lca > wider * lab && lca > wider * lbc) p = b, q = c, r = a;
+    }
+    if (p) {
+        double ux = q[0] - p[0], uy = q[1] - p[1], vx = r[0] - p[0], vy = r[1] - p[1];
+        double lu = ux * ux + uy * uy, lv = vx * vx + vy * vy;
+        /* both sides far from underflow: the cosine of the angle atan2
+         * takes is within a few ulps of 1 of dot / (|u| |v|), and angles
+         * differ at least as much as their cosines */
+        if (lu > 0x1p-900 && lv > 0x1p-900) {
+            double cosine = (ux * vx + uy * vy) / (sqrt(lu) * sqrt(lv));
+            if (cosine > cos_bound + 1e-9) return 1;
+            if (cosine < cos_bound - 1e-9) return 0;
+        }
+    }
+    return cm_triangle_max_angle(a, b, c) < bound;
 }
 
 double cm_triangle_min_angle_sin2_wide(const double a[2], const double b[2], const double c[2])

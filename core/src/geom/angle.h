@@ -17,8 +17,19 @@ double cm_triangle_min_angle(const double a[2], const double b[2], const double 
  * each other. */
 int cm_triangle_min_angle_above(const double a[2], const double b[2], const double c[2], double bound,
                                 double tan_bound);
+/* How many of bound[0..n) (ascending, each as for
+ * cm_triangle_min_angle_above) cm_triangle_min_angle(a, b, c) is above,
+ * exactly as those comparisons: one atan2 at most. */
+int cm_triangle_min_angle_rank(const double a[2], const double b[2], const double c[2], const double *bound,
+                               const double *tan_bound, int n);
 /* Largest angle (radians) of triangle abc. */
 double cm_triangle_max_angle(const double a[2], const double b[2], const double c[2]);
+/* 1 when cm_triangle_max_angle(a, b, c) < bound, exactly as that
+ * comparison, for cos_bound = cos(bound): the cosines decide without the
+ * atan2 unless they are within 1e-9 of each other, or the largest angle
+ * is not clear from the edges. */
+int cm_triangle_max_angle_below(const double a[2], const double b[2], const double c[2], double bound,
+                                double cos_bound);
 /* Squared lengths inside [2^-1000, 2^1000] neither overflow nor underflow
  * in the plain formulas; outside, long double takes over. */
 #define CM_ANGLE_SAFE_LO 0x1p-1000

@@ -984,13 +984,13 @@ int cm_link_path_within(cm_linkpart *lp, long u, long v, int max_level, double *
     if (run_levels(lp, u, max_level, NULL) < 0) return -1;
     int d = lp->dist[v];
     if (d < 1 || d > max_level) return 0;
-    if (d == 1) return cm_path_valid(lp->xy, lp->m, u, v, NULL, 0);
+    if (d == 1) return cm_path_valid_in(lp->xy, lp->m, lp->in.tame, u, v, NULL, 0);
     double *pts = malloc(2 * (size_t)(d - 1) * sizeof *pts);
     if (!pts) return -1;
     long mark = cm_xpool_count(lp->pool);
     int r = build_bends(lp, v, d, pts);
     cm_xpool_truncate(lp->pool, mark);
-    if (r == 1 && !cm_path_valid(lp->xy, lp->m, u, v, pts, d - 1)) r = 0;
+    if (r == 1 && !cm_path_valid_in(lp->xy, lp->m, lp->in.tame, u, v, pts, d - 1)) r = 0;
     if (r != 1) {
         free(pts);
         return r;
@@ -1015,12 +1015,17 @@ static const double *path_point(const double *xy, long u, long v, const double *
 
 int cm_path_valid(const double *xy, long m, long u, long v, const double *bends, long nb)
 {
+    return cm_path_valid_in(xy, m, cm_coords_tame(xy, 2 * m), u, v, bends, nb);
+}
+
+int cm_path_valid_in(const double *xy, long m, int tame, long u, long v, const double *bends, long nb)
+{
     long n = nb + 2;
 #define PT(i) path_point(xy, u, v, bends, n, i)
     int ok = 1;
-    /* O(m) once, against O(m) per link */
+    /* O(nb) once, against O(m) per link */
     int (*inside)(const double *, long, long, const double *, long, const double *) =
-        cm_coords_tame(xy, 2 * m) && cm_coords_tame(bends, 2 * nb) ? cm_segment_inside_tame : cm_segment_inside;
+        tame && cm_coords_tame(bends, 2 * nb) ? cm_segment_inside_tame : cm_segment_inside;
     for (long i = 0; ok && i + 1 < n; i++)
         ok = inside(xy, m, i == 0 ? u : -1, PT(i), i + 1 == n - 1 ? v : -1, PT(i + 1));
     for (long i = 0; ok && i + 2 < n; i++) ok = no_fold(PT(i), PT(i + 1), PT(i + 2));

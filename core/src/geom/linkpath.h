@@ -77,6 +77,9 @@ int cm_link_path_within(cm_linkpart *lp, long u, long v, int max_level, double *
  * strictly inside the polygon xy[0..m-1] (u, v vertices, bends interior
  * points) and the polyline is simple. Exact. */
 int cm_path_valid(const double *xy, long m, long u, long v, const double *bends, long nb);
+/* The same with tame = cm_coords_tame(xy, 2 * m), known to the caller:
+ * the many tests of one polygon's candidate paths check it once. */
+int cm_path_valid_in(const double *xy, long m, int tame, long u, long v, const double *bends, long nb);
 
 /* Weak visibility from a diagonal: vis[v] = 1 for the vertices v strictly
  * between a and b (counter-clockwise from a) that see some point of the

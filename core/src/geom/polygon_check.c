@@ -297,18 +297,17 @@ static int find_repeated_vertex(scanline *sw, const vertex_event *events)
     return 0;
 }
 
-static int run_scanline(scanline *sw, vertex_event *events)
+static int run_scanline(scanline *sw, const vertex_event *events)
 {
-    for (long v = 0; v < sw->n; v++)
-        events[v] = (vertex_event){sw->xy[2 * v], sw->xy[2 * v + 1], v};
-    if (cm_vertex_events_sort(events, sw->n) != 0) return -1;
     if (find_repeated_vertex(sw, events)) return 1;
     for (long k = 0; k < sw->n; k++)
         if (process_vertex(sw, events[k].vertex)) return 1;
     return 0;
 }
 
-static int find_intersection(scanline *sw, long *edge_a, long *edge_b)
+/* sorted: the vertex events in cm_vertex_events_sort's order, or NULL
+ * (made here). */
+static int find_intersection(scanline *sw, const vertex_event *sorted, long *edge_a, long *edge_b)
 {
     int found;
     long n = sw->n;
@@ -320,9 +319,11 @@ static int find_intersection(scanline *sw, long *edge_a, long *edge_b)
     } else if ((size_t)n > SIZE_MAX / sizeof(status_node)) {
         found = -1;
     } else {
-        vertex_event *events = malloc((size_t)n * sizeof *events);
+        vertex_event *events = sorted ? NULL : malloc((size_t)n * sizeof *events);
+        for (long v = 0; events && v < n; v++) events[v] = (vertex_event){sw->xy[2 * v], sw->xy[2 * v + 1], v};
         sw->node = malloc((size_t)n * sizeof *sw->node);
-        found = events && sw->node ? run_scanline(sw, events) : -1;
+        if ((!sorted && (!events || cm_vertex_events_sort(events, n) != 0)) || !sw->node) found = -1;
+        else found = run_scanline(sw, sorted ? sorted : events);
         free(events);
         free(sw->node);
     }
@@ -334,8 +335,14 @@ static int find_intersection(scanline *sw, long *edge_a, long *edge_b)
 int cm_polygon_find_intersection(const double *xy, long n, long *edge_a,
                                  long *edge_b)
 {
+    return cm_polygon_find_intersection_sorted(xy, n, NULL, edge_a, edge_b);
+}
+
+int cm_polygon_find_intersection_sorted(const double *xy, long n, const cm_vertex_event *sorted, long *edge_a,
+                                        long *edge_b)
+{
     scanline sw = {xy, n, NULL, NULL, NULL, -1, -1, -1, cm_coords_tame(xy, 2 * n)};
-    return find_intersection(&sw, edge_a, edge_b);
+    return find_intersection(&sw, sorted, edge_a, edge_b);
 }
 
 int cm_loops_find_intersection(const double *xy, const size_t *loop_sizes, size_t num_loops,
@@ -356,7 +363,7 @@ int cm_loops_find_intersection(const double *xy, const size_t *loop_sizes, size_
             start += m;
         }
         scanline sw = {xy, n, succ, pred, NULL, -1, -1, -1, cm_coords_tame(xy, 2 * n)};
-        found = find_intersection(&sw, edge_a, edge_b);
+        found = find_intersection(&sw, NULL, edge_a, edge_b);
     }
     free(succ), free(pred);
     return found;

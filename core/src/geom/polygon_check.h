@@ -33,4 +33,10 @@ typedef struct cm_vertex_event {
  * inline). 0, or -1 out of memory. */
 int cm_vertex_events_sort(cm_vertex_event *e, long n);
 
+/* cm_polygon_find_intersection with the polygon's n vertex events already
+ * sorted by cm_vertex_events_sort (NULL: sorted here): a caller that
+ * sorted them to look for repeated vertices sorts once. */
+int cm_polygon_find_intersection_sorted(const double *xy, long n, const cm_vertex_event *sorted, long *edge_a,
+                                        long *edge_b);
+
 #endif

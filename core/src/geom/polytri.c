@@ -51,7 +51,7 @@ static void ear_box(const ring *r, long a, long b, long c, double box[4])
 /* Is p inside or on the closed triangle abc (counter-clockwise, box its
  * bounding box)? Outside the box it is outside the triangle: compared
  * first, exactly. */
-static int in_ear(const double *pa, const double *pb, const double *pc, const double box[4], const double *p,
+static inline int in_ear(const double *pa, const double *pb, const double *pc, const double box[4], const double *p,
                   int tame)
 {
     if (p[0] < box[0] || p[0] > box[2] || p[1] < box[1] || p[1] > box[3]) return 0;
@@ -195,6 +195,8 @@ done:
 
 typedef struct { int32_t lo, hi; long slot; } edge_slot;
 
+static const int next3[3] = {1, 2, 0}, prev3[3] = {2, 0, 1};
+
 static int compare_edge_slots(const void *pa, const void *pb)
 {
     const edge_slot *x = pa, *y = pb;
@@ -202,25 +204,39 @@ static int compare_edge_slots(const void *pa, const void *pb)
     return (x->hi > y->hi) - (x->hi < y->hi);
 }
 
-/* Sorts the edge slots by (lo, hi) with two counting passes when the
- * vertex values are small (always, for a polygon's local indices). 0 done,
- * 1 values too large for it, -1 out of memory. */
-static int counting_sort(edge_slot *e, long n)
+/* Pairs the slots by edge in buckets of their lower ends, when the vertex
+ * values are small (always, for a polygon's local indices): each bucket's
+ * slots in order, mark[hi] holding the slot still waiting for its twin.
+ * The pairs are those of the sorted order (equal edges by slot, each pair
+ * taken from the first unpaired). 0 done, 1 values too large for it, -1
+ * out of memory. */
+static int pair_in_buckets(const edge_slot *e, long n, int32_t *nbr)
 {
     int32_t lo = 0, hi = 0;
     for (long s = 0; s < n; s++) lo = e[s].lo < lo ? e[s].lo : lo, hi = e[s].hi > hi ? e[s].hi : hi;
     if (lo < 0 || hi > 4 * n + 64) return 1;
-    long *count = malloc(((size_t)hi + 2) * sizeof *count);
-    edge_slot *t = malloc((size_t)n * sizeof *t);
-    int status = count && t ? 0 : -1;
-    for (int pass = 0; pass < 2 && status == 0; pass++) { /* hi, then lo (stable) */
-        edge_slot *from = pass == 0 ? e : t, *to = pass == 0 ? t : e;
-        for (long v = 0; v <= hi + 1; v++) count[v] = 0;
-        for (long s = 0; s < n; s++) count[(pass == 0 ? from[s].hi : from[s].lo) + 1]++;
-        for (long v = 0; v <= hi; v++) count[v + 1] += count[v];
-        for (long s = 0; s < n; s++) to[count[pass == 0 ? from[s].hi : from[s].lo]++] = from[s];
+    long *start = calloc((size_t)hi + 2, sizeof *start);
+    int32_t *order = malloc((size_t)(n + 1) * sizeof *order), *mark = malloc(((size_t)hi + 1) * sizeof *mark);
+    int status = start && order && mark ? 0 : -1;
+    if (status == 0) {
+        for (long s = 0; s < n; s++) start[e[s].lo + 1]++;
+        for (long v = 0; v <= hi; v++) start[v + 1] += start[v], mark[v] = -1;
+        for (long s = 0; s < n; s++) order[start[e[s].lo]++] = (int32_t)s; /* start[v]: now bucket v's end */
+        for (long v = 0, s = 0; v <= hi; v++) {
+            long from = s;
+            for (; s < start[v]; s++) {
+                int32_t x = order[s], *w = &mark[e[x].hi];
+                if (*w < 0) {
+                    *w = x;
+                    continue;
+                }
+                nbr[*w] = x / 3, nbr[x] = *w / 3;
+                *w = -1;
+            }
+            for (long t = from; t < s; t++) mark[e[order[t]].hi] = -1;
+        }
     }
-    free(count), free(t);
+    free(start), free(order), free(mark);
     return status;
 }
 
@@ -228,25 +244,24 @@ int cm_tri_adjacency(const int32_t *tri, long nt, int32_t *nbr)
 {
     edge_slot *e = malloc((size_t)(3 * nt + 1) * sizeof *e);
     if (!e) return -1;
-    for (long s = 0; s < 3 * nt; s++) {
-        int32_t a = tri[s - s % 3 + (s + 1) % 3], b = tri[s - s % 3 + (s + 2) % 3];
-        e[s] = (edge_slot){a < b ? a : b, a < b ? b : a, s};
-        nbr[s] = -1;
-    }
-    int sorted = counting_sort(e, 3 * nt);
-    if (sorted < 0) {
-        free(e);
-        return -1;
-    }
-    if (sorted > 0) qsort(e, (size_t)(3 * nt), sizeof *e, compare_edge_slots);
-    for (long s = 0; s + 1 < 3 * nt; s++) {
-        if (compare_edge_slots(&e[s], &e[s + 1]) != 0) continue;
-        nbr[e[s].slot] = (int32_t)(e[s + 1].slot / 3);
-        nbr[e[s + 1].slot] = (int32_t)(e[s].slot / 3);
-        s++;
+    for (long t = 0; t < nt; t++)
+        for (int i = 0; i < 3; i++) {
+            int32_t a = tri[3 * t + next3[i]], b = tri[3 * t + prev3[i]];
+            e[3 * t + i] = (edge_slot){a < b ? a : b, a < b ? b : a, 3 * t + i};
+            nbr[3 * t + i] = -1;
+        }
+    int paired = pair_in_buckets(e, 3 * nt, nbr);
+    if (paired > 0) {
+        qsort(e, (size_t)(3 * nt), sizeof *e, compare_edge_slots);
+        for (long s = 0; s + 1 < 3 * nt; s++) {
+            if (compare_edge_slots(&e[s], &e[s + 1]) != 0) continue;
+            nbr[e[s].slot] = (int32_t)(e[s + 1].slot / 3);
+            nbr[e[s + 1].slot] = (int32_t)(e[s].slot / 3);
+            s++;
+        }
     }
     free(e);
-    return 0;
+    return paired < 0 ? -1 : 0;
 }
 
 static long corner_facing(const int32_t *nbr, long t, long other)

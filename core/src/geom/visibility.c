@@ -15,9 +15,13 @@
 /* A pending crossing: enter the triangle of slot tz through its edge from r
  * (right, as seen from the source) to l, with the cone strictly between
  * rays to b and a (b clockwise of a). tz = 3t + corner of z, the vertex of
- * t opposite the edge; t runs counter-clockwise r, z, l, so r and l are
- * read from t. */
+ * t opposite the edge; t runs counter-clockwise r, z, l (the slot's view
+ * holds them, and the slots beyond its other two edges). */
 typedef struct { int32_t tz, b, a; } crossing;
+
+/* What a crossing into slot 3t + i (z = corner i of t) reads: z, r and l,
+ * and the slots across r -> z and z -> l (-1 on the boundary). */
+typedef struct { int32_t z, r, l, across_rz, across_zl; } slot_view;
 
 typedef struct {
     const double *xy;
@@ -28,6 +32,7 @@ typedef struct {
                                          the boundary; first[v]: 3t + corner
                                          of v, the triangle holding edge
                                          v -> v+1 */
+    const slot_view *view; /* per slot, read by the crossings */
     crossing *stack;
     int tame; /* every coordinate tame (cm_coords_tame) */
     const int32_t *want; /* NULL, or want[j] = wanted vertices among 0..j-1 */
@@ -64,20 +69,19 @@ static void propagate(const vis_ctx *ctx, long s, unsigned char *row, long top)
     const vis_ctx cv = *ctx, *c = &cv;
     while (top > 0) {
         crossing x = c->stack[--top];
-        long base = x.tz - x.tz % 3, iz = x.tz - base;
-        const int32_t *t = c->tri + base;
-        int32_t z = t[iz], r = t[prev3[iz]], l = t[next3[iz]];
-        int oa, ob;
+        const slot_view *sv = &c->view[x.tz];
+        int32_t z = sv->z, r = sv->r, l = sv->l;
+        /* z on or right of ray b: the cone goes on across z -> l alone,
+         * whatever ray a says (not asked) */
+        int oa = 0, ob;
         if (c->tame) {
-            oa = cm_orient2d_tame(XY(c, s), XY(c, x.a), XY(c, z));
             ob = cm_orient2d_tame(XY(c, s), XY(c, x.b), XY(c, z));
+            if (ob > 0) oa = cm_orient2d_tame(XY(c, s), XY(c, x.a), XY(c, z));
         } else {
-            oa = cm_orient2d(XY(c, s), XY(c, x.a), XY(c, z));
             ob = cm_orient2d(XY(c, s), XY(c, x.b), XY(c, z));
+            if (ob > 0) oa = cm_orient2d(XY(c, s), XY(c, x.a), XY(c, z));
         }
-        /* the edge r -> z lies opposite l, z -> l opposite r */
-        int32_t across_rz = c->opp[base + next3[iz]];
-        int32_t across_zl = c->opp[base + prev3[iz]];
+        int32_t across_rz = sv->across_rz, across_zl = sv->across_zl;
         if (ob > 0 && oa < 0) {
             row[z] = 1;
             if (across_rz >= 0 && pocket_wanted(c, r, z)) c->stack[top++] = (crossing){across_rz, x.b, z};
@@ -113,12 +117,13 @@ static void visible_from(const vis_ctx *ctx, long s, unsigned char *row)
 struct cm_visrows {
     vis_ctx c;
     int32_t *opp, *first;
+    slot_view *view;
 };
 
 void cm_visrows_free(cm_visrows *v)
 {
     if (!v) return;
-    free(v->opp), free(v->first), free(v->c.stack);
+    free(v->opp), free(v->first), free(v->view), free(v->c.stack);
     free(v);
 }
 
@@ -129,10 +134,11 @@ cm_visrows *cm_visrows_create(const double *xy, long m, const int32_t *tri)
     if (!v) return NULL;
     v->opp = malloc((size_t)(3 * nt) * sizeof *v->opp);
     v->first = malloc((size_t)m * sizeof *v->first);
+    v->view = malloc((size_t)(3 * nt) * sizeof *v->view);
     crossing *stack = malloc((size_t)(nt + 1) * sizeof *stack);
     int32_t *nbr = malloc((size_t)(3 * nt) * sizeof *nbr);
-    v->c = (vis_ctx){xy, m, tri, v->opp, v->first, stack, cm_coords_tame(xy, 2 * m), NULL, 0};
-    if (!v->opp || !v->first || !stack || !nbr || cm_tri_adjacency(tri, nt, nbr) != 0) {
+    v->c = (vis_ctx){xy, m, tri, v->opp, v->first, v->view, stack, cm_coords_tame(xy, 2 * m), NULL, 0};
+    if (!v->opp || !v->first || !v->view || !stack || !nbr || cm_tri_adjacency(tri, nt, nbr) != 0) {
         free(nbr);
         cm_visrows_free(v);
         return NULL;
@@ -146,6 +152,11 @@ cm_visrows *cm_visrows_create(const double *xy, long m, const int32_t *tri)
         v->opp[i] = u >= 0 ? 3 * u + j : -1;
     }
     free(nbr);
+    /* the edge r -> z lies opposite l, z -> l opposite r */
+    for (long t = 0; t < nt; t++)
+        for (int i = 0; i < 3; i++)
+            v->view[3 * t + i] = (slot_view){tri[3 * t + i], tri[3 * t + prev3[i]], tri[3 * t + next3[i]],
+                                             v->opp[3 * t + next3[i]], v->opp[3 * t + prev3[i]]};
     for (long i = 0; i < m; i++) v->first[i] = -1;
     for (long t = 0; t < nt; t++)
         for (int i = 0; i < 3; i++)
