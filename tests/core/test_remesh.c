@@ -1042,6 +1042,17 @@ static void random_triangle(rp_rng *rng, int i, double p[3][2])
         for (int d = 0; d < 2; d++) p[2][d] = 0.3 * p[0][d] + 0.7 * p[1][d] + scale * 1e-9 * rp_uniform(rng);
 }
 
+/* Puts the third point of p on the perpendicular bisector of the first
+ * two (nearly isosceles triangles), off it by up to 1e-7 of their distance
+ * along them when `jitter`. */
+static void near_bisector(rp_rng *rng, double p[3][2], int jitter)
+{
+    double mx = 0.5 * (p[0][0] + p[1][0]), my = 0.5 * (p[0][1] + p[1][1]);
+    double dx = p[1][0] - p[0][0], dy = p[1][1] - p[0][1], t = rp_uniform(rng) * 2.0 - 1.0;
+    double off = jitter ? 1e-7 * (rp_uniform(rng) - 0.5) : 0.0;
+    p[2][0] = mx - t * dy + off * dx, p[2][1] = my + t * dx + off * dy;
+}
+
 /* cm_triangle_max_angle_below decides as cm_triangle_max_angle's value
  * compared with the bound, and cm_triangle_min_angle_rank counts the
  * bounds cm_triangle_min_angle's value is above: bounds at the angles
@@ -1054,11 +1065,7 @@ static void test_angle_bounds(int count)
     for (int i = 0; i < count; i++) {
         double p[3][2];
         random_triangle(&rng, i, p);
-        if (i % 6 == 4) { /* the third point near the perpendicular bisector of the first two */
-            double mx = 0.5 * (p[0][0] + p[1][0]), my = 0.5 * (p[0][1] + p[1][1]);
-            double dx = p[1][0] - p[0][0], dy = p[1][1] - p[0][1], t = rp_uniform(&rng) * 2.0 - 1.0;
-            p[2][0] = mx - t * dy, p[2][1] = my + t * dx;
-        }
+        if (i % 6 == 4) near_bisector(&rng, p, 0);
         double hi = cm_triangle_max_angle(p[0], p[1], p[2]), lo = cm_triangle_min_angle(p[0], p[1], p[2]);
         double near[5] = {hi, nextafter(hi, 0.0), nextafter(hi, 4.0), nextafter(nextafter(hi, 4.0), 4.0),
                           CM_PI / 3 + rp_uniform(&rng) * 2.0};
@@ -1154,12 +1161,7 @@ static void test_max_angle(int count)
     for (int i = 0; i < count; i++) {
         double p[3][2];
         random_triangle(&rng, i, p);
-        if (i % 5 == 1 || i % 5 == 2) { /* the third point near the perpendicular bisector of the first two */
-            double mx = 0.5 * (p[0][0] + p[1][0]), my = 0.5 * (p[0][1] + p[1][1]);
-            double dx = p[1][0] - p[0][0], dy = p[1][1] - p[0][1], t = rp_uniform(&rng) * 2.0 - 1.0;
-            double off = i % 5 == 1 ? 1e-7 * (rp_uniform(&rng) - 0.5) : 0.0;
-            p[2][0] = mx - t * dy + off * dx, p[2][1] = my + t * dx + off * dy;
-        }
+        if (i % 5 == 1 || i % 5 == 2) near_bisector(&rng, p, i % 5 == 1);
         double want = fmax(cm_angle_at(p[0], p[1], p[2]), fmax(cm_angle_at(p[1], p[2], p[0]), cm_angle_at(p[2], p[0], p[1])));
         double got = cm_triangle_max_angle(p[0], p[1], p[2]);
         mismatches += memcmp(&want, &got, sizeof got) != 0;
