@@ -1150,6 +1150,34 @@ static void test_min_angle_above(int count)
     CHECK(near > 0 && mismatches == 0);
 }
 
+/* cm_angle_at_below is cm_angle_at, to the bit, where that is below the
+ * bound, and at least the bound elsewhere: bounds at the angle and an ulp
+ * either side, random ones below a right angle and one above, on random
+ * triangles, slivers, nearly isosceles ones and far scales. */
+static void test_angle_at_below(int count)
+{
+    rp_rng rng = {20261130};
+    int mismatches = 0, skipped = 0;
+    for (int i = 0; i < count; i++) {
+        double p[3][2];
+        random_triangle(&rng, i, p);
+        if (i % 6 == 4) near_bisector(&rng, p, i % 12 == 4);
+        for (int c = 0; c < 3; c++) {
+            const double *a = p[c], *b = p[(c + 1) % 3], *d = p[(c + 2) % 3];
+            double angle = cm_angle_at(a, b, d);
+            double bounds[5] = {angle, nextafter(angle, 0.0), nextafter(angle, 4.0), rp_uniform(&rng) * CM_PI / 2,
+                                CM_PI / 2 + rp_uniform(&rng)};
+            for (int j = 0; j < 5; j++) {
+                double got = cm_angle_at_below(a, b, d, bounds[j], tan(bounds[j]));
+                if (angle < bounds[j]) mismatches += memcmp(&got, &angle, sizeof got) != 0;
+                else mismatches += !(got >= bounds[j]), skipped += got != angle;
+            }
+        }
+    }
+    CHECK_MSG(mismatches == 0 && skipped > 0, "angle below a bound: %d of %d wrong (%d skipped)", mismatches,
+              15 * count, skipped);
+}
+
 /* cm_triangle_max_angle is the largest of the three cm_angle_at values,
  * to the bit: also for nearly isosceles triangles (two longest edges
  * within the factor it trusts, and just outside it), slivers and far
@@ -1284,6 +1312,7 @@ int main(void)
     test_star_scan(40);
     test_min_angle_above(40000);
     test_max_angle(200000);
+    test_angle_at_below(100000);
     test_angle_bounds(100000);
     test_mesh_quality();
     test_property_operations(60, 400);

@@ -8,6 +8,11 @@
 /* The angle at p of triangle pqr (radians), by atan2(|cross|, dot):
  * accurate for slivers. */
 double cm_angle_at(const double p[2], const double q[2], const double r[2]);
+/* cm_angle_at(p, q, r) where that is below bound (< pi / 2), else any
+ * value >= bound (HUGE_VAL), decided from the very products cm_angle_at
+ * gives atan2 (tan_bound = tan(bound)): the atan2 only where the angle may
+ * be below bound. */
+double cm_angle_at_below(const double p[2], const double q[2], const double r[2], double bound, double tan_bound);
 /* Smallest angle (radians) of triangle abc, the one opposite the shortest
  * edge; 0 for a degenerate one. */
 double cm_triangle_min_angle(const double a[2], const double b[2], const double c[2]);

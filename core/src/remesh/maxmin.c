@@ -102,9 +102,11 @@ static int pieces_short(const soft *s)
     return 1;
 }
 
-static void corner_angles(const double *p[3], double out[3])
+/* The triangle's corner angles where they are below cut (tan_cut =
+ * tan(cut)); the others, which weigh nothing, as HUGE_VAL. */
+static void corner_angles(const double *p[3], double cut, double tan_cut, double out[3])
 {
-    for (int c = 0; c < 3; c++) out[c] = cm_angle_at(p[c], p[(c + 1) % 3], p[(c + 2) % 3]);
+    for (int c = 0; c < 3; c++) out[c] = cm_angle_at_below(p[c], p[(c + 1) % 3], p[(c + 2) % 3], cut, tan_cut);
 }
 
 /* Angles further than this many tau above the smallest weigh less than
@@ -144,14 +146,14 @@ static lbfgsfloatval_t evaluate(void *instance, const lbfgsfloatval_t *x, lbfgsf
     }
     if (m > s->best) s->best = m, memcpy(s->best_x, x, (size_t)n * sizeof *x);
     double cut = m + CM_MAXMIN_CUT * s->tau, sum = s->rest < cut ? exp(-(s->rest - m) / s->tau) : 0;
-    double cut2 = sin(fmin(cut, CM_PI / 2)), hot_above = cut2 * cut2;
+    double cut2 = sin(fmin(cut, CM_PI / 2)), hot_above = cut2 * cut2, tan_cut = tan(fmin(cut, CM_PI / 2));
     size_t hot = 0;
     for (size_t i = 0; i < s->nmoved; i++) {
         if (s->tmin[i] >= hot_above) continue;
         const int32_t *v = s->tri + 3 * s->moved[i];
         const double *p[3] = {position(s, v[0]), position(s, v[1]), position(s, v[2])};
         double *a = s->angle + 3 * hot;
-        corner_angles(p, a);
+        corner_angles(p, cut, tan_cut, a);
         for (int c = 0; c < 3; c++) sum += a[c] < cut ? exp(-(a[c] - m) / s->tau) : 0;
         s->hot[hot++] = s->moved[i];
     }
