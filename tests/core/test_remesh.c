@@ -418,6 +418,23 @@ static double geometry_min_angle(const cm_mesh *m, size_t g)
     return least;
 }
 
+/* Fig. 7(e)'s mesh of a disc (convex) or a random star with n boundary
+ * vertices and 60 random interior ones, in two geometries made different
+ * by a shear of the second. 0, or -1 (m cleared). */
+static int sheared_fixture(int convex, uint64_t seed, size_t n, cm_mesh *m)
+{
+    double *poly = polygon(n);
+    int bad = !poly || (convex ? rp_disc(poly, (int)n) : rp_star(poly, (int)n, (int)seed));
+    bad = bad || rm_build(poly, n, 60, seed, 2, m);
+    free(poly);
+    if (bad) {
+        cm_mesh_clear(m);
+        return -1;
+    }
+    for (size_t v = 0; v < m->nv; v++) m->xy[1][2 * v] += 0.5 * m->xy[1][2 * v + 1];
+    return 0;
+}
+
 /* The joint polish on random interior vertices (Fig. 7(e)'s mesh, two
  * geometries made different by a shear): every geometry stays exactly
  * counter-clockwise, the boundary and the connectivity are untouched, no
@@ -428,16 +445,11 @@ static void test_joint_polish(void)
     for (int convex = 1; convex >= 0; convex--)
         for (uint64_t seed = 1; seed <= 4; seed++) {
             size_t n = 40;
-            double *poly = polygon(n);
             cm_mesh m = {0};
-            int bad = convex ? rp_disc(poly, (int)n) : rp_star(poly, (int)n, (int)seed);
-            bad = bad || rm_build(poly, n, 60, seed, 2, &m);
-            free(poly);
-            if (bad) {
+            if (sheared_fixture(convex, seed, n, &m)) {
                 CHECK_MSG(0, "fixture mesh");
                 continue;
             }
-            for (size_t v = 0; v < m.nv; v++) m.xy[1][2 * v] += 0.5 * m.xy[1][2 * v + 1];
             cm_mesh before = m;
             double *keep[2], start[2];
             int32_t *tri = malloc(3 * m.nt * sizeof *tri);
@@ -479,16 +491,11 @@ static void test_polish_moves(void)
     for (int convex = 1; convex >= 0; convex--)
         for (uint64_t seed = 1; seed <= 3; seed++) {
             size_t n = 40;
-            double *poly = polygon(n);
             cm_mesh m = {0};
             cm_kmesh km = {0};
-            int bad = convex ? rp_disc(poly, (int)n) : rp_star(poly, (int)n, (int)seed);
-            bad = bad || rm_build(poly, n, 60, seed, 2, &m);
-            if (!bad)
-                for (size_t v = 0; v < m.nv; v++) m.xy[1][2 * v] += 0.5 * m.xy[1][2 * v + 1];
+            int bad = sheared_fixture(convex, seed, n, &m);
             bad = bad || cm_kmesh_build(&km, &m, n) != CM_OK;
             cm_mesh_clear(&m);
-            free(poly);
             if (bad) {
                 CHECK_MSG(0, "fixture mesh");
                 continue;

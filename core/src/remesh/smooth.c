@@ -84,13 +84,17 @@ static int angle_target(const ring *r, double power, double out[2])
     return 0;
 }
 
-static int target_of(const ring *r, cm_smoothing method, double out[2])
+/* The power of an angle-based method's weights: eq. 1's 0, eq. 2's 2. */
+static double power_of(cm_smoothing method) { return method == CM_SMOOTH_ANGLE ? 0 : 2; }
+
+/* The target of method, an angle-based one with weights 1 / alpha_i^power. */
+static int target_of(const ring *r, cm_smoothing method, double power, double out[2])
 {
     switch (method) {
     case CM_SMOOTH_LAPLACIAN: laplacian_target(r, out); return 0;
-    case CM_SMOOTH_ANGLE: return angle_target(r, 0, out);
+    case CM_SMOOTH_ANGLE:
     case CM_SMOOTH_WEIGHTED:
-    case CM_SMOOTH_COMBINED: return angle_target(r, 2, out);
+    case CM_SMOOTH_COMBINED: return angle_target(r, power, out);
     }
     return -1;
 }
@@ -99,7 +103,7 @@ int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing metho
                      const cm_ibuf *star, double out[2])
 {
     ring r;
-    return ring_of(km, g, v, star, &r) ? -1 : target_of(&r, method, out);
+    return ring_of(km, g, v, star, &r) ? -1 : target_of(&r, method, power_of(method), out);
 }
 
 /* cm_triangle_min_angle_sin2(q, p[i], p[i+1]), the same arithmetic with
@@ -237,27 +241,41 @@ static int try_move(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring
     return 0;
 }
 
-int cm_smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
-                     cm_ibuf *star)
-{
-    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0) return 0;
-    long m = cm_kmesh_star(km, v, star);
-    if (m < 0) return m == -1 ? -1 : 0;
-    return cm_smooth_vertex_star(km, g, v, method, smart, star);
-}
-
-int cm_smooth_vertex_star(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
-                          const cm_ibuf *star)
+/* cm_smooth_vertex_star with the angle-based weights' power given. */
+static int smooth_star(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, double power, int smart,
+                       const cm_ibuf *star)
 {
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
     double before = smart ? sin2_to_angle(star_sin2(&r, r.c)) : 0;
     if (smart && out_of_reach(&r, before + CM_SMOOTH_GAIN)) return 0;
     double q[2];
-    if (target_of(&r, method, q) == 0 && try_move(km, g, v, star, &r, q, smart, before)) return 1;
+    if (target_of(&r, method, power, q) == 0 && try_move(km, g, v, star, &r, q, smart, before)) return 1;
     if (method != CM_SMOOTH_COMBINED) return 0;
     laplacian_target(&r, q);
     return try_move(km, g, v, star, &r, q, smart, before);
+}
+
+/* cm_smooth_vertex with the angle-based weights' power given. */
+static int smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, double power, int smart,
+                         cm_ibuf *star)
+{
+    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0) return 0;
+    long m = cm_kmesh_star(km, v, star);
+    if (m < 0) return m == -1 ? -1 : 0;
+    return smooth_star(km, g, v, method, power, smart, star);
+}
+
+int cm_smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
+                     cm_ibuf *star)
+{
+    return smooth_vertex(km, g, v, method, power_of(method), smart, star);
+}
+
+int cm_smooth_vertex_star(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
+                          const cm_ibuf *star)
+{
+    return smooth_star(km, g, v, method, power_of(method), smart, star);
 }
 
 /* The search found no gain for v in geometry g. Returns 0. */
@@ -321,28 +339,14 @@ int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *st
     return 1;
 }
 
-/* A plain move of interior live v in geometry g to the angle-based target
- * with weights 1 / alpha_i^power. Returns 1 moved, 0 not, -1 out of memory. */
-static int smooth_power(cm_kmesh *km, size_t g, int32_t v, double power, cm_ibuf *star)
-{
-    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0) return 0;
-    long m = cm_kmesh_star(km, v, star);
-    if (m < 0) return m == -1 ? -1 : 0;
-    ring r;
-    double q[2];
-    if (ring_of(km, g, v, star, &r) || angle_target(&r, power, q)) return 0;
-    return try_move(km, g, v, star, &r, q, 0, 0);
-}
-
-/* One sweep: method (smart or not), or, with power >= 0, smooth_power. */
-static long sweep(cm_kmesh *km, cm_smoothing method, int smart, double power)
+/* One sweep of method, an angle-based one with weights 1 / alpha_i^power. */
+static long sweep(cm_kmesh *km, cm_smoothing method, double power, int smart)
 {
     cm_ibuf star = {0};
     long moves = 0;
     for (int32_t v = km->n; v < km->nv; v++)
         for (size_t g = 0; g < km->k && km->vc[v] >= 0; g++) {
-            int s = power >= 0 ? smooth_power(km, g, v, power, &star)
-                               : cm_smooth_vertex(km, g, v, method, smart, &star);
+            int s = smooth_vertex(km, g, v, method, power, smart, &star);
             if (s < 0) {
                 cm_ibuf_free(&star);
                 return -1;
@@ -353,6 +357,9 @@ static long sweep(cm_kmesh *km, cm_smoothing method, int smart, double power)
     return moves;
 }
 
-long cm_smooth_pass(cm_kmesh *km, cm_smoothing method, int smart) { return sweep(km, method, smart, -1); }
+long cm_smooth_pass(cm_kmesh *km, cm_smoothing method, int smart)
+{
+    return sweep(km, method, power_of(method), smart);
+}
 
-long cm_smooth_pass_power(cm_kmesh *km, double power) { return sweep(km, CM_SMOOTH_WEIGHTED, 0, power); }
+long cm_smooth_pass_power(cm_kmesh *km, double power) { return sweep(km, CM_SMOOTH_WEIGHTED, power, 0); }
