@@ -20,13 +20,6 @@ static double angle_at_wide(const double p[2], const double q[2], const double r
     return (double)atan2l(fabsl(ux * vy - uy * vx), ux * vx + uy * vy);
 }
 
-double cm_angle_at(const double p[2], const double q[2], const double r[2])
-{
-    double ux = q[0] - p[0], uy = q[1] - p[1], vx = r[0] - p[0], vy = r[1] - p[1];
-    if (!in_safe_range(ux * ux + uy * uy + vx * vx + vy * vy)) return angle_at_wide(p, q, r);
-    return atan2(fabs(ux * vy - uy * vx), ux * vx + uy * vy);
-}
-
 double cm_angle_at_below(const double p[2], const double q[2], const double r[2], double bound, double tan_bound)
 {
     double ux = q[0] - p[0], uy = q[1] - p[1], vx = r[0] - p[0], vy = r[1] - p[1];
@@ -37,6 +30,9 @@ double cm_angle_at_below(const double p[2], const double q[2], const double r[2]
     if (bound < 0.5 * CM_PI && (x <= 0 || y > x * tan_bound * (1 + 0x1p-30))) return HUGE_VAL;
     return atan2(y, x);
 }
+
+/* Below no bound: always the atan2. */
+double cm_angle_at(const double p[2], const double q[2], const double r[2]) { return cm_angle_at_below(p, q, r, CM_PI, 0); }
 
 /* The smallest angle is the one opposite the shortest edge. */
 static double min_angle_wide(const double a[2], const double b[2], const double c[2])
