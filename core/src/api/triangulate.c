@@ -483,19 +483,27 @@ static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *de
  * corner-fan cap), which then cannot tell the correspondences apart. */
 #define CM_CEILING_TIE 1e-9
 
-/* CM_CORRESPOND_AUTO for polygons without holes or pins: the conformal
- * correspondence, or the similarity choice where that allows the higher
- * ceiling (a polygon whose corners the similarity fit pairs corner to
- * corner, a disc that would take another polygon's crowding whole); where
- * the ceilings tie (CM_CEILING_TIE), the one with the higher
+/* The pairings auto has for polygons without holes (and outer loops):
+ * the conformal parameter read along every edge or the similarity
+ * choice, whichever allows the higher ceiling (the first run); or one of
+ * them taken as it is, for the rescues (pairing_rescue): the conformal
+ * parameter read along every edge, read linearly between each polygon's
+ * vertices, or the similarity choice. */
+enum auto_pairing { PAIRING_BY_CEILING, PAIRING_CONFORMAL, PAIRING_LINEAR, PAIRING_SIMILARITY };
+
+/* CM_CORRESPOND_AUTO for polygons without holes or pins, by `pairing`: the
+ * conformal correspondence, or the similarity choice where that allows the
+ * higher ceiling (a polygon whose corners the similarity fit pairs corner
+ * to corner, a disc that would take another polygon's crowding whole);
+ * where the ceilings tie (CM_CEILING_TIE), the one with the higher
  * correspondence bound, the distortion the remesher has to work against;
  * *found = 0 when the conformal one cannot be had (out then untouched),
  * else *choice says which was kept. */
 static cm_status auto_whole(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
-                            const int *orientation, int linear, cm_boundary_map *out, int *found,
+                            const int *orientation, enum auto_pairing pairing, cm_boundary_map *out, int *found,
                             double *ceiling_deg, cm_correspondence_choice *choice)
 {
-    cm_status s = conformal(r, polygons, counts, k, orientation, linear, out, found);
+    cm_status s = conformal(r, polygons, counts, k, orientation, pairing == PAIRING_LINEAR, out, found);
     if (s != CM_OK || !*found) return s;
     cm_boundary_map similar = {0};
     size_t *starts = malloc(k * sizeof *starts);
@@ -508,7 +516,8 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
     if (s == CM_OK) s = ceiling_bound_of(r, &similar, &similar_deg, &similar_bound);
     *choice = CM_CHOICE_CONFORMAL;
     int tie = fabs(similar_deg - conformal_deg) <= CM_CEILING_TIE * fmax(similar_deg, conformal_deg);
-    if (s == CM_OK && (tie ? similar_bound > conformal_bound : similar_deg > conformal_deg)) {
+    int similar_wins = tie ? similar_bound > conformal_bound : similar_deg > conformal_deg;
+    if (s == CM_OK && (pairing == PAIRING_BY_CEILING ? similar_wins : pairing == PAIRING_SIMILARITY)) {
         cm_boundary_map t = *out;
         *out = similar, similar = t;
         *choice = CM_CHOICE_SIMILARITY;
@@ -537,7 +546,7 @@ enum loop_kind { LOOP_WHOLE, LOOP_OUTER, LOOP_BY_START };
  * correspondence made. */
 static cm_status correspond_boundary(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
                                      const int *orientation, const cm_options *o, const size_t *every_vertex,
-                                     enum loop_kind kind, int linear, const size_t *hole_starts,
+                                     enum loop_kind kind, enum auto_pairing pairing, const size_t *hole_starts,
                                      cm_boundary_map *out, double *ceiling_deg, cm_correspondence_choice *choice)
 {
     int whole = kind == LOOP_WHOLE;
@@ -566,7 +575,7 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
         /* Polygons without holes, and outer loops: conformal or similarity
          * (auto_whole). */
         int found = 0;
-        s = auto_whole(r, polygons, counts, k, orientation, linear, out, &found, ceiling_deg, choice);
+        s = auto_whole(r, polygons, counts, k, orientation, pairing, out, &found, ceiling_deg, choice);
         if (s == CM_OK && found) {
             if (o->ceiling && whole) s = bound_before(r, polygons, counts, k, orientation);
             if (s == CM_OK && o->max_edge > 0)
@@ -689,7 +698,8 @@ static cm_status split_capped_edges(cm_result *r, const double *const *polygons,
 /* CM_CORRESPOND_ARCLENGTH and _AUTO: the boundaries in correspondence,
  * then the pipeline on them. */
 static cm_status run_arclength(cm_result *r, const double *const *polygons, const size_t *counts,
-                               size_t k, const cm_options *o, const size_t *every_vertex, int linear)
+                               size_t k, const cm_options *o, const size_t *every_vertex,
+                               enum auto_pairing pairing)
 {
     int *orientation = k ? malloc(k * sizeof *orientation) : NULL;
     size_t *merged_counts = k ? malloc(k * sizeof *merged_counts) : NULL;
@@ -697,7 +707,7 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
     if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
     double ceiling_deg = -1;
     if (s == CM_OK)
-        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, LOOP_WHOLE, linear, NULL,
+        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, LOOP_WHOLE, pairing, NULL,
                                 &r->boundary, &ceiling_deg, &r->stats.correspondence_choice);
     int32_t **tris = NULL; /* the merged polygons' triangulations, when the cap split made them */
     if (s == CM_OK && !every_vertex && o->remesh)
@@ -727,7 +737,7 @@ static cm_status run_index_split(cm_result *r, const double *const *polygons, co
     if (!every) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     for (size_t j = 0; j < n; j++)
         for (size_t g = 0; g < k; g++) every[j * k + g] = j;
-    s = run_arclength(r, polygons, counts, k, o, every, 0);
+    s = run_arclength(r, polygons, counts, k, o, every, PAIRING_BY_CEILING);
     free(every);
     return s;
 }
@@ -760,17 +770,15 @@ static double least_angle(const cm_result *r, size_t k)
     return least;
 }
 
-/* Auto's conformal pairing may end far below the remesher's aim, where a
- * second pairing does better (the rescues below); 0.6: below 15 degrees
- * at the default aim of 25. */
+/* Auto's pairing may end far below the remesher's aim, where another
+ * pairing does better (the rescues below); 0.6: below 15 degrees at the
+ * default aim of 25. */
 #define CM_PAIRING_RESCUE_SHARE 0.6
 
-/* Is r, made by auto's conformal pairing and remeshed by o, below that
- * share of its aim? */
+/* Is r, made by auto and remeshed by o, below that share of its aim? */
 static int rescue_wanted(const cm_result *r, const cm_options *o)
 {
     return o->correspondence == CM_CORRESPOND_AUTO && o->remesh &&
-           r->stats.correspondence_choice == CM_CHOICE_CONFORMAL &&
            r->greedy_angle_deg < CM_PAIRING_RESCUE_SHARE * r->stats.remesh_aim_deg;
 }
 
@@ -786,33 +794,46 @@ static cm_status keep_better(cm_result **result, cm_result *again, cm_status s, 
         cm_result_free(again);
         return cm_fail_status(&r->error, s);
     }
-    if (s == CM_OK && least_angle(again, k) > least_angle(r, k)) {
-        again->stats.seconds_validate += r->stats.seconds_validate;
-        again->stats.seconds_build += r->stats.seconds_build, again->stats.seconds_check += r->stats.seconds_check;
-        again->stats.seconds_remesh += r->stats.seconds_remesh;
-        again->stats.seconds_ceiling += r->stats.seconds_ceiling;
-        *result = again, again = r;
-    }
+    if (s == CM_OK && least_angle(again, k) > least_angle(r, k)) *result = again, again = r;
+    cm_result *kept = *result;
+    kept->stats.seconds_validate += again->stats.seconds_validate;
+    kept->stats.seconds_build += again->stats.seconds_build, kept->stats.seconds_check += again->stats.seconds_check;
+    kept->stats.seconds_remesh += again->stats.seconds_remesh;
+    kept->stats.seconds_ceiling += again->stats.seconds_ceiling;
     cm_result_free(again);
     return CM_OK;
 }
 
-/* Auto without holes reads the conformal parameter along every edge (a
- * faithful pairing); where that crowds beyond what the remesher can
- * grade and the result ends below CM_PAIRING_RESCUE_SHARE of its aim, the
- * pairing read linearly between each polygon's vertices (coarser: the
- * stretch averaged over an edge) is also remeshed and the better result
- * kept. */
-static cm_status linear_rescue(cm_result **result, const double *const *polygons, const size_t *counts, size_t k,
-                               const cm_options *o)
+/* Auto without holes takes the conformal parameter read along every edge
+ * (a faithful pairing) or the similarity choice, whichever allows the
+ * higher ceiling; but the ceiling does not tell which the remesher grades
+ * better (tune_FreeSerifItalic_T_5_n48: the similarity's ceiling 15.5
+ * remeshed to 6.9 degrees, the conformal's 13.3 to 13.3), and the
+ * faithful pairing may crowd beyond what it can grade. Where the result
+ * ends below CM_PAIRING_RESCUE_SHARE of its aim, the other pairings are
+ * remeshed in turn (the conformal read along every edge, read linearly
+ * between each polygon's vertices: coarser, the stretch averaged over an
+ * edge; the similarity choice), each as it is, till one ends above that
+ * share, and the best result is kept. */
+static cm_status pairing_rescue(cm_result **result, const double *const *polygons, const size_t *counts, size_t k,
+                                const cm_options *o)
 {
-    if (!rescue_wanted(*result, o)) return CM_OK;
-    cm_result *again = NULL;
-    cm_options unused;
-    const cm_options *same = o;
-    if (!new_result(&again, &same, &unused)) return CM_OK;
-    again->bounds = (*result)->bounds, again->conformal = (*result)->conformal;
-    return keep_better(result, again, run_arclength(again, polygons, counts, k, o, NULL, 1), k);
+    cm_correspondence_choice first = (*result)->stats.correspondence_choice;
+    if (first != CM_CHOICE_CONFORMAL && first != CM_CHOICE_SIMILARITY) return CM_OK;
+    static const enum auto_pairing others[] = {PAIRING_CONFORMAL, PAIRING_LINEAR, PAIRING_SIMILARITY};
+    cm_status s = CM_OK;
+    for (size_t i = 0; s == CM_OK && i < sizeof others / sizeof *others && rescue_wanted(*result, o); i++) {
+        if ((others[i] == PAIRING_CONFORMAL && first == CM_CHOICE_CONFORMAL) ||
+            (others[i] == PAIRING_SIMILARITY && first == CM_CHOICE_SIMILARITY))
+            continue; /* the first run's */
+        cm_result *again = NULL;
+        cm_options unused;
+        const cm_options *same = o;
+        if (!new_result(&again, &same, &unused)) return CM_OK;
+        again->bounds = (*result)->bounds, again->conformal = (*result)->conformal;
+        s = keep_better(result, again, run_arclength(again, polygons, counts, k, o, NULL, others[i]), k);
+    }
+    return s;
 }
 
 /* The memos of one call, for what an auto run asks more than once. */
@@ -842,8 +863,8 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
     if (s == CM_OK) s = check_correspondence_options(r, options);
     memos_start(r, options);
     if (s == CM_OK && options->correspondence != CM_CORRESPOND_INDEX) {
-        s = run_arclength(r, polygons, counts, k, options, NULL, 0);
-        if (s == CM_OK) s = linear_rescue(result, polygons, counts, k, options);
+        s = run_arclength(r, polygons, counts, k, options, NULL, PAIRING_BY_CEILING);
+        if (s == CM_OK) s = pairing_rescue(result, polygons, counts, k, options);
     } else if (s == CM_OK && options->max_edge > 0)
         s = run_index_split(r, polygons, counts, k, options);
     else if (s == CM_OK)
@@ -1207,7 +1228,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
             s = cm_correspond_choose_hole_starts(lxy, lcount, k, lorientation, &maps[0], similarity, hole_starts,
                                                  &r->error);
         if (s == CM_OK)
-            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_BY_START : outer, 0,
+            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_BY_START : outer, PAIRING_BY_CEILING,
                                     joint && l ? hole_starts : NULL, &maps[l], &unused_ceiling, &loop_choice);
         if (l == 0) r->stats.correspondence_choice = loop_choice; /* the outer loop's (cm_stats) */
         if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
@@ -1282,7 +1303,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
  * outlines knows nothing of the holes) and the better result is kept. */
 static cm_status outer_rescue(cm_result **result, const cm_loops *polygons, size_t k, const cm_options *o)
 {
-    if (!rescue_wanted(*result, o)) return CM_OK;
+    if ((*result)->stats.correspondence_choice != CM_CHOICE_CONFORMAL || !rescue_wanted(*result, o)) return CM_OK;
     cm_result *again = NULL;
     cm_options unused;
     const cm_options *same = o;
