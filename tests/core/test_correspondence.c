@@ -226,7 +226,9 @@ static void test_conformal_similar_copy(void)
     size_t counts[2] = {N, N};
     int orientation[2] = {orientation_of(a, N), orientation_of(b, N)}, found = 0;
     cm_error err = {0};
-    CHECK(cm_correspond_conformal(in, counts, 2, orientation, params, NULL, &found, &err) == CM_OK && found);
+    CHECK(cm_correspond_conformal(in, counts, 2, orientation, CM_CONFORMAL_POWER, params, NULL, &found, &err) ==
+              CM_OK &&
+          found);
     for (int i = 0; found && i < N; i++) {
         /* counter-clockwise position c of b is a's vertex c + SHIFT when
          * both run counter-clockwise */
@@ -244,7 +246,7 @@ static void test_conformal_similar_copy(void)
 }
 
 /* The memo gives what computing gives: the same polygons recalled, a
- * changed one computed afresh. */
+ * changed one, or another tempering power, computed afresh. */
 static void test_conformal_memo(void)
 {
     enum { N = 30, F = CM_PARAM_FINE };
@@ -256,14 +258,19 @@ static void test_conformal_memo(void)
     cm_error err = {0};
     cm_conformal_memo *memo = cm_conformal_memo_new();
     CHECK(memo != NULL);
-    for (int change = 0; change < 2; change++) {
-        if (change) b[0] += 0.01; /* polygon 1 moved: computed afresh */
+    double before[2][N];
+    for (int change = 0; change < 3; change++) {
+        if (change == 1) b[0] += 0.01; /* polygon 1 moved: computed afresh */
+        double power = change == 2 ? 0.3 : CM_CONFORMAL_POWER; /* another power: computed afresh */
         double *fp[2] = {fresh[0], fresh[1]}, *ff[2] = {NULL, fresh_fine};
         double *gp[2] = {got[0], got[1]}, *gf[2] = {NULL, got_fine};
-        CHECK(cm_correspond_conformal(in, counts, 2, orientation, fp, ff, &found, &err) == CM_OK && found);
+        CHECK(cm_correspond_conformal(in, counts, 2, orientation, power, fp, ff, &found, &err) == CM_OK && found);
+        if (change == 2) CHECK(memcmp(fresh[1], before[1], sizeof before[1]) != 0); /* the power tells */
+        memcpy(before, fresh, sizeof before);
         for (int round = 0; round < 2; round++) { /* computed (or recalled, after the first), then recalled */
             memset(got, 0, sizeof got), memset(got_fine, 0, sizeof got_fine);
-            CHECK(cm_correspond_conformal_memo(memo, in, counts, 2, orientation, gp, gf, &found, &err) == CM_OK &&
+            CHECK(cm_correspond_conformal_memo(memo, in, counts, 2, orientation, power, gp, gf, &found, &err) ==
+                      CM_OK &&
                   found);
             CHECK(!memcmp(got, fresh, sizeof got) && !memcmp(got_fine, fresh_fine, sizeof got_fine));
         }
@@ -289,7 +296,9 @@ static void test_conformal_between_vertices(void)
     size_t counts[2] = {N, 4};
     int orientation[2] = {1, 1}, found = 0;
     cm_error err = {0};
-    CHECK(cm_correspond_conformal(in, counts, 2, orientation, params, fines, &found, &err) == CM_OK && found);
+    CHECK(cm_correspond_conformal(in, counts, 2, orientation, CM_CONFORMAL_POWER, params, fines, &found, &err) ==
+              CM_OK &&
+          found);
     cm_boundary_map map;
     CHECK(found && cm_correspond_params(in, counts, 2, orientation, (const double *const *)params,
                                         (const double *const *)fines, &map, &err) == CM_OK);

@@ -438,11 +438,12 @@ static cm_status bound_before(cm_result *r, const double *const *polygons, const
 }
 
 /* The conformal correspondence's boundaries into out (*found = 0 when it
- * cannot be had, out then untouched): the others' points on a polygon's
- * edges where the conformal parameter puts them, or with `linear` where
- * it would be if it were linear between the polygon's vertices. */
+ * cannot be had, out then untouched), its parameter tempered by power
+ * (conformal.h): the others' points on a polygon's edges where the
+ * conformal parameter puts them, or with `linear` where it would be if it
+ * were linear between the polygon's vertices. */
 static cm_status conformal(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
-                           const int *orientation, int linear, cm_boundary_map *out, int *found)
+                           const int *orientation, int linear, double power, cm_boundary_map *out, int *found)
 {
     size_t total = 0;
     for (size_t g = 0; g < k; g++) total += counts[g];
@@ -452,7 +453,7 @@ static cm_status conformal(cm_result *r, const double *const *polygons, const si
     for (size_t g = 0, at = 0; s == CM_OK && g < k; at += counts[g], g++)
         params[g] = all + at, fine[g] = g ? all_fine + at * CM_PARAM_FINE : NULL;
     if (s == CM_OK)
-        s = cm_correspond_conformal_memo(r->conformal, polygons, counts, k, orientation, params, fine, found,
+        s = cm_correspond_conformal_memo(r->conformal, polygons, counts, k, orientation, power, params, fine, found,
                                          &r->error);
     if (s == CM_OK && *found)
         s = cm_correspond_params(polygons, counts, k, orientation, (const double *const *)params,
@@ -484,12 +485,17 @@ static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *de
 #define CM_CEILING_TIE 1e-9
 
 /* The pairings auto has for polygons without holes (and outer loops):
- * the conformal parameter read along every edge or the similarity
- * choice, whichever allows the higher ceiling (the first run); or one of
- * them taken as it is, for the rescues (pairing_rescue): the conformal
- * parameter read along every edge, read linearly between each polygon's
- * vertices, or the similarity choice. */
-enum auto_pairing { PAIRING_BY_CEILING, PAIRING_CONFORMAL, PAIRING_LINEAR, PAIRING_SIMILARITY };
+ * the conformal parameter or the similarity choice, whichever allows the
+ * higher ceiling (the first run); or one of them taken as it is (the
+ * rescues, pairing_rescue). */
+enum pairing_kind { PAIRING_BY_CEILING, PAIRING_CONFORMAL, PAIRING_SIMILARITY };
+typedef struct auto_pairing {
+    enum pairing_kind kind;
+    int linear;   /* the conformal parameter read linearly between each polygon's vertices, not along every edge */
+    double power; /* the conformal parameter's tempering (conformal.h) */
+} auto_pairing;
+
+static const auto_pairing by_ceiling = {PAIRING_BY_CEILING, 0, CM_CONFORMAL_POWER};
 
 /* CM_CORRESPOND_AUTO for polygons without holes or pins, by `pairing`: the
  * conformal correspondence, or the similarity choice where that allows the
@@ -500,10 +506,10 @@ enum auto_pairing { PAIRING_BY_CEILING, PAIRING_CONFORMAL, PAIRING_LINEAR, PAIRI
  * *found = 0 when the conformal one cannot be had (out then untouched),
  * else *choice says which was kept. */
 static cm_status auto_whole(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
-                            const int *orientation, enum auto_pairing pairing, cm_boundary_map *out, int *found,
+                            const int *orientation, auto_pairing pairing, cm_boundary_map *out, int *found,
                             double *ceiling_deg, cm_correspondence_choice *choice)
 {
-    cm_status s = conformal(r, polygons, counts, k, orientation, pairing == PAIRING_LINEAR, out, found);
+    cm_status s = conformal(r, polygons, counts, k, orientation, pairing.linear, pairing.power, out, found);
     if (s != CM_OK || !*found) return s;
     cm_boundary_map similar = {0};
     size_t *starts = malloc(k * sizeof *starts);
@@ -517,7 +523,7 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
     *choice = CM_CHOICE_CONFORMAL;
     int tie = fabs(similar_deg - conformal_deg) <= CM_CEILING_TIE * fmax(similar_deg, conformal_deg);
     int similar_wins = tie ? similar_bound > conformal_bound : similar_deg > conformal_deg;
-    if (s == CM_OK && (pairing == PAIRING_BY_CEILING ? similar_wins : pairing == PAIRING_SIMILARITY)) {
+    if (s == CM_OK && (pairing.kind == PAIRING_BY_CEILING ? similar_wins : pairing.kind == PAIRING_SIMILARITY)) {
         cm_boundary_map t = *out;
         *out = similar, similar = t;
         *choice = CM_CHOICE_SIMILARITY;
@@ -546,7 +552,7 @@ enum loop_kind { LOOP_WHOLE, LOOP_OUTER, LOOP_BY_START };
  * correspondence made. */
 static cm_status correspond_boundary(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
                                      const int *orientation, const cm_options *o, const size_t *every_vertex,
-                                     enum loop_kind kind, enum auto_pairing pairing, const size_t *hole_starts,
+                                     enum loop_kind kind, auto_pairing pairing, const size_t *hole_starts,
                                      cm_boundary_map *out, double *ceiling_deg, cm_correspondence_choice *choice)
 {
     int whole = kind == LOOP_WHOLE;
@@ -698,8 +704,7 @@ static cm_status split_capped_edges(cm_result *r, const double *const *polygons,
 /* CM_CORRESPOND_ARCLENGTH and _AUTO: the boundaries in correspondence,
  * then the pipeline on them. */
 static cm_status run_arclength(cm_result *r, const double *const *polygons, const size_t *counts,
-                               size_t k, const cm_options *o, const size_t *every_vertex,
-                               enum auto_pairing pairing)
+                               size_t k, const cm_options *o, const size_t *every_vertex, auto_pairing pairing)
 {
     int *orientation = k ? malloc(k * sizeof *orientation) : NULL;
     size_t *merged_counts = k ? malloc(k * sizeof *merged_counts) : NULL;
@@ -737,7 +742,7 @@ static cm_status run_index_split(cm_result *r, const double *const *polygons, co
     if (!every) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     for (size_t j = 0; j < n; j++)
         for (size_t g = 0; g < k; g++) every[j * k + g] = j;
-    s = run_arclength(r, polygons, counts, k, o, every, PAIRING_BY_CEILING);
+    s = run_arclength(r, polygons, counts, k, o, every, by_ceiling);
     free(every);
     return s;
 }
@@ -804,6 +809,11 @@ static cm_status keep_better(cm_result **result, cm_result *again, cm_status s, 
     return CM_OK;
 }
 
+/* The rescues' other tempering powers (conformal.h): nearer the conformal
+ * map, nearer arc length. */
+#define CM_RESCUE_POWER_MORE 0.3
+#define CM_RESCUE_POWER_LESS 0.2
+
 /* Auto without holes takes the conformal parameter read along every edge
  * (a faithful pairing) or the similarity choice, whichever allows the
  * higher ceiling; but the ceiling does not tell which the remesher grades
@@ -811,20 +821,24 @@ static cm_status keep_better(cm_result **result, cm_result *again, cm_status s, 
  * remeshed to 6.9 degrees, the conformal's 13.3 to 13.3), and the
  * faithful pairing may crowd beyond what it can grade. Where the result
  * ends below CM_PAIRING_RESCUE_SHARE of its aim, the other pairings are
- * remeshed in turn (the conformal read along every edge, read linearly
- * between each polygon's vertices: coarser, the stretch averaged over an
- * edge; the similarity choice), each as it is, till one ends above that
- * share, and the best result is kept. */
+ * remeshed in turn (the conformal parameter read along every edge, read
+ * linearly between each polygon's vertices: coarser, the stretch averaged
+ * over an edge; the similarity choice; the conformal parameter tempered
+ * nearer the conformal map, then nearer arc length), each as it is, till
+ * one ends above that share, and the best result is kept. */
 static cm_status pairing_rescue(cm_result **result, const double *const *polygons, const size_t *counts, size_t k,
                                 const cm_options *o)
 {
     cm_correspondence_choice first = (*result)->stats.correspondence_choice;
     if (first != CM_CHOICE_CONFORMAL && first != CM_CHOICE_SIMILARITY) return CM_OK;
-    static const enum auto_pairing others[] = {PAIRING_CONFORMAL, PAIRING_LINEAR, PAIRING_SIMILARITY};
+    static const auto_pairing others[] = {{PAIRING_CONFORMAL, 0, CM_CONFORMAL_POWER},
+                                          {PAIRING_CONFORMAL, 1, CM_CONFORMAL_POWER},
+                                          {PAIRING_SIMILARITY, 0, CM_CONFORMAL_POWER},
+                                          {PAIRING_CONFORMAL, 0, CM_RESCUE_POWER_MORE},
+                                          {PAIRING_CONFORMAL, 0, CM_RESCUE_POWER_LESS}};
     cm_status s = CM_OK;
     for (size_t i = 0; s == CM_OK && i < sizeof others / sizeof *others && rescue_wanted(*result, o); i++) {
-        if ((others[i] == PAIRING_CONFORMAL && first == CM_CHOICE_CONFORMAL) ||
-            (others[i] == PAIRING_SIMILARITY && first == CM_CHOICE_SIMILARITY))
+        if ((i == 0 && first == CM_CHOICE_CONFORMAL) || (i == 2 && first == CM_CHOICE_SIMILARITY))
             continue; /* the first run's */
         cm_result *again = NULL;
         cm_options unused;
@@ -863,7 +877,7 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
     if (s == CM_OK) s = check_correspondence_options(r, options);
     memos_start(r, options);
     if (s == CM_OK && options->correspondence != CM_CORRESPOND_INDEX) {
-        s = run_arclength(r, polygons, counts, k, options, NULL, PAIRING_BY_CEILING);
+        s = run_arclength(r, polygons, counts, k, options, NULL, by_ceiling);
         if (s == CM_OK) s = pairing_rescue(result, polygons, counts, k, options);
     } else if (s == CM_OK && options->max_edge > 0)
         s = run_index_split(r, polygons, counts, k, options);
@@ -1228,7 +1242,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
             s = cm_correspond_choose_hole_starts(lxy, lcount, k, lorientation, &maps[0], similarity, hole_starts,
                                                  &r->error);
         if (s == CM_OK)
-            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_BY_START : outer, PAIRING_BY_CEILING,
+            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_BY_START : outer, by_ceiling,
                                     joint && l ? hole_starts : NULL, &maps[l], &unused_ceiling, &loop_choice);
         if (l == 0) r->stats.correspondence_choice = loop_choice; /* the outer loop's (cm_stats) */
         if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {

@@ -230,15 +230,15 @@ static double best_turn(const search *q)
 }
 
 /* The tempered parameter of a disk's boundary nodes (nb + 1 values from 0
- * to 1): the running integral of (d theta / d s)^CM_CONFORMAL_POWER over
- * arc length, normalised. A part the conformal map crowds by e^-x is
- * crowded by e^-x/4; a similar copy gets the same parameter. */
-static void tempered(const disk *d, const double *theta, double *p)
+ * to 1): the running integral of (d theta / d s)^power over arc length,
+ * normalised. A part the conformal map crowds by e^-x is crowded by
+ * e^-(power x); a similar copy gets the same parameter. */
+static void tempered(const disk *d, const double *theta, double power, double *p)
 {
     p[0] = 0;
     for (size_t j = 0; j < d->nb; j++) {
         double ds = d->s[j + 1] - d->s[j], density = ds > 0 ? (theta[j + 1] - theta[j]) / (2 * CM_PI * ds) : 1.0;
-        p[j + 1] = p[j] + pow(fmax(density, STRETCH_FLOOR), CM_CONFORMAL_POWER) * ds;
+        p[j + 1] = p[j] + pow(fmax(density, STRETCH_FLOOR), power) * ds;
     }
     double total = p[d->nb];
     for (size_t j = 0; j <= d->nb; j++) p[j] /= total;
@@ -259,8 +259,8 @@ static double on_polygon0(const disk *d0, const double *p0, double q)
  * disk turned onto polygon 0's by the automorphism x; fine (NULL, or
  * CM_PARAM_FINE per edge): the same at the points evenly spaced along
  * each edge. */
-static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, double *params, double *fine,
-                       cm_error *err)
+static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, double power, double *params,
+                       double *fine, cm_error *err)
 {
     size_t nb = dg->nb, levels = nb / n;
     double *theta = malloc((nb + 1) * sizeof *theta), *p0 = malloc((d0->nb + 1) * sizeof *p0);
@@ -271,8 +271,8 @@ static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, dou
     }
     /* g's nodes on polygon 0's circle */
     for (size_t j = 0; j <= nb; j++) theta[j] = dg->theta[j] + rho;
-    tempered(d0, d0->theta, p0);
-    tempered(dg, theta, pg);
+    tempered(d0, d0->theta, power, p0);
+    tempered(dg, theta, power, pg);
     /* g's vertex 0 lands at polygon 0's tempered parameter `from`: the
      * median over g's nodes of where each lands less its own parameter
      * (one node alone may sit in a crowded stretch whose angles doubles
@@ -303,8 +303,8 @@ static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, dou
 }
 
 cm_status cm_correspond_conformal(const double *const *polygons, const size_t *counts, size_t k,
-                                  const int *orientation, double *const *params, double *const *fine, int *found,
-                                  cm_error *err)
+                                  const int *orientation, double power, double *const *params, double *const *fine,
+                                  int *found, cm_error *err)
 {
     *found = 0;
     disk *disks = calloc(k, sizeof *disks);
@@ -328,7 +328,7 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
     }
     for (size_t g = 1; s == CM_OK && usable && g < k; g++) {
         search q = {w0, s0, SEARCH_SAMPLES, &disks[g]};
-        s = place(&disks[0], &disks[g], best_turn(&q), counts[g], params[g], fine ? fine[g] : NULL, err);
+        s = place(&disks[0], &disks[g], best_turn(&q), counts[g], power, params[g], fine ? fine[g] : NULL, err);
     }
     free(s0);
     if (s == CM_OK) *found = usable;
@@ -341,6 +341,7 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
 
 struct cm_conformal_memo {
     int held, found;
+    double power;
     size_t k, total;  /* polygons; their vertices in all */
     size_t *counts;   /* k */
     int *orientation; /* k */
@@ -364,9 +365,9 @@ void cm_conformal_memo_free(cm_conformal_memo *memo)
 }
 
 static int memo_matches(const cm_conformal_memo *memo, const double *const *polygons, const size_t *counts,
-                        size_t k, const int *orientation)
+                        size_t k, const int *orientation, double power)
 {
-    if (!memo->held || memo->k != k || memcmp(memo->counts, counts, k * sizeof *counts) ||
+    if (!memo->held || memo->k != k || memo->power != power || memcmp(memo->counts, counts, k * sizeof *counts) ||
         memcmp(memo->orientation, orientation, k * sizeof *orientation))
         return 0;
     for (size_t g = 0, at = 0; g < k; at += counts[g], g++)
@@ -388,7 +389,7 @@ static void memo_copy(cm_conformal_memo *memo, double *const *params, double *co
 
 /* Remembers a call's polygons and result (silently not, out of memory). */
 static void memo_store(cm_conformal_memo *memo, const double *const *polygons, const size_t *counts, size_t k,
-                       const int *orientation, double *const *params, double *const *fine, int found)
+                       const int *orientation, double power, double *const *params, double *const *fine, int found)
 {
     memo_clear(memo);
     size_t total = 0;
@@ -404,7 +405,7 @@ static void memo_store(cm_conformal_memo *memo, const double *const *polygons, c
     }
     memcpy(memo->counts, counts, k * sizeof *counts);
     memcpy(memo->orientation, orientation, k * sizeof *orientation);
-    memo->k = k, memo->total = total, memo->found = found;
+    memo->k = k, memo->total = total, memo->found = found, memo->power = power;
     for (size_t g = 0, at = 0; g < k; at += counts[g], g++)
         memcpy(memo->xy + 2 * at, polygons[g], 2 * counts[g] * sizeof *memo->xy);
     if (found) memo_copy(memo, params, fine, 0);
@@ -412,15 +413,16 @@ static void memo_store(cm_conformal_memo *memo, const double *const *polygons, c
 }
 
 cm_status cm_correspond_conformal_memo(cm_conformal_memo *memo, const double *const *polygons, const size_t *counts,
-                                       size_t k, const int *orientation, double *const *params,
+                                       size_t k, const int *orientation, double power, double *const *params,
                                        double *const *fine, int *found, cm_error *err)
 {
-    if (memo && fine && k && memo_matches(memo, polygons, counts, k, orientation)) {
+    if (memo && fine && k && memo_matches(memo, polygons, counts, k, orientation, power)) {
         *found = memo->found;
         if (*found) memo_copy(memo, params, fine, 1);
         return CM_OK;
     }
-    cm_status s = cm_correspond_conformal(polygons, counts, k, orientation, params, fine, found, err);
-    if (memo && fine && k && s == CM_OK) memo_store(memo, polygons, counts, k, orientation, params, fine, *found);
+    cm_status s = cm_correspond_conformal(polygons, counts, k, orientation, power, params, fine, found, err);
+    if (memo && fine && k && s == CM_OK)
+        memo_store(memo, polygons, counts, k, orientation, power, params, fine, *found);
     return s;
 }

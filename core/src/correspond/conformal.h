@@ -28,10 +28,12 @@
  * a factor exponential in its length over its width, beyond doubles and
  * beyond any mesh, so the polygons are matched not by angle but by a
  * tempered parameter: the running integral of (d angle / d arc
- * length)^CM_CONFORMAL_POWER, normalised, which keeps the order and place
- * of the parts the conformal map sees and takes the power of its
- * crowding; a similar copy gets the same parameter. The power and the
- * rest were chosen by measurement (bench/CORRESPONDENCE.md). */
+ * length)^power, normalised, which keeps the order and place of the parts
+ * the conformal map sees and takes the power of its crowding (0: arc
+ * length from where the map puts vertex 0; 1: the conformal map itself); a
+ * similar copy gets the same parameter. The power (CM_CONFORMAL_POWER, and
+ * auto's rescues' others) and the rest were chosen by measurement
+ * (bench/CORRESPONDENCE.md). */
 #define CM_CONFORMAL_POWER 0.25
 /* fine: NULL, or k arrays of counts[g] * CM_PARAM_FINE doubles (fine[0]
  * may be NULL: polygon 0's parameter is its arc length): fine[g][c *
@@ -42,8 +44,8 @@
  * points towards that corner, where linear interpolation between the
  * vertices would put a jump of the stretch at the corner. */
 cm_status cm_correspond_conformal(const double *const *polygons, const size_t *counts, size_t k,
-                                  const int *orientation, double *const *params, double *const *fine, int *found,
-                                  cm_error *err);
+                                  const int *orientation, double power, double *const *params, double *const *fine,
+                                  int *found, cm_error *err);
 
 /* The last conformal correspondence made in one run, recalled when the
  * same polygons ask again (auto's second pairing reads the same
@@ -54,10 +56,10 @@ cm_conformal_memo *cm_conformal_memo_new(void);
 void cm_conformal_memo_free(cm_conformal_memo *memo);
 
 /* cm_correspond_conformal, recalled from memo (NULL: none) when the
- * polygons (coordinates, counts, orientation) are those of its last call
- * with fine given. */
+ * polygons (coordinates, counts, orientation) and the power are those of
+ * its last call with fine given. */
 cm_status cm_correspond_conformal_memo(cm_conformal_memo *memo, const double *const *polygons, const size_t *counts,
-                                       size_t k, const int *orientation, double *const *params,
+                                       size_t k, const int *orientation, double power, double *const *params,
                                        double *const *fine, int *found, cm_error *err);
 
 #endif
