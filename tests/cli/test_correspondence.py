@@ -225,3 +225,23 @@ def test_auto_breaks_a_tie_of_ceilings_by_the_correspondence_bound(cm, tmp_path,
     auto_angle = min(m["min_angle_deg"] for m in auto["meshes"])
     similar_angle = min(m["min_angle_deg"] for m in similar["meshes"])
     assert auto_angle >= auto_floor > similar_angle
+
+
+def test_auto_remeshes_another_pairing_where_the_first_ends_short(cm, tmp_path):
+    # FreeSerif Italic 'T' against '5', 48 vertices each (cm_gen_pairs --set
+    # hard): the similarity choice allows the higher ceiling (15.5 degrees
+    # against the conformal pairing's 13.3, the corner-fan cap) and is taken
+    # first, but remeshes to 6.9 degrees, below 0.6 of its aim; the conformal
+    # pairing, remeshed in its place, reaches 13.25.
+    a, b = (os.path.join(GLYPH_PAIRS, "FreeSerifItalic_T_5_n48_" + s + ".xy") for s in "ab")
+    runs = {}
+    for mode, extra in (("first", ["--correspondence", "auto", "--no-remesh"]),
+                        ("similarity", ["--correspondence", "similarity"]),
+                        ("auto", ["--correspondence", "auto"])):
+        r = cm("triangulate", a, b, "-o", mode, "--no-preview", *extra)
+        assert r.returncode == 0, r.stderr
+        runs[mode] = json.loads((tmp_path / mode / "report.json").read_text())
+    assert runs["first"]["correspondence_choice"] == "similarity"
+    assert runs["auto"]["correspondence_choice"] == "conformal"
+    angle = {m: min(x["min_angle_deg"] for x in runs[m]["meshes"]) for m in ("similarity", "auto")}
+    assert angle["auto"] >= 13.0 > 8.0 > angle["similarity"]
