@@ -48,7 +48,7 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
                                   int *found, cm_error *err);
 
 /* The last conformal correspondence made in one run, recalled when the
- * same polygons ask again (auto's second pairing reads the same
+ * same polygons ask again at the same power (auto's rescue reads the same
  * parameter, only linearly between the vertices). */
 typedef struct cm_conformal_memo cm_conformal_memo;
 /* An empty memo (NULL out of memory: nothing is then recalled). */
