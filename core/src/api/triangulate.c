@@ -823,14 +823,15 @@ static cm_status keep_better(cm_result **result, cm_result *again, cm_status s, 
  * higher ceiling; but the ceiling does not tell which the remesher grades
  * better (tune_FreeSerifItalic_T_5_n48: the similarity's ceiling 15.5
  * remeshed to 6.9 degrees, the conformal's 13.3 to 13.3), and the
- * faithful pairing may crowd beyond what it can grade. Where the result
- * ends below a share of its aim, the other pairings are remeshed in turn,
- * each as it is, till the best ends above that share, and the best result
- * is kept: the conformal parameter tempered nearer the conformal map
- * (below CM_POWER_RESCUE_SHARE), then (below CM_PAIRING_RESCUE_SHARE) the
- * conformal parameter read along every edge, read linearly between each
- * polygon's vertices (coarser: the stretch averaged over an edge), the
- * similarity choice, and the parameter tempered nearer arc length. */
+ * faithful pairing may crowd beyond what it can grade. Where the best
+ * result so far ends below a share of its aim, the other pairings are
+ * remeshed in turn, each as it is, and the best result is kept: below
+ * CM_PAIRING_RESCUE_SHARE the conformal parameter read linearly between
+ * each polygon's vertices (coarser: the stretch averaged over an edge;
+ * first, so that the result is never below that rescue's alone), below
+ * CM_POWER_RESCUE_SHARE the parameter tempered nearer the conformal map,
+ * then below CM_PAIRING_RESCUE_SHARE the parameter read along every edge,
+ * the similarity choice, and the parameter tempered nearer arc length. */
 static cm_status pairing_rescue(cm_result **result, const double *const *polygons, const size_t *counts, size_t k,
                                 const cm_options *o)
 {
@@ -839,9 +840,9 @@ static cm_status pairing_rescue(cm_result **result, const double *const *polygon
     static const struct {
         auto_pairing pairing;
         double share;
-    } others[] = {{{PAIRING_CONFORMAL, 0, CM_RESCUE_POWER_MORE}, CM_POWER_RESCUE_SHARE},
+    } others[] = {{{PAIRING_CONFORMAL, 1, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
+                  {{PAIRING_CONFORMAL, 0, CM_RESCUE_POWER_MORE}, CM_POWER_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
-                  {{PAIRING_CONFORMAL, 1, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_SIMILARITY, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 0, CM_RESCUE_POWER_LESS}, CM_PAIRING_RESCUE_SHARE}};
     cm_status s = CM_OK;
