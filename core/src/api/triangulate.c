@@ -811,9 +811,9 @@ static cm_status keep_better(cm_result **result, cm_result *again, cm_status s, 
 
 /* The rescues' other tempering powers (conformal.h): nearer the conformal
  * map, nearer arc length. The first is also tried up to a higher share of
- * the aim: of auto's other pairings it is the one that most often ends
- * higher where the result ends between 0.6 and 0.8 of the aim (14 of the
- * 23 glyph pairs there that any of them raised, bench/CORRESPONDENCE.md). */
+ * the aim: of the 23 glyph pairs that every pairing tried up to 0.8 of the
+ * aim raised beyond what the rescues up to 0.6 gave, it was the best on 16
+ * (bench/CORRESPONDENCE.md), and alone it costs one run, not four. */
 #define CM_RESCUE_POWER_MORE 0.3
 #define CM_RESCUE_POWER_LESS 0.2
 #define CM_POWER_RESCUE_SHARE 0.8
