@@ -787,6 +787,19 @@ static int rescue_wanted(const cm_result *r, const cm_options *o, double share)
            r->greedy_angle_deg < share * r->stats.remesh_aim_deg;
 }
 
+/* A result for a rescue's run, sharing r's memos (the caps and the
+ * conformal map of the same polygons); NULL without memory for it (r then
+ * stands). */
+static cm_result *rescue_result(const cm_result *r, const cm_options *o)
+{
+    cm_result *again = NULL;
+    cm_options unused;
+    const cm_options *same = o;
+    if (!new_result(&again, &same, &unused)) return NULL;
+    again->bounds = r->bounds, again->conformal = r->conformal;
+    return again;
+}
+
 /* *result becomes the better of itself and again, whose run ended with
  * status s (the better: the larger smallest angle; the times of both runs
  * summed); the other is freed. CM_OK, or CM_ERR_CANCELLED when the second
@@ -853,11 +866,8 @@ static cm_status pairing_rescue(cm_result **result, const double *const *polygon
              first == CM_CHOICE_CONFORMAL) ||
             (p->kind == PAIRING_SIMILARITY && first == CM_CHOICE_SIMILARITY))
             continue; /* not wanted, or the first run's */
-        cm_result *again = NULL;
-        cm_options unused;
-        const cm_options *same = o;
-        if (!new_result(&again, &same, &unused)) return CM_OK;
-        again->bounds = (*result)->bounds, again->conformal = (*result)->conformal;
+        cm_result *again = rescue_result(*result, o);
+        if (!again) return CM_OK;
         s = keep_better(result, again, run_arclength(again, polygons, counts, k, o, NULL, *p), k);
     }
     return s;
@@ -1333,12 +1343,8 @@ static cm_status outer_rescue(cm_result **result, const cm_loops *polygons, size
     if ((*result)->stats.correspondence_choice != CM_CHOICE_CONFORMAL ||
         !rescue_wanted(*result, o, CM_PAIRING_RESCUE_SHARE))
         return CM_OK;
-    cm_result *again = NULL;
-    cm_options unused;
-    const cm_options *same = o;
-    if (!new_result(&again, &same, &unused)) return CM_OK;
-    again->bounds = (*result)->bounds, again->conformal = (*result)->conformal;
-    return keep_better(result, again, run_loops_arclength(again, polygons, k, o, LOOP_BY_START), k);
+    cm_result *again = rescue_result(*result, o);
+    return again ? keep_better(result, again, run_loops_arclength(again, polygons, k, o, LOOP_BY_START), k) : CM_OK;
 }
 
 cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_options *options,
