@@ -73,7 +73,11 @@
  * cut runs past vertices that see only it), so a face above
  * LINK_ALL_PAIRS_LARGE gets a fixed number of sources, O(m) window
  * partitions in all. When that finds no cut, the budget of small inputs
- * is tried before the overlay. */
+ * is tried before the overlay. Such a face is first cut where it leaves a
+ * quarter on either side (as a piece above the table limit is): its
+ * fewest-link pairs among those sources are short, each peels off a few
+ * dozen vertices, and a face of a few hundred peeled that way costs
+ * O(m / peel) cuts of O(m) each, one bend apiece. */
 #define LINK_ALL_PAIRS_LARGE 64
 #define LINK_WORK_LARGE 1024L
 #define LINK_MIN_SOURCES_LARGE 16
@@ -81,11 +85,14 @@
  * the valid cuts, this many are compared by what their halves need. */
 #define LINK_MAX_TRIES 40
 /* Sources of a cut that must leave a given share on either side: every
- * source pairs with a whole opposite arc, so a few spread ones suffice.
+ * source pairs with a whole opposite arc, so a few spread ones suffice
+ * (from a vertex of a random polygon the window partition is a chain of
+ * pockets of nearly all its vertices, O(m) per level and source: more
+ * sources find a pair a link shorter now and then, at their full cost).
  * Their link distances start at this cap (a piece above the table limit
  * rarely has a balanced pair within two links, and each larger cap builds
  * the partitions again from the source). */
-#define BALANCED_SOURCES 8
+#define BALANCED_SOURCES 4
 #define BALANCED_FIRST_CAP 4
 /* A piece above this many times the table limit takes half as many: its
  * window partitions are the deepest (its links the longest) and its
@@ -1483,6 +1490,7 @@ static cm_status process_item(part *p, item *it)
     if (it->table < 0 && (s = table_for_item(p, it)) != CM_OK) return s;
     if (!it->stuck && common_step(p, it, &s)) return s;
     int cut = try_fan(p, it);
+    if (cut == 0 && large_budget(p, it)) cut = link_split(p, it, it->m / LINK_PART, 0, 0); /* LINK_ALL_PAIRS_LARGE */
     if (cut == 0) cut = link_split_widening(p, it);
     /* Before the overlay: a piece of a sliver may still be cut if a
      * half may keep its size a few times more (the overlay itself may
