@@ -1330,14 +1330,24 @@ static int link_split(part *p, item *it, long min_balance, int repeats, int wide
                 if (!open[g * (size_t)nsrc + (size_t)r]) continue;
                 /* rank_pairs reads a row only at the vertices that are
                  * not sources of earlier rows, at least min_balance away
-                 * either way round */
+                 * either way round, and within the cap in the geometries
+                 * before (the others it does not rank) */
+                int *row = dist_row(&f, g, r), before_open = 0;
+                long needed = 0;
+                for (size_t h = 0; h < g; h++) before_open |= open[h * (size_t)nsrc + (size_t)r];
                 for (long w = 0; w < m; w++) {
                     long d = (w - f.src[r] + m) % m, span = d < m - d ? d : m - d;
                     need[w] = w != f.src[r] && !(f.row_of[w] >= 0 && f.row_of[w] < r) && span >= min_balance;
+                    for (size_t h = 0; need[w] && h < g; h++) need[w] = dist_row(&f, h, r)[w] >= 1;
+                    needed += need[w];
                 }
-                int s = cm_link_distances_needed(f.lp[g], f.src[r], cap, need, dist_row(&f, g, r));
+                int s = 0;
+                if (needed > 0) s = cm_link_distances_needed(f.lp[g], f.src[r], cap, need, row);
+                else for (long w = 0; w < m; w++) row[w] = -1;
                 if (s < 0) result = -1;
-                open[g * (size_t)nsrc + (size_t)r] = (unsigned char)(s == 1);
+                /* a row that read fewer vertices than a deeper row before
+                 * it will reach goes again with it */
+                open[g * (size_t)nsrc + (size_t)r] = (unsigned char)(s == 1 || before_open);
                 deeper += s == 1;
             }
         if (result == 0) result = cut_face(&f);
