@@ -97,7 +97,7 @@
 /* A piece above this many times the table limit takes half as many: its
  * window partitions are the deepest (its links the longest) and its
  * distances cost the most of all its cuts. */
-#define BALANCED_FEWER_ABOVE 4
+#define BALANCED_FEWER_ABOVE 2
 /* Cuts in a row that keep a face's size, when the overlay is the only
  * other way left (else one). */
 #define MAX_REPEATS 4
