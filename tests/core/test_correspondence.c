@@ -246,7 +246,8 @@ static void test_conformal_similar_copy(void)
 }
 
 /* The memo gives what computing gives: the same polygons recalled, a
- * changed one, or another tempering power, computed afresh. */
+ * changed one, or another tempering power, computed afresh, and the power
+ * before that recalled again. */
 static void test_conformal_memo(void)
 {
     enum { N = 30, F = CM_PARAM_FINE };
@@ -259,9 +260,9 @@ static void test_conformal_memo(void)
     cm_conformal_memo *memo = cm_conformal_memo_new();
     CHECK(memo != NULL);
     double before[2][N];
-    for (int change = 0; change < 3; change++) {
+    for (int change = 0; change < 4; change++) {
         if (change == 1) b[0] += 0.01; /* polygon 1 moved: computed afresh */
-        double power = change == 2 ? 0.3 : CM_CONFORMAL_POWER; /* another power: computed afresh */
+        double power = change == 2 ? 0.3 : CM_CONFORMAL_POWER; /* another power: computed afresh; then back */
         double *fp[2] = {fresh[0], fresh[1]}, *ff[2] = {NULL, fresh_fine};
         double *gp[2] = {got[0], got[1]}, *gf[2] = {NULL, got_fine};
         CHECK(cm_correspond_conformal(in, counts, 2, orientation, power, fp, ff, &found, &err) == CM_OK && found);

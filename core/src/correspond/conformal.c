@@ -339,7 +339,8 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
 
 /* ---- memo -------------------------------------------------------------------- */
 
-struct cm_conformal_memo {
+/* One call's polygons and result. */
+typedef struct memo_entry {
     int held, found;
     double power;
     size_t k, total;  /* polygons; their vertices in all */
@@ -348,11 +349,20 @@ struct cm_conformal_memo {
     double *xy;       /* 2 total: the polygons one after another */
     double *params;   /* total */
     double *fine;     /* (total - counts[0]) CM_PARAM_FINE: polygons 1 .. k - 1 */
+} memo_entry;
+
+/* Calls remembered: auto's rescues ask for three powers and come back to
+ * the first (the similarity choice's run reads it again). */
+#define CM_CONFORMAL_MEMO_CALLS 4
+
+struct cm_conformal_memo {
+    memo_entry at[CM_CONFORMAL_MEMO_CALLS];
+    size_t next; /* the entry the next call computed replaces: the oldest */
 };
 
 cm_conformal_memo *cm_conformal_memo_new(void) { return calloc(1, sizeof(cm_conformal_memo)); }
 
-static void memo_clear(cm_conformal_memo *memo)
+static void memo_clear(memo_entry *memo)
 {
     free(memo->counts), free(memo->orientation), free(memo->xy), free(memo->params), free(memo->fine);
     memset(memo, 0, sizeof *memo);
@@ -360,11 +370,11 @@ static void memo_clear(cm_conformal_memo *memo)
 
 void cm_conformal_memo_free(cm_conformal_memo *memo)
 {
-    if (memo) memo_clear(memo);
+    for (size_t i = 0; memo && i < CM_CONFORMAL_MEMO_CALLS; i++) memo_clear(&memo->at[i]);
     free(memo);
 }
 
-static int memo_matches(const cm_conformal_memo *memo, const double *const *polygons, const size_t *counts,
+static int memo_matches(const memo_entry *memo, const double *const *polygons, const size_t *counts,
                         size_t k, const int *orientation, double power)
 {
     if (!memo->held || memo->k != k || memo->power != power || memcmp(memo->counts, counts, k * sizeof *counts) ||
@@ -377,7 +387,7 @@ static int memo_matches(const cm_conformal_memo *memo, const double *const *poly
 
 /* Copies the parameters between the memo and the caller: to the caller
  * when recall, else into the memo. */
-static void memo_copy(cm_conformal_memo *memo, double *const *params, double *const *fine, int recall)
+static void memo_copy(memo_entry *memo, double *const *params, double *const *fine, int recall)
 {
     for (size_t g = 0, at = 0; g < memo->k; at += memo->counts[g], g++) {
         size_t c = memo->counts[g], fine_at = (at - memo->counts[0]) * CM_PARAM_FINE;
@@ -388,7 +398,7 @@ static void memo_copy(cm_conformal_memo *memo, double *const *params, double *co
 }
 
 /* Remembers a call's polygons and result (silently not, out of memory). */
-static void memo_store(cm_conformal_memo *memo, const double *const *polygons, const size_t *counts, size_t k,
+static void memo_store(memo_entry *memo, const double *const *polygons, const size_t *counts, size_t k,
                        const int *orientation, double power, double *const *params, double *const *fine, int found)
 {
     memo_clear(memo);
@@ -416,13 +426,17 @@ cm_status cm_correspond_conformal_memo(cm_conformal_memo *memo, const double *co
                                        size_t k, const int *orientation, double power, double *const *params,
                                        double *const *fine, int *found, cm_error *err)
 {
-    if (memo && fine && k && memo_matches(memo, polygons, counts, k, orientation, power)) {
-        *found = memo->found;
-        if (*found) memo_copy(memo, params, fine, 1);
+    for (size_t i = 0; memo && fine && k && i < CM_CONFORMAL_MEMO_CALLS; i++) {
+        memo_entry *e = &memo->at[i];
+        if (!memo_matches(e, polygons, counts, k, orientation, power)) continue;
+        *found = e->found;
+        if (*found) memo_copy(e, params, fine, 1);
         return CM_OK;
     }
     cm_status s = cm_correspond_conformal(polygons, counts, k, orientation, power, params, fine, found, err);
-    if (memo && fine && k && s == CM_OK)
-        memo_store(memo, polygons, counts, k, orientation, power, params, fine, *found);
+    if (memo && fine && k && s == CM_OK) {
+        memo_store(&memo->at[memo->next], polygons, counts, k, orientation, power, params, fine, *found);
+        memo->next = (memo->next + 1) % CM_CONFORMAL_MEMO_CALLS;
+    }
     return s;
 }

@@ -47,9 +47,10 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
                                   const int *orientation, double power, double *const *params, double *const *fine,
                                   int *found, cm_error *err);
 
-/* The last conformal correspondence made in one run, recalled when the
- * same polygons ask again at the same power (auto's rescue reads the same
- * parameter, only linearly between the vertices). */
+/* The last few conformal correspondences made in one run, recalled when
+ * the same polygons ask again at the same power (auto's rescues read the
+ * same parameter linearly between the vertices, and come back to it after
+ * other powers). */
 typedef struct cm_conformal_memo cm_conformal_memo;
 /* An empty memo (NULL out of memory: nothing is then recalled). */
 cm_conformal_memo *cm_conformal_memo_new(void);
