@@ -1222,6 +1222,121 @@ static double min_angle_sin2_reference(const double a[2], const double b[2], con
 
 /* Its smallest value over v's link polygon p in geometry g, (q, p_i,
  * p_i+1): the reference for the position search's scan. */
+/* random_kmesh with a vertex inserted at the centroid of every third
+ * triangle: interior vertices of degree 3 and more. */
+static int random_kmesh_inner(int seed, double **a, double **b, cm_mesh *m, cm_kmesh *km)
+{
+    if (random_kmesh(seed, a, b, m, km)) return -1;
+    for (int32_t t = 0, nt = km->nt; t < nt; t += 3) {
+        if (!cm_kmesh_tri_live(km, t)) continue;
+        double pts[4];
+        for (size_t g = 0; g < 2; g++)
+            for (int d = 0; d < 2; d++)
+                pts[2 * g + d] = (cm_kmesh_pos(km, g, km->tri[3 * t])[d] + cm_kmesh_pos(km, g, km->tri[3 * t + 1])[d] +
+                                  cm_kmesh_pos(km, g, km->tri[3 * t + 2])[d]) / 3;
+        CHECK(cm_kmesh_insert(km, t, pts) >= 0);
+    }
+    return 0;
+}
+
+/* What a scaled-star test does at one interior vertex v of degree 3 and
+ * more, in geometry g (its star's corners in star). */
+typedef void (*star_visit)(void *ctx, const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star);
+
+/* visit() at every interior vertex of `pairs` random meshes
+ * (random_kmesh_inner), in both geometries, the meshes scaled by 2^shift[i]
+ * for each of the nshift shifts in turn. */
+static void for_each_scaled_star(int pairs, const int *shift, size_t nshift, star_visit visit, void *ctx)
+{
+    for (int seed = 0; seed < pairs; seed++) {
+        double *a, *b;
+        cm_mesh m;
+        cm_kmesh km;
+        if (random_kmesh_inner(seed, &a, &b, &m, &km)) continue;
+        size_t coords = 2 * (size_t)km.nv;
+        double *orig[2];
+        for (size_t g = 0; g < 2; g++) {
+            orig[g] = malloc(coords * sizeof *orig[g]);
+            memcpy(orig[g], km.xy[g], coords * sizeof *orig[g]);
+        }
+        cm_ibuf star = {0};
+        for (size_t s = 0; s < nshift; s++) {
+            for (size_t g = 0; g < 2; g++)
+                for (size_t i = 0; i < coords; i++) km.xy[g][i] = ldexp(orig[g][i], shift[s]);
+            for (int32_t v = km.n; v < km.nv; v++) {
+                if (km.vc[v] < 0 || cm_kmesh_is_boundary(&km, v) || cm_kmesh_star(&km, v, &star) < 3) continue;
+                for (size_t g = 0; g < 2; g++) visit(ctx, &km, g, v, &star);
+            }
+        }
+        for (size_t g = 0; g < 2; g++) free(orig[g]);
+        cm_ibuf_free(&star), cm_kmesh_free(&km), cm_mesh_clear(&m);
+        free(a), free(b);
+    }
+}
+
+/* The angle-based smoothing target by its definition (Zhou and Shimada;
+ * eq. 2 with power 2): at each ring vertex p_i, the angles from p_{i+1} to
+ * v and from v to p_{i-1} measured with atan2, p_i -> v rotated by half
+ * their difference onto the bisector, weighted by 1 / alpha_i^power. */
+static void angle_target_reference(const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, double power,
+                                   double out[2])
+{
+    const double *c = cm_kmesh_pos(km, g, v);
+    double x = 0, y = 0, wsum = 0;
+    for (size_t i = 0, m = star->n; i < m; i++) {
+        const double *p = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[i])]);
+        const double *pn = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[(i + 1) % m])]);
+        const double *pp = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[(i + m - 1) % m])]);
+        double d[2] = {c[0] - p[0], c[1] - p[1]}, n[2] = {pn[0] - p[0], pn[1] - p[1]}, q[2] = {pp[0] - p[0], pp[1] - p[1]};
+        double a1 = atan2(n[0] * d[1] - n[1] * d[0], n[0] * d[0] + n[1] * d[1]);
+        double a2 = atan2(d[0] * q[1] - d[1] * q[0], d[0] * q[0] + d[1] * q[1]);
+        double beta = 0.5 * (a2 - a1), w = 1.0 / fmax(pow(a1 + a2, power), 1e-12);
+        x += w * (p[0] + cos(beta) * d[0] - sin(beta) * d[1]);
+        y += w * (p[1] + sin(beta) * d[0] + cos(beta) * d[1]);
+        wsum += w;
+    }
+    out[0] = x / wsum, out[1] = y / wsum;
+}
+
+typedef struct target_tally {
+    long checked, wrong;
+    double worst;
+} target_tally;
+
+static void check_angle_targets(void *ctx, const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star)
+{
+    static const cm_smoothing methods[] = {CM_SMOOTH_ANGLE, CM_SMOOTH_WEIGHTED};
+    target_tally *t = ctx;
+    const double *c = cm_kmesh_pos(km, g, v), *p0 = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[0])]);
+    double size = hypot(p0[0] - c[0], p0[1] - c[1]);
+    for (size_t k = 0; k < 2; k++) {
+        double got[2], want[2];
+        angle_target_reference(km, g, v, star, methods[k] == CM_SMOOTH_ANGLE ? 0 : 2, want);
+        t->checked++;
+        if (cm_smooth_target(km, g, v, methods[k], star, got)) {
+            t->wrong++;
+            continue;
+        }
+        double off = hypot(got[0] - want[0], got[1] - want[1]) / size;
+        t->worst = fmax(t->worst, off);
+        t->wrong += !(off < 1e-10);
+    }
+}
+
+/* The angle-based targets (eq. 1 and eq. 2) on random valid stars, the
+ * meshes scaled by powers of two from 2^-300 to 2^300, agree with their
+ * definition to 1e-10 of the ring's size (a wrong bisector is off by
+ * about the size itself). */
+static void test_angle_target(int pairs)
+{
+    static const int shift[] = {-300, -40, 0, 40, 300};
+    target_tally t = {0};
+    for_each_scaled_star(pairs, shift, sizeof shift / sizeof *shift, check_angle_targets, &t);
+    CHECK_MSG(t.checked > 1000 && t.wrong == 0, "angle targets: %ld of %ld differ from the definition (worst %.3g)",
+              t.wrong, t.checked, t.worst);
+    printf("angle targets: %ld, furthest %.3g of the ring's size from the definition\n", t.checked, t.worst);
+}
+
 static double star_sin2_reference(const cm_kmesh *km, size_t g, const cm_ibuf *star, const double q[2])
 {
     double lo = 1.0;
@@ -1231,6 +1346,43 @@ static double star_sin2_reference(const cm_kmesh *km, size_t g, const cm_ibuf *s
         lo = fmin(lo, min_angle_sin2_reference(q, b, c));
     }
     return lo;
+}
+
+typedef struct scan_tally {
+    rp_rng rng;
+    long checked, above, wrong;
+} scan_tally;
+
+static void check_star_scan(void *ctx, const cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star)
+{
+    scan_tally *t = ctx;
+    const double *c = cm_kmesh_pos(km, g, v), *p0 = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[0])]);
+    const double *p1 = cm_kmesh_pos(km, g, km->tri[cm_next(star->a[1])]);
+    double reach = hypot(p0[0] - c[0], p0[1] - c[1]);
+    for (int trial = 0; trial < 16; trial++) {
+        double q[2] = {c[0], c[1]}, mid[2] = {0.5 * (p0[0] + p1[0]), 0.5 * (p0[1] + p1[1])};
+        if (trial == 1) q[0] = p0[0], q[1] = p0[1];
+        else if (trial == 2) q[0] = mid[0], q[1] = mid[1];
+        else if (trial == 3) q[0] += 1e3 * reach, q[1] -= 1e3 * reach;
+        else if (trial < 8) { /* a sliver whose sin^2 underflows: 2^-1000 .. 2^-1090 */
+            double off = ldexp(1.0, -500 - 15 * (trial - 4));
+            q[0] = mid[0] - off * (p1[1] - p0[1]), q[1] = mid[1] + off * (p1[0] - p0[0]);
+        } else q[0] += reach * (rp_uniform(&t->rng) - 0.5), q[1] += reach * (rp_uniform(&t->rng) - 0.5);
+        double want = star_sin2_reference(km, g, star, q), floor;
+        switch ((int)(rp_uniform(&t->rng) * 7)) {
+        case 0: floor = -1.0; break;
+        case 1: floor = 0.0; break;
+        case 2: floor = 0x1p-1000; break;
+        case 3: floor = want; break;
+        case 4: floor = nextafter(want, 0.0); break;
+        case 5: floor = nextafter(want, 1.0); break;
+        default: floor = 0.75 * rp_uniform(&t->rng); break;
+        }
+        double got = cm_smooth_star_sin2(km, g, v, star, q, floor, (long)(rp_uniform(&t->rng) * 64));
+        t->checked++;
+        if (want > floor) t->above++, t->wrong += memcmp(&want, &got, sizeof got) != 0;
+        else t->wrong += got > floor;
+    }
 }
 
 /* The position search's star scan and its shortcuts (no range tests
@@ -1246,76 +1398,16 @@ static void test_star_scan(int pairs)
 {
     static const int shift[] = {0, -200, -240, -247, -248, -249, -250, -251, -252, -256, -300, -500, -560,
                                 200, 240, 248, 249, 250, 251, 252, 256, 300, 480};
-    long checked = 0, above = 0, wrong = 0;
-    for (int seed = 0; seed < pairs; seed++) {
-        double *a, *b;
-        cm_mesh m;
-        cm_kmesh km;
-        if (random_kmesh(seed, &a, &b, &m, &km)) continue;
-        for (int32_t t = 0, nt = km.nt; t < nt; t += 3) { /* interior vertices of degree 3 and more */
-            if (!cm_kmesh_tri_live(&km, t)) continue;
-            double pts[4];
-            for (size_t g = 0; g < 2; g++)
-                for (int d = 0; d < 2; d++)
-                    pts[2 * g + d] = (cm_kmesh_pos(&km, g, km.tri[3 * t])[d] + cm_kmesh_pos(&km, g, km.tri[3 * t + 1])[d] +
-                                      cm_kmesh_pos(&km, g, km.tri[3 * t + 2])[d]) / 3;
-            CHECK(cm_kmesh_insert(&km, t, pts) >= 0);
-        }
-        size_t coords = 2 * (size_t)km.nv;
-        double *orig[2];
-        for (size_t g = 0; g < 2; g++) {
-            orig[g] = malloc(coords * sizeof *orig[g]);
-            memcpy(orig[g], km.xy[g], coords * sizeof *orig[g]);
-        }
-        rp_rng rng = {(uint64_t)seed * 104729 + 1};
-        cm_ibuf star = {0};
-        for (size_t s = 0; s < sizeof shift / sizeof *shift; s++) {
-            for (size_t g = 0; g < 2; g++)
-                for (size_t i = 0; i < coords; i++) km.xy[g][i] = ldexp(orig[g][i], shift[s]);
-            for (int32_t v = km.n; v < km.nv; v++) {
-                if (km.vc[v] < 0 || cm_kmesh_is_boundary(&km, v) || cm_kmesh_star(&km, v, &star) < 3) continue;
-                for (size_t g = 0; g < 2; g++) {
-                    const double *c = cm_kmesh_pos(&km, g, v), *p0 = cm_kmesh_pos(&km, g, km.tri[cm_next(star.a[0])]);
-                    const double *p1 = cm_kmesh_pos(&km, g, km.tri[cm_next(star.a[1])]);
-                    double reach = hypot(p0[0] - c[0], p0[1] - c[1]);
-                    for (int trial = 0; trial < 16; trial++) {
-                        double q[2] = {c[0], c[1]}, mid[2] = {0.5 * (p0[0] + p1[0]), 0.5 * (p0[1] + p1[1])};
-                        if (trial == 1) q[0] = p0[0], q[1] = p0[1];
-                        else if (trial == 2) q[0] = mid[0], q[1] = mid[1];
-                        else if (trial == 3) q[0] += 1e3 * reach, q[1] -= 1e3 * reach;
-                        else if (trial < 8) { /* a sliver whose sin^2 underflows: 2^-1000 .. 2^-1090 */
-                            double off = ldexp(1.0, -500 - 15 * (trial - 4));
-                            q[0] = mid[0] - off * (p1[1] - p0[1]), q[1] = mid[1] + off * (p1[0] - p0[0]);
-                        } else q[0] += reach * (rp_uniform(&rng) - 0.5), q[1] += reach * (rp_uniform(&rng) - 0.5);
-                        double want = star_sin2_reference(&km, g, &star, q), floor;
-                        switch ((int)(rp_uniform(&rng) * 7)) {
-                        case 0: floor = -1.0; break;
-                        case 1: floor = 0.0; break;
-                        case 2: floor = 0x1p-1000; break;
-                        case 3: floor = want; break;
-                        case 4: floor = nextafter(want, 0.0); break;
-                        case 5: floor = nextafter(want, 1.0); break;
-                        default: floor = 0.75 * rp_uniform(&rng); break;
-                        }
-                        double got = cm_smooth_star_sin2(&km, g, v, &star, q, floor, (long)(rp_uniform(&rng) * 64));
-                        checked++;
-                        if (want > floor) above++, wrong += memcmp(&want, &got, sizeof got) != 0;
-                        else wrong += got > floor;
-                    }
-                }
-            }
-        }
-        for (size_t g = 0; g < 2; g++) free(orig[g]);
-        cm_ibuf_free(&star), cm_kmesh_free(&km), cm_mesh_clear(&m);
-        free(a), free(b);
-    }
-    CHECK_MSG(wrong == 0, "star scan: %ld of %ld trials differ from the reference", wrong, checked);
-    CHECK_MSG(above > checked / 4, "star scan: only %ld of %ld trials above their floor", above, checked);
-    printf("star scan: %ld trials, %ld above their floor\n", checked, above);
+    scan_tally t = {{104729}, 0, 0, 0};
+    for_each_scaled_star(pairs, shift, sizeof shift / sizeof *shift, check_star_scan, &t);
+    CHECK_MSG(t.wrong == 0, "star scan: %ld of %ld trials differ from the reference", t.wrong, t.checked);
+    CHECK_MSG(t.above > t.checked / 4, "star scan: only %ld of %ld trials above their floor", t.above, t.checked);
+    printf("star scan: %ld trials, %ld above their floor\n", t.checked, t.above);
 }
 
 int main(void)
 {
+    test_angle_target(40);
     test_star_scan(40);
     test_min_angle_above(40000);
     test_max_angle(200000);

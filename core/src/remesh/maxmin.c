@@ -63,7 +63,7 @@ typedef struct soft {
     double tau;
     double *tmin;      /* nmoved: sin^2 of each moving triangle's smallest angle */
     int32_t *hot;      /* the moving triangles near the smallest angle */
-    double *angle;     /* 3 per hot triangle */
+    double *weight;    /* 3 per hot triangle: exp(-(a - m) / tau) of its corners below the cut, else 0 */
     double best;       /* the best smallest angle met, at best_x */
     lbfgsfloatval_t *best_x;
     cm_progress *progress;
@@ -152,17 +152,17 @@ static lbfgsfloatval_t evaluate(void *instance, const lbfgsfloatval_t *x, lbfgsf
         if (s->tmin[i] >= hot_above) continue;
         const int32_t *v = s->tri + 3 * s->moved[i];
         const double *p[3] = {position(s, v[0]), position(s, v[1]), position(s, v[2])};
-        double *a = s->angle + 3 * hot;
+        double a[3], *e = s->weight + 3 * hot;
         corner_angles(p, cut, tan_cut, a);
-        for (int c = 0; c < 3; c++) sum += a[c] < cut ? exp(-(a[c] - m) / s->tau) : 0;
+        for (int c = 0; c < 3; c++) sum += e[c] = a[c] < cut ? exp(-(a[c] - m) / s->tau) : 0;
         s->hot[hot++] = s->moved[i];
     }
     memset(s->gpos, 0, 2 * s->nvar * sizeof *s->gpos);
     for (size_t i = 0; i < hot; i++) {
         const int32_t *v = s->tri + 3 * s->hot[i];
         for (int c = 0; c < 3; c++) {
-            if (s->angle[3 * i + c] >= cut) continue;
-            double w = exp(-(s->angle[3 * i + c] - m) / s->tau) / sum;
+            if (!(s->weight[3 * i + c] > 0)) continue; /* at or above the cut */
+            double w = s->weight[3 * i + c] / sum;
             int32_t at[3] = {v[c], v[(c + 1) % 3], v[(c + 2) % 3]};
             const double *a = position(s, at[0]), *b = position(s, at[1]), *d = position(s, at[2]);
             double ux = b[0] - a[0], uy = b[1] - a[1], vx = d[0] - a[0], vy = d[1] - a[1];
@@ -339,11 +339,11 @@ static int soft_alloc(soft *s, size_t nv, size_t nvar, size_t ntris, int sliding
     s->pos = malloc(2 * nvar * sizeof *s->pos);
     s->gpos = malloc(2 * nvar * sizeof *s->gpos);
     s->moved = malloc(ntris * sizeof *s->moved);
-    s->angle = malloc(3 * ntris * sizeof *s->angle);
+    s->weight = malloc(3 * ntris * sizeof *s->weight);
     s->tmin = malloc(ntris * sizeof *s->tmin);
     s->hot = malloc(ntris * sizeof *s->hot);
     if (!s->slot || !s->var || !s->off || !s->edge || (sliding && !s->along) || !s->pos || !s->gpos || !s->moved ||
-        !s->angle || !s->tmin || !s->hot)
+        !s->weight || !s->tmin || !s->hot)
         return -1;
     for (size_t v = 0; v < nv; v++) s->slot[v] = -1;
     return 0;
@@ -352,7 +352,7 @@ static int soft_alloc(soft *s, size_t nv, size_t nvar, size_t ntris, int sliding
 static void soft_free(soft *s)
 {
     free(s->slot), free(s->var), free(s->off), free(s->edge), free(s->along), free(s->pos), free(s->gpos);
-    free(s->moved), free(s->angle), free(s->tmin), free(s->hot);
+    free(s->moved), free(s->weight), free(s->tmin), free(s->hot);
 }
 
 int cm_maxmin_local(const int32_t *tri, const double *xy, size_t nv, const int32_t *var, size_t nvar,
