@@ -120,6 +120,16 @@
  * undone move is not tried again till the mesh near it changes
  * (step_out), and such a move was often kept on a later try before. */
 #define CM_FORCED_CLOSE 0.002
+/* A forced move's repair is given up after its first sweep when the
+ * triangles it changed are below this share of their smallest angle
+ * before: on the tuning pairs 1 in 500 of those repairs ended in a gain
+ * (against 1 in 60 of all), and a repair is most of a try's cost. */
+#define CM_FORCED_GIVE_UP 0.6
+/* Times a forced move may be undone in one step_out: on the tuning
+ * pairs a move undone three times or more was kept on 0.6 % of its later
+ * tries (a fresh one on 3 %), and those were 40 % of all tries, most in
+ * the wide window; at twice an auto glyph pair lost 7 % of its angle. */
+#define CM_FORCED_UNDONE 3
 /* L-BFGS iterations per geometry of the joint polish (maxmin.c). */
 #define CM_MAXMIN_ITERATIONS 400
 /* Moves the polish-scored stage may try (polish_moves.c), and the share
@@ -143,12 +153,12 @@ typedef struct tabu_set { /* keys (vertex pairs, forced moves) -> counts */
 
 /* Forced moves undone in step_out, with where they acted: the vertices
  * of the triangles their transaction changed and of the move's own
- * triangles. Such a move runs again only once a kept move has changed
- * the mesh within a ring of those vertices: till then it meets what it
- * met before. */
+ * triangles. Such a move runs again only once a kept move has moved or
+ * reconnected a vertex within a ring of those vertices (till then it
+ * meets what it met before), and not after CM_FORCED_UNDONE undos. */
 typedef struct failed_moves {
     tabu_set at;      /* move key -> its entry + 1 */
-    cm_ibuf entries;  /* 3 per entry: epoch when undone, offset and length in region */
+    cm_ibuf entries;  /* 4 per entry: epoch when last undone, offset and length in region, times undone */
     cm_ibuf region;
     uint32_t *changed; /* vertex -> epoch of the last kept move within a ring of it */
     size_t cap;
@@ -164,6 +174,9 @@ typedef struct remesher {
     cm_ibuf around;
     const cm_options *o;
     cm_progress *progress;
+    double give_up;  /* > 0: improve() stops after its first sweep when the open transaction's
+                        triangles fell below this share of their smallest angle before */
+    int gave_up;     /* improve() stopped so */
     double target; /* radians */
     long flips;
     long spent;    /* Steiner vertices added before refine() */
@@ -352,6 +365,7 @@ static cm_status stop_status(const remesher *x) { return stop_status_of(x->progr
  * for every -1 of the remesher's steps). */
 static int improve(remesher *x, int sweeps)
 {
+    x->gave_up = 0;
     for (int sweep = 0; sweep < sweeps; sweep++) {
         if (cm_progress_check(x->progress)) return -1;
         long f = cm_flip_queue(&x->km, &x->edges, &x->verts);
@@ -359,6 +373,14 @@ static int improve(remesher *x, int sweeps)
         x->flips += f;
         long moves = smooth_queued(x);
         if (moves < 0) return -1;
+        double before, after;
+        if (x->give_up > 0 && sweep == 0 && sweeps > 1) {
+            if (cm_kmesh_tx_region(&x->km, &before, &after)) return -1;
+            if (after < x->give_up * before) {
+                x->gave_up = 1;
+                break;
+            }
+        }
         if (moves == 0 && x->edges.items.n == 0) break;
     }
     while (cm_work_pop(&x->verts) >= 0) {} /* past the last sweep: drop the rest */
@@ -554,23 +576,26 @@ oom:
 /* ---- stepping out of local optima ------------------------------------------ */
 
 enum forced_move { FORCED_FLIP, FORCED_COLLAPSE, FORCED_SPLIT, FORCED_INSERT, FORCED_MOVES };
+enum forced_result { FORCED_OUT_OF_MEMORY = -1, FORCED_UNDONE, FORCED_KEPT, FORCED_IMPOSSIBLE };
 
 /* A move the greedy rules refuse, on the edge opposite c (flip, split),
  * on its corner vertex (collapse onto the next) or in its triangle (the
  * map-aware remesher: an insertion at the middle circumcentre), then the
- * repair (twice when the first ends close to a gain), as one transaction
+ * repair (twice when the first ends close to a gain, given up when its
+ * first sweep ends far below: CM_FORCED_GIVE_UP), as one transaction
  * kept only if the smallest angle of the triangles it changed rose.
- * Returns 1 kept, 0 undone or impossible, -1 out of memory. */
-static int try_forced(remesher *x, enum forced_move kind, int32_t c)
+ * around: the move's own vertices (-1: none), the new one last. */
+static enum forced_result try_forced(remesher *x, enum forced_move kind, int32_t c, int32_t around[5])
 {
     cm_kmesh *km = &x->km;
+    around[0] = around[1] = around[2] = around[3] = around[4] = -1;
     if (km->tri[c] < 0 || (kind == FORCED_FLIP && km->opp[c] < 0) || (kind == FORCED_SPLIT && km->opp[c] < 0 && !km->between))
-        return 0;
-    if (kind == FORCED_INSERT && c % 3) return 0; /* once per triangle */
-    if (kind == FORCED_COLLAPSE && cm_kmesh_is_boundary(km, km->tri[c])) return 0;
-    int32_t around[5] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)],
-                         km->opp[c] >= 0 ? km->tri[km->opp[c]] : -1, -1};
-    if (cm_kmesh_tx_begin(km)) return -1;
+        return FORCED_IMPOSSIBLE;
+    if (kind == FORCED_INSERT && c % 3) return FORCED_IMPOSSIBLE; /* once per triangle */
+    if (kind == FORCED_COLLAPSE && cm_kmesh_is_boundary(km, km->tri[c])) return FORCED_IMPOSSIBLE;
+    around[0] = km->tri[c], around[1] = km->tri[cm_next(c)], around[2] = km->tri[cm_prev(c)];
+    around[3] = km->opp[c] >= 0 ? km->tri[km->opp[c]] : -1;
+    if (cm_kmesh_tx_begin(km)) return FORCED_OUT_OF_MEMORY;
     int done = 0;
     if (kind == FORCED_FLIP) {
         done = cm_flip_if_valid(km, c);
@@ -583,18 +608,22 @@ static int try_forced(remesher *x, enum forced_move kind, int32_t c)
     }
     if (done <= 0) {
         cm_kmesh_tx_commit(km); /* nothing changed */
-        return done;
+        return done < 0 ? FORCED_OUT_OF_MEMORY : FORCED_IMPOSSIBLE;
     }
     for (int pass = 0; pass < 2; pass++) { /* the second: close to a gain (CM_FORCED_CLOSE) */
         for (int i = 0; i < 5; i++)
             if (around[i] >= 0 && km->vc[around[i]] >= 0 && queue_around(x, around[i]))
-                return cm_kmesh_tx_commit(km), -1;
+                return cm_kmesh_tx_commit(km), FORCED_OUT_OF_MEMORY;
         double before, after;
-        if (improve(x, CM_IMPROVE_SWEEPS) || cm_kmesh_tx_region(km, &before, &after))
-            return cm_kmesh_tx_commit(km), -1;
+        x->give_up = CM_FORCED_GIVE_UP;
+        int stop = improve(x, CM_IMPROVE_SWEEPS);
+        x->give_up = 0;
+        if (stop || cm_kmesh_tx_region(km, &before, &after)) return cm_kmesh_tx_commit(km), FORCED_OUT_OF_MEMORY;
+        if (x->gave_up) return cm_kmesh_tx_rollback(km) ? FORCED_OUT_OF_MEMORY : FORCED_UNDONE;
         if (after >= before + progress_needed(CM_PROGRESS, before) || after < before - CM_FORCED_CLOSE) break;
     }
-    return settle_by(x, CM_PROGRESS);
+    int kept = settle_by(x, CM_PROGRESS);
+    return kept < 0 ? FORCED_OUT_OF_MEMORY : kept ? FORCED_KEPT : FORCED_UNDONE;
 }
 
 /* What a forced move changes, as a key: the edge for a flip or a split
@@ -621,44 +650,53 @@ static int grow_changed(failed_moves *f, size_t need)
     return 0;
 }
 
-/* Was the move `key` undone, and has no kept move changed the mesh near
- * where it acted since? */
+/* Was the move `key` undone CM_FORCED_UNDONE times, or undone (or
+ * impossible) with no kept move near where it acted since? */
 static int still_failed(const failed_moves *f, uint64_t key)
 {
     uint32_t e = tabu_count_key(&f->at, key);
     if (!e) return 0;
-    const int32_t *entry = f->entries.a + 3 * (e - 1), *v = f->region.a + entry[1];
+    const int32_t *entry = f->entries.a + 4 * (e - 1), *v = f->region.a + entry[1];
+    if (entry[3] >= CM_FORCED_UNDONE) return 1;
     for (int32_t i = 0; i < entry[2]; i++)
         if ((size_t)v[i] < f->cap && f->changed[v[i]] > (uint32_t)entry[0]) return 0;
     return 1;
 }
 
-/* Records the move on corner c just undone (or impossible): where it
- * acted, as the mesh is again. 0 or -1 out of memory. */
-static int remember_failed(remesher *x, uint64_t key, int32_t c)
+/* Records the move on corner c just undone (or, !undone, impossible):
+ * where it acted, as the mesh is again. 0 or -1 out of memory. */
+static int remember_failed(remesher *x, uint64_t key, int32_t c, int undone)
 {
     failed_moves *f = &x->failed;
     cm_kmesh *km = &x->km;
+    uint32_t old = tabu_count_key(&f->at, key);
+    int32_t times = (old ? f->entries.a[4 * (old - 1) + 3] : 0) + (undone != 0);
     size_t off = f->region.n;
     if (cm_kmesh_tx_vertices(km, &f->region)) return -1;
     for (int i = 0; i < 3; i++)
         if (cm_ibuf_push(&f->region, km->tri[3 * (c / 3) + i])) return -1;
     if (km->opp[c] >= 0 && cm_ibuf_push(&f->region, km->tri[km->opp[c]])) return -1;
-    size_t e = f->entries.n / 3;
+    size_t e = f->entries.n / 4;
     if (cm_ibuf_push(&f->entries, (int32_t)f->epoch) || cm_ibuf_push(&f->entries, (int32_t)off) ||
-        cm_ibuf_push(&f->entries, (int32_t)(f->region.n - off)))
+        cm_ibuf_push(&f->entries, (int32_t)(f->region.n - off)) || cm_ibuf_push(&f->entries, times))
         return -1;
     return tabu_set_key(&f->at, key, count_is, (uint32_t)e + 1);
 }
 
-/* After a kept move: the vertices of the triangles it changed and their
- * neighbours get a new epoch. 0 or -1 out of memory. */
-static int mark_changed(remesher *x)
+/* After a kept move: its own vertices (`moved`, as try_forced gave
+ * them) and their neighbours get a new epoch. Not every vertex its
+ * repair moved: a repair spreads over a wide region, and the undone
+ * moves there it woke again were kept half as often as moves tried
+ * the first time (the same results on the quick bench set with a
+ * sixth fewer tries). 0 or -1 out of memory. */
+static int mark_changed(remesher *x, const int32_t moved[5])
 {
     failed_moves *f = &x->failed;
     cm_kmesh *km = &x->km;
     x->around.n = 0;
-    if (cm_kmesh_tx_vertices(km, &x->around) || grow_changed(f, (size_t)km->nv)) return -1;
+    for (int i = 0; i < 5; i++)
+        if (moved[i] >= 0 && km->vc[moved[i]] >= 0 && cm_ibuf_push(&x->around, moved[i])) return -1;
+    if (grow_changed(f, (size_t)km->nv)) return -1;
     f->epoch++;
     for (size_t i = 0; i < x->around.n; i++) {
         int32_t v = x->around.a[i];
@@ -705,12 +743,15 @@ static cm_status step_out(remesher *x, size_t n, int32_t window, long max_tries)
                     if (km->tri[near[j]] < 0) continue;
                     uint64_t key = forced_key(km, (enum forced_move)kind, near[j]);
                     if (still_failed(f, key)) continue;
-                    int s = try_forced(x, (enum forced_move)kind, near[j]);
+                    int32_t moved[5];
+                    enum forced_result s = try_forced(x, (enum forced_move)kind, near[j], moved);
                     tries++;
                     TRACE_FORCED();
-                    if (s < 0 || (s == 0 && remember_failed(x, key, near[j])) || (s > 0 && mark_changed(x)))
+                    if (s == FORCED_OUT_OF_MEMORY ||
+                        (s != FORCED_KEPT && remember_failed(x, key, near[j], s == FORCED_UNDONE)) ||
+                        (s == FORCED_KEPT && mark_changed(x, moved)))
                         return stop_status(x);
-                    gained = s;
+                    gained = s == FORCED_KEPT;
                 }
             }
         }

@@ -57,57 +57,26 @@ static void laplacian_target(const ring *r, double out[2])
     out[0] = x / (double)r->m, out[1] = y / (double)r->m;
 }
 
-/* Neighbour p (ring neighbours pn next, pp previous) rotates the edge
- * p -> v (v at c) onto the bisector of the link polygon's angle alpha at
- * p: the rotated point t, and alpha when power is not 0. Where v's
- * triangles at p are counter-clockwise (a valid star) both parts of alpha
- * lie in (0, pi), and with u, w the unit vectors from p to pn and pp the
- * bisector is rot90(u - w) / |u - w| and tan(alpha / 2) = |u - w|^2 /
- * (2 u x w): no trigonometry but one atan2. 0, or -1 where the star is
- * not valid there or the vectors are too short or long for that. */
-static int bisector_point(const double *c, const double *p, const double *pn, const double *pp, double power,
-                          double *alpha, double t[2])
-{
-    double dx = c[0] - p[0], dy = c[1] - p[1];
-    double nx = pn[0] - p[0], ny = pn[1] - p[1], qx = pp[0] - p[0], qy = pp[1] - p[1];
-    double nn = nx * nx + ny * ny, qq = qx * qx + qy * qy, dd = dx * dx + dy * dy;
-    if (!(nx * dy - ny * dx > 0 && dx * qy - dy * qx > 0 && nn > CM_ANGLE_SAFE_LO && nn < CM_ANGLE_SAFE_HI &&
-          qq > CM_ANGLE_SAFE_LO && qq < CM_ANGLE_SAFE_HI && dd < CM_ANGLE_SAFE_HI))
-        return -1;
-    double rn = 1 / sqrt(nn), rq = 1 / sqrt(qq);
-    double ux = nx * rn, uy = ny * rn, wx = qx * rq, wy = qy * rq;
-    double ex = ux - wx, ey = uy - wy, ee = ex * ex + ey * ey;
-    if (!(ee > 0x1p-60)) return -1;
-    double scale = sqrt(dd / ee);
-    t[0] = p[0] - ey * scale, t[1] = p[1] + ex * scale;
-    *alpha = power == 0 ? 0 : 2 * atan2(0.5 * ee, ux * wy - uy * wx);
-    return 0;
-}
-
-/* The average of the neighbours' rotated points, weighted by
- * 1 / alpha_i^power (eq. 1: power 0; eq. 2: power 2); the angles measured
- * as they are where bisector_point cannot (a star being untangled). */
+/* Each neighbour p_i rotates the edge p_i -> v onto the bisector of the
+ * link polygon's angle alpha_i at p_i; the average of the rotated points,
+ * weighted by 1 / alpha_i^power (eq. 1: power 0; eq. 2: power 2). */
 static int angle_target(const ring *r, double power, double out[2])
 {
     const double *c = r->c;
     double x = 0, y = 0, wsum = 0;
     for (long i = 0; i < r->m; i++) {
         const double *p = r->p[i], *pn = r->p[i + 1], *pp = r->p[i ? i - 1 : r->m - 1];
-        double alpha, t[2];
-        if (bisector_point(c, p, pn, pp, power, &alpha, t)) {
-            double dx = c[0] - p[0], dy = c[1] - p[1];
-            double nx = pn[0] - p[0], ny = pn[1] - p[1], qx = pp[0] - p[0], qy = pp[1] - p[1];
-            double a1 = atan2(nx * dy - ny * dx, nx * dx + ny * dy); /* from p_{i+1} to v */
-            double a2 = atan2(dx * qy - dy * qx, dx * qx + dy * qy); /* from v to p_{i-1} */
-            double beta = 0.5 * (a2 - a1), cb = cos(beta), sb = sin(beta);
-            alpha = a1 + a2;
-            t[0] = p[0] + cb * dx - sb * dy, t[1] = p[1] + sb * dx + cb * dy;
-        }
+        double dx = c[0] - p[0], dy = c[1] - p[1];
+        double nx = pn[0] - p[0], ny = pn[1] - p[1], qx = pp[0] - p[0], qy = pp[1] - p[1];
+        double a1 = atan2(nx * dy - ny * dx, nx * dx + ny * dy); /* from p_{i+1} to v */
+        double a2 = atan2(dx * qy - dy * qx, dx * qx + dy * qy); /* from v to p_{i-1} */
+        double beta = 0.5 * (a2 - a1), alpha = a1 + a2;
         double w = power == 0   ? 1.0
                    : power == 2 ? 1.0 / fmax(alpha * alpha, 1e-12)
                                 : 1.0 / fmax(pow(fabs(alpha), power), 1e-12);
-        x += w * t[0];
-        y += w * t[1];
+        double cb = cos(beta), sb = sin(beta);
+        x += w * (p[0] + cb * dx - sb * dy);
+        y += w * (p[1] + sb * dx + cb * dy);
         wsum += w;
     }
     if (!(wsum > 0) || !isfinite(x) || !isfinite(y)) return -1;
