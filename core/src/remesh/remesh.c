@@ -178,9 +178,6 @@ typedef struct remesher {
     cm_ibuf around;
     const cm_options *o;
     cm_progress *progress;
-    double give_up;  /* > 0: improve() stops after its first sweep when the open transaction's
-                        triangles fell below this share of their smallest angle before */
-    int gave_up;     /* improve() stopped so */
     double target; /* radians */
     long flips;
     long spent;    /* Steiner vertices added before refine() */
@@ -364,12 +361,14 @@ static cm_status stop_status_of(const cm_progress *progress)
 static cm_status stop_status(const remesher *x) { return stop_status_of(x->progress); }
 
 /* Flips and smoothing, alternated until neither changes anything or the
- * sweeps run out: both only ever raise local smallest angles. Returns 0,
- * or -1 to stop: out of memory, or cancelled (x->progress says which; so
- * for every -1 of the remesher's steps). */
-static int improve(remesher *x, int sweeps)
+ * sweeps run out: both only ever raise local smallest angles. With
+ * give_up > 0, given up after the first sweep when the open transaction's
+ * triangles fell below give_up of their smallest angle before. Returns 0,
+ * 1 given up, or -1 to stop: out of memory, or cancelled (x->progress
+ * says which; so for every -1 of the remesher's steps). */
+static int repair(remesher *x, int sweeps, double give_up)
 {
-    x->gave_up = 0;
+    int gave_up = 0;
     for (int sweep = 0; sweep < sweeps; sweep++) {
         if (cm_progress_check(x->progress)) return -1;
         long f = cm_flip_queue(&x->km, &x->edges, &x->verts);
@@ -378,10 +377,10 @@ static int improve(remesher *x, int sweeps)
         long moves = smooth_queued(x);
         if (moves < 0) return -1;
         double before, after;
-        if (x->give_up > 0 && sweep == 0 && sweeps > 1) {
+        if (give_up > 0 && sweep == 0 && sweeps > 1) {
             if (cm_kmesh_tx_region(&x->km, &before, &after)) return -1;
-            if (after < x->give_up * before) {
-                x->gave_up = 1;
+            if (after < give_up * before) {
+                gave_up = 1;
                 break;
             }
         }
@@ -389,8 +388,11 @@ static int improve(remesher *x, int sweeps)
     }
     while (cm_work_pop(&x->verts) >= 0) {} /* past the last sweep: drop the rest */
     while (cm_work_pop(&x->edges) >= 0) {}
-    return 0;
+    return gave_up;
 }
+
+/* repair() never given up: 0, or -1 to stop. */
+static int improve(remesher *x, int sweeps) { return repair(x, sweeps, 0); }
 
 static int improve_everywhere(remesher *x)
 {
@@ -619,11 +621,9 @@ static enum forced_result try_forced(remesher *x, enum forced_move kind, int32_t
             if (around[i] >= 0 && km->vc[around[i]] >= 0 && queue_around(x, around[i]))
                 return cm_kmesh_tx_commit(km), FORCED_OUT_OF_MEMORY;
         double before, after;
-        x->give_up = CM_FORCED_GIVE_UP;
-        int stop = improve(x, CM_IMPROVE_SWEEPS);
-        x->give_up = 0;
-        if (stop || cm_kmesh_tx_region(km, &before, &after)) return cm_kmesh_tx_commit(km), FORCED_OUT_OF_MEMORY;
-        if (x->gave_up) return cm_kmesh_tx_rollback(km) ? FORCED_OUT_OF_MEMORY : FORCED_UNDONE;
+        int r = repair(x, CM_IMPROVE_SWEEPS, CM_FORCED_GIVE_UP);
+        if (r < 0 || cm_kmesh_tx_region(km, &before, &after)) return cm_kmesh_tx_commit(km), FORCED_OUT_OF_MEMORY;
+        if (r > 0) return cm_kmesh_tx_rollback(km) ? FORCED_OUT_OF_MEMORY : FORCED_UNDONE;
         if (after >= before + progress_needed(CM_PROGRESS, before) || after < before - CM_FORCED_CLOSE) break;
     }
     int kept = settle_by(x, CM_PROGRESS);
