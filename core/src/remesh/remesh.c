@@ -322,12 +322,10 @@ static int smooth_one(remesher *x, int32_t v)
     long m = cm_kmesh_star(km, v, &x->star);
     if (m < 0) return m == -1 ? -1 : 0;
     int moved = 0;
+    int search = near_short(x); /* the same after a move left undone */
     for (size_t g = 0; g < km->k; g++) {
-        unsigned bit = cm_dirty_smooth(g);
-        int s = km->vdirty[v] & bit ? cm_smooth_vertex_star(km, g, v, x->o->smoothing, 1, &x->star) : 0;
-        if (s == 0 && !cm_dirty_smooth_shared(g)) cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~bit);
-        if (s == 0 && near_short(x)) s = cm_smooth_optimize_star(km, g, v, &x->star);
-        if (s < 0) return -1;
+        int s = cm_smooth_then_search(km, g, v, x->o->smoothing, &x->star, search);
+        if (s) search = near_short(x);
         moved |= s;
     }
     return moved;

@@ -241,19 +241,26 @@ static int try_move(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring
     return 0;
 }
 
+/* The smoothing move of v in its ring r; before: the smallest angle
+ * around v (radians), when smart. */
+static int smooth_in_ring(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, double power, int smart,
+                          const cm_ibuf *star, ring *r, double before)
+{
+    if (smart && out_of_reach(r, before + CM_SMOOTH_GAIN)) return 0;
+    double q[2];
+    if (target_of(r, method, power, q) == 0 && try_move(km, g, v, star, r, q, smart, before)) return 1;
+    if (method != CM_SMOOTH_COMBINED) return 0;
+    laplacian_target(r, q);
+    return try_move(km, g, v, star, r, q, smart, before);
+}
+
 /* cm_smooth_vertex_star with the angle-based weights' power given. */
 static int smooth_star(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, double power, int smart,
                        const cm_ibuf *star)
 {
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
-    double before = smart ? sin2_to_angle(star_sin2(&r, r.c)) : 0;
-    if (smart && out_of_reach(&r, before + CM_SMOOTH_GAIN)) return 0;
-    double q[2];
-    if (target_of(&r, method, power, q) == 0 && try_move(km, g, v, star, &r, q, smart, before)) return 1;
-    if (method != CM_SMOOTH_COMBINED) return 0;
-    laplacian_target(&r, q);
-    return try_move(km, g, v, star, &r, q, smart, before);
+    return smooth_in_ring(km, g, v, method, power, smart, star, &r, smart ? sin2_to_angle(star_sin2(&r, r.c)) : 0);
 }
 
 /* cm_smooth_vertex with the angle-based weights' power given. */
@@ -272,12 +279,6 @@ int cm_smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int
     return smooth_vertex(km, g, v, method, power_of(method), smart, star);
 }
 
-int cm_smooth_vertex_star(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
-                          const cm_ibuf *star)
-{
-    return smooth_star(km, g, v, method, power_of(method), smart, star);
-}
-
 /* The search found no gain for v in geometry g. Returns 0. */
 static int no_gain(cm_kmesh *km, size_t g, int32_t v)
 {
@@ -291,52 +292,81 @@ static int no_gain(cm_kmesh *km, size_t g, int32_t v)
 /* Steps of the pattern search below. */
 #define CM_OPTIMIZE_STEPS 10
 
-int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
-{
-    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0 || !(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
-    if (!(km->vdirty[v] & cm_dirty_search(g))) return no_gain(km, g, v); /* its star in g is as it found none */
-    long m = cm_kmesh_star(km, v, star);
-    if (m < 0) return m == -1 ? -1 : 0;
-    return cm_smooth_optimize_star(km, g, v, star);
-}
-
-int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star)
+/* The pattern search of v in its ring r, from start = star_sin2(r, r->c)
+ * (that scan's smallest triangle in r->worst). */
+static int search_in_ring(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring *r, double start)
 {
     static const double dir[8][2] = {{1, 0}, {0.7071067811865476, 0.7071067811865476}, {0, 1},
                                      {-0.7071067811865476, 0.7071067811865476}, {-1, 0},
                                      {-0.7071067811865476, -0.7071067811865476}, {0, -1},
                                      {0.7071067811865476, -0.7071067811865476}};
-    if (!(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
-    if (!(km->vdirty[v] & cm_dirty_search(g))) return no_gain(km, g, v); /* its star in g is as it found none */
-    ring r;
-    if (ring_of(km, g, v, star, &r)) return 0;
-    double best[2] = {r.c[0], r.c[1]}, q = star_sin2(&r, best), start = q, near2 = HUGE_VAL, step = HUGE_VAL;
-    if (out_of_reach(&r, sin2_to_angle(start) + CM_SMOOTH_GAIN)) return no_gain(km, g, v);
-    for (long i = 0; i < r.m; i++) {
-        double dx = r.p[i][0] - best[0], dy = r.p[i][1] - best[1];
+    double best[2] = {r->c[0], r->c[1]}, q = start, near2 = HUGE_VAL, step = HUGE_VAL;
+    if (out_of_reach(r, sin2_to_angle(start) + CM_SMOOTH_GAIN)) return no_gain(km, g, v);
+    for (long i = 0; i < r->m; i++) {
+        double dx = r->p[i][0] - best[0], dy = r->p[i][1] - best[1];
         near2 = fmin(near2, dx * dx + dy * dy);
     }
-    for (long i = 0; i < r.m; i++) { /* the distance to the nearest neighbour: hypot only near the least square */
-        double dx = r.p[i][0] - best[0], dy = r.p[i][1] - best[1];
+    for (long i = 0; i < r->m; i++) { /* the distance to the nearest neighbour: hypot only near the least square */
+        double dx = r->p[i][0] - best[0], dy = r->p[i][1] - best[1];
         if (!(dx * dx + dy * dy > near2 * (1 + 1e-9))) step = fmin(step, hypot(dx, dy));
     }
     step *= 0.25;
     long from[8]; /* per direction: the triangle that last stopped its scan, likely again */
-    for (int d = 0; d < 8; d++) from[d] = r.worst;
-    int bounded = scan_bounded(&r, q);
+    for (int d = 0; d < 8; d++) from[d] = r->worst;
+    int bounded = scan_bounded(r, q);
     for (int it = 0; it < CM_OPTIMIZE_STEPS && step > 0; it++) {
         int improved = 0;
         for (int d = 0; d < 8; d++) {
             double p[2] = {best[0] + step * dir[d][0], best[1] + step * dir[d][1]};
-            double qp = star_sin2_above(&r, p, q, bounded, &from[d]);
-            if (qp > q && star_valid(&r, p))
-                q = qp, best[0] = p[0], best[1] = p[1], improved = 1, bounded = scan_bounded(&r, q);
+            double qp = star_sin2_above(r, p, q, bounded, &from[d]);
+            if (qp > q && star_valid(r, p))
+                q = qp, best[0] = p[0], best[1] = p[1], improved = 1, bounded = scan_bounded(r, q);
         }
         if (!improved) step *= 0.5;
     }
     if (!(sin2_to_angle(q) > sin2_to_angle(start) + CM_SMOOTH_GAIN)) return no_gain(km, g, v);
     cm_kmesh_move(km, g, v, best, star);
     return 1;
+}
+
+/* May the search run on v in g, or has it found no gain there since
+ * nothing changed (then said so in the flags)? */
+static int search_wanted(cm_kmesh *km, size_t g, int32_t v)
+{
+    if (!(km->vdirty[v] & CM_DIRTY_OPTIMIZE)) return 0;
+    if (!(km->vdirty[v] & cm_dirty_search(g))) return no_gain(km, g, v); /* its star in g is as it found none */
+    return 1;
+}
+
+int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
+{
+    if (cm_kmesh_is_boundary(km, v) || km->vc[v] < 0 || !search_wanted(km, g, v)) return 0;
+    long m = cm_kmesh_star(km, v, star);
+    if (m < 0) return m == -1 ? -1 : 0;
+    ring r;
+    if (ring_of(km, g, v, star, &r)) return 0;
+    return search_in_ring(km, g, v, star, &r, star_sin2(&r, r.c));
+}
+
+int cm_smooth_then_search(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, const cm_ibuf *star, int search)
+{
+    unsigned bit = cm_dirty_smooth(g);
+    ring r;
+    int have_ring = 0;
+    double start = 0;
+    long worst = 0;
+    if (km->vdirty[v] & bit && ring_of(km, g, v, star, &r) == 0) {
+        have_ring = 1, start = star_sin2(&r, r.c), worst = r.worst;
+        if (smooth_in_ring(km, g, v, method, power_of(method), 1, star, &r, sin2_to_angle(start))) return 1;
+    }
+    if (!cm_dirty_smooth_shared(g)) cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~bit);
+    if (!search || !search_wanted(km, g, v)) return 0;
+    if (!have_ring) {
+        if (ring_of(km, g, v, star, &r)) return 0;
+        start = star_sin2(&r, r.c), worst = r.worst;
+    }
+    r.worst = worst; /* as the scan at r.c left it: the smoothing's trials moved it */
+    return search_in_ring(km, g, v, star, &r, start);
 }
 
 /* One sweep of method, an angle-based one with weights 1 / alpha_i^power. */

@@ -13,10 +13,6 @@
  * star is scratch. */
 int cm_smooth_vertex(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
                      cm_ibuf *star);
-/* cm_smooth_vertex for interior live v with its star given (corners from
- * cm_kmesh_star). */
-int cm_smooth_vertex_star(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, int smart,
-                          const cm_ibuf *star);
 /* The position `method` proposes for Steiner vertex v in geometry g, from
  * its star (corners from cm_kmesh_star). Returns 0, or -1 when undefined. */
 int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing method,
@@ -26,8 +22,12 @@ int cm_smooth_target(const cm_kmesh *km, size_t g, int32_t v, cm_smoothing metho
  * fallback when the smoothing formulas are stuck near a bad triangle.
  * Returns 1 moved, 0 not, -1 out of memory. */
 int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star);
-/* cm_smooth_optimize for interior live v with its star given. */
-int cm_smooth_optimize_star(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star);
+/* Interior live v in geometry g, its star given (corners from
+ * cm_kmesh_star): the smart move by
+ * method where its smoothing flag says something changed (the flag then
+ * cleared if it stayed), then, if it stayed and `search`, the position
+ * search, both from one reading of the star. Returns 1 moved, 0 not. */
+int cm_smooth_then_search(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, const cm_ibuf *star, int search);
 /* The smallest sin^2 of the angles of interior v's triangles in geometry
  * g with v at q, as the position search scans them: from the triangle of
  * star corner `start`, stopping at the first at or below `floor`. Above
