@@ -72,13 +72,17 @@ the orientation: the loops run the same ways in both polygons (as the
 command line requires).
 
 The family is found by a search: without holes, a coarse search over
-quadruples of evenly spaced vertices and a local search around the best;
+quadruples of evenly spaced vertices and a local search around the best,
+and one around the quadruple compatmesh's own ceiling search found (a
+finer coarse search on a conformal map of each polygon), the larger
+certified ratio kept;
 with holes also every pair of loops (whole, or arcs between a few evenly
 spaced marks) on a coarser mesh, the best few moved one mark at a time,
 then certified on the fine mesh. Another family may distort more, in
 which case the true bound is lower still.
 """
 import itertools
+import json
 import math
 import os
 import shutil
@@ -583,7 +587,13 @@ def best_quadruple(polys):
         r = distortion(polys, q)
         if r > best:
             best, best_q = r, q
-    step = max(1, n // (2 * COARSE_MARKS))
+    return climb(polys, best_q, best, max(1, n // (2 * COARSE_MARKS)))
+
+
+def climb(polys, best_q, best, step):
+    """Quadruple best_q (ratio best) moved one mark at a time by halving
+    steps from `step` while the ratio grows."""
+    n = polys[0].n
     while step >= 1:
         improved = True
         while improved:
@@ -604,6 +614,21 @@ def best_quadruple(polys):
                         best, best_q, improved = r, q, True
         step //= 2
     return best_q
+
+
+def library_quadruple(cli, paths, workdir):
+    """The quadruple compatmesh's own ceiling search (core/src/correspond/
+    bound.c: twenty marks, its best three refined, on a coarser mesh) found
+    for the polygons, or None: a second start for the search here, whose
+    result is certified here all the same."""
+    out = os.path.join(tempfile.mkdtemp(dir=workdir), "pair")
+    run = subprocess.run([cli, "triangulate", *paths, "--out-dir", out, "--no-remesh", "--no-preview", "--quiet"],
+                         capture_output=True, text=True)
+    if run.returncode != 0:
+        return None
+    with open(os.path.join(out, "report.json")) as f:
+        quad = (json.load(f).get("ceiling") or {}).get("distortion_quad")
+    return tuple(sorted(quad)) if quad and len(set(quad)) == 4 else None
 
 
 def certified_family(polys, family):
@@ -837,8 +862,13 @@ def main(argv):
         return 2
     if len(polys[0].sizes) == 1:
         polys = [p.refined(MIN_TRIANGLES) for p in polys]
-        q = best_quadruple(polys)
-        K, name = certified_ratio(polys, q), ",".join(map(str, q))
+        starts = [best_quadruple(polys)]
+        with tempfile.TemporaryDirectory() as workdir:
+            q = library_quadruple(argv[1], argv[2:], workdir)
+        if q is not None and q not in starts:
+            starts.append(climb(polys, q, distortion(polys, q), 2))
+        K, q = max((certified_ratio(polys, q), q) for q in starts)
+        name = ",".join(map(str, q))
     else:
         K, name = best_with_holes(polys, twist)
     print("%.3f %.4g %s" % (angle_bound(K), K, name))
