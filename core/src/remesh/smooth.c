@@ -254,7 +254,7 @@ static int smooth_in_ring(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method
     return try_move(km, g, v, star, r, q, smart, before);
 }
 
-/* cm_smooth_vertex_star with the angle-based weights' power given. */
+/* v in geometry g moved by method from its star, the angle-based weights' power given. */
 static int smooth_star(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, double power, int smart,
                        const cm_ibuf *star)
 {
