@@ -71,6 +71,22 @@ def test_near_vertex_cap_by_hand():
     assert rb.near_vertex_cap(box) == pytest.approx(45)
 
 
+def test_aims_count_rounding_ties_only():
+    # a corner of 25.6 degrees split in halves: 12.8 each in exact arithmetic,
+    # a few units in the last place below it in doubles
+    c = 25.6
+    assert rb.reaches(c / 2 - 2e-15, c / 2) and rb.reaches(c / 2 * (1 - 1e-11), c / 2)
+    assert not rb.reaches(c / 2 - 1e-5, c / 2) and not rb.reaches(0.999 * 20, 20)
+    runs = [(c, 12.8 - 2e-15), (60.0, 20.0), (60.0, 19.99), (30.0, 10.0)]
+    rows = [{"c": c, "half": "tune", "runs": {"auto": {"new": {"valid": True, "min_angle_deg": a, "to_T": 1.0,
+                                                                "steiner": 1, "cpu_s": 1.0, "under20_pct": [0, 0]}}}}
+            for c, a in runs]
+    s = rb.summarize(rows, "new", "auto", "all")
+    assert s["at_min(20,c/2)"] == 2  # 12.8 tie and 20.0; not 19.99, not 10 against 15
+    assert s["at_min(15,c/3)"] == 4  # 10.0 reaches min(15, 30 / 3) = 10, 19.99 reaches 15, 12.8 reaches 8.5
+    assert s["at_least_0.55T"] == 4
+
+
 def bench(tmp_path, *extra):
     out, raw = tmp_path / "out.md", tmp_path / "out.json"
     run = subprocess.run([sys.executable, SCRIPT, "--compatmesh", CLI, "--gen-pairs", GEN,
