@@ -283,12 +283,27 @@ static int try_move(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring
     return 0;
 }
 
-/* The smoothing move of v in its ring r; before: the smallest angle
- * around v (radians), when smart. */
+/* The star of v at its place: sin^2 of its smallest angle, the triangle
+ * holding it, the angle itself, and whether a gain is in reach at all
+ * (out_of_reach): what the smoothing and the search both start from. */
+typedef struct star_start {
+    double sin2, angle;
+    long worst;
+    int reachable;
+} star_start;
+
+static void start_of(ring *r, star_start *s)
+{
+    s->sin2 = star_sin2(r, r->c), s->worst = r->worst, s->angle = sin2_to_angle(s->sin2);
+    s->reachable = !out_of_reach(r, smooth_aim(s->angle));
+}
+
+/* The smoothing move of v in its ring r: to method's target, then (the
+ * combined method) the Laplacian one; if smart, only where the smallest
+ * angle around v reaches smooth_aim(before). */
 static int smooth_in_ring(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, double power, int smart,
                           const cm_ibuf *star, ring *r, double before)
 {
-    if (smart && out_of_reach(r, smooth_aim(before))) return 0;
     double q[2];
     if (target_of(r, method, power, q) == 0 && try_move(km, g, v, star, r, q, smart, before)) return 1;
     if (method != CM_SMOOTH_COMBINED) return 0;
@@ -302,7 +317,10 @@ static int smooth_star(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, d
 {
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
-    return smooth_in_ring(km, g, v, method, power, smart, star, &r, smart ? sin2_to_angle(star_sin2(&r, r.c)) : 0);
+    if (!smart) return smooth_in_ring(km, g, v, method, power, 0, star, &r, 0);
+    star_start s;
+    start_of(&r, &s);
+    return s.reachable && smooth_in_ring(km, g, v, method, power, 1, star, &r, s.angle);
 }
 
 /* cm_smooth_vertex with the angle-based weights' power given. */
@@ -334,16 +352,16 @@ static int no_gain(cm_kmesh *km, size_t g, int32_t v)
 /* Steps of the pattern search below. */
 #define CM_OPTIMIZE_STEPS 10
 
-/* The pattern search of v in its ring r, from start = star_sin2(r, r->c)
- * (that scan's smallest triangle in r->worst). */
-static int search_in_ring(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring *r, double start)
+/* The pattern search of v in its ring r, from its start s. */
+static int search_in_ring(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star, ring *r, const star_start *s)
 {
     static const double dir[8][2] = {{1, 0}, {0.7071067811865476, 0.7071067811865476}, {0, 1},
                                      {-0.7071067811865476, 0.7071067811865476}, {-1, 0},
                                      {-0.7071067811865476, -0.7071067811865476}, {0, -1},
                                      {0.7071067811865476, -0.7071067811865476}};
-    double best[2] = {r->c[0], r->c[1]}, q = start, near2 = HUGE_VAL, step = HUGE_VAL;
-    if (out_of_reach(r, smooth_aim(sin2_to_angle(start)))) return no_gain(km, g, v);
+    if (!s->reachable) return no_gain(km, g, v);
+    r->worst = s->worst; /* as the scan at r->c left it (the smoothing's trials move it) */
+    double best[2] = {r->c[0], r->c[1]}, q = s->sin2, near2 = HUGE_VAL, step = HUGE_VAL;
     for (long i = 0; i < r->m; i++) {
         double dx = r->p[i][0] - best[0], dy = r->p[i][1] - best[1];
         near2 = fmin(near2, dx * dx + dy * dy);
@@ -366,7 +384,7 @@ static int search_in_ring(cm_kmesh *km, size_t g, int32_t v, const cm_ibuf *star
         }
         if (!improved) step *= 0.5;
     }
-    if (!(sin2_to_angle(q) > smooth_aim(sin2_to_angle(start)))) return no_gain(km, g, v);
+    if (!(sin2_to_angle(q) > smooth_aim(s->angle))) return no_gain(km, g, v);
     cm_kmesh_move(km, g, v, best, star);
     return 1;
 }
@@ -387,28 +405,29 @@ int cm_smooth_optimize(cm_kmesh *km, size_t g, int32_t v, cm_ibuf *star)
     if (m < 0) return m == -1 ? -1 : 0;
     ring r;
     if (ring_of(km, g, v, star, &r)) return 0;
-    return search_in_ring(km, g, v, star, &r, star_sin2(&r, r.c));
+    star_start s;
+    start_of(&r, &s);
+    return search_in_ring(km, g, v, star, &r, &s);
 }
 
 int cm_smooth_then_search(cm_kmesh *km, size_t g, int32_t v, cm_smoothing method, const cm_ibuf *star, int search)
 {
     unsigned bit = cm_dirty_smooth(g);
     ring r;
+    star_start s;
     int have_ring = 0;
-    double start = 0;
-    long worst = 0;
     if (km->vdirty[v] & bit && ring_of(km, g, v, star, &r) == 0) {
-        have_ring = 1, start = star_sin2(&r, r.c), worst = r.worst;
-        if (smooth_in_ring(km, g, v, method, power_of(method), 1, star, &r, sin2_to_angle(start))) return 1;
+        have_ring = 1;
+        start_of(&r, &s);
+        if (s.reachable && smooth_in_ring(km, g, v, method, power_of(method), 1, star, &r, s.angle)) return 1;
     }
     if (!cm_dirty_smooth_shared(g)) cm_kmesh_set_dirty(km, v, km->vdirty[v] & ~bit);
     if (!search || !search_wanted(km, g, v)) return 0;
     if (!have_ring) {
         if (ring_of(km, g, v, star, &r)) return 0;
-        start = star_sin2(&r, r.c), worst = r.worst;
+        start_of(&r, &s);
     }
-    r.worst = worst; /* as the scan at r.c left it: the smoothing's trials moved it */
-    return search_in_ring(km, g, v, star, &r, start);
+    return search_in_ring(km, g, v, star, &r, &s);
 }
 
 /* One sweep of method, an angle-based one with weights 1 / alpha_i^power. */
