@@ -39,16 +39,7 @@ from scipy.optimize import minimize
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from correspondence_bound import angle_bound  # noqa: E402
-
-
-def angles(p):
-    """The three angles (degrees) of triangle p."""
-    out = []
-    for i in range(3):
-        a, b, c = p[i], p[(i + 1) % 3], p[(i + 2) % 3]
-        u, v = (b[0] - a[0], b[1] - a[1]), (c[0] - a[0], c[1] - a[1])
-        out.append(math.degrees(math.atan2(abs(u[0] * v[1] - u[1] * v[0]), u[0] * v[0] + u[1] * v[1])))
-    return out
+from make_results import smallest_corner  # noqa: E402
 
 
 def lattice_angle(s):
@@ -61,7 +52,7 @@ def lattice_angle(s):
         c, d = math.cos(turn), math.sin(turn)
         tri = [(0.0, 0.0), (c, d), (ax * c - ay * d, ax * d + ay * c)]
         image = [(s * x, y / s) for x, y in tri]
-        return -min(min(angles(tri)), min(angles(image)))
+        return -min(smallest_corner(tri), smallest_corner(image))
     best = 0.0
     for i in range(24):
         start = (math.pi * i / 24, 0.5, 0.3 + 0.1 * (i % 8))
