@@ -374,8 +374,8 @@ static int repair(remesher *x, int sweeps, double give_up)
         x->flips += f;
         long moves = smooth_queued(x);
         if (moves < 0) return -1;
-        double before, after;
         if (give_up > 0 && sweep == 0 && sweeps > 1) {
+            double before, after;
             if (cm_kmesh_tx_region(&x->km, &before, &after)) return -1;
             if (after < give_up * before) {
                 gave_up = 1;
@@ -618,10 +618,11 @@ static enum forced_result try_forced(remesher *x, enum forced_move kind, int32_t
         for (int i = 0; i < 5; i++)
             if (around[i] >= 0 && km->vc[around[i]] >= 0 && queue_around(x, around[i]))
                 return cm_kmesh_tx_commit(km), FORCED_OUT_OF_MEMORY;
-        double before, after;
         int r = repair(x, CM_IMPROVE_SWEEPS, CM_FORCED_GIVE_UP);
-        if (r < 0 || cm_kmesh_tx_region(km, &before, &after)) return cm_kmesh_tx_commit(km), FORCED_OUT_OF_MEMORY;
+        if (r < 0) return cm_kmesh_tx_commit(km), FORCED_OUT_OF_MEMORY;
         if (r > 0) return cm_kmesh_tx_rollback(km) ? FORCED_OUT_OF_MEMORY : FORCED_UNDONE;
+        double before, after;
+        if (cm_kmesh_tx_region(km, &before, &after)) return cm_kmesh_tx_commit(km), FORCED_OUT_OF_MEMORY;
         if (after >= before + progress_needed(CM_PROGRESS, before) || after < before - CM_FORCED_CLOSE) break;
     }
     int kept = settle_by(x, CM_PROGRESS);
