@@ -48,6 +48,12 @@ Per pair, from the input alone:
 Per pair, build and mode (every run interleaved with the others and with
 CGAL, so machine load hits all alike):
   angle    the smallest angle over all output meshes; /T its ratio to T
+  map cap  the smallest, over the output's triangles, of the cap its own
+           affine map allows (correspondence_bound.map_caps: no position of
+           the same vertices raises a triangle above the cap of the map it
+           then has); /T its ratio to T. angle / map cap near 1 says the
+           triangles are as good as the mesh's map lets them be, so only a
+           less distorted map (other connectivity) can gain more
   <20      the share of triangles under 20 degrees, per mesh (percent)
   Steiner  compatmesh's Steiner vertices (shared by all meshes)
   CGAL     the Steiner vertices CGAL's Delaunay mesher (bench/cgal_single.cc)
@@ -61,7 +67,8 @@ CGAL, so machine load hits all alike):
            exactly before it writes it)
 Summary, per build, mode and group (tuning half, held-out half, bench set,
 all): medians of the above over the valid runs (of <20, the worse mesh's
-share), the smallest /T, how many pairs reach 0.3 T and 0.55 T, and how
+share; of the map cap, its ratio to T and the angle's ratio to it), the
+smallest /T, how many pairs reach 0.3 T and 0.55 T, and how
 many reach min(20, c / 2) and min(15, c / 3) (the aims of the choice of
 correspondence; a run within AIM_TOLERANCE of an aim, relatively, reaches
 it: a corner split exactly in halves reports c / 2 rounded).
@@ -87,10 +94,12 @@ import sys
 import tempfile
 import time
 
+import meshio
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stl_sections  # noqa: E402
+from map_caps import map_caps  # noqa: E402
 from make_results import corner_angles, fmt_angle, read_xy  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -408,12 +417,22 @@ def run_compatmesh(cli, pair, mode, workdir, timeout, extra=()):
         result["error"] = "timed out" if code is None else (err.strip().splitlines() or ["?"])[-1]
         return result
     report = json.load(open(report_path))
+    caps = output_map_caps([m["output"] for m in report["meshes"]])
     shutil.rmtree(out, ignore_errors=True)
-    result.update(valid=bool(report.get("valid", False)), steiner=report["steiner"],
+    result.update(map_cap_deg=caps,valid=bool(report.get("valid", False)), steiner=report["steiner"],
                   boundary=report["n"],
                   min_angle_deg=min(m["min_angle_deg"] for m in report["meshes"]),
                   under20_pct=[m["pct_triangles_below_20deg"] for m in report["meshes"]])
     return result
+
+
+def output_map_caps(paths):
+    """The least per-triangle map cap over every two of a run's output
+    meshes (degrees)."""
+    meshes = [meshio.read(p) for p in paths]
+    tri = meshes[0].cells_dict["triangle"]
+    return float(min(map_caps(a.points[:, :2], b.points[:, :2], tri).min()
+                     for i, a in enumerate(meshes) for b in meshes[i + 1:]))
 
 
 def run_cgal(cgal, pair, timeout):
@@ -456,6 +475,8 @@ def derive(run, target, cgal):
     if not run["valid"]:
         return run
     run["to_T"] = ratio(run["min_angle_deg"], target)
+    run["map_cap_to_T"] = ratio(run.get("map_cap_deg"), target)
+    run["angle_to_map_cap"] = ratio(run["min_angle_deg"], run.get("map_cap_deg"))
     if cgal and "error" not in cgal:
         run["steiner_to_cgal"] = ratio(run["steiner"], max(cgal["steiner"]))
         run["cpu_to_cgal"] = ratio(run["cpu_s"], cgal["cpu_s"])
@@ -493,6 +514,8 @@ def summarize(rows, label, mode, group):
             "invalid": len(runs) - len(ok),
             "median_angle": median(x["min_angle_deg"] for x in ok),
             "median_to_T": median(to_t), "min_to_T": min(to_t) if to_t else None,
+            "median_map_cap_to_T": median(x.get("map_cap_to_T") for x in ok),
+            "median_angle_to_map_cap": median(x.get("angle_to_map_cap") for x in ok),
             "at_least_0.3T": sum(reaches(t, GOOD_SHARE_OF_T) for t in to_t),
             "at_least_0.55T": sum(reaches(t, HIGH_SHARE_OF_T) for t in to_t), **at_aims,
             "median_steiner": median(x["steiner"] for x in ok),
@@ -531,9 +554,9 @@ def pair_table(rows, mode, labels):
     head = ["pair", "half", "n", "c", "fan", "bound (K)", "edge", "T"]
     for label in labels:
         p = "" if len(labels) == 1 else label + " "
-        head += [p + "angle", p + "/T", p + "<20 %", p + "Steiner", p + "St/CGAL", p + "CPU s",
+        head += [p + "angle", p + "/T", p + "map cap", p + "<20 %", p + "Steiner", p + "St/CGAL", p + "CPU s",
                  p + "x CGAL", p + "MB", p + "valid"]
-    head.insert(len(head) - 9 * len(labels), "CGAL alone")
+    head.insert(len(head) - 10 * len(labels), "CGAL alone")
     if len(labels) == 2:
         head += ["angle new/base", "Steiner new/base", "CPU new/base"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
@@ -548,9 +571,9 @@ def pair_table(rows, mode, labels):
         for label in labels:
             x = r["runs"][mode][label]
             if not x["valid"]:
-                cells += ["-"] * 8 + ["**no**: %s" % x.get("error", "report not valid")]
+                cells += ["-"] * 9 + ["**no**: %s" % x.get("error", "report not valid")]
                 continue
-            cells += [angle(x["min_angle_deg"]), num(x.get("to_T")),
+            cells += [angle(x["min_angle_deg"]), num(x.get("to_T")), angle(x.get("map_cap_deg")),
                       " / ".join("%.0f" % s for s in x["under20_pct"]), str(x["steiner"]),
                       num(x.get("steiner_to_cgal"), "%.1f"), num(x["cpu_s"], "%.3g"),
                       num(x.get("cpu_to_cgal"), "%.0f"), num(x["rss_mb"], "%.0f"), "yes"]
@@ -563,15 +586,17 @@ def pair_table(rows, mode, labels):
 
 def summary_lines(summaries):
     aims = ["min(%g,c/%g)" % a for a in AIMS]
-    lines = ["| build | mode | pairs | invalid | median angle | median /T | min /T | >= 0.3 T | >= 0.55 T | " +
+    lines = ["| build | mode | pairs | invalid | median angle | median /T | min /T | median map cap /T | "
+             "median angle / map cap | >= 0.3 T | >= 0.55 T | " +
              " | ".join(">= " + a.replace(",", ", ") for a in aims) + " | "
              "median Steiner | median St/CGAL | median CPU s | median x CGAL | median <20 % |",
-             "|" + "---|" * (14 + len(aims))]
+             "|" + "---|" * (16 + len(aims))]
     for s in summaries:
         valid = s["pairs"] - s["invalid"]
-        lines.append("| %s | %s: %s | %d | %d | %s | %s | %s | %d of %d | %d of %d | %s | %s | %s | %s | %s | %s |" % (
+        lines.append("| %s | %s: %s | %d | %d | %s | %s | %s | %s | %s | %d of %d | %d of %d | %s | %s | %s | %s | %s | %s |" % (
             s["build"], s["mode"], dict(GROUPS)[s["group"]], s["pairs"], s["invalid"],
             angle(s["median_angle"]), num(s["median_to_T"]), num(s["min_to_T"]),
+            num(s["median_map_cap_to_T"]), num(s["median_angle_to_map_cap"], "%.3f"),
             s["at_least_0.3T"], valid, s["at_least_0.55T"], valid,
             " | ".join("%d of %d" % (s["at_" + a], valid) for a in aims), num(s["median_steiner"], "%.0f"),
             num(s["median_steiner_to_cgal"], "%.1f"), num(s["median_cpu_s"], "%.3g"),

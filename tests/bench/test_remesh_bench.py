@@ -111,6 +111,9 @@ def test_tiny_pairs_against_themselves(tmp_path):
             assert x["min_angle_deg"] <= r["edge"] * (1 + 1e-9)
             assert 0 < x["min_angle_deg"] <= 60 and x["to_T"] == pytest.approx(x["min_angle_deg"] / r["T_index"])
             assert len(x["under20_pct"]) == 2 and x["cpu_s"] > 0 and x["rss_mb"] > 0
+            # no triangle is better than its own map allows
+            assert x["min_angle_deg"] <= x["map_cap_deg"] * (1 + 1e-9) and x["map_cap_deg"] <= 60
+            assert x["angle_to_map_cap"] == pytest.approx(x["min_angle_deg"] / x["map_cap_deg"])
         # the same deterministic build on both sides
         assert r["versus"]["index"]["angle"] == 1 and r["versus"]["index"]["steiner"] in (1, None)
     text = out.read_text()
