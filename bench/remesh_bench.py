@@ -94,12 +94,11 @@ import sys
 import tempfile
 import time
 
-import meshio
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stl_sections  # noqa: E402
-from map_caps import map_caps  # noqa: E402
+from map_caps import output_caps  # noqa: E402
 from make_results import corner_angles, fmt_angle, read_xy  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -417,22 +416,13 @@ def run_compatmesh(cli, pair, mode, workdir, timeout, extra=()):
         result["error"] = "timed out" if code is None else (err.strip().splitlines() or ["?"])[-1]
         return result
     report = json.load(open(report_path))
-    caps = output_map_caps([m["output"] for m in report["meshes"]])
+    caps = float(output_caps([m["output"] for m in report["meshes"]])[2].min())
     shutil.rmtree(out, ignore_errors=True)
     result.update(map_cap_deg=caps,valid=bool(report.get("valid", False)), steiner=report["steiner"],
                   boundary=report["n"],
                   min_angle_deg=min(m["min_angle_deg"] for m in report["meshes"]),
                   under20_pct=[m["pct_triangles_below_20deg"] for m in report["meshes"]])
     return result
-
-
-def output_map_caps(paths):
-    """The least per-triangle map cap over every two of a run's output
-    meshes (degrees)."""
-    meshes = [meshio.read(p) for p in paths]
-    tri = meshes[0].cells_dict["triangle"]
-    return float(min(map_caps(a.points[:, :2], b.points[:, :2], tri).min()
-                     for i, a in enumerate(meshes) for b in meshes[i + 1:]))
 
 
 def run_cgal(cgal, pair, timeout):

@@ -52,3 +52,31 @@ def test_map_caps_bound_both_images():
         first = np.array([[0, 0], [1, 0], [0.5, 0.5 * math.tan(alpha)]])
         second = np.array([[0, 0], [1, 0], [1 + math.cos(2 * alpha), math.sin(2 * alpha)]])
         assert map_caps(first, second, [[0, 1, 2]])[0] == pytest.approx(degrees, abs=1e-9)
+
+
+SCRIPT = os.path.join(os.path.dirname(__file__), "..", "..", "bench", "map_caps.py")
+
+
+def test_command_on_a_compatmesh_output(tmp_path):
+    """On a real output: the least cap is at least the smallest angle, the
+    picture is written, a missing directory is a one-line error."""
+    import json
+    import subprocess
+
+    square = tmp_path / "a.xy"
+    square.write_text("0 0\n1 0\n1 1\n0 1\n0.5 0.9\n")
+    other = tmp_path / "b.xy"
+    other.write_text("0 0\n4 0\n4 1\n0 1\n2 0.5\n")
+    out = tmp_path / "out"
+    subprocess.run([os.environ["COMPATMESH"], "triangulate", str(square), str(other), "-o", str(out)],
+                   check=True, capture_output=True)
+    png = tmp_path / "caps.png"
+    run = subprocess.run([sys.executable, SCRIPT, str(out), "--png", str(png)], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    words = run.stdout.split()
+    least, angle = float(words[2]), float(words[8])
+    report = json.loads((out / "report.json").read_text())
+    assert angle == pytest.approx(min(m["min_angle_deg"] for m in report["meshes"]), abs=1e-3)
+    assert angle <= least * (1 + 1e-6) and png.stat().st_size > 1000
+    bad = subprocess.run([sys.executable, SCRIPT, str(tmp_path / "none")], capture_output=True, text=True)
+    assert bad.returncode != 0 and len(bad.stderr.strip().splitlines()) == 1 and "none" in bad.stderr
