@@ -201,6 +201,8 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
         return set_remesher(args, command, value, error);
     case OPTION_MAX_ITERATIONS:
         return parse_int(command, "max-iterations", value, &args->options.max_iterations, error);
+    case OPTION_RESTARTS:
+        return parse_int(command, "restarts", value, &args->options.restarts, error);
     case OPTION_CORRESPONDENCE:
         return set_correspondence(args, command, value, error);
     case OPTION_PIN:

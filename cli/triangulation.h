@@ -21,6 +21,7 @@ enum {
     OPTION_SMOOTHING,
     OPTION_REMESHER,
     OPTION_MAX_ITERATIONS,
+    OPTION_RESTARTS,
     OPTION_MAX_INPUT_BYTES,
     OPTION_CORRESPONDENCE,
     OPTION_PIN,
@@ -72,6 +73,10 @@ enum {
      "halfway between the inputs, then Algorithm 1"},                         \
     {"max-iterations", OPTION_MAX_ITERATIONS, "N",                            \
      "cap on refinement rounds; default 0: none"},                            \
+    {"restarts", OPTION_RESTARTS, "N",                                        \
+     "where the result ends below 0.7 of its aim, split its\n"                \
+     "most distorted tenth and remesh again, kept if better;\n"               \
+     "default 1, 0: off (on hard pairs half the time)"},                      \
     {"max-input-bytes", OPTION_MAX_INPUT_BYTES, "N",                          \
      "refuse an input file larger than N bytes (default\n"                    \
      "268435456, 256 MiB)"},                                                  \

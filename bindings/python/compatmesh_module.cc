@@ -252,6 +252,7 @@ const std::vector<OptionSetter> &option_setters()
       {"remesher",
        [](cm_options &o, py::handle v, Callbacks &) { o.remesher = enum_from(v, "remesher", remesher_names); }},
       CM_NUMBER_OPTION(max_iterations),
+      CM_NUMBER_OPTION(restarts),
       CM_NUMBER_OPTION(ceiling),
       {"correspondence",
        [](cm_options &o, py::handle v, Callbacks &c) {
@@ -1174,7 +1175,7 @@ options: keyword arguments named like the fields of the C struct cm_options,
     remesh          bool: improve the triangles (default True)
     min_angle_deg   target smallest angle in degrees
     max_steiner     most Steiner vertices the refinement may add (-1: automatic)
-    k_split, area_every, max_iterations   ints, see compatmesh.h
+    k_split, area_every, max_iterations, restarts   ints, see compatmesh.h
     ceiling         bool: compute the certified caps on the smallest angle
                     (stats ceiling_deg ...; the remesher aims no higher);
                     default True, False for the fastest run

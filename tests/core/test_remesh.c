@@ -27,6 +27,7 @@
 #include "remesh/maxmin.h"
 #include "remesh/refine.h"
 #include "remesh/remesh.h"
+#include "remesh/restart.h"
 #include "remesh/smooth.h"
 
 #define DEG (180.0 / CM_PI)
@@ -944,6 +945,86 @@ static void test_map_affine_fixture(void)
 
 /* ---- options and the result ------------------------------------------------------ */
 
+/* Twice the signed area of triangle t of geometry xy. */
+static double twice_area(const double *xy, const int32_t *t)
+{
+    const double *a = xy + 2 * t[0], *b = xy + 2 * t[1], *c = xy + 2 * t[2];
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+/* The restart's start (restart.h) on a remeshed spiral against a disc:
+ * every input vertex kept, each new one the midpoint of an interior edge
+ * in both geometries, two triangles more per new vertex, every triangle
+ * counter-clockwise by the exact predicate, each geometry's area the
+ * same, and the tenth of the triangles with the largest dilatation split.
+ * Then the restart itself (cm_options.restarts): there a pair ending
+ * below 0.7 of its aim gains (12.1 -> 13.1 degrees when written), valid,
+ * within its automatic budget (2 n + 100 more); with max_steiner at the
+ * first result's count there is no room, and the result is that one. */
+static void test_restarts(void)
+{
+    size_t n = 50;
+    double *a = polygon(n), *b = polygon(n);
+    CHECK(rp_spiral(a, (int)n, 1.5) == 0 && rp_disc(b, (int)n) == 0);
+    const double *in[2] = {a, b};
+    cm_result *r[3] = {NULL, NULL, NULL};
+    cm_options o;
+    cm_options_init(&o);
+    o.restarts = 0;
+    CHECK(cm_triangulate_polygons(in, (size_t[]){n, n}, 2, &o, &r[0]) == CM_OK);
+    size_t nv = cm_result_num_vertices(r[0]), nt = cm_result_num_triangles(r[0]);
+    double *xy[2] = {(double *)cm_result_vertices(r[0], 0), (double *)cm_result_vertices(r[0], 1)};
+    cm_mesh mesh = {.k = 2, .nv = nv, .nt = nt, .xy = xy, .tri = (int32_t *)cm_result_triangles(r[0])}, out;
+    CHECK(cm_restart_refine(&mesh, 0.1, &out) == CM_OK);
+    size_t added = out.nv - nv;
+    CHECK_MSG(added > 0 && out.nt == nt + 2 * added, "restart split: %zu points, %zu -> %zu triangles", added, nt,
+              out.nt);
+    for (size_t g = 0; g < 2; g++) {
+        CHECK(memcmp(out.xy[g], xy[g], 2 * nv * sizeof(double)) == 0);
+        double before = 0, after = 0;
+        for (size_t t = 0; t < nt; t++) before += twice_area(xy[g], mesh.tri + 3 * t);
+        for (size_t t = 0; t < out.nt; t++) {
+            const int32_t *v = out.tri + 3 * t;
+            after += twice_area(out.xy[g], v);
+            CHECK(cm_orient2d(out.xy[g] + 2 * v[0], out.xy[g] + 2 * v[1], out.xy[g] + 2 * v[2]) > 0);
+        }
+        CHECK_MSG(fabs(after - before) <= 1e-12 * before, "geometry %zu: area %.17g -> %.17g", g, before, after);
+    }
+    for (size_t v = nv; v < out.nv; v++) { /* on an edge of the input shared by two triangles */
+        int sides = 0;
+        for (size_t t = 0; t < nt; t++)
+            for (int i = 0; i < 3; i++) {
+                int32_t p = mesh.tri[3 * t + i], q = mesh.tri[3 * t + (i + 1) % 3];
+                int mid = 1;
+                for (size_t g = 0; g < 2; g++)
+                    mid &= out.xy[g][2 * v] == 0.5 * (xy[g][2 * p] + xy[g][2 * q]) &&
+                           out.xy[g][2 * v + 1] == 0.5 * (xy[g][2 * p + 1] + xy[g][2 * q + 1]);
+                sides += mid;
+            }
+        CHECK_MSG(sides == 2, "new vertex %zu: the midpoint of %d triangles' edges", v, sides);
+    }
+    free(out.xy[0]), free(out.xy[1]), free(out.xy), free(out.tri);
+
+    cm_options_init(&o); /* the default: one restart */
+    CHECK(cm_triangulate_polygons(in, (size_t[]){n, n}, 2, &o, &r[1]) == CM_OK && rc_valid(r[1], in, 2, n));
+    o.max_steiner = (long)cm_result_stats(r[0])->steiner;
+    CHECK(cm_triangulate_polygons(in, (size_t[]){n, n}, 2, &o, &r[2]) == CM_OK && rc_valid(r[2], in, 2, n));
+    double least[3];
+    for (int i = 0; i < 3; i++) {
+        cm_quality q0, q1;
+        cm_result_quality(r[i], 0, &q0), cm_result_quality(r[i], 1, &q1);
+        least[i] = fmin(q0.min_angle_deg, q1.min_angle_deg);
+    }
+    size_t s0 = cm_result_stats(r[0])->steiner, s1 = cm_result_stats(r[1])->steiner;
+    CHECK_MSG(least[1] > least[0] && s1 <= s0 + 2 * n + 100, "restart: %.2f -> %.2f degrees, %zu -> %zu Steiner",
+              least[0], least[1], s0, s1);
+    CHECK_MSG(least[2] == least[0] && cm_result_stats(r[2])->steiner == s0, "restart without room: %.2f, %zu",
+              least[2], cm_result_stats(r[2])->steiner);
+    printf("restart: spiral / disc n=%zu %.2f -> %.2f degrees, Steiner %zu -> %zu\n", n, least[0], least[1], s0, s1);
+    for (int i = 0; i < 3; i++) cm_result_free(r[i]);
+    free(a), free(b);
+}
+
 static void test_options(void)
 {
     size_t n = 20;
@@ -952,8 +1033,8 @@ static void test_options(void)
     const double *in[2] = {a, b};
     struct { const char *what; void (*set)(cm_options *); } bad[] = {
         {"k_split", NULL}, {"min_angle_deg", NULL}, {"min_angle_deg", NULL}, {"max_steiner", NULL},
-        {"area_every", NULL}, {"max_iterations", NULL}, {"smoothing", NULL}};
-    for (int i = 0; i < 7; i++) {
+        {"area_every", NULL}, {"max_iterations", NULL}, {"smoothing", NULL}, {"restarts", NULL}};
+    for (int i = 0; i < 8; i++) {
         cm_options o;
         cm_options_init(&o);
         switch (i) {
@@ -963,7 +1044,8 @@ static void test_options(void)
         case 3: o.max_steiner = -2; break;
         case 4: o.area_every = -3; break;
         case 5: o.max_iterations = -1; break;
-        default: o.smoothing = (cm_smoothing)9; break;
+        case 6: o.smoothing = (cm_smoothing)9; break;
+        default: o.restarts = -1; break;
         }
         cm_result *r = NULL;
         cm_status s = cm_triangulate_polygons(in, (size_t[]){n, n}, 2, &o, &r);
@@ -975,7 +1057,7 @@ static void test_options(void)
     cm_options o;
     cm_options_init(&o);
     CHECK(o.remesh == 1 && o.min_angle_deg == 25 && o.max_steiner == -1 && o.k_split == 0 &&
-          o.area_every == 0 && o.smoothing == CM_SMOOTH_COMBINED && o.max_iterations == 0);
+          o.area_every == 0 && o.smoothing == CM_SMOOTH_COMBINED && o.max_iterations == 0 && o.restarts == 1);
 
     /* remesh off: the construction itself, quality before == after */
     o.remesh = 0;
@@ -1407,6 +1489,7 @@ static void test_star_scan(int pairs)
 
 int main(void)
 {
+    test_restarts();
     test_angle_target(40);
     test_star_scan(40);
     test_min_angle_above(40000);

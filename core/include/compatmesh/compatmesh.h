@@ -191,8 +191,12 @@ typedef struct cm_options {
      * aim, the budget is spent, or the smallest angle stops rising. */
     double min_angle_deg;
     /* Most Steiner vertices the refinement may add (edge splits). -1
-     * (default): automatic, 2 n + 100; 0: no refinement, only flips,
-     * smoothing and Steiner vertex removal. */
+     * (default): automatic, 2 n + 100, and as many again for each restart
+     * (restarts below; the points its split adds counted in them); 0: no
+     * refinement, only flips, smoothing and Steiner vertex removal. A
+     * number set here is shared with the restarts: a restart's split and
+     * refinement add no more than the result's Steiner vertices leave of
+     * it. */
     long max_steiner;
     /* Edges split per refinement round (pairwise non-adjacent, best
      * eq. (5) scores first), >= 0; 0 (default): automatic, about 1 % of
@@ -206,6 +210,14 @@ typedef struct cm_options {
     /* Cap on refinement rounds, >= 0; 0 (default): no cap beyond the
      * other stopping rules. */
     int max_iterations;
+    /* Restarts of the remesher, >= 0, where its result ends below 0.7 of
+     * its aim: the tenth of the triangles whose maps between the polygons
+     * are most distorted is split and the remesher runs again from there;
+     * the result is kept only when its smallest angle is higher. Default 1
+     * (bench/REMESH.md, "Restarts": on the hard bench pairs the smallest
+     * angle up by some 7 %, for about twice the time and vertices); 0:
+     * off. */
+    int restarts;
 
     cm_correspondence correspondence; /* default CM_CORRESPOND_INDEX */
     /* Pins of CM_CORRESPOND_ARCLENGTH: num_pins k-tuples, pins[j * k + g]

@@ -35,6 +35,7 @@ void cm_options_init(cm_options *options)
     options->area_every = 0;
     options->smoothing = CM_SMOOTH_COMBINED;
     options->max_iterations = 0;
+    options->restarts = 1;
     options->ceiling = 1;
     options->remesher = CM_REMESHER_GREEDY;
 }
@@ -52,6 +53,8 @@ static cm_status check_remesh_options(cm_result *r, const cm_options *o)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "area_every must be >= 0, got %d", o->area_every);
     if (o->max_iterations < 0)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "max_iterations must be >= 0, got %d", o->max_iterations);
+    if (o->restarts < 0)
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "restarts must be >= 0, got %d", o->restarts);
     if ((unsigned)o->remesher > (unsigned)CM_REMESHER_MAP)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown remesher %d", (int)o->remesher);
     if ((unsigned)o->smoothing > (unsigned)CM_SMOOTH_COMBINED)

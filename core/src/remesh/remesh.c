@@ -52,7 +52,16 @@
  * follows in which boundary edges split too and the polish slides
  * boundary points along their input edges, as the joint polish does:
  * after the first round, so that it starts from what that round reached
- * (run alone, its different path ended lower on 7 of 88 glyph pairs). */
+ * (run alone, its different path ended lower on 7 of 88 glyph pairs).
+ *
+ * Where the result ends below CM_RESTART_BELOW of its aim, up to
+ * o->restarts restarts follow: the CM_RESTART_SHARE of the triangles whose affine
+ * maps between the geometries are most distorted are split (restart.h),
+ * and the whole run (without the cleanup, which would undo the split)
+ * starts again from there; its result is kept when its smallest angle is
+ * higher. What holds the greedy run is its connectivity's map, not where
+ * its vertices are, and from a denser start in the distorted part it
+ * reaches a less distorted one (bench/REMESH.md). */
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
@@ -68,6 +77,7 @@
 #include "remesh/maprefine.h"
 #include "remesh/polish_moves.h"
 #include "remesh/refine.h"
+#include "remesh/restart.h"
 #include "remesh/smooth.h"
 #include "base/clock.h"
 #include "geom/angle.h"
@@ -103,6 +113,14 @@
 /* A greedy result whose smallest angle ends below this share of its aim
  * is also remeshed by the map-aware remesher. */
 #define CM_RESCUE_SHARE 0.3
+/* The share of the triangles, the most distorted, a restart splits
+ * (bench/REMESH.md, "Restarts from the result split where its map is
+ * most distorted"). */
+#define CM_RESTART_SHARE 0.1
+/* Restarts run where the result's smallest angle is below this share of
+ * the remesher's aim: the pairs near their aim (the bench set's glyphs, the
+ * paper's U and S) gain little there for the time and vertices. */
+#define CM_RESTART_BELOW 0.7
 /* The short triangles a round of forced moves looks at; the wider
  * window where both remeshers ended below CM_RESCUE_SHARE of the aim
  * (a distortion the correspondence forces spreads the worst triangles
@@ -181,6 +199,10 @@ typedef struct remesher {
     double target; /* radians */
     long flips;
     long spent;    /* Steiner vertices added before refine() */
+    /* A restart's run (cm_remesh): no cleanup coarsening, which would
+     * collapse the split start, and a late one that keeps the smallest
+     * angle reached instead of the target. */
+    int restarting;
 } remesher;
 
 /* ---- progress trace (cmake -DCM_REMESH_TRACE=ON; never in a release) ------ */
@@ -883,7 +905,7 @@ static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const do
                                                  (const int32_t *const *)splits->edge, (const double *const *)splits->t))
         return CM_ERR_NO_MEMORY;
     trace(x, "start");
-    long removed = coarsen(x, 0.0);
+    long removed = x->restarting ? 0 : coarsen(x, 0.0);
     if (removed < 0 || improve_everywhere(x)) return stop_status(x);
     rep->collapses += removed;
     trace(x, "cleanup");
@@ -905,7 +927,8 @@ static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const do
  * CM_OK, CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
 static cm_status finish(remesher *x, cm_remesh_report *rep)
 {
-    long late = coarsen(x, x->o->min_angle_deg * CM_PI / 180.0);
+    double keep = x->o->min_angle_deg * CM_PI / 180.0;
+    long late = coarsen(x, x->restarting ? fmin(keep, cm_kmesh_min_angle(&x->km)) : keep);
     if (late < 0 || improve_everywhere(x)) return stop_status(x);
     trace(x, "end");
     rep->collapses += late;
@@ -952,6 +975,65 @@ static cm_status polish_moves(remesher *x, cm_mesh *mesh, size_t n, cm_remesh_bo
     return s == CM_OK ? cm_kmesh_write(km, mesh) : s;
 }
 
+/* The smallest angle of every geometry of mesh (radians). */
+static double mesh_min_angle(const cm_mesh *m)
+{
+    double least = HUGE_VAL;
+    for (size_t g = 0; g < m->k; g++)
+        for (size_t t = 0; t < m->nt; t++) {
+            const int32_t *v = m->tri + 3 * t;
+            least = fmin(least, cm_triangle_min_angle(m->xy[g] + 2 * v[0], m->xy[g] + 2 * v[1], m->xy[g] + 2 * v[2]));
+        }
+    return least;
+}
+
+/* One restart of the finished (written, polished) mesh, whose first nb
+ * vertices are its boundary (whole: no boundary edge is ever split, as
+ * for boundary_caps): the CM_RESTART_SHARE most distorted triangles
+ * split (restart.h), the remesher run again from there with its polish
+ * and polish-scored moves, boundary fixed, and its result kept in mesh
+ * when its smallest angle is higher. 1 kept, 0 not, or -status. */
+static int restart(cm_mesh *mesh, size_t nb, int whole, const cm_options *o, double ceiling_deg,
+                   cm_progress *progress, cm_remesh_report *rep)
+{
+    cm_mesh start;
+    double *bcap = NULL;
+    remesher z = {0};
+    cm_remesh_report again = {0};
+    cm_status s = cm_restart_refine(mesh, CM_RESTART_SHARE, &start);
+    /* The budget (budget_of): the automatic one is the first run's again
+     * for each restart, the split's points counted in it; one the caller
+     * set is shared, the restart's split and refinement adding no more
+     * than the Steiner vertices so far leave of it. It runs only if some
+     * is left. */
+    z.spent = (long)(start.nv - (o->max_steiner < 0 ? mesh->nv : nb));
+    if (s == CM_OK && z.spent >= budget_of(o, nb)) {
+        cm_mesh_clear(&start);
+        return 0;
+    }
+    if (s == CM_OK) s = boundary_caps(&start, nb, whole, progress, &bcap);
+    z.restarting = 1;
+    if (s == CM_OK) s = remesh_run(&z, &start, nb, bcap, o, ceiling_deg, NULL, progress, &again);
+    if (s == CM_OK) s = cm_kmesh_write(&z.km, &start);
+    if (s == CM_OK) s = polish_jointly(&start, nb, NULL, progress);
+    if (s == CM_OK) s = polish_moves(&z, &start, nb, NULL);
+    int kept = s == CM_OK && mesh_min_angle(&start) > mesh_min_angle(mesh);
+    if (s == CM_ERR_INTERNAL) s = CM_OK; /* a start the remesher cannot read: the result stands */
+    if (kept) {
+        cm_mesh_clear(mesh);
+        *mesh = start;
+        start = (cm_mesh){0};
+        rep->iterations += again.iterations, rep->splits += again.splits;
+        rep->split_attempts += again.split_attempts, rep->collapses += again.collapses, rep->flips += again.flips;
+        /* rep->min_angle_deg stays the first run's: the callers' choices
+         * that read it (auto's rescues) are those they made without */
+    }
+    cm_mesh_clear(&start);
+    free(bcap);
+    remesher_free(&z);
+    return s == CM_OK ? kept : -(int)s;
+}
+
 cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, cm_remesh_boundary *splits,
                     cm_progress *progress, cm_remesh_report *rep, cm_error *err)
 {
@@ -986,6 +1068,17 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
     if (s == CM_OK) s = cm_kmesh_write(&x.km, mesh);
     if (s == CM_OK) s = polish_jointly(mesh, (size_t)x.km.nb, splits, progress);
     if (s == CM_OK) s = polish_moves(&x, mesh, n, splits);
+    /* Far below the aim, restarts from the result split where its map is
+     * most distorted (the boundary, and with it the labels just written,
+     * stays as it is; not where points were added to the loops of a
+     * polygon with holes, whose loop offsets are the input's). */
+    int restartable = !mesh->loop_start || (size_t)x.km.nb == n;
+    for (int i = 0; s == CM_OK && restartable && i < o->restarts && mesh_min_angle(mesh) < CM_RESTART_BELOW * x.target;
+         i++) {
+        int r = restart(mesh, (size_t)x.km.nb, !splits, o, ceiling_deg, progress, rep);
+        if (r <= 0) s = (cm_status)-r;
+        if (r <= 0) break;
+    }
     if (s == CM_OK && splits) splits->n = (size_t)x.km.nb;
     remesher_free(&x), remesher_free(&y);
     if (s == CM_ERR_INTERNAL) return cm_fail(err, s, "remesh: the construction is not a triangulated disk");
