@@ -231,8 +231,9 @@ def test_auto_remeshes_another_pairing_where_the_first_ends_short(cm, tmp_path):
     # FreeSerif Italic 'T' against '5', 48 vertices each (cm_gen_pairs --set
     # hard): the similarity choice allows the higher ceiling (15.5 degrees
     # against the conformal pairing's 13.3, the corner-fan cap) and is taken
-    # first, but remeshes to 6.9 degrees, below 0.6 of its aim; the conformal
-    # pairing, remeshed in its place, reaches 13.25.
+    # first, but remeshes to 6.9 degrees (8.1 after the remesher's restart),
+    # below 0.6 of its aim (9.3); the conformal pairing, remeshed in its
+    # place, reaches 13.25.
     a, b = (os.path.join(GLYPH_PAIRS, "FreeSerifItalic_T_5_n48_" + s + ".xy") for s in "ab")
     runs = {}
     for mode, extra in (("first", ["--correspondence", "auto", "--no-remesh"]),
@@ -244,4 +245,4 @@ def test_auto_remeshes_another_pairing_where_the_first_ends_short(cm, tmp_path):
     assert runs["first"]["correspondence_choice"] == "similarity"
     assert runs["auto"]["correspondence_choice"] == "conformal"
     angle = {m: min(x["min_angle_deg"] for x in runs[m]["meshes"]) for m in ("similarity", "auto")}
-    assert angle["auto"] >= 13.0 > 8.0 > angle["similarity"]
+    assert angle["auto"] >= 13.0 > 0.6 * 15.5 > angle["similarity"]

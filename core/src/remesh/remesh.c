@@ -59,7 +59,7 @@
  * maps between the geometries are most distorted are split (restart.h),
  * and the whole run (without the cleanup, which would undo the split)
  * starts again from there; its result is kept when its smallest angle is
- * higher. What holds the greedy run is its connectivity's map, not where
+ * higher by CM_RESTART_GAIN. What holds the greedy run is its connectivity's map, not where
  * its vertices are, and from a denser start in the distorted part it
  * reaches a less distorted one (bench/REMESH.md). */
 #include <limits.h>
@@ -121,6 +121,9 @@
  * the remesher's aim: the pairs near their aim (the bench set's glyphs, the
  * paper's U and S) gain little there for the time and vertices. */
 #define CM_RESTART_BELOW 0.7
+/* A restart's result is kept when its smallest angle is this much
+ * higher, relatively: its vertices are not bought for a rounding's gain. */
+#define CM_RESTART_GAIN 0.01
 /* The short triangles a round of forced moves looks at; the wider
  * window where both remeshers ended below CM_RESCUE_SHARE of the aim
  * (a distortion the correspondence forces spreads the worst triangles
@@ -992,7 +995,8 @@ static double mesh_min_angle(const cm_mesh *m)
  * for boundary_caps): the CM_RESTART_SHARE most distorted triangles
  * split (restart.h), the remesher run again from there with its polish
  * and polish-scored moves, boundary fixed, and its result kept in mesh
- * when its smallest angle is higher. 1 kept, 0 not, or -status. */
+ * when its smallest angle is higher by CM_RESTART_GAIN. 1 kept, 0 not,
+ * or -status. */
 static int restart(cm_mesh *mesh, size_t nb, int whole, const cm_options *o, double ceiling_deg,
                    cm_progress *progress, cm_remesh_report *rep)
 {
@@ -1017,7 +1021,7 @@ static int restart(cm_mesh *mesh, size_t nb, int whole, const cm_options *o, dou
     if (s == CM_OK) s = cm_kmesh_write(&z.km, &start);
     if (s == CM_OK) s = polish_jointly(&start, nb, NULL, progress);
     if (s == CM_OK) s = polish_moves(&z, &start, nb, NULL);
-    int kept = s == CM_OK && mesh_min_angle(&start) > mesh_min_angle(mesh);
+    int kept = s == CM_OK && mesh_min_angle(&start) > (1 + CM_RESTART_GAIN) * mesh_min_angle(mesh);
     if (s == CM_ERR_INTERNAL) s = CM_OK; /* a start the remesher cannot read: the result stands */
     if (kept) {
         cm_mesh_clear(mesh);
