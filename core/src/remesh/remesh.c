@@ -55,13 +55,14 @@
  * (run alone, its different path ended lower on 7 of 88 glyph pairs).
  *
  * Where the result ends below CM_RESTART_BELOW of its aim, up to
- * o->restarts restarts follow: the CM_RESTART_SHARE of the triangles whose affine
- * maps between the geometries are most distorted are split (restart.h),
- * and the whole run (without the cleanup, which would undo the split)
- * starts again from there; its result is kept when its smallest angle is
- * higher by CM_RESTART_GAIN. What holds the greedy run is its connectivity's map, not where
- * its vertices are, and from a denser start in the distorted part it
- * reaches a less distorted one (bench/REMESH.md). */
+ * o->restarts restarts follow: the CM_RESTART_SHARE of the triangles
+ * whose affine maps between the geometries are most distorted are split
+ * (restart.h), and the whole run (without the cleanup, which would undo
+ * the split) starts again from there; its result is kept when its
+ * smallest angle is higher by CM_RESTART_GAIN. What holds the greedy run
+ * is its connectivity's map, not where its vertices are, and from a
+ * denser start in the distorted part it reaches a less distorted one
+ * (bench/REMESH.md). */
 #include <limits.h>
 #include <math.h>
 #include <stdlib.h>
@@ -1080,7 +1081,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
     for (int i = 0; s == CM_OK && restartable && i < o->restarts && mesh_min_angle(mesh) < CM_RESTART_BELOW * x.target;
          i++) {
         int r = restart(mesh, (size_t)x.km.nb, !splits, o, ceiling_deg, progress, rep);
-        if (r <= 0) s = (cm_status)-r;
+        if (r < 0) s = (cm_status)-r;
         if (r <= 0) break;
     }
     if (s == CM_OK && splits) splits->n = (size_t)x.km.nb;
