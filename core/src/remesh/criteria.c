@@ -316,6 +316,12 @@ static int segment_may_meet(const near_region *r, const frame *f, const double *
     return 1;
 }
 
+/* Triangles a near-vertex walk reads at most: on a construction of long
+ * slivers (a star's fan) every walk would cross the whole mesh, n^2 in
+ * all (100 s for two 100,000-vertex stars); a walk cut short only leaves
+ * the cap higher. */
+#define CM_NEAR_WALK_LIMIT 4096
+
 /* Edge i's cap lowered by the vertices near it, given its isosceles cap
  * (unscaled). The vertices looked at are the corners of the triangles
  * that meet R, reached from edge i's triangle across edges that meet it:
@@ -338,7 +344,7 @@ static double near_vertex_cap(const cm_mesh *mesh, walk_mesh *w, const double *x
     double best = HUGE_VAL;
     int void_a = 0, void_b = 0;
     if (walk_begin(w, w->edge_tri[i], mesh->nt)) return -1;
-    while (w->stack.n > 0) {
+    for (long read = 0; w->stack.n > 0 && read < CM_NEAR_WALK_LIMIT; read++) {
         int32_t t = w->stack.a[--w->stack.n];
         for (int c = 0; c < 3; c++) {
             int32_t v = w->tri[3 * t + c];

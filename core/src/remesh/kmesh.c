@@ -357,6 +357,14 @@ double cm_kmesh_min_slack(const cm_kmesh *km)
     return t < 0 ? CM_PI : km->slack[t];
 }
 
+double cm_kmesh_min_share(const cm_kmesh *km)
+{
+    double least = HUGE_VAL;
+    for (int32_t t = 0; t < km->nt; t++)
+        if (cm_kmesh_tri_live(km, t)) least = fmin(least, km->tkey[t] / triangle_target(km, t));
+    return least;
+}
+
 /* ---- construction ------------------------------------------------------- */
 
 typedef struct { int32_t lo, hi, corner; } edge_key;

@@ -218,6 +218,10 @@ int cm_kmesh_corners_near(const cm_kmesh *km, int32_t t, int32_t out[12]);
 
 /* Smallest slack over live triangles (radians), pi when empty. */
 double cm_kmesh_min_slack(const cm_kmesh *km);
+/* Smallest share of its own target a live triangle's key reaches (the
+ * target after the boundary's caps: a triangle at a sharp corner is held
+ * to what the corner allows); O(t). */
+double cm_kmesh_min_share(const cm_kmesh *km);
 /* Smallest angle over all triangles and geometries (radians); O(t). */
 double cm_kmesh_min_angle(const cm_kmesh *km);
 /* Sets the target angle (radians) and the caps: a triangle on boundary

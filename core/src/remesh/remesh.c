@@ -118,9 +118,10 @@
  * (bench/REMESH.md, "Restarts from the result split where its map is
  * most distorted"). */
 #define CM_RESTART_SHARE 0.1
-/* Restarts run where the result's smallest angle is below this share of
- * the remesher's aim: the pairs near their aim (the bench set's glyphs, the
- * paper's U and S) gain little there for the time and vertices. */
+/* Restarts run where a triangle ends below this share of its own aim
+ * (cm_kmesh_min_share): the pairs near their aims (the bench set's glyphs,
+ * the paper's U and S, stars held by their sharp corners) gain little
+ * there for the time and vertices. */
 #define CM_RESTART_BELOW 0.7
 /* A restart's result is kept when its smallest angle is this much
  * higher, relatively: its vertices are not bought for a rounding's gain. */
@@ -1078,7 +1079,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
      * stays as it is; not where points were added to the loops of a
      * polygon with holes, whose loop offsets are the input's). */
     int restartable = !mesh->loop_start || (size_t)x.km.nb == n;
-    for (int i = 0; s == CM_OK && restartable && i < o->restarts && mesh_min_angle(mesh) < CM_RESTART_BELOW * x.target;
+    for (int i = 0; s == CM_OK && restartable && i < o->restarts && cm_kmesh_min_share(&x.km) < CM_RESTART_BELOW;
          i++) {
         int r = restart(mesh, (size_t)x.km.nb, !splits, o, ceiling_deg, progress, rep);
         if (r < 0) s = (cm_status)-r;
