@@ -74,7 +74,7 @@ enum {
     {"max-iterations", OPTION_MAX_ITERATIONS, "N",                            \
      "cap on refinement rounds; default 0: none"},                            \
     {"restarts", OPTION_RESTARTS, "N",                                        \
-     "where the result ends below 0.7 of its aim, split its\n"                \
+     "where the result ends below 0.85 of its aim, split its\n"               \
      "most distorted tenth and remesh again, kept if better;\n"               \
      "default 1, 0: off (on hard pairs half the time)"},                      \
     {"max-input-bytes", OPTION_MAX_INPUT_BYTES, "N",                          \

@@ -11,7 +11,8 @@
  * and auto halve it compatibly (an 8 x 1 rectangle: 4 pieces per long
  * side), index keeps it; the construction joins no two boundary vertices
  * on one input edge. cm_stats.correspondence_choice names the
- * correspondence every path made. */
+ * correspondence every path made. Auto's pairing does not hang on the
+ * restarts (the rescues compare pairings without them). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -614,6 +615,39 @@ static void test_no_diagonal_along_an_input_edge(void)
     }
 }
 
+/* Auto's rescues compare the pairings as remeshed without restarts, and
+ * the pairing kept is then restarted: a spiral against a disc ends far
+ * below its aim, so the rescues run, and the correspondence auto makes is
+ * the same with and without restarts (every boundary vertex bit-identical
+ * in both polygons), the restarted result at least as good and valid. */
+static void test_rescues_before_restarts(void)
+{
+    enum { N = 40 };
+    double a[2 * N], b[2 * N];
+    CHECK(rp_spiral(a, N, 2.5) == 0 && rp_disc(b, N) == 0);
+    const double *in[2] = {a, b};
+    size_t counts[2] = {N, N};
+    cm_result *r[2] = {NULL, NULL};
+    for (int i = 0; i < 2; i++) {
+        cm_options o;
+        cm_options_init(&o);
+        o.correspondence = CM_CORRESPOND_AUTO, o.restarts = i;
+        CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r[i]) == CM_OK, "restarts %d: %s", i,
+                  cm_result_message(r[i]));
+    }
+    size_t n = cm_result_stats(r[0])->n;
+    double least[2] = {rc_least_angle(r[0], 2), rc_least_angle(r[1], 2)};
+    CHECK_MSG(least[0] < 0.6 * cm_result_stats(r[0])->remesh_aim_deg, "no rescue: %.2f of %.2f degrees", least[0],
+              cm_result_stats(r[0])->remesh_aim_deg);
+    CHECK(cm_result_stats(r[1])->n == n && contract_holds(r[1], in, counts, 2));
+    for (size_t g = 0; g < 2; g++)
+        CHECK_MSG(memcmp(cm_result_vertices(r[0], g), cm_result_vertices(r[1], g), 2 * n * sizeof(double)) == 0,
+                  "polygon %zu: the boundary differs with restarts", g);
+    CHECK_MSG(least[1] >= least[0], "restarted %.2f < %.2f degrees", least[1], least[0]);
+    printf("rescues before restarts: spiral / disc n=%d, %.2f -> %.2f degrees\n", N, least[0], least[1]);
+    cm_result_free(r[0]), cm_result_free(r[1]);
+}
+
 int main(void)
 {
     test_different_counts();
@@ -630,5 +664,6 @@ int main(void)
     test_capped_edges_split();
     test_slide_keeps_max_edge();
     test_no_diagonal_along_an_input_edge();
+    test_rescues_before_restarts();
     return check_summary("test_correspondence");
 }

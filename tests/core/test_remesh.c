@@ -958,7 +958,7 @@ static double twice_area(const double *xy, const int32_t *t)
  * counter-clockwise by the exact predicate, each geometry's area the
  * same, and the tenth of the triangles with the largest dilatation split.
  * Then the restart itself (cm_options.restarts): there a pair ending
- * below 0.7 of its aim gains (12.1 -> 13.1 degrees when written), valid,
+ * below 0.85 of its aim gains (12.1 -> 13.1 degrees when written), valid,
  * within its automatic budget (2 n + 100 more); with max_steiner at the
  * first result's count there is no room, and the result is that one. */
 static void test_restarts(void)

@@ -210,10 +210,10 @@ typedef struct cm_options {
     /* Cap on refinement rounds, >= 0; 0 (default): no cap beyond the
      * other stopping rules. */
     int max_iterations;
-    /* Restarts of the remesher, >= 0, where its result ends below 0.7 of
+    /* Restarts of the remesher, >= 0, where its result ends below 0.85 of
      * its aim: the tenth of the triangles whose maps between the polygons
      * are most distorted is split and the remesher runs again from there;
-     * the result is kept only when its smallest angle is 1 % higher. Default 1
+     * the result is kept only when its smallest angle is 2 % higher. Default 1
      * (bench/REMESH.md, "Restarts": on the hard bench pairs the smallest
      * angle up by some 7 %, for about twice the time and vertices); 0:
      * off. */

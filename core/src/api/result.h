@@ -29,6 +29,12 @@ struct cm_result {
      * second pairings are tried on it, so whether they run does not hang
      * on the polish. */
     double greedy_angle_deg;
+    /* The smallest angle after the polish, before the restarts, and
+     * whether the restarts would start from that result: auto's pairings
+     * are compared on the first and the one kept restarted when the
+     * second says so. */
+    double polished_angle_deg;
+    int restart_wanted;
     /* The caps and the conformal correspondence already computed in this
      * call (shared by a second pairing's result, owned by the call), or
      * NULL. */

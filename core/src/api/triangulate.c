@@ -211,6 +211,7 @@ static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o, cm_re
     r->stats.remesh_iterations = report.iterations;
     r->stats.remesh_aim_deg = report.target_deg;
     r->greedy_angle_deg = report.min_angle_deg;
+    r->polished_angle_deg = report.polished_deg, r->restart_wanted = report.restart_wanted;
     return s;
 }
 
@@ -766,18 +767,6 @@ static cm_result *new_result(cm_result **result, const cm_options **options, cm_
     return r;
 }
 
-/* The smallest angle of a result over its k meshes (degrees). */
-static double least_angle(const cm_result *r, size_t k)
-{
-    double least = 180;
-    for (size_t g = 0; g < k; g++) {
-        cm_quality q;
-        cm_result_quality(r, g, &q);
-        least = fmin(least, q.min_angle_deg);
-    }
-    return least;
-}
-
 /* Auto's pairing may end far below the remesher's aim, where another
  * pairing does better (the rescues below); 0.6: below 15 degrees at the
  * default aim of 25. */
@@ -803,26 +792,57 @@ static cm_result *rescue_result(const cm_result *r, const cm_options *o)
     return again;
 }
 
-/* *result becomes the better of itself and again, whose run ended with
- * status s (the better: the larger smallest angle; the times of both runs
- * summed); the other is freed. CM_OK, or CM_ERR_CANCELLED when the second
- * run was cancelled (a second run that failed otherwise, out of memory
- * included, leaves *result as it was). */
-static cm_status keep_better(cm_result **result, cm_result *again, cm_status s, size_t k)
+/* The stage times of `other`'s run added to kept's. */
+static void add_times(cm_result *kept, const cm_result *other)
 {
-    cm_result *r = *result;
+    kept->stats.seconds_validate += other->stats.seconds_validate;
+    kept->stats.seconds_build += other->stats.seconds_build, kept->stats.seconds_check += other->stats.seconds_check;
+    kept->stats.seconds_remesh += other->stats.seconds_remesh;
+    kept->stats.seconds_ceiling += other->stats.seconds_ceiling;
+}
+
+/* *result becomes `again` (a run that ended with status s) when `take`
+ * says so and s is CM_OK; the times of both runs summed, the other freed.
+ * CM_OK, or CM_ERR_CANCELLED when the second run was cancelled (a second
+ * run that failed otherwise, out of memory included, leaves *result as it
+ * was). */
+static cm_status keep_if(cm_result **result, cm_result *again, cm_status s, int take)
+{
     if (s == CM_ERR_CANCELLED) {
         cm_result_free(again);
-        return cm_fail_status(&r->error, s);
+        return cm_fail_status(&(*result)->error, s);
     }
-    if (s == CM_OK && least_angle(again, k) > least_angle(r, k)) *result = again, again = r;
-    cm_result *kept = *result;
-    kept->stats.seconds_validate += again->stats.seconds_validate;
-    kept->stats.seconds_build += again->stats.seconds_build, kept->stats.seconds_check += again->stats.seconds_check;
-    kept->stats.seconds_remesh += again->stats.seconds_remesh;
-    kept->stats.seconds_ceiling += again->stats.seconds_ceiling;
+    if (s == CM_OK && take) {
+        cm_result *t = *result;
+        *result = again, again = t;
+    }
+    add_times(*result, again);
     cm_result_free(again);
     return CM_OK;
+}
+
+/* Is again, a rescue's run remeshed without restarts that ended with
+ * status s, better than r: a larger smallest angle before any restart, so
+ * that r's restarts do not count against it? */
+static int better(const cm_result *again, cm_status s, const cm_result *r)
+{
+    return s == CM_OK && again->polished_angle_deg > r->polished_angle_deg;
+}
+
+/* Auto's rescues run without restarts: a restart costs about as much as
+ * the run it starts from and is only wanted on the pairing kept. */
+static cm_options without_restarts(const cm_options *o)
+{
+    cm_options once = *o;
+    once.restarts = 0;
+    return once;
+}
+
+/* Is *result a rescue's run (rescued) that the restarts asked of o
+ * would start from? Then it is run again with them. */
+static int restart_wanted(const cm_result *r, int rescued, const cm_options *o)
+{
+    return rescued && o->restarts > 0 && r->restart_wanted;
 }
 
 /* The rescues' other tempering powers (conformal.h): nearer the conformal
@@ -861,6 +881,8 @@ static cm_status pairing_rescue(cm_result **result, const double *const *polygon
                   {{PAIRING_CONFORMAL, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_SIMILARITY, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 0, CM_RESCUE_POWER_LESS}, CM_PAIRING_RESCUE_SHARE}};
+    cm_options once = without_restarts(o);
+    const auto_pairing *kept = NULL; /* the rescue's pairing *result is, if any */
     cm_status s = CM_OK;
     for (size_t i = 0; s == CM_OK && i < sizeof others / sizeof *others; i++) {
         const auto_pairing *p = &others[i].pairing;
@@ -870,8 +892,15 @@ static cm_status pairing_rescue(cm_result **result, const double *const *polygon
             (p->kind == PAIRING_SIMILARITY && first == CM_CHOICE_SIMILARITY))
             continue; /* not wanted, or the first run's */
         cm_result *again = rescue_result(*result, o);
-        if (!again) return CM_OK;
-        s = keep_better(result, again, run_arclength(again, polygons, counts, k, o, NULL, *p), k);
+        if (!again) break;
+        cm_status run = run_arclength(again, polygons, counts, k, &once, NULL, *p);
+        int take = better(again, run, *result);
+        s = keep_if(result, again, run, take);
+        if (take) kept = p;
+    }
+    if (s == CM_OK && restart_wanted(*result, kept != NULL, o)) {
+        cm_result *again = rescue_result(*result, o);
+        if (again) s = keep_if(result, again, run_arclength(again, polygons, counts, k, o, NULL, *kept), 1);
     }
     return s;
 }
@@ -1346,8 +1375,15 @@ static cm_status outer_rescue(cm_result **result, const cm_loops *polygons, size
     if ((*result)->stats.correspondence_choice != CM_CHOICE_CONFORMAL ||
         !rescue_wanted(*result, o, CM_PAIRING_RESCUE_SHARE))
         return CM_OK;
+    cm_options once = without_restarts(o);
     cm_result *again = rescue_result(*result, o);
-    return again ? keep_better(result, again, run_loops_arclength(again, polygons, k, o, LOOP_BY_START), k) : CM_OK;
+    if (!again) return CM_OK;
+    cm_status run = run_loops_arclength(again, polygons, k, &once, LOOP_BY_START);
+    int take = better(again, run, *result);
+    cm_status s = keep_if(result, again, run, take);
+    if (s == CM_OK && restart_wanted(*result, take, o) && (again = rescue_result(*result, o)))
+        s = keep_if(result, again, run_loops_arclength(again, polygons, k, o, LOOP_BY_START), 1);
+    return s;
 }
 
 cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_options *options,

@@ -16,6 +16,9 @@ typedef struct cm_remesh_report {
     double target_deg;    /* the lowest triangle target after the boundary caps */
     double min_angle_deg; /* smallest angle, all geometries, before the final
                              joint polish (the caller measures the result) */
+    double polished_deg;  /* smallest angle after the polish, before any restart */
+    int restart_wanted;   /* the result is one the restarts would start from
+                             (far below its aim), whether or not they ran */
 } cm_remesh_report;
 
 /* Boundary splits: the remesher may split boundary edges (refinement
