@@ -1,6 +1,6 @@
 /* cm_gen_pairs: writes the demo and benchmark polygon pairs as .xy files.
  *
- *   cm_gen_pairs --out DIR [--set demo|bench|hard|scale] [--font PATH]
+ *   cm_gen_pairs --out DIR [--set demo|bench|hard|other|scale] [--font PATH]
  *
  * Each polygon goes to DIR/NAME_a.xy, DIR/NAME_b.xy (and NAME_c.xy for a
  * triple), one "x y" line per vertex, counter-clockwise, vertices in
@@ -19,6 +19,8 @@
  * n = 48 and 160, letters drawn with a fixed seed. Its names say the half:
  * tune_* (two fonts, for tuning) and hold_* (the other fonts and random
  * simple polygons against discs and stars, held out).
+ * The other set (other_*) is made the same way from six fonts the hard set
+ * does not use, with another seed: pairs no setting was tuned on.
  * The scale set measures the partition's growth: two unrelated random
  * polygons and a random polygon against a disc at n = 1,000 to 30,000
  * (the random simple polygon generator's untangling takes minutes beyond)
@@ -514,6 +516,16 @@ static const hard_font hard_fonts[] = {
     {"truetype/liberation/LiberationSerif-Regular.ttf", "LiberationSerif", "hold", 4},
     {"truetype/noto/NotoSans-Regular.ttf", "NotoSans", "hold", 4},
 };
+/* The other set's fonts: none of the hard set's. */
+#define OTHER_SEED 20261129u
+static const hard_font other_fonts[] = {
+    {"opentype/urw-base35/URWGothic-Book.otf", "URWGothic", "other", 5},
+    {"opentype/urw-base35/NimbusRoman-Italic.otf", "NimbusRomanItalic", "other", 5},
+    {"truetype/dejavu/DejaVuSans-Bold.ttf", "DejaVuSansBold", "other", 5},
+    {"opentype/urw-base35/NimbusSansNarrow-Regular.otf", "NimbusSansNarrow", "other", 5},
+    {"truetype/freefont/FreeSans.ttf", "FreeSans", "other", 5},
+    {"truetype/liberation/LiberationSans-Bold.ttf", "LiberationSansBold", "other", 5},
+};
 static const int hard_n[] = {48, 160};
 /* Letters and digits that have one contour in most fonts; a font's own
  * glyph is used only when it has exactly one. */
@@ -603,6 +615,13 @@ static void hard_shape_pair(writer *w, const char *other, int n, uint64_t seed)
     polys_free(&p);
 }
 
+static void other_set(writer *w)
+{
+    rp_rng rng = {OTHER_SEED};
+    for (int f = 0; f < COUNT(other_fonts); f++)
+        hard_font_pairs(w, &other_fonts[f], &rng);
+}
+
 static void hard_set(writer *w)
 {
     rp_rng rng = {HARD_SEED};
@@ -619,7 +638,7 @@ static void hard_set(writer *w)
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: cm_gen_pairs --out DIR [--set demo|bench|hard|scale] [--font PATH]\n");
+    fprintf(stderr, "usage: cm_gen_pairs --out DIR [--set demo|bench|hard|other|scale] [--font PATH]\n");
     return 2;
 }
 
@@ -660,7 +679,8 @@ int main(int argc, char **argv)
             return usage();
     }
     int demo = strcmp(set, "demo") == 0, hard = strcmp(set, "hard") == 0, scale = strcmp(set, "scale") == 0;
-    if (!out || (!demo && !hard && !scale && strcmp(set, "bench") != 0))
+    int other = strcmp(set, "other") == 0;
+    if (!out || (!demo && !hard && !other && !scale && strcmp(set, "bench") != 0))
         return usage();
 
     FT_Library lib;
@@ -679,6 +699,8 @@ int main(int argc, char **argv)
         demo_set(&w);
     else if (hard)
         hard_set(&w);
+    else if (other)
+        other_set(&w);
     else if (scale)
         scale_set(&w);
     else

@@ -5,7 +5,7 @@ usage: remesh_bench.py --compatmesh BIN [--baseline BIN] [--quick] [--no-bound]
                        [--no-cgal] [--modes index,auto] [--only REGEX]
                        [--out bench/REMESH.md] [--json FILE] [--bound-cache FILE]
                        [--bound-jobs N] [--gen-pairs BIN] [--cgal BIN]
-                       [--timeout SECONDS]
+                       [--timeout SECONDS] [--other]
 
 The pairs: the hard family (`cm_gen_pairs --set hard`: single-contour glyphs
 of different letters from fonts other than the bench's DejaVu Sans, each
@@ -14,11 +14,15 @@ vertex i of one corresponds to vertex i of the other by arc length; plus
 random simple polygons against discs and stars; and planar sections of
 Gmsh's STL models, bench/stl_sections.py), split into a tuning half
 (`tune_*`, two fonts) and a held-out half (`hold_*`), next to the existing
-bench set (`cm_gen_pairs --set bench`). `--quick` takes a fixed subset of 32
-pairs; `--only` keeps the pairs whose name matches a regular expression.
+bench set (`cm_gen_pairs --set bench`). `--other` adds the other fonts
+(`cm_gen_pairs --set other`, `other_*`: six fonts neither half uses, made
+the same way with another seed), set aside from every setting's tuning and
+summarised on their own, not in "all pairs". `--quick` takes a fixed subset
+of 32 pairs; `--only` keeps the pairs whose name matches a regular
+expression.
 
 Modes: `index` runs each pair as written (the hard family's correspondence
-is then arc length); `auto` (`--correspondence auto`, hard family only) lets
+is then arc length); `auto` (`--correspondence auto`, not the bench set) lets
 compatmesh choose the correspondence. c, fan, bound and T are those of the
 pair as written in both modes: in `auto`, /T above 1 is what the choice of
 correspondence bought. `index` never splits a boundary edge (the paper's
@@ -128,15 +132,17 @@ class Pair:
 
     def __init__(self, name, family, files):
         self.name, self.family, self.files = name, family, files
-        self.half = name.split("_")[0] if family == "hard" else "bench"
+        self.half = name.split("_")[0] if family in ("hard", "other") else "bench"
         self.polygons = [read_xy(f) for f in files]
         self.n = len(self.polygons[0])
 
 
-def generate(gen, workdir):
-    """The hard family and the bench set written by cm_gen_pairs."""
+def generate(gen, workdir, other):
+    """The hard family and the bench set written by cm_gen_pairs, and the
+    other fonts if asked."""
     pairs = []
-    for family, set_name in (("hard", "hard"), ("bench", "bench")):
+    for family in ("hard", "bench") + (("other",) if other else ()):
+        set_name = family
         out = os.path.join(workdir, set_name)
         run = subprocess.run([gen, "--out", out, "--set", set_name], capture_output=True, text=True)
         if run.returncode != 0:
@@ -447,7 +453,7 @@ def measure_pair(pair, builds, modes, cgal, workdir, timeout, flip):
     if flip:
         order.reverse()
     for mode in modes:
-        if mode != "index" and pair.family != "hard":
+        if mode != "index" and pair.family == "bench":
             continue
         record["runs"][mode] = {label: run_compatmesh(cli, pair, mode, workdir, timeout, extra)
                                 for label, (cli, extra) in order}
@@ -522,11 +528,11 @@ def summarize_versus(rows, mode, group):
 
 
 GROUPS = (("tune", "hard family, tuning half"), ("hold", "hard family, held-out half"),
-          ("bench", "bench set"), ("all", "all pairs"))
+          ("bench", "bench set"), ("all", "all pairs"), ("other", "other fonts, set aside"))
 
 
 def in_group(row, group):
-    return group == "all" or row["half"] == group
+    return row["half"] != "other" if group == "all" else row["half"] == group
 
 
 # ---- the report --------------------------------------------------------------
@@ -651,6 +657,7 @@ def parse_args(argv):
     ap.add_argument("--bound-jobs", type=int, default=1,
                     help="bounds computed at once, before the timed runs")
     ap.add_argument("--quick", action="store_true", help="a fixed subset of 32 pairs")
+    ap.add_argument("--other", action="store_true", help="add the other fonts (cm_gen_pairs --set other)")
     ap.add_argument("--only", help="keep the pairs whose name matches this regular expression")
     ap.add_argument("--modes", default="index", help="comma-separated: index, auto")
     ap.add_argument("--out", default=os.path.join(HERE, "REMESH.md"))
@@ -714,7 +721,7 @@ def main(argv):
     load = os.getloadavg()[0]
     work = tempfile.mkdtemp(prefix="remesh_bench_")
     try:
-        pairs = generate(args.gen_pairs, work)
+        pairs = generate(args.gen_pairs, work, args.other)
         if not args.quick:
             hard = sum(p.family == "hard" for p in pairs)
             pairs[hard:hard] = sections(work, args.only)
