@@ -1046,6 +1046,8 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
                     cm_progress *progress, cm_remesh_report *rep, cm_error *err)
 {
     remesher x = {0}, y = {0};
+    cm_options map = *o; /* the rescue's options: x keeps pointing at them when it wins */
+    map.remesher = CM_REMESHER_MAP;
     double *bcap;
     cm_status s = boundary_caps(mesh, n, !splits, progress, &bcap);
     if (s == CM_OK) s = remesh_run(&x, mesh, n, bcap, o, ceiling_deg, splits, progress, rep);
@@ -1054,8 +1056,6 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
      * the sweep's tetrahedra fail); the map-aware remesher starts the
      * same construction differently. The better result is kept. */
     if (s == CM_OK && o->remesher == CM_REMESHER_GREEDY && rep->min_angle_deg < CM_RESCUE_SHARE * rep->target_deg) {
-        cm_options map = *o;
-        map.remesher = CM_REMESHER_MAP;
         cm_remesh_report again = {0};
         s = remesh_run(&y, mesh, n, bcap, &map, ceiling_deg, splits, progress, &again);
         if (s == CM_OK && again.min_angle_deg > rep->min_angle_deg) {
