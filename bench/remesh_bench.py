@@ -137,7 +137,7 @@ class Pair:
         self.n = len(self.polygons[0])
 
 
-def generate(gen, workdir, other):
+def generate(gen, workdir, other=False):
     """The hard family and the bench set written by cm_gen_pairs, and the
     other fonts if asked."""
     pairs = []
