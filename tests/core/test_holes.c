@@ -490,37 +490,47 @@ static void test_auto_hole_starts(void)
  * degrees (smaller of the two meshes); the conformal correspondence of
  * the filled outer loops 19.5. Expected: valid, the outer loops' choice
  * conformal, and the smallest angle of both meshes at least 15 degrees
- * (min(15, c / 3), every corner c of the material 90 degrees or more). */
+ * (min(15, c / 3), every corner c of the material 90 degrees or more).
+ * The remesher adds points to the loops here, and its restart (below 0.85
+ * of the aim of 25 degrees) starts from the loops so refined: with it the
+ * result is valid too and higher (19.4 -> 20.5 degrees when written). */
 static void test_auto_outer_loops_conformal(void)
 {
     shape a = {0}, b = {0};
     hf_ring_and_stem(&a, &b);
     CHECK(a.n == 32 + 12 && b.n == 64 + 12);
-    cm_options o;
-    cm_options_init(&o);
-    o.correspondence = CM_CORRESPOND_AUTO;
     cm_loops in[2] = {loops_of(&a), loops_of(&b)};
-    cm_result *r = NULL;
-    cm_status st = cm_triangulate_loops(in, 2, &o, &r);
-    CHECK_MSG(st == CM_OK, "ring and stem: %s", cm_result_message(r));
-    if (st == CM_OK) {
-        const shape *in_shape[2] = {&a, &b};
-        size_t sizes[HF_MAX_LOOPS], added;
-        int contract = holes_boundary_contract(r, in_shape, sizes, &added);
-        CHECK_MSG(contract, "ring and stem: the boundary contract");
-        if (contract) {
-            cm_loops refined[2] = {{cm_result_vertices(r, 0), sizes, 2}, {cm_result_vertices(r, 1), sizes, 2}};
-            char why[256] = "";
-            CHECK_MSG(rc_check_loops(r, refined, 2, why, sizeof why), "ring and stem: %s", why);
-            CHECK_MSG(rc_check_halfedges_holes(r, cm_result_stats(r)->n, 1, why, sizeof why), "ring and stem: %s", why);
+    double least[2] = {0, 0};
+    for (int restarts = 0; restarts < 2; restarts++) {
+        cm_options o;
+        cm_options_init(&o);
+        o.correspondence = CM_CORRESPOND_AUTO, o.restarts = restarts;
+        cm_result *r = NULL;
+        cm_status st = cm_triangulate_loops(in, 2, &o, &r);
+        CHECK_MSG(st == CM_OK, "ring and stem, restarts %d: %s", restarts, cm_result_message(r));
+        if (st == CM_OK) {
+            const shape *in_shape[2] = {&a, &b};
+            size_t sizes[HF_MAX_LOOPS], added;
+            int contract = holes_boundary_contract(r, in_shape, sizes, &added);
+            CHECK_MSG(contract && added > 0, "ring and stem, restarts %d: the boundary contract, %zu points added",
+                      restarts, added);
+            if (contract) {
+                cm_loops refined[2] = {{cm_result_vertices(r, 0), sizes, 2}, {cm_result_vertices(r, 1), sizes, 2}};
+                char why[256] = "";
+                CHECK_MSG(rc_check_loops(r, refined, 2, why, sizeof why), "ring and stem: %s", why);
+                CHECK_MSG(rc_check_halfedges_holes(r, cm_result_stats(r)->n, 1, why, sizeof why), "ring and stem: %s",
+                          why);
+            }
+            CHECK(cm_result_stats(r)->correspondence_choice == CM_CHOICE_CONFORMAL);
+            least[restarts] = rc_least_angle(r, 2);
+            CHECK_MSG(least[restarts] >= 15.0, "ring and stem: smallest angle %.2f, below 15 degrees",
+                      least[restarts]);
+            printf("ring and stem, auto, restarts %d: %zu boundary vertices, Steiner %zu, smallest angle %.1f\n",
+                   restarts, cm_result_stats(r)->n, cm_result_stats(r)->steiner, least[restarts]);
         }
-        CHECK(cm_result_stats(r)->correspondence_choice == CM_CHOICE_CONFORMAL);
-        double least = rc_least_angle(r, 2);
-        CHECK_MSG(least >= 15.0, "ring and stem: smallest angle %.2f, below 15 degrees", least);
-        printf("ring and stem, auto: %zu boundary vertices, Steiner %zu, smallest angle %.1f\n",
-               cm_result_stats(r)->n, cm_result_stats(r)->steiner, least);
+        cm_result_free(r);
     }
-    cm_result_free(r);
+    CHECK_MSG(least[1] > least[0], "ring and stem: the restart %.2f, without %.2f degrees", least[1], least[0]);
 }
 
 /* Do boundary vertices u and w of polygon g (input loops s) lie on one of

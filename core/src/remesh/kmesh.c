@@ -502,6 +502,17 @@ static int32_t *write_order(const cm_kmesh *km)
     return index;
 }
 
+void cm_kmesh_written_loops(const cm_kmesh *km, const size_t *loop_start, size_t num_loops, size_t *out)
+{
+    size_t written = 0, l = 0;
+    for (int32_t i = 0; i < km->n; i++) { /* as write_order numbers them */
+        while (l < num_loops && loop_start[l] == (size_t)i) out[l++] = written;
+        written++;
+        for (int32_t v = km->bnext[i]; v >= km->n; v = km->bnext[v]) written++;
+    }
+    while (l <= num_loops) out[l++] = written;
+}
+
 cm_status cm_kmesh_read_back(cm_kmesh *km, const cm_mesh *m, const int32_t *const *edge, const double *const *t)
 {
     int32_t *index = write_order(km);

@@ -125,6 +125,10 @@ int cm_kmesh_allow_boundary_splits(cm_kmesh *km, cm_kmesh_between between, void 
  * each keeps its index), the Steiner vertices after them in slot order.
  * CM_OK or CM_ERR_NO_MEMORY (m unchanged). */
 cm_status cm_kmesh_write(const cm_kmesh *km, cm_mesh *m);
+/* Where the loops that start at input vertices loop_start[0 ..
+ * num_loops - 1] begin as cm_kmesh_write numbers the boundary (the points
+ * added on their edges counted), and out[num_loops] = km->nb. */
+void cm_kmesh_written_loops(const cm_kmesh *km, const size_t *loop_start, size_t num_loops, size_t *out);
 /* With boundary splits allowed: replaces edge[g] and t[g] (k arrays the
  * caller allocated with malloc) by the labels of the boundary as
  * cm_kmesh_write numbers it, km->nb of them. CM_OK or CM_ERR_NO_MEMORY

@@ -1078,16 +1078,25 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
     if (s == CM_OK) s = polish_moves(&x, mesh, n, splits);
     /* Far below the aim, restarts from the result split where its map is
      * most distorted (the boundary, and with it the labels just written,
-     * stays as it is; not where points were added to the loops of a
-     * polygon with holes, whose loop offsets are the input's). */
+     * stays as it is). Where points were added to the loops of a polygon
+     * with holes, they start from the written loops' offsets; the caller
+     * gets the input's back, as without restarts. */
     if (s == CM_OK) rep->polished_deg = mesh_min_angle(mesh) * 180.0 / CM_PI;
-    rep->restart_wanted = s == CM_OK && (!mesh->loop_start || (size_t)x.km.nb == n) &&
-                          cm_kmesh_min_share(&x.km) < CM_RESTART_BELOW;
+    rep->restart_wanted = s == CM_OK && cm_kmesh_min_share(&x.km) < CM_RESTART_BELOW;
+    const size_t *given = mesh->loop_start;
+    size_t *written = NULL;
+    if (rep->restart_wanted && o->restarts > 0 && given && (size_t)x.km.nb != n) {
+        written = malloc((mesh->num_loops + 1) * sizeof *written);
+        if (!written) s = CM_ERR_NO_MEMORY;
+        else cm_kmesh_written_loops(&x.km, given, mesh->num_loops, written), mesh->loop_start = written;
+    }
     for (int i = 0; s == CM_OK && rep->restart_wanted && i < o->restarts; i++) {
         int r = restart(mesh, (size_t)x.km.nb, !splits, o, ceiling_deg, progress, rep);
         if (r < 0) s = (cm_status)-r;
         if (r <= 0) break;
     }
+    mesh->loop_start = given;
+    free(written);
     if (s == CM_OK && splits) splits->n = (size_t)x.km.nb;
     remesher_free(&x), remesher_free(&y);
     if (s == CM_ERR_INTERNAL) return cm_fail(err, s, "remesh: the construction is not a triangulated disk");
