@@ -498,9 +498,11 @@ static void scale_set(writer *w)
 
 #define HARD_FONT_DIR "/usr/share/fonts/"
 #define HARD_SEED 20261124u
+#define OTHER_SEED 20261129u
 
-/* Font file (under HARD_FONT_DIR), its short name, its half, and how many
- * letter pairs it gives. */
+/* Font file (under HARD_FONT_DIR), its short name, its half (tune, hold:
+ * the hard set; other: the other set), and how many letter pairs it
+ * gives. */
 typedef struct hard_font {
     const char *file, *name, *half;
     int pairs;
@@ -515,10 +517,7 @@ static const hard_font hard_fonts[] = {
     {"opentype/urw-base35/C059-Roman.otf", "C059", "hold", 4},
     {"truetype/liberation/LiberationSerif-Regular.ttf", "LiberationSerif", "hold", 4},
     {"truetype/noto/NotoSans-Regular.ttf", "NotoSans", "hold", 4},
-};
-/* The other set's fonts: none of the hard set's. */
-#define OTHER_SEED 20261129u
-static const hard_font other_fonts[] = {
+    /* the other set: none of the hard set's fonts */
     {"opentype/urw-base35/URWGothic-Book.otf", "URWGothic", "other", 5},
     {"opentype/urw-base35/NimbusRoman-Italic.otf", "NimbusRomanItalic", "other", 5},
     {"truetype/dejavu/DejaVuSans-Bold.ttf", "DejaVuSansBold", "other", 5},
@@ -615,18 +614,20 @@ static void hard_shape_pair(writer *w, const char *other, int n, uint64_t seed)
     polys_free(&p);
 }
 
-static void other_set(writer *w)
+/* The pairs of the fonts of one set (other: the other set's, else the
+ * hard set's), letters drawn from seed. */
+static void font_pairs(writer *w, int other, uint32_t seed)
 {
-    rp_rng rng = {OTHER_SEED};
-    for (int f = 0; f < COUNT(other_fonts); f++)
-        hard_font_pairs(w, &other_fonts[f], &rng);
+    rp_rng rng = {seed};
+    for (int f = 0; f < COUNT(hard_fonts); f++)
+        if ((strcmp(hard_fonts[f].half, "other") == 0) == other) hard_font_pairs(w, &hard_fonts[f], &rng);
 }
+
+static void other_set(writer *w) { font_pairs(w, 1, OTHER_SEED); }
 
 static void hard_set(writer *w)
 {
-    rp_rng rng = {HARD_SEED};
-    for (int f = 0; f < COUNT(hard_fonts); f++)
-        hard_font_pairs(w, &hard_fonts[f], &rng);
+    font_pairs(w, 0, HARD_SEED);
     for (int i = 0; i < COUNT(hard_n); i++)
         for (uint64_t s = 1; s <= 3; s++) {
             hard_shape_pair(w, "disc", hard_n[i], 3000 + s);
