@@ -2,6 +2,26 @@
 
 #include "base/mesh.h"
 
+static int by_edge(const void *a, const void *b)
+{
+    const cm_edge_key *x = a, *y = b;
+    if (x->lo != y->lo) return x->lo < y->lo ? -1 : 1;
+    if (x->hi != y->hi) return x->hi < y->hi ? -1 : 1;
+    return (x->corner > y->corner) - (x->corner < y->corner);
+}
+
+cm_edge_key *cm_mesh_edge_keys(const int32_t *tri, size_t nt)
+{
+    cm_edge_key *e = malloc((3 * nt + 1) * sizeof *e);
+    if (!e) return NULL;
+    for (size_t c = 0; c < 3 * nt; c++) {
+        int32_t u = tri[c], w = tri[c - c % 3 + (c % 3 + 1) % 3];
+        e[c] = (cm_edge_key){u < w ? u : w, u < w ? w : u, (int32_t)c};
+    }
+    qsort(e, 3 * nt, sizeof *e, by_edge);
+    return e;
+}
+
 void cm_mesh_clear(cm_mesh *mesh)
 {
     if (mesh->xy)

@@ -38,6 +38,18 @@ static inline size_t cm_loop_of(const size_t *loop_start, size_t num_loops, size
  * same loop listed counter-clockwise. */
 static inline size_t cm_loop_reversed(size_t m, size_t j) { return j ? m - j : 0; }
 
+/* An edge of a triangle list as its two vertices (lo < hi) and the corner
+ * it starts at: corner 3 t + i, the edge from tri[3 t + i] to the next
+ * vertex of triangle t. */
+typedef struct cm_edge_key {
+    int32_t lo, hi, corner;
+} cm_edge_key;
+
+/* The edge key of every corner of the nt triangles tri, sorted by (lo,
+ * hi, corner): the corners of one edge side by side. NULL out of memory;
+ * free() it. */
+cm_edge_key *cm_mesh_edge_keys(const int32_t *tri, size_t nt);
+
 /* Frees the arrays; the mesh is empty (k kept). */
 void cm_mesh_clear(cm_mesh *mesh);
 

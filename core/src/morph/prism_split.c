@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/mesh.h"
 #include "morph/cell_shape.h"
 
 /* The corner orders: the first three are rotations of the triangle's own
@@ -22,18 +23,6 @@ void cm_prism_split_tets(const int32_t v[6], unsigned char order, int32_t out[12
         }
 }
 
-typedef struct edge_key {
-    int32_t a, b, tri;
-} edge_key;
-
-static int compare_keys(const void *x, const void *y)
-{
-    const edge_key *p = x, *q = y;
-    if (p->a != q->a) return p->a < q->a ? -1 : 1;
-    if (p->b != q->b) return p->b < q->b ? -1 : 1;
-    return (p->tri > q->tri) - (p->tri < q->tri);
-}
-
 void cm_prism_split_free(cm_prism_split *split)
 {
     free(split->tri_edge), free(split->edge_tri), free(split->edge_end);
@@ -47,7 +36,7 @@ cm_status cm_prism_split_init(cm_prism_split *split, const int32_t *tri, size_t 
 {
     memset(split, 0, sizeof *split);
     split->nv = nv, split->nt = nt, split->tri = tri;
-    edge_key *keys = malloc((3 * nt + 1) * sizeof *keys);
+    cm_edge_key *keys = cm_mesh_edge_keys(tri, nt);
     split->tri_edge = malloc((3 * nt + 1) * sizeof *split->tri_edge);
     split->edge_tri = malloc((6 * nt + 1) * sizeof *split->edge_tri);
     split->edge_end = malloc((6 * nt + 1) * sizeof *split->edge_end);
@@ -61,22 +50,16 @@ cm_status cm_prism_split_init(cm_prism_split *split, const int32_t *tri, size_t 
         cm_prism_split_free(split);
         return cm_fail_status(error, CM_ERR_NO_MEMORY);
     }
-    for (size_t t = 0; t < nt; t++)
-        for (int c = 0; c < 3; c++) {
-            int32_t u = tri[3 * t + c], v = tri[3 * t + (c + 1) % 3];
-            keys[3 * t + c] = (edge_key){u < v ? u : v, u < v ? v : u, (int32_t)(3 * t + c)};
-        }
-    qsort(keys, 3 * nt, sizeof *keys, compare_keys);
     size_t ne = 0;
     for (size_t i = 0; i < 3 * nt; i++) {
-        if (i == 0 || keys[i].a != keys[i - 1].a || keys[i].b != keys[i - 1].b) {
-            split->edge_end[2 * ne] = keys[i].a, split->edge_end[2 * ne + 1] = keys[i].b;
-            split->edge_tri[2 * ne] = keys[i].tri / 3, split->edge_tri[2 * ne + 1] = -1;
+        if (i == 0 || keys[i].lo != keys[i - 1].lo || keys[i].hi != keys[i - 1].hi) {
+            split->edge_end[2 * ne] = keys[i].lo, split->edge_end[2 * ne + 1] = keys[i].hi;
+            split->edge_tri[2 * ne] = keys[i].corner / 3, split->edge_tri[2 * ne + 1] = -1;
             ne++;
         } else {
-            split->edge_tri[2 * (ne - 1) + 1] = keys[i].tri / 3;
+            split->edge_tri[2 * (ne - 1) + 1] = keys[i].corner / 3;
         }
-        split->tri_edge[keys[i].tri] = (int32_t)(ne - 1);
+        split->tri_edge[keys[i].corner] = (int32_t)(ne - 1);
     }
     split->ne = ne;
     free(keys);

@@ -367,36 +367,21 @@ double cm_kmesh_min_share(const cm_kmesh *km)
 
 /* ---- construction ------------------------------------------------------- */
 
-typedef struct { int32_t lo, hi, corner; } edge_key;
-
-static int compare_edge_keys(const void *pa, const void *pb)
-{
-    const edge_key *a = pa, *b = pb;
-    if (a->lo != b->lo) return a->lo < b->lo ? -1 : 1;
-    if (a->hi != b->hi) return a->hi < b->hi ? -1 : 1;
-    return (a->corner > b->corner) - (a->corner < b->corner);
-}
-
 /* Pairs opposite corners. 0, -1 out of memory, -2 not a surface bounded
  * by the loops i -> bnext[i]. */
 static int pair_corners(cm_kmesh *km)
 {
     size_t nc = 3 * (size_t)km->nt;
-    edge_key *e = malloc((nc + 1) * sizeof *e);
+    cm_edge_key *e = cm_mesh_edge_keys(km->tri, (size_t)km->nt);
     if (!e) return -1;
-    for (size_t c = 0; c < nc; c++) {
-        int32_t a = km->tri[cm_next((int32_t)c)], b = km->tri[cm_prev((int32_t)c)];
-        e[c] = (edge_key){a < b ? a : b, a < b ? b : a, (int32_t)c};
-    }
-    qsort(e, nc, sizeof *e, compare_edge_keys);
     int32_t boundary = 0;
     int status = 0;
     for (size_t i = 0; i < nc && status == 0;) {
         size_t j = i + 1;
         while (j < nc && e[j].lo == e[i].lo && e[j].hi == e[i].hi) j++;
-        int32_t c = e[i].corner;
+        int32_t c = cm_prev(e[i].corner); /* the corner opposite the edge */
         if (j - i == 2) {
-            int32_t d = e[i + 1].corner;
+            int32_t d = cm_prev(e[i + 1].corner);
             if (km->tri[cm_next(c)] != km->tri[cm_prev(d)]) status = -2;
             km->opp[c] = d, km->opp[d] = c;
         } else if (j - i == 1) {

@@ -33,20 +33,6 @@ static int descending(const void *a, const void *b)
     return x < y ? 1 : x > y ? -1 : 0;
 }
 
-/* An edge as its two vertices (lo < hi) and the corner opposite it in its
- * triangle's order (3 t + i: the edge from vertex i to vertex i + 1). */
-typedef struct edge_entry {
-    int32_t lo, hi, corner;
-} edge_entry;
-
-static int by_edge(const void *a, const void *b)
-{
-    const edge_entry *x = a, *y = b;
-    if (x->lo != y->lo) return x->lo < y->lo ? -1 : 1;
-    if (x->hi != y->hi) return x->hi < y->hi ? -1 : 1;
-    return (x->corner > y->corner) - (x->corner < y->corner);
-}
-
 static int32_t edge_end(const cm_mesh *m, size_t c) { return m->tri[c - c % 3 + (c % 3 + 1) % 3]; }
 
 /* Per corner c (edge from tri[c] to the next vertex): its twin corner in
@@ -54,18 +40,13 @@ static int32_t edge_end(const cm_mesh *m, size_t c) { return m->tri[c - c % 3 + 
 static int32_t *twins(const cm_mesh *m)
 {
     size_t ne = 3 * m->nt;
-    edge_entry *e = malloc(ne * sizeof *e);
-    int32_t *twin = malloc(ne * sizeof *twin);
+    cm_edge_key *e = cm_mesh_edge_keys(m->tri, m->nt);
+    int32_t *twin = malloc((ne + 1) * sizeof *twin);
     if (!e || !twin) {
         free(e), free(twin);
         return NULL;
     }
-    for (size_t c = 0; c < ne; c++) {
-        int32_t u = m->tri[c], w = edge_end(m, c);
-        e[c] = (edge_entry){u < w ? u : w, u < w ? w : u, (int32_t)c};
-        twin[c] = -1;
-    }
-    qsort(e, ne, sizeof *e, by_edge);
+    for (size_t c = 0; c < ne; c++) twin[c] = -1;
     for (size_t i = 0; i + 1 < ne; i++)
         if (e[i].lo == e[i + 1].lo && e[i].hi == e[i + 1].hi)
             twin[e[i].corner] = e[i + 1].corner, twin[e[i + 1].corner] = e[i].corner;
