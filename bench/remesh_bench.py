@@ -142,11 +142,10 @@ def generate(gen, workdir, other=False):
     other fonts if asked."""
     pairs = []
     for family in ("hard", "bench") + (("other",) if other else ()):
-        set_name = family
-        out = os.path.join(workdir, set_name)
-        run = subprocess.run([gen, "--out", out, "--set", set_name], capture_output=True, text=True)
+        out = os.path.join(workdir, family)
+        run = subprocess.run([gen, "--out", out, "--set", family], capture_output=True, text=True)
         if run.returncode != 0:
-            raise SystemExit("remesh_bench: cm_gen_pairs --set %s failed: %s" % (set_name, run.stderr.strip()))
+            raise SystemExit("remesh_bench: cm_gen_pairs --set %s failed: %s" % (family, run.stderr.strip()))
         for line in open(os.path.join(out, "pairs.txt")):
             name, *files = line.split()
             pairs.append(Pair(name, family, [os.path.join(out, f) for f in files]))

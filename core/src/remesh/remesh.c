@@ -999,9 +999,9 @@ static double mesh_min_angle(const cm_mesh *m)
  * for boundary_caps): the CM_RESTART_SHARE most distorted triangles
  * split (restart.h), the remesher run again from there with its polish
  * and polish-scored moves, boundary fixed, and its result kept in mesh
- * when its smallest angle is higher by CM_RESTART_GAIN. 1 kept, 0 not,
- * or -status. */
-static int restart(cm_mesh *mesh, size_t nb, int whole, const cm_options *o, double ceiling_deg,
+ * when its smallest angle is higher than *least (mesh's, radians) by
+ * CM_RESTART_GAIN, *least then the new one. 1 kept, 0 not, or -status. */
+static int restart(cm_mesh *mesh, double *least, size_t nb, int whole, const cm_options *o, double ceiling_deg,
                    cm_progress *progress, cm_remesh_report *rep)
 {
     cm_mesh start;
@@ -1025,12 +1025,14 @@ static int restart(cm_mesh *mesh, size_t nb, int whole, const cm_options *o, dou
     if (s == CM_OK) s = cm_kmesh_write(&z.km, &start);
     if (s == CM_OK) s = polish_jointly(&start, nb, NULL, progress);
     if (s == CM_OK) s = polish_moves(&z, &start, nb, NULL);
-    int kept = s == CM_OK && mesh_min_angle(&start) > (1 + CM_RESTART_GAIN) * mesh_min_angle(mesh);
+    double reached = s == CM_OK ? mesh_min_angle(&start) : 0;
+    int kept = s == CM_OK && reached > (1 + CM_RESTART_GAIN) * *least;
     if (s == CM_ERR_INTERNAL) s = CM_OK; /* a start the remesher cannot read: the result stands */
     if (kept) {
         cm_mesh_clear(mesh);
         *mesh = start;
         start = (cm_mesh){0};
+        *least = reached;
         rep->iterations += again.iterations, rep->splits += again.splits;
         rep->split_attempts += again.split_attempts, rep->collapses += again.collapses, rep->flips += again.flips;
         /* rep->min_angle_deg stays the first run's: the callers' choices
@@ -1081,7 +1083,8 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
      * stays as it is). Where points were added to the loops of a polygon
      * with holes, they start from the written loops' offsets; the caller
      * gets the input's back, as without restarts. */
-    if (s == CM_OK) rep->polished_deg = mesh_min_angle(mesh) * 180.0 / CM_PI;
+    double least = s == CM_OK ? mesh_min_angle(mesh) : 0;
+    rep->polished_deg = least * 180.0 / CM_PI;
     rep->restart_wanted = s == CM_OK && cm_kmesh_min_share(&x.km) < CM_RESTART_BELOW;
     const size_t *given = mesh->loop_start;
     size_t *written = NULL;
@@ -1091,7 +1094,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
         else cm_kmesh_written_loops(&x.km, given, mesh->num_loops, written), mesh->loop_start = written;
     }
     for (int i = 0; s == CM_OK && rep->restart_wanted && i < o->restarts; i++) {
-        int r = restart(mesh, (size_t)x.km.nb, !splits, o, ceiling_deg, progress, rep);
+        int r = restart(mesh, &least, (size_t)x.km.nb, !splits, o, ceiling_deg, progress, rep);
         if (r < 0) s = (cm_status)-r;
         if (r <= 0) break;
     }
