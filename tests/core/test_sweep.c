@@ -240,8 +240,8 @@ static void test_failures(void)
     CHECK(cm_sweep_num_prisms(w) == 0 && cm_sweep_prisms(w) == NULL);
     cm_sweep_free(w);
 
-    /* The convex morph's tetrahedra of the three-geometry fixture need 8
-     * inserted sections, the intrinsic morph's 5: with 6 allowed, the sweep
+    /* The convex morph's tetrahedra of the three-geometry fixture need 9
+     * inserted sections, the intrinsic morph's 8: with 8 allowed, the sweep
      * is built from the intrinsic morph; with none, both fail. */
     cm_result *three = fixture_result(FIX_THREE, N);
     cm_morph *mc = NULL, *mi = NULL;
@@ -249,7 +249,7 @@ static void test_failures(void)
     mo.method = CM_MORPH_INTRINSIC;
     CHECK(three && cm_morph_create(three, NULL, &mc) == CM_OK && cm_morph_create(three, &mo, &mi) == CM_OK);
     o.tets = 1;
-    o.max_refine = 6;
+    o.max_refine = 8;
     cm_status s = cm_sweep_create(mc, &o, &w);
     CHECK_MSG(s == CM_OK && cm_sweep_morph_method(w) == CM_MORPH_INTRINSIC, "%s", cm_sweep_message(w));
     CHECK(cm_sweep_num_sections(w) > 2 * o.sections - 1 && cm_sweep_volume(w) > 0);

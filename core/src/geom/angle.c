@@ -70,6 +70,16 @@ double cm_triangle_min_angle(const double a[2], const double b[2], const double 
     return min_angle_terms(a, b, c, &area2, &dot) ? atan2(area2, dot) : min_angle_wide(a, b, c);
 }
 
+double cm_triangles_min_angle(const int32_t *tri, size_t nt, const double *xy)
+{
+    double least = HUGE_VAL;
+    for (size_t t = 0; t < nt; t++) {
+        const int32_t *v = tri + 3 * t;
+        least = fmin(least, cm_triangle_min_angle(xy + 2 * v[0], xy + 2 * v[1], xy + 2 * v[2]));
+    }
+    return least;
+}
+
 int cm_triangle_min_angle_rank(const double a[2], const double b[2], const double c[2], const double *bound,
                                const double *tan_bound, int n)
 {

@@ -3,6 +3,9 @@
 #ifndef CM_GEOM_ANGLE_H
 #define CM_GEOM_ANGLE_H
 
+#include <stddef.h>
+#include <stdint.h>
+
 #define CM_PI 3.14159265358979323846
 
 /* The angle at p of triangle pqr (radians), by atan2(|cross|, dot):
@@ -16,6 +19,9 @@ double cm_angle_at_below(const double p[2], const double q[2], const double r[2]
 /* Smallest angle (radians) of triangle abc, the one opposite the shortest
  * edge; 0 for a degenerate one. */
 double cm_triangle_min_angle(const double a[2], const double b[2], const double c[2]);
+/* Smallest angle (radians) of the nt triangles tri (three vertex indices
+ * each) at the positions xy (x, y per vertex); HUGE_VAL when nt is 0. */
+double cm_triangles_min_angle(const int32_t *tri, size_t nt, const double *xy);
 /* 1 when cm_triangle_min_angle(a, b, c) > bound, exactly as that
  * comparison, for bound in [0, pi/2) and tan_bound = tan(bound): the
  * tangents decide without the atan2 unless they are within rounding of

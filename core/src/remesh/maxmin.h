@@ -30,9 +30,12 @@ typedef struct cm_maxmin_slide {
  * that each geometry's smallest angle rises, keeping every triangle
  * counter-clockwise by the exact predicates. The connectivity is
  * unchanged, so the meshes stay compatible; no geometry's smallest angle
- * falls. At most max_iterations L-BFGS iterations per geometry. CM_OK,
+ * falls. At most max_iterations L-BFGS iterations per geometry. With
+ * lowest_first, the geometry lowest at the start goes first and the others
+ * stop once their smallest angle is a little above the least reached (the
+ * result's cannot rise more); else every geometry is polished fully. CM_OK,
  * CM_ERR_NO_MEMORY or CM_ERR_CANCELLED. */
-cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, cm_maxmin_slide *slide, int max_iterations,
+cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, cm_maxmin_slide *slide, int lowest_first, int max_iterations,
                            cm_progress *progress);
 
 /* The same ascent on a part of geometry g, xy (nv vertices, triangles

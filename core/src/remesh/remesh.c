@@ -123,6 +123,12 @@
  * gain nothing for the time; glyph pairs at 0.7 to 0.85 of it gain 8 to
  * 20 % (bench/REMESH.md, "Restarts up to 0.85 of the aim"). */
 #define CM_RESTART_BELOW 0.85
+/* The stall limit of a first run below the restart's gate, as a share of
+ * the limit: the restart starts from its result split where its map is
+ * most distorted and refines again, so the splits a first run adds late,
+ * for gains the restart makes anyway, are mostly paid twice (bench/REMESH.md,
+ * "A shorter first run below the restart's gate"). */
+#define CM_STALL_BEFORE_RESTART 0.6
 /* A restart's result is kept when its smallest angle is this much
  * higher, relatively: it often doubles the vertices, which a gain of 1 or
  * 2 % does not pay for (the paper's U and S: 20.06 -> 20.41 degrees for
@@ -523,9 +529,23 @@ static long budget_of(const cm_options *o, size_t n)
     return o->max_steiner >= 0 ? o->max_steiner : 2 * (long)n + 100;
 }
 
+/* Is this a first run with its boundary fixed (index correspondence)
+ * whose worst triangle is below CM_RESTART_BELOW of its aim, the
+ * restart's gate? Not whether restarts were asked for: a first run is the
+ * same with and without them. Where boundary points may be added, the
+ * late splits also refine the loops the restart starts from: left as
+ * they were. */
+static int restart_ahead(const remesher *x)
+{
+    return !x->restarting && !x->km.between && cm_kmesh_min_share(&x->km) < CM_RESTART_BELOW;
+}
+
+/* Splits without progress before refinement stops, and rounds of forced
+ * moves; CM_STALL_BEFORE_RESTART of it where a restart will follow. */
 static long stall_limit(const remesher *x)
 {
-    return 30 + x->km.n / 4;
+    long limit = 30 + x->km.n / 4;
+    return restart_ahead(x) ? (long)(CM_STALL_BEFORE_RESTART * (double)limit) : limit;
 }
 
 /* Splits per round: the option, or about 1 % of the triangles. */
@@ -946,13 +966,14 @@ static cm_status finish(remesher *x, cm_remesh_report *rep)
 
 /* The joint max-min polish of the written result (the report keeps the
  * smallest angle the stages above reached; the caller measures the
- * result). */
-static cm_status polish_jointly(cm_mesh *mesh, size_t nb, cm_remesh_boundary *splits, cm_progress *progress)
+ * result); lowest_first with the index correspondence (`whole`). */
+static cm_status polish_jointly(cm_mesh *mesh, size_t nb, cm_remesh_boundary *splits, int whole,
+                                cm_progress *progress)
 {
     cm_maxmin_slide slide = {0};
     if (splits && splits->place)
         slide = (cm_maxmin_slide){splits->edge, splits->t, splits->place, splits->ctx, splits->max_piece, 0, NULL, NULL};
-    cm_status s = cm_maxmin_polish(mesh, nb, slide.place ? &slide : NULL, CM_MAXMIN_ITERATIONS, progress);
+    cm_status s = cm_maxmin_polish(mesh, nb, slide.place ? &slide : NULL, whole, CM_MAXMIN_ITERATIONS, progress);
     if (s == CM_OK && splits) splits->slid = slide.slid;
     return s;
 }
@@ -986,11 +1007,7 @@ static cm_status polish_moves(remesher *x, cm_mesh *mesh, size_t n, cm_remesh_bo
 static double mesh_min_angle(const cm_mesh *m)
 {
     double least = HUGE_VAL;
-    for (size_t g = 0; g < m->k; g++)
-        for (size_t t = 0; t < m->nt; t++) {
-            const int32_t *v = m->tri + 3 * t;
-            least = fmin(least, cm_triangle_min_angle(m->xy[g] + 2 * v[0], m->xy[g] + 2 * v[1], m->xy[g] + 2 * v[2]));
-        }
+    for (size_t g = 0; g < m->k; g++) least = fmin(least, cm_triangles_min_angle(m->tri, m->nt, m->xy[g]));
     return least;
 }
 
@@ -1023,7 +1040,7 @@ static int restart(cm_mesh *mesh, double *least, size_t nb, int whole, const cm_
     z.restarting = 1;
     if (s == CM_OK) s = remesh_run(&z, &start, nb, bcap, o, ceiling_deg, NULL, progress, &again);
     if (s == CM_OK) s = cm_kmesh_write(&z.km, &start);
-    if (s == CM_OK) s = polish_jointly(&start, nb, NULL, progress);
+    if (s == CM_OK) s = polish_jointly(&start, nb, NULL, whole, progress);
     if (s == CM_OK) s = polish_moves(&z, &start, nb, NULL);
     double reached = s == CM_OK ? mesh_min_angle(&start) : 0;
     int kept = s == CM_OK && reached > (1 + CM_RESTART_GAIN) * *least;
@@ -1076,7 +1093,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
     free(bcap);
     if (s == CM_OK && splits) s = cm_kmesh_write_labels(&x.km, splits->edge, splits->t);
     if (s == CM_OK) s = cm_kmesh_write(&x.km, mesh);
-    if (s == CM_OK) s = polish_jointly(mesh, (size_t)x.km.nb, splits, progress);
+    if (s == CM_OK) s = polish_jointly(mesh, (size_t)x.km.nb, splits, !splits, progress);
     if (s == CM_OK) s = polish_moves(&x, mesh, n, splits);
     /* Far below the aim, restarts from the result split where its map is
      * most distorted (the boundary, and with it the labels just written,
