@@ -81,6 +81,9 @@ typedef struct mover {
     double **t_rows;
     size_t rows_cap;
     size_t slides; /* boundary points slid by the try under way */
+    /* what the try under way must reach to be kept: the ring's smallest
+     * slack above `need`, no triangle's key below `least` */
+    double need, least;
     uint64_t *failed; /* moves undone since the last kept one */
     size_t nfailed, failed_cap;
 } mover;
@@ -119,8 +122,10 @@ static int rings(mover *x, const int32_t *seeds, int ns)
 }
 
 /* The smallest slack and smallest key of the triangles around the ring's
- * live vertices. 0 or -1 out of memory. */
-static int ring_quality(mover *x, double *slack, double *key)
+ * live vertices (g = k); or (g < k) the most they can become while
+ * geometry g stays as it is: a triangle's key is its smallest angle over
+ * the geometries, so at most its angle in g. 0 or -1 out of memory. */
+static int ring_quality(mover *x, size_t g, double *slack, double *key)
 {
     cm_kmesh *km = x->km;
     *slack = *key = HUGE_VAL;
@@ -131,9 +136,20 @@ static int ring_quality(mover *x, double *slack, double *key)
         if (m < 0) return -1;
         for (long j = 0; j < m; j++) {
             int32_t t = x->star.a[j] / 3;
-            *slack = fmin(*slack, km->slack[t]), *key = fmin(*key, km->tkey[t]);
+            double a = g < km->k ? km->tang[(size_t)t * km->k + g] : km->tkey[t];
+            *slack = fmin(*slack, a - km->tkey[t] + km->slack[t]), *key = fmin(*key, a);
         }
     }
+    return 0;
+}
+
+/* Can the try under way no longer be kept, geometry g polished? The
+ * slack's bound is rounded: a margin far below any gain asked. */
+static int try_lost(mover *x, size_t g, int *hopeless)
+{
+    double slack, key;
+    if (ring_quality(x, g, &slack, &key)) return -1;
+    *hopeless = !(slack > x->need - 1e-12) || key < x->least;
     return 0;
 }
 
@@ -188,12 +204,14 @@ static int moves_in(const mover *x, size_t g, int32_t v)
 }
 
 /* The local polish of the ring's live interior vertices in every
- * geometry, and of its boundary points where they slide. 0, or -1 out of
- * memory or cancelled. */
-static int polish_ring(mover *x)
+ * geometry, and of its boundary points where they slide; the geometries
+ * after one that leaves the try out of reach (*hopeless) are skipped.
+ * 0, or -1 out of memory or cancelled. */
+static int polish_ring(mover *x, int *hopeless)
 {
     cm_kmesh *km = x->km;
     x->var.n = x->tris.n = 0;
+    *hopeless = 0;
     if (x->slide && grow_rows(x)) return -1;
     for (size_t i = 0; i < x->ring.n; i++) {
         int32_t v = x->ring.a[i];
@@ -219,7 +237,7 @@ static int polish_ring(mover *x)
     x->pts = p, p = x->pts_t;
     if (cm_grow(&p, &x->pts_t_cap, x->var.n, sizeof *x->pts_t)) return -1;
     x->pts_t = p;
-    for (size_t g = 0; g < km->k; g++) {
+    for (size_t g = 0; g < km->k && !*hopeless; g++) {
         x->gvar.n = 0;
         for (size_t j = 0; j < x->var.n; j++)
             if ((!x->slide || moves_in(x, g, x->var.a[j])) && cm_ibuf_push(&x->gvar, x->var.a[j])) return -1;
@@ -228,8 +246,7 @@ static int polish_ring(mover *x)
                                 x->slide ? &x->labels : NULL, g, CM_PMOVE_ITERATIONS, x->progress, x->pts,
                                 x->pts_t);
         if (r < 0) return -1;
-        if (r == 0) continue;
-        for (size_t j = 0; j < x->gvar.n; j++) {
+        for (size_t j = 0; r > 0 && j < x->gvar.n; j++) {
             int32_t v = x->gvar.a[j];
             if (cm_kmesh_star(km, v, &x->star) < 0) return -1;
             if (!cm_kmesh_is_boundary(km, v)) {
@@ -239,6 +256,7 @@ static int polish_ring(mover *x)
                 x->t_rows[g][v] = x->pts_t[j], x->slides++;
             }
         }
+        if (g + 1 < km->k && try_lost(x, g, hopeless)) return -1;
     }
     return 0;
 }
@@ -286,7 +304,8 @@ static int try_move(mover *x, enum pmove kind, int32_t c, double least)
     int32_t seeds[4] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)], o >= 0 ? km->tri[o] : -1};
     x->slides = 0;
     double before, after, key;
-    if (rings(x, seeds, 4) || ring_quality(x, &before, &key) || cm_kmesh_tx_begin(km)) return -1;
+    if (rings(x, seeds, 4) || ring_quality(x, km->k, &before, &key) || cm_kmesh_tx_begin(km)) return -1;
+    x->need = before + (kind == PM_POLISH ? CM_PMOVE_POLISH_GAIN : CM_PMOVE_GAIN), x->least = least;
     int done = 0;
     if (kind == PM_POLISH) {
         done = 1;
@@ -304,8 +323,10 @@ static int try_move(mover *x, enum pmove kind, int32_t c, double least)
         cm_kmesh_tx_commit(km); /* nothing changed */
         return done;
     }
-    if (polish_ring(x) || ring_quality(x, &after, &key)) return cm_kmesh_tx_commit(km), -1;
-    if (after > before + (kind == PM_POLISH ? CM_PMOVE_POLISH_GAIN : CM_PMOVE_GAIN) && key >= least) {
+    int hopeless;
+    if (polish_ring(x, &hopeless) || (!hopeless && ring_quality(x, km->k, &after, &key)))
+        return cm_kmesh_tx_commit(km), -1;
+    if (!hopeless && after > x->need && key >= least) {
         cm_kmesh_tx_commit(km);
         if (x->slide) x->slide->slid += x->slides;
         return 1;
