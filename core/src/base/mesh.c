@@ -15,7 +15,7 @@ cm_edge_key *cm_mesh_edge_keys(const int32_t *tri, size_t nt)
     cm_edge_key *e = malloc((3 * nt + 1) * sizeof *e);
     if (!e) return NULL;
     for (size_t c = 0; c < 3 * nt; c++) {
-        int32_t u = tri[c], w = tri[c - c % 3 + (c % 3 + 1) % 3];
+        int32_t u = tri[c], w = tri[cm_corner_next(c)];
         e[c] = (cm_edge_key){u < w ? u : w, u < w ? w : u, (int32_t)c};
     }
     qsort(e, 3 * nt, sizeof *e, by_edge);

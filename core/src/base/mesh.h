@@ -38,6 +38,11 @@ static inline size_t cm_loop_of(const size_t *loop_start, size_t num_loops, size
  * same loop listed counter-clockwise. */
 static inline size_t cm_loop_reversed(size_t m, size_t j) { return j ? m - j : 0; }
 
+/* The corner after c in its triangle (triangle t has corners 3 t,
+ * 3 t + 1, 3 t + 2, counter-clockwise): the far end of c's edge is
+ * tri[cm_corner_next(c)]. */
+static inline size_t cm_corner_next(size_t c) { return c % 3 == 2 ? c - 2 : c + 1; }
+
 /* An edge of a triangle list as its two vertices (lo < hi) and the corner
  * it starts at: corner 3 t + i, the edge from tri[3 t + i] to the next
  * vertex of triangle t. */

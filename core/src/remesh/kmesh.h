@@ -85,7 +85,7 @@ typedef struct cm_kmesh {
     struct cm_kmesh_log *log; /* undo log, NULL until the first transaction */
 } cm_kmesh;
 
-static inline int32_t cm_next(int32_t c) { return c % 3 == 2 ? c - 2 : c + 1; }
+static inline int32_t cm_next(int32_t c) { return (int32_t)cm_corner_next((size_t)c); }
 static inline int32_t cm_prev(int32_t c) { return c % 3 == 0 ? c + 2 : c - 1; }
 static inline const double *cm_kmesh_pos(const cm_kmesh *km, size_t g, int32_t v)
 {

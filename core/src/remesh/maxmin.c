@@ -411,7 +411,7 @@ static int boundary_neighbours(const int32_t *tri, size_t nt, size_t nb, int32_t
     if (!e) return -1;
     size_t m = 0;
     for (size_t t = 0; t < 3 * nt; t++) {
-        uint64_t a = (uint64_t)tri[t], b = (uint64_t)tri[t - t % 3 + (t + 1) % 3];
+        uint64_t a = (uint64_t)tri[t], b = (uint64_t)tri[cm_corner_next(t)];
         if (a < nb && b < nb) e[m++] = a << 32 | b;
     }
     qsort(e, m, sizeof *e, by_pair);

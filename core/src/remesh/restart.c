@@ -33,7 +33,7 @@ static int descending(const void *a, const void *b)
     return x < y ? 1 : x > y ? -1 : 0;
 }
 
-static int32_t edge_end(const cm_mesh *m, size_t c) { return m->tri[c - c % 3 + (c % 3 + 1) % 3]; }
+static int32_t edge_end(const cm_mesh *m, size_t c) { return m->tri[cm_corner_next(c)]; }
 
 /* Per corner c (edge from tri[c] to the next vertex): its twin corner in
  * the neighbouring triangle, -1 on the boundary. */
