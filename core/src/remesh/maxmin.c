@@ -440,19 +440,22 @@ cm_status cm_maxmin_polish(cm_mesh *mesh, size_t nb, cm_maxmin_slide *slide, int
     size_t *order = status == CM_OK ? malloc(mesh->k * sizeof *order) : NULL;
     double *start = status == CM_OK ? malloc(mesh->k * sizeof *start) : NULL;
     if (status == CM_OK && (!order || !start)) status = CM_ERR_NO_MEMORY;
-    for (size_t g = 0; status == CM_OK && g < mesh->k; g++) { /* by smallest angle, lowest first */
-        start[g] = cm_triangles_min_angle(mesh->tri, nt, mesh->xy[g]);
+    for (size_t g = 0; status == CM_OK && g < mesh->k; g++) { /* lowest_first: by smallest angle, lowest first */
         size_t i = g;
-        for (; i > 0 && start[order[i - 1]] > start[g]; i--) order[i] = order[i - 1];
+        if (lowest_first) {
+            start[g] = cm_triangles_min_angle(mesh->tri, nt, mesh->xy[g]);
+            for (; i > 0 && start[order[i - 1]] > start[g]; i--) order[i] = order[i - 1];
+        }
         order[i] = g;
     }
-    double reached = HUGE_VAL; /* the least smallest angle of the geometries polished so far */
+    double reached = HUGE_VAL; /* lowest_first: the least smallest angle of the geometries polished so far */
     for (size_t i = 0; status == CM_OK && i < mesh->k; i++) {
         size_t g = order[i];
-        s.enough = reached < HUGE_VAL && lowest_first ? (1 + CM_MAXMIN_AHEAD) * reached : HUGE_VAL;
-        if (start[g] >= s.enough) continue; /* far enough above already: left as it is */
+        s.enough = reached < HUGE_VAL ? (1 + CM_MAXMIN_AHEAD) * reached : HUGE_VAL;
+        if (lowest_first && start[g] >= s.enough) continue; /* far enough above already: left as it is */
         status = polish_geometry(&s, g, mesh->xy[g], nt, nb, max_iterations);
-        if (status == CM_OK) reached = fmin(reached, cm_triangles_min_angle(mesh->tri, nt, mesh->xy[g]));
+        if (status == CM_OK && lowest_first)
+            reached = fmin(reached, cm_triangles_min_angle(mesh->tri, nt, mesh->xy[g]));
     }
     free(order), free(start);
     if (slide) slide->slid = s.slid;
