@@ -838,11 +838,33 @@ static cm_options without_restarts(const cm_options *o)
     return once;
 }
 
-/* Is *result a rescue's run (rescued) that the restarts asked of o
- * would start from? Then it is run again with them. */
-static int restart_wanted(const cm_result *r, int rescued, const cm_options *o)
+/* A rescue's run: `pairing` (of the kind the caller's input takes) of
+ * `input` remeshed by o into `again`. */
+typedef cm_status (*rescue_run)(cm_result *again, const void *input, const cm_options *o, const void *pairing);
+
+/* The pairing run without restarts, kept in place of *result where it is
+ * better (*took); *result stands where no memory is left for the run. */
+static cm_status rescue_try(cm_result **result, const cm_options *o, rescue_run run, const void *input,
+                            const void *pairing, int *took)
 {
-    return rescued && o->restarts > 0 && r->restart_wanted;
+    cm_options once = without_restarts(o);
+    cm_result *again = rescue_result(*result, o);
+    *took = 0;
+    if (!again) return CM_OK;
+    cm_status s = run(again, input, &once, pairing);
+    *took = better(again, s, *result);
+    return keep_if(result, again, s, *took);
+}
+
+/* The pairing a rescue kept (NULL: none) run again with the restarts o
+ * asks for, where its result would start one. */
+static cm_status rescue_restart(cm_result **result, const cm_options *o, rescue_run run, const void *input,
+                                const void *pairing)
+{
+    cm_result *again;
+    if (!pairing || !(o->restarts > 0 && (*result)->restart_wanted) || !(again = rescue_result(*result, o)))
+        return CM_OK;
+    return keep_if(result, again, run(again, input, o, pairing), 1);
 }
 
 /* The rescues' other tempering powers (conformal.h): nearer the conformal
@@ -868,6 +890,18 @@ static int restart_wanted(const cm_result *r, int rescued, const cm_options *o)
  * CM_POWER_RESCUE_SHARE the parameter tempered nearer the conformal map,
  * then below CM_PAIRING_RESCUE_SHARE the parameter read along every edge,
  * the similarity choice, and the parameter tempered nearer arc length. */
+typedef struct polygon_input {
+    const double *const *polygons;
+    const size_t *counts;
+    size_t k;
+} polygon_input;
+
+static cm_status run_pairing(cm_result *again, const void *input, const cm_options *o, const void *pairing)
+{
+    const polygon_input *in = input;
+    return run_arclength(again, in->polygons, in->counts, in->k, o, NULL, *(const auto_pairing *)pairing);
+}
+
 static cm_status pairing_rescue(cm_result **result, const double *const *polygons, const size_t *counts, size_t k,
                                 const cm_options *o)
 {
@@ -881,7 +915,7 @@ static cm_status pairing_rescue(cm_result **result, const double *const *polygon
                   {{PAIRING_CONFORMAL, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_SIMILARITY, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 0, CM_RESCUE_POWER_LESS}, CM_PAIRING_RESCUE_SHARE}};
-    cm_options once = without_restarts(o);
+    const polygon_input input = {polygons, counts, k};
     const auto_pairing *kept = NULL; /* the rescue's pairing *result is, if any */
     cm_status s = CM_OK;
     for (size_t i = 0; s == CM_OK && i < sizeof others / sizeof *others; i++) {
@@ -891,18 +925,11 @@ static cm_status pairing_rescue(cm_result **result, const double *const *polygon
              first == CM_CHOICE_CONFORMAL) ||
             (p->kind == PAIRING_SIMILARITY && first == CM_CHOICE_SIMILARITY))
             continue; /* not wanted, or the first run's */
-        cm_result *again = rescue_result(*result, o);
-        if (!again) break;
-        cm_status run = run_arclength(again, polygons, counts, k, &once, NULL, *p);
-        int take = better(again, run, *result);
-        s = keep_if(result, again, run, take);
-        if (take) kept = p;
+        int took;
+        s = rescue_try(result, o, run_pairing, &input, p, &took);
+        if (took) kept = p;
     }
-    if (s == CM_OK && restart_wanted(*result, kept != NULL, o)) {
-        cm_result *again = rescue_result(*result, o);
-        if (again) s = keep_if(result, again, run_arclength(again, polygons, counts, k, o, NULL, *kept), 1);
-    }
-    return s;
+    return s == CM_OK ? rescue_restart(result, o, run_pairing, &input, kept) : s;
 }
 
 /* The memos of one call, for what an auto run asks more than once. */
@@ -1370,20 +1397,27 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
  * chosen under the outer loops' similarity, may fit one pairing of the
  * outer loops and not the other: a conformal pairing of the filled
  * outlines knows nothing of the holes) and the better result is kept. */
+typedef struct loop_input {
+    const cm_loops *polygons;
+    size_t k;
+} loop_input;
+
+static cm_status run_loop_pairing(cm_result *again, const void *input, const cm_options *o, const void *pairing)
+{
+    const loop_input *in = input;
+    return run_loops_arclength(again, in->polygons, in->k, o, *(const enum loop_kind *)pairing);
+}
+
 static cm_status outer_rescue(cm_result **result, const cm_loops *polygons, size_t k, const cm_options *o)
 {
+    static const enum loop_kind by_start = LOOP_BY_START;
     if ((*result)->stats.correspondence_choice != CM_CHOICE_CONFORMAL ||
         !rescue_wanted(*result, o, CM_PAIRING_RESCUE_SHARE))
         return CM_OK;
-    cm_options once = without_restarts(o);
-    cm_result *again = rescue_result(*result, o);
-    if (!again) return CM_OK;
-    cm_status run = run_loops_arclength(again, polygons, k, &once, LOOP_BY_START);
-    int take = better(again, run, *result);
-    cm_status s = keep_if(result, again, run, take);
-    if (s == CM_OK && restart_wanted(*result, take, o) && (again = rescue_result(*result, o)))
-        s = keep_if(result, again, run_loops_arclength(again, polygons, k, o, LOOP_BY_START), 1);
-    return s;
+    const loop_input input = {polygons, k};
+    int took;
+    cm_status s = rescue_try(result, o, run_loop_pairing, &input, &by_start, &took);
+    return s == CM_OK ? rescue_restart(result, o, run_loop_pairing, &input, took ? &by_start : NULL) : s;
 }
 
 cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_options *options,
