@@ -174,6 +174,12 @@
  * about 1 % of angle. */
 #define CM_PMOVE_TRIES 200
 #define CM_PMOVE_SHARE 0.5
+/* Where boundary points may be added (arc length, auto), three times as
+ * many tries: with the longer local polish and idle stop there
+ * (polish_moves.c) the auto glyph pairs at min(20, c/2) rose from 71 to
+ * 81 of 88 for about 1.5 times the CPU (bench/REMESH.md, "A longer
+ * polish-scored stage in auto"); auto has no time target to keep. */
+#define CM_PMOVE_TRIES_SPLITS 600
 /* The share where boundary edges may be split (arc length, auto): there
  * the boundary can give way, and on the auto glyph pairs the stage
  * raised pairs ending at 0.35-0.5 of their aim too (bench/REMESH.md,
@@ -989,11 +995,12 @@ static cm_status polish_moves(remesher *x, cm_mesh *mesh, size_t n, cm_remesh_bo
     if (cm_kmesh_read_back(km, mesh, edge, t)) return CM_ERR_NO_MEMORY;
     double share = km->between ? CM_PMOVE_SHARE_SPLITS : CM_PMOVE_SHARE;
     if (cm_kmesh_min_slack(km) < -(1 - share) * x->target) return CM_OK;
-    long kept = cm_polish_moves(km, CM_PMOVE_TRIES, budget_of(x->o, n) - (km->live_v - km->n), NULL, x->progress);
+    long tries = km->between ? CM_PMOVE_TRIES_SPLITS : CM_PMOVE_TRIES;
+    long kept = cm_polish_moves(km, tries, budget_of(x->o, n) - (km->live_v - km->n), NULL, x->progress);
     if (kept < 0) return stop_status(x);
     if (splits && splits->place) { /* the boundary points' turn */
         cm_maxmin_slide slide = {NULL, NULL, splits->place, splits->ctx, splits->max_piece, 0, NULL, NULL};
-        long more = cm_polish_moves(km, CM_PMOVE_TRIES, budget_of(x->o, n) - (km->live_v - km->n), &slide,
+        long more = cm_polish_moves(km, tries, budget_of(x->o, n) - (km->live_v - km->n), &slide,
                                     x->progress);
         if (more < 0) return stop_status(x);
         kept += more, splits->slid += slide.slid;
