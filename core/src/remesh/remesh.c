@@ -177,7 +177,7 @@
 /* Where boundary points may be added (arc length, auto), three times as
  * many tries: with the longer local polish and idle stop there
  * (polish_moves.c) the auto glyph pairs at min(20, c/2) rose from 71 to
- * 81 of 88 for about 1.5 times the CPU (bench/REMESH.md, "A longer
+ * 81 of 88 for 1.6 times the CPU, geometric mean (bench/REMESH.md, "A longer
  * polish-scored stage in auto"); auto has no time target to keep. */
 #define CM_PMOVE_TRIES_SPLITS 600
 /* The share where boundary edges may be split (arc length, auto): there
