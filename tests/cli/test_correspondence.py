@@ -127,7 +127,7 @@ def test_pin_corners_ties_corner_to_corner(cm, tmp_path):
     assert r.returncode == 0, r.stderr
     report = json.loads((tmp_path / "out" / "report.json").read_text())
     assert report["correspondence"] == "arclength"  # the default with corner pins
-    assert report["correspondence_choice"] == "arclength"
+    assert report["correspondence_choice"] == "corners"
     assert set(zip(ca, cb)) <= pinned_pairs(report)
     # Without them, arc length alone puts the corners elsewhere.
     r = cm("triangulate", "a.xy", "b.xy", "-o", "plain", "--correspondence", "arclength")
@@ -246,3 +246,21 @@ def test_auto_remeshes_another_pairing_where_the_first_ends_short(cm, tmp_path):
     assert runs["auto"]["correspondence_choice"] == "conformal"
     angle = {m: min(x["min_angle_deg"] for x in runs[m]["meshes"]) for m in ("similarity", "auto")}
     assert angle["auto"] >= 13.0 > 0.6 * 15.5 > angle["similarity"]
+
+
+def test_auto_pins_corners_where_every_other_pairing_ends_short(cm, tmp_path):
+    # URW Bookman 'V' against 'W', 160 vertices each (cm_gen_pairs --set
+    # hard): the conformal pairing puts the W's inner strokes into the V's
+    # apex, and it and every other pairing auto has remesh to 10.7 degrees at
+    # best, below 0.6 of the aim; arc length between the corners that turn by
+    # more than 90 degrees puts the tips together and reaches 18.
+    a, b = (os.path.join(GLYPH_PAIRS, "URWBookman_V_W_n160_" + s + ".xy") for s in "ab")
+    runs = {}
+    for mode, extra in (("first", ["--no-remesh"]), ("auto", [])):
+        r = cm("triangulate", a, b, "-o", mode, "--no-preview", "--correspondence", "auto", *extra)
+        assert r.returncode == 0, r.stderr
+        runs[mode] = json.loads((tmp_path / mode / "report.json").read_text())
+    assert runs["first"]["correspondence_choice"] == "conformal"
+    assert runs["auto"]["correspondence_choice"] == "corners"
+    assert runs["auto"]["valid"]
+    assert min(m["min_angle_deg"] for m in runs["auto"]["meshes"]) >= 15.0

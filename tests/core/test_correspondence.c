@@ -460,9 +460,10 @@ static void test_choice_reported(void)
     CHECK(choice_of(lobes, N, copy, N, CM_CORRESPOND_SIMILARITY, NULL, 0, 0) == CM_CHOICE_AFFINE);
     CHECK(choice_of(lobes, N, ellipse, E, CM_CORRESPOND_SIMILARITY, NULL, 0, 0) == CM_CHOICE_SIMILARITY);
     CHECK(choice_of(lobes, N, ellipse, E, CM_CORRESPOND_AUTO, pin, 0, 0) == CM_CHOICE_ARCLENGTH);
-    CHECK(choice_of(star, S, squashed, S, CM_CORRESPOND_AUTO, NULL, 20, 0) == CM_CHOICE_ARCLENGTH);
+    CHECK(choice_of(star, S, squashed, S, CM_CORRESPOND_AUTO, NULL, 20, 0) == CM_CHOICE_CORNERS);
     CHECK(strcmp(cm_correspondence_choice_name(CM_CHOICE_CONFORMAL), "conformal") == 0 &&
           strcmp(cm_correspondence_choice_name(CM_CHOICE_AFFINE), "affine") == 0 &&
+          strcmp(cm_correspondence_choice_name(CM_CHOICE_CORNERS), "corners") == 0 &&
           strcmp(cm_correspondence_choice_name((cm_correspondence_choice)99), "unknown") == 0);
 
     /* A 4 x 4 square with a 1 x 1 square hole (clockwise), and the same

@@ -538,8 +538,10 @@ static void test_polish_moves(void)
             cm_kmesh_set_caps(&km, 30.0 / DEG, NULL, NULL);
             double start = cm_kmesh_min_angle(&km), now = start;
             long kept = 0, total = 0;
+            cm_pmove_limits limits = cm_pmove_limits_of(&km);
+            limits.tries = 25;
             for (int batch = 0; batch < 4 && kept >= 0; batch++) { /* a check between batches */
-                kept = cm_polish_moves(&km, 25, 10, NULL, NULL);
+                kept = cm_polish_moves(&km, &limits, 10, NULL, NULL);
                 double after = cm_kmesh_min_angle(&km);
                 CHECK_MSG(kept >= 0, "polish moves failed");
                 CHECK_MSG(cm_kmesh_check(&km), "polish moves: %s seed %d left an invalid mesh", convex ? "disc" : "star",
@@ -587,8 +589,10 @@ static void test_polish_moves_slide(void)
         cm_kmesh_set_caps(&km, 30.0 / DEG, NULL, NULL);
         cm_maxmin_slide slide = {NULL, NULL, test_place, &inputs, 0, 0, NULL, NULL};
         double now = cm_kmesh_min_angle(&km);
+        cm_pmove_limits limits = cm_pmove_limits_of(&km);
+        limits.tries = 20;
         for (int batch = 0; batch < 3; batch++) {
-            long kept = cm_polish_moves(&km, 20, 10, &slide, NULL);
+            long kept = cm_polish_moves(&km, &limits, 10, &slide, NULL);
             double after = cm_kmesh_min_angle(&km);
             CHECK_MSG(kept >= 0, "polish moves failed");
             CHECK_MSG(cm_kmesh_check(&km), "polish moves with slides: seed %d left an invalid mesh", seed);

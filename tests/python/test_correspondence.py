@@ -66,6 +66,7 @@ def test_pin_corners():
     sa, sb = r.boundary_source
     both = (sa["t"] == 0) & (sb["t"] == 0)
     assert set(zip(ca, cb)) <= set(zip(sa["edge"][both], sb["edge"][both]))
+    assert r.stats["correspondence_choice"] == "corners"
     with pytest.raises(compatmesh.InputError, match="polygon 1 has no corner to pin"):
         compatmesh.triangulate([a, ring(20, jitter=False)], pin_corners_deg=30)
     with pytest.raises(compatmesh.InputError, match="corner pins need the arclength or auto"):

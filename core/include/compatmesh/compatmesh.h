@@ -264,8 +264,8 @@ typedef enum cm_correspondence_choice {
      * max_edge; results of cm_result_from_meshes). */
     CM_CHOICE_INDEX = 0,
     /* Normalised arc length from every polygon's first vertex or between
-     * pins: CM_CORRESPOND_ARCLENGTH, and AUTO or SIMILARITY with pins or
-     * pin_corners_deg (arc length between the pins). */
+     * pins: CM_CORRESPOND_ARCLENGTH, and AUTO or SIMILARITY with pins (arc
+     * length between the pins). */
     CM_CHOICE_ARCLENGTH,
     /* AUTO: the conformal correspondence (the higher ceiling; where the
      * ceilings tie, the higher correspondence bound). */
@@ -277,11 +277,16 @@ typedef enum cm_correspondence_choice {
     /* AUTO or SIMILARITY: the polygons are affine images of one another up
      * to their first vertex, so every vertex is pinned to its image (no
      * distortion of the correspondence). */
-    CM_CHOICE_AFFINE
+    CM_CHOICE_AFFINE,
+    /* Arc length between corner pins: pin_corners_deg, or AUTO's last
+     * resort on polygons without holes where every other pairing stays
+     * far below the remesher's aim (the corners turning by more than 90
+     * degrees pinned, as pin_corners_deg = 90 would). */
+    CM_CHOICE_CORNERS
 } cm_correspondence_choice;
 
 /* Its name as the CLI's report.json and the Python module give it:
- * "index", "arclength", "conformal", "similarity" or "affine"
+ * "index", "arclength", "conformal", "similarity", "affine" or "corners"
  * ("unknown" for a value outside the enum). */
 CM_API const char *cm_correspondence_choice_name(cm_correspondence_choice choice);
 

@@ -49,12 +49,6 @@
  * (star_n1000: the run took 6 times its CPU). */
 #define CM_PMOVE_RINGS 2
 #define CM_PMOVE_TRIS_MAX 600
-/* L-BFGS iterations per geometry of each local polish; twice that where
- * boundary points may be added (arc length, auto: km->between), whose
- * glyph pairs gain with a polish that tells a move's worth better
- * (bench/REMESH.md, "A longer polish-scored stage in auto"). */
-#define CM_PMOVE_ITERATIONS 100
-#define CM_PMOVE_ITERATIONS_SPLITS 200
 /* The worst triangles (by slack) a round looks at. */
 #define CM_PMOVE_WORST 8
 /* The rise of the smallest slack around a move that keeps it (radians);
@@ -64,12 +58,31 @@
  * were used up on every pair measured). */
 #define CM_PMOVE_GAIN 1e-5
 #define CM_PMOVE_POLISH_GAIN 1e-3
-/* Tries in a row without a kept move that end the stage: later gains are
+/* How long the stage works (cm_pmove_limits), by whether boundary points
+ * may be added (arc length, auto: km->between).
+ *
+ * The share of its aim the worst triangle must have reached for the
+ * stage to run: further below, what holds it is the correspondence (index
+ * mode's hard pairs end near 0.4 of it), and 200 tries there cost 60 %
+ * more CPU for about 1 % of angle. Where boundary points may be added,
+ * the boundary can give way, and on the auto glyph pairs the stage raised
+ * pairs ending at 0.35-0.5 of their aim too (bench/REMESH.md, "Boundary
+ * points in the polish-scored moves").
+ *
+ * Tries in a row without a kept move that end the stage: later gains are
  * rare (the same angles on the pairs that gain, bench/REMESH.md), and a
  * pair where nothing gains otherwise pays for every try of the budget.
- * Where boundary points may be added, three times as many. */
-#define CM_PMOVE_IDLE 40
-#define CM_PMOVE_IDLE_SPLITS 120
+ *
+ * Where boundary points may be added, three times the tries and the idle
+ * stop and twice each local polish's L-BFGS iterations (per geometry): a
+ * polish that tells a move's worth better, and the auto glyph pairs at
+ * min(20, c/2) rose from 71 to 81 of 88 for 1.6 times the CPU, geometric
+ * mean (bench/REMESH.md, "A longer polish-scored stage in auto"); auto
+ * has no time target to keep. */
+static const cm_pmove_limits cm_pmove_fixed = {.share = 0.5, .tries = 200, .idle = 40, .iterations = 100};
+static const cm_pmove_limits cm_pmove_between = {.share = 0.25, .tries = 600, .idle = 120, .iterations = 200};
+
+cm_pmove_limits cm_pmove_limits_of(const cm_kmesh *km) { return km->between ? cm_pmove_between : cm_pmove_fixed; }
 
 enum pmove { PM_POLISH, PM_FLIP, PM_SPLIT, PM_COLLAPSE, PM_INSERT, PM_KINDS };
 
@@ -92,8 +105,7 @@ typedef struct mover {
     double need, least;
     uint64_t *failed; /* moves undone since the last kept one */
     size_t nfailed, failed_cap;
-    int iterations;   /* of each local polish */
-    long idle_limit;  /* tries in a row without a kept move that end the stage */
+    const cm_pmove_limits *limits;
 } mover;
 
 /* The vertices within CM_PMOVE_RINGS rings of seeds[0 .. ns) (live
@@ -251,7 +263,7 @@ static int polish_ring(mover *x, int *hopeless)
             if ((!x->slide || moves_in(x, g, x->var.a[j])) && cm_ibuf_push(&x->gvar, x->var.a[j])) return -1;
         if (!x->gvar.n) continue;
         int r = cm_maxmin_local(km->tri, km->xy[g], (size_t)km->nv, x->gvar.a, x->gvar.n, x->tris.a, x->tris.n,
-                                x->slide ? &x->labels : NULL, g, x->iterations, x->progress, x->pts,
+                                x->slide ? &x->labels : NULL, g, x->limits->iterations, x->progress, x->pts,
                                 x->pts_t);
         if (r < 0) return -1;
         for (size_t j = 0; r > 0 && j < x->gvar.n; j++) {
@@ -342,18 +354,15 @@ static int try_move(mover *x, enum pmove kind, int32_t c, double least)
     return cm_kmesh_tx_rollback(km) ? -1 : 0;
 }
 
-static int tries_left(const mover *x, long tries, long idle, long max_tries)
+static int tries_left(const mover *x, long tries, long idle)
 {
-    return tries < max_tries && idle < x->idle_limit;
+    return tries < x->limits->tries && idle < x->limits->idle;
 }
 
-long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_maxmin_slide *slide, cm_progress *progress)
+long cm_polish_moves(cm_kmesh *km, const cm_pmove_limits *limits, long steiner_left, cm_maxmin_slide *slide,
+                     cm_progress *progress)
 {
-    mover x = {.km = km,
-               .progress = progress,
-               .slide = slide && km->bt ? slide : NULL,
-               .iterations = km->between ? CM_PMOVE_ITERATIONS_SPLITS : CM_PMOVE_ITERATIONS,
-               .idle_limit = km->between ? CM_PMOVE_IDLE_SPLITS : CM_PMOVE_IDLE};
+    mover x = {.km = km, .progress = progress, .slide = slide && km->bt ? slide : NULL, .limits = limits};
     if (x.slide) {
         x.labels = *slide;
         x.edge_rows = calloc(km->k, sizeof *x.edge_rows), x.t_rows = calloc(km->k, sizeof *x.t_rows);
@@ -365,18 +374,18 @@ long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_maxmin_
     int32_t worst[CM_PMOVE_WORST], work[2 * CM_PMOVE_WORST], near[12];
     long tries = 0, kept = 0, idle = 0;
     double least = cm_kmesh_min_angle(km);
-    while (tries_left(&x, tries, idle, max_tries) && cm_kmesh_min_slack(km) < 0) {
+    while (tries_left(&x, tries, idle) && cm_kmesh_min_slack(km) < 0) {
         int32_t nw = cm_heap_smallest(&km->tq, CM_PMOVE_WORST, 0.0, worst, work);
         int gained = 0;
-        for (int32_t i = 0; i < nw && !gained && tries_left(&x, tries, idle, max_tries); i++) {
+        for (int32_t i = 0; i < nw && !gained && tries_left(&x, tries, idle); i++) {
             if (!cm_kmesh_tri_live(km, worst[i])) continue;
             int m = cm_kmesh_corners_near(km, worst[i], near);
-            for (int kind = 0; kind < PM_KINDS && !gained && tries_left(&x, tries, idle, max_tries); kind++) {
+            for (int kind = 0; kind < PM_KINDS && !gained && tries_left(&x, tries, idle); kind++) {
                 int adds = kind == PM_SPLIT || kind == PM_INSERT;
                 if (adds && steiner_left <= 0) continue;
                 /* the polish alone and an insertion: on the worst triangle only */
                 int mk = kind == PM_POLISH || kind == PM_INSERT ? 1 : m;
-                for (int j = 0; j < mk && !gained && tries_left(&x, tries, idle, max_tries); j++) {
+                for (int j = 0; j < mk && !gained && tries_left(&x, tries, idle); j++) {
                     if (km->tri[near[j]] < 0) continue;
                     uint64_t key = move_key(km, (enum pmove)kind, near[j]);
                     if (failed_before(&x, key)) continue;

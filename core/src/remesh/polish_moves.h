@@ -8,19 +8,33 @@
 #include "remesh/kmesh.h"
 #include "remesh/maxmin.h"
 
+/* How long the stage works: it runs where the worst triangle's slack is
+ * at least -(1 - share) of the aim; at most `tries` moves, ending after
+ * `idle` in a row without a kept one; `iterations` L-BFGS iterations per
+ * geometry in each local polish. */
+typedef struct cm_pmove_limits {
+    double share;
+    long tries, idle;
+    int iterations;
+} cm_pmove_limits;
+
+/* The limits for km: longer where boundary points may be added
+ * (km->between; polish_moves.c says why). */
+cm_pmove_limits cm_pmove_limits_of(const cm_kmesh *km);
+
 /* Tries moves (a polish alone, a flip, a split, a Steiner vertex's
  * removal, an insertion) around the triangles furthest below their aim,
  * each with the local polish, keeping one only when the smallest slack of
  * the triangles around it rose and the smallest angle of the whole mesh
  * (all geometries) did not fall; every kept state is exactly valid in
- * every geometry and the connectivity stays shared. At most max_tries
- * moves, ending after CM_PMOVE_IDLE in a row without a kept one; at most
- * steiner_left vertices added. With slide (its place, ctx and max_piece;
+ * every geometry and the connectivity stays shared. As long as limits
+ * allow; at most steiner_left vertices added. With slide (its place, ctx and max_piece;
  * NULL where the correspondence is not the tool's to choose), the
  * polish after each move also slides the boundary points that lie inside
  * an input edge along it, as the joint polish does, and adds to
  * slide->slid the points the kept moves slid. Returns the moves kept, or
  * -1 out of memory or cancelled (progress says which). */
-long cm_polish_moves(cm_kmesh *km, long max_tries, long steiner_left, cm_maxmin_slide *slide, cm_progress *progress);
+long cm_polish_moves(cm_kmesh *km, const cm_pmove_limits *limits, long steiner_left, cm_maxmin_slide *slide,
+                     cm_progress *progress);
 
 #endif

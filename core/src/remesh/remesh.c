@@ -44,8 +44,8 @@
  * CM_STEP_OUT_WORST.
  *
  * The result written, the joint max-min polish moves its vertices
- * (maxmin.c); where the worst triangle has reached CM_PMOVE_SHARE of its
- * aim (CM_PMOVE_SHARE_SPLITS where boundary edges may be split), moves
+ * (maxmin.c); where the worst triangle has reached a share of its aim
+ * (cm_pmove_limits: lower where boundary edges may be split), moves
  * scored by that polish (polish_moves.c) then change the connectivity
  * the polish cannot, and the mesh is written again. Where the
  * correspondence is the tool's to choose, a second round of those moves
@@ -167,24 +167,6 @@
  * 8-9 % more CPU; 1,600 gave 0.7 % (index) and 1.3 % (auto) more angle
  * for 14-16 % more CPU. */
 #define CM_MAXMIN_ITERATIONS 800
-/* Moves the polish-scored stage may try (polish_moves.c), and the share
- * of its aim the worst triangle must have reached for the stage to run:
- * further below, what holds it is the correspondence (index mode's hard
- * pairs end near 0.4 of it), and 200 tries there cost 60 % more CPU for
- * about 1 % of angle. */
-#define CM_PMOVE_TRIES 200
-#define CM_PMOVE_SHARE 0.5
-/* Where boundary points may be added (arc length, auto), three times as
- * many tries: with the longer local polish and idle stop there
- * (polish_moves.c) the auto glyph pairs at min(20, c/2) rose from 71 to
- * 81 of 88 for 1.6 times the CPU, geometric mean (bench/REMESH.md, "A longer
- * polish-scored stage in auto"); auto has no time target to keep. */
-#define CM_PMOVE_TRIES_SPLITS 600
-/* The share where boundary edges may be split (arc length, auto): there
- * the boundary can give way, and on the auto glyph pairs the stage
- * raised pairs ending at 0.35-0.5 of their aim too (bench/REMESH.md,
- * "Boundary points in the polish-scored moves"). */
-#define CM_PMOVE_SHARE_SPLITS 0.25
 
 typedef struct tabu_set { /* keys (vertex pairs, forced moves) -> counts */
     uint64_t *keys;       /* 0: empty slot */
@@ -993,14 +975,13 @@ static cm_status polish_moves(remesher *x, cm_mesh *mesh, size_t n, cm_remesh_bo
     const int32_t *const *edge = splits ? (const int32_t *const *)splits->edge : NULL;
     const double *const *t = splits ? (const double *const *)splits->t : NULL;
     if (cm_kmesh_read_back(km, mesh, edge, t)) return CM_ERR_NO_MEMORY;
-    double share = km->between ? CM_PMOVE_SHARE_SPLITS : CM_PMOVE_SHARE;
-    if (cm_kmesh_min_slack(km) < -(1 - share) * x->target) return CM_OK;
-    long tries = km->between ? CM_PMOVE_TRIES_SPLITS : CM_PMOVE_TRIES;
-    long kept = cm_polish_moves(km, tries, budget_of(x->o, n) - (km->live_v - km->n), NULL, x->progress);
+    cm_pmove_limits limits = cm_pmove_limits_of(km);
+    if (cm_kmesh_min_slack(km) < -(1 - limits.share) * x->target) return CM_OK;
+    long kept = cm_polish_moves(km, &limits, budget_of(x->o, n) - (km->live_v - km->n), NULL, x->progress);
     if (kept < 0) return stop_status(x);
     if (splits && splits->place) { /* the boundary points' turn */
         cm_maxmin_slide slide = {NULL, NULL, splits->place, splits->ctx, splits->max_piece, 0, NULL, NULL};
-        long more = cm_polish_moves(km, tries, budget_of(x->o, n) - (km->live_v - km->n), &slide,
+        long more = cm_polish_moves(km, &limits, budget_of(x->o, n) - (km->live_v - km->n), &slide,
                                     x->progress);
         if (more < 0) return stop_status(x);
         kept += more, splits->slid += slide.slid;
