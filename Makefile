@@ -15,7 +15,7 @@ DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev liblbfgs-dev libfr
 
 # Only `make bench` needs these: CGAL meshes each polygon alone, to compare;
 # Gmsh's STL models give the remesh bench real sections.
-BENCH_PACKAGES = libcgal-dev gmsh-doc
+BENCH_PACKAGES = libcgal-dev gmsh-doc occt-misc
 
 .PHONY: all deps bench-deps build demo test bench fuzz soak clean install-meshlab-plugin
 

@@ -33,10 +33,12 @@ def read_stl(path, workdir):
     return mesh.points.astype(float), mesh.cells_dict["triangle"]
 
 
-def section_loops(points, triangles, axis, height):
+def section_loops(points, triangles, axis, height, closed_only=False):
     """The loops where the plane {x[axis] = height} cuts the surface, in the
     plane's other two coordinates. Each crossing mesh edge gives one point;
-    the two points of a cut triangle are joined."""
+    the two points of a cut triangle are joined. closed_only: None unless
+    every crossing edge joins exactly two cut triangles (the surface is
+    closed and manifold along the cut, so every chain is a loop)."""
     side = points[:, axis] > height
     keep = [d for d in range(3) if d != axis]
     where, links = {}, {}
@@ -51,6 +53,8 @@ def section_loops(points, triangles, axis, height):
         if len(cut) == 2:
             links.setdefault(cut[0], []).append(cut[1])
             links.setdefault(cut[1], []).append(cut[0])
+    if closed_only and (not links or any(len(v) != 2 for v in links.values())):
+        return None
     loops, seen = [], set()
     for start in links:
         if start in seen:

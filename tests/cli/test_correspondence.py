@@ -264,3 +264,20 @@ def test_auto_pins_corners_where_every_other_pairing_ends_short(cm, tmp_path):
     assert runs["auto"]["correspondence_choice"] == "corners"
     assert runs["auto"]["valid"]
     assert min(m["min_angle_deg"] for m in runs["auto"]["meshes"]) >= 15.0
+
+
+SECTIONS = os.path.join(os.path.dirname(__file__), "sections")
+
+
+def test_auto_passes_over_a_conformal_pairing_crowded_beyond_doubles(cm, tmp_path):
+    # Two sections of a thin-walled part (OpenCASCADE's TR12J.stl, occt-misc,
+    # cut by bench/section_soak.py at 3/16 and 5/16 of its height; 375 and
+    # 394 vertices): the conformal map crowds 354 boundary points within a
+    # few units in the last place of each other, where neither the partition
+    # nor the overlay finds room for a Steiner vertex (the run failed after
+    # minutes). Auto takes the similarity choice instead.
+    a, b = os.path.join(SECTIONS, "TR12J_z3_16_a.xy"), os.path.join(SECTIONS, "TR12J_z5_16_b.xy")
+    r = cm("triangulate", a, b, "-o", "out", "--no-preview", "--correspondence", "auto", "--no-remesh")
+    assert r.returncode == 0, r.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert report["valid"] and report["correspondence_choice"] == "similarity"

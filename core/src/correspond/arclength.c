@@ -23,6 +23,23 @@ void cm_boundary_map_clear(cm_boundary_map *map)
     memset(map, 0, sizeof *map);
 }
 
+double cm_boundary_map_least_piece(const cm_boundary_map *map)
+{
+    double least = HUGE_VAL;
+    for (size_t g = 0; g < map->k; g++) {
+        const double *xy = map->xy[g];
+        double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL}, piece = HUGE_VAL;
+        for (size_t i = 0; i < map->n; i++) {
+            const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % map->n);
+            for (int c = 0; c < 2; c++) lo[c] = fmin(lo[c], p[c]), hi[c] = fmax(hi[c], p[c]);
+            piece = fmin(piece, hypot(q[0] - p[0], q[1] - p[1]));
+        }
+        double size = hypot(hi[0] - lo[0], hi[1] - lo[1]);
+        if (size > 0) least = fmin(least, piece / size);
+    }
+    return least;
+}
+
 double *cm_arc_lengths(const double *xy, size_t n, int reversed, size_t start)
 {
     double *arc = malloc((n + 1) * sizeof *arc);

@@ -20,6 +20,10 @@ typedef struct cm_boundary_map {
 
 void cm_boundary_map_clear(cm_boundary_map *map);
 
+/* The shortest boundary edge of any polygon of the map as a share of that
+ * polygon's size (its bounding box's diagonal); HUGE_VAL for an empty map. */
+double cm_boundary_map_least_piece(const cm_boundary_map *map);
+
 /* The input index of counter-clockwise position c of a polygon of n
  * vertices (reversed: the input is clockwise; vertex 0 stays first). */
 static inline size_t cm_ccw_input(size_t c, size_t n, int reversed) { return reversed ? (n - c) % n : c; }
