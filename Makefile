@@ -14,7 +14,8 @@ DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev liblbfgs-dev libfr
   libdouble-conversion-dev libpng-dev fontconfig
 
 # Only `make bench` needs these: CGAL meshes each polygon alone, to compare;
-# Gmsh's STL models give the remesh bench real sections.
+# Gmsh's and OpenCASCADE's STL models give the benches real sections
+# (bench/stl_sections.py, bench/section_soak.py).
 BENCH_PACKAGES = libcgal-dev gmsh-doc occt-misc
 
 .PHONY: all deps bench-deps build demo test bench fuzz soak clean install-meshlab-plugin
