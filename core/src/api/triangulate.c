@@ -441,21 +441,22 @@ static cm_status bound_before(cm_result *r, const double *const *polygons, const
     return s;
 }
 
-/* The conformal correspondence's boundaries into out (*found = 0 when it
- * cannot be had, out then untouched), its parameter tempered by power
- * (conformal.h): the others' points on a polygon's edges where the
- * conformal parameter puts them, or with `linear` where it would be if it
- * were linear between the polygon's vertices. */
 /* A conformal pairing whose boundary has a piece shorter than this share
  * of its polygon's size is not taken: a conformal map crowds a long thin
  * part beyond what tempering undoes, and pieces of a few units in the last
  * place leave the construction no double for a Steiner vertex beside them
  * (two sections of a thin-walled part, OpenCASCADE's TR12J: 354 boundary
  * points within ulps of each other, the partition stuck and the overlay
- * failing after minutes; the similarity choice meshes it in 3 s). The
- * bench's 201 pairs have 2.8e-6 at least. */
+ * failing after minutes; auto with the similarity choice meshes it in
+ * 6.5 s). The bench's 201 pairs have 2.8e-6 at least. */
 #define CM_CROWDED_PIECE 1e-9
 
+/* The conformal correspondence's boundaries into out (*found = 0 when it
+ * cannot be had, out then untouched, or is crowded, out then cleared), its
+ * parameter tempered by power (conformal.h): the others' points on a
+ * polygon's edges where the conformal parameter puts them, or with
+ * `linear` where it would be if it were linear between the polygon's
+ * vertices. */
 static cm_status conformal(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
                            const int *orientation, int linear, double power, cm_boundary_map *out, int *found)
 {
