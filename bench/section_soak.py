@@ -43,6 +43,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stl_sections  # noqa: E402
+from make_results import corner_angles  # noqa: E402
 
 MODEL_GLOBS = ["/usr/share/doc/gmsh-doc/**/*.stl.gz", "/usr/share/opencascade/data/stl/*.stl"]
 
@@ -100,16 +101,10 @@ def matched_holes(first, second):
 
 
 def smallest_corner(loops):
-    """The smallest interior angle (degrees) of a region's loops (outer
-    counter-clockwise, holes clockwise: the material on the left)."""
-    least = 360.0
-    for l in loops:
-        prev, nxt = np.roll(l, 1, axis=0) - l, np.roll(l, -1, axis=0) - l
-        cross = nxt[:, 0] * prev[:, 1] - nxt[:, 1] * prev[:, 0]
-        dot = (nxt * prev).sum(axis=1)
-        angle = np.degrees(np.arctan2(cross, dot)) % 360.0
-        least = min(least, float(angle.min()))
-    return least
+    """The smallest interior angle (degrees) of a region's loops, seen from
+    the material: inside the outer loop, outside each hole."""
+    outer = corner_angles(loops[0])
+    return min(outer + [360.0 - a for hole in loops[1:] for a in corner_angles(hole)])
 
 
 def write_region(path, loops):
@@ -124,12 +119,7 @@ def write_region(path, loops):
 
 def sections(path, heights, workdir):
     """(axis, j, loops or None, why) for every cut of one model."""
-    if path.endswith(".gz"):
-        points, triangles = stl_sections.read_stl(path, workdir)
-    else:
-        import meshio
-        mesh = meshio.read(path)
-        points, triangles = mesh.points.astype(float), mesh.cells_dict["triangle"]
+    points, triangles = stl_sections.read_stl(path, workdir)
     lo, hi = points.min(axis=0), points.max(axis=0)
     out = []
     for axis in range(3):

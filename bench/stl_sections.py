@@ -24,11 +24,14 @@ PAIRS = [("object_z-6_z6", (OBJECT, 2, -6.0), (OBJECT, 2, 6.0)),
 
 
 def read_stl(path, workdir):
-    """Points and triangles of a gzipped STL file (meshio reads it)."""
-    plain = os.path.join(workdir, os.path.basename(path)[:-3])
-    if not os.path.exists(plain):
-        with gzip.open(path, "rb") as src, open(plain, "wb") as dst:
-            shutil.copyfileobj(src, dst)
+    """Points and triangles of an STL file, gzipped (unpacked into workdir)
+    or not (meshio reads it)."""
+    plain = path
+    if path.endswith(".gz"):
+        plain = os.path.join(workdir, os.path.basename(path)[:-3])
+        if not os.path.exists(plain):
+            with gzip.open(path, "rb") as src, open(plain, "wb") as dst:
+                shutil.copyfileobj(src, dst)
     mesh = meshio.read(plain)
     return mesh.points.astype(float), mesh.cells_dict["triangle"]
 
