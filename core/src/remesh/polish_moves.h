@@ -28,10 +28,10 @@ cm_pmove_limits cm_pmove_limits_of(const cm_kmesh *km);
  * the triangles around it rose and the smallest angle of the whole mesh
  * (all geometries) did not fall; every kept state is exactly valid in
  * every geometry and the connectivity stays shared. As long as limits
- * allow; at most steiner_left vertices added. With slide (its place, ctx and max_piece;
- * NULL where the correspondence is not the tool's to choose), the
- * polish after each move also slides the boundary points that lie inside
- * an input edge along it, as the joint polish does, and adds to
+ * allow; at most steiner_left vertices added. With slide (its place, ctx
+ * and max_piece; NULL where the correspondence is not the tool's to
+ * choose), the polish after each move also slides the boundary points that
+ * lie inside an input edge along it, as the joint polish does, and adds to
  * slide->slid the points the kept moves slid. Returns the moves kept, or
  * -1 out of memory or cancelled (progress says which). */
 long cm_polish_moves(cm_kmesh *km, const cm_pmove_limits *limits, long steiner_left, cm_maxmin_slide *slide,
