@@ -9,8 +9,8 @@ the cut gives them (no resampling: the two sections' counts differ).
 Two runs per pair, both `--correspondence auto` (the default for
 different counts): the outer loops alone, and, where both sections have
 the same number of holes (one or more), the sections with their holes,
-the second's holes ordered to match the first's by nearest vertex mean
-(loop j of one polygon corresponds to loop j of the other).
+each section's holes largest first (which hole pairs with which is auto's
+to find: by position, through the outer loops' pairing).
 Sections whose loops do not all close (a surface that is not watertight
 there) or that are not simple are set aside and counted, as are pairs
 above --max-vertices (summed over both polygons).
@@ -86,18 +86,6 @@ def region(loops):
     outer = outer if stl_sections.signed_area(outer) > 0 else outer[::-1]
     holes = [h if stl_sections.signed_area(h) < 0 else h[::-1] for h in holes]
     return [outer] + holes
-
-
-def matched_holes(first, second):
-    """second's loops with its holes in the order of first's, each matched
-    to the hole whose vertex mean is nearest (least total distance): the
-    tool pairs loop j with loop j, and a section's loops come in no
-    particular order."""
-    from scipy.optimize import linear_sum_assignment
-    ca = np.array([h.mean(axis=0) for h in first[1:]])
-    cb = np.array([h.mean(axis=0) for h in second[1:]])
-    _, order = linear_sum_assignment(np.hypot(*(ca[:, None, :] - cb[None, :, :]).transpose(2, 0, 1)))
-    return [second[0]] + [second[1 + j] for j in order]
 
 
 def smallest_corner(loops):
@@ -200,7 +188,7 @@ def main():
                 base = "%s_%s%d-%d" % (model, "xyz"[axis], j, j + 1)
                 runs = [("outer", [la[0]], [lb[0]])]
                 if len(la) == len(lb) > 1:
-                    runs.append(("holes", la, matched_holes(la, lb)))
+                    runs.append(("holes", la, lb))
                 for kind, ra, rb in runs:
                     nv = sum(len(l) for l in ra) + sum(len(l) for l in rb)
                     if nv > args.max_vertices:

@@ -89,7 +89,8 @@ enum {
      "default when the counts differ), with arclength's\n"                    \
      "output: conformal, the inputs' maps onto the disk\n"                    \
      "made to agree, their crowding tempered (with holes\n"                   \
-     "the outer loops so; every hole from the start whose\n"                  \
+     "the outer loops so; the holes paired by position\n"                     \
+     "where that is one-to-one, each from the start whose\n"                  \
      "points lie nearest, carried radially through the\n"                     \
      "outer loops' pairing); with --pin-corners, arc\n"                      \
      "length from the starts that align the inputs best\n"                   \

@@ -128,6 +128,7 @@ static json_t *head(tree *t, const cm_stats *stats)
     set_count(t, root, "triangles", stats->triangles);
     set_count(t, root, "holes", stats->holes);
     set_count(t, root, "bridges", stats->bridges);
+    set_count(t, root, "holes_moved", stats->holes_moved);
     return root;
 }
 

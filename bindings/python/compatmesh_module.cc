@@ -385,6 +385,7 @@ py::dict stats_of(const cm_result *result)
   stats["steiner"] = s->steiner;
   stats["holes"] = s->holes;
   stats["bridges"] = s->bridges;
+  stats["holes_moved"] = s->holes_moved;
   stats["triangles"] = s->triangles;
   stats["reversed_input"] = bool(s->reversed_input);
   stats["fallback_count"] = s->fallback_count;
@@ -1028,7 +1029,7 @@ Common attributes (arrays are numpy arrays):
                     "dict of int32 arrays: next, to_vertex, face (-1 on the boundary), "
                     "vertex_halfedge, face_halfedge; h ^ 1 is the opposite of h")
       .def_readonly("stats", &Result::stats,
-                    "dict: the fields of cm_stats (n, k, vertices, steiner, holes, bridges, triangles, "
+                    "dict: the fields of cm_stats (n, k, vertices, steiner, holes, bridges, holes_moved, triangles, "
                     "reversed_input, fallback_count, steiner_before_remesh, remesh_iterations, remesh_aim_deg, "
                     "ceiling_deg, corner_fan_cap_deg, correspondence_bound_deg, modulus_distortion, "
                     "distortion_quad, correspondence_bound_before_deg (None unless auto chose the starts), "
@@ -1192,8 +1193,10 @@ options: keyword arguments named like the fields of the C struct cm_options,
                     pins), "auto" (the default when the counts differ;
                     output as arclength: conformal, the polygons' maps onto
                     the disk made to agree, their crowding tempered; with
-                    holes the outer loops so, every hole from the start
-                    nearest, carried radially through the outer loops; with
+                    holes the outer loops so, the holes paired by position
+                    where that is one-to-one (stats["holes_moved"]), every
+                    hole from the start nearest, carried radially through
+                    the outer loops; with
                     pin_corners_deg, arc length from the starts that
                     align the polygons best up to a similarity),
                     "similarity" (that alignment for all polygons), or a

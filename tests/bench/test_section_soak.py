@@ -45,9 +45,3 @@ def test_lever_sections(tmp_path):
     assert all(x["status"] == 0 and x["valid"] for x in runs)
     assert "| outer loops |" in r.stdout
 
-
-def test_holes_matched_by_position():
-    outer = square(0, 0, 10)
-    left, right = square(1, 1, 2)[::-1], square(7, 1, 2)[::-1]
-    matched = ss.matched_holes([outer, left, right], [outer, right + 0.1, left - 0.1])
-    assert np.array_equal(matched[1], left - 0.1) and np.array_equal(matched[2], right + 0.1)

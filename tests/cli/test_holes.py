@@ -134,6 +134,48 @@ def test_plate_three_bolt_holes(cm, tmp_path):
     check_output(tmp_path / "out", ["plate", "moved"], [PLATE, PLATE_MOVED], 3)
 
 
+# A plate with three bolt holes whose outline no affine map takes onto
+# itself (a square's turns would pair its outline four ways alike), and
+# that plate sheared and turned.
+BLOB_PLATE = [[((2 + 0.3 * math.cos(3 * t) + 0.2 * math.sin(2 * t)) * math.cos(t),
+                (2 + 0.3 * math.cos(3 * t) + 0.2 * math.sin(2 * t)) * math.sin(t))
+               for t in (2 * math.pi * i / 30 for i in range(30))]] + \
+    [circle(cx, cy, 0.3, 10, -1) for cx, cy in ((-0.7, -0.6), (0.7, -0.5), (0, 0.8))]
+BLOB_PLATE_MOVED = [[(math.cos(0.5) * (x + 0.4 * y) - math.sin(0.5) * y,
+                      math.sin(0.5) * (x + 0.4 * y) + math.cos(0.5) * y) for x, y in loop] for loop in BLOB_PLATE]
+
+
+def test_auto_pairs_holes_by_position(cm, tmp_path):
+    """A section's loops come in no particular order: with auto, the moved
+    plate's bolt holes listed in another order pair with the plate's holes
+    at the same places, and the meshes are the very ones the matching
+    order gives (the second's output lists its holes in the first's
+    order; report.json's boundary_source names each vertex's input loop)."""
+    (tmp_path / "plate.xy").write_text(xy_text(BLOB_PLATE))
+    (tmp_path / "moved.xy").write_text(xy_text(BLOB_PLATE_MOVED))
+    shuffled = [BLOB_PLATE_MOVED[0], BLOB_PLATE_MOVED[3], BLOB_PLATE_MOVED[1], BLOB_PLATE_MOVED[2]]
+    (tmp_path / "shuffled.xy").write_text(xy_text(shuffled))
+    runs = {}
+    for second in ("moved", "shuffled"):
+        result = cm("triangulate", "plate.xy", f"{second}.xy", "--out-dir", second, "--correspondence", "auto")
+        assert result.returncode == 0, result.stderr
+        runs[second] = json.loads((tmp_path / second / "report.json").read_text())
+    assert runs["moved"]["holes_moved"] == 0 and runs["shuffled"]["holes_moved"] == 3
+    assert (tmp_path / "moved" / "plate.off").read_bytes() == (tmp_path / "shuffled" / "plate.off").read_bytes()
+    assert (tmp_path / "moved" / "moved.off").read_bytes() == (tmp_path / "shuffled" / "shuffled.off").read_bytes()
+    starts = [0]
+    for loop in shuffled:
+        starts.append(starts[-1] + len(loop))
+    loop_of = lambda e: max(l for l in range(4) if starts[l] <= e)  # noqa: E731
+    sources = runs["shuffled"]["meshes"][1]["boundary_source"]
+    places = []  # the shuffled input loop of each output loop, in output order
+    for e, _ in sources:
+        if not places or places[-1] != loop_of(e):
+            places.append(loop_of(e))
+    assert places == [0, 2, 3, 1]
+    assert min(m["min_angle_deg"] for m in runs["shuffled"]["meshes"]) >= 20
+
+
 def bad(cm, tmp_path, a_loops, b_text, pattern, *extra):
     import re
     (tmp_path / "a.xy").write_text(xy_text(a_loops))

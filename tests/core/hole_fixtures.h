@@ -165,6 +165,22 @@ static inline void hf_seven_permuted(shape *a, shape *b)
     }
 }
 
+/* The seven holes of hf_seven_permuted with other vertex counts in the
+ * other polygon (48 on the disc, 8 on each hole), so that auto is the
+ * default: a section's holes listed in another order than its
+ * neighbour's. */
+static inline void hf_seven_permuted_counts(shape *a, shape *b)
+{
+    add_circle(a, 0, 0, 2, 40, 1);
+    add_circle(b, 0, 0, 2, 48, 1);
+    double places[7][2] = {{-1, -0.6}, {0, -0.6}, {1, -0.6}, {-1, 0.6}, {0, 0.6}, {1, 0.6}, {0, 1.4}};
+    int order[7] = {5, 3, 6, 0, 2, 4, 1};
+    for (int h = 0; h < 7; h++) {
+        add_circle(a, places[h][0], places[h][1], 0.25, 6, -1);
+        add_circle(b, places[order[h]][0], places[order[h]][1], 0.25, 8, -1);
+    }
+}
+
 /* A square with an off-centre square hole (16 + 8 vertices) against a disc
  * with an off-centre round hole of other sizes (23 + 11), the disc's loops
  * the other way round: loops of different sizes. */
@@ -273,6 +289,7 @@ static inline size_t hole_fixture_list(const hole_fixture **list)
         {"five triangle holes", hf_five_triangles},
         {"holes on swapped sides", hf_swapped_sides},
         {"seven holes permuted", hf_seven_permuted},
+        {"seven holes permuted, other counts", hf_seven_permuted_counts},
         {"square/disc, sizes differ", hf_sizes_differ},
         {"egg, hole renumbered", hf_egg},
         {"crowded hole", hf_crowded_hole_reversed},

@@ -150,10 +150,11 @@ static void test_holes(void)
  * crowd_pair's run); success must keep the expected boundary size. */
 static cm_status run_auto_loops(const shape *pair, size_t boundary, const char *name, char *where, size_t size)
 {
-    cm_loops in[2] = {{pair[0].xy, pair[0].sizes, 2}, {pair[1].xy, pair[1].sizes, 2}};
+    cm_loops in[2] = {{pair[0].xy, pair[0].sizes, pair[0].loops}, {pair[1].xy, pair[1].sizes, pair[1].loops}};
     cm_options o;
     cm_options_init(&o);
     o.correspondence = CM_CORRESPOND_AUTO;
+    o.remesh = pair[0].loops <= 2; /* many holes: the construction's allocations, not the remesher's */
     cm_result *r = NULL;
     cm_status s = cm_triangulate_loops(in, 2, &o, &r);
     snprintf(where, size, "%s: %s", name, r ? cm_result_message(r) : "out of memory (no handle)");
@@ -217,6 +218,21 @@ static void test_holes_remesher_splits(void)
 {
     hf_crowded_hole(&crowd[0], &crowd[1], -1);
     fail_each_allocation("holes, remesher's boundary splits", run_crowd);
+}
+
+/* Seven holes listed in another order (hole_fixtures.h): auto pairs them
+ * by position before anything else about them. */
+static shape seven[2];
+
+static cm_status run_seven(char *where, size_t size)
+{
+    return run_auto_loops(seven, 104, "seven holes permuted", where, size); /* boundary vertices, measured */
+}
+
+static void test_holes_matched(void)
+{
+    hf_seven_permuted_counts(&seven[0], &seven[1]);
+    fail_each_allocation("holes matched by position", run_seven);
 }
 
 /* The overlay of two stars: its intersection points are GMP rationals, so
@@ -323,6 +339,7 @@ int main(void)
     test_holes();
     test_holes_cap_split();
     test_holes_remesher_splits();
+    test_holes_matched();
     test_above_table_limit();
     return check_summary("test_alloc_failures");
 }

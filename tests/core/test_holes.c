@@ -349,12 +349,15 @@ static size_t input_loop(const shape *s, long v, size_t *start, size_t *size)
 /* The boundary contract of an arc-length result with holes, polygon by
  * polygon: every boundary vertex is P[e] + t (P[e + 1] - P[e]) bit for bit
  * (e + 1 within e's loop; an input vertex at t = 0 is the input's own
- * coordinates), the loops one after another in input order, each input
- * vertex once and in its loop's cyclic order either way round, every loop
- * of the same size in every polygon, the outer loop counter-clockwise and
- * the holes clockwise. sizes: the output loops' sizes; hole_added: points
- * not input vertices on the loops after the first. 1 when it holds. */
-static int holes_boundary_contract(const cm_result *r, const shape *const *in, size_t *sizes, size_t *hole_added)
+ * coordinates), the loops one after another in input order (the second
+ * polygon's in the order `second`, its input loop at each place, where
+ * not NULL), each input vertex once and in its loop's cyclic order either
+ * way round, every loop of the same size in every polygon, the outer loop
+ * counter-clockwise and the holes clockwise. sizes: the output loops'
+ * sizes; hole_added: points not input vertices on the loops after the
+ * first. 1 when it holds. */
+static int holes_boundary_contract_in(const cm_result *r, const shape *const *in, const size_t *second,
+                                      size_t *sizes, size_t *hole_added)
 {
     size_t n = cm_result_stats(r)->n, loops = in[0]->loops;
     int ok = 1;
@@ -368,17 +371,19 @@ static int holes_boundary_contract(const cm_result *r, const shape *const *in, s
             double t;
             long e = cm_result_boundary_source(r, g, i, &t);
             if (e < 0 || (size_t)e >= s->n || !(t >= 0 && t < 1)) return 0;
-            size_t start, size, l = input_loop(s, e, &start, &size);
-            if (l < at || l >= loops) return 0;
-            if (l > at) at = l, last = -1, step = 0;
-            count[l]++;
+            size_t start, size, l = input_loop(s, e, &start, &size), place = l;
+            for (size_t j = 0; g == 1 && second && j < loops; j++)
+                if (second[j] == l) place = j;
+            if (place < at || place >= loops) return 0;
+            if (place > at) at = place, last = -1, step = 0;
+            count[place]++;
             const double *p = s->xy + 2 * e, *q = s->xy + 2 * (start + ((size_t)e - start + 1) % size);
             ok &= xy[2 * i] == p[0] + t * (q[0] - p[0]) && xy[2 * i + 1] == p[1] + t * (q[1] - p[1]);
             if (t != 0) {
                 *hole_added += g == 0 && l > 0;
                 continue;
             }
-            seen[l]++;
+            seen[place]++;
             long local = e - (long)start, m = (long)size;
             if (last >= 0) { /* the next input vertex of the loop, one way throughout */
                 long d = ((local - last) % m + m) % m;
@@ -388,7 +393,7 @@ static int holes_boundary_contract(const cm_result *r, const shape *const *in, s
             last = local;
         }
         for (size_t l = 0, first = 0; l < loops && ok; first += count[l++]) {
-            ok &= seen[l] == s->sizes[l] && (g == 0 || count[l] == sizes[l]);
+            ok &= seen[l] == s->sizes[g == 1 && second ? second[l] : l] && (g == 0 || count[l] == sizes[l]);
             if (g == 0) sizes[l] = count[l];
             double area = 0;
             for (size_t i = 0; i < count[l]; i++) {
@@ -399,6 +404,11 @@ static int holes_boundary_contract(const cm_result *r, const shape *const *in, s
         }
     }
     return ok;
+}
+
+static int holes_boundary_contract(const cm_result *r, const shape *const *in, size_t *sizes, size_t *hole_added)
+{
+    return holes_boundary_contract_in(r, in, NULL, sizes, hole_added);
 }
 
 /* Arc-length and auto correspondences with holes: loops of different
@@ -531,6 +541,52 @@ static void test_auto_outer_loops_conformal(void)
         cm_result_free(r);
     }
     CHECK_MSG(least[1] > least[0], "ring and stem: the restart %.2f, without %.2f degrees", least[1], least[0]);
+}
+
+/* Auto pairs the holes by position: seven round holes on a grid in a
+ * disc, listed in another order in the second polygon, whose loops have
+ * other vertex counts (hole_fixtures.h; with equal counts the index
+ * correspondence pairs holes at different places and ends near 4
+ * degrees). Expected with auto: every hole of the second polygon pairs
+ * with the first's hole at the same place (the boundary contract with the
+ * second's loops in that order, stats.holes_moved 7 of 7), valid, and the
+ * smallest angle at least 15 degrees (min(15, c / 3)); with arclength the
+ * loops pair in input order (holes_moved 0). */
+static void test_auto_matches_holes_by_position(void)
+{
+    shape a = {0}, b = {0};
+    hf_seven_permuted_counts(&a, &b);
+    size_t second[8] = {0, 4, 7, 5, 2, 6, 1, 3}; /* the second's input loop at each place of the first's */
+    for (int mode = 0; mode < 2; mode++) {
+        cm_options o;
+        cm_options_init(&o);
+        o.correspondence = mode ? CM_CORRESPOND_AUTO : CM_CORRESPOND_ARCLENGTH, o.remesh = mode;
+        cm_loops in[2] = {loops_of(&a), loops_of(&b)};
+        cm_result *r = NULL;
+        cm_status st = cm_triangulate_loops(in, 2, &o, &r);
+        CHECK_MSG(st == CM_OK, "seven holes permuted, %s: %s", mode ? "auto" : "arclength", cm_result_message(r));
+        if (st == CM_OK) {
+            const shape *in_shape[2] = {&a, &b};
+            size_t sizes[HF_MAX_LOOPS], added;
+            int contract = holes_boundary_contract_in(r, in_shape, mode ? second : NULL, sizes, &added);
+            CHECK_MSG(contract, "seven holes permuted, %s: the boundary contract", mode ? "auto" : "arclength");
+            CHECK(cm_result_stats(r)->holes_moved == (mode ? 7u : 0u));
+            if (contract) {
+                cm_loops refined[2] = {{cm_result_vertices(r, 0), sizes, 8}, {cm_result_vertices(r, 1), sizes, 8}};
+                char why[256] = "";
+                CHECK_MSG(rc_check_loops(r, refined, 2, why, sizeof why), "seven holes permuted: %s", why);
+                CHECK_MSG(rc_check_halfedges_holes(r, cm_result_stats(r)->n, 7, why, sizeof why),
+                          "seven holes permuted: %s", why);
+            }
+            if (mode) {
+                double least = rc_least_angle(r, 2);
+                CHECK_MSG(least >= 15.0, "seven holes permuted, auto: smallest angle %.2f, below 15 degrees", least);
+                printf("seven holes permuted, auto: %zu holes moved, Steiner %zu, smallest angle %.1f\n",
+                       cm_result_stats(r)->holes_moved, cm_result_stats(r)->steiner, least);
+            }
+        }
+        cm_result_free(r);
+    }
 }
 
 /* Do boundary vertices u and w of polygon g (input loops s) lie on one of
@@ -763,6 +819,7 @@ int main(void)
     test_arclength_loops();
     test_auto_hole_starts();
     test_auto_outer_loops_conformal();
+    test_auto_matches_holes_by_position();
     test_no_edge_along_an_input_edge();
     test_capped_hole_edges_split();
     test_remesher_splits_hole_loops();

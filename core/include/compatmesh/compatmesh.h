@@ -352,6 +352,11 @@ typedef struct cm_stats {
      * CM_CHOICE_SIMILARITY (their starts fitted jointly with the outer
      * loop's). */
     cm_correspondence_choice correspondence_choice;
+    /* CM_CORRESPOND_AUTO with two or more holes: how many holes of the
+     * polygons after the first pair with polygon 0's hole at another place
+     * in their input's list than their own (matched by position,
+     * cm_triangulate_loops); 0 where hole j pairs with hole j. */
+    size_t holes_moved;
 } cm_stats;
 
 /* Quality of one geometry of the result. */
@@ -398,7 +403,10 @@ typedef struct cm_loops {
  * without holes would be (loops of any sizes and directions;
  * pin_corners_deg and max_edge per loop; explicit pins are refused; auto
  * pairs the outer loops as polygons without holes, the conformal
- * correspondence of the filled outer loops or the similarity choice, and
+ * correspondence of the filled outer loops or the similarity choice, pairs
+ * the holes by position where that is one-to-one (hole j of a polygon g > 0
+ * in the output is then the hole of g nearest to polygon 0's hole j
+ * carried through the outer loops' correspondence, stats.holes_moved), and
  * starts every hole at the vertex whose points lie nearest to polygon 0's
  * hole carried radially through the outer loops' correspondence, by
  * their least-squares similarity where that is not defined), and cm_result_boundary_source says where each

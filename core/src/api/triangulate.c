@@ -1026,7 +1026,7 @@ cm_status cm_triangulate(const double *xy, size_t k, size_t n, const cm_options 
 /* The input loops r->boundary's labels refer to with holes (edges
  * numbered in each polygon's whole array), for the points the remesher
  * adds on the refined loops' edges: loop l of polygon g starts at input
- * vertex start[g (L + 1) + l], orientation[l k + g] its direction as
+ * vertex start[g (L + 1) + l], orientation[g L + l] its direction as
  * cm_correspond_arclength took it. */
 typedef struct loop_edge_inputs {
     const cm_loops *polygons;
@@ -1046,9 +1046,9 @@ static int loop_edge_between(void *ctx, size_t g, int32_t ea, double ta, int32_t
     size_t l = cm_loop_of(start, in->L, (size_t)ea), s = start[l], count = start[l + 1] - s;
     double t0, t1;
     if (l == 0)
-        cm_boundary_piece(ea - (int32_t)s, ta, eb - (int32_t)s, tb, count, in->orientation[g] < 0, e, &t0, &t1);
+        cm_boundary_piece(ea - (int32_t)s, ta, eb - (int32_t)s, tb, count, in->orientation[g * in->L] < 0, e, &t0, &t1);
     else
-        cm_boundary_piece(eb - (int32_t)s, tb, ea - (int32_t)s, ta, count, in->orientation[l * in->k + g] < 0, e,
+        cm_boundary_piece(eb - (int32_t)s, tb, ea - (int32_t)s, ta, count, in->orientation[g * in->L + l] < 0, e,
                           &t1, &t0);
     if (!piece_middle(t0, t1, step, t)) return 0; /* t0 at a in both cases */
     cm_edge_point(in->polygons[g].xy + 2 * s, count, *e, *t, xy);
@@ -1307,11 +1307,11 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
     /* loop l's k input loops: xy, count and loop_orientation from l k */
     int *orientation = malloc((k * L + 1) * sizeof *orientation), *loop_orientation = malloc(k * L * sizeof(int));
     size_t *start = malloc(k * (L + 1) * sizeof *start), *count = malloc(k * L * sizeof *count);
-    size_t *sizes = malloc((L + 1) * sizeof *sizes);
+    size_t *sizes = malloc((L + 1) * sizeof *sizes), *order = malloc(k * L * sizeof *order);
     const double **xy = malloc(k * L * sizeof *xy);
     cm_boundary_map *maps = calloc(L + 1, sizeof *maps);
     cm_loops *refined = malloc(k * sizeof *refined);
-    cm_status s = orientation && loop_orientation && start && count && sizes && xy && maps && refined
+    cm_status s = orientation && loop_orientation && start && count && sizes && order && xy && maps && refined
                       ? CM_OK
                       : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     int index_split = o->correspondence == CM_CORRESPOND_INDEX;
@@ -1331,6 +1331,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         for (size_t j = 0; s == CM_OK && j < largest; j++)
             for (size_t g = 0; g < k; g++) every[j * k + g] = j;
     }
+    for (size_t i = 0; order && i < k * L; i++) order[i] = i % L; /* loop l of every polygon pairs with loop l */
     for (size_t g = 0; s == CM_OK && g < k; g++) {
         start[g * (L + 1)] = 0;
         for (size_t l = 0; l < L; l++) start[g * (L + 1) + l + 1] = start[g * (L + 1) + l] + polygons[g].loop_sizes[l];
@@ -1348,12 +1349,16 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         const double **lxy = xy + l * k;
         size_t *lcount = count + l * k;
         int *lorientation = loop_orientation + l * k;
-        for (size_t g = 0; g < k; g++) {
-            lxy[g] = polygons[g].xy + 2 * start[g * (L + 1) + l];
-            lcount[g] = polygons[g].loop_sizes[l], lorientation[g] = orientation[g * L + l];
+        if (joint && l == 1) {
+            s = cm_correspond_match_holes(polygons, k, &maps[0], order, &r->stats.holes_moved, &r->error);
+            cm_correspond_outer_similarity(&maps[0], similarity);
         }
-        if (joint && l == 1) cm_correspond_outer_similarity(&maps[0], similarity);
-        if (joint && l > 0)
+        for (size_t g = 0; g < k; g++) {
+            size_t from = order[g * L + l];
+            lxy[g] = polygons[g].xy + 2 * start[g * (L + 1) + from];
+            lcount[g] = polygons[g].loop_sizes[from], lorientation[g] = orientation[g * L + from];
+        }
+        if (s == CM_OK && joint && l > 0)
             s = cm_correspond_choose_hole_starts(lxy, lcount, k, lorientation, &maps[0], similarity, hole_starts,
                                                  &r->error);
         if (s == CM_OK)
@@ -1364,8 +1369,9 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
             char detail[sizeof r->error.message];
             snprintf(detail, sizeof detail, "%s", r->error.message);
             long g = r->error.polygon, v = r->error.vertex;
-            if (g >= 0 && (size_t)g < k && v >= 0) cm_fail_at(&r->error, g, (long)start[(size_t)g * (L + 1) + l] + v, -1);
-            cm_fail(&r->error, s, "%s %zu: %s", l ? "hole" : "outer loop", l, detail);
+            size_t from = g >= 0 && (size_t)g < k ? order[(size_t)g * L + l] : l; /* the input's loop */
+            if (g >= 0 && (size_t)g < k && v >= 0) cm_fail_at(&r->error, g, (long)start[(size_t)g * (L + 1) + from] + v, -1);
+            cm_fail(&r->error, s, "%s %zu: %s", l ? "hole" : "outer loop", from, detail);
         }
     }
     if (s == CM_OK && !index_split && o->remesh) { /* edges whose cap binds, halved in every loop */
@@ -1405,7 +1411,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
                 b->xy[g][2 * (at + i)] = maps[l].xy[g][2 * from];
                 b->xy[g][2 * (at + i) + 1] = maps[l].xy[g][2 * from + 1];
                 b->t[g][at + i] = maps[l].t[g][from];
-                b->edge[g][at + i] = (int32_t)start[g * (L + 1) + l] + maps[l].edge[g][from];
+                b->edge[g][at + i] = (int32_t)start[g * (L + 1) + order[g * L + l]] + maps[l].edge[g][from];
             }
         }
         refined[g] = (cm_loops){b->xy[g], sizes, L};
@@ -1414,12 +1420,13 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
         cm_options by_index = *o;
         by_index.correspondence = CM_CORRESPOND_INDEX;
         by_index.pin_corners_deg = 0, by_index.max_edge = 0;
-        loop_edge_inputs edges = {polygons, k, L, start, loop_orientation};
+        loop_edge_inputs edges = {polygons, k, L, start, orientation};
         s = run_loops(r, refined, k, !index_split && o->remesh ? &edges : NULL, &by_index);
         locate_in_input(r, s);
     }
     for (size_t l = 0; maps && l < L; l++) cm_boundary_map_clear(&maps[l]);
-    free(orientation), free(loop_orientation), free(start), free(count), free(sizes), free(xy), free(maps), free(refined);
+    free(orientation), free(loop_orientation), free(start), free(count), free(sizes), free(order), free(xy), free(maps),
+        free(refined);
     free(every), free(similarity), free(hole_starts);
     return s;
 }

@@ -309,3 +309,91 @@ cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t
     free(p), free(q), free(shift);
     return CM_OK;
 }
+
+/* The centroid of a loop of n vertices (its area's; the vertex mean where
+ * the area vanishes). */
+static double complex loop_centroid(const double *xy, size_t n)
+{
+    double a = 0, cx = 0, cy = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % n);
+        double c = p[0] * q[1] - q[0] * p[1];
+        a += c, cx += (p[0] + q[0]) * c, cy += (p[1] + q[1]) * c;
+    }
+    return a != 0 ? (cx + I * cy) / (3 * a) : vertex_mean(xy, n);
+}
+
+/* z, a point inside polygon 0's outer loop, carried into polygon g by its
+ * mean value coordinates over the outer loops' corresponding points
+ * (Floater's: they reproduce the boundary's correspondence and vary
+ * smoothly inside). tan_half: scratch for outer->n values. 0 (out
+ * untouched) where z lies on that boundary. */
+static int carry_mean_value(const cm_boundary_map *outer, size_t g, double complex z, double *tan_half,
+                            double complex *out)
+{
+    size_t n = outer->n;
+    const double *p = outer->xy[0], *q = outer->xy[g];
+    for (size_t a = 0; a < n; a++) { /* tan of half the angle at z from point a to a + 1 */
+        size_t b = (a + 1) % n;
+        double complex s = p[2 * a] + I * p[2 * a + 1] - z, t = p[2 * b] + I * p[2 * b + 1] - z;
+        double cross = cimag(conj(s) * t), dot = creal(conj(s) * t);
+        if (!(cabs(s) > 0) || (cross == 0 && dot <= 0)) return 0; /* on a vertex or an edge */
+        tan_half[a] = cross != 0 ? (cabs(s) * cabs(t) - dot) / cross : 0;
+    }
+    double complex sum = 0;
+    double weights = 0;
+    for (size_t a = 0; a < n; a++) {
+        double w = (tan_half[(a + n - 1) % n] + tan_half[a]) / cabs(p[2 * a] + I * p[2 * a + 1] - z);
+        sum += w * (q[2 * a] + I * q[2 * a + 1]), weights += w;
+    }
+    if (!(fabs(weights) > 0) || !isfinite(creal(sum / weights)) || !isfinite(cimag(sum / weights))) return 0;
+    *out = sum / weights;
+    return 1;
+}
+
+/* The hole of polygon g nearest to point z (centres: its holes' L - 1
+ * centroids). */
+static size_t nearest_hole(const double complex *centres, size_t holes, double complex z)
+{
+    size_t best = 0;
+    for (size_t j = 1; j < holes; j++)
+        if (cabs(centres[j] - z) < cabs(centres[best] - z)) best = j;
+    return best;
+}
+
+cm_status cm_correspond_match_holes(const cm_loops *polygons, size_t k, const cm_boundary_map *outer,
+                                    size_t *order, size_t *moved, cm_error *err)
+{
+    size_t L = polygons[0].num_loops, h = L - 1;
+    *moved = 0;
+    for (size_t g = 0; g < k; g++)
+        for (size_t l = 0; l < L; l++) order[g * L + l] = l;
+    if (h < 2) return CM_OK;
+    double complex *carried = malloc(h * sizeof *carried), *centres = malloc(h * sizeof *centres);
+    double *tan_half = malloc(outer->n * sizeof *tan_half);
+    size_t *to = malloc(h * sizeof *to), *back = malloc(h * sizeof *back);
+    cm_status s = carried && centres && tan_half && to && back ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
+    for (size_t g = 1; s == CM_OK && g < k; g++) {
+        int matched = 1;
+        for (size_t pass = 0; pass < 2; pass++) { /* polygon 0's holes carried, then polygon g's */
+            const cm_loops *poly = &polygons[pass ? g : 0];
+            size_t at = poly->loop_sizes[0];
+            for (size_t j = 0; j < h; j++) {
+                double complex c = loop_centroid(poly->xy + 2 * at, poly->loop_sizes[j + 1]);
+                at += poly->loop_sizes[j + 1];
+                if (pass) centres[j] = c;
+                else if (!carry_mean_value(outer, g, c, tan_half, &carried[j])) matched = 0;
+            }
+        }
+        if (!matched) continue; /* keep the input's order */
+        for (size_t j = 0; j < h; j++) to[j] = nearest_hole(centres, h, carried[j]);
+        for (size_t j = 0; j < h; j++) back[j] = nearest_hole(carried, h, centres[j]);
+        for (size_t j = 0; j < h; j++) matched &= back[to[j]] == j;
+        for (size_t j = 0; matched && j < h; j++) {
+            order[g * L + 1 + j] = 1 + to[j];
+            *moved += to[j] != j;
+        }
+    }
+    free(carried), free(centres), free(tan_half), free(to), free(back);
+    return s;
+}

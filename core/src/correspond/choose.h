@@ -42,6 +42,19 @@ cm_status cm_correspond_choose_hole_starts(const double *const *holes, const siz
                                            const int *orientation, const cm_boundary_map *outer,
                                            const double *similarity, size_t *pins, cm_error *err);
 
+/* For polygons with holes (num_loops L the same in each, validated): which
+ * hole of every polygon pairs with each hole of polygon 0. Polygon 0's
+ * hole centroids are carried into polygon g by their mean value
+ * coordinates over the outer loops' correspondence `outer`; where every
+ * carried centroid and one of polygon g's hole centroids are each other's
+ * nearest (a one-to-one match), polygon g's holes are taken in that order,
+ * else in the input's. order (k L entries): order[g L + l] the input loop
+ * of polygon g placed at loop l (0 for l = 0; polygon 0's the identity).
+ * *moved: how many holes, over all polygons, the match takes from another
+ * place than their input's. */
+cm_status cm_correspond_match_holes(const cm_loops *polygons, size_t k, const cm_boundary_map *outer,
+                                    size_t *order, size_t *moved, cm_error *err);
+
 /* Polygons of one count that are affine images of polygon 0 up to where
  * they start: if for every polygon g some start makes its vertices, walked
  * counter-clockwise, the least-squares affine image of polygon 0's within
