@@ -169,6 +169,9 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
                         (stats->holes ? ", " + std::to_string(stats->holes) + (stats->holes == 1 ? " hole" : " holes") : std::string()));
   outcome.log.push_back("smallest angle: " + degrees(q[0].min_angle_deg) + " deg in '" + first_name +
                         "', " + degrees(q[1].min_angle_deg) + " deg in '" + second_name + "'");
+  if (stats->holes_moved > 0)
+    outcome.log.push_back("holes paired by position: " + std::to_string(stats->holes_moved) + " of '" + second_name +
+                          "' pair with a hole listed at another place in '" + first_name + "'");
   if (stats->fallback_count > 0)
     outcome.log.push_back("overlay fallback used " + std::to_string(stats->fallback_count) + " times");
   std::string ceiling = "no compatible triangulation of this pair can have a smallest angle above " +

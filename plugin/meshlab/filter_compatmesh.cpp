@@ -108,9 +108,10 @@ void FilterCompatMesh::initParameterSet(QAction *action, MeshDocument &md, RichP
                             "of the other (equal counts, same direction). arc length: normalised arc "
                             "length between the pins (or from each boundary's first vertex). auto: "
                             "conformal, both boundaries mapped onto the disk and made to agree, thin "
-                            "parts' crowding tempered (with holes: arc length from the start and "
-                            "direction that align the boundaries best). similarity: that alignment for "
-                            "boundaries without holes too. With "
+                            "parts' crowding tempered (with holes: the outer loops so, the holes paired "
+                            "by position, each from the start and direction that align it best). "
+                            "similarity: arc length from the start and direction that align the "
+                            "boundaries best, for boundaries without holes too. With "
                             "arc length and auto the counts may differ: every input vertex is kept and "
                             "the other boundary's vertices are added on its edges."));
       par.addParam(RichString("Pins", "", "Pins",
