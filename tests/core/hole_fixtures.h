@@ -181,6 +181,41 @@ static inline void hf_seven_permuted_counts(shape *a, shape *b)
     }
 }
 
+/* A rectangle of half sides w by h, m points a side, counter-clockwise from
+ * its corner (-w, -h), the list started at its point `start`, moved by
+ * (dx, dy). */
+static inline void add_rectangle(shape *s, double w, double h, size_t m, size_t start, double dx, double dy)
+{
+    begin_loop(s);
+    double corners[5][2] = {{-w, -h}, {w, -h}, {w, h}, {-w, h}, {-w, -h}};
+    for (size_t i = 0; i < 4 * m; i++) {
+        size_t j = (i + start) % (4 * m), c = j / m;
+        double t = (double)(j % m) / (double)m;
+        add_point(s, dx + (1 - t) * corners[c][0] + t * corners[c + 1][0],
+                  dy + (1 - t) * corners[c][1] + t * corners[c + 1][1]);
+    }
+}
+
+/* A rectangular plate with three bolt holes, and the same plate moved, its
+ * outline listed from the opposite corner: a half turn takes the outline
+ * onto itself, only the holes tell the two ways apart. exact: the same
+ * loops moved (an affine image); else the second plate a little wider and
+ * lower, 7 points a side, its holes moved a little and of 12 vertices. */
+static inline void hf_rectangle_plates(shape *a, shape *b, int exact)
+{
+    double centres[3][2] = {{-2.5, -0.8}, {1, 0.9}, {2.8, -1.0}};
+    add_rectangle(a, 4, 2, 6, 0, 0, 0);
+    add_rectangle(b, exact ? 4 : 4.1, exact ? 2 : 1.9, exact ? 6 : 7, exact ? 12 : 14, 0.3, 10);
+    for (int h = 0; h < 3; h++) {
+        add_circle(a, centres[h][0], centres[h][1], 0.4, 10, -1);
+        add_circle(b, centres[h][0] + 0.3 + (exact ? 0 : 0.05), centres[h][1] + 10 - (exact ? 0 : 0.03),
+                   exact ? 0.4 : 0.38, exact ? 10 : 12, -1);
+    }
+}
+
+static inline void hf_rectangle_plates_exact(shape *a, shape *b) { hf_rectangle_plates(a, b, 1); }
+static inline void hf_rectangle_plates_near(shape *a, shape *b) { hf_rectangle_plates(a, b, 0); }
+
 /* A square with an off-centre square hole (16 + 8 vertices) against a disc
  * with an off-centre round hole of other sizes (23 + 11), the disc's loops
  * the other way round: loops of different sizes. */
@@ -290,6 +325,7 @@ static inline size_t hole_fixture_list(const hole_fixture **list)
         {"holes on swapped sides", hf_swapped_sides},
         {"seven holes permuted", hf_seven_permuted},
         {"seven holes permuted, other counts", hf_seven_permuted_counts},
+        {"rectangular plates, half turned list", hf_rectangle_plates_near},
         {"square/disc, sizes differ", hf_sizes_differ},
         {"egg, hole renumbered", hf_egg},
         {"crowded hole", hf_crowded_hole_reversed},

@@ -589,6 +589,51 @@ static void test_auto_matches_holes_by_position(void)
     }
 }
 
+/* Auto lets the holes choose the turn of an outline a half turn takes onto
+ * itself: rectangular plates with three bolt holes, the second moved and
+ * listed from the opposite corner (hole_fixtures.h), as the same loops (an
+ * affine image) and as a plate a little different. Expected: the first
+ * plate's corner (-4, -2) pairs with the second's corresponding corner
+ * (-3.7, 8) or (-3.8, 8.1): exactly for the affine image, within 0.5
+ * otherwise (a conformal pairing of rectangles of other shapes slides the
+ * corners; half turned it lies 9 away), no hole moved, valid, and the
+ * smallest angle at least 20 degrees (the outline paired half turned
+ * against the holes twisted the map: 7 degrees). */
+static void test_auto_turn_chosen_by_holes(void)
+{
+    for (int exact = 0; exact < 2; exact++) {
+        shape a = {0}, b = {0};
+        hf_rectangle_plates(&a, &b, exact);
+        cm_options o;
+        cm_options_init(&o);
+        o.correspondence = CM_CORRESPOND_AUTO;
+        cm_loops in[2] = {loops_of(&a), loops_of(&b)};
+        cm_result *r = NULL;
+        cm_status st = cm_triangulate_loops(in, 2, &o, &r);
+        const char *name = exact ? "rectangular plates, exact" : "rectangular plates, near";
+        CHECK_MSG(st == CM_OK, "%s: %s", name, cm_result_message(r));
+        if (st == CM_OK) {
+            double want[2] = {exact ? -3.7 : -3.8, exact ? 8 : 8.1}, apart = HUGE_VAL;
+            for (size_t i = 0; i < cm_result_stats(r)->n; i++) {
+                double t;
+                if (cm_result_boundary_source(r, 0, i, &t) == 0 && t == 0) {
+                    const double *p = cm_result_vertices(r, 1) + 2 * i;
+                    apart = hypot(p[0] - want[0], p[1] - want[1]);
+                }
+            }
+            CHECK_MSG(exact ? apart == 0 : apart < 0.5, "%s: the corner pairs %.3g from its own", name, apart);
+            CHECK(cm_result_stats(r)->holes_moved == 0);
+            CHECK(!exact || cm_result_stats(r)->correspondence_choice == CM_CHOICE_AFFINE);
+            double least = rc_least_angle(r, 2);
+            CHECK_MSG(least >= 20.0, "%s: smallest angle %.2f, below 20 degrees", name, least);
+            printf("%s, auto: %s, Steiner %zu, smallest angle %.1f\n", name,
+                   cm_correspondence_choice_name(cm_result_stats(r)->correspondence_choice),
+                   cm_result_stats(r)->steiner, least);
+        }
+        cm_result_free(r);
+    }
+}
+
 /* Do boundary vertices u and w of polygon g (input loops s) lie on one of
  * its input edges? An input vertex lies on the edges before and after it
  * along its loop, a point inside an edge on that edge alone. */
@@ -820,6 +865,7 @@ int main(void)
     test_auto_hole_starts();
     test_auto_outer_loops_conformal();
     test_auto_matches_holes_by_position();
+    test_auto_turn_chosen_by_holes();
     test_no_edge_along_an_input_edge();
     test_capped_hole_edges_split();
     test_remesher_splits_hole_loops();

@@ -403,7 +403,8 @@ typedef struct cm_loops {
  * without holes would be (loops of any sizes and directions;
  * pin_corners_deg and max_edge per loop; explicit pins are refused; auto
  * pairs the outer loops as polygons without holes, the conformal
- * correspondence of the filled outer loops or the similarity choice, pairs
+ * correspondence of the filled outer loops or the similarity choice (the
+ * one that takes the holes onto holes where only one does), pairs
  * the holes by position where that is one-to-one (hole j of a polygon g > 0
  * in the output is then the hole of g nearest to polygon 0's hole j
  * carried through the outer loops' correspondence, stats.holes_moved), and

@@ -514,32 +514,55 @@ typedef struct auto_pairing {
 
 static const auto_pairing by_ceiling = {PAIRING_BY_CEILING, 0, CM_CONFORMAL_POWER};
 
+/* The similarity choice: arc length from the starts that align the loops
+ * best up to a similarity (with_holes: their holes too,
+ * cm_correspond_choose_starts). */
+static cm_status similarity_pairing(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
+                                    const int *orientation, const cm_loops *with_holes, cm_boundary_map *out)
+{
+    size_t *starts = malloc(k * sizeof *starts);
+    cm_status s = starts ? cm_correspond_choose_starts(polygons, counts, k, orientation, with_holes, starts, &r->error)
+                         : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, starts, 1, out, &r->error);
+    free(starts);
+    return s;
+}
+
 /* CM_CORRESPOND_AUTO for polygons without holes or pins, by `pairing`: the
  * conformal correspondence, or the similarity choice where that allows the
  * higher ceiling (a polygon whose corners the similarity fit pairs corner
  * to corner, a disc that would take another polygon's crowding whole);
  * where the ceilings tie (CM_CEILING_TIE), the one with the higher
- * correspondence bound, the distortion the remesher has to work against;
+ * correspondence bound, the distortion the remesher has to work against.
+ * For the outer loops of polygons with holes (with_holes), the one that
+ * takes every hole where a hole is (cm_correspond_holes_land) where only
+ * one does: an outline a turn takes onto itself leaves the turn to the
+ * holes, and a pairing turned against them twists the map around them.
  * *found = 0 when the conformal one cannot be had (out then untouched),
  * else *choice says which was kept. */
 static cm_status auto_whole(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
-                            const int *orientation, auto_pairing pairing, cm_boundary_map *out, int *found,
-                            double *ceiling_deg, cm_correspondence_choice *choice)
+                            const int *orientation, const cm_loops *with_holes, auto_pairing pairing,
+                            cm_boundary_map *out, int *found, double *ceiling_deg, cm_correspondence_choice *choice)
 {
     cm_status s = conformal(r, polygons, counts, k, orientation, pairing.linear, pairing.power, out, found);
     if (s != CM_OK || !*found) return s;
     cm_boundary_map similar = {0};
-    size_t *starts = malloc(k * sizeof *starts);
-    double conformal_deg = 0, similar_deg = 0;
-    s = starts ? cm_correspond_choose_starts(polygons, counts, k, orientation, starts, &r->error)
-               : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-    if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, starts, 1, &similar, &r->error);
-    double conformal_bound = 0, similar_bound = 0;
+    double conformal_deg = 0, similar_deg = 0, conformal_bound = 0, similar_bound = 0;
+    int conformal_lands = 1, similar_lands = 1; /* the holes where holes are */
+    s = similarity_pairing(r, polygons, counts, k, orientation, NULL, &similar);
     if (s == CM_OK) s = ceiling_bound_of(r, out, &conformal_deg, &conformal_bound);
+    if (s == CM_OK && with_holes) s = cm_correspond_holes_land(with_holes, k, out, &conformal_lands, &r->error);
+    if (s == CM_OK && with_holes) s = cm_correspond_holes_land(with_holes, k, &similar, &similar_lands, &r->error);
+    if (s == CM_OK && !similar_lands) { /* the outline's fit turned against the holes: fit them too */
+        cm_boundary_map_clear(&similar);
+        s = similarity_pairing(r, polygons, counts, k, orientation, with_holes, &similar);
+        if (s == CM_OK) s = cm_correspond_holes_land(with_holes, k, &similar, &similar_lands, &r->error);
+    }
     if (s == CM_OK) s = ceiling_bound_of(r, &similar, &similar_deg, &similar_bound);
     *choice = CM_CHOICE_CONFORMAL;
     int tie = fabs(similar_deg - conformal_deg) <= CM_CEILING_TIE * fmax(similar_deg, conformal_deg);
     int similar_wins = tie ? similar_bound > conformal_bound : similar_deg > conformal_deg;
+    if (conformal_lands != similar_lands) similar_wins = similar_lands;
     if (s == CM_OK && (pairing.kind == PAIRING_BY_CEILING ? similar_wins : pairing.kind == PAIRING_SIMILARITY)) {
         cm_boundary_map t = *out;
         *out = similar, similar = t;
@@ -547,7 +570,6 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
     }
     *ceiling_deg = fmax(conformal_deg, similar_deg);
     cm_boundary_map_clear(&similar);
-    free(starts);
     return s;
 }
 
@@ -565,12 +587,15 @@ enum loop_kind { LOOP_WHOLE, LOOP_OUTER, LOOP_BY_START };
  * the max_edge split. every_vertex: the index correspondence, as pins at
  * every vertex. kind: what the loops are (enum loop_kind). hole_starts:
  * for auto, the starts chosen for a hole (k input vertices), taken in
- * place of the loop's own choice; else NULL. *choice receives the
+ * place of the loop's own choice; else NULL. with_holes: for the outer
+ * loops of polygons with holes, the polygons (their holes choose between
+ * starts an affine map takes alike); else NULL. *choice receives the
  * correspondence made. */
 static cm_status correspond_boundary(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
                                      const int *orientation, const cm_options *o, const size_t *every_vertex,
                                      enum loop_kind kind, auto_pairing pairing, const size_t *hole_starts,
-                                     cm_boundary_map *out, double *ceiling_deg, cm_correspondence_choice *choice)
+                                     const cm_loops *with_holes, cm_boundary_map *out, double *ceiling_deg,
+                                     cm_correspondence_choice *choice)
 {
     int whole = kind == LOOP_WHOLE;
     *ceiling_deg = -1;
@@ -589,7 +614,7 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
         /* Affine images of one another: vertex to vertex, no distortion. */
         int found = 0;
         affine = malloc(counts[0] * k * sizeof *affine);
-        s = affine ? cm_correspond_affine_shift(polygons, counts, k, orientation, affine, &found, &r->error)
+        s = affine ? cm_correspond_affine_shift(polygons, counts, k, orientation, with_holes, affine, &found, &r->error)
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         if (found) pins = affine, num_pins = counts[0], *choice = CM_CHOICE_AFFINE;
     }
@@ -598,7 +623,7 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
         /* Polygons without holes, and outer loops: conformal or similarity
          * (auto_whole). */
         int found = 0;
-        s = auto_whole(r, polygons, counts, k, orientation, pairing, out, &found, ceiling_deg, choice);
+        s = auto_whole(r, polygons, counts, k, orientation, with_holes, pairing, out, &found, ceiling_deg, choice);
         if (s == CM_OK && !found && pairing.kind == PAIRING_CONFORMAL) /* a rescue's: nothing new to remesh */
             s = cm_fail(&r->error, CM_ERR_PRECISION, "the conformal pairing cannot be had in doubles");
         if (s == CM_OK && found) {
@@ -611,7 +636,7 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
     }
     if (s == CM_OK && chosen_mode(o) && num_pins == 0) {
         chosen = malloc(k * sizeof *chosen);
-        s = chosen ? cm_correspond_choose_starts(polygons, counts, k, orientation, chosen, &r->error)
+        s = chosen ? cm_correspond_choose_starts(polygons, counts, k, orientation, NULL, chosen, &r->error)
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         pins = chosen, num_pins = 1, *choice = CM_CHOICE_SIMILARITY;
     }
@@ -731,7 +756,7 @@ static cm_status run_arclength(cm_result *r, const double *const *polygons, cons
     if (s == CM_OK) s = cm_input_check_polygons(polygons, counts, k, 0, orientation, &r->error);
     double ceiling_deg = -1;
     if (s == CM_OK)
-        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, LOOP_WHOLE, pairing, NULL,
+        s = correspond_boundary(r, polygons, counts, k, orientation, o, every_vertex, LOOP_WHOLE, pairing, NULL, NULL,
                                 &r->boundary, &ceiling_deg, &r->stats.correspondence_choice);
     int32_t **tris = NULL; /* the merged polygons' triangulations, when the cap split made them */
     if (s == CM_OK && !every_vertex && o->remesh)
@@ -1363,7 +1388,8 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
                                                  &r->error);
         if (s == CM_OK)
             s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_BY_START : outer, by_ceiling,
-                                    joint && l ? hole_starts : NULL, &maps[l], &unused_ceiling, &loop_choice);
+                                    joint && l ? hole_starts : NULL, l ? NULL : polygons, &maps[l], &unused_ceiling,
+                                    &loop_choice);
         if (l == 0) r->stats.correspondence_choice = loop_choice; /* the outer loop's (cm_stats) */
         if (s != CM_OK && s != CM_ERR_NO_MEMORY && s != CM_ERR_CANCELLED) {
             char detail[sizeof r->error.message];

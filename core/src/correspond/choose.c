@@ -11,6 +11,7 @@
 
 #include "correspond/choose.h"
 #include "correspond/arclength.h"
+#include "geom/angle.h"
 
 #define SAMPLES 64
 #define COARSE_CANDIDATES 256
@@ -36,15 +37,16 @@ static void sample_m(const double *xy, size_t n, int reversed, const double *arc
     }
 }
 
-/* SAMPLES points as sample_m, centred. */
-static void sample(const double *xy, size_t n, int reversed, const double *arc, size_t start,
-                   double complex *out)
+/* SAMPLES points as sample_m, centred; returns their mean. */
+static double complex sample(const double *xy, size_t n, int reversed, const double *arc, size_t start,
+                             double complex *out)
 {
     sample_m(xy, n, reversed, arc, start, SAMPLES, out);
     double complex mean = 0;
     for (int j = 0; j < SAMPLES; j++) mean += out[j];
     mean /= SAMPLES;
     for (int j = 0; j < SAMPLES; j++) out[j] -= mean;
+    return mean;
 }
 
 /* The share of |w|^2 the best similarity image of z leaves. */
@@ -59,7 +61,9 @@ static double residual(const double complex *z, const double complex *w)
 }
 
 /* One loop's candidate starts, scored against a target (SAMPLES centred
- * points for the Procrustes fit, or m points in place for the holes). */
+ * points for the Procrustes fit, or m points in place for the holes). For
+ * the outer loops of polygons with holes, the holes' centroids too:
+ * polygon 0's centred as the target, the loop's own in place (h each). */
 typedef struct start_search {
     const double *xy;
     size_t n;
@@ -68,6 +72,8 @@ typedef struct start_search {
     const double complex *target;
     size_t m;
     double complex *w; /* scratch for m (or SAMPLES) points */
+    const double complex *target_holes, *holes;
+    size_t h;
 } start_search;
 
 typedef double (*start_cost)(const start_search *q, size_t start);
@@ -92,32 +98,90 @@ static size_t best_start(const start_search *q, start_cost cost)
     return best;
 }
 
+/* The mean of a loop's n vertices. */
+static double complex vertex_mean(const double *xy, size_t n)
+{
+    double complex c = 0;
+    for (size_t i = 0; i < n; i++) c += xy[2 * i] + I * xy[2 * i + 1];
+    return c / (double)n;
+}
+
+/* The centroid of a loop of n vertices (its area's; the vertex mean where
+ * the area vanishes). */
+static double complex loop_centroid(const double *xy, size_t n)
+{
+    double a = 0, cx = 0, cy = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % n);
+        double c = p[0] * q[1] - q[0] * p[1];
+        a += c, cx += (p[0] + q[0]) * c, cy += (p[1] + q[1]) * c;
+    }
+    return a != 0 ? (cx + I * cy) / (3 * a) : vertex_mean(xy, n);
+}
+
+/* The Procrustes residual's share; with holes, plus each of polygon 0's
+ * hole centroids under the fitted similarity to the loop's nearest one
+ * (squared, in the same share): an outer loop that a turn takes onto
+ * itself (a rectangle) leaves the turn to the holes. */
 static double procrustes_cost(const start_search *q, size_t start)
 {
-    sample(q->xy, q->n, q->reversed, q->arc, start, q->w);
-    return residual(q->target, q->w);
+    double complex mean = sample(q->xy, q->n, q->reversed, q->arc, start, q->w);
+    if (!q->h) return residual(q->target, q->w);
+    double complex zw = 0;
+    double zz = 0, ww = 0;
+    for (int j = 0; j < SAMPLES; j++)
+        zw += conj(q->target[j]) * q->w[j], zz += creal(q->target[j] * conj(q->target[j])),
+            ww += creal(q->w[j] * conj(q->w[j]));
+    if (!(zz > 0) || !(ww > 0)) return HUGE_VAL;
+    double complex a = zw / zz;
+    double left = ww - creal(zw * conj(zw)) / zz;
+    for (size_t i = 0; i < q->h; i++) {
+        double nearest = HUGE_VAL;
+        for (size_t j = 0; j < q->h; j++) nearest = fmin(nearest, cabs(a * q->target_holes[i] - (q->holes[j] - mean)));
+        left += nearest * nearest;
+    }
+    return left / ww;
+}
+
+/* The h hole centroids of a polygon with holes, less `centre`. */
+static void hole_centroids(const cm_loops *loops, double complex centre, double complex *out)
+{
+    for (size_t i = 1, at = loops->loop_sizes[0]; i < loops->num_loops; at += loops->loop_sizes[i++])
+        out[i - 1] = loop_centroid(loops->xy + 2 * at, loops->loop_sizes[i]) - centre;
 }
 
 cm_status cm_correspond_choose_starts(const double *const *polygons, const size_t *counts, size_t k,
-                                      const int *orientation, size_t *pins, cm_error *err)
+                                      const int *orientation, const cm_loops *loops, size_t *pins, cm_error *err)
 {
     double complex z[SAMPLES], w[SAMPLES];
+    size_t h = loops ? loops[0].num_loops - 1 : 0;
+    double complex *target_holes = h ? malloc(2 * h * sizeof *target_holes) : NULL, *holes = NULL;
     double *arc0 = cm_arc_lengths(polygons[0], counts[0], orientation[0] < 0, 0);
-    if (!arc0) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-    sample(polygons[0], counts[0], orientation[0] < 0, arc0, 0, z);
+    if (!arc0 || (h && !target_holes)) {
+        free(arc0), free(target_holes);
+        return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    }
+    double complex mean = sample(polygons[0], counts[0], orientation[0] < 0, arc0, 0, z);
+    if (h) hole_centroids(&loops[0], mean, target_holes), holes = target_holes + h;
     pins[0] = cm_ccw_input(0, counts[0], orientation[0] < 0);
     free(arc0);
-    for (size_t g = 1; g < k; g++) {
+    cm_status s = CM_OK;
+    for (size_t g = 1; s == CM_OK && g < k; g++) {
         size_t n = counts[g];
         int reversed = orientation[g] < 0;
         double *arc = cm_arc_lengths(polygons[g], n, reversed, 0);
-        if (!arc) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-        start_search q = {polygons[g], n, reversed, arc, z, SAMPLES, w};
+        if (!arc) {
+            s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+            break;
+        }
+        if (h) hole_centroids(&loops[g], 0, holes);
+        start_search q = {polygons[g], n, reversed, arc, z, SAMPLES, w, target_holes, holes, h};
         size_t best = best_start(&q, procrustes_cost);
         pins[g] = cm_ccw_input(best, n, reversed);
         free(arc);
     }
-    return CM_OK;
+    free(target_holes);
+    return s;
 }
 
 void cm_correspond_outer_similarity(const cm_boundary_map *outer, double *similarity)
@@ -158,13 +222,6 @@ static double distance_cost(const start_search *q, size_t start)
     return sum;
 }
 
-/* The mean of a loop's n vertices. */
-static double complex vertex_mean(const double *xy, size_t n)
-{
-    double complex c = 0;
-    for (size_t i = 0; i < n; i++) c += xy[2 * i] + I * xy[2 * i + 1];
-    return c / (double)n;
-}
 
 /* Point z of polygon 0's hole carried into polygon g radially: the point
  * of the outer loops' map whose direction from polygon 0's hole centre c0
@@ -215,7 +272,7 @@ cm_status cm_correspond_choose_hole_starts(const double *const *holes, const siz
             s = cm_fail_status(err, CM_ERR_NO_MEMORY);
             break;
         }
-        start_search q = {holes[g], n, reversed, arc, mapped, m, w};
+        start_search q = {holes[g], n, reversed, arc, mapped, m, w, NULL, NULL, 0};
         size_t best = best_start(&q, distance_cost);
         pins[g] = cm_ccw_input(best, n, reversed);
         free(arc), arc = NULL;
@@ -244,7 +301,8 @@ static void centred(const double *xy, size_t n, int reversed, double complex *ou
  * read from position shift: with S = sum p p^T and C = sum q p^T (2 x 2),
  * the residual is sum |q|^2 - tr(C S^-1 C^T) (exact: summed point by
  * point). */
-static double affine_residual(const double complex *p, const double complex *q, size_t n, size_t shift, int exact)
+static double affine_residual(const double complex *p, const double complex *q, size_t n, size_t shift, int exact,
+                              double a[4])
 {
     double s00 = 0, s01 = 0, s11 = 0, c00 = 0, c01 = 0, c10 = 0, c11 = 0, qq = 0;
     for (size_t i = 0; i < n; i++) {
@@ -265,6 +323,7 @@ static double affine_residual(const double complex *p, const double complex *q, 
      * best candidate directly, with A = C S^-1. */
     double a00 = (c00 * s11 - c01 * s01) / det, a01 = (c01 * s00 - c00 * s01) / det;
     double a10 = (c10 * s11 - c11 * s01) / det, a11 = (c11 * s00 - c10 * s01) / det, left = 0;
+    if (a) a[0] = a00, a[1] = a01, a[2] = a10, a[3] = a11;
     for (size_t i = 0; i < n; i++) {
         double px = creal(p[i]), py = cimag(p[i]);
         double complex w = q[(i + shift) % n];
@@ -274,8 +333,50 @@ static double affine_residual(const double complex *p, const double complex *q, 
     return left / qq;
 }
 
+/* Below this share left by the quick residual a start is checked exactly
+ * as another affine start (exact ones leave rounding noise, about 1e-16). */
+#define AFFINE_CANDIDATE 1e-12
+
+/* How far the affine map A (2 x 2, row by row) from centred p to centred q
+ * takes polygon 0's hole centroids from polygon g's nearest ones: the sum
+ * of the squared distances. pm, qm: the outer loops' vertex means. */
+static double holes_apart(const cm_loops *loops, size_t g, const double a[4], double complex pm, double complex qm)
+{
+    const cm_loops *from = &loops[0], *to = &loops[g];
+    double sum = 0;
+    for (size_t i = 1, at = from->loop_sizes[0]; i < from->num_loops; at += from->loop_sizes[i++]) {
+        double complex c = loop_centroid(from->xy + 2 * at, from->loop_sizes[i]) - pm;
+        double complex image = qm + a[0] * creal(c) + a[1] * cimag(c) + I * (a[2] * creal(c) + a[3] * cimag(c));
+        double nearest = HUGE_VAL;
+        for (size_t j = 1, bt = to->loop_sizes[0]; j < to->num_loops; bt += to->loop_sizes[j++])
+            nearest = fmin(nearest, cabs(image - loop_centroid(to->xy + 2 * bt, to->loop_sizes[j])));
+        sum += nearest * nearest;
+    }
+    return sum;
+}
+
+/* Of the starts that make polygon g's outer loop an exact affine image of
+ * polygon 0's (`first` one of them), the one whose map takes polygon 0's
+ * holes nearest to polygon g's: an outer loop an affine map takes onto
+ * itself (a rectangle, a disc's polygon) leaves the turn to the holes. */
+static size_t shift_by_holes(const double complex *p, const double complex *q, size_t n, size_t first,
+                             const cm_loops *loops, size_t g)
+{
+    double complex pm = vertex_mean(loops[0].xy, n), qm = vertex_mean(loops[g].xy, n);
+    double a[4], least = HUGE_VAL;
+    size_t best = first;
+    for (size_t s = 0; s < n; s++) {
+        if (s != first && !(affine_residual(p, q, n, s, 0, NULL) <= AFFINE_CANDIDATE)) continue;
+        if (!(affine_residual(p, q, n, s, 1, a) <= AFFINE_TOLERANCE * AFFINE_TOLERANCE)) continue;
+        double apart = holes_apart(loops, g, a, pm, qm);
+        if (apart < least || (apart == least && s == first)) least = apart, best = s;
+    }
+    return best;
+}
+
 cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t *counts, size_t k,
-                                     const int *orientation, size_t *pins, int *found, cm_error *err)
+                                     const int *orientation, const cm_loops *loops, size_t *pins, int *found,
+                                     cm_error *err)
 {
     *found = 0;
     size_t n = counts[0];
@@ -295,10 +396,11 @@ cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t
         centred(polygons[g], n, orientation[g] < 0, q);
         double best = HUGE_VAL;
         for (size_t s = 0; s < n; s++) {
-            double left = affine_residual(p, q, n, s, 0);
+            double left = affine_residual(p, q, n, s, 0, NULL);
             if (left < best) best = left, shift[g] = s;
         }
-        all = best < HUGE_VAL && affine_residual(p, q, n, shift[g], 1) <= AFFINE_TOLERANCE * AFFINE_TOLERANCE;
+        all = best < HUGE_VAL && affine_residual(p, q, n, shift[g], 1, NULL) <= AFFINE_TOLERANCE * AFFINE_TOLERANCE;
+        if (all && loops && loops[0].num_loops > 1) shift[g] = shift_by_holes(p, q, n, shift[g], loops, g);
     }
     if (all) {
         for (size_t i = 0; i < n; i++)
@@ -308,19 +410,6 @@ cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t
     }
     free(p), free(q), free(shift);
     return CM_OK;
-}
-
-/* The centroid of a loop of n vertices (its area's; the vertex mean where
- * the area vanishes). */
-static double complex loop_centroid(const double *xy, size_t n)
-{
-    double a = 0, cx = 0, cy = 0;
-    for (size_t i = 0; i < n; i++) {
-        const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % n);
-        double c = p[0] * q[1] - q[0] * p[1];
-        a += c, cx += (p[0] + q[0]) * c, cy += (p[1] + q[1]) * c;
-    }
-    return a != 0 ? (cx + I * cy) / (3 * a) : vertex_mean(xy, n);
 }
 
 /* z, a point inside polygon 0's outer loop, carried into polygon g by its
@@ -361,6 +450,74 @@ static size_t nearest_hole(const double complex *centres, size_t holes, double c
     return best;
 }
 
+/* The radius of the disc of a loop's area. */
+static double loop_radius(const double *xy, size_t n)
+{
+    double a = 0;
+    for (size_t i = 0; i < n; i++) {
+        const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % n);
+        a += p[0] * q[1] - q[0] * p[1];
+    }
+    return sqrt(fabs(a) / (2 * CM_PI));
+}
+
+/* Scratch for matching the h holes of polygon 0 and polygon g. */
+typedef struct hole_match {
+    size_t h;
+    double *tan_half;                 /* outer->n */
+    double complex *carried, *centres; /* h each */
+    double *radius;                   /* h: polygon g's holes' */
+    size_t *to, *back;                /* h each */
+} hole_match;
+
+/* Polygon 0's hole centroids carried into polygon g through `outer`
+ * (carry_mean_value), each matched to polygon g's nearest hole (to) and
+ * back. 1 when the match is one-to-one (each the other's nearest), and
+ * *farthest the largest distance from a carried centroid to its hole's
+ * centroid over that hole's radius; 0 otherwise. */
+static int match_holes_of(const cm_loops *polygons, size_t g, const cm_boundary_map *outer, hole_match *m,
+                          double *farthest)
+{
+    size_t h = m->h;
+    for (size_t pass = 0; pass < 2; pass++) { /* polygon 0's holes carried, then polygon g's */
+        const cm_loops *poly = &polygons[pass ? g : 0];
+        size_t at = poly->loop_sizes[0];
+        for (size_t j = 0; j < h; j++) {
+            const double *xy = poly->xy + 2 * at;
+            size_t n = poly->loop_sizes[j + 1];
+            double complex c = loop_centroid(xy, n);
+            at += n;
+            if (pass)
+                m->centres[j] = c, m->radius[j] = loop_radius(xy, n);
+            else if (!carry_mean_value(outer, g, c, m->tan_half, &m->carried[j]))
+                return 0;
+        }
+    }
+    int matched = 1;
+    *farthest = 0;
+    for (size_t j = 0; j < h; j++) m->to[j] = nearest_hole(m->centres, h, m->carried[j]);
+    for (size_t j = 0; j < h; j++) m->back[j] = nearest_hole(m->carried, h, m->centres[j]);
+    for (size_t j = 0; j < h; j++) {
+        matched &= m->back[m->to[j]] == j;
+        *farthest = fmax(*farthest, cabs(m->carried[j] - m->centres[m->to[j]]) / m->radius[m->to[j]]);
+    }
+    return matched;
+}
+
+static int hole_match_init(hole_match *m, size_t h, size_t n)
+{
+    m->h = h;
+    m->tan_half = malloc(n * sizeof *m->tan_half), m->radius = malloc(h * sizeof *m->radius);
+    m->carried = malloc(h * sizeof *m->carried), m->centres = malloc(h * sizeof *m->centres);
+    m->to = malloc(h * sizeof *m->to), m->back = malloc(h * sizeof *m->back);
+    return m->tan_half && m->radius && m->carried && m->centres && m->to && m->back;
+}
+
+static void hole_match_free(hole_match *m)
+{
+    free(m->tan_half), free(m->radius), free(m->carried), free(m->centres), free(m->to), free(m->back);
+}
+
 cm_status cm_correspond_match_holes(const cm_loops *polygons, size_t k, const cm_boundary_map *outer,
                                     size_t *order, size_t *moved, cm_error *err)
 {
@@ -369,31 +526,32 @@ cm_status cm_correspond_match_holes(const cm_loops *polygons, size_t k, const cm
     for (size_t g = 0; g < k; g++)
         for (size_t l = 0; l < L; l++) order[g * L + l] = l;
     if (h < 2) return CM_OK;
-    double complex *carried = malloc(h * sizeof *carried), *centres = malloc(h * sizeof *centres);
-    double *tan_half = malloc(outer->n * sizeof *tan_half);
-    size_t *to = malloc(h * sizeof *to), *back = malloc(h * sizeof *back);
-    cm_status s = carried && centres && tan_half && to && back ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
+    hole_match m;
+    cm_status s = hole_match_init(&m, h, outer->n) ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
+    double unused;
     for (size_t g = 1; s == CM_OK && g < k; g++) {
-        int matched = 1;
-        for (size_t pass = 0; pass < 2; pass++) { /* polygon 0's holes carried, then polygon g's */
-            const cm_loops *poly = &polygons[pass ? g : 0];
-            size_t at = poly->loop_sizes[0];
-            for (size_t j = 0; j < h; j++) {
-                double complex c = loop_centroid(poly->xy + 2 * at, poly->loop_sizes[j + 1]);
-                at += poly->loop_sizes[j + 1];
-                if (pass) centres[j] = c;
-                else if (!carry_mean_value(outer, g, c, tan_half, &carried[j])) matched = 0;
-            }
-        }
-        if (!matched) continue; /* keep the input's order */
-        for (size_t j = 0; j < h; j++) to[j] = nearest_hole(centres, h, carried[j]);
-        for (size_t j = 0; j < h; j++) back[j] = nearest_hole(carried, h, centres[j]);
-        for (size_t j = 0; j < h; j++) matched &= back[to[j]] == j;
-        for (size_t j = 0; matched && j < h; j++) {
-            order[g * L + 1 + j] = 1 + to[j];
-            *moved += to[j] != j;
+        if (!match_holes_of(polygons, g, outer, &m, &unused)) continue; /* keep the input's order */
+        for (size_t j = 0; j < h; j++) {
+            order[g * L + 1 + j] = 1 + m.to[j];
+            *moved += m.to[j] != j;
         }
     }
-    free(carried), free(centres), free(tan_half), free(to), free(back);
+    hole_match_free(&m);
+    return s;
+}
+
+cm_status cm_correspond_holes_land(const cm_loops *polygons, size_t k, const cm_boundary_map *outer, int *land,
+                                   cm_error *err)
+{
+    size_t h = polygons[0].num_loops - 1;
+    hole_match m;
+    *land = 1;
+    if (!h) return CM_OK;
+    cm_status s = hole_match_init(&m, h, outer->n) ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
+    for (size_t g = 1; s == CM_OK && g < k && *land; g++) {
+        double farthest;
+        *land = match_holes_of(polygons, g, outer, &m, &farthest) && farthest <= 1;
+    }
+    hole_match_free(&m);
     return s;
 }

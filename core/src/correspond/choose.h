@@ -13,9 +13,13 @@
  * the start whose points are the least-squares similar image of polygon
  * 0's (Procrustes residual). Candidates: every vertex, or evenly spaced
  * ones on large polygons and then their neighbourhood. orientation as from
- * cm_input_check_polygons. */
+ * cm_input_check_polygons. loops: NULL, or for the outer loops of
+ * polygons with holes the polygons themselves: each start's residual then
+ * also counts polygon 0's hole centroids under its similarity against
+ * polygon g's nearest ones, so that where a turn takes the outer loop onto
+ * itself (a rectangle) the holes choose. */
 cm_status cm_correspond_choose_starts(const double *const *polygons, const size_t *counts, size_t k,
-                                      const int *orientation, size_t *pins, cm_error *err);
+                                      const int *orientation, const cm_loops *loops, size_t *pins, cm_error *err);
 
 /* For polygons with holes: similarity (4 per polygon: a then b, complex,
  * re and im) such that b + a z, z on polygon 0's outer loop, is the
@@ -55,14 +59,29 @@ cm_status cm_correspond_choose_hole_starts(const double *const *holes, const siz
 cm_status cm_correspond_match_holes(const cm_loops *polygons, size_t k, const cm_boundary_map *outer,
                                     size_t *order, size_t *moved, cm_error *err);
 
+/* Does the outer loops' correspondence `outer` take every hole where a
+ * hole is? *land = 1 when, for every polygon g, polygon 0's hole
+ * centroids carried into g (as cm_correspond_match_holes carries them)
+ * match g's holes one to one, each within its hole's radius (that of the
+ * disc of its area) of the hole's centroid; else 0. A pairing of the outer
+ * loops turned against the holes (a rectangle's two ways) takes them
+ * elsewhere. */
+cm_status cm_correspond_holes_land(const cm_loops *polygons, size_t k, const cm_boundary_map *outer, int *land,
+                                   cm_error *err);
+
 /* Polygons of one count that are affine images of polygon 0 up to where
  * they start: if for every polygon g some start makes its vertices, walked
  * counter-clockwise, the least-squares affine image of polygon 0's within
  * a relative RMS of 1e-9, *found = 1 and pins (counts[0] k-tuples, as
  * cm_options.pins) tie every vertex to its image; the map between them is
  * then affine and forces no distortion at all. Else *found = 0 (also for
- * more than 4096 vertices, where the check costs too much). */
+ * more than 4096 vertices, where the check costs too much). loops: NULL,
+ * or for the outer loops of polygons with holes the polygons themselves:
+ * where several starts make an exact affine image (an outer loop an
+ * affine map takes onto itself), the one whose map takes polygon 0's hole
+ * centroids nearest to polygon g's is taken. */
 cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t *counts, size_t k,
-                                     const int *orientation, size_t *pins, int *found, cm_error *err);
+                                     const int *orientation, const cm_loops *loops, size_t *pins, int *found,
+                                     cm_error *err);
 
 #endif
