@@ -589,7 +589,8 @@ enum loop_kind { LOOP_WHOLE, LOOP_OUTER, LOOP_BY_START };
  * for auto, the starts chosen for a hole (k input vertices), taken in
  * place of the loop's own choice; else NULL. with_holes: for the outer
  * loops of polygons with holes, the polygons (their holes choose between
- * starts an affine map takes alike); else NULL. *choice receives the
+ * starts an affine map takes alike, and between auto_whole's pairings);
+ * else NULL. *choice receives the
  * correspondence made. */
 static cm_status correspond_boundary(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
                                      const int *orientation, const cm_options *o, const size_t *every_vertex,
