@@ -150,36 +150,29 @@ static inline void hf_swapped_sides(shape *a, shape *b)
     add_triangle(b, -0.65, 0, 0.15, 0);
 }
 
-/* Seven round holes on a grid in a disc, their places permuted in the
- * other polygon: the bridges of one polygon's tree run between holes that
- * are far apart in the other. */
-static inline void hf_seven_permuted(shape *a, shape *b)
+/* Seven round holes of 6 vertices on a grid in a disc of 40, their places
+ * permuted in the other polygon, whose disc has outer_b vertices and each
+ * hole hole_b. */
+static inline void seven_holes(shape *a, shape *b, size_t outer_b, size_t hole_b)
 {
     add_circle(a, 0, 0, 2, 40, 1);
-    *b = *a;
+    add_circle(b, 0, 0, 2, outer_b, 1);
     double places[7][2] = {{-1, -0.6}, {0, -0.6}, {1, -0.6}, {-1, 0.6}, {0, 0.6}, {1, 0.6}, {0, 1.4}};
     int order[7] = {5, 3, 6, 0, 2, 4, 1};
     for (int h = 0; h < 7; h++) {
         add_circle(a, places[h][0], places[h][1], 0.25, 6, -1);
-        add_circle(b, places[order[h]][0], places[order[h]][1], 0.25, 6, -1);
+        add_circle(b, places[order[h]][0], places[order[h]][1], 0.25, hole_b, -1);
     }
 }
 
-/* The seven holes of hf_seven_permuted with other vertex counts in the
- * other polygon (48 on the disc, 8 on each hole), so that auto is the
- * default: a section's holes listed in another order than its
- * neighbour's. */
-static inline void hf_seven_permuted_counts(shape *a, shape *b)
-{
-    add_circle(a, 0, 0, 2, 40, 1);
-    add_circle(b, 0, 0, 2, 48, 1);
-    double places[7][2] = {{-1, -0.6}, {0, -0.6}, {1, -0.6}, {-1, 0.6}, {0, 0.6}, {1, 0.6}, {0, 1.4}};
-    int order[7] = {5, 3, 6, 0, 2, 4, 1};
-    for (int h = 0; h < 7; h++) {
-        add_circle(a, places[h][0], places[h][1], 0.25, 6, -1);
-        add_circle(b, places[order[h]][0], places[order[h]][1], 0.25, 8, -1);
-    }
-}
+/* The seven holes with the same counts: the bridges of one polygon's tree
+ * run between holes that are far apart in the other. */
+static inline void hf_seven_permuted(shape *a, shape *b) { seven_holes(a, b, 40, 6); }
+
+/* The seven holes with other vertex counts in the other polygon (48 on
+ * the disc, 8 on each hole), so that auto is the default: a section's
+ * holes listed in another order than its neighbour's. */
+static inline void hf_seven_permuted_counts(shape *a, shape *b) { seven_holes(a, b, 48, 8); }
 
 /* A rectangle of half sides w by h, m points a side, counter-clockwise from
  * its corner (-w, -h), the list started at its point `start`, moved by
