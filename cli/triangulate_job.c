@@ -200,6 +200,9 @@ static void print_summary(const triangulate_run *run)
     else
         printf("wrote %s/report.json, %s/" PREVIEW_SVG " and %s/" PREVIEW_PNG "\n", run->output.target,
                run->output.target, run->output.target);
+    if (stats->holes_moved)
+        printf("holes paired by position: %zu listed at another place than the first input's "
+               "(report.json's boundary_source names each one's input loop)\n", stats->holes_moved);
     const cm_options *o = &run->args->tri.options;
     if (o->ceiling && stats->ceiling_deg < o->min_angle_deg)
         printf("no compatible triangulation of %s can have a smallest angle above %.1f degrees "

@@ -159,6 +159,7 @@ def test_auto_pairs_holes_by_position(cm, tmp_path):
     for second in ("moved", "shuffled"):
         result = cm("triangulate", "plate.xy", f"{second}.xy", "--out-dir", second, "--correspondence", "auto")
         assert result.returncode == 0, result.stderr
+        assert ("holes paired by position: 3 " in result.stdout) == (second == "shuffled")
         runs[second] = json.loads((tmp_path / second / "report.json").read_text())
     assert runs["moved"]["holes_moved"] == 0 and runs["shuffled"]["holes_moved"] == 3
     assert (tmp_path / "moved" / "plate.off").read_bytes() == (tmp_path / "shuffled" / "plate.off").read_bytes()
