@@ -66,6 +66,20 @@ def test_plate_three_holes_as_lists():
     check(result, [PLATE, PLATE_MOVED])
 
 
+def test_auto_pairs_holes_by_position():
+    """The moved plate's holes listed in another order: auto pairs each with
+    the plate's hole at the same place (the output lists them in the
+    plate's order) and says how many moved; the square plate's quarter
+    turns take its outline onto itself, and the holes choose the turn: the
+    corner (-2, -2) pairs with its own image."""
+    shuffled = [PLATE_MOVED[0], PLATE_MOVED[2], PLATE_MOVED[3], PLATE_MOVED[1]]
+    result = compatmesh.triangulate([PLATE, shuffled], correspondence="auto", remesh=False)
+    assert result.stats["holes_moved"] == 3
+    n = sum(len(loop) for loop in PLATE)
+    assert np.array_equal(result.vertices[1][:n], np.vstack(PLATE_MOVED))
+    assert np.array_equal(result.vertices[0][:n], np.vstack(PLATE))
+
+
 def test_bad_input_names_polygon_and_loop():
     a = [square(1, 8), square(0.4, 4, -1)]
     with pytest.raises(compatmesh.InputError, match="hole 1 \\(loop 1\\) has 5 vertices") as info:
