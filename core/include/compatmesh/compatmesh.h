@@ -352,10 +352,10 @@ typedef struct cm_stats {
      * CM_CHOICE_SIMILARITY (their starts fitted jointly with the outer
      * loop's). */
     cm_correspondence_choice correspondence_choice;
-    /* CM_CORRESPOND_AUTO with two or more holes: how many holes of the
-     * polygons after the first pair with polygon 0's hole at another place
-     * in their input's list than their own (matched by position,
-     * cm_triangulate_loops); 0 where hole j pairs with hole j. */
+    /* CM_CORRESPOND_AUTO and _SIMILARITY with two or more holes: how many
+     * holes of the polygons after the first pair with polygon 0's hole at
+     * another place in their input's list than their own (matched by
+     * position, cm_triangulate_loops); 0 where hole j pairs with hole j. */
     size_t holes_moved;
 } cm_stats;
 
