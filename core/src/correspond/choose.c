@@ -49,15 +49,19 @@ static double complex sample(const double *xy, size_t n, int reversed, const dou
     return mean;
 }
 
-/* The share of |w|^2 the best similarity image of z leaves. */
-static double residual(const double complex *z, const double complex *w)
+/* The best similarity image a z of w (SAMPLES centred points each): a,
+ * what it leaves of |w|^2 (*left) and |w|^2 itself (*ww). 0 where either
+ * is all zero. */
+static int similarity_fit(const double complex *z, const double complex *w, double complex *a, double *left,
+                          double *ww)
 {
     double complex zw = 0;
-    double zz = 0, ww = 0;
-    for (int j = 0; j < SAMPLES; j++) zw += conj(z[j]) * w[j], zz += creal(z[j] * conj(z[j])), ww += creal(w[j] * conj(w[j]));
-    if (!(zz > 0) || !(ww > 0)) return HUGE_VAL;
-    double left = ww - creal(zw * conj(zw)) / zz;
-    return left / ww;
+    double zz = 0;
+    *ww = 0;
+    for (int j = 0; j < SAMPLES; j++) zw += conj(z[j]) * w[j], zz += creal(z[j] * conj(z[j])), *ww += creal(w[j] * conj(w[j]));
+    if (!(zz > 0) || !(*ww > 0)) return 0;
+    *a = zw / zz, *left = *ww - creal(zw * conj(zw)) / zz;
+    return 1;
 }
 
 /* One loop's candidate starts, scored against a target (SAMPLES centred
@@ -125,16 +129,9 @@ static double complex loop_centroid(const double *xy, size_t n)
  * itself (a rectangle) leaves the turn to the holes. */
 static double procrustes_cost(const start_search *q, size_t start)
 {
-    double complex mean = sample(q->xy, q->n, q->reversed, q->arc, start, q->w);
-    if (!q->h) return residual(q->target, q->w);
-    double complex zw = 0;
-    double zz = 0, ww = 0;
-    for (int j = 0; j < SAMPLES; j++)
-        zw += conj(q->target[j]) * q->w[j], zz += creal(q->target[j] * conj(q->target[j])),
-            ww += creal(q->w[j] * conj(q->w[j]));
-    if (!(zz > 0) || !(ww > 0)) return HUGE_VAL;
-    double complex a = zw / zz;
-    double left = ww - creal(zw * conj(zw)) / zz;
+    double complex mean = sample(q->xy, q->n, q->reversed, q->arc, start, q->w), a;
+    double left, ww;
+    if (!similarity_fit(q->target, q->w, &a, &left, &ww)) return HUGE_VAL;
     for (size_t i = 0; i < q->h; i++) {
         double nearest = HUGE_VAL;
         for (size_t j = 0; j < q->h; j++) nearest = fmin(nearest, cabs(a * q->target_holes[i] - (q->holes[j] - mean)));
@@ -222,7 +219,6 @@ static double distance_cost(const start_search *q, size_t start)
     return sum;
 }
 
-
 /* Point z of polygon 0's hole carried into polygon g radially: the point
  * of the outer loops' map whose direction from polygon 0's hole centre c0
  * is nearest z's, and z at its share of the way out from c0 to it, go to
@@ -300,7 +296,7 @@ static void centred(const double *xy, size_t n, int reversed, double complex *ou
 /* The share of sum |q|^2 the least-squares affine image of p leaves, q
  * read from position shift: with S = sum p p^T and C = sum q p^T (2 x 2),
  * the residual is sum |q|^2 - tr(C S^-1 C^T) (exact: summed point by
- * point). */
+ * point, and a, if not NULL, receives A = C S^-1 row by row). */
 static double affine_residual(const double complex *p, const double complex *q, size_t n, size_t shift, int exact,
                               double a[4])
 {
