@@ -4,9 +4,22 @@
 #ifndef CM_CLI_EDGE_LOOP_H
 #define CM_CLI_EDGE_LOOP_H
 
+#include <float.h>
+#include <math.h>
 #include <stddef.h>
 
 #include "cli_common.h"
+
+/* Does a vertex (x, y, z) of a polyline file lie in the plane z = z0 of the
+ * first? Up to the rounding of coordinates computed and written in single
+ * precision (MeshLab's sections differ in the last float digits): within
+ * 16 float epsilons of the largest of |x|, |y|, |z| and |z0|. The polygon
+ * is meshed in x and y; z is only checked. */
+static inline int in_plane_z(double x, double y, double z, double z0)
+{
+    double scale = fmax(fmax(fabs(x), fabs(y)), fmax(fabs(z), fabs(z0)));
+    return fabs(z - z0) <= 16 * FLT_EPSILON * scale;
+}
 
 /* An edge between vertices a and b (0-based), read at `where`: a line
  * number, or with binary files the edge's index in the file. */

@@ -286,7 +286,7 @@ int parse_ply(const char *path, const char *data, size_t length, polygon_input *
                 }
                 xyz[3 * i] = value[ix], xyz[3 * i + 1] = value[iy], xyz[3 * i + 2] = iz >= 0 ? value[iz] : 0;
                 line[i] = binary ? i : where;
-                if (xyz[3 * i + 2] != xyz[2]) {
+                if (!in_plane_z(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], xyz[2])) {
                     if (binary)
                         cli_error_set(error, "%s: vertex %ld: z = %.17g differs from z = %.17g of vertex 0; "
                                       "the polygon must lie in a plane z = constant", path, i, xyz[3 * i + 2], xyz[2]);

@@ -333,7 +333,7 @@ static int obj_vertex(obj_state *state, char **fields, int count, long number)
     if (state->first_z_line == 0) {
         state->first_z = z;
         state->first_z_line = number;
-    } else if (z != state->first_z) {
+    } else if (!in_plane_z(x, y, z, state->first_z)) {
         cli_error_set(state->error,
                       "%s:%ld: z = %.17g differs from z = %.17g on line %ld; "
                       "the polygon must lie in a plane z = constant",

@@ -133,6 +133,34 @@ def test_bad_polylines(cm, tmp_path, case, fmt):
     assert not (tmp_path / "out").exists()
 
 
+@pytest.mark.parametrize("fmt", ["obj", "ply"])
+@pytest.mark.parametrize("off_plane, accepted", [(2e-6, True), (1e-3, False)])
+def test_section_z_up_to_float_rounding(cm, tmp_path, fmt, off_plane, accepted):
+    """MeshLab computes a section's points in single precision: its OBJ of
+    the plane z = -9.485472 (sh2.stl) has vertices at z = -9.485474, a
+    float's last digits away. Such a section is in the plane; a vertex 1e-3
+    off it (of a polygon 10 across) is not."""
+    points = [(5 * x, 5 * y) for x, y in star(11, 3)]
+    z = [-9.4854719999999997] + [-9.4854719999999997 + (off_plane if i % 3 == 1 else 0) for i in range(1, 11)]
+    edges = [(i, (i + 1) % 11) for i in range(11)]
+    if fmt == "obj":
+        text = "".join(f"v {x!r} {y!r} {zi!r}\n" for (x, y), zi in zip(points, z))
+        text += "".join(f"l {a + 1} {b + 1}\n" for a, b in edges)
+    else:
+        text = ("ply\nformat ascii 1.0\nelement vertex 11\nproperty double x\nproperty double y\n"
+                "property double z\nelement edge 11\nproperty int vertex1\nproperty int vertex2\nend_header\n")
+        text += "".join(f"{x!r} {y!r} {zi!r}\n" for (x, y), zi in zip(points, z))
+        text += "".join(f"{a} {b}\n" for a, b in edges)
+    (tmp_path / f"a.{fmt}").write_text(text)
+    write_xy(tmp_path / "b.xy", star(11, 4))
+    r = cm("triangulate", f"a.{fmt}", "b.xy", "-o", "out", "--no-remesh")
+    if accepted:
+        assert r.returncode == 0, r.stderr
+        assert boundary_of(tmp_path, "a", 11) == [list(p) for p in points]
+    else:
+        assert r.returncode == 2 and "the polygon must lie in a plane z = constant" in r.stderr, r.stderr
+
+
 @pytest.mark.parametrize("content, message", [
     (b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nelement face 1\n"
      b"property list uchar int vertex_indices\nend_header\n0 0\n1 0\n0 1\n3 0 1 2\n",
