@@ -111,8 +111,8 @@ static double complex vertex_mean(const double *xy, size_t n)
 }
 
 /* The centroid of a loop of n vertices (its area's; the vertex mean where
- * the area vanishes). */
-static double complex loop_centroid(const double *xy, size_t n)
+ * the area vanishes); *area, if not NULL, receives its signed area. */
+static double complex loop_centroid(const double *xy, size_t n, double *area)
 {
     double a = 0, cx = 0, cy = 0;
     for (size_t i = 0; i < n; i++) {
@@ -120,6 +120,7 @@ static double complex loop_centroid(const double *xy, size_t n)
         double c = p[0] * q[1] - q[0] * p[1];
         a += c, cx += (p[0] + q[0]) * c, cy += (p[1] + q[1]) * c;
     }
+    if (area) *area = a / 2;
     return a != 0 ? (cx + I * cy) / (3 * a) : vertex_mean(xy, n);
 }
 
@@ -144,7 +145,7 @@ static double procrustes_cost(const start_search *q, size_t start)
 static void hole_centroids(const cm_loops *loops, double complex centre, double complex *out)
 {
     for (size_t i = 1, at = loops->loop_sizes[0]; i < loops->num_loops; at += loops->loop_sizes[i++])
-        out[i - 1] = loop_centroid(loops->xy + 2 * at, loops->loop_sizes[i]) - centre;
+        out[i - 1] = loop_centroid(loops->xy + 2 * at, loops->loop_sizes[i], NULL) - centre;
 }
 
 cm_status cm_correspond_choose_starts(const double *const *polygons, const size_t *counts, size_t k,
@@ -334,18 +335,18 @@ static double affine_residual(const double complex *p, const double complex *q, 
 #define AFFINE_CANDIDATE 1e-12
 
 /* How far the affine map A (2 x 2, row by row) from centred p to centred q
- * takes polygon 0's hole centroids from polygon g's nearest ones: the sum
- * of the squared distances. pm, qm: the outer loops' vertex means. */
-static double holes_apart(const cm_loops *loops, size_t g, const double a[4], double complex pm, double complex qm)
+ * takes polygon 0's h hole centroids (from, less polygon 0's outer vertex
+ * mean) from polygon g's nearest ones (to): the sum of the squared
+ * distances. qm: polygon g's outer vertex mean. */
+static double holes_apart(const double complex *from, const double complex *to, size_t h, const double a[4],
+                          double complex qm)
 {
-    const cm_loops *from = &loops[0], *to = &loops[g];
     double sum = 0;
-    for (size_t i = 1, at = from->loop_sizes[0]; i < from->num_loops; at += from->loop_sizes[i++]) {
-        double complex c = loop_centroid(from->xy + 2 * at, from->loop_sizes[i]) - pm;
+    for (size_t i = 0; i < h; i++) {
+        double complex c = from[i];
         double complex image = qm + a[0] * creal(c) + a[1] * cimag(c) + I * (a[2] * creal(c) + a[3] * cimag(c));
         double nearest = HUGE_VAL;
-        for (size_t j = 1, bt = to->loop_sizes[0]; j < to->num_loops; bt += to->loop_sizes[j++])
-            nearest = fmin(nearest, cabs(image - loop_centroid(to->xy + 2 * bt, to->loop_sizes[j])));
+        for (size_t j = 0; j < h; j++) nearest = fmin(nearest, cabs(image - to[j]));
         sum += nearest * nearest;
     }
     return sum;
@@ -354,17 +355,21 @@ static double holes_apart(const cm_loops *loops, size_t g, const double a[4], do
 /* Of the starts that make polygon g's outer loop an exact affine image of
  * polygon 0's (`first` one of them), the one whose map takes polygon 0's
  * holes nearest to polygon g's: an outer loop an affine map takes onto
- * itself (a rectangle, a disc's polygon) leaves the turn to the holes. */
+ * itself (a rectangle, a disc's polygon) leaves the turn to the holes.
+ * holes: scratch for 2 (num_loops - 1) centroids. */
 static size_t shift_by_holes(const double complex *p, const double complex *q, size_t n, size_t first,
-                             const cm_loops *loops, size_t g)
+                             const cm_loops *loops, size_t g, double complex *holes)
 {
-    double complex pm = vertex_mean(loops[0].xy, n), qm = vertex_mean(loops[g].xy, n);
+    size_t h = loops[0].num_loops - 1;
+    double complex qm = vertex_mean(loops[g].xy, n);
+    hole_centroids(&loops[0], vertex_mean(loops[0].xy, n), holes);
+    hole_centroids(&loops[g], 0, holes + h);
     double a[4], least = HUGE_VAL;
     size_t best = first;
     for (size_t s = 0; s < n; s++) {
         if (s != first && !(affine_residual(p, q, n, s, 0, NULL) <= AFFINE_CANDIDATE)) continue;
         if (!(affine_residual(p, q, n, s, 1, a) <= AFFINE_TOLERANCE * AFFINE_TOLERANCE)) continue;
-        double apart = holes_apart(loops, g, a, pm, qm);
+        double apart = holes_apart(holes, holes + h, h, a, qm);
         if (apart < least || (apart == least && s == first)) least = apart, best = s;
     }
     return best;
@@ -379,10 +384,12 @@ cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t
     for (size_t g = 1; g < k; g++)
         if (counts[g] != n) return CM_OK;
     if (n > AFFINE_MAX_VERTICES) return CM_OK;
+    size_t h = loops ? loops[0].num_loops - 1 : 0;
     double complex *p = malloc(n * sizeof *p), *q = malloc(n * sizeof *q);
+    double complex *holes = h ? malloc(2 * h * sizeof *holes) : NULL;
     size_t *shift = malloc(k * sizeof *shift);
-    if (!p || !q || !shift) {
-        free(p), free(q), free(shift);
+    if (!p || !q || !shift || (h && !holes)) {
+        free(p), free(q), free(holes), free(shift);
         return cm_fail_status(err, CM_ERR_NO_MEMORY);
     }
     centred(polygons[0], n, orientation[0] < 0, p);
@@ -396,7 +403,7 @@ cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t
             if (left < best) best = left, shift[g] = s;
         }
         all = best < HUGE_VAL && affine_residual(p, q, n, shift[g], 1, NULL) <= AFFINE_TOLERANCE * AFFINE_TOLERANCE;
-        if (all && loops && loops[0].num_loops > 1) shift[g] = shift_by_holes(p, q, n, shift[g], loops, g);
+        if (all && h) shift[g] = shift_by_holes(p, q, n, shift[g], loops, g, holes);
     }
     if (all) {
         for (size_t i = 0; i < n; i++)
@@ -404,7 +411,7 @@ cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t
                 pins[i * k + g] = cm_ccw_input((i + shift[g]) % n, n, orientation[g] < 0);
         *found = 1;
     }
-    free(p), free(q), free(shift);
+    free(p), free(q), free(holes), free(shift);
     return CM_OK;
 }
 
@@ -446,17 +453,6 @@ static size_t nearest_hole(const double complex *centres, size_t holes, double c
     return best;
 }
 
-/* The radius of the disc of a loop's area. */
-static double loop_radius(const double *xy, size_t n)
-{
-    double a = 0;
-    for (size_t i = 0; i < n; i++) {
-        const double *p = xy + 2 * i, *q = xy + 2 * ((i + 1) % n);
-        a += p[0] * q[1] - q[0] * p[1];
-    }
-    return sqrt(fabs(a) / (2 * CM_PI));
-}
-
 /* Scratch for matching the h holes of polygon 0 and polygon g. */
 typedef struct hole_match {
     size_t h;
@@ -481,10 +477,11 @@ static int match_holes_of(const cm_loops *polygons, size_t g, const cm_boundary_
         for (size_t j = 0; j < h; j++) {
             const double *xy = poly->xy + 2 * at;
             size_t n = poly->loop_sizes[j + 1];
-            double complex c = loop_centroid(xy, n);
+            double area;
+            double complex c = loop_centroid(xy, n, &area);
             at += n;
             if (pass)
-                m->centres[j] = c, m->radius[j] = loop_radius(xy, n);
+                m->centres[j] = c, m->radius[j] = sqrt(fabs(area) / CM_PI); /* the disc of its area */
             else if (!carry_mean_value(outer, g, c, m->tan_half, &m->carried[j]))
                 return 0;
         }
