@@ -16,8 +16,8 @@ def test_table():
     rows = [line.split(" | ") for line in run.stdout.splitlines() if line.startswith("| ") and "---" not in line]
     header, rows = rows[0], rows[1:]
     assert header[1] == "pair" and header[5] == "c" and header[9] == "bound"
-    # 12 glyph pairs twice, 15 of tests/core, the command line's and Python's plates
-    assert len(rows) == 12 * 2 + 15 + 2
+    # 12 glyph pairs twice, 17 of tests/core, the command line's and Python's plates
+    assert len(rows) == 12 * 2 + 17 + 2
     assert all(r[-2] == "yes" for r in rows), [r[1] for r in rows if r[-2] != "yes"]
     good = sum(r[-1] == "yes |" for r in rows)
     assert "%d pairs with holes: %d valid, %d " % (len(rows), len(rows), good) in run.stdout

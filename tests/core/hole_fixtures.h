@@ -26,14 +26,21 @@ static inline void add_point(shape *s, double x, double y)
 
 static inline void begin_loop(shape *s) { s->sizes[s->loops++] = 0; }
 
-/* A circle of m points, counter-clockwise (dir 1) or clockwise (-1). */
-static inline void add_circle(shape *s, double cx, double cy, double radius, size_t m, int dir)
+/* A circle of m points from angle `from` (radians), counter-clockwise
+ * (dir 1) or clockwise (-1). */
+static inline void add_circle_from(shape *s, double cx, double cy, double radius, size_t m, int dir, double from)
 {
     begin_loop(s);
     for (size_t i = 0; i < m; i++) {
-        double a = dir * 2 * 3.14159265358979323846 * (double)i / (double)m;
+        double a = dir * 2 * 3.14159265358979323846 * (double)i / (double)m + from;
         add_point(s, cx + radius * cos(a), cy + radius * sin(a));
     }
+}
+
+/* A circle of m points from angle 0. */
+static inline void add_circle(shape *s, double cx, double cy, double radius, size_t m, int dir)
+{
+    add_circle_from(s, cx, cy, radius, m, dir, 0);
 }
 
 /* An axis-aligned square of side 2 h around (cx, cy), m points (m a
@@ -298,6 +305,32 @@ static inline void hf_ring_and_stem(shape *a, shape *b)
     add_corners(b, stem, 6, 0.25), add_corners(b, hole, 4, 0.25);
 }
 
+/* Two sections of a pipe: circles of radius 2 (48 points from angle 0;
+ * 40 from 0.3 radians) around holes of radius 1 (24 from 0; 20 from 0.1),
+ * loops of other sizes, so auto pairs them. Every turn of a circle fits
+ * a circle alike; a sweep wants the one that does not twist. */
+static inline void hf_pipe(shape *a, shape *b)
+{
+    add_circle_from(a, 0, 0, 2, 48, 1, 0), add_circle_from(a, 0, 0, 1, 24, -1, 0);
+    add_circle_from(b, 0, 0, 2, 40, 1, 0.3), add_circle_from(b, 0, 0, 1, 20, -1, 0.1);
+}
+
+/* A flange: a disc of radius 2 (48 points) with six bolt holes of radius
+ * 0.3 (10 points) on the circle of radius 1.4, against the same flange
+ * turned by 15 degrees (40 outline points from 0.3 radians), its holes
+ * listed in the same order. The outline fixes no turn; of the turns that
+ * put holes on holes (15 degrees plus multiples of 60), the least. */
+static inline void hf_flange_turned(shape *a, shape *b)
+{
+    const double pi = 3.14159265358979323846, turn = 15 * pi / 180;
+    add_circle_from(a, 0, 0, 2, 48, 1, 0), add_circle_from(b, 0, 0, 2, 40, 1, 0.3);
+    for (int j = 0; j < 6; j++) {
+        double at = j * pi / 3;
+        add_circle_from(a, 1.4 * cos(at), 1.4 * sin(at), 0.3, 10, -1, 0);
+        add_circle_from(b, 1.4 * cos(at + turn), 1.4 * sin(at + turn), 0.3, 10, -1, turn);
+    }
+}
+
 /* Every pair test_holes.c triangulates, once each (the overlay-method run of
  * square/disc is the same pair). */
 typedef struct hole_fixture {
@@ -323,6 +356,8 @@ static inline size_t hole_fixture_list(const hole_fixture **list)
         {"egg, hole renumbered", hf_egg},
         {"crowded hole", hf_crowded_hole_reversed},
         {"ring and stem", hf_ring_and_stem},
+        {"pipe, turned", hf_pipe},
+        {"flange, turned 15 degrees", hf_flange_turned},
     };
     *list = fixtures;
     return sizeof fixtures / sizeof fixtures[0];

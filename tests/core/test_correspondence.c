@@ -227,7 +227,7 @@ static void test_conformal_similar_copy(void)
     size_t counts[2] = {N, N};
     int orientation[2] = {orientation_of(a, N), orientation_of(b, N)}, found = 0;
     cm_error err = {0};
-    CHECK(cm_correspond_conformal(in, counts, 2, orientation, CM_CONFORMAL_POWER, params, NULL, &found, &err) ==
+    CHECK(cm_correspond_conformal(in, counts, 2, orientation, NULL, 0, CM_CONFORMAL_POWER, params, NULL, &found, &err) ==
               CM_OK &&
           found);
     for (int i = 0; found && i < N; i++) {
@@ -266,12 +266,12 @@ static void test_conformal_memo(void)
         double power = change == 2 ? 0.3 : CM_CONFORMAL_POWER; /* another power: computed afresh; then back */
         double *fp[2] = {fresh[0], fresh[1]}, *ff[2] = {NULL, fresh_fine};
         double *gp[2] = {got[0], got[1]}, *gf[2] = {NULL, got_fine};
-        CHECK(cm_correspond_conformal(in, counts, 2, orientation, power, fp, ff, &found, &err) == CM_OK && found);
+        CHECK(cm_correspond_conformal(in, counts, 2, orientation, NULL, 0, power, fp, ff, &found, &err) == CM_OK && found);
         if (change == 2) CHECK(memcmp(fresh[1], before[1], sizeof before[1]) != 0); /* the power tells */
         memcpy(before, fresh, sizeof before);
         for (int round = 0; round < 2; round++) { /* computed (or recalled, after the first), then recalled */
             memset(got, 0, sizeof got), memset(got_fine, 0, sizeof got_fine);
-            CHECK(cm_correspond_conformal_memo(memo, in, counts, 2, orientation, power, gp, gf, &found, &err) ==
+            CHECK(cm_correspond_conformal_memo(memo, in, counts, 2, orientation, NULL, 0, power, gp, gf, &found, &err) ==
                       CM_OK &&
                   found);
             CHECK(!memcmp(got, fresh, sizeof got) && !memcmp(got_fine, fresh_fine, sizeof got_fine));
@@ -284,7 +284,10 @@ static void test_conformal_memo(void)
  * map crowds a convex corner (its parameter grows slowly there), so they
  * lie farther apart near the corners than near the middle of a side.
  * Linear interpolation between the square's vertices would space them
- * evenly. */
+ * evenly (the two gaps the corners cut together as long as one in the
+ * middle). Expected: those two together more than 2.6 times the middle
+ * one (together, as where a corner cuts its gap depends on the turn, which
+ * the square's four alike leave free). */
 static void test_conformal_between_vertices(void)
 {
     enum { N = 64, F = CM_PARAM_FINE };
@@ -298,7 +301,7 @@ static void test_conformal_between_vertices(void)
     size_t counts[2] = {N, 4};
     int orientation[2] = {1, 1}, found = 0;
     cm_error err = {0};
-    CHECK(cm_correspond_conformal(in, counts, 2, orientation, CM_CONFORMAL_POWER, params, fines, &found, &err) ==
+    CHECK(cm_correspond_conformal(in, counts, 2, orientation, NULL, 0, CM_CONFORMAL_POWER, params, fines, &found, &err) ==
               CM_OK &&
           found);
     cm_boundary_map map;
@@ -312,12 +315,12 @@ static void test_conformal_between_vertices(void)
             if (map.edge[1][i] == e && map.t[1][i] > 0) t[m++] = map.t[1][i];
         t[m++] = 1;
         CHECK_MSG(m >= 12, "side %d holds %d points", e, m - 2);
-        double end = fmin(t[1] - t[0], t[m - 1] - t[m - 2]), middle = 0;
+        double ends = t[1] - t[0] + t[m - 1] - t[m - 2], middle = 0;
         for (int j = 1; j < m; j++) {
             CHECK(t[j] > t[j - 1]);
             if (t[j - 1] < 0.5 && t[j] >= 0.5) middle = t[j] - t[j - 1];
         }
-        CHECK_MSG(end > 1.3 * middle, "side %d: gap %g at the corners, %g in the middle", e, end, middle);
+        CHECK_MSG(ends > 2.6 * middle, "side %d: gaps %g at the corners together, %g in the middle", e, ends, middle);
     }
     if (found) cm_boundary_map_clear(&map);
 }
@@ -649,6 +652,67 @@ static void test_rescues_before_restarts(void)
     cm_result_free(r[0]), cm_result_free(r[1]);
 }
 
+/* A regular polygon of m vertices on the circle of radius 2, from angle
+ * `from` (radians), counter-clockwise. */
+static void regular(double *xy, int m, double from)
+{
+    for (int i = 0; i < m; i++) {
+        double t = 2 * 3.14159265358979323846 * i / m + from;
+        xy[2 * i] = 2 * cos(t), xy[2 * i + 1] = 2 * sin(t);
+    }
+}
+
+/* Where turns fit alike, the one that turns the plane least: two discs
+ * (regular polygons of 48 and 40 vertices, the second from 0.3 radians)
+ * paired by auto (conformal; every turn of the disk fits) and by the
+ * similarity choice (every start fits; its starts 9 degrees apart), and a
+ * regular 24-gon against the same points listed from vertex 5 (auto: every
+ * start an exact affine image). Expected: valid, the contract; the turn
+ * of the plane under 2 degrees (conformal), under 4.5 (half the starts'
+ * spacing) and exactly the identity of places for the affine pairing
+ * (input vertex i of the first with i - 5 of the second). Before, auto
+ * turned the discs by -118 degrees. */
+static void test_least_turn(void)
+{
+    enum { A = 48, B = 40, R = 24, SHIFT = 5 };
+    double a[2 * A], b[2 * B], p[2 * R], q[2 * R];
+    regular(a, A, 0), regular(b, B, 0.3), regular(p, R, 0);
+    for (int i = 0; i < R; i++) q[2 * i] = p[2 * ((i + SHIFT) % R)], q[2 * i + 1] = p[2 * ((i + SHIFT) % R) + 1];
+    const struct {
+        const char *name;
+        const double *x, *y;
+        size_t nx, ny;
+        cm_correspondence mode;
+        double within;
+    } cases[] = {{"discs, auto", a, b, A, B, CM_CORRESPOND_AUTO, 2},
+                 {"discs, similarity", a, b, A, B, CM_CORRESPOND_SIMILARITY, 4.5},
+                 {"24-gon listed from vertex 5, auto", p, q, R, R, CM_CORRESPOND_AUTO, 1e-9}};
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        cm_options o;
+        cm_options_init(&o);
+        o.correspondence = cases[c].mode, o.remesh = 0;
+        const double *in[2] = {cases[c].x, cases[c].y};
+        size_t counts[2] = {cases[c].nx, cases[c].ny};
+        cm_result *r = NULL;
+        cm_status st = cm_triangulate_polygons(in, counts, 2, &o, &r);
+        CHECK_MSG(st == CM_OK, "%s: %s", cases[c].name, cm_result_message(r));
+        if (st == CM_OK) {
+            size_t n = cm_result_stats(r)->n;
+            CHECK_MSG(contract_holds(r, in, counts, 2), "%s: the contract", cases[c].name);
+            double turn = rc_plane_turn_deg(r, n);
+            CHECK_MSG(fabs(turn) <= cases[c].within, "%s: turned by %.3g degrees", cases[c].name, turn);
+            for (size_t i = 0; cases[c].x == p && i < n; i++) {
+                double t0, t1;
+                long e0 = cm_result_boundary_source(r, 0, i, &t0), e1 = cm_result_boundary_source(r, 1, i, &t1);
+                CHECK_MSG(t0 == 0 && t1 == 0 && e1 == (e0 + R - SHIFT) % R, "%s: vertex %ld with %ld", cases[c].name,
+                          e0, e1);
+            }
+            printf("%s: turned by %.3g degrees\n", cases[c].name, turn);
+        }
+        cm_result_free(r);
+    }
+}
+
 int main(void)
 {
     test_different_counts();
@@ -666,5 +730,6 @@ int main(void)
     test_slide_keeps_max_edge();
     test_no_diagonal_along_an_input_edge();
     test_rescues_before_restarts();
+    test_least_turn();
     return check_summary("test_correspondence");
 }

@@ -494,53 +494,134 @@ static void test_auto_hole_starts(void)
     }
 }
 
+/* One auto run of a pair with holes (remeshed with the given restarts,
+ * or restarts < 0: not remeshed): valid, within the boundary contract (the
+ * loops as the result wrote them checked exactly); *n: the boundary
+ * vertices, *least: the smallest angle. 0 where the run or the contract
+ * failed. */
+static int auto_run_on_loops(const shape *a, const shape *b, int restarts, const char *name, size_t *n,
+                             double *least, cm_correspondence_choice *choice)
+{
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = CM_CORRESPOND_AUTO, o.restarts = restarts < 0 ? 0 : restarts, o.remesh = restarts >= 0;
+    cm_loops in[2] = {loops_of(a), loops_of(b)};
+    cm_result *r = NULL;
+    cm_status st = cm_triangulate_loops(in, 2, &o, &r);
+    CHECK_MSG(st == CM_OK, "%s, restarts %d: %s", name, restarts, cm_result_message(r));
+    int ok = 0;
+    if (st == CM_OK) {
+        const shape *in_shape[2] = {a, b};
+        size_t sizes[HF_MAX_LOOPS], hole_added;
+        int contract = holes_boundary_contract(r, in_shape, sizes, &hole_added);
+        CHECK_MSG(contract, "%s, restarts %d: the boundary contract", name, restarts);
+        if (contract) {
+            cm_loops refined[2] = {{cm_result_vertices(r, 0), sizes, b->loops},
+                                   {cm_result_vertices(r, 1), sizes, b->loops}};
+            char why[256] = "";
+            CHECK_MSG(rc_check_loops(r, refined, 2, why, sizeof why), "%s: %s", name, why);
+            CHECK_MSG(rc_check_halfedges_holes(r, cm_result_stats(r)->n, b->loops - 1, why, sizeof why), "%s: %s",
+                      name, why);
+            ok = 1;
+        }
+        *n = cm_result_stats(r)->n, *least = rc_least_angle(r, 2), *choice = cm_result_stats(r)->correspondence_choice;
+        printf("%s, auto, restarts %d: %zu boundary vertices, Steiner %zu, smallest angle %.1f\n", name, restarts, *n,
+               cm_result_stats(r)->steiner, *least);
+    }
+    cm_result_free(r);
+    return ok;
+}
+
 /* Auto pairs the outer loops as polygons without holes: a square ring
  * against the same ring with a stem (hole_fixtures.h, loops of different
  * sizes), remeshed. Arc length from the similarity's start reached 13.3
  * degrees (smaller of the two meshes); the conformal correspondence of
  * the filled outer loops 19.5. Expected: valid, the outer loops' choice
  * conformal, and the smallest angle of both meshes at least 15 degrees
- * (min(15, c / 3), every corner c of the material 90 degrees or more).
- * The remesher adds points to the loops here, and its restart (below 0.85
- * of the aim of 25 degrees) starts from the loops so refined: with it the
- * result is valid too and higher (19.4 -> 20.5 degrees when written). */
+ * (min(15, c / 3), every corner c of the material 90 degrees or more),
+ * with the restart (below 0.85 of the aim of 25 degrees) higher. */
 static void test_auto_outer_loops_conformal(void)
 {
     shape a = {0}, b = {0};
     hf_ring_and_stem(&a, &b);
     CHECK(a.n == 32 + 12 && b.n == 64 + 12);
-    cm_loops in[2] = {loops_of(&a), loops_of(&b)};
     double least[2] = {0, 0};
     for (int restarts = 0; restarts < 2; restarts++) {
+        size_t n = 0;
+        cm_correspondence_choice choice = CM_CHOICE_INDEX;
+        if (!auto_run_on_loops(&a, &b, restarts, "ring and stem", &n, &least[restarts], &choice)) continue;
+        CHECK(choice == CM_CHOICE_CONFORMAL);
+        CHECK_MSG(least[restarts] >= 15.0, "ring and stem: smallest angle %.2f, below 15 degrees", least[restarts]);
+    }
+    CHECK_MSG(least[1] > least[0], "ring and stem: the restart %.2f, without %.2f degrees", least[1], least[0]);
+}
+
+/* The remesher's restart starts from the loops as the first run refined
+ * them: five triangle holes (hole_fixtures.h) paired by auto, where the
+ * remesher adds points to the loops and ends below 0.85 of its aim (10
+ * degrees; 19 boundary vertices before remeshing, 22 after). Expected,
+ * with and without the restart: valid, within the boundary contract, more
+ * boundary vertices than before remeshing; the restart higher. */
+static void test_auto_restart_from_refined_loops(void)
+{
+    shape a = {0}, b = {0};
+    hf_five_triangles(&a, &b);
+    double least[2] = {0, 0}, unused;
+    size_t before = 0;
+    cm_correspondence_choice choice;
+    auto_run_on_loops(&a, &b, -1, "five triangle holes, not remeshed", &before, &unused, &choice);
+    for (int restarts = 0; restarts < 2; restarts++) {
+        size_t n = 0;
+        if (!auto_run_on_loops(&a, &b, restarts, "five triangle holes", &n, &least[restarts], &choice)) continue;
+        CHECK_MSG(before > 0 && n > before, "five triangle holes, restarts %d: %zu boundary vertices, %zu before remeshing",
+                  restarts, n, before);
+    }
+    CHECK_MSG(least[1] > least[0], "five triangle holes: the restart %.2f, without %.2f degrees", least[1],
+              least[0]);
+}
+
+/* Auto takes the least turn where turns fit alike: two sections of a
+ * pipe (circles of other sizes from other angles, hole_fixtures.h), and
+ * a flange against itself turned by 15 degrees (six bolt holes; the
+ * outline fixes no turn, the holes fix it up to 60 degrees). Expected:
+ * valid, within the boundary contract; the pipe paired with a turn of the
+ * plane under 2 degrees (built before on a turn of -159 degrees), the
+ * flange with one within 2 degrees of 15 (before -161, six holes paired
+ * with others) and every hole with the one at its place (holes_moved 0),
+ * both at least 15 degrees (min(15, c / 3)). */
+static void test_auto_least_turn(void)
+{
+    static const struct {
+        const char *name;
+        void (*build)(shape *, shape *);
+        double turn;
+    } cases[] = {{"pipe", hf_pipe, 0}, {"flange", hf_flange_turned, 15}};
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        shape a = {0}, b = {0};
+        cases[c].build(&a, &b);
         cm_options o;
         cm_options_init(&o);
-        o.correspondence = CM_CORRESPOND_AUTO, o.restarts = restarts;
+        o.correspondence = CM_CORRESPOND_AUTO;
+        cm_loops in[2] = {loops_of(&a), loops_of(&b)};
         cm_result *r = NULL;
         cm_status st = cm_triangulate_loops(in, 2, &o, &r);
-        CHECK_MSG(st == CM_OK, "ring and stem, restarts %d: %s", restarts, cm_result_message(r));
+        CHECK_MSG(st == CM_OK, "%s: %s", cases[c].name, cm_result_message(r));
         if (st == CM_OK) {
             const shape *in_shape[2] = {&a, &b};
-            size_t sizes[HF_MAX_LOOPS], added;
-            int contract = holes_boundary_contract(r, in_shape, sizes, &added);
-            CHECK_MSG(contract && added > 0, "ring and stem, restarts %d: the boundary contract, %zu points added",
-                      restarts, added);
-            if (contract) {
-                cm_loops refined[2] = {{cm_result_vertices(r, 0), sizes, 2}, {cm_result_vertices(r, 1), sizes, 2}};
-                char why[256] = "";
-                CHECK_MSG(rc_check_loops(r, refined, 2, why, sizeof why), "ring and stem: %s", why);
-                CHECK_MSG(rc_check_halfedges_holes(r, cm_result_stats(r)->n, 1, why, sizeof why), "ring and stem: %s",
-                          why);
-            }
-            CHECK(cm_result_stats(r)->correspondence_choice == CM_CHOICE_CONFORMAL);
-            least[restarts] = rc_least_angle(r, 2);
-            CHECK_MSG(least[restarts] >= 15.0, "ring and stem: smallest angle %.2f, below 15 degrees",
-                      least[restarts]);
-            printf("ring and stem, auto, restarts %d: %zu boundary vertices, Steiner %zu, smallest angle %.1f\n",
-                   restarts, cm_result_stats(r)->n, cm_result_stats(r)->steiner, least[restarts]);
+            size_t sizes[HF_MAX_LOOPS], hole_added;
+            CHECK_MSG(holes_boundary_contract(r, in_shape, sizes, &hole_added), "%s: the boundary contract",
+                      cases[c].name);
+            double turn = rc_plane_turn_deg(r, sizes[0]), least = rc_least_angle(r, 2);
+            CHECK_MSG(fabs(turn - cases[c].turn) < 2, "%s: turned by %.2f degrees, not %.0f", cases[c].name, turn,
+                      cases[c].turn);
+            CHECK_MSG(cm_result_stats(r)->holes_moved == 0, "%s: %zu holes moved", cases[c].name,
+                      cm_result_stats(r)->holes_moved);
+            CHECK_MSG(least >= 15, "%s: smallest angle %.2f", cases[c].name, least);
+            printf("%s, auto: turned by %.2f degrees, Steiner %zu, smallest angle %.1f\n", cases[c].name, turn,
+                   cm_result_stats(r)->steiner, least);
         }
         cm_result_free(r);
     }
-    CHECK_MSG(least[1] > least[0], "ring and stem: the restart %.2f, without %.2f degrees", least[1], least[0]);
 }
 
 /* Auto pairs the holes by position: seven round holes on a grid in a
@@ -864,6 +945,8 @@ int main(void)
     test_arclength_loops();
     test_auto_hole_starts();
     test_auto_outer_loops_conformal();
+    test_auto_restart_from_refined_loops();
+    test_auto_least_turn();
     test_auto_matches_holes_by_position();
     test_auto_turn_chosen_by_holes();
     test_no_edge_along_an_input_edge();

@@ -456,26 +456,34 @@ static cm_status bound_before(cm_result *r, const double *const *polygons, const
  * parameter tempered by power (conformal.h): the others' points on a
  * polygon's edges where the conformal parameter puts them, or with
  * `linear` where it would be if it were linear between the polygon's
- * vertices. */
+ * vertices. with_holes: for the outer loops of polygons with holes, the
+ * polygons (their hole centres choose between turns that fit alike). */
 static cm_status conformal(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
-                           const int *orientation, int linear, double power, cm_boundary_map *out, int *found)
+                           const int *orientation, const cm_loops *with_holes, int linear, double power,
+                           cm_boundary_map *out, int *found)
 {
-    size_t total = 0;
+    size_t total = 0, h = with_holes ? with_holes[0].num_loops - 1 : 0;
     for (size_t g = 0; g < k; g++) total += counts[g];
     double *all = malloc(total * sizeof *all), **params = malloc(k * sizeof *params);
     double *all_fine = malloc(total * CM_PARAM_FINE * sizeof *all_fine), **fine = calloc(k, sizeof *fine);
-    cm_status s = all && params && all_fine && fine ? CM_OK : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-    for (size_t g = 0, at = 0; s == CM_OK && g < k; at += counts[g], g++)
+    double *all_centres = malloc((2 * h * k + 1) * sizeof *all_centres), **centres = calloc(k, sizeof *centres);
+    cm_status s = all && params && all_fine && fine && all_centres && centres
+                      ? CM_OK
+                      : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    for (size_t g = 0, at = 0; s == CM_OK && g < k; at += counts[g], g++) {
         params[g] = all + at, fine[g] = g ? all_fine + at * CM_PARAM_FINE : NULL;
+        centres[g] = all_centres + 2 * h * g;
+        if (h) cm_correspond_hole_centres(&with_holes[g], centres[g]);
+    }
     if (s == CM_OK)
-        s = cm_correspond_conformal_memo(r->conformal, polygons, counts, k, orientation, power, params, fine, found,
-                                         &r->error);
+        s = cm_correspond_conformal_memo(r->conformal, polygons, counts, k, orientation,
+                                         (const double *const *)centres, h, power, params, fine, found, &r->error);
     if (s == CM_OK && *found)
         s = cm_correspond_params(polygons, counts, k, orientation, (const double *const *)params,
                                  linear ? NULL : (const double *const *)fine, out, &r->error);
     if (s == CM_OK && *found && cm_boundary_map_least_piece(out) < CM_CROWDED_PIECE)
         cm_boundary_map_clear(out), *found = 0;
-    free(all), free(params), free(all_fine), free(fine);
+    free(all), free(params), free(all_fine), free(fine), free(all_centres), free(centres);
     return s;
 }
 
@@ -544,7 +552,7 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
                             const int *orientation, const cm_loops *with_holes, auto_pairing pairing,
                             cm_boundary_map *out, int *found, double *ceiling_deg, cm_correspondence_choice *choice)
 {
-    cm_status s = conformal(r, polygons, counts, k, orientation, pairing.linear, pairing.power, out, found);
+    cm_status s = conformal(r, polygons, counts, k, orientation, with_holes, pairing.linear, pairing.power, out, found);
     if (s != CM_OK || !*found) return s;
     cm_boundary_map similar = {0};
     double conformal_deg = 0, similar_deg = 0, conformal_bound = 0, similar_bound = 0;

@@ -80,23 +80,47 @@ typedef struct start_search {
     size_t h;
 } start_search;
 
-typedef double (*start_cost)(const start_search *q, size_t start);
+/* A start's cost; and, when turn is not NULL, how far its pairing turns
+ * the plane (radians, in [0, pi]). */
+typedef double (*start_cost)(const start_search *q, size_t start, double *turn);
+
+/* Starts whose costs' square roots lie within this of the least one's
+ * fit alike (a share of the loop's size for the Procrustes fit). Where
+ * such starts lie apart (a disc, a regular polygon, an outline a turn
+ * takes onto itself), the one whose pairing turns the plane least is
+ * taken: two sections of a pipe pair without a twist. */
+#define START_TIE 1e-4
 
 /* The counter-clockwise start of least cost: every vertex, or
- * COARSE_CANDIDATES of them, then the neighbourhood of the best. */
-static size_t best_start(const start_search *q, start_cost cost)
+ * COARSE_CANDIDATES of them, then the neighbourhood of the best. With
+ * by_turn, of the candidates apart that fit alike (START_TIE), the one
+ * that turns least, and its neighbourhood. */
+static size_t best_start(const start_search *q, start_cost cost, int by_turn)
 {
     size_t n = q->n, stride = n > COARSE_CANDIDATES ? n / COARSE_CANDIDATES : 1, best = 0;
     double best_cost = HUGE_VAL;
     for (size_t c = 0; c < n; c += stride) {
-        double e = cost(q, c);
+        double e = cost(q, c, NULL);
         if (e < best_cost) best_cost = e, best = c;
+    }
+    if (by_turn && best_cost < HUGE_VAL) {
+        double tie = sqrt(best_cost) + START_TIE, least_turn = HUGE_VAL, turn;
+        size_t least_at = best;
+        int apart = 0;
+        for (size_t c = 0; c < n; c += stride) {
+            double e = cost(q, c, &turn);
+            if (!(e <= tie * tie)) continue;
+            size_t d = c > best ? c - best : best - c;
+            apart |= d > 2 * stride && n - d > 2 * stride;
+            if (turn < least_turn) least_turn = turn, least_at = c;
+        }
+        if (apart && least_at != best) best = least_at, best_cost = cost(q, best, NULL);
     }
     size_t centre = best;
     for (size_t d = 1; stride > 1 && d < stride; d++)
         for (int side = -1; side <= 1; side += 2) {
             size_t c = (centre + n + (size_t)side * d) % n;
-            double e = cost(q, c);
+            double e = cost(q, c, NULL);
             if (e < best_cost) best_cost = e, best = c;
         }
     return best;
@@ -128,11 +152,12 @@ static double complex loop_centroid(const double *xy, size_t n, double *area)
  * hole centroids under the fitted similarity to the loop's nearest one
  * (squared, in the same share): an outer loop that a turn takes onto
  * itself (a rectangle) leaves the turn to the holes. */
-static double procrustes_cost(const start_search *q, size_t start)
+static double procrustes_cost(const start_search *q, size_t start, double *turn)
 {
     double complex mean = sample(q->xy, q->n, q->reversed, q->arc, start, q->w), a;
     double left, ww;
     if (!similarity_fit(q->target, q->w, &a, &left, &ww)) return HUGE_VAL;
+    if (turn) *turn = fabs(carg(a));
     for (size_t i = 0; i < q->h; i++) {
         double nearest = HUGE_VAL;
         for (size_t j = 0; j < q->h; j++) nearest = fmin(nearest, cabs(a * q->target_holes[i] - (q->holes[j] - mean)));
@@ -146,6 +171,14 @@ static void hole_centroids(const cm_loops *loops, double complex centre, double 
 {
     for (size_t i = 1, at = loops->loop_sizes[0]; i < loops->num_loops; at += loops->loop_sizes[i++])
         out[i - 1] = loop_centroid(loops->xy + 2 * at, loops->loop_sizes[i], NULL) - centre;
+}
+
+void cm_correspond_hole_centres(const cm_loops *loops, double *out)
+{
+    for (size_t i = 1, at = loops->loop_sizes[0]; i < loops->num_loops; at += loops->loop_sizes[i++]) {
+        double complex c = loop_centroid(loops->xy + 2 * at, loops->loop_sizes[i], NULL);
+        out[2 * (i - 1)] = creal(c), out[2 * (i - 1) + 1] = cimag(c);
+    }
 }
 
 cm_status cm_correspond_choose_starts(const double *const *polygons, const size_t *counts, size_t k,
@@ -174,7 +207,7 @@ cm_status cm_correspond_choose_starts(const double *const *polygons, const size_
         }
         if (h) hole_centroids(&loops[g], 0, holes);
         start_search q = {polygons[g], n, reversed, arc, z, SAMPLES, w, target_holes, holes, h};
-        size_t best = best_start(&q, procrustes_cost);
+        size_t best = best_start(&q, procrustes_cost, 1);
         pins[g] = cm_ccw_input(best, n, reversed);
         free(arc);
     }
@@ -209,8 +242,9 @@ void cm_correspond_outer_similarity(const cm_boundary_map *outer, double *simila
 
 /* Sum of squared distances from the m points of the loop sampled from
  * counter-clockwise vertex start to the target. */
-static double distance_cost(const start_search *q, size_t start)
+static double distance_cost(const start_search *q, size_t start, double *turn)
 {
+    (void)turn;
     sample_m(q->xy, q->n, q->reversed, q->arc, start, q->m, q->w);
     double sum = 0;
     for (size_t j = 0; j < q->m; j++) {
@@ -270,7 +304,7 @@ cm_status cm_correspond_choose_hole_starts(const double *const *holes, const siz
             break;
         }
         start_search q = {holes[g], n, reversed, arc, mapped, m, w, NULL, NULL, 0};
-        size_t best = best_start(&q, distance_cost);
+        size_t best = best_start(&q, distance_cost, 0);
         pins[g] = cm_ccw_input(best, n, reversed);
         free(arc), arc = NULL;
     }
@@ -354,23 +388,27 @@ static double holes_apart(const double complex *from, const double complex *to, 
 
 /* Of the starts that make polygon g's outer loop an exact affine image of
  * polygon 0's (`first` one of them), the one whose map takes polygon 0's
- * holes nearest to polygon g's: an outer loop an affine map takes onto
- * itself (a rectangle, a disc's polygon) leaves the turn to the holes.
- * holes: scratch for 2 (num_loops - 1) centroids. */
-static size_t shift_by_holes(const double complex *p, const double complex *q, size_t n, size_t first,
-                             const cm_loops *loops, size_t g, double complex *holes)
+ * holes nearest to polygon g's (loops: NULL without holes), and of those
+ * the one whose map turns the plane least: an outer loop an affine map
+ * takes onto itself (a rectangle, a disc's polygon) leaves the turn to
+ * the holes, and then to the least twist. holes: scratch for 2
+ * (num_loops - 1) centroids. */
+static size_t exact_shift(const double complex *p, const double complex *q, size_t n, size_t first,
+                          const cm_loops *loops, size_t g, double complex *holes)
 {
-    size_t h = loops[0].num_loops - 1;
-    double complex qm = vertex_mean(loops[g].xy, n);
-    hole_centroids(&loops[0], vertex_mean(loops[0].xy, n), holes);
-    hole_centroids(&loops[g], 0, holes + h);
-    double a[4], least = HUGE_VAL;
+    size_t h = loops ? loops[0].num_loops - 1 : 0;
+    double complex qm = h ? vertex_mean(loops[g].xy, n) : 0;
+    if (h) hole_centroids(&loops[0], vertex_mean(loops[0].xy, n), holes), hole_centroids(&loops[g], 0, holes + h);
+    double size2 = 0;
+    for (size_t i = 0; i < n; i++) size2 += creal(q[i] * conj(q[i]));
+    double a[4], least = HUGE_VAL, least_turn = HUGE_VAL, tie = AFFINE_TOLERANCE * AFFINE_TOLERANCE * size2 / (double)n;
     size_t best = first;
     for (size_t s = 0; s < n; s++) {
         if (s != first && !(affine_residual(p, q, n, s, 0, NULL) <= AFFINE_CANDIDATE)) continue;
         if (!(affine_residual(p, q, n, s, 1, a) <= AFFINE_TOLERANCE * AFFINE_TOLERANCE)) continue;
-        double apart = holes_apart(holes, holes + h, h, a, qm);
-        if (apart < least || (apart == least && s == first)) least = apart, best = s;
+        double apart = holes_apart(holes, holes + h, h, a, qm), turn = fabs(atan2(a[2] - a[1], a[0] + a[3]));
+        if (apart < least - tie || (apart <= least + tie && turn < least_turn))
+            least = fmin(least, apart), least_turn = turn, best = s;
     }
     return best;
 }
@@ -403,7 +441,7 @@ cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t
             if (left < best) best = left, shift[g] = s;
         }
         all = best < HUGE_VAL && affine_residual(p, q, n, shift[g], 1, NULL) <= AFFINE_TOLERANCE * AFFINE_TOLERANCE;
-        if (all && h) shift[g] = shift_by_holes(p, q, n, shift[g], loops, g, holes);
+        if (all) shift[g] = exact_shift(p, q, n, shift[g], loops, g, holes);
     }
     if (all) {
         for (size_t i = 0; i < n; i++)

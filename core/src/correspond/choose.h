@@ -17,9 +17,15 @@
  * polygons with holes the polygons themselves: each start's residual then
  * also counts polygon 0's hole centroids under its similarity against
  * polygon g's nearest ones, so that where a turn takes the outer loop onto
- * itself (a rectangle) the holes choose. */
+ * itself (a rectangle) the holes choose. Of starts far apart that fit
+ * alike (a disc, a regular polygon, a rectangle whose holes a turn takes
+ * onto themselves) the one whose similarity turns least. */
 cm_status cm_correspond_choose_starts(const double *const *polygons, const size_t *counts, size_t k,
                                       const int *orientation, const cm_loops *loops, size_t *pins, cm_error *err);
+
+/* The centroids of a polygon's holes (its loops after the first), x y
+ * each, into out (2 (num_loops - 1) doubles). */
+void cm_correspond_hole_centres(const cm_loops *loops, double *out);
 
 /* For polygons with holes: similarity (4 per polygon: a then b, complex,
  * re and im) such that b + a z, z on polygon 0's outer loop, is the

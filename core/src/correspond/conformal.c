@@ -30,15 +30,17 @@
 
 /* A polygon's boundary on the unit circle: per boundary node of its mesh
  * (counter-clockwise from vertex 0), the normalised arc length s and the
- * angle theta, both non-decreasing; s[nb] = 1, theta[nb] = 2 pi. */
+ * angle theta, both non-decreasing; s[nb] = 1, theta[nb] = 2 pi; and the
+ * node's place in the plane, z[nb] = z[0]. */
 typedef struct disk {
     size_t nb;
     double *s, *theta;
+    double complex *z;
 } disk;
 
 static void disk_free(disk *d)
 {
-    free(d->s), free(d->theta);
+    free(d->s), free(d->theta), free(d->z);
     memset(d, 0, sizeof *d);
 }
 
@@ -63,8 +65,9 @@ static cm_status disk_build(const double *input, size_t n, int reversed, disk *d
         d->nb = nb;
         d->s = malloc((nb + 1) * sizeof *d->s);
         d->theta = malloc((nb + 1) * sizeof *d->theta);
+        d->z = malloc((nb + 1) * sizeof *d->z);
         w = malloc(nb * sizeof *w);
-        if (!d->s || !d->theta || !w) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+        if (!d->s || !d->theta || !d->z || !w) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
         /* seen from the deepest of all interior nodes: a similar polygon's
          * mesh is the similar image, and its deepest node the same */
         long *inner = s == CM_OK ? malloc((size_t)m.nv * sizeof *inner) : NULL, ni = 0;
@@ -79,6 +82,7 @@ static cm_status disk_build(const double *input, size_t n, int reversed, disk *d
             for (size_t j = 0; j < nb; j++) {
                 const double *p = m.xy + 2 * m.bnode[j], *q = m.xy + 2 * m.bnode[(j + 1) % nb];
                 d->s[j + 1] = d->s[j] + hypot(q[0] - p[0], q[1] - p[1]);
+                d->z[j] = p[0] + I * p[1];
                 /* node j at the middle of its share of the measure */
                 double t = 2 * CM_PI * (acc + 0.5 * w[j]) - first;
                 d->theta[j] = j ? fmax(t, d->theta[j - 1]) : 0.0;
@@ -86,7 +90,7 @@ static cm_status disk_build(const double *input, size_t n, int reversed, disk *d
             }
             double total = d->s[nb];
             for (size_t j = 0; j <= nb; j++) d->s[j] /= total;
-            d->s[nb] = 1.0, d->theta[nb] = 2 * CM_PI;
+            d->s[nb] = 1.0, d->theta[nb] = 2 * CM_PI, d->z[nb] = d->z[0];
             if (balance(d)) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
         }
     }
@@ -178,13 +182,26 @@ static double lookup(const double *xs, const double *ys, size_t len, double x)
 }
 
 /* The search's view of one pair: m angles evenly spaced on the circle, as
- * points, polygon 0's arc length there, and the disk of polygon g. */
+ * points, polygon 0's arc length there and its point in the plane
+ * (centred), and the disk of polygon g; the h hole centres of polygon 0
+ * (centred as z0) and of polygon g. */
 typedef struct search {
     const double complex *w;
     const double *s0;
+    const double complex *z0;
     size_t m;
     const disk *g;
+    const double complex *holes0, *holes_g;
+    size_t h;
 } search;
+
+/* The point at normalised arc length u of a disk's polygon. */
+static double complex point_at(const disk *d, double u)
+{
+    size_t j = below(d->s, d->nb, u);
+    double ds = d->s[j + 1] - d->s[j], f = ds > 0 ? (u - d->s[j]) / ds : 0;
+    return d->z[j] + f * (d->z[j + 1] - d->z[j]);
+}
 
 /* How far the correspondence is from arc length with polygon g's disk
  * turned by rho onto polygon 0's: the variance, over the circle, of
@@ -208,25 +225,122 @@ static double cost(const search *q, double rho)
     return sum2 / (double)q->m - mean * mean;
 }
 
+/* Polygon g's arc length at the point of polygon 0's circle at sample i,
+ * g's disk turned by rho. */
+static double g_arc_at(const search *q, size_t i, double rho, size_t *near)
+{
+    double t = carg(q->w[i] * cexp(-I * rho));
+    t -= 2 * CM_PI * floor(t / (2 * CM_PI));
+    return lookup_at(q->g->theta, q->g->s, below_near(q->g->theta, q->g->nb, t, near), t);
+}
+
+/* The similarity of the plane closest to the correspondence of turn rho:
+ * polygon 0's sampled points (centred) times *a, plus *centre, nearest
+ * the points of polygon g paired with them, least squares. */
+static void plane_fit(const search *q, double rho, double complex *a, double complex *centre)
+{
+    double complex zg[SEARCH_SAMPLES], mean = 0, corr = 0;
+    double zz = 0;
+    size_t near = 0;
+    for (size_t i = 0; i < q->m; i++) mean += zg[i] = point_at(q->g, g_arc_at(q, i, rho, &near));
+    mean /= (double)q->m;
+    for (size_t i = 0; i < q->m; i++) corr += conj(q->z0[i]) * (zg[i] - mean), zz += creal(q->z0[i] * conj(q->z0[i]));
+    *a = zz > 0 ? corr / zz : 1, *centre = mean;
+}
+
+/* How far the correspondence of turn rho turns the plane, in [0, pi]. */
+static double plane_turn(const search *q, double rho)
+{
+    double complex a, centre;
+    plane_fit(q, rho, &a, &centre);
+    return fabs(carg(a));
+}
+
+/* How far that similarity puts polygon 0's hole centres from polygon g's
+ * nearest ones: the sum of the squared distances. */
+static double holes_off(const search *q, double rho)
+{
+    double complex a, centre;
+    plane_fit(q, rho, &a, &centre);
+    double sum = 0;
+    for (size_t i = 0; i < q->h; i++) {
+        double nearest = HUGE_VAL;
+        for (size_t j = 0; j < q->h; j++) nearest = fmin(nearest, cabs(centre + a * q->holes0[i] - q->holes_g[j]));
+        sum += nearest * nearest;
+    }
+    return sum;
+}
+
+/* Turns whose costs' square roots (the arc lengths' spread, a share of
+ * the perimeter) lie within this of the least one's fit alike. Where such
+ * turns lie apart (a disc, a regular polygon, a shape a turn takes onto
+ * itself), the holes choose among them (those that put the hole centres
+ * nearest, within what one step of the turns moves them), and then the
+ * least turn of the plane: two sections of a pipe pair without a twist,
+ * of a flange turned a little by the little turn. */
+#define TURN_TIE 1e-4
+
+/* The golden-section search for the least of f within [lo, hi]. */
+static double golden_least(const search *q, double (*f)(const search *, double), double lo, double hi,
+                           double *least)
+{
+    const double golden = 0.5 * (sqrt(5.0) - 1);
+    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo), f1 = f(q, x1), f2 = f(q, x2);
+    for (int it = 0; it < GOLDEN_STEPS; it++) {
+        if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = f(q, x1);
+        else lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = f(q, x2);
+    }
+    *least = fmin(f1, f2);
+    return f1 < f2 ? x1 : x2;
+}
+
 /* The turn of least cost: the best of ROTATIONS evenly spaced, then
  * golden-section search around it (the cost is V-shaped at a similar
- * copy's turn). */
+ * copy's turn); where turns apart fit alike (TURN_TIE), the one of them
+ * the holes and then the least turn of the plane choose, refined by the
+ * same measure where its neighbours fit alike too. */
 static double best_turn(const search *q)
 {
-    double best = 0, best_cost = HUGE_VAL;
+    double costs[ROTATIONS], step = 2 * CM_PI / ROTATIONS, best_cost = HUGE_VAL, least;
+    int best = 0;
     for (int r = 0; r < ROTATIONS; r++) {
-        double rho = 2 * CM_PI * r / ROTATIONS, c = cost(q, rho);
-        if (c < best_cost) best_cost = c, best = rho;
+        costs[r] = cost(q, 2 * CM_PI * r / ROTATIONS);
+        if (costs[r] < best_cost) best_cost = costs[r], best = r;
     }
-    const double golden = 0.5 * (sqrt(5.0) - 1);
-    double lo = best - 2 * CM_PI / ROTATIONS, hi = best + 2 * CM_PI / ROTATIONS;
-    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo), f1 = cost(q, x1), f2 = cost(q, x2);
-    for (int it = 0; it < GOLDEN_STEPS; it++) {
-        if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = cost(q, x1);
-        else lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = cost(q, x2);
+    double tie = sqrt(best_cost) + TURN_TIE, tie2 = tie * tie;
+    int apart = 0, least_at = best;
+    for (int r = 0; r < ROTATIONS; r++) {
+        int d = abs(r - best);
+        apart |= costs[r] <= tie2 && d > 2 && d < ROTATIONS - 2;
     }
-    double mid = f1 < f2 ? x1 : x2;
-    return fmin(f1, f2) < best_cost ? mid : best;
+    if (apart) {
+        /* the hole centres' offsets that one step of the turns, or the
+         * tie's spread, accounts for */
+        double off[ROTATIONS], least_off = HUGE_VAL, most_off = 0, least_turn = HUGE_VAL, size = 0, reach = 0;
+        double complex a, centre;
+        plane_fit(q, 2 * CM_PI * best / ROTATIONS, &a, &centre);
+        for (size_t i = 0; i < q->m; i++) size += creal(q->z0[i] * conj(q->z0[i]));
+        for (size_t i = 0; i < q->h; i++) reach = fmax(reach, cabs(a * q->holes0[i]) * step);
+        reach += TURN_TIE * cabs(a) * sqrt(size / (double)q->m);
+        for (int r = 0; r < ROTATIONS; r++) {
+            off[r] = costs[r] <= tie2 && q->h ? holes_off(q, 2 * CM_PI * r / ROTATIONS) : 0;
+            if (costs[r] <= tie2) least_off = fmin(least_off, off[r]), most_off = fmax(most_off, off[r]);
+        }
+        double within = least_off + (double)q->h * reach * reach;
+        for (int r = 0; r < ROTATIONS; r++) {
+            if (!(costs[r] <= tie2 && off[r] <= within)) continue;
+            double turn = plane_turn(q, 2 * CM_PI * r / ROTATIONS);
+            if (turn < least_turn) least_turn = turn, least_at = r;
+        }
+        double at = 2 * CM_PI * least_at / ROTATIONS;
+        if (costs[(least_at + 1) % ROTATIONS] <= tie2 && costs[(least_at + ROTATIONS - 1) % ROTATIONS] <= tie2) {
+            int by_holes = most_off > within; /* else the holes do not tell the turns apart */
+            double rho = golden_least(q, by_holes ? holes_off : plane_turn, at - step, at + step, &least);
+            return least < (by_holes ? off[least_at] : least_turn) ? rho : at;
+        }
+    }
+    double at = 2 * CM_PI * least_at / ROTATIONS, rho = golden_least(q, cost, at - step, at + step, &least);
+    return least < costs[least_at] ? rho : at;
 }
 
 /* The tempered parameter of a disk's boundary nodes (nb + 1 values from 0
@@ -303,8 +417,9 @@ static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, dou
 }
 
 cm_status cm_correspond_conformal(const double *const *polygons, const size_t *counts, size_t k,
-                                  const int *orientation, double power, double *const *params, double *const *fine,
-                                  int *found, cm_error *err)
+                                  const int *orientation, const double *const *hole_centres, size_t holes,
+                                  double power, double *const *params, double *const *fine, int *found,
+                                  cm_error *err)
 {
     *found = 0;
     disk *disks = calloc(k, sizeof *disks);
@@ -320,17 +435,26 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
         free(arc);
     }
     double *s0 = malloc(SEARCH_SAMPLES * sizeof *s0);
-    if (s == CM_OK && !s0) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
+    double complex *z0 = malloc(SEARCH_SAMPLES * sizeof *z0), mean0 = 0;
+    double complex *centres = holes ? malloc(2 * holes * sizeof *centres) : NULL;
+    if (s == CM_OK && (!s0 || !z0 || (holes && !centres))) s = cm_fail_status(err, CM_ERR_NO_MEMORY);
     for (size_t i = 0; s == CM_OK && usable && i < SEARCH_SAMPLES; i++) {
         double t = 2 * CM_PI * (double)i / SEARCH_SAMPLES;
         w0[i] = cexp(I * t);
         s0[i] = lookup(disks[0].theta, disks[0].s, disks[0].nb, t);
+        mean0 += z0[i] = point_at(&disks[0], s0[i]);
     }
+    mean0 /= SEARCH_SAMPLES;
+    for (size_t i = 0; s == CM_OK && usable && i < SEARCH_SAMPLES; i++) z0[i] -= mean0;
+    for (size_t j = 0; s == CM_OK && j < holes; j++)
+        centres[j] = hole_centres[0][2 * j] + I * hole_centres[0][2 * j + 1] - mean0;
     for (size_t g = 1; s == CM_OK && usable && g < k; g++) {
-        search q = {w0, s0, SEARCH_SAMPLES, &disks[g]};
+        for (size_t j = 0; j < holes; j++)
+            centres[holes + j] = hole_centres[g][2 * j] + I * hole_centres[g][2 * j + 1];
+        search q = {w0, s0, z0, SEARCH_SAMPLES, &disks[g], centres, centres + holes, holes};
         s = place(&disks[0], &disks[g], best_turn(&q), counts[g], power, params[g], fine ? fine[g] : NULL, err);
     }
-    free(s0);
+    free(s0), free(z0), free(centres);
     if (s == CM_OK) *found = usable;
     for (size_t g = 0; disks && g < k; g++) disk_free(&disks[g]);
     free(disks), free(w0);
@@ -343,6 +467,8 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
 typedef struct memo_entry {
     int held, found;
     double power;
+    size_t holes;     /* hole centres per polygon */
+    double *centres;  /* 2 holes k: the hole centres, polygon after polygon */
     size_t k, total;  /* polygons; their vertices in all */
     size_t *counts;   /* k */
     int *orientation; /* k */
@@ -365,6 +491,7 @@ cm_conformal_memo *cm_conformal_memo_new(void) { return calloc(1, sizeof(cm_conf
 static void memo_clear(memo_entry *memo)
 {
     free(memo->counts), free(memo->orientation), free(memo->xy), free(memo->params), free(memo->fine);
+    free(memo->centres);
     memset(memo, 0, sizeof *memo);
 }
 
@@ -375,13 +502,16 @@ void cm_conformal_memo_free(cm_conformal_memo *memo)
 }
 
 static int memo_matches(const memo_entry *memo, const double *const *polygons, const size_t *counts,
-                        size_t k, const int *orientation, double power)
+                        size_t k, const int *orientation, const double *const *hole_centres, size_t holes,
+                        double power)
 {
-    if (!memo->held || memo->k != k || memo->power != power || memcmp(memo->counts, counts, k * sizeof *counts) ||
-        memcmp(memo->orientation, orientation, k * sizeof *orientation))
+    if (!memo->held || memo->k != k || memo->power != power || memo->holes != holes ||
+        memcmp(memo->counts, counts, k * sizeof *counts) || memcmp(memo->orientation, orientation, k * sizeof *orientation))
         return 0;
     for (size_t g = 0, at = 0; g < k; at += counts[g], g++)
-        if (memcmp(memo->xy + 2 * at, polygons[g], 2 * counts[g] * sizeof *memo->xy)) return 0;
+        if (memcmp(memo->xy + 2 * at, polygons[g], 2 * counts[g] * sizeof *memo->xy) ||
+            (holes && memcmp(memo->centres + 2 * holes * g, hole_centres[g], 2 * holes * sizeof *memo->centres)))
+            return 0;
     return 1;
 }
 
@@ -399,7 +529,8 @@ static void memo_copy(memo_entry *memo, double *const *params, double *const *fi
 
 /* Remembers a call's polygons and result (silently not, out of memory). */
 static void memo_store(memo_entry *memo, const double *const *polygons, const size_t *counts, size_t k,
-                       const int *orientation, double power, double *const *params, double *const *fine, int found)
+                       const int *orientation, const double *const *hole_centres, size_t holes, double power,
+                       double *const *params, double *const *fine, int found)
 {
     memo_clear(memo);
     size_t total = 0;
@@ -409,33 +540,39 @@ static void memo_store(memo_entry *memo, const double *const *polygons, const si
     memo->xy = malloc(2 * total * sizeof *memo->xy);
     memo->params = malloc(total * sizeof *memo->params);
     memo->fine = malloc(((total - counts[0]) * CM_PARAM_FINE + 1) * sizeof *memo->fine);
-    if (!memo->counts || !memo->orientation || !memo->xy || !memo->params || !memo->fine) {
+    memo->centres = malloc((2 * holes * k + 1) * sizeof *memo->centres);
+    if (!memo->counts || !memo->orientation || !memo->xy || !memo->params || !memo->fine || !memo->centres) {
         memo_clear(memo);
         return;
     }
     memcpy(memo->counts, counts, k * sizeof *counts);
     memcpy(memo->orientation, orientation, k * sizeof *orientation);
-    memo->k = k, memo->total = total, memo->found = found, memo->power = power;
-    for (size_t g = 0, at = 0; g < k; at += counts[g], g++)
+    memo->k = k, memo->total = total, memo->found = found, memo->power = power, memo->holes = holes;
+    for (size_t g = 0, at = 0; g < k; at += counts[g], g++) {
         memcpy(memo->xy + 2 * at, polygons[g], 2 * counts[g] * sizeof *memo->xy);
+        if (holes) memcpy(memo->centres + 2 * holes * g, hole_centres[g], 2 * holes * sizeof *memo->centres);
+    }
     if (found) memo_copy(memo, params, fine, 0);
     memo->held = 1;
 }
 
 cm_status cm_correspond_conformal_memo(cm_conformal_memo *memo, const double *const *polygons, const size_t *counts,
-                                       size_t k, const int *orientation, double power, double *const *params,
-                                       double *const *fine, int *found, cm_error *err)
+                                       size_t k, const int *orientation, const double *const *hole_centres,
+                                       size_t holes, double power, double *const *params, double *const *fine,
+                                       int *found, cm_error *err)
 {
     for (size_t i = 0; memo && fine && k && i < CM_CONFORMAL_MEMO_CALLS; i++) {
         memo_entry *e = &memo->at[i];
-        if (!memo_matches(e, polygons, counts, k, orientation, power)) continue;
+        if (!memo_matches(e, polygons, counts, k, orientation, hole_centres, holes, power)) continue;
         *found = e->found;
         if (*found) memo_copy(e, params, fine, 1);
         return CM_OK;
     }
-    cm_status s = cm_correspond_conformal(polygons, counts, k, orientation, power, params, fine, found, err);
+    cm_status s = cm_correspond_conformal(polygons, counts, k, orientation, hole_centres, holes, power, params, fine,
+                                          found, err);
     if (memo && fine && k && s == CM_OK) {
-        memo_store(&memo->at[memo->next], polygons, counts, k, orientation, power, params, fine, *found);
+        memo_store(&memo->at[memo->next], polygons, counts, k, orientation, hole_centres, holes, power, params, fine,
+                   *found);
         memo->next = (memo->next + 1) % CM_CONFORMAL_MEMO_CALLS;
     }
     return s;

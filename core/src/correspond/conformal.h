@@ -33,7 +33,12 @@
  * length from where the map puts vertex 0; 1: the conformal map itself); a
  * similar copy gets the same parameter. The power (CM_CONFORMAL_POWER, and
  * auto's rescues' others) and the rest were chosen by measurement
- * (bench/CORRESPONDENCE.md). */
+ * (bench/CORRESPONDENCE.md). Where turns far apart fit alike (a disc, a
+ * regular polygon), the holes choose among them (hole_centres: NULL, or k
+ * arrays of `holes` centres, x y each: the turns that put polygon 0's
+ * nearest to polygon g's under the similarity closest to the pairing),
+ * then the turn that turns the plane least: two sections of a pipe pair
+ * without a twist. */
 #define CM_CONFORMAL_POWER 0.25
 /* fine: NULL, or k arrays of counts[g] * CM_PARAM_FINE doubles (fine[0]
  * may be NULL: polygon 0's parameter is its arc length): fine[g][c *
@@ -44,8 +49,9 @@
  * points towards that corner, where linear interpolation between the
  * vertices would put a jump of the stretch at the corner. */
 cm_status cm_correspond_conformal(const double *const *polygons, const size_t *counts, size_t k,
-                                  const int *orientation, double power, double *const *params, double *const *fine,
-                                  int *found, cm_error *err);
+                                  const int *orientation, const double *const *hole_centres, size_t holes,
+                                  double power, double *const *params, double *const *fine, int *found,
+                                  cm_error *err);
 
 /* The last few conformal correspondences made in one run, recalled when
  * the same polygons ask again at the same power (auto's rescues read the
@@ -57,10 +63,11 @@ cm_conformal_memo *cm_conformal_memo_new(void);
 void cm_conformal_memo_free(cm_conformal_memo *memo);
 
 /* cm_correspond_conformal, recalled from memo (NULL: none) when the
- * polygons (coordinates, counts, orientation) and the power are those of
- * its last call with fine given. */
+ * polygons (coordinates, counts, orientation), the hole centres and the
+ * power are those of one of its last calls with fine given. */
 cm_status cm_correspond_conformal_memo(cm_conformal_memo *memo, const double *const *polygons, const size_t *counts,
-                                       size_t k, const int *orientation, double power, double *const *params,
-                                       double *const *fine, int *found, cm_error *err);
+                                       size_t k, const int *orientation, const double *const *hole_centres,
+                                       size_t holes, double power, double *const *params, double *const *fine,
+                                       int *found, cm_error *err);
 
 #endif
