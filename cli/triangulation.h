@@ -88,7 +88,9 @@ enum {
      "on its edges (the default with --pin); auto (the\n"                     \
      "default when the counts differ), with arclength's\n"                    \
      "output: conformal, the inputs' maps onto the disk\n"                    \
-     "made to agree, their crowding tempered (with holes\n"                   \
+     "made to agree (where turns fit alike, as a disc's,\n"                   \
+     "the one that puts holes on holes and turns least),\n"                   \
+     "their crowding tempered (with holes\n"                                  \
      "the outer loops so; the holes paired by position\n"                     \
      "where that is one-to-one, each from the start whose\n"                  \
      "points lie nearest, carried radially through the\n"                     \
