@@ -2,8 +2,10 @@
 cells checked against the file as Gmsh reads it back (its coordinates, its
 Jacobian determinants, and its own shape measures from the
 AnalyseMeshQuality plugin), the sliver-free tetrahedra of the demo's U/S
-sweep, the default height and the flat-prism warning."""
+sweep, the default height, the flat-prism warning, and a pipe's sections
+swept without a twist."""
 import json
+import math
 import os
 import subprocess
 
@@ -148,3 +150,32 @@ def test_flat_prisms_are_warned_about(cm, tmp_path):
     line = result.stderr.strip()
     assert line.startswith("compatmesh: sweep: warning: %d of " % quality["flat_prisms"]) and "1:10" in line
     assert report["warnings"] == [line.removeprefix("compatmesh: sweep: warning: ")]
+
+
+def test_pipe_sections_sweep_without_twist(cm, tmp_path, gmsh_session):
+    """Two sections of a pipe as a user has them: circles of 48 and 40
+    points, the second's listed from 0.3 radians on, around holes of 24 and
+    20 points. Every turn of a circle fits a circle alike; the pairing that
+    turns least keeps the prisms' sides along the pipe. Expected: the file
+    Gmsh reads holds the sections in order, and the top section's nodes
+    are the bottom's turned by under 2 degrees (before, 159)."""
+    def circle(m, radius, start, direction):
+        return [(radius * math.cos(start + direction * 2 * math.pi * i / m),
+                 radius * math.sin(start + direction * 2 * math.pi * i / m)) for i in range(m)]
+
+    for name, (outer, hole) in {"a.xy": ((48, 0.0), (24, 0.0)), "b.xy": ((40, 0.3), (20, 0.1))}.items():
+        lines = ["%r %r" % p for p in circle(outer[0], 2.0, outer[1], 1)] + [">"]
+        lines += ["%r %r" % p for p in circle(hole[0], 1.0, hole[1], -1)]
+        (tmp_path / name).write_text("\n".join(lines) + "\n")
+    result = cm("sweep", "a.xy", "b.xy", "-n", "5", "--height", "4", "-o", "pipe.msh")
+    assert result.returncode == 0, result.stderr
+    gmsh.open(str(tmp_path / "pipe.msh"))
+    tags, coords, _ = gmsh.model.mesh.getNodes()
+    p = np.reshape(coords, (-1, 3))[np.argsort(tags)]
+    per_section = len(p) // 5
+    bottom, top = p[:per_section], p[-per_section:]
+    assert len(p) == 5 * per_section and np.all(bottom[:, 2] == 0) and np.allclose(top[:, 2], 4)
+    zb = (bottom[:, 0] - bottom[:, 0].mean()) + 1j * (bottom[:, 1] - bottom[:, 1].mean())
+    zt = (top[:, 0] - top[:, 0].mean()) + 1j * (top[:, 1] - top[:, 1].mean())
+    twist = math.degrees(np.angle(np.sum(np.conj(zb) * zt)))
+    assert abs(twist) < 2, twist
