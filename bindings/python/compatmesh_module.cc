@@ -1192,7 +1192,9 @@ options: keyword arguments named like the fields of the C struct cm_options,
                     and gets the others' on its edges; the default with
                     pins), "auto" (the default when the counts differ;
                     output as arclength: conformal, the polygons' maps onto
-                    the disk made to agree, their crowding tempered; with
+                    the disk made to agree (where turns fit alike, as a
+                    disc's, the one that puts holes on holes and turns
+                    least), their crowding tempered; with
                     holes the outer loops so, the holes paired by position
                     where that is one-to-one (stats["holes_moved"]), every
                     hole from the start nearest, carried radially through
