@@ -583,25 +583,30 @@ static void test_auto_restart_from_refined_loops(void)
 /* Auto takes the least turn where turns fit alike: two sections of a
  * pipe (circles of other sizes from other angles, hole_fixtures.h), and
  * a flange against itself turned by 15 degrees (six bolt holes; the
- * outline fixes no turn, the holes fix it up to 60 degrees). Expected:
- * valid, within the boundary contract; the pipe paired with a turn of the
- * plane under 2 degrees (built before on a turn of -159 degrees), the
- * flange with one within 2 degrees of 15 (before -161, six holes paired
- * with others) and every hole with the one at its place (holes_moved 0),
- * both at least 15 degrees (min(15, c / 3)). */
+ * outline fixes no turn, the holes fix it up to 60 degrees); the
+ * similarity choice too, on a hexagonal flange turned by 15 degrees (six
+ * starts fit exactly, their residuals rounding noise either side of 0).
+ * Expected: valid, within the boundary contract; the pipe paired with a
+ * turn of the plane under 2 degrees (built before on a turn of -159
+ * degrees), the flanges with one within 2 degrees of 15 (before -161 and
+ * 135, six holes paired with others) and every hole with the one at its
+ * place (holes_moved 0), all at least 15 degrees (min(15, c / 3)). */
 static void test_auto_least_turn(void)
 {
     static const struct {
         const char *name;
         void (*build)(shape *, shape *);
         double turn;
-    } cases[] = {{"pipe", hf_pipe, 0}, {"flange", hf_flange_turned, 15}};
+        cm_correspondence mode;
+    } cases[] = {{"pipe", hf_pipe, 0, CM_CORRESPOND_AUTO},
+                 {"flange", hf_flange_turned, 15, CM_CORRESPOND_AUTO},
+                 {"hexagonal flange, similarity", hf_hex_flange_turned, 15, CM_CORRESPOND_SIMILARITY}};
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         shape a = {0}, b = {0};
         cases[c].build(&a, &b);
         cm_options o;
         cm_options_init(&o);
-        o.correspondence = CM_CORRESPOND_AUTO;
+        o.correspondence = cases[c].mode;
         cm_loops in[2] = {loops_of(&a), loops_of(&b)};
         cm_result *r = NULL;
         cm_status st = cm_triangulate_loops(in, 2, &o, &r);
@@ -617,7 +622,7 @@ static void test_auto_least_turn(void)
             CHECK_MSG(cm_result_stats(r)->holes_moved == 0, "%s: %zu holes moved", cases[c].name,
                       cm_result_stats(r)->holes_moved);
             CHECK_MSG(least >= 15, "%s: smallest angle %.2f", cases[c].name, least);
-            printf("%s, auto: turned by %.2f degrees, Steiner %zu, smallest angle %.1f\n", cases[c].name, turn,
+            printf("%s: turned by %.2f degrees, Steiner %zu, smallest angle %.1f\n", cases[c].name, turn,
                    cm_result_stats(r)->steiner, least);
         }
         cm_result_free(r);

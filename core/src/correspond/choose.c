@@ -104,7 +104,8 @@ static size_t best_start(const start_search *q, start_cost cost, int by_turn)
         if (e < best_cost) best_cost = e, best = c;
     }
     if (by_turn && best_cost < HUGE_VAL) {
-        double tie = sqrt(best_cost) + START_TIE, least_turn = HUGE_VAL, turn;
+        /* rounding may leave a cost a little below 0 */
+        double tie = sqrt(fmax(best_cost, 0)) + START_TIE, least_turn = HUGE_VAL, turn;
         size_t least_at = best;
         int apart = 0;
         for (size_t c = 0; c < n; c += stride) {

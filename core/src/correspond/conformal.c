@@ -307,7 +307,7 @@ static double best_turn(const search *q)
         costs[r] = cost(q, 2 * CM_PI * r / ROTATIONS);
         if (costs[r] < best_cost) best_cost = costs[r], best = r;
     }
-    double tie = sqrt(best_cost) + TURN_TIE, tie2 = tie * tie;
+    double tie = sqrt(fmax(best_cost, 0)) + TURN_TIE, tie2 = tie * tie; /* rounding may leave it below 0 */
     int apart = 0, least_at = best;
     for (int r = 0; r < ROTATIONS; r++) {
         int d = abs(r - best);
