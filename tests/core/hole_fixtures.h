@@ -331,32 +331,33 @@ static inline void hf_flange_turned(shape *a, shape *b)
     }
 }
 
-/* A hexagonal plate (circumradius 2, 10 points a side) with six bolt holes
- * of radius 0.25 (10 points) on the circle of radius 1.2, between its
- * corners, against the same plate turned by 15 degrees (8 points a side).
- * Six turns, 60 degrees apart, take outline and holes onto themselves
- * exactly. */
-static inline void hf_hex_flange_turned(shape *a, shape *b)
+/* A hexagonal plate (circumradius 2, `per` points a side) with six bolt
+ * holes of radius 0.25 (10 points) on the circle of radius 1.2, between
+ * its corners, all turned by `turn` radians. Six turns, 60 degrees apart,
+ * take it onto itself. */
+static inline void hex_flange(shape *s, double turn, size_t per)
 {
-    const double pi = 3.14159265358979323846, turn = 15 * pi / 180;
-    for (int g = 0; g < 2; g++) {
-        shape *s = g ? b : a;
-        double t = g ? turn : 0;
-        size_t per = g ? 8 : 10;
-        begin_loop(s);
-        for (int k = 0; k < 6; k++) {
-            double p[2] = {2 * cos(k * pi / 3 + t), 2 * sin(k * pi / 3 + t)};
-            double q[2] = {2 * cos((k + 1) * pi / 3 + t), 2 * sin((k + 1) * pi / 3 + t)};
-            for (size_t j = 0; j < per; j++) {
-                double f = (double)j / (double)per;
-                add_point(s, p[0] + f * (q[0] - p[0]), p[1] + f * (q[1] - p[1]));
-            }
-        }
-        for (int j = 0; j < 6; j++) {
-            double at = j * pi / 3 + pi / 6 + t;
-            add_circle_from(s, 1.2 * cos(at), 1.2 * sin(at), 0.25, 10, -1, t);
+    const double pi = 3.14159265358979323846;
+    begin_loop(s);
+    for (int k = 0; k < 6; k++) {
+        double p[2] = {2 * cos(k * pi / 3 + turn), 2 * sin(k * pi / 3 + turn)};
+        double q[2] = {2 * cos((k + 1) * pi / 3 + turn), 2 * sin((k + 1) * pi / 3 + turn)};
+        for (size_t j = 0; j < per; j++) {
+            double f = (double)j / (double)per;
+            add_point(s, p[0] + f * (q[0] - p[0]), p[1] + f * (q[1] - p[1]));
         }
     }
+    for (int j = 0; j < 6; j++) {
+        double at = j * pi / 3 + pi / 6 + turn;
+        add_circle_from(s, 1.2 * cos(at), 1.2 * sin(at), 0.25, 10, -1, turn);
+    }
+}
+
+/* The hexagonal flange (10 points a side) against itself turned by 15
+ * degrees (8 points a side). */
+static inline void hf_hex_flange_turned(shape *a, shape *b)
+{
+    hex_flange(a, 0, 10), hex_flange(b, 15 * 3.14159265358979323846 / 180, 8);
 }
 
 /* Every pair test_holes.c triangulates, once each (the overlay-method run of

@@ -245,11 +245,11 @@ static inline double rc_least_angle(const cm_result *r, size_t k)
 }
 
 /* How far r's pairing turns the plane (degrees, signed): the angle of the
- * least-squares rotation taking polygon 0's n boundary vertices onto
- * polygon 1's, both centred. */
-static inline double rc_plane_turn_deg(const cm_result *r, size_t n)
+ * least-squares rotation taking polygon 0's first n boundary vertices onto
+ * polygon g's, both centred. */
+static inline double rc_plane_turn_deg(const cm_result *r, size_t g, size_t n)
 {
-    const double *a = cm_result_vertices(r, 0), *b = cm_result_vertices(r, 1);
+    const double *a = cm_result_vertices(r, 0), *b = cm_result_vertices(r, g);
     double ma[2] = {0, 0}, mb[2] = {0, 0}, re = 0, im = 0;
     for (size_t i = 0; i < n; i++) ma[0] += a[2 * i], ma[1] += a[2 * i + 1], mb[0] += b[2 * i], mb[1] += b[2 * i + 1];
     for (int d = 0; d < 2; d++) ma[d] /= (double)n, mb[d] /= (double)n;

@@ -700,7 +700,7 @@ static void test_least_turn(void)
         if (st == CM_OK) {
             size_t n = cm_result_stats(r)->n;
             CHECK_MSG(contract_holds(r, in, counts, 2), "%s: the contract", cases[c].name);
-            double turn = rc_plane_turn_deg(r, n);
+            double turn = rc_plane_turn_deg(r, 1, n);
             CHECK_MSG(fabs(turn) <= cases[c].within, "%s: turned by %.3g degrees", cases[c].name, turn);
             for (size_t i = 0; cases[c].x == p && i < n; i++) {
                 double t0, t1;

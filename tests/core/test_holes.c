@@ -616,7 +616,7 @@ static void test_auto_least_turn(void)
             size_t sizes[HF_MAX_LOOPS], hole_added;
             CHECK_MSG(holes_boundary_contract(r, in_shape, sizes, &hole_added), "%s: the boundary contract",
                       cases[c].name);
-            double turn = rc_plane_turn_deg(r, sizes[0]), least = rc_least_angle(r, 2);
+            double turn = rc_plane_turn_deg(r, 1, sizes[0]), least = rc_least_angle(r, 2);
             CHECK_MSG(fabs(turn - cases[c].turn) < 2, "%s: turned by %.2f degrees, not %.0f", cases[c].name, turn,
                       cases[c].turn);
             CHECK_MSG(cm_result_stats(r)->holes_moved == 0, "%s: %zu holes moved", cases[c].name,
@@ -624,6 +624,54 @@ static void test_auto_least_turn(void)
             CHECK_MSG(least >= 15, "%s: smallest angle %.2f", cases[c].name, least);
             printf("%s: turned by %.2f degrees, Steiner %zu, smallest angle %.1f\n", cases[c].name, turn,
                    cm_result_stats(r)->steiner, least);
+        }
+        cm_result_free(r);
+    }
+}
+
+/* Three sections of a part that twists as it goes: the hexagonal flange
+ * (hole_fixtures.h) at 0, 25 and 50 degrees, 10, 8 and 9 points a side
+ * (auto: conformal; similarity), and with 10 a side each (auto: affine).
+ * Turns 60 degrees apart fit alike, so the third alone could pair at -10
+ * degrees; each is taken nearest the one before. Expected: valid; the
+ * second and third paired turned by 25 and 50 degrees, within 2 (before:
+ * -130 and 170 among others), no hole moved; at least 15 degrees. */
+static void test_twisting_sections(void)
+{
+    const double pi = 3.14159265358979323846;
+    static const struct {
+        const char *name;
+        size_t per[3];
+        cm_correspondence mode;
+    } cases[] = {{"auto", {10, 8, 9}, CM_CORRESPOND_AUTO},
+                 {"similarity", {10, 8, 9}, CM_CORRESPOND_SIMILARITY},
+                 {"auto, equal counts", {10, 10, 10}, CM_CORRESPOND_AUTO}};
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        shape s[3];
+        memset(s, 0, sizeof s);
+        for (int g = 0; g < 3; g++) hex_flange(&s[g], g * 25 * pi / 180, cases[c].per[g]);
+        cm_options o;
+        cm_options_init(&o);
+        o.correspondence = cases[c].mode;
+        cm_loops in[3] = {loops_of(&s[0]), loops_of(&s[1]), loops_of(&s[2])};
+        cm_result *r = NULL;
+        cm_status st = cm_triangulate_loops(in, 3, &o, &r);
+        CHECK_MSG(st == CM_OK, "twisting sections, %s: %s", cases[c].name, cm_result_message(r));
+        if (st == CM_OK) {
+            size_t n = cm_result_stats(r)->n, outer = 0;
+            for (double t; outer < n && cm_result_boundary_source(r, 0, outer, &t) < (long)s[0].sizes[0];) outer++;
+            double turn[2];
+            for (int g = 1; g < 3; g++) { /* over the outer loop */
+                turn[g - 1] = rc_plane_turn_deg(r, (size_t)g, outer);
+                CHECK_MSG(fabs(turn[g - 1] - 25 * g) < 2, "twisting sections, %s: section %d turned by %.2f degrees",
+                          cases[c].name, g, turn[g - 1]);
+            }
+            double least = rc_least_angle(r, 3);
+            CHECK_MSG(cm_result_stats(r)->holes_moved == 0, "twisting sections, %s: %zu holes moved", cases[c].name,
+                      cm_result_stats(r)->holes_moved);
+            CHECK_MSG(least >= 15, "twisting sections, %s: smallest angle %.2f", cases[c].name, least);
+            printf("twisting sections, %s: turned by %.2f and %.2f degrees, Steiner %zu, smallest angle %.1f\n",
+                   cases[c].name, turn[0], turn[1], cm_result_stats(r)->steiner, least);
         }
         cm_result_free(r);
     }
@@ -952,6 +1000,7 @@ int main(void)
     test_auto_outer_loops_conformal();
     test_auto_restart_from_refined_loops();
     test_auto_least_turn();
+    test_twisting_sections();
     test_auto_matches_holes_by_position();
     test_auto_turn_chosen_by_holes();
     test_no_edge_along_an_input_edge();

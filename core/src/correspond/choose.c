@@ -78,17 +78,19 @@ typedef struct start_search {
     double complex *w; /* scratch for m (or SAMPLES) points */
     const double complex *target_holes, *holes;
     size_t h;
+    double prior; /* the turn of the plane chosen for polygon g - 1 (0 for g = 1) */
 } start_search;
 
 /* A start's cost; and, when turn is not NULL, how far its pairing turns
- * the plane (radians, in [0, pi]). */
+ * the plane from polygon g - 1's (radians, in (-pi, pi]). */
 typedef double (*start_cost)(const start_search *q, size_t start, double *turn);
 
 /* Starts whose costs' square roots lie within this of the least one's
  * fit alike (a share of the loop's size for the Procrustes fit). Where
  * such starts lie apart (a disc, a regular polygon, an outline a turn
- * takes onto itself), the one whose pairing turns the plane least is
- * taken: two sections of a pipe pair without a twist. */
+ * takes onto itself), the one whose pairing turns the plane least from
+ * polygon g - 1's is taken: two sections of a pipe pair without a twist,
+ * sections of a part that twists as it goes each a little further round. */
 #define START_TIE 1e-4
 
 /* The counter-clockwise start of least cost: every vertex, or
@@ -113,7 +115,7 @@ static size_t best_start(const start_search *q, start_cost cost, int by_turn)
             if (!(e <= tie * tie)) continue;
             size_t d = c > best ? c - best : best - c;
             apart |= d > 2 * stride && n - d > 2 * stride;
-            if (turn < least_turn) least_turn = turn, least_at = c;
+            if (fabs(turn) < least_turn) least_turn = fabs(turn), least_at = c;
         }
         if (apart && least_at != best) best = least_at, best_cost = cost(q, best, NULL);
     }
@@ -158,7 +160,7 @@ static double procrustes_cost(const start_search *q, size_t start, double *turn)
     double complex mean = sample(q->xy, q->n, q->reversed, q->arc, start, q->w), a;
     double left, ww;
     if (!similarity_fit(q->target, q->w, &a, &left, &ww)) return HUGE_VAL;
-    if (turn) *turn = fabs(carg(a));
+    if (turn) *turn = remainder(carg(a) - q->prior, 2 * CM_PI);
     for (size_t i = 0; i < q->h; i++) {
         double nearest = HUGE_VAL;
         for (size_t j = 0; j < q->h; j++) nearest = fmin(nearest, cabs(a * q->target_holes[i] - (q->holes[j] - mean)));
@@ -198,6 +200,7 @@ cm_status cm_correspond_choose_starts(const double *const *polygons, const size_
     pins[0] = cm_ccw_input(0, counts[0], orientation[0] < 0);
     free(arc0);
     cm_status s = CM_OK;
+    double prior = 0;
     for (size_t g = 1; s == CM_OK && g < k; g++) {
         size_t n = counts[g];
         int reversed = orientation[g] < 0;
@@ -207,8 +210,11 @@ cm_status cm_correspond_choose_starts(const double *const *polygons, const size_
             break;
         }
         if (h) hole_centroids(&loops[g], 0, holes);
-        start_search q = {polygons[g], n, reversed, arc, z, SAMPLES, w, target_holes, holes, h};
+        start_search q = {polygons[g], n, reversed, arc, z, SAMPLES, w, target_holes, holes, h, prior};
         size_t best = best_start(&q, procrustes_cost, 1);
+        double turn = 0;
+        procrustes_cost(&q, best, &turn);
+        prior = remainder(prior + turn, 2 * CM_PI);
         pins[g] = cm_ccw_input(best, n, reversed);
         free(arc);
     }
@@ -304,7 +310,7 @@ cm_status cm_correspond_choose_hole_starts(const double *const *holes, const siz
             s = cm_fail_status(err, CM_ERR_NO_MEMORY);
             break;
         }
-        start_search q = {holes[g], n, reversed, arc, mapped, m, w, NULL, NULL, 0};
+        start_search q = {holes[g], n, reversed, arc, mapped, m, w, NULL, NULL, 0, 0};
         size_t best = best_start(&q, distance_cost, 0);
         pins[g] = cm_ccw_input(best, n, reversed);
         free(arc), arc = NULL;
@@ -390,12 +396,12 @@ static double holes_apart(const double complex *from, const double complex *to, 
 /* Of the starts that make polygon g's outer loop an exact affine image of
  * polygon 0's (`first` one of them), the one whose map takes polygon 0's
  * holes nearest to polygon g's (loops: NULL without holes), and of those
- * the one whose map turns the plane least: an outer loop an affine map
- * takes onto itself (a rectangle, a disc's polygon) leaves the turn to
- * the holes, and then to the least twist. holes: scratch for 2
- * (num_loops - 1) centroids. */
+ * the one whose map turns the plane least from polygon g - 1's (*prior,
+ * then the turn taken): an outer loop an affine map takes onto itself (a
+ * rectangle, a disc's polygon) leaves the turn to the holes, and then to
+ * the least twist. holes: scratch for 2 (num_loops - 1) centroids. */
 static size_t exact_shift(const double complex *p, const double complex *q, size_t n, size_t first,
-                          const cm_loops *loops, size_t g, double complex *holes)
+                          const cm_loops *loops, size_t g, double complex *holes, double *prior)
 {
     size_t h = loops ? loops[0].num_loops - 1 : 0;
     double complex qm = h ? vertex_mean(loops[g].xy, n) : 0;
@@ -403,14 +409,17 @@ static size_t exact_shift(const double complex *p, const double complex *q, size
     double size2 = 0;
     for (size_t i = 0; i < n; i++) size2 += creal(q[i] * conj(q[i]));
     double a[4], least = HUGE_VAL, least_turn = HUGE_VAL, tie = AFFINE_TOLERANCE * AFFINE_TOLERANCE * size2 / (double)n;
+    double best_angle = *prior;
     size_t best = first;
     for (size_t s = 0; s < n; s++) {
         if (s != first && !(affine_residual(p, q, n, s, 0, NULL) <= AFFINE_CANDIDATE)) continue;
         if (!(affine_residual(p, q, n, s, 1, a) <= AFFINE_TOLERANCE * AFFINE_TOLERANCE)) continue;
-        double apart = holes_apart(holes, holes + h, h, a, qm), turn = fabs(atan2(a[2] - a[1], a[0] + a[3]));
+        double apart = holes_apart(holes, holes + h, h, a, qm), angle = atan2(a[2] - a[1], a[0] + a[3]);
+        double turn = fabs(remainder(angle - *prior, 2 * CM_PI));
         if (apart < least - tie || (apart <= least + tie && turn < least_turn))
-            least = fmin(least, apart), least_turn = turn, best = s;
+            least = fmin(least, apart), least_turn = turn, best = s, best_angle = angle;
     }
+    *prior = best_angle;
     return best;
 }
 
@@ -433,6 +442,7 @@ cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t
     }
     centred(polygons[0], n, orientation[0] < 0, p);
     int all = 1;
+    double prior = 0; /* the turn of the plane chosen for polygon g - 1 */
     shift[0] = 0;
     for (size_t g = 1; g < k && all; g++) {
         centred(polygons[g], n, orientation[g] < 0, q);
@@ -442,7 +452,7 @@ cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t
             if (left < best) best = left, shift[g] = s;
         }
         all = best < HUGE_VAL && affine_residual(p, q, n, shift[g], 1, NULL) <= AFFINE_TOLERANCE * AFFINE_TOLERANCE;
-        if (all) shift[g] = exact_shift(p, q, n, shift[g], loops, g, holes);
+        if (all) shift[g] = exact_shift(p, q, n, shift[g], loops, g, holes, &prior);
     }
     if (all) {
         for (size_t i = 0; i < n; i++)

@@ -193,6 +193,7 @@ typedef struct search {
     const disk *g;
     const double complex *holes0, *holes_g;
     size_t h;
+    double prior; /* the turn of the plane chosen for polygon g - 1 (0 for g = 1) */
 } search;
 
 /* The point at normalised arc length u of a disk's polygon. */
@@ -248,12 +249,20 @@ static void plane_fit(const search *q, double rho, double complex *a, double com
     *a = zz > 0 ? corr / zz : 1, *centre = mean;
 }
 
-/* How far the correspondence of turn rho turns the plane, in [0, pi]. */
-static double plane_turn(const search *q, double rho)
+/* The angle by which the correspondence of turn rho turns the plane. */
+static double plane_angle(const search *q, double rho)
 {
     double complex a, centre;
     plane_fit(q, rho, &a, &centre);
-    return fabs(carg(a));
+    return carg(a);
+}
+
+/* How far that turn of the plane is from the one polygon g - 1's pairing
+ * made, in [0, pi]: sections of a part that twists as it goes (a helical
+ * gear) pair each a little further round, not back. */
+static double plane_turn(const search *q, double rho)
+{
+    return fabs(remainder(plane_angle(q, rho) - q->prior, 2 * CM_PI));
 }
 
 /* How far that similarity puts polygon 0's hole centres from polygon g's
@@ -276,8 +285,8 @@ static double holes_off(const search *q, double rho)
  * turns lie apart (a disc, a regular polygon, a shape a turn takes onto
  * itself), the holes choose among them (those that put the hole centres
  * nearest, within what one step of the turns moves them), and then the
- * least turn of the plane: two sections of a pipe pair without a twist,
- * of a flange turned a little by the little turn. */
+ * least turn of the plane (from polygon g - 1's): two sections of a pipe
+ * pair without a twist, of a flange turned a little by the little turn. */
 #define TURN_TIE 1e-4
 
 /* The golden-section search for the least of f within [lo, hi]. */
@@ -448,11 +457,14 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
     for (size_t i = 0; s == CM_OK && usable && i < SEARCH_SAMPLES; i++) z0[i] -= mean0;
     for (size_t j = 0; s == CM_OK && j < holes; j++)
         centres[j] = hole_centres[0][2 * j] + I * hole_centres[0][2 * j + 1] - mean0;
+    double prior = 0;
     for (size_t g = 1; s == CM_OK && usable && g < k; g++) {
         for (size_t j = 0; j < holes; j++)
             centres[holes + j] = hole_centres[g][2 * j] + I * hole_centres[g][2 * j + 1];
-        search q = {w0, s0, z0, SEARCH_SAMPLES, &disks[g], centres, centres + holes, holes};
-        s = place(&disks[0], &disks[g], best_turn(&q), counts[g], power, params[g], fine ? fine[g] : NULL, err);
+        search q = {w0, s0, z0, SEARCH_SAMPLES, &disks[g], centres, centres + holes, holes, prior};
+        double rho = best_turn(&q);
+        prior = plane_angle(&q, rho);
+        s = place(&disks[0], &disks[g], rho, counts[g], power, params[g], fine ? fine[g] : NULL, err);
     }
     free(s0), free(z0), free(centres);
     if (s == CM_OK) *found = usable;

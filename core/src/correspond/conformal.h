@@ -37,8 +37,9 @@
  * regular polygon), the holes choose among them (hole_centres: NULL, or k
  * arrays of `holes` centres, x y each: the turns that put polygon 0's
  * nearest to polygon g's under the similarity closest to the pairing),
- * then the turn that turns the plane least: two sections of a pipe pair
- * without a twist. */
+ * then the turn of the plane nearest polygon g - 1's (none for polygon 1):
+ * two sections of a pipe pair without a twist, sections of a part that
+ * twists as it goes each a little further round. */
 #define CM_CONFORMAL_POWER 0.25
 /* fine: NULL, or k arrays of counts[g] * CM_PARAM_FINE doubles (fine[0]
  * may be NULL: polygon 0's parameter is its arc length): fine[g][c *
