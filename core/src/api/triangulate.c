@@ -523,13 +523,15 @@ typedef struct auto_pairing {
 static const auto_pairing by_ceiling = {PAIRING_BY_CEILING, 0, CM_CONFORMAL_POWER};
 
 /* The similarity choice: arc length from the starts that align the loops
- * best up to a similarity (with_holes: their holes too,
- * cm_correspond_choose_starts). */
+ * best up to a similarity (with_holes: their holes too, or with holes_tie
+ * only among starts that fit alike, cm_correspond_choose_starts). */
 static cm_status similarity_pairing(cm_result *r, const double *const *polygons, const size_t *counts, size_t k,
-                                    const int *orientation, const cm_loops *with_holes, cm_boundary_map *out)
+                                    const int *orientation, const cm_loops *with_holes, int holes_tie,
+                                    cm_boundary_map *out)
 {
     size_t *starts = malloc(k * sizeof *starts);
-    cm_status s = starts ? cm_correspond_choose_starts(polygons, counts, k, orientation, with_holes, starts, &r->error)
+    cm_status s = starts ? cm_correspond_choose_starts(polygons, counts, k, orientation, with_holes, holes_tie, starts,
+                                                       &r->error)
                          : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     if (s == CM_OK) s = cm_correspond_arclength(polygons, counts, k, orientation, starts, 1, out, &r->error);
     free(starts);
@@ -557,13 +559,13 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
     cm_boundary_map similar = {0};
     double conformal_deg = 0, similar_deg = 0, conformal_bound = 0, similar_bound = 0;
     int conformal_lands = 1, similar_lands = 1; /* the holes where holes are */
-    s = similarity_pairing(r, polygons, counts, k, orientation, NULL, &similar);
+    s = similarity_pairing(r, polygons, counts, k, orientation, with_holes, 1, &similar);
     if (s == CM_OK) s = ceiling_bound_of(r, out, &conformal_deg, &conformal_bound);
     if (s == CM_OK && with_holes) s = cm_correspond_holes_land(with_holes, k, out, &conformal_lands, &r->error);
     if (s == CM_OK && with_holes) s = cm_correspond_holes_land(with_holes, k, &similar, &similar_lands, &r->error);
     if (s == CM_OK && !similar_lands) { /* the outline's fit turned against the holes: fit them too */
         cm_boundary_map_clear(&similar);
-        s = similarity_pairing(r, polygons, counts, k, orientation, with_holes, &similar);
+        s = similarity_pairing(r, polygons, counts, k, orientation, with_holes, 0, &similar);
         if (s == CM_OK) s = cm_correspond_holes_land(with_holes, k, &similar, &similar_lands, &r->error);
     }
     if (s == CM_OK) s = ceiling_bound_of(r, &similar, &similar_deg, &similar_bound);
@@ -645,7 +647,7 @@ static cm_status correspond_boundary(cm_result *r, const double *const *polygons
     }
     if (s == CM_OK && chosen_mode(o) && num_pins == 0) {
         chosen = malloc(k * sizeof *chosen);
-        s = chosen ? cm_correspond_choose_starts(polygons, counts, k, orientation, NULL, chosen, &r->error)
+        s = chosen ? cm_correspond_choose_starts(polygons, counts, k, orientation, with_holes, 1, chosen, &r->error)
                    : cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
         pins = chosen, num_pins = 1, *choice = CM_CHOICE_SIMILARITY;
     }

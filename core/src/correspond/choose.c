@@ -78,25 +78,61 @@ typedef struct start_search {
     double complex *w; /* scratch for m (or SAMPLES) points */
     const double complex *target_holes, *holes;
     size_t h;
-    double prior; /* the turn of the plane chosen for polygon g - 1 (0 for g = 1) */
+    int holes_tie; /* the holes break the outline's ties only, not in the cost */
+    double prior;  /* the turn of the plane chosen for polygon g - 1 (0 for g = 1) */
 } start_search;
 
-/* A start's cost; and, when turn is not NULL, how far its pairing turns
- * the plane from polygon g - 1's (radians, in (-pi, pi]). */
-typedef double (*start_cost)(const start_search *q, size_t start, double *turn);
+/* What a start's fit says besides its cost: how far its pairing turns
+ * the plane from polygon g - 1's (radians, in (-pi, pi]); how far the
+ * holes fit (their squared distances' share) and how much of that a turn
+ * by half a start's step accounts for. */
+typedef struct start_fit {
+    double turn, holes, reach;
+} start_fit;
+
+/* A start's cost, and its fit when fit is not NULL. */
+typedef double (*start_cost)(const start_search *q, size_t start, start_fit *fit);
 
 /* Starts whose costs' square roots lie within this of the least one's
  * fit alike (a share of the loop's size for the Procrustes fit). Where
  * such starts lie apart (a disc, a regular polygon, an outline a turn
- * takes onto itself), the one whose pairing turns the plane least from
- * polygon g - 1's is taken: two sections of a pipe pair without a twist,
- * sections of a part that twists as it goes each a little further round. */
+ * takes onto itself), the holes break the tie where they only do that
+ * (those whose holes fit within half a step's reach of the best of them),
+ * and then the one whose pairing turns the plane least from polygon
+ * g - 1's is taken: two sections of a pipe pair without a twist, of a
+ * flange turned a little by the little turn, sections of a part that
+ * twists as it goes each a little further round. */
 #define START_TIE 1e-4
+
+/* Of the candidates (every stride-th start) that fit as well as `best`
+ * (START_TIE on cost; with holes_tie, the holes too), the one that turns
+ * least, where some of them lie apart from best; else best. */
+static size_t least_turning(const start_search *q, start_cost cost, size_t stride, size_t best, double best_cost)
+{
+    size_t n = q->n, least_at = best;
+    double tie = sqrt(fmax(best_cost, 0)) + START_TIE; /* rounding may leave a cost a little below 0 */
+    double holes = HUGE_VAL, least_turn = HUGE_VAL;
+    int apart = 0;
+    start_fit f;
+    for (size_t c = 0; c < n; c += stride) {
+        double e = cost(q, c, &f);
+        if (!(e <= tie * tie)) continue;
+        size_t d = c > best ? c - best : best - c;
+        apart |= d > 2 * stride && n - d > 2 * stride;
+        if (q->holes_tie) holes = fmin(holes, f.holes);
+    }
+    for (size_t c = 0; apart && c < n; c += stride) {
+        double e = cost(q, c, &f);
+        if (!(e <= tie * tie) || (q->holes_tie && f.holes > holes + f.reach)) continue;
+        if (fabs(f.turn) < least_turn) least_turn = fabs(f.turn), least_at = c;
+    }
+    return least_at;
+}
 
 /* The counter-clockwise start of least cost: every vertex, or
  * COARSE_CANDIDATES of them, then the neighbourhood of the best. With
- * by_turn, of the candidates apart that fit alike (START_TIE), the one
- * that turns least, and its neighbourhood. */
+ * by_turn, of the candidates apart that fit alike (least_turning), the
+ * one that turns least, and its neighbourhood. */
 static size_t best_start(const start_search *q, start_cost cost, int by_turn)
 {
     size_t n = q->n, stride = n > COARSE_CANDIDATES ? n / COARSE_CANDIDATES : 1, best = 0;
@@ -106,18 +142,8 @@ static size_t best_start(const start_search *q, start_cost cost, int by_turn)
         if (e < best_cost) best_cost = e, best = c;
     }
     if (by_turn && best_cost < HUGE_VAL) {
-        /* rounding may leave a cost a little below 0 */
-        double tie = sqrt(fmax(best_cost, 0)) + START_TIE, least_turn = HUGE_VAL, turn;
-        size_t least_at = best;
-        int apart = 0;
-        for (size_t c = 0; c < n; c += stride) {
-            double e = cost(q, c, &turn);
-            if (!(e <= tie * tie)) continue;
-            size_t d = c > best ? c - best : best - c;
-            apart |= d > 2 * stride && n - d > 2 * stride;
-            if (fabs(turn) < least_turn) least_turn = fabs(turn), least_at = c;
-        }
-        if (apart && least_at != best) best = least_at, best_cost = cost(q, best, NULL);
+        size_t chosen = least_turning(q, cost, stride, best, best_cost);
+        if (chosen != best) best = chosen, best_cost = cost(q, best, NULL);
     }
     size_t centre = best;
     for (size_t d = 1; stride > 1 && d < stride; d++)
@@ -151,22 +177,27 @@ static double complex loop_centroid(const double *xy, size_t n, double *area)
     return a != 0 ? (cx + I * cy) / (3 * a) : vertex_mean(xy, n);
 }
 
-/* The Procrustes residual's share; with holes, plus each of polygon 0's
- * hole centroids under the fitted similarity to the loop's nearest one
- * (squared, in the same share): an outer loop that a turn takes onto
- * itself (a rectangle) leaves the turn to the holes. */
-static double procrustes_cost(const start_search *q, size_t start, double *turn)
+/* The Procrustes residual's share; with holes (unless they only break
+ * ties), plus each of polygon 0's hole centroids under the fitted
+ * similarity to the loop's nearest one (squared, in the same share): an
+ * outer loop that a turn takes onto itself (a rectangle) leaves the turn
+ * to the holes. */
+static double procrustes_cost(const start_search *q, size_t start, start_fit *fit)
 {
     double complex mean = sample(q->xy, q->n, q->reversed, q->arc, start, q->w), a;
-    double left, ww;
+    double left, ww, holes = 0, far = 0;
     if (!similarity_fit(q->target, q->w, &a, &left, &ww)) return HUGE_VAL;
-    if (turn) *turn = remainder(carg(a) - q->prior, 2 * CM_PI);
     for (size_t i = 0; i < q->h; i++) {
         double nearest = HUGE_VAL;
         for (size_t j = 0; j < q->h; j++) nearest = fmin(nearest, cabs(a * q->target_holes[i] - (q->holes[j] - mean)));
-        left += nearest * nearest;
+        holes += nearest * nearest, far = fmax(far, cabs(a * q->target_holes[i]));
     }
-    return left / ww;
+    if (fit) { /* a start's step turns the plane by about 2 pi / n: half of it moves a hole this far */
+        double half_step = far * CM_PI / (double)q->n;
+        fit->turn = remainder(carg(a) - q->prior, 2 * CM_PI);
+        fit->holes = holes / ww, fit->reach = (double)q->h * half_step * half_step / ww;
+    }
+    return (q->holes_tie ? left : left + holes) / ww;
 }
 
 /* The h hole centroids of a polygon with holes, less `centre`. */
@@ -185,7 +216,8 @@ void cm_correspond_hole_centres(const cm_loops *loops, double *out)
 }
 
 cm_status cm_correspond_choose_starts(const double *const *polygons, const size_t *counts, size_t k,
-                                      const int *orientation, const cm_loops *loops, size_t *pins, cm_error *err)
+                                      const int *orientation, const cm_loops *loops, int holes_tie, size_t *pins,
+                                      cm_error *err)
 {
     double complex z[SAMPLES], w[SAMPLES];
     size_t h = loops ? loops[0].num_loops - 1 : 0;
@@ -210,11 +242,11 @@ cm_status cm_correspond_choose_starts(const double *const *polygons, const size_
             break;
         }
         if (h) hole_centroids(&loops[g], 0, holes);
-        start_search q = {polygons[g], n, reversed, arc, z, SAMPLES, w, target_holes, holes, h, prior};
+        start_search q = {polygons[g], n, reversed, arc, z, SAMPLES, w, target_holes, holes, h, holes_tie, prior};
         size_t best = best_start(&q, procrustes_cost, 1);
-        double turn = 0;
-        procrustes_cost(&q, best, &turn);
-        prior = remainder(prior + turn, 2 * CM_PI);
+        start_fit f = {0, 0, 0};
+        procrustes_cost(&q, best, &f);
+        prior = remainder(prior + f.turn, 2 * CM_PI);
         pins[g] = cm_ccw_input(best, n, reversed);
         free(arc);
     }
@@ -249,9 +281,9 @@ void cm_correspond_outer_similarity(const cm_boundary_map *outer, double *simila
 
 /* Sum of squared distances from the m points of the loop sampled from
  * counter-clockwise vertex start to the target. */
-static double distance_cost(const start_search *q, size_t start, double *turn)
+static double distance_cost(const start_search *q, size_t start, start_fit *fit)
 {
-    (void)turn;
+    if (fit) fit->turn = fit->holes = fit->reach = 0;
     sample_m(q->xy, q->n, q->reversed, q->arc, start, q->m, q->w);
     double sum = 0;
     for (size_t j = 0; j < q->m; j++) {
@@ -310,7 +342,7 @@ cm_status cm_correspond_choose_hole_starts(const double *const *holes, const siz
             s = cm_fail_status(err, CM_ERR_NO_MEMORY);
             break;
         }
-        start_search q = {holes[g], n, reversed, arc, mapped, m, w, NULL, NULL, 0, 0};
+        start_search q = {holes[g], n, reversed, arc, mapped, m, w, NULL, NULL, 0, 0, 0};
         size_t best = best_start(&q, distance_cost, 0);
         pins[g] = cm_ccw_input(best, n, reversed);
         free(arc), arc = NULL;

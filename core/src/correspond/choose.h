@@ -17,11 +17,14 @@
  * polygons with holes the polygons themselves: each start's residual then
  * also counts polygon 0's hole centroids under its similarity against
  * polygon g's nearest ones, so that where a turn takes the outer loop onto
- * itself (a rectangle) the holes choose. Of starts far apart that fit
- * alike (a disc, a regular polygon, a rectangle whose holes a turn takes
- * onto themselves) the one whose similarity turns least. */
+ * itself (a rectangle) the holes choose; with holes_tie, the holes only
+ * choose among the starts whose outer loops fit alike. Of starts far
+ * apart that fit alike (a disc, a regular polygon, a rectangle whose holes
+ * a turn takes onto themselves) the one whose similarity turns least from
+ * the one chosen for polygon g - 1. */
 cm_status cm_correspond_choose_starts(const double *const *polygons, const size_t *counts, size_t k,
-                                      const int *orientation, const cm_loops *loops, size_t *pins, cm_error *err);
+                                      const int *orientation, const cm_loops *loops, int holes_tie, size_t *pins,
+                                      cm_error *err);
 
 /* The centroids of a polygon's holes (its loops after the first), x y
  * each, into out (2 (num_loops - 1) doubles). */
