@@ -446,7 +446,7 @@ static size_t exact_shift(const double complex *p, const double complex *q, size
     for (size_t s = 0; s < n; s++) {
         if (s != first && !(affine_residual(p, q, n, s, 0, NULL) <= AFFINE_CANDIDATE)) continue;
         if (!(affine_residual(p, q, n, s, 1, a) <= AFFINE_TOLERANCE * AFFINE_TOLERANCE)) continue;
-        double apart = holes_apart(holes, holes + h, h, a, qm), angle = atan2(a[2] - a[1], a[0] + a[3]);
+        double apart = h ? holes_apart(holes, holes + h, h, a, qm) : 0, angle = atan2(a[2] - a[1], a[0] + a[3]);
         double turn = fabs(remainder(angle - *prior, 2 * CM_PI));
         if (apart < least - tie || (apart <= least + tie && turn < least_turn))
             least = fmin(least, apart), least_turn = turn, best = s, best_angle = angle;

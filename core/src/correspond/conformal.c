@@ -461,7 +461,7 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
     for (size_t g = 1; s == CM_OK && usable && g < k; g++) {
         for (size_t j = 0; j < holes; j++)
             centres[holes + j] = hole_centres[g][2 * j] + I * hole_centres[g][2 * j + 1];
-        search q = {w0, s0, z0, SEARCH_SAMPLES, &disks[g], centres, centres + holes, holes, prior};
+        search q = {w0, s0, z0, SEARCH_SAMPLES, &disks[g], centres, holes ? centres + holes : NULL, holes, prior};
         double rho = best_turn(&q);
         prior = plane_angle(&q, rho);
         s = place(&disks[0], &disks[g], rho, counts[g], power, params[g], fine ? fine[g] : NULL, err);
