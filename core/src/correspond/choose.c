@@ -431,13 +431,14 @@ static double holes_apart(const double complex *from, const double complex *to, 
  * the one whose map turns the plane least from polygon g - 1's (*prior,
  * then the turn taken): an outer loop an affine map takes onto itself (a
  * rectangle, a disc's polygon) leaves the turn to the holes, and then to
- * the least twist. holes: scratch for 2 (num_loops - 1) centroids. */
+ * the least twist. holes: polygon 0's h centroids (hole_centroids, less
+ * its outer vertex mean), then room for polygon g's. */
 static size_t exact_shift(const double complex *p, const double complex *q, size_t n, size_t first,
                           const cm_loops *loops, size_t g, double complex *holes, double *prior)
 {
     size_t h = loops ? loops[0].num_loops - 1 : 0;
     double complex qm = h ? vertex_mean(loops[g].xy, n) : 0;
-    if (h) hole_centroids(&loops[0], vertex_mean(loops[0].xy, n), holes), hole_centroids(&loops[g], 0, holes + h);
+    if (h) hole_centroids(&loops[g], 0, holes + h);
     double size2 = 0;
     for (size_t i = 0; i < n; i++) size2 += creal(q[i] * conj(q[i]));
     double a[4], least = HUGE_VAL, least_turn = HUGE_VAL, tie = AFFINE_TOLERANCE * AFFINE_TOLERANCE * size2 / (double)n;
@@ -473,6 +474,7 @@ cm_status cm_correspond_affine_shift(const double *const *polygons, const size_t
         return cm_fail_status(err, CM_ERR_NO_MEMORY);
     }
     centred(polygons[0], n, orientation[0] < 0, p);
+    if (h) hole_centroids(&loops[0], vertex_mean(loops[0].xy, n), holes);
     int all = 1;
     double prior = 0; /* the turn of the plane chosen for polygon g - 1 */
     shift[0] = 0;

@@ -257,20 +257,21 @@ static double plane_angle(const search *q, double rho)
     return carg(a);
 }
 
-/* How far that turn of the plane is from the one polygon g - 1's pairing
- * made, in [0, pi]: sections of a part that twists as it goes (a helical
- * gear) pair each a little further round, not back. */
-static double plane_turn(const search *q, double rho)
+/* How far the turn of the plane by angle is from the one polygon g - 1's
+ * pairing made, in [0, pi]: sections of a part that twists as it goes (a
+ * helical gear) pair each a little further round, not back. */
+static double turn_from_prior(const search *q, double angle)
 {
-    return fabs(remainder(plane_angle(q, rho) - q->prior, 2 * CM_PI));
+    return fabs(remainder(angle - q->prior, 2 * CM_PI));
 }
 
-/* How far that similarity puts polygon 0's hole centres from polygon g's
- * nearest ones: the sum of the squared distances. */
-static double holes_off(const search *q, double rho)
+/* That for the correspondence of turn rho. */
+static double plane_turn(const search *q, double rho) { return turn_from_prior(q, plane_angle(q, rho)); }
+
+/* How far the similarity a z + centre puts polygon 0's hole centres from
+ * polygon g's nearest ones: the sum of the squared distances. */
+static double holes_off_under(const search *q, double complex a, double complex centre)
 {
-    double complex a, centre;
-    plane_fit(q, rho, &a, &centre);
     double sum = 0;
     for (size_t i = 0; i < q->h; i++) {
         double nearest = HUGE_VAL;
@@ -278,6 +279,14 @@ static double holes_off(const search *q, double rho)
         sum += nearest * nearest;
     }
     return sum;
+}
+
+/* That under the similarity closest to the correspondence of turn rho. */
+static double holes_off(const search *q, double rho)
+{
+    double complex a, centre;
+    plane_fit(q, rho, &a, &centre);
+    return holes_off_under(q, a, centre);
 }
 
 /* Turns whose costs' square roots (the arc lengths' spread, a share of
@@ -325,22 +334,22 @@ static double best_turn(const search *q)
     if (apart) {
         /* the hole centres' offsets that one step of the turns, or the
          * tie's spread, accounts for */
-        double off[ROTATIONS], least_off = HUGE_VAL, most_off = 0, least_turn = HUGE_VAL, size = 0, reach = 0;
+        double off[ROTATIONS], turn[ROTATIONS], least_off = HUGE_VAL, most_off = 0, least_turn = HUGE_VAL, size = 0;
+        double reach = 0;
         double complex a, centre;
         plane_fit(q, 2 * CM_PI * best / ROTATIONS, &a, &centre);
         for (size_t i = 0; i < q->m; i++) size += creal(q->z0[i] * conj(q->z0[i]));
         for (size_t i = 0; i < q->h; i++) reach = fmax(reach, cabs(a * q->holes0[i]) * step);
         reach += TURN_TIE * cabs(a) * sqrt(size / (double)q->m);
-        for (int r = 0; r < ROTATIONS; r++) {
-            off[r] = costs[r] <= tie2 && q->h ? holes_off(q, 2 * CM_PI * r / ROTATIONS) : 0;
-            if (costs[r] <= tie2) least_off = fmin(least_off, off[r]), most_off = fmax(most_off, off[r]);
+        for (int r = 0; r < ROTATIONS; r++) { /* one fit per turn that ties gives both measures */
+            if (!(costs[r] <= tie2)) continue;
+            plane_fit(q, 2 * CM_PI * r / ROTATIONS, &a, &centre);
+            off[r] = holes_off_under(q, a, centre), turn[r] = turn_from_prior(q, carg(a));
+            least_off = fmin(least_off, off[r]), most_off = fmax(most_off, off[r]);
         }
         double within = least_off + (double)q->h * reach * reach;
-        for (int r = 0; r < ROTATIONS; r++) {
-            if (!(costs[r] <= tie2 && off[r] <= within)) continue;
-            double turn = plane_turn(q, 2 * CM_PI * r / ROTATIONS);
-            if (turn < least_turn) least_turn = turn, least_at = r;
-        }
+        for (int r = 0; r < ROTATIONS; r++)
+            if (costs[r] <= tie2 && off[r] <= within && turn[r] < least_turn) least_turn = turn[r], least_at = r;
         double at = 2 * CM_PI * least_at / ROTATIONS;
         if (costs[(least_at + 1) % ROTATIONS] <= tie2 && costs[(least_at + ROTATIONS - 1) % ROTATIONS] <= tie2) {
             int by_holes = most_off > within; /* else the holes do not tell the turns apart */
