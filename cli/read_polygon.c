@@ -182,6 +182,31 @@ static int parse_coordinate(const char *field, double *value, const char *path,
     return 0;
 }
 
+/* The plane z = constant of a text file's vertices: the first vertex's z
+ * (0 where a line gives none), checked on every later one. */
+typedef struct plane_z {
+    double z;
+    long line;  /* of the first vertex; 0 before it */
+    int given;  /* some line gave z */
+} plane_z;
+
+/* Takes vertex (x, y, z) of line `number` (given: the line wrote z) into
+ * the plane, or says which line leaves it. */
+static int plane_z_take(plane_z *plane, double x, double y, double z, int given, const char *path, long number,
+                        cli_error *error)
+{
+    plane->given |= given;
+    if (plane->line == 0) {
+        plane->z = z, plane->line = number;
+        return CLI_EXIT_OK;
+    }
+    if (in_plane_z(x, y, z, plane->z)) return CLI_EXIT_OK;
+    cli_error_set(error,
+                  "%s:%ld: z = %.17g differs from z = %.17g on line %ld; the polygon must lie in a plane z = constant",
+                  path, number, z, plane->z, plane->line);
+    return CLI_EXIT_USAGE;
+}
+
 /* Calls visit(line_text, line_number, state) for every line of text, which
  * it modifies in place. Stops at the first non-zero return and returns it. */
 static int for_each_line(char *text, int (*visit)(char *, long, void *),
@@ -226,13 +251,28 @@ typedef struct xy_state {
     loop_list loops;
     size_t loop_first; /* first vertex of the loop being read */
     long loop_line;    /* the line of its first vertex */
+    plane_z plane;
     cli_error *error;
 } xy_state;
+
+/* The loop being read, without a last vertex that repeats its first
+ * exactly: a closed ring, as GMT, WKT and shapefiles write polygons. Its
+ * vertex count (a loop of three or fewer keeps them all, for the
+ * messages on too few vertices). */
+static size_t xy_loop_size(xy_state *state)
+{
+    size_t size = state->vertices.count - state->loop_first;
+    if (size < 4) return size;
+    const double *first = state->vertices.xy + 2 * state->loop_first;
+    const double *last = state->vertices.xy + 2 * (state->vertices.count - 1);
+    if (first[0] == last[0] && first[1] == last[1]) state->vertices.count--, size--;
+    return size;
+}
 
 /* Ends the loop being read (none yet: nothing to do). */
 static int xy_close_loop(xy_state *state)
 {
-    size_t size = state->vertices.count - state->loop_first;
+    size_t size = xy_loop_size(state);
     if (size == 0) return CLI_EXIT_OK;
     if (size < 3) {
         cli_error_set(state->error, "%s:%ld: loop %zu has %zu vertices, needs at least 3",
@@ -260,15 +300,18 @@ static int visit_xy_line(char *line, long number, void *opaque)
                       state->path, number);
         return CLI_EXIT_USAGE;
     }
-    if (count != 2) {
-        cli_error_set(state->error, "%s:%ld: expected 2 numbers 'x y', found %d field%s",
+    if (count != 2 && count != 3) {
+        cli_error_set(state->error, "%s:%ld: expected 2 or 3 numbers 'x y [z]', found %d field%s",
                       state->path, number, count, count == 1 ? "" : "s");
         return CLI_EXIT_USAGE;
     }
-    double x, y;
+    double x, y, z = 0.0;
     if (parse_coordinate(fields[0], &x, state->path, number, state->error) ||
-        parse_coordinate(fields[1], &y, state->path, number, state->error))
+        parse_coordinate(fields[1], &y, state->path, number, state->error) ||
+        (count == 3 && parse_coordinate(fields[2], &z, state->path, number, state->error)))
         return CLI_EXIT_USAGE;
+    int code = plane_z_take(&state->plane, x, y, z, count == 3, state->path, number, state->error);
+    if (code != CLI_EXIT_OK) return code;
     if (state->vertices.count == state->loop_first) state->loop_line = number;
     if (vertex_list_push(&state->vertices, x, y, number)) {
         cli_error_set(state->error, "%s: out of memory", state->path);
@@ -280,16 +323,16 @@ static int visit_xy_line(char *line, long number, void *opaque)
 static int parse_xy(const char *path, char *text, polygon_input *polygon,
                     cli_error *error)
 {
-    xy_state state = {path, {0}, {0}, 0, 0, error};
+    xy_state state = {.path = path, .error = error};
     int code = for_each_line(text, visit_xy_line, &state);
     if (code == CLI_EXIT_OK && state.vertices.count == 0) {
-        cli_error_set(error, "%s: no vertices found (expected one 'x y' per line)", path);
+        cli_error_set(error, "%s: no vertices found (expected one 'x y' or 'x y z' per line)", path);
         code = CLI_EXIT_USAGE;
     }
     /* A single loop keeps the hole-free rules (the core counts its
      * vertices); several must each have 3. */
     if (code == CLI_EXIT_OK && state.loops.count > 0) code = xy_close_loop(&state);
-    else if (code == CLI_EXIT_OK) code = loop_list_push(&state.loops, state.vertices.count) ? CLI_EXIT_INTERNAL : CLI_EXIT_OK;
+    else if (code == CLI_EXIT_OK && loop_list_push(&state.loops, xy_loop_size(&state))) code = CLI_EXIT_INTERNAL;
     if (code == CLI_EXIT_INTERNAL && !error->message[0]) cli_error_set(error, "%s: out of memory", path);
     if (code != CLI_EXIT_OK) {
         vertex_list_free(&state.vertices);
@@ -301,6 +344,8 @@ static int parse_xy(const char *path, char *text, polygon_input *polygon,
     polygon->source_line = state.vertices.line;
     polygon->loops = state.loops.count;
     polygon->loop_sizes = state.loops.size;
+    polygon->has_z = state.plane.given;
+    polygon->z = state.plane.z;
     return CLI_EXIT_OK;
 }
 
@@ -309,9 +354,7 @@ static int parse_xy(const char *path, char *text, polygon_input *polygon,
 typedef struct obj_state {
     const char *path;
     vertex_list vertices;
-    double first_z;
-    long first_z_line; /* 0 until the first 'v' line */
-    int has_z;         /* some 'v' line gave z */
+    plane_z plane;
     loop_edge *edges;  /* of every 'l' line, 0-based (range checked at the end) */
     size_t edge_count, edge_capacity;
     long l_line;       /* 0 until the first 'l' line */
@@ -329,17 +372,8 @@ static int obj_vertex(obj_state *state, char **fields, int count, long number)
         parse_coordinate(fields[2], &y, state->path, number, state->error) ||
         (count == 4 && parse_coordinate(fields[3], &z, state->path, number, state->error)))
         return CLI_EXIT_USAGE;
-    if (count == 4) state->has_z = 1;
-    if (state->first_z_line == 0) {
-        state->first_z = z;
-        state->first_z_line = number;
-    } else if (!in_plane_z(x, y, z, state->first_z)) {
-        cli_error_set(state->error,
-                      "%s:%ld: z = %.17g differs from z = %.17g on line %ld; "
-                      "the polygon must lie in a plane z = constant",
-                      state->path, number, z, state->first_z, state->first_z_line);
-        return CLI_EXIT_USAGE;
-    }
+    int code = plane_z_take(&state->plane, x, y, z, count == 4, state->path, number, state->error);
+    if (code != CLI_EXIT_OK) return code;
     if (vertex_list_push(&state->vertices, x, y, number)) {
         cli_error_set(state->error, "%s: out of memory", state->path);
         return CLI_EXIT_INTERNAL;
@@ -461,8 +495,8 @@ static int obj_make_polygon(obj_state *state, polygon_input *polygon)
     polygon->count = count;
     polygon->loops = loops;
     polygon->loop_sizes = sizes;
-    polygon->has_z = state->has_z;
-    polygon->z = state->first_z;
+    polygon->has_z = state->plane.given;
+    polygon->z = state->plane.z;
     return CLI_EXIT_OK;
 }
 

@@ -41,7 +41,7 @@ static const option_spec sweep_options[] = {
                                    "bounding boxes)"},
     {"heights", OPTION_HEIGHTS, "Z1,Z2,...",
      "the z of every input, strictly increasing; default:\n"
-     "the inputs' own z if they are all OBJ files with z\n"
+     "the inputs' own z if they all give z (OBJ, PLY, .xy)\n"
      "(unless all z are equal)"},
     {"tets", OPTION_TETS, NULL, "write tetrahedra (each prism split in 3, faces\n"
                                 "conforming, diagonals chosen against slivers)\n"
@@ -249,8 +249,8 @@ static int check_output(const char *path, cli_error *error)
     return code;
 }
 
-/* The inputs' own z as heights, when every input is an OBJ file with z and
- * the z differ; flat drawings (all z equal, or none given) say nothing. */
+/* The inputs' own z as heights, when every input gives z (an OBJ, PLY or
+ * .xy file with z) and the z differ; flat drawings (all z equal, or none given) say nothing. */
 static int heights_from_inputs(const triangulation *tri, double *heights, cli_error *error)
 {
     size_t k = tri->args->input_count, with_z = 0;

@@ -108,6 +108,16 @@ def test_square_and_disc(cm, tmp_path, fmt):
     assert [d.count("Z") for d in boundaries] == [2, 2]  # the outer loop and the hole's, per mesh
 
 
+def test_closed_rings_with_holes(cm, tmp_path):
+    """Every loop of an .xy file may close its ring by repeating its first
+    vertex: each is read without the repeat."""
+    (tmp_path / "a.xy").write_text(xy_text([loop + loop[:1] for loop in SQUARE_WITH_HOLE]))
+    (tmp_path / "b.xy").write_text(xy_text([DISC_WITH_HOLE[0] + DISC_WITH_HOLE[0][:1], DISC_WITH_HOLE[1]]))
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
+    assert result.returncode == 0, result.stderr
+    check_output(tmp_path / "out", ["a", "b"], [SQUARE_WITH_HOLE, DISC_WITH_HOLE], 1)
+
+
 def test_obj_outer_found_by_containment(cm, tmp_path):
     """The hole's 'l' line first: the outer loop is the one of largest area."""
     (tmp_path / "a.obj").write_text(obj_text(SQUARE_WITH_HOLE[::-1]))

@@ -84,7 +84,7 @@ SQUARE_TEXT = "".join(f"{x!r} {y!r}\n" for x, y in SQUARE)
 
 # name: (content of b.xy or b.obj, file name, exit status, stderr pattern)
 FILE_CASES = {
-    "truncated_xy": ("0 0\n1 0\n1 1\n0", "b.xy", 2, r"b\.xy:4: expected 2 numbers"),
+    "truncated_xy": ("0 0\n1 0\n1 1\n0", "b.xy", 2, r"b\.xy:4: expected 2 or 3 numbers"),
     "truncated_number": ("0 0\n1 0\n1 1\n0 1e", "b.xy", 2, r"b\.xy:4: '1e' is not a number"),
     "truncated_obj": ("v 0 0\nv 1 0\nv 1 1\nv 0 1\nl 1 2 3", "b.obj", 2, r"b\.obj:5: .*not closed"),
     "obj_cut_before_l": ("v 0 0\nv 1 0\nv 1 1\nv 0", "b.obj", 2, r"b\.obj:4: expected 'v x y \[z\]'"),

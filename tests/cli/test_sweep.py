@@ -277,6 +277,18 @@ def test_inputs_with_and_without_z(cm, tmp_path):
     assert cm("sweep", "a.obj", "b.xy", "-o", "out.msh").returncode == 0
 
 
+def test_heights_from_xy_z(cm, tmp_path):
+    """.xy files may give z as a third column: the sweep stacks them there,
+    as it does OBJ files with z."""
+    a, b = twisted_pair()
+    (tmp_path / "a.xy").write_text("".join(f"{x!r} {y!r} 1.5\n" for x, y in a))
+    (tmp_path / "b.xy").write_text("".join(f"{x!r}, {y!r}, 4\n" for x, y in b))
+    result = cm("sweep", "a.xy", "b.xy", "-o", "out.msh")
+    assert result.returncode == 0, result.stderr
+    z = meshio.read(tmp_path / "out.msh").points[:, 2]
+    assert z.min() == 1.5 and z.max() == 4
+
+
 def test_inputs_z_must_increase(cm, tmp_path):
     a, b = twisted_pair()
     write_obj(tmp_path / "a.obj", a, 2.0)

@@ -277,6 +277,38 @@ def test_commas_comments_blank_lines(cm, tmp_path):
     check_success(tmp_path, result, {"a.xy": KITE, "b.xy": SQUARE})
 
 
+def test_xy_with_z(cm, tmp_path):
+    """A third column is the section's z, the same on every line; the
+    meshes are those of the x y columns alone."""
+    (tmp_path / "a.xy").write_text("".join(f"{x!r} {y!r} -2.5\n" for x, y in KITE))
+    (tmp_path / "b.xy").write_text("".join(f"{x!r},{y!r},-2.5\n" for x, y in SQUARE))
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
+    check_success(tmp_path, result, {"a.xy": KITE, "b.xy": SQUARE})
+    write_xy(tmp_path / "c.xy", KITE)
+    write_xy(tmp_path / "d.xy", SQUARE)
+    assert cm("triangulate", "c.xy", "d.xy", "--out-dir", "flat").returncode == 0
+    assert (tmp_path / "out" / "a.off").read_bytes() == (tmp_path / "flat" / "c.off").read_bytes()
+
+
+def test_closed_rings_read_without_the_repeat(cm, tmp_path):
+    """A last vertex repeating the first exactly closes the ring (GMT, WKT
+    and shapefiles write polygons so): read without it, in one file and
+    not the other alike; the outputs have the polygon's vertices only."""
+    write_xy(tmp_path / "a.xy", KITE + KITE[:1])
+    write_xy(tmp_path / "b.xy", SQUARE)
+    result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
+    check_success(tmp_path, result, {"a.xy": KITE, "b.xy": SQUARE})
+    # A repeat of another vertex, or of the first in a file of three lines,
+    # is still a repeated vertex.
+    write_xy(tmp_path / "c.xy", KITE + KITE[1:2])
+    write_xy(tmp_path / "d.xy", KITE[:2] + KITE[:1])
+    for bad, line, vertex, of in (("c.xy", 5, 4, 1), ("d.xy", 3, 2, 0)):
+        result = cm("triangulate", bad, "b.xy", "--out-dir", "bad")
+        assert result.returncode == 2
+        assert f"{bad}:{line}: vertex {vertex} repeats vertex {of}" in result.stderr
+        assert not (tmp_path / "bad").exists()
+
+
 def test_clockwise_inputs_are_reversed(cm, tmp_path):
     a, b = star(10, seed=3, clockwise=True), star(10, seed=4, clockwise=True)
     write_xy(tmp_path / "a.xy", a)
