@@ -255,11 +255,11 @@ typedef struct xy_state {
     cli_error *error;
 } xy_state;
 
-/* The loop being read, without a last vertex that repeats its first
- * exactly: a closed ring, as GMT, WKT and shapefiles write polygons. Its
- * vertex count (a loop of three or fewer keeps them all, for the
- * messages on too few vertices). */
-static size_t xy_loop_size(xy_state *state)
+/* Drops the last vertex of the loop being read where it repeats the
+ * loop's first exactly: a closed ring, as GMT, WKT and shapefiles write
+ * polygons (a loop of three or fewer keeps them all, for the messages on
+ * too few vertices). Returns the loop's vertex count. */
+static size_t xy_drop_ring_repeat(xy_state *state)
 {
     size_t size = state->vertices.count - state->loop_first;
     if (size < 4) return size;
@@ -272,7 +272,7 @@ static size_t xy_loop_size(xy_state *state)
 /* Ends the loop being read (none yet: nothing to do). */
 static int xy_close_loop(xy_state *state)
 {
-    size_t size = xy_loop_size(state);
+    size_t size = xy_drop_ring_repeat(state);
     if (size == 0) return CLI_EXIT_OK;
     if (size < 3) {
         cli_error_set(state->error, "%s:%ld: loop %zu has %zu vertices, needs at least 3",
@@ -332,7 +332,7 @@ static int parse_xy(const char *path, char *text, polygon_input *polygon,
     /* A single loop keeps the hole-free rules (the core counts its
      * vertices); several must each have 3. */
     if (code == CLI_EXIT_OK && state.loops.count > 0) code = xy_close_loop(&state);
-    else if (code == CLI_EXIT_OK && loop_list_push(&state.loops, xy_loop_size(&state))) code = CLI_EXIT_INTERNAL;
+    else if (code == CLI_EXIT_OK && loop_list_push(&state.loops, xy_drop_ring_repeat(&state))) code = CLI_EXIT_INTERNAL;
     if (code == CLI_EXIT_INTERNAL && !error->message[0]) cli_error_set(error, "%s: out of memory", path);
     if (code != CLI_EXIT_OK) {
         vertex_list_free(&state.vertices);

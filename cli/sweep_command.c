@@ -250,7 +250,8 @@ static int check_output(const char *path, cli_error *error)
 }
 
 /* The inputs' own z as heights, when every input gives z (an OBJ, PLY or
- * .xy file with z) and the z differ; flat drawings (all z equal, or none given) say nothing. */
+ * .xy file with z) and the z differ; flat drawings (all z equal, or none
+ * given) say nothing. */
 static int heights_from_inputs(const triangulation *tri, double *heights, cli_error *error)
 {
     size_t k = tri->args->input_count, with_z = 0;

@@ -193,9 +193,11 @@ static void fail_each_allocation(const char *name, cm_status (*runner)(char *, s
  * loop, and the bridges' pieces take the partition's rule on input edges. */
 static shape slot[2];
 
-static size_t slot_boundary = 36; /* measured */
-
-static cm_status run_slot(char *where, size_t size) { return run_auto_loops(slot, &slot_boundary, "slot", where, size); }
+static cm_status run_slot(char *where, size_t size)
+{
+    static size_t boundary = 36; /* measured */
+    return run_auto_loops(slot, &boundary, "slot", where, size);
+}
 
 static void test_holes_cap_split(void)
 {
