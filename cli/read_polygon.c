@@ -252,6 +252,7 @@ typedef struct xy_state {
     size_t loop_first; /* first vertex of the loop being read */
     long loop_line;    /* the line of its first vertex */
     plane_z plane;
+    int seen_line; /* a line with fields was read (a header comes first) */
     cli_error *error;
 } xy_state;
 
@@ -287,6 +288,14 @@ static int xy_close_loop(xy_state *state)
     return CLI_EXIT_OK;
 }
 
+/* A field strtod reads nothing of: a word, as a column name. */
+static int is_word(const char *field)
+{
+    char *end;
+    (void)strtod(field, &end);
+    return end == field;
+}
+
 static int visit_xy_line(char *line, long number, void *opaque)
 {
     xy_state *state = opaque;
@@ -295,6 +304,12 @@ static int visit_xy_line(char *line, long number, void *opaque)
     char *fields[MAX_FIELDS];
     int count = split_fields(line, 1, fields);
     if (count == 0) return CLI_EXIT_OK;
+    /* The first line of words only is a header, as spreadsheets and CSV
+     * exports write ('x,y'): skipped. A number among them is an error. */
+    int header = !state->seen_line && count > 0 && count <= MAX_FIELDS;
+    for (int f = 0; header && f < count; f++) header = is_word(fields[f]);
+    state->seen_line = 1;
+    if (header) return CLI_EXIT_OK;
     if (count < 0) {
         cli_error_set(state->error, "%s:%ld: misplaced ','; expected 'x y' or 'x, y'",
                       state->path, number);

@@ -309,6 +309,22 @@ def test_closed_rings_read_without_the_repeat(cm, tmp_path):
         assert not (tmp_path / "bad").exists()
 
 
+def test_header_line_skipped(cm, tmp_path):
+    """A first line of words only ('x,y', as spreadsheets and CSV exports
+    write) is a header: the run is byte-identical to the one without it."""
+    write_xy(tmp_path / "a.csv", KITE, header="# exported\nx,y")
+    write_xy(tmp_path / "b.xy", SQUARE, header="X Y")
+    result = cm("triangulate", "a.csv", "b.xy", "--out-dir", "out")
+    check_success(tmp_path, result, {"a.csv": KITE, "b.xy": SQUARE})
+    (tmp_path / "plain").mkdir()
+    write_xy(tmp_path / "plain" / "a.csv", KITE)
+    write_xy(tmp_path / "plain" / "b.xy", SQUARE)
+    plain = cm("triangulate", "plain/a.csv", "plain/b.xy", "--out-dir", "plain_out")
+    assert plain.returncode == 0, plain.stderr
+    for name in ("a.off", "b.off"):
+        assert (tmp_path / "out" / name).read_bytes() == (tmp_path / "plain_out" / name).read_bytes()
+
+
 def test_clockwise_inputs_are_reversed(cm, tmp_path):
     a, b = star(10, seed=3, clockwise=True), star(10, seed=4, clockwise=True)
     write_xy(tmp_path / "a.xy", a)

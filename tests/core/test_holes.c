@@ -292,6 +292,12 @@ static void test_bad_input(void)
     b.xy[2 * 10] = b.xy[2 * 2], b.xy[2 * 10 + 1] = b.xy[2 * 2 + 1];
     expect_bad("repeated", &a, &b, CM_ERR_REPEATED_VERTEX,
                "polygon 1: hole 1 (loop 1): vertex 2 repeats vertex 2 of the outer loop", 1, 10);
+    b = a; /* the hole's last vertex closing it as a ring */
+    b.xy[2 * 11] = b.xy[2 * 8], b.xy[2 * 11 + 1] = b.xy[2 * 8 + 1];
+    expect_bad("closed ring", &a, &b, CM_ERR_REPEATED_VERTEX,
+               "polygon 1: hole 1 (loop 1): vertex 3 repeats vertex 0 of hole 1 (loop 1) (-0.40000000000000002, "
+               "-0.40000000000000002) (a closed ring",
+               1, 11);
     b = a; /* hole vertex 2 pushed through the outer loop's right side */
     b.xy[2 * 10] = 1.5;
     expect_bad("hole crosses outer", &a, &b, CM_ERR_SELF_INTERSECTION,

@@ -53,6 +53,10 @@ static void test_coordinates(void)
     const double *q[] = {rep, square};
     expect("repeated vertex", q, (size_t[]){4, 4}, 2, CM_ERR_REPEATED_VERTEX,
            "polygon 0: vertex 3 repeats vertex 1", 0, 3);
+    double ring[] = {0, 0, 1, 0, 1, 1, 0, 1, 0, 0}; /* closed as GIS formats write rings */
+    const double *rings[] = {ring, ring};
+    expect("closed ring", rings, (size_t[]){5, 5}, 2, CM_ERR_REPEATED_VERTEX,
+           "polygon 0: vertex 4 repeats vertex 0 (0, 0) (a closed ring: give each vertex once", 0, 4);
 }
 
 static void test_shapes(void)

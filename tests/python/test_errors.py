@@ -43,6 +43,16 @@ def test_repeated_vertex(octagon):
     assert info.value.status == "repeated vertex" and info.value.polygon == 1
 
 
+def test_closed_ring_named(octagon):
+    """A closing repeat (shapely's exterior.coords) is refused by name."""
+    ring = np.vstack([octagon, octagon[:1]])
+    with pytest.raises(ValueError) as info:
+        compatmesh.triangulate([ring, ring])
+    assert info.value.status == "repeated vertex"
+    assert (info.value.polygon, info.value.vertex) == (0, 8)
+    assert "a closed ring: give each vertex once" in str(info.value)
+
+
 def test_not_finite(octagon):
     bad = octagon.copy()
     bad[2, 1] = np.nan

@@ -48,6 +48,14 @@ static int first_repeated_vertex(const double *xy, long n, long *first, long *se
     return found;
 }
 
+/* What a repeat of vertex a by vertex b (a < b) of one loop of n
+ * vertices adds to its message: the closing repeat of a ring, as GIS
+ * formats write polygons, is named as such. */
+static const char *ring_hint(long a, long b, long n)
+{
+    return a == 0 && b == n - 1 ? " (a closed ring: give each vertex once, without the closing repeat)" : "";
+}
+
 static int all_collinear(const double *xy, long n)
 {
     for (long i = 2; i < n; i++)
@@ -73,8 +81,8 @@ static cm_status check_one_polygon(const double *xy, long n, long g, cm_error *e
         free(sorted);
         cm_fail_at(err, g, b, a);
         return cm_fail(err, CM_ERR_REPEATED_VERTEX,
-                       "polygon %ld: vertex %ld repeats vertex %ld (%.17g, %.17g)",
-                       g, b, a, xy[2 * a], xy[2 * a + 1]);
+                       "polygon %ld: vertex %ld repeats vertex %ld (%.17g, %.17g)%s",
+                       g, b, a, xy[2 * a], xy[2 * a + 1], ring_hint(a, b, n));
     }
     /* All vertices on one line: say so, rather than report the overlap. */
     if (all_collinear(xy, n)) {
@@ -239,9 +247,10 @@ static cm_status check_one_loops(const double *xy, const size_t *start, size_t n
     if (rep) {
         size_t la = loop_of(start, num_loops, a, &wa), lb = loop_of(start, num_loops, b, &wb);
         cm_fail_at(err, g, b, a);
-        return cm_fail(err, CM_ERR_REPEATED_VERTEX, "polygon %ld: %s: vertex %ld repeats vertex %ld of %s (%.17g, %.17g)",
+        long size = (long)(start[lb + 1] - start[lb]);
+        return cm_fail(err, CM_ERR_REPEATED_VERTEX, "polygon %ld: %s: vertex %ld repeats vertex %ld of %s (%.17g, %.17g)%s",
                        g, loop_name(name, sizeof name, lb), wb, wa, loop_name(other, sizeof other, la),
-                       xy[2 * a], xy[2 * a + 1]);
+                       xy[2 * a], xy[2 * a + 1], la == lb ? ring_hint(wa, wb, size) : "");
     }
     for (size_t l = 0; l < num_loops; l++)
         if (all_collinear(xy + 2 * start[l], (long)(start[l + 1] - start[l]))) {
