@@ -5,7 +5,7 @@ JOBS ?= $(shell nproc)
 
 # Debian packages the build, the tests, the demo and the bench need.
 DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev liblbfgs-dev libfreetype-dev \
-  fonts-dejavu-core fonts-urw-base35 fonts-freefont-ttf fonts-liberation fonts-noto-core python3 python3-numpy python3-pytest python3-meshio \
+  fonts-dejavu-core fonts-urw-base35 fonts-freefont-ttf fonts-liberation fonts-noto-core python3 python3-numpy python3-pytest python3-meshio python3-shapely \
   libopenmesh-dev libeigen3-dev pybind11-dev python3-dev \
   meshlab dpkg-dev qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev \
   libglew-dev xvfb xauth \

@@ -105,8 +105,45 @@ Polygon read_loops(py::handle object, std::size_t index)
   return polygon;
 }
 
+// The GeoJSON geometry (RFC 7946) an object stands for: its
+// __geo_interface__ (shapely, geopandas, fiona, pyshp give one), a mapping
+// with "type" itself, or None where it is neither.
+py::object geo_geometry(py::handle object)
+{
+  if (py::hasattr(object, "__geo_interface__")) return object.attr("__geo_interface__");
+  if (py::isinstance<py::dict>(object) && object.contains("type")) return py::reinterpret_borrow<py::object>(object);
+  return py::none();
+}
+
+// A GeoJSON Polygon's rings as the loops of a polygon (one ring: an n x 2 or
+// n x 3 array; several: a list of n_j x 2 arrays, the exterior first). Its
+// rings are closed (the last position repeats the first): the repeat is
+// left out. A Feature gives its geometry; any other type is an error.
+py::object geo_loops(py::object geometry, std::size_t index)
+{
+  std::string name = "polygon " + std::to_string(index);
+  std::string type = py::str(geometry["type"]);
+  if (type == "Feature") return geo_loops(geometry["geometry"], index);
+  if (type != "Polygon")
+    throw py::value_error(name + ": a GeoJSON " + type + "; expected a Polygon" +
+                          (type == "MultiPolygon" ? " (give a MultiPolygon's parts one by one)" : ""));
+  py::list loops;
+  std::size_t l = 0;
+  for (py::handle ring : geometry["coordinates"]) {
+    FloatArray a = real_array(ring, name + ", ring " + std::to_string(l++));
+    py::ssize_t n = a.ndim() == 2 ? a.shape(0) : 0, columns = a.ndim() == 2 ? a.shape(1) : 0;
+    bool closed = n > 1;
+    for (py::ssize_t c = 0; closed && c < columns; c++) closed = *a.data(0, c) == *a.data(n - 1, c);
+    loops.append(closed ? py::object(a[py::slice(0, n - 1, 1)]) : py::object(a));
+  }
+  if (loops.empty()) throw py::value_error(name + ": an empty GeoJSON Polygon");
+  return loops.size() == 1 ? py::object(loops[0]) : py::object(loops);
+}
+
 Polygon read_polygon(py::handle object, std::size_t index, double tolerance)
 {
+  py::object geometry = geo_geometry(object);
+  if (!geometry.is_none()) return read_polygon(geo_loops(geometry, index), index, tolerance);
   if (is_loop_list(object)) return read_loops(object, index);
   std::string name = "polygon " + std::to_string(index);
   FloatArray a = real_array(object, name);
@@ -1169,7 +1206,9 @@ polygons: a sequence of k arrays, each n x 2, or n x 3 for a polygon in any
     loop first, then the holes; every polygon then has the same number of
     loops of the same sizes (loop j corresponds to loop j, vertex by index),
     and the result's vertices are the loops' vertices in that order, then
-    the Steiner vertices.
+    the Steiner vertices. A polygon may also be a GeoJSON Polygon (a dict,
+    or any object with __geo_interface__: shapely, geopandas, fiona): its
+    exterior ring, then its holes, each ring without its closing repeat.
 options: keyword arguments named like the fields of the C struct cm_options,
     defaults from cm_options_init (see compatmesh.h for their meaning):
     method          compatmesh.Method, its int value, or "overlay" / "partition"
