@@ -1,5 +1,6 @@
 #include "edge_loop.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,6 +10,35 @@ static void where(char *out, size_t size, const char *path, long at, int by_inde
 {
     if (by_index) snprintf(out, size, "%s: edge %ld", path, at);
     else snprintf(out, size, "%s:%ld", path, at);
+}
+
+/* Does a vertex (x, y, z) of a polyline file lie in the plane z = z0 of the
+ * first? Up to the rounding of coordinates computed and written in single
+ * precision (MeshLab's sections differ in the last float digits): within
+ * 16 float epsilons of the largest of |x|, |y|, |z| and |z0|. The polygon
+ * is meshed in x and y; z is only checked. */
+static int in_plane_z(double x, double y, double z, double z0)
+{
+    double scale = fmax(fmax(fabs(x), fabs(y)), fmax(fabs(z), fabs(z0)));
+    return fabs(z - z0) <= 16 * FLT_EPSILON * scale;
+}
+
+int plane_z_take(plane_z *plane, double x, double y, double z, int given, const char *path, long where,
+                 cli_error *error)
+{
+    plane->given |= given;
+    if (!plane->started) {
+        plane->z = z, plane->where = where, plane->started = 1;
+        return CLI_EXIT_OK;
+    }
+    if (in_plane_z(x, y, z, plane->z)) return CLI_EXIT_OK;
+    if (plane->by_index)
+        cli_error_set(error, "%s: vertex %ld: z = %.17g differs from z = %.17g of vertex %ld; "
+                      "the polygon must lie in a plane z = constant", path, where, z, plane->z, plane->where);
+    else
+        cli_error_set(error, "%s:%ld: z = %.17g differs from z = %.17g on line %ld; "
+                      "the polygon must lie in a plane z = constant", path, where, z, plane->z, plane->where);
+    return CLI_EXIT_USAGE;
 }
 
 /* Twice the signed area of the loop of m vertices. */

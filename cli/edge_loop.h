@@ -1,24 +1,43 @@
-/* The loops of a polygon from the edges of a polyline file (OBJ `l`
- * elements, PLY edge elements): the edges, in any order and either
- * direction, must form closed loops (the outer boundary and its holes). */
+/* What the polygon readers share: the loops of a polygon from the edges
+ * of a polyline file (OBJ `l` elements, PLY edge elements: in any order
+ * and either direction, they must form closed loops, the outer boundary
+ * and its holes), the plane check of every vertex's z and the closing
+ * repeat of a ring. */
 #ifndef CM_CLI_EDGE_LOOP_H
 #define CM_CLI_EDGE_LOOP_H
 
-#include <float.h>
-#include <math.h>
 #include <stddef.h>
 
 #include "cli_common.h"
 
-/* Does a vertex (x, y, z) of a polyline file lie in the plane z = z0 of the
- * first? Up to the rounding of coordinates computed and written in single
- * precision (MeshLab's sections differ in the last float digits): within
- * 16 float epsilons of the largest of |x|, |y|, |z| and |z0|. The polygon
- * is meshed in x and y; z is only checked. */
-static inline int in_plane_z(double x, double y, double z, double z0)
+/* The plane z = constant of a file's vertices: the first vertex's z (0
+ * where none is given), every later one checked against it up to the
+ * rounding of single precision (MeshLab's sections differ in the last
+ * float digits).
+ * by_index: vertices are named by their index (binary files, GeoJSON),
+ * else by their line. */
+typedef struct plane_z {
+    double z;
+    long where;  /* the first vertex's line or index */
+    int started; /* a vertex was taken */
+    int given;   /* some vertex gave z */
+    int by_index;
+} plane_z;
+
+/* Takes vertex (x, y, z), read at `where` (given: the file wrote its z),
+ * into the plane, or says where it leaves it ("PATH:LINE: z = ... differs
+ * from z = ... on line L; ...", or "PATH: vertex I: ... of vertex J; ...").
+ * Returns CLI_EXIT_OK or CLI_EXIT_USAGE. */
+int plane_z_take(plane_z *plane, double x, double y, double z, int given, const char *path, long where,
+                 cli_error *error);
+
+/* A ring's vertex count without its closing repeat: size - 1 where the
+ * last of its size vertices (x y pairs) repeats the first exactly, as GMT,
+ * WKT, shapefiles and GeoJSON close rings; a ring of three or fewer keeps
+ * them all, for the messages on too few vertices. */
+static inline size_t ring_size_without_repeat(const double *xy, size_t size)
 {
-    double scale = fmax(fmax(fabs(x), fabs(y)), fmax(fabs(z), fabs(z0)));
-    return fabs(z - z0) <= 16 * FLT_EPSILON * scale;
+    return size >= 4 && xy[0] == xy[2 * size - 2] && xy[1] == xy[2 * size - 1] ? size - 1 : size;
 }
 
 /* An edge between vertices a and b (0-based), read at `where`: a line

@@ -254,6 +254,7 @@ int parse_ply(const char *path, const char *data, size_t length, polygon_input *
         return CLI_EXIT_INTERNAL;
     }
     const int binary = r.format != 0;
+    plane_z plane = {.by_index = binary};
     for (int k = 0; k < num_elements && code == CLI_EXIT_OK; k++) {
         const ply_element *e = &elements[k];
         for (long i = 0; i < e->count && e->num_properties > 0 && code == CLI_EXIT_OK; i++) {
@@ -286,16 +287,8 @@ int parse_ply(const char *path, const char *data, size_t length, polygon_input *
                 }
                 xyz[3 * i] = value[ix], xyz[3 * i + 1] = value[iy], xyz[3 * i + 2] = iz >= 0 ? value[iz] : 0;
                 line[i] = binary ? i : where;
-                if (!in_plane_z(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], xyz[2])) {
-                    if (binary)
-                        cli_error_set(error, "%s: vertex %ld: z = %.17g differs from z = %.17g of vertex 0; "
-                                      "the polygon must lie in a plane z = constant", path, i, xyz[3 * i + 2], xyz[2]);
-                    else
-                        cli_error_set(error, "%s:%ld: z = %.17g differs from z = %.17g on line %ld; "
-                                      "the polygon must lie in a plane z = constant", path, where, xyz[3 * i + 2],
-                                      xyz[2], line[0]);
-                    code = CLI_EXIT_USAGE;
-                }
+                code = plane_z_take(&plane, xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], iz >= 0, path, line[i],
+                                    error);
             } else if (e == edge) {
                 for (int end = 0; end < 2 && code == CLI_EXIT_OK; end++) {
                     double v = value[end ? ib : ia];
@@ -335,8 +328,8 @@ int parse_ply(const char *path, const char *data, size_t length, polygon_input *
             polygon->loop_sizes = sizes;
             sizes = NULL;
             polygon->by_index = binary;
-            polygon->has_z = iz >= 0;
-            polygon->z = iz >= 0 ? xyz[2] : 0;
+            polygon->has_z = plane.given;
+            polygon->z = plane.z;
         }
     }
     free(xyz), free(line), free(edges), free(loop), free(sizes);

@@ -182,31 +182,6 @@ static int parse_coordinate(const char *field, double *value, const char *path,
     return 0;
 }
 
-/* The plane z = constant of a text file's vertices: the first vertex's z
- * (0 where a line gives none), checked on every later one. */
-typedef struct plane_z {
-    double z;
-    long line;  /* of the first vertex; 0 before it */
-    int given;  /* some line gave z */
-} plane_z;
-
-/* Takes vertex (x, y, z) of line `number` (given: the line wrote z) into
- * the plane, or says which line leaves it. */
-static int plane_z_take(plane_z *plane, double x, double y, double z, int given, const char *path, long number,
-                        cli_error *error)
-{
-    plane->given |= given;
-    if (plane->line == 0) {
-        plane->z = z, plane->line = number;
-        return CLI_EXIT_OK;
-    }
-    if (in_plane_z(x, y, z, plane->z)) return CLI_EXIT_OK;
-    cli_error_set(error,
-                  "%s:%ld: z = %.17g differs from z = %.17g on line %ld; the polygon must lie in a plane z = constant",
-                  path, number, z, plane->z, plane->line);
-    return CLI_EXIT_USAGE;
-}
-
 /* Calls visit(line_text, line_number, state) for every line of text, which
  * it modifies in place. Stops at the first non-zero return and returns it. */
 static int for_each_line(char *text, int (*visit)(char *, long, void *),
@@ -263,11 +238,9 @@ typedef struct xy_state {
 static size_t xy_drop_ring_repeat(xy_state *state)
 {
     size_t size = state->vertices.count - state->loop_first;
-    if (size < 4) return size;
-    const double *first = state->vertices.xy + 2 * state->loop_first;
-    const double *last = state->vertices.xy + 2 * (state->vertices.count - 1);
-    if (first[0] == last[0] && first[1] == last[1]) state->vertices.count--, size--;
-    return size;
+    size_t kept = ring_size_without_repeat(state->vertices.xy + 2 * state->loop_first, size);
+    state->vertices.count -= size - kept;
+    return kept;
 }
 
 /* Ends the loop being read (none yet: nothing to do). */
