@@ -3,6 +3,7 @@
 #include "read_polygon.h"
 
 #include "edge_loop.h"
+#include "read_geojson.h"
 #include "read_ply.h"
 
 #include <ctype.h>
@@ -238,6 +239,7 @@ typedef struct xy_state {
 static size_t xy_drop_ring_repeat(xy_state *state)
 {
     size_t size = state->vertices.count - state->loop_first;
+    if (size == 0) return 0; /* no vertices yet: xy may be NULL */
     size_t kept = ring_size_without_repeat(state->vertices.xy + 2 * state->loop_first, size);
     state->vertices.count -= size - kept;
     return kept;
@@ -525,6 +527,8 @@ int parse_polygon_text(const char *path, char *text, size_t length,
         code = CLI_EXIT_USAGE;
     } else if (has_extension(path, ".obj")) {
         code = parse_obj(path, text, polygon, error);
+    } else if (has_extension(path, ".geojson") || has_extension(path, ".json")) {
+        code = parse_geojson(path, text, length, polygon, error);
     } else {
         code = parse_xy(path, text, polygon, error);
     }

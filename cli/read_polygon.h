@@ -27,13 +27,15 @@ typedef struct polygon_input {
  * an OBJ polyline ("v x y [z]" lines and "l" lines whose edges form
  * closed loops, z constant); ".ply" as a PLY edge mesh (read_ply.h); with
  * several loops the outer one is the one of largest area, the holes follow
- * in file order, each loop in the order of its first edge. Anything else
+ * in file order, each loop in the order of its first edge; ".geojson" and
+ * ".json" as one GeoJSON Polygon (read_geojson.h). Anything else
  * as ".xy" text (one "x y" or "x y z" vertex per line, z constant as for
  * OBJ, blanks and/or one comma between
  * the numbers, '#' to end of line is a comment, blank lines ignored; a
  * line beginning with '>' ends a loop, GMT's multi-segment convention: the
  * outer loop first, then the holes; a loop's last vertex that repeats its
- * first exactly, closing the ring, is dropped).
+ * first exactly, closing the ring, is dropped; a first line of words only
+ * is a header, skipped).
  * A file longer than max_bytes is refused after reading max_bytes + 1
  * bytes (so /dev/zero is refused too), with a message naming the limit.
  * Returns CLI_EXIT_OK on success. Otherwise leaves *polygon empty, sets
