@@ -862,7 +862,9 @@ py::object morph_to_meshio(const Morph &m, py::object frame)
 
 // The prisms (meshio's wedge is VTK's: the bottom clockwise seen from the
 // top, so a, c, b then d, f, e) or the tetrahedra.
-py::object sweep_to_meshio(const Sweep &s, py::object cells)
+// The sweep as a meshio.Mesh; its wedges in VTK's corner order, or with
+// gmsh_order in Gmsh's (the prisms as they are), for the writers that want it.
+py::object sweep_mesh(const Sweep &s, py::object cells, bool gmsh_order)
 {
   bool has_tets = s.cells.contains("tetra");
   std::string kind = cells.is_none() ? (has_tets ? "tetra" : "wedge") : py::str(cells).cast<std::string>();
@@ -873,6 +875,7 @@ py::object sweep_to_meshio(const Sweep &s, py::object cells)
     return meshio_mesh(s.fields["nodes"], "tetra", s.fields["tets"], "to_meshio");
   }
   if (kind != "wedge") throw py::value_error("to_meshio: unknown cells '" + kind + "' (known: 'wedge', 'tetra')");
+  if (gmsh_order) return meshio_mesh(s.fields["nodes"], "wedge", s.fields["prisms"], "write");
   auto gmsh = py::array_t<int32_t>::ensure(s.fields["prisms"]);
   py::ssize_t p = gmsh.shape(0);
   py::array_t<int32_t> vtk({p, py::ssize_t(6)});
@@ -884,9 +887,42 @@ py::object sweep_to_meshio(const Sweep &s, py::object cells)
 
 // write(path, which, file_format): one mesh through meshio.write, the format
 // from the file's extension unless given.
-void write_mesh(py::object mesh, py::object path, py::object file_format)
+py::object sweep_to_meshio(const Sweep &s, py::object cells) { return sweep_mesh(s, cells, false); }
+
+// The meshio format write() uses: file_format, else the one the path's
+// extension names (None where meshio is left to tell); ".msh" is Gmsh's
+// (meshio's first guess for it is ANSYS Fluent's, which Gmsh and the
+// solvers reading Gmsh's files do not read).
+py::object write_format(py::object path, py::object file_format)
 {
-  import_meshio("write").attr("write")(path, mesh, py::arg("file_format") = file_format);
+  if (!file_format.is_none()) return file_format;
+  std::string suffix = py::str(py::module_::import("pathlib").attr("Path")(path).attr("suffix").attr("lower")());
+  if (suffix == ".msh") return py::str("gmsh");
+  py::object types = import_meshio("write").attr("extension_to_filetypes").attr("get")(suffix);
+  return !types.is_none() && py::len(types) == 1 ? py::object(types[py::int_(0)]) : file_format;
+}
+
+// Does the format's 6-node wedge have Gmsh's corner order (the first
+// triangle counter-clockwise seen from the second)? Gmsh's, Abaqus's and
+// Nastran's do, VTK's is the mirror image, and meshio 5's writers pass the
+// corners through as given.
+bool gmsh_wedge_order(py::object format)
+{
+  if (format.is_none()) return false;
+  std::string f = py::str(format);
+  return f == "gmsh" || f == "gmsh22" || f == "abaqus" || f == "nastran";
+}
+
+// meshio.write in the format write_format chose; Gmsh's files as text, as
+// Gmsh itself writes them.
+void write_mesh(py::object mesh, py::object path, py::object format)
+{
+  py::object write = import_meshio("write").attr("write");
+  std::string f = format.is_none() ? "" : std::string(py::str(format));
+  if (f == "gmsh" || f == "gmsh22")
+    write(path, mesh, py::arg("file_format") = format, py::arg("binary") = false);
+  else
+    write(path, mesh, py::arg("file_format") = format);
 }
 
 
@@ -1082,13 +1118,15 @@ without geometry, a list of the k meshes. Needs meshio.)doc")
       .def(
           "write",
           [](const Result &r, py::object path, py::object geometry, py::object file_format) {
-            write_mesh(result_to_meshio(r, the_one(geometry, py::len(r.vertices), "geometry")), path, file_format);
+            write_mesh(result_to_meshio(r, the_one(geometry, py::len(r.vertices), "geometry")), path,
+                       write_format(path, file_format));
           },
           py::arg("path"), py::arg("geometry") = py::none(), py::arg("file_format") = py::none(),
           R"doc(write(path, geometry, file_format=None)
 
 Writes to_meshio(geometry) with meshio.write: the format from the path's
-extension unless file_format names one of meshio's.)doc")
+extension unless file_format names one of meshio's; .msh is Gmsh's (text,
+format 4.1).)doc")
       .def("__repr__", [](const Result &r) {
         return "<compatmesh.Result: " + py::str(r.stats["k"]).cast<std::string>() + " geometries, " +
                py::str(r.stats["vertices"]).cast<std::string>() + " vertices, " +
@@ -1121,13 +1159,15 @@ list of the F meshes. Needs meshio.)doc")
           "write",
           [](const Morph &mo, py::object path, py::object frame, py::object file_format) {
             py::ssize_t frames = py::array::ensure(mo.fields["sections"]).shape(0);
-            write_mesh(morph_to_meshio(mo, the_one(frame, (size_t)frames, "frame")), path, file_format);
+            write_mesh(morph_to_meshio(mo, the_one(frame, (size_t)frames, "frame")), path,
+                       write_format(path, file_format));
           },
           py::arg("path"), py::arg("frame") = py::none(), py::arg("file_format") = py::none(),
           R"doc(write(path, frame, file_format=None)
 
 Writes to_meshio(frame) with meshio.write: the format from the path's
-extension unless file_format names one of meshio's.)doc")
+extension unless file_format names one of meshio's; .msh is Gmsh's (text,
+format 4.1).)doc")
       .def("__repr__", [](const Morph &mo) {
         py::array sections = py::array::ensure(mo.fields["sections"]);
         return "<compatmesh.Morph: " + std::to_string(sections.shape(0)) + " frames, " +
@@ -1167,13 +1207,16 @@ of Gmsh's a, b, c, d, e, f. Needs meshio.)doc")
       .def(
           "write",
           [](const Sweep &sw, py::object path, py::object cells, py::object file_format) {
-            write_mesh(sweep_to_meshio(sw, cells), path, file_format);
+            py::object format = write_format(path, file_format);
+            write_mesh(sweep_mesh(sw, cells, gmsh_wedge_order(format)), path, format);
           },
           py::arg("path"), py::arg("cells") = py::none(), py::arg("file_format") = py::none(),
           R"doc(write(path, cells=None, file_format=None)
 
 Writes to_meshio(cells) with meshio.write: the format from the path's
-extension unless file_format names one of meshio's.)doc")
+extension unless file_format names one of meshio's; .msh is Gmsh's (text,
+format 4.1). Gmsh's, Abaqus's (.inp) and Nastran's formats get the prisms
+in their own corner order (Gmsh's), the others VTK's.)doc")
       .def("__repr__", [](const Sweep &sw) {
         return "<compatmesh.Sweep: " + std::to_string(py::len(sw.fields["nodes"])) + " nodes, " +
                std::to_string(py::len(sw.fields["prisms"])) + " prisms, " +

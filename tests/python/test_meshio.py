@@ -189,3 +189,53 @@ def test_read_polygon_needs_lines(tmp_path):
     meshio.write(path, meshio.Mesh(ring(3), [("triangle", np.array([[0, 1, 2]]))]))
     with pytest.raises(ValueError, match="no line cells"):
         compatmesh.read_polygon(path)
+
+
+def gmsh_jacobians(path, element_type, corners):
+    """The Jacobian determinants at the corners of every element of the type
+    in the file, as Gmsh's own reader and element code give them."""
+    import gmsh
+    gmsh.initialize(["-noenv"])
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.open(str(path))
+        types = list(gmsh.model.mesh.getElements()[0])
+        return types, np.asarray(gmsh.model.mesh.getJacobians(element_type, corners)[1])
+    finally:
+        gmsh.finalize()
+
+
+PRISM_CORNERS = [0, 0, -1, 1, 0, -1, 0, 1, -1, 0, 0, 1, 1, 0, 1, 0, 1, 1]
+TET_CORNERS = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]
+
+
+def test_msh_is_gmsh_that_gmsh_reads(outputs, tmp_path):
+    """.msh is Gmsh's text format (meshio's first guess for it, ANSYS
+    Fluent's, Gmsh does not read), every prism and tetrahedron positive as
+    Gmsh computes it (meshio passes wedge corners through unchanged, and
+    VTK's wedge is the mirror image of Gmsh's)."""
+    s, t = outputs["sweep"], outputs["sweep_tets"]
+    s.write(tmp_path / "prisms.msh")
+    t.write(tmp_path / "tets.MSH", cells="tetra")
+    outputs["triangulate"].write(tmp_path / "g0.msh", 0)
+    for name in ("prisms.msh", "tets.MSH", "g0.msh"):
+        assert (tmp_path / name).read_text().startswith("$MeshFormat\n4.1 0 8\n"), name
+    types, det = gmsh_jacobians(tmp_path / "prisms.msh", 6, PRISM_CORNERS)
+    assert 6 in types and det.size == 6 * len(s.prisms) and det.min() > 0
+    types, det = gmsh_jacobians(tmp_path / "tets.MSH", 4, TET_CORNERS)
+    assert 4 in types and det.size == 4 * len(t.tets) and det.min() > 0
+    assert np.array_equal(meshio.read(tmp_path / "g0.msh").cells_dict["triangle"], outputs["triangulate"].faces)
+
+
+def test_solver_formats_get_gmsh_wedge_order(outputs, tmp_path):
+    """Abaqus (.inp) and Nastran wedges are Gmsh's corner order (the first
+    triangle counter-clockwise seen from the second), VTK's its mirror."""
+    s = outputs["sweep"]
+    s.write(tmp_path / "v.inp")
+    s.write(tmp_path / "v.vtu")
+    inp, vtu = meshio.read(tmp_path / "v.inp"), meshio.read(tmp_path / "v.vtu")
+    assert np.array_equal(inp.cells_dict["wedge"], s.prisms)
+    assert np.array_equal(vtu.cells_dict["wedge"], s.prisms[:, [0, 2, 1, 3, 5, 4]])
+    p = inp.points[inp.cells_dict["wedge"]]
+    assert np.all(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])[:, 2] > 0)
+    assert np.all(p[:, 3:, 2] > p[:, :3, 2])
