@@ -914,15 +914,49 @@ bool gmsh_wedge_order(py::object format)
 }
 
 // meshio.write in the format write_format chose; Gmsh's files as text, as
-// Gmsh itself writes them.
+// Gmsh itself writes them. The file is written beside the path under a
+// temporary name and renamed onto it, so that a write that fails leaves
+// no partial file and an existing one as it was (XDMF, whose heavy data
+// file is named after it, is written in place).
 void write_mesh(py::object mesh, py::object path, py::object format)
 {
   py::object write = import_meshio("write").attr("write");
+  py::module_ os = py::module_::import("os");
   std::string f = format.is_none() ? "" : std::string(py::str(format));
-  if (f == "gmsh" || f == "gmsh22")
-    write(path, mesh, py::arg("file_format") = format, py::arg("binary") = false);
-  else
-    write(path, mesh, py::arg("file_format") = format);
+  py::object target = py::module_::import("pathlib").attr("Path")(path);
+  std::string suffix = py::str(target.attr("suffix").attr("lower")());
+  bool in_place = f == "xdmf" || suffix == ".xdmf" || suffix == ".xmf";
+  py::object written = target;
+  if (!in_place) {
+    py::tuple made = py::module_::import("tempfile")
+                         .attr("mkstemp")(py::arg("dir") = target.attr("parent"), py::arg("prefix") = ".",
+                                          py::arg("suffix") = ".compatmesh-" + std::string(py::str(target.attr("name"))));
+    os.attr("close")(made[0]);
+    written = made[1];
+  }
+  try {
+    if (f == "gmsh" || f == "gmsh22")
+      write(written, mesh, py::arg("file_format") = format, py::arg("binary") = false);
+    else
+      write(written, mesh, py::arg("file_format") = format);
+    if (!in_place) {
+      py::object mask = os.attr("umask")(0);  // read, then put back: the mode a new file would get
+      os.attr("umask")(mask);
+      os.attr("chmod")(written, 0666 & ~mask.cast<int>());
+      os.attr("replace")(written, target);
+    }
+  } catch (...) {
+    if (!in_place && py::bool_(os.attr("path").attr("exists")(written))) os.attr("remove")(written);
+    try {
+      throw;
+    } catch (py::error_already_set &e) {
+      // meshio 5.0's Nastran writer asserts where a double needs more
+      // than its 16-character field
+      if (f != "nastran" || !e.matches(PyExc_AssertionError)) throw;
+      throw std::runtime_error("write: meshio's Nastran writer cannot fit these coordinates in its 16-character "
+                               "fields; `compatmesh sweep ... --out FILE.bdf` writes Nastran through Gmsh");
+    }
+  }
 }
 
 

@@ -1,6 +1,8 @@
 """triangulate, morph and sweep return one kind of object (compatmesh.Output):
 common attributes, to_meshio() and write() through meshio, docstrings with
 shapes. Each mesh written by meshio reads back bit-identical."""
+import os
+
 import meshio
 import numpy as np
 import pytest
@@ -225,6 +227,12 @@ def test_msh_is_gmsh_that_gmsh_reads(outputs, tmp_path):
     types, det = gmsh_jacobians(tmp_path / "tets.MSH", 4, TET_CORNERS)
     assert 4 in types and det.size == 4 * len(t.tets) and det.min() > 0
     assert np.array_equal(meshio.read(tmp_path / "g0.msh").cells_dict["triangle"], outputs["triangulate"].faces)
+    # written under a temporary name and renamed: nothing else is left, and
+    # the file has the mode a new file gets
+    assert sorted(os.listdir(tmp_path)) == ["g0.msh", "prisms.msh", "tets.MSH"]
+    umask = os.umask(0)
+    os.umask(umask)
+    assert os.stat(tmp_path / "g0.msh").st_mode & 0o777 == 0o666 & ~umask
 
 
 def test_solver_formats_get_gmsh_wedge_order(outputs, tmp_path):
@@ -239,3 +247,17 @@ def test_solver_formats_get_gmsh_wedge_order(outputs, tmp_path):
     p = inp.points[inp.cells_dict["wedge"]]
     assert np.all(np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])[:, 2] > 0)
     assert np.all(p[:, 3:, 2] > p[:, :3, 2])
+
+
+def test_nastran_failure_is_explained(outputs, tmp_path):
+    """meshio 5.0's Nastran writer asserts on full-precision coordinates:
+    the error says so and where Nastran files come from instead, and the
+    file that was there is left as it was, with nothing beside it."""
+    (tmp_path / "v.bdf").write_text("mine")
+    try:
+        outputs["sweep"].write(tmp_path / "v.bdf")
+    except RuntimeError as e:
+        assert "Nastran writer cannot fit" in str(e) and "compatmesh sweep" in str(e)
+        assert (tmp_path / "v.bdf").read_text() == "mine" and os.listdir(tmp_path) == ["v.bdf"]
+    else:  # a meshio that writes them: the prisms then in Gmsh's order
+        assert np.array_equal(meshio.read(tmp_path / "v.bdf").cells_dict["wedge"], outputs["sweep"].prisms)
