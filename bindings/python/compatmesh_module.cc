@@ -889,11 +889,12 @@ py::object sweep_mesh(const Sweep &s, py::object cells, bool gmsh_order)
 // from the file's extension unless given.
 py::object sweep_to_meshio(const Sweep &s, py::object cells) { return sweep_mesh(s, cells, false); }
 
-// The meshio format write() uses: file_format, else the one the path's
-// extension names (None where meshio is left to tell); ".msh" is Gmsh's
-// (meshio's first guess for it is ANSYS Fluent's, which Gmsh and the
-// solvers reading Gmsh's files do not read).
-py::object write_format(py::object path, py::object file_format)
+// The meshio format read_polygon() and write() use: file_format, else the
+// one the path's extension names (None where meshio is left to tell);
+// ".msh" is Gmsh's (meshio's first guess for it is ANSYS Fluent's, which
+// Gmsh and the solvers reading Gmsh's files do not read, and its reader
+// prints a blank line where that guess fails).
+py::object meshio_format(py::object path, py::object file_format)
 {
   if (!file_format.is_none()) return file_format;
   std::string suffix = py::str(py::module_::import("pathlib").attr("Path")(path).attr("suffix").attr("lower")());
@@ -913,7 +914,7 @@ bool gmsh_wedge_order(py::object format)
   return f == "gmsh" || f == "gmsh22" || f == "abaqus" || f == "nastran";
 }
 
-// meshio.write in the format write_format chose; Gmsh's files as text, as
+// meshio.write in the format meshio_format chose; Gmsh's files as text, as
 // Gmsh itself writes them. The file is written beside the path under a
 // temporary name and renamed onto it, so that a write that fails leaves
 // no partial file and an existing one as it was (XDMF, whose heavy data
@@ -976,7 +977,8 @@ py::object the_one(py::object which, size_t count, const char *what)
 // area is the outer loop, the others holes in file order.
 py::object read_polygon_file(py::object path, py::object file_format)
 {
-  py::object mesh = import_meshio("read_polygon").attr("read")(path, py::arg("file_format") = file_format);
+  py::object mesh =
+      import_meshio("read_polygon").attr("read")(path, py::arg("file_format") = meshio_format(path, file_format));
   std::string where = "read_polygon: " + py::str(path).cast<std::string>() + ": ";
   FloatArray points = real_array(mesh.attr("points"), where + "points");
   if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3))
@@ -1153,7 +1155,7 @@ without geometry, a list of the k meshes. Needs meshio.)doc")
           "write",
           [](const Result &r, py::object path, py::object geometry, py::object file_format) {
             write_mesh(result_to_meshio(r, the_one(geometry, py::len(r.vertices), "geometry")), path,
-                       write_format(path, file_format));
+                       meshio_format(path, file_format));
           },
           py::arg("path"), py::arg("geometry") = py::none(), py::arg("file_format") = py::none(),
           R"doc(write(path, geometry, file_format=None)
@@ -1194,7 +1196,7 @@ list of the F meshes. Needs meshio.)doc")
           [](const Morph &mo, py::object path, py::object frame, py::object file_format) {
             py::ssize_t frames = py::array::ensure(mo.fields["sections"]).shape(0);
             write_mesh(morph_to_meshio(mo, the_one(frame, (size_t)frames, "frame")), path,
-                       write_format(path, file_format));
+                       meshio_format(path, file_format));
           },
           py::arg("path"), py::arg("frame") = py::none(), py::arg("file_format") = py::none(),
           R"doc(write(path, frame, file_format=None)
@@ -1241,7 +1243,7 @@ of Gmsh's a, b, c, d, e, f. Needs meshio.)doc")
       .def(
           "write",
           [](const Sweep &sw, py::object path, py::object cells, py::object file_format) {
-            py::object format = write_format(path, file_format);
+            py::object format = meshio_format(path, file_format);
             write_mesh(sweep_mesh(sw, cells, gmsh_wedge_order(format)), path, format);
           },
           py::arg("path"), py::arg("cells") = py::none(), py::arg("file_format") = py::none(),

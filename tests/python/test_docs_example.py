@@ -14,6 +14,22 @@ def test_readme_example_runs():
     assert all("smallest angle" in line for line in lines[1:])
 
 
+def test_cad_sections_example_runs(tmp_path):
+    """docs/examples/cad_sections.py: two CAD sections with a bolt hole,
+    their boundaries meshed by Gmsh, paired, swept and read back by Gmsh
+    with every prism positive."""
+    script = EXAMPLE.parent / "cad_sections.py"
+    run = subprocess.run([sys.executable, str(script), str(tmp_path)], capture_output=True, text=True, timeout=300)
+    assert run.returncode == 0, run.stderr
+    lines = run.stdout.splitlines()
+    assert len(lines) == 3, run.stdout
+    assert lines[0].startswith("loops: [") and lines[0].count("[") == 2  # outer loop and hole, per section
+    angle = float(lines[1].split("smallest angle ")[1].split()[0])
+    assert angle >= 20  # well-shaped: both sections' corners are right angles or rounded
+    prisms, determinant = int(lines[2].split()[0]), float(lines[2].rsplit(" ", 1)[1])
+    assert prisms > 0 and determinant > 0 and (tmp_path / "bracket.msh").exists()
+
+
 def readme_code_block(language):
     """The README's only code block in `language`."""
     readme = (EXAMPLE.parents[2] / "README.md").read_text()
