@@ -860,10 +860,10 @@ py::object morph_to_meshio(const Morph &m, py::object frame)
   return meshes;
 }
 
-// The prisms (meshio's wedge is VTK's: the bottom clockwise seen from the
-// top, so a, c, b then d, f, e) or the tetrahedra.
-// The sweep as a meshio.Mesh; its wedges in VTK's corner order, or with
-// gmsh_order in Gmsh's (the prisms as they are), for the writers that want it.
+// The sweep as a meshio.Mesh: the prisms (meshio's wedge is VTK's: the
+// bottom clockwise seen from the top, so a, c, b then d, f, e; with
+// gmsh_order Gmsh's, the prisms as they are, for the writers that want it)
+// or the tetrahedra.
 py::object sweep_mesh(const Sweep &s, py::object cells, bool gmsh_order)
 {
   bool has_tets = s.cells.contains("tetra");
@@ -885,8 +885,6 @@ py::object sweep_mesh(const Sweep &s, py::object cells, bool gmsh_order)
   return meshio_mesh(s.fields["nodes"], "wedge", vtk, "to_meshio");
 }
 
-// write(path, which, file_format): one mesh through meshio.write, the format
-// from the file's extension unless given.
 py::object sweep_to_meshio(const Sweep &s, py::object cells) { return sweep_mesh(s, cells, false); }
 
 // The meshio format read_polygon() and write() use: file_format, else the
@@ -914,11 +912,12 @@ bool gmsh_wedge_order(py::object format)
   return f == "gmsh" || f == "gmsh22" || f == "abaqus" || f == "nastran";
 }
 
-// meshio.write in the format meshio_format chose; Gmsh's files as text, as
-// Gmsh itself writes them. The file is written beside the path under a
-// temporary name and renamed onto it, so that a write that fails leaves
-// no partial file and an existing one as it was (XDMF, whose heavy data
-// file is named after it, is written in place).
+// write(path, which, file_format): one mesh through meshio.write, in the
+// format meshio_format chose; Gmsh's files as text, as Gmsh itself writes
+// them. The file is written beside the path under a temporary name and
+// renamed onto it, so that a write that fails leaves no partial file and
+// an existing one as it was (XDMF, whose heavy data file is named after
+// it, is written in place).
 void write_mesh(py::object mesh, py::object path, py::object format)
 {
   py::object write = import_meshio("write").attr("write");
