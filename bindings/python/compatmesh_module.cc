@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cfloat>
 #include <cmath>
 #include <limits>
 #include <cstring>
@@ -615,7 +616,8 @@ void require_planar(const std::vector<Polygon> &polygons, const char *function)
   for (std::size_t g = 0; g < polygons.size(); g++)
     if (polygons[g].spatial)
       throw py::value_error(std::string(function) + ": polygon " + std::to_string(g) +
-                            ": expected an n x 2 array (sections are planar; give heights to sweep)");
+                            ": expected an n x 2 array, or for sweep n x 3 in a plane z = constant (sections are "
+                            "planar; give heights to sweep)");
 }
 
 // The morph of the triangulated polygons, progress reported like the
@@ -714,6 +716,68 @@ Morph morph(py::object polygons_in, py::object t, py::object frames, py::object 
   return out;
 }
 
+// A section given in space in a plane z = constant (n x 3 arrays, every
+// loop's z one value up to the rounding of single precision, as the
+// command line's readers allow: 16 float epsilons of the coordinates'
+// size): its loops' x and y, and *z; else the object as it is and no z.
+py::object section_in_plane_z(py::handle polygon, std::size_t index, double *z, bool *has_z)
+{
+  *has_z = false;
+  py::object geometry = geo_geometry(polygon);
+  py::object object = geometry.is_none() ? py::reinterpret_borrow<py::object>(polygon) : geo_loops(geometry, index);
+  bool several = is_loop_list(object);
+  py::list flat;
+  double z0 = 0;
+  std::size_t l = 0;
+  for (py::handle loop : several ? py::iter(object) : py::iter(py::make_tuple(object))) {
+    py::array any = py::array::ensure(loop);
+    if (!any) {
+      PyErr_Clear();
+      return object;
+    }
+    FloatArray a = real_array(loop, "polygon " + std::to_string(index));
+    if (a.ndim() != 2 || a.shape(1) != 3 || a.shape(0) == 0) return object;
+    if (l++ == 0) z0 = *a.data(0, 2);
+    for (py::ssize_t i = 0; i < a.shape(0); i++) {
+      double x = *a.data(i, 0), y = *a.data(i, 1), zi = *a.data(i, 2);
+      double size = std::max(std::max(std::fabs(x), std::fabs(y)), std::max(std::fabs(zi), std::fabs(z0)));
+      if (!(std::fabs(zi - z0) <= 16 * FLT_EPSILON * size)) return object;
+    }
+    flat.append(a[py::make_tuple(py::slice(0, a.shape(0), 1), py::slice(0, 2, 1))]);
+  }
+  *z = z0, *has_z = true;
+  return several ? py::object(flat) : py::object(flat[0]);
+}
+
+// The sections' own z as heights, when every polygon gives one (n x 3 in a
+// plane z = constant) and they differ, as the command line takes its
+// inputs' z; the polygons passed on in the plane (x, y).
+py::list sections_own_z(py::object polygons_in, std::vector<double> *z)
+{
+  py::list flat;
+  std::vector<double> own;
+  std::size_t with_z = 0;
+  for (py::handle polygon : polygons_in) {
+    double zg = 0;
+    bool has_z = false;
+    flat.append(section_in_plane_z(polygon, flat.size(), &zg, &has_z));
+    own.push_back(zg), with_z += has_z;
+  }
+  bool distinct = with_z > 0 && std::any_of(own.begin(), own.end(), [&](double v) { return v != own[0]; });
+  if (with_z == 0 || (!distinct && with_z == own.size())) return with_z ? flat : py::list(polygons_in);
+  if (with_z < own.size())
+    throw py::value_error("sweep: some polygons lie in a plane z = constant and some do not; give all of them z "
+                          "or pass height / heights");
+  for (std::size_t g = 1; g < own.size(); g++)
+    if (!(own[g] > own[g - 1]))
+      throw py::value_error("sweep: polygon " + std::to_string(g) + " lies at z = " + py::str(py::float_(own[g])).cast<std::string>() +
+                            ", not above polygon " + std::to_string(g - 1) + " at z = " +
+                            py::str(py::float_(own[g - 1])).cast<std::string>() +
+                            "; the polygons' z must increase (or pass height / heights)");
+  *z = own;
+  return flat;
+}
+
 Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::object heights,
                bool tets, py::kwargs kwargs)
 {
@@ -736,11 +800,14 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
     if (a.ndim() != 1) throw py::type_error("sweep: heights must be a 1-D sequence of numbers");
     z.assign(a.data(), a.data() + a.shape(0));
   }
+  std::vector<double> own;  // the sections' own z, when they give them
+  py::object planar = sections_own_z(polygons_in, &own);
+  if (heights.is_none() && height.is_none() && !own.empty()) z = own;
   std::vector<Polygon> polygons;
   Callbacks callbacks;
-  ResultPtr result = run_triangulation(polygons_in, kwargs, "sweep", &polygons, &callbacks);
+  ResultPtr result = run_triangulation(planar, kwargs, "sweep", &polygons, &callbacks);
   require_planar(polygons, "sweep");
-  if (!heights.is_none()) {
+  if (!z.empty() || !heights.is_none()) {
     if (z.size() != polygons.size())
       throw py::value_error("sweep: heights has " + std::to_string(z.size()) + " values for " +
                             std::to_string(polygons.size()) + " polygons");
@@ -1370,7 +1437,8 @@ stacked at increasing z and joined into 6-node prisms, each checked exactly
 to stay valid through its height (sections are inserted where needed).
 Polygon g lies at heights[g] (strictly increasing), or the polygons are
 evenly spaced over height (default: the largest diagonal of the polygons'
-bounding boxes). sections: per pair of consecutive
+bounding boxes). Polygons given n x 3 in planes z = constant (slices of a
+model) lie at their own z unless height or heights is given. sections: per pair of consecutive
 polygons, both ends included, >= 2. tets: also split every prism into 3
 tetrahedra with conforming faces. Keyword options as for triangulate().
 Returns a Sweep (its fields also by key, as in a dict): nodes (N x 3 float64;

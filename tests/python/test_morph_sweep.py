@@ -98,6 +98,22 @@ def test_sweep_heights(twisted):
     assert s["section_z"][0] == -1.0 and s["section_z"][-1] == 0.5
 
 
+def test_sweep_heights_from_the_sections_own_z(twisted):
+    """Slices of a model (n x 3, each in a plane z = constant, z rounded to
+    float as a file may keep it) lie at their own z, as the command line
+    takes its inputs' z; given heights win."""
+    z1 = float(np.float32(2.1))  # 2.1 through single precision
+    sections = [np.c_[twisted[0], np.full(12, -0.5)], np.c_[twisted[1], np.full(12, 2.1)]]
+    sections[1][3, 2] = z1
+    s = compatmesh.sweep(sections, sections=3)
+    assert list(s.section_z) == [-0.5, 0.8, 2.1] and not s.height_is_default
+    assert np.array_equal(s.nodes[:12, :2], twisted[0]) and np.all(s.nodes[:12, 2] == -0.5)
+    given = compatmesh.sweep(sections, heights=[0, 1], sections=2).section_z
+    assert (given[0], given[-1]) == (0, 1)
+    flat = [np.c_[p, np.full(12, 3.0)] for p in twisted]  # one plane for both: a drawing, no heights
+    assert compatmesh.sweep(flat, sections=2).height_is_default
+
+
 @pytest.mark.parametrize("call, error, message", [
     (lambda p: compatmesh.morph(p, t=1.5), ValueError, "morph: t = 1.5 is outside \\[0, 1\\]"),
     (lambda p: compatmesh.morph(p, frames=1), ValueError, "frames must be 2 to 1000"),
@@ -112,8 +128,12 @@ def test_sweep_heights(twisted):
     (lambda p: compatmesh.sweep(p, height=-1.0), ValueError, "height must be positive"),
     (lambda p: compatmesh.sweep([p[0], p[1][:-1]], correspondence="index"), compatmesh.InputError,
      "polygon 1 has 11 vertices but polygon 0 has 12"),
-    (lambda p: compatmesh.sweep([np.c_[p[0], np.zeros(12)], np.c_[p[1], np.ones(12)]]),
-     ValueError, "polygon 0: expected an n x 2 array"),
+    (lambda p: compatmesh.sweep([np.c_[p[0], 0.1 * p[0][:, 0]], np.c_[p[1], 1 + 0.1 * p[1][:, 0]]]),
+     ValueError, "polygon 0: expected an n x 2 array, or for sweep n x 3 in a plane z = constant"),
+    (lambda p: compatmesh.sweep([np.c_[p[0], np.zeros(12)], p[1]]), ValueError,
+     "some polygons lie in a plane z = constant and some do not"),
+    (lambda p: compatmesh.sweep([np.c_[p[0], np.ones(12)], np.c_[p[1], np.zeros(12)]]), ValueError,
+     "polygon 1 lies at z = 0.0, not above polygon 0 at z = 1.0"),
 ])
 def test_bad_arguments(twisted, call, error, message):
     with pytest.raises(error, match=message):
