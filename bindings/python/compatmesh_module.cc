@@ -123,14 +123,23 @@ py::object geo_geometry(py::handle object)
 py::object geo_loops(py::object geometry, std::size_t index)
 {
   std::string name = "polygon " + std::to_string(index);
-  std::string type = py::str(geometry["type"]);
-  if (type == "Feature") return geo_loops(geometry["geometry"], index);
+  auto member = [&](const char *key) {
+    if (!py::isinstance<py::dict>(geometry) || !geometry.contains(key))
+      throw py::value_error(name + ": a GeoJSON object without \"" + key + "\"");
+    return py::object(geometry[key]);
+  };
+  std::string type = py::str(member("type"));
+  if (type == "Feature") {
+    py::object inner = member("geometry");
+    if (inner.is_none()) throw py::value_error(name + ": a Feature without a geometry; expected a Polygon");
+    return geo_loops(inner, index);
+  }
   if (type != "Polygon")
     throw py::value_error(name + ": a GeoJSON " + type + "; expected a Polygon" +
                           (type == "MultiPolygon" ? " (give a MultiPolygon's parts one by one)" : ""));
   py::list loops;
   std::size_t l = 0;
-  for (py::handle ring : geometry["coordinates"]) {
+  for (py::handle ring : member("coordinates")) {
     FloatArray a = real_array(ring, name + ", ring " + std::to_string(l++));
     py::ssize_t n = a.ndim() == 2 ? a.shape(0) : 0, columns = a.ndim() == 2 ? a.shape(1) : 0;
     bool closed = n > 1;

@@ -57,6 +57,8 @@ def test_polygon_in_3d_keeps_z():
     (shapely.geometry.LineString([(0, 0), (1, 1)]), "polygon 0: a GeoJSON LineString; expected a Polygon"),
     (shapely.geometry.Polygon(), "polygon 0: an empty GeoJSON Polygon"),
     ({"type": "Polygon", "coordinates": [[[0, 0], [1, 0], [0, 0]]]}, "too few vertices"),
+    ({"type": "Feature", "geometry": None, "properties": {}}, 'polygon 0: a Feature without a geometry'),
+    ({"type": "Polygon"}, 'polygon 0: a GeoJSON object without "coordinates"'),
 ])
 def test_other_geometries_refused(bad, message):
     with pytest.raises(ValueError) as info:
