@@ -1052,6 +1052,35 @@ py::object the_one(py::object which, size_t count, const char *what)
 // area is the outer loop, the others holes in file order.
 py::object read_polygon_file(py::object path, py::object file_format)
 {
+  // GeoJSON (.geojson, .json): a Polygon, a Feature or a FeatureCollection
+  // of one Feature, read by the json module, its rings as triangulate()
+  // takes GeoJSON polygons
+  std::string suffix = py::str(py::module_::import("pathlib").attr("Path")(path).attr("suffix").attr("lower")());
+  if (file_format.is_none() && (suffix == ".geojson" || suffix == ".json")) {
+    std::string where = "read_polygon: " + py::str(path).cast<std::string>();
+    py::object text = py::module_::import("pathlib").attr("Path")(path).attr("read_text")();
+    py::object geometry;
+    try {
+      geometry = py::module_::import("json").attr("loads")(text);
+    } catch (py::error_already_set &e) {
+      if (!e.matches(PyExc_ValueError)) throw;  // json.JSONDecodeError: its line and column
+      throw py::value_error(where + ": " + py::str(e.value()).cast<std::string>());
+    }
+    if (py::isinstance<py::dict>(geometry) && geometry.contains("type") &&
+        py::str(geometry["type"]).cast<std::string>() == "FeatureCollection") {
+      py::object features = geometry.contains("features") ? py::object(geometry["features"]) : py::list();
+      if (py::len(features) != 1)
+        throw py::value_error(where + ": a FeatureCollection of " + std::to_string(py::len(features)) +
+                              " features; expected exactly one (a Polygon)");
+      geometry = features[py::int_(0)];
+    }
+    try {
+      return geo_loops(geometry, 0);
+    } catch (py::value_error &e) {
+      std::string message = e.what();
+      throw py::value_error(where + message.substr(message.find(':')));
+    }
+  }
   py::object mesh =
       import_meshio("read_polygon").attr("read")(path, py::arg("file_format") = meshio_format(path, file_format));
   std::string where = "read_polygon: " + py::str(path).cast<std::string>() + ": ";
@@ -1345,7 +1374,10 @@ z is not 0), the points in the order of the lines from the first line of the
 file. Several loops: a list of n_j x 2 float64 arrays, the loop of largest
 area first, then the holes in file order, as triangulate() takes a polygon
 with holes. Raises ValueError naming the file and the line or point at
-fault. Needs meshio.)doc");
+fault. Needs meshio. A .geojson or .json file is read as GeoJSON (a
+Polygon, alone, in a Feature or in a FeatureCollection of one Feature):
+its rings without their closing repeat, n x 2 (n x 3 with z), the exterior
+first.)doc");
 
   m.def("triangulate", &triangulate, py::arg("polygons"),
         R"doc(triangulate(polygons, **options) -> Result

@@ -2,6 +2,8 @@
 __geo_interface__), plain dicts and Features. Each expects the run an array
 input of the same rings gives: the rings without their closing repeat,
 bit-identical, the exterior first, the same triangles."""
+import json
+
 import numpy as np
 import pytest
 import shapely.affinity
@@ -64,3 +66,28 @@ def test_other_geometries_refused(bad, message):
     with pytest.raises(ValueError) as info:
         compatmesh.triangulate([bad, bad])
     assert message in str(info.value) or message == getattr(info.value, "status", None)
+
+
+def test_read_polygon_reads_geojson_files(tmp_path):
+    """read_polygon takes .geojson and .json files as the command line does:
+    a Polygon, or a FeatureCollection of one Feature; its rings as the
+    array input takes them."""
+    (tmp_path / "plate.geojson").write_text(json.dumps(shapely.geometry.mapping(PLATE)))
+    collection = {"type": "FeatureCollection",
+                  "features": [{"type": "Feature", "properties": {}, "geometry": shapely.geometry.mapping(BENT)}]}
+    (tmp_path / "bent.json").write_text(json.dumps(collection))
+    plate, bent = compatmesh.read_polygon(tmp_path / "plate.geojson"), compatmesh.read_polygon(tmp_path / "bent.json")
+    for read, polygon in ((plate, PLATE), (bent, BENT)):
+        assert len(read) == 3 and all(np.array_equal(a, b) for a, b in zip(read, rings(polygon)))
+    assert np.array_equal(compatmesh.triangulate([plate, bent]).faces, compatmesh.triangulate([PLATE, BENT]).faces)
+
+
+@pytest.mark.parametrize("text, message", [
+    ('{"type": "Polygon",\n "coordinates": [[0, 0]\n', r"read_polygon: .*a\.geojson: .*line 3"),
+    ('{"type": "FeatureCollection", "features": []}', r"a\.geojson: a FeatureCollection of 0 features"),
+    ('{"type": "MultiPolygon", "coordinates": []}', r"a\.geojson: a GeoJSON MultiPolygon; expected a Polygon"),
+])
+def test_read_polygon_geojson_errors(tmp_path, text, message):
+    (tmp_path / "a.geojson").write_text(text)
+    with pytest.raises(ValueError, match=message):
+        compatmesh.read_polygon(tmp_path / "a.geojson")
