@@ -119,7 +119,8 @@ py::object geo_geometry(py::handle object)
 // A GeoJSON Polygon's rings as the loops of a polygon (one ring: an n x 2 or
 // n x 3 array; several: a list of n_j x 2 arrays, the exterior first). Its
 // rings are closed (the last position repeats the first): the repeat is
-// left out. A Feature gives its geometry; any other type is an error.
+// left out. A Feature gives its geometry, a FeatureCollection its one
+// Feature's; any other type is an error.
 py::object geo_loops(py::object geometry, std::size_t index)
 {
   std::string name = "polygon " + std::to_string(index);
@@ -129,6 +130,13 @@ py::object geo_loops(py::object geometry, std::size_t index)
     return py::object(geometry[key]);
   };
   std::string type = py::str(member("type"));
+  if (type == "FeatureCollection") {
+    py::object features = member("features");
+    if (py::len(features) != 1)
+      throw py::value_error(name + ": a FeatureCollection of " + std::to_string(py::len(features)) +
+                            " features; expected exactly one (a Polygon)");
+    return geo_loops(features[py::int_(0)], index);
+  }
   if (type == "Feature") {
     py::object inner = member("geometry");
     if (inner.is_none()) throw py::value_error(name + ": a Feature without a geometry; expected a Polygon");
@@ -773,7 +781,7 @@ py::list sections_own_z(py::object polygons_in, std::vector<double> *z)
     own.push_back(zg), with_z += has_z;
   }
   bool distinct = with_z > 0 && std::any_of(own.begin(), own.end(), [&](double v) { return v != own[0]; });
-  if (with_z == 0 || (!distinct && with_z == own.size())) return with_z ? flat : py::list(polygons_in);
+  if (with_z == 0 || (!distinct && with_z == own.size())) return flat;
   if (with_z < own.size())
     throw py::value_error("sweep: some polygons lie in a plane z = constant and some do not; give all of them z "
                           "or pass height / heights");
@@ -963,6 +971,12 @@ py::object sweep_mesh(const Sweep &s, py::object cells, bool gmsh_order)
 
 py::object sweep_to_meshio(const Sweep &s, py::object cells) { return sweep_mesh(s, cells, false); }
 
+// The path's extension, lower case ("" without one).
+std::string lower_suffix(py::object path)
+{
+  return py::str(py::module_::import("pathlib").attr("Path")(path).attr("suffix").attr("lower")());
+}
+
 // The meshio format read_polygon() and write() use: file_format, else the
 // one the path's extension names (None where meshio is left to tell);
 // ".msh" is Gmsh's (meshio's first guess for it is ANSYS Fluent's, which
@@ -971,7 +985,7 @@ py::object sweep_to_meshio(const Sweep &s, py::object cells) { return sweep_mesh
 py::object meshio_format(py::object path, py::object file_format)
 {
   if (!file_format.is_none()) return file_format;
-  std::string suffix = py::str(py::module_::import("pathlib").attr("Path")(path).attr("suffix").attr("lower")());
+  std::string suffix = lower_suffix(path);
   if (suffix == ".msh") return py::str("gmsh");
   py::object types = import_meshio("write").attr("extension_to_filetypes").attr("get")(suffix);
   return !types.is_none() && py::len(types) == 1 ? py::object(types[py::int_(0)]) : file_format;
@@ -1000,7 +1014,7 @@ void write_mesh(py::object mesh, py::object path, py::object format)
   py::module_ os = py::module_::import("os");
   std::string f = format.is_none() ? "" : std::string(py::str(format));
   py::object target = py::module_::import("pathlib").attr("Path")(path);
-  std::string suffix = py::str(target.attr("suffix").attr("lower")());
+  std::string suffix = lower_suffix(path);
   bool in_place = f == "xdmf" || suffix == ".xdmf" || suffix == ".xmf";
   py::object written = target;
   if (!in_place) {
@@ -1055,7 +1069,7 @@ py::object read_polygon_file(py::object path, py::object file_format)
   // GeoJSON (.geojson, .json): a Polygon, a Feature or a FeatureCollection
   // of one Feature, read by the json module, its rings as triangulate()
   // takes GeoJSON polygons
-  std::string suffix = py::str(py::module_::import("pathlib").attr("Path")(path).attr("suffix").attr("lower")());
+  std::string suffix = lower_suffix(path);
   if (file_format.is_none() && (suffix == ".geojson" || suffix == ".json")) {
     std::string where = "read_polygon: " + py::str(path).cast<std::string>();
     py::object text = py::module_::import("pathlib").attr("Path")(path).attr("read_text")();
@@ -1065,14 +1079,6 @@ py::object read_polygon_file(py::object path, py::object file_format)
     } catch (py::error_already_set &e) {
       if (!e.matches(PyExc_ValueError)) throw;  // json.JSONDecodeError: its line and column
       throw py::value_error(where + ": " + py::str(e.value()).cast<std::string>());
-    }
-    if (py::isinstance<py::dict>(geometry) && geometry.contains("type") &&
-        py::str(geometry["type"]).cast<std::string>() == "FeatureCollection") {
-      py::object features = geometry.contains("features") ? py::object(geometry["features"]) : py::list();
-      if (py::len(features) != 1)
-        throw py::value_error(where + ": a FeatureCollection of " + std::to_string(py::len(features)) +
-                              " features; expected exactly one (a Polygon)");
-      geometry = features[py::int_(0)];
     }
     try {
       return geo_loops(geometry, 0);
