@@ -12,6 +12,7 @@
 #include "hole_fixtures.h"
 #include "random_polygons.h"
 #include "result_check.h"
+#include "sweep_boundary_check.h"
 
 static cm_loops loops_of(const shape *s)
 {
@@ -60,6 +61,8 @@ static void expect_morph(const char *name, const cm_result *r, const shape *a)
         so.tets = 1;
         cm_sweep *w = NULL;
         CHECK_MSG(cm_sweep_create(m, &so, &w) == CM_OK, "%s: sweep: %s", name, cm_sweep_message(w));
+        check_sweep_boundary(name, w, r, 0);
+        check_sweep_boundary(name, w, r, 1);
         cm_sweep_free(w);
     }
     cm_morph_free(m);

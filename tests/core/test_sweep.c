@@ -11,6 +11,7 @@
 #include "check.h"
 #include "morph_fixtures.h"
 #include "geom/predicates.h"
+#include "sweep_boundary_check.h"
 
 #define N 60
 
@@ -122,6 +123,8 @@ static void test_sweep(fixture_kind kind, const double *heights, int tets, cm_mo
                                 nodes + 3 * (size_t)tet[4 * t + 2], nodes + 3 * (size_t)tet[4 * t + 3]) <= 0;
     CHECK_MSG(bad_prisms == 0 && bad_tets == 0, "%s: %zu prisms, %zu tets invalid", name, bad_prisms, bad_tets);
     if (tets) check_conforming(w, nt, (size_t)N);
+    check_sweep_boundary(name, w, r, 0);
+    if (tets) check_sweep_boundary(name, w, r, 1);
     /* Volume = integral of the polygon's section area. */
     double integral = 0;
     for (size_t i = 0; i + 1 < ns; i++) {

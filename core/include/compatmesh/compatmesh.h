@@ -708,6 +708,20 @@ CM_API double cm_sweep_volume(const cm_sweep *sweep);
  * diagonal of the geometries), else 0. */
 CM_API double cm_sweep_height(const cm_sweep *sweep);
 CM_API int cm_sweep_height_is_default(const cm_sweep *sweep);
+/* The volume's boundary as faces in groups, for boundary conditions:
+ * group 0 is the first section (the bottom), group 1 the last (the top),
+ * group 2 the wall over the outer loop, group 2 + j the wall over hole j
+ * (j = 1 .. holes); 3 + holes groups in all. Faces come sorted by group,
+ * 4 node indices each, ordered so that the normal (right-hand rule)
+ * points out of the volume: the caps' triangles (the 4th index -1) and
+ * the walls' quads a b b' a' (a -> b a boundary edge with the material on
+ * its left, primes one section up: the prisms' side faces), or with tets
+ * = 1 the two triangles of each quad that the tetrahedra have (a sweep
+ * built without tets has no such faces: 0 / NULL). */
+CM_API size_t cm_sweep_num_boundary_groups(const cm_sweep *sweep);
+CM_API size_t cm_sweep_num_boundary_faces(const cm_sweep *sweep, int tets);
+CM_API const int32_t *cm_sweep_boundary_faces(const cm_sweep *sweep, int tets);
+CM_API const int32_t *cm_sweep_boundary_groups(const cm_sweep *sweep, int tets);
 /* The method of the morph whose sections the sweep holds. */
 CM_API cm_morph_method cm_sweep_morph_method(const cm_sweep *sweep);
 

@@ -17,6 +17,7 @@
 #include "geom/angle.h"
 #include "geom/predicates.h"
 #include "morph/cell_shape.h"
+#include "morph/sweep_boundary.h"
 
 typedef struct section {
     size_t g;   /* segment between geometries g and g + 1 */
@@ -37,6 +38,9 @@ struct cm_sweep {
     int default_height;
     cm_morph_method morph_method; /* of the morph whose sections were used */
     cm_sweep_quality quality;
+    /* The boundary faces over the prisms, and over the tetrahedra. */
+    cm_sweep_boundary boundary, boundary_tets;
+    size_t boundary_groups;
 };
 
 void cm_sweep_options_init(cm_sweep_options *options)
@@ -395,7 +399,12 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
                 if (w->tets) cm_prism_split_tets(q, secs[i].split[t], w->tets + 12 * p);
             }
     }
-    if (s == CM_OK) measure(w, m);
+    if (s == CM_OK) s = cm_sweep_boundary_build(&w->boundary, m->result, count, NULL, &w->error);
+    if (s == CM_OK && w->tets) s = cm_sweep_boundary_build(&w->boundary_tets, m->result, count, w->tets, &w->error);
+    if (s == CM_OK) {
+        w->boundary_groups = 2 + (m->result->loop_start ? m->result->num_loops : 1);
+        measure(w, m);
+    }
     free_sections(secs, count);
     if (split) cm_prism_split_free(&splitter.split);
     free(splitter.bottom), free(splitter.top);
@@ -431,6 +440,14 @@ static cm_status retry_intrinsic(cm_sweep *w, cm_morph *morph, const cm_sweep_op
     return first.status;
 }
 
+static void free_mesh(cm_sweep *w)
+{
+    free(w->z), free(w->nodes), free(w->prisms), free(w->tets);
+    w->z = w->nodes = NULL, w->prisms = w->tets = NULL;
+    cm_sweep_boundary_free(&w->boundary);
+    cm_sweep_boundary_free(&w->boundary_tets);
+}
+
 cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_sweep **sweep)
 {
     if (!sweep) return CM_ERR_ARGUMENT;
@@ -445,9 +462,8 @@ cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_s
     if (s == CM_OK) s = build_prisms(w, morph, options);
     if (s == CM_ERR_INTERNAL && morph->method == CM_MORPH_CONVEX) s = retry_intrinsic(w, morph, options);
     if (s != CM_OK) {
-        free(w->z), free(w->nodes), free(w->prisms), free(w->tets);
-        w->z = w->nodes = NULL, w->prisms = w->tets = NULL;
-        w->ns = w->np = w->ntet = w->nv = 0, w->volume = 0;
+        free_mesh(w);
+        w->ns = w->np = w->ntet = w->nv = w->boundary_groups = 0, w->volume = 0;
     }
     return cm_error_close(&w->error, s);
 }
@@ -455,7 +471,7 @@ cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_s
 void cm_sweep_free(cm_sweep *w)
 {
     if (!w) return;
-    free(w->z), free(w->nodes), free(w->prisms), free(w->tets);
+    free_mesh(w);
     free(w);
 }
 
@@ -471,6 +487,16 @@ const int32_t *cm_sweep_tets(const cm_sweep *w) { return w ? w->tets : NULL; }
 double cm_sweep_volume(const cm_sweep *w) { return w ? w->volume : 0.0; }
 double cm_sweep_height(const cm_sweep *w) { return w && w->ns ? w->z[w->ns - 1] - w->z[0] : 0.0; }
 int cm_sweep_height_is_default(const cm_sweep *w) { return w && w->ns ? w->default_height : 0; }
+size_t cm_sweep_num_boundary_groups(const cm_sweep *w) { return w ? w->boundary_groups : 0; }
+
+static const cm_sweep_boundary *boundary_of(const cm_sweep *w, int tets)
+{
+    return !w ? NULL : tets ? &w->boundary_tets : &w->boundary;
+}
+size_t cm_sweep_num_boundary_faces(const cm_sweep *w, int tets) { return w ? boundary_of(w, tets)->nf : 0; }
+const int32_t *cm_sweep_boundary_faces(const cm_sweep *w, int tets) { return w ? boundary_of(w, tets)->faces : NULL; }
+const int32_t *cm_sweep_boundary_groups(const cm_sweep *w, int tets) { return w ? boundary_of(w, tets)->groups : NULL; }
+
 cm_morph_method cm_sweep_morph_method(const cm_sweep *w) { return w ? w->morph_method : CM_MORPH_CONVEX; }
 
 void cm_sweep_get_quality(const cm_sweep *w, cm_sweep_quality *quality)
