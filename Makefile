@@ -11,7 +11,7 @@ DEBIAN_PACKAGES = build-essential cmake pkg-config libgmp-dev liblbfgs-dev libfr
   libglew-dev xvfb xauth \
   libsuitesparse-dev libgmsh-dev gmsh gmsh-doc python3-gmsh python3-scipy \
   clang libclang-rt-14-dev valgrind libcairo2-dev python3-pil libjansson-dev librsvg2-bin \
-  libdouble-conversion-dev libpng-dev fontconfig
+  libdouble-conversion-dev libpng-dev fontconfig calculix-ccx
 
 # Only `make bench` needs these: CGAL meshes each polygon alone, to compare;
 # Gmsh's and OpenCASCADE's STL models give the benches real sections

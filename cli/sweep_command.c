@@ -180,7 +180,13 @@ static void print_sweep_help(FILE *out)
     fputs("\n"
           "The file is written to a temporary file beside FILE and renamed into place\n"
           "when complete; on failure nothing is written. One physical group, 'sweep',\n"
-          "holds every element.\n"
+          "holds every cell. A .msh file also holds the boundary for boundary\n"
+          "conditions, as surfaces with a physical group each: 'bottom' (the first\n"
+          "input), 'top' (the last), 'side' (the wall over the outer loop) and\n"
+          "'hole_1', 'hole_2', ... (the wall over each hole): the caps' triangles and\n"
+          "the prisms' side quads (with --tets the tetrahedra's triangles), each\n"
+          "face's normal pointing out of the volume. A .inp file (Abaqus, CalculiX)\n"
+          "gets those groups as node sets (*NSET).\n"
           "\n"
           "Exit status (on failure no file is written):\n"
           "  0    success\n"
@@ -344,7 +350,11 @@ static int sweep(const sweep_args *args, cli_error *error)
         volume_mesh mesh = {cm_sweep_nodes(sweep), cm_sweep_num_nodes(sweep),
                             args->tets ? cm_sweep_tets(sweep) : cm_sweep_prisms(sweep),
                             args->tets ? cm_sweep_num_tets(sweep) : cm_sweep_num_prisms(sweep),
-                            args->tets};
+                            args->tets,
+                            cm_sweep_boundary_faces(sweep, args->tets),
+                            cm_sweep_boundary_groups(sweep, args->tets),
+                            cm_sweep_num_boundary_faces(sweep, args->tets),
+                            cm_sweep_num_boundary_groups(sweep)};
         code = write_volume(args->output, &mesh, args->msh_version, error);
         double volume = cm_sweep_volume(sweep);
         char volume_text[64] = "volume beyond the double range";

@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "compatmesh/compatmesh.h"
 #include "interrupt.h"
 #include "write_vtu.h"
 
@@ -104,18 +105,49 @@ static void gmsh_failure(const char *path, const char *what, cli_error *error)
     if (message) gmsh.Free(message);
 }
 
+/* Hands the boundary faces of group g to Gmsh's discrete surface g + 1
+ * with physical group g + 1, named as the core names it; element tags
+ * from *next_tag on. */
+static int add_boundary_group(const volume_mesh *mesh, size_t g, size_t *next_tag, size_t *tags, size_t *nodes)
+{
+    int ierr = 0, surface = (int)g + 1;
+    for (int corners = 3; corners <= 4 && !ierr; corners++) {
+        size_t count = 0;
+        for (size_t i = 0; i < mesh->num_faces; i++) {
+            const int32_t *f = mesh->faces + 4 * i;
+            if ((size_t)mesh->face_groups[i] != g || (f[3] >= 0) != (corners == 4)) continue;
+            for (int c = 0; c < corners; c++) nodes[(size_t)corners * count + (size_t)c] = (size_t)f[c] + 1;
+            tags[count++] = (*next_tag)++;
+        }
+        if (count) /* Gmsh: 3-node triangle 2, 4-node quadrangle 3 */
+            gmsh.ModelMeshAddElementsByType(surface, corners == 3 ? 2 : 3, tags, count, nodes,
+                                           (size_t)corners * count, &ierr);
+    }
+    char name[32];
+    cm_sweep_boundary_group_name(g, name);
+    if (!ierr) gmsh.ModelAddPhysicalGroup(2, &surface, 1, surface, &ierr);
+    if (!ierr) gmsh.ModelSetPhysicalName(2, surface, name, &ierr);
+    return ierr;
+}
+
 /* Hands the mesh to Gmsh as one discrete volume (entity and physical group
- * 1, "sweep") with nodes and elements numbered from 1. */
-static int add_mesh(const volume_mesh *mesh, cli_error *error, const char *path)
+ * 1, "sweep") with nodes and elements numbered from 1; with boundary, its
+ * boundary faces as the volume's bounding surfaces, one physical group
+ * each. */
+static int add_mesh(const volume_mesh *mesh, int boundary, cli_error *error, const char *path)
 {
     int ierr = 0;
     size_t per_cell = mesh->tetrahedra ? 4 : 6;
     int element_type = mesh->tetrahedra ? 4 : 6; /* Gmsh: 4-node tet, 6-node prism */
+    size_t num_faces = boundary ? mesh->num_faces : 0, num_groups = num_faces ? mesh->num_groups : 0;
     size_t *node_tags = malloc((mesh->num_nodes + 1) * sizeof *node_tags);
     size_t *cell_tags = malloc((mesh->num_cells + 1) * sizeof *cell_tags);
     size_t *cell_nodes = malloc((per_cell * mesh->num_cells + 1) * sizeof *cell_nodes);
+    size_t *face_tags = malloc((num_faces + 1) * sizeof *face_tags);
+    size_t *face_nodes = malloc((4 * num_faces + 1) * sizeof *face_nodes);
+    int *surfaces = malloc((num_groups + 1) * sizeof *surfaces);
     int code = CLI_EXIT_INTERNAL;
-    if (!node_tags || !cell_tags || !cell_nodes) {
+    if (!node_tags || !cell_tags || !cell_nodes || !face_tags || !face_nodes || !surfaces) {
         cli_error_set(error, "out of memory");
         goto done;
     }
@@ -124,7 +156,13 @@ static int add_mesh(const volume_mesh *mesh, cli_error *error, const char *path)
     for (size_t i = 0; i < per_cell * mesh->num_cells; i++)
         cell_nodes[i] = (size_t)mesh->cells[i] + 1;
     gmsh.ModelAdd("compatmesh_sweep", &ierr);
-    if (!ierr) gmsh.ModelAddDiscreteEntity(3, 1, NULL, 0, &ierr);
+    /* The surfaces first, to bound the volume; their faces after the
+     * nodes, which the volume holds. */
+    for (size_t g = 0; g < num_groups && !ierr; g++) {
+        surfaces[g] = (int)g + 1;
+        gmsh.ModelAddDiscreteEntity(2, surfaces[g], NULL, 0, &ierr);
+    }
+    if (!ierr) gmsh.ModelAddDiscreteEntity(3, 1, surfaces, num_groups, &ierr);
     if (!ierr)
         gmsh.ModelMeshAddNodes(3, 1, node_tags, mesh->num_nodes, (double *)mesh->nodes,
                               3 * mesh->num_nodes, NULL, 0, &ierr);
@@ -134,12 +172,18 @@ static int add_mesh(const volume_mesh *mesh, cli_error *error, const char *path)
     int volume = 1;
     if (!ierr) gmsh.ModelAddPhysicalGroup(3, &volume, 1, 1, &ierr);
     if (!ierr) gmsh.ModelSetPhysicalName(3, 1, "sweep", &ierr);
+    size_t next_tag = mesh->num_cells + 1;
+    for (size_t g = 0; g < num_groups && !ierr; g++)
+        ierr = add_boundary_group(mesh, g, &next_tag, face_tags, face_nodes);
     if (ierr) gmsh_failure(path, "take the mesh", error);
     else code = CLI_EXIT_OK;
 done:
     free(node_tags);
     free(cell_tags);
     free(cell_nodes);
+    free(face_tags);
+    free(face_nodes);
+    free(surfaces);
     return code;
 }
 
@@ -160,7 +204,10 @@ static int write_with_gmsh(const char *temporary, const char *path, const volume
     gmsh.OptionSetNumber("Mesh.Binary", 0, &ierr);
     /* Nastran: large fields (16 characters), else coordinates lose digits. */
     gmsh.OptionSetNumber("Mesh.BdfFieldFormat", 2, &ierr);
-    int code = add_mesh(mesh, error, path);
+    /* Only Gmsh's own format takes the boundary: Gmsh 4.8 writes surface
+     * groups to Abaqus, Nastran and UNV files as shell elements (CPS3,
+     * CTRIA3), which would join the analysis, and VTK has no groups. */
+    int code = add_mesh(mesh, strcasecmp(extension_of(path), "msh") == 0, error, path);
     if (code == CLI_EXIT_OK) {
         gmsh.Write(temporary, &ierr);
         if (ierr) {
@@ -242,6 +289,37 @@ static int add_begin_bulk(const char *temporary, const char *path, cli_error *er
     return code;
 }
 
+/* Abaqus (and CalculiX) decks take boundary conditions on node sets; Gmsh
+ * 4.8 writes a surface group only with its faces as shell elements, so the
+ * boundary groups are appended as *NSET blocks (the nodes numbered from 1
+ * as Gmsh numbers them), 16 to a line as Abaqus allows. */
+static int add_node_sets(const char *temporary, const char *path, const volume_mesh *mesh, cli_error *error)
+{
+    unsigned char *member = malloc(mesh->num_nodes + 1);
+    FILE *file = member ? fopen(temporary, "ab") : NULL;
+    int ok = file != NULL;
+    for (size_t g = 0; ok && g < mesh->num_groups; g++) {
+        memset(member, 0, mesh->num_nodes);
+        for (size_t i = 0; i < mesh->num_faces; i++)
+            if ((size_t)mesh->face_groups[i] == g)
+                for (int c = 0; c < 4 && mesh->faces[4 * i + c] >= 0; c++) member[mesh->faces[4 * i + c]] = 1;
+        char name[32];
+        cm_sweep_boundary_group_name(g, name);
+        ok = fprintf(file, "*NSET, NSET=%s\n", name) > 0;
+        size_t on_line = 0;
+        for (size_t v = 0; ok && v < mesh->num_nodes; v++) {
+            if (!member[v]) continue;
+            ok = fprintf(file, on_line ? ", %zu" : "%zu", v + 1) > 0;
+            if (ok && ++on_line == 16) ok = fputc('\n', file) != EOF, on_line = 0;
+        }
+        if (ok && on_line) ok = fputc('\n', file) != EOF;
+    }
+    if (file && fclose(file) != 0) ok = 0;
+    free(member);
+    if (!ok) cli_error_set(error, "cannot write %s: %s", path, member ? strerror(errno ? errno : EIO) : "out of memory");
+    return ok ? CLI_EXIT_OK : CLI_EXIT_INTERNAL;
+}
+
 int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
                  cli_error *error)
 {
@@ -255,6 +333,8 @@ int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
     int code = strcasecmp(extension, "vtu") == 0 ? write_vtu(temporary, path, mesh, error)
                                                  : write_with_gmsh(temporary, path, mesh, msh_version, error);
     if (code == CLI_EXIT_OK && strcasecmp(extension, "bdf") == 0) code = add_begin_bulk(temporary, path, error);
+    if (code == CLI_EXIT_OK && strcasecmp(extension, "inp") == 0 && mesh->num_faces)
+        code = add_node_sets(temporary, path, mesh, error);
     if (code == CLI_EXIT_OK && interrupted) {
         cli_error_set(error, "interrupted; nothing written");
         code = CLI_EXIT_INTERRUPTED;

@@ -28,6 +28,11 @@ typedef struct volume_mesh {
     const int32_t *cells;
     size_t num_cells;
     int tetrahedra;           /* 1: cells are tetrahedra, 0: prisms */
+    /* The boundary faces in groups (cm_sweep_boundary_faces and _groups:
+     * 4 node indices per face, the 4th -1 for a triangle), written to .msh
+     * files as surfaces with a physical group each; num_faces 0: none. */
+    const int32_t *faces, *face_groups;
+    size_t num_faces, num_groups;
 } volume_mesh;
 
 /* Writes mesh to path, first to a temporary file beside it, renamed into

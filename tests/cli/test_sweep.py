@@ -1,7 +1,9 @@
 """`compatmesh sweep`: the exported volume meshes read back by Gmsh (every
 element's Jacobian positive across its volume) and by meshio (counts and
-connectivity), the volume equal to the integral of the section areas, bad
-input refused without leaving a file."""
+connectivity), the volume equal to the integral of the section areas, the
+boundary's named surfaces in .msh files (faces of the cells, outward, each
+on its own section or loop), bad input refused without leaving a file."""
+import math
 import os
 import re
 
@@ -87,6 +89,121 @@ def test_gmsh_reads_back_positive_elements(cm, tmp_path, gmsh_session, name, fmt
         assert integrated == pytest.approx(six.sum() / 6, rel=1e-9)
 
 
+def ring(r_outer, r_hole, cx, m=24):
+    """An annulus as '>'-separated loops: the outer circle counter-clockwise,
+    the hole clockwise, its centre at (cx, 0)."""
+    outer = [(r_outer * math.cos(2 * math.pi * i / m), r_outer * math.sin(2 * math.pi * i / m)) for i in range(m)]
+    hole = [(cx + r_hole * math.cos(-2 * math.pi * i / m), r_hole * math.sin(-2 * math.pi * i / m))
+            for i in range(m)]
+    return outer, hole
+
+
+def write_boundary_pair(tmp_path, name):
+    """Writes a.xy and b.xy: the glyph pair, or two sections of a pipe (an
+    annulus against one with its hole moved); returns the loop of each
+    boundary vertex."""
+    if name == "glyph":
+        a, b = glyph_pair()
+        write_xy(tmp_path / "a.xy", a)
+        write_xy(tmp_path / "b.xy", b)
+        return [0] * len(a)
+    for path, (outer, hole) in zip(("a.xy", "b.xy"), [ring(1.0, 0.4, 0.0), ring(1.2, 0.3, 0.2)]):
+        (tmp_path / path).write_text("".join(f"{x!r} {y!r}\n" for x, y in outer) + ">\n" +
+                                     "".join(f"{x!r} {y!r}\n" for x, y in hole))
+    return [0] * 24 + [1] * 24
+
+
+@pytest.mark.parametrize("kind", ["prism", "tet"])
+def test_inp_node_sets(cm, tmp_path, kind):
+    """Abaqus decks get the boundary as node sets (*NSET), not as shell
+    elements: the bottom and top sections' nodes, and the nodes over each
+    loop."""
+    loop_of = write_boundary_pair(tmp_path, "pipe")
+    extra = ["--tets"] if kind == "tet" else []
+    result = cm("sweep", "a.xy", "b.xy", "--sections", 4, "--height", 2.5, "-o", "out.inp", *extra, cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    sections, nodes, cells, _ = reported(result.stdout)
+    nv = nodes // sections
+    mesh = meshio.read(tmp_path / "out.inp")
+    assert [(c.type, len(c.data)) for c in mesh.cells] == [("wedge" if kind == "prism" else "tetra", cells)]
+    index = np.arange(nodes)
+    z = mesh.points[:, 2]
+    expected = {"bottom": index[z == 0], "top": index[z == 2.5],
+                "side": index[[i % nv < len(loop_of) and loop_of[i % nv] == 0 for i in index]],
+                "hole_1": index[[i % nv < len(loop_of) and loop_of[i % nv] == 1 for i in index]]}
+    assert len(expected["bottom"]) == nv and len(expected["side"]) == 24 * sections
+    assert sorted(mesh.point_sets) == sorted(expected)
+    for name, members in expected.items():
+        assert np.array_equal(np.sort(mesh.point_sets[name]), members), name
+
+
+@pytest.mark.parametrize("version", ["4.1", "2.2"])
+@pytest.mark.parametrize("kind", ["prism", "tet"])
+@pytest.mark.parametrize("name", ["glyph", "pipe"])
+def test_msh_boundary_groups(cm, tmp_path, gmsh_session, name, kind, version):
+    """The boundary as surfaces, one physical group each (bottom, top, side,
+    hole_1): every face is a face of a cell, outward from it, and lies on
+    the first section, the last, or over its own loop; the tetrahedra's
+    unshared faces are exactly the boundary's triangles."""
+    loop_of = write_boundary_pair(tmp_path, name)
+    extra = ["--tets"] if kind == "tet" else []
+    result = cm("sweep", "a.xy", "b.xy", "--sections", 4, "--height", 2.5, "--msh-version", version,
+                "-o", "out.msh", *extra, cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    sections, nodes, cells, _ = reported(result.stdout)
+    nv = nodes // sections
+    gmsh.open(str(tmp_path / "out.msh"))
+    names = {gmsh.model.getPhysicalName(d, t): (d, t) for d, t in gmsh.model.getPhysicalGroups()}
+    expected = ["bottom", "top", "side"] + (["hole_1"] if name == "pipe" else []) + ["sweep"]
+    assert sorted(names) == sorted(expected)
+    node_tags, coords, _ = gmsh.model.mesh.getNodes()
+    position = dict(zip(node_tags, np.reshape(coords, (-1, 3))))
+    types, _, element_nodes = gmsh.model.mesh.getElements(3)
+    corners = GMSH_TYPE[kind] == 4 and 4 or 6
+    cell_nodes = np.reshape(element_nodes[0], (-1, corners))
+    # Each cell's faces as they point out of it (Gmsh's positive tetrahedron
+    # and wedge, which test_gmsh_reads_back_positive_elements checks), keyed
+    # by their sorted nodes.
+    outward = ([(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)] if kind == "tet" else
+               [(0, 2, 1), (3, 4, 5), (0, 1, 4, 3), (1, 2, 5, 4), (2, 0, 3, 5)])
+    owner = {}
+    for cell in cell_nodes:
+        for f in outward:
+            owner.setdefault(tuple(sorted(cell[list(f)])), []).append(tuple(cell[list(f)]))
+
+    def rotations(face):
+        return {tuple(face[i:]) + tuple(face[:i]) for i in range(len(face))}
+
+    seen = set()
+    for group in expected[:-1]:
+        dim, tag = names[group]
+        assert dim == 2
+        for entity in gmsh.model.getEntitiesForPhysicalGroup(dim, tag):
+            for element_type, _, flat in zip(*gmsh.model.mesh.getElements(2, entity)):
+                size = {2: 3, 3: 4}[element_type]
+                assert size == (4 if kind == "prism" and group not in ("bottom", "top") else 3), group
+                for face in np.reshape(flat, (-1, size)):
+                    key = tuple(sorted(face))
+                    holders = owner.get(key, [])
+                    assert len(holders) == 1 and key not in seen, (group, face)
+                    assert tuple(face) in rotations(holders[0]), (group, face, "not outward")
+                    seen.add(key)
+                    p = np.array([position[t] for t in face])
+                    index = (np.asarray(face, dtype=np.int64) - 1)
+                    if group == "bottom":
+                        assert np.all(p[:, 2] == 0)
+                    elif group == "top":
+                        assert np.all(p[:, 2] == 2.5)
+                    else:
+                        vertex = index % nv
+                        assert np.all(vertex < len(loop_of))
+                        assert {loop_of[v] for v in vertex} == {expected.index(group) - 2}
+                        assert len(set(index // nv)) == 2
+    # Every face of a cell that no other cell shares is on the boundary.
+    unshared = {key for key, holders in owner.items() if len(holders) == 1}
+    assert unshared == seen
+
+
 def section_area_integral(points, n, nv):
     """Integral over z of the area of the section polygons: the prisms blend
     their triangles linearly between two sections, so the area is quadratic
@@ -130,7 +247,10 @@ def test_meshio_reads_every_format_alike(cm, tmp_path, kind):
         meshes[fmt] = meshio.read(path)
         _, nodes, cells, _ = reported(stdout)
         cell_type = "wedge" if kind == "prism" else "tetra"
-        assert [(c.type, len(c.data)) for c in meshes[fmt].cells] == [(cell_type, cells)]
+        # .msh files also hold the boundary's faces (test_msh_boundary_groups)
+        volume_cells = [(c.type, len(c.data)) for c in meshes[fmt].cells if c.type in ("wedge", "tetra")]
+        assert volume_cells == [(cell_type, cells)]
+        meshes[fmt].cells = [c for c in meshes[fmt].cells if c.type == cell_type]
         assert len(meshes[fmt].points) == nodes
     reference = meshes["msh"]
     for fmt, mesh in meshes.items():

@@ -722,6 +722,10 @@ CM_API size_t cm_sweep_num_boundary_groups(const cm_sweep *sweep);
 CM_API size_t cm_sweep_num_boundary_faces(const cm_sweep *sweep, int tets);
 CM_API const int32_t *cm_sweep_boundary_faces(const cm_sweep *sweep, int tets);
 CM_API const int32_t *cm_sweep_boundary_groups(const cm_sweep *sweep, int tets);
+/* The name every writer gives group g: "bottom", "top", "side" (the wall
+ * over the outer loop), "hole_1", "hole_2", ... (words a solver's input
+ * deck takes as set names); at most 31 characters and the terminator. */
+CM_API void cm_sweep_boundary_group_name(size_t group, char name[32]);
 /* The method of the morph whose sections the sweep holds. */
 CM_API cm_morph_method cm_sweep_morph_method(const cm_sweep *sweep);
 

@@ -8,6 +8,7 @@
  * a smooth path of valid sections, so blends over short enough steps are
  * valid. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -488,6 +489,13 @@ double cm_sweep_volume(const cm_sweep *w) { return w ? w->volume : 0.0; }
 double cm_sweep_height(const cm_sweep *w) { return w && w->ns ? w->z[w->ns - 1] - w->z[0] : 0.0; }
 int cm_sweep_height_is_default(const cm_sweep *w) { return w && w->ns ? w->default_height : 0; }
 size_t cm_sweep_num_boundary_groups(const cm_sweep *w) { return w ? w->boundary_groups : 0; }
+
+void cm_sweep_boundary_group_name(size_t group, char name[32])
+{
+    static const char *const fixed[3] = {"bottom", "top", "side"};
+    if (group < 3) snprintf(name, 32, "%s", fixed[group]);
+    else snprintf(name, 32, "hole_%zu", group - 2);
+}
 
 static const cm_sweep_boundary *boundary_of(const cm_sweep *w, int tets)
 {
