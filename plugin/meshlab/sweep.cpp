@@ -3,9 +3,7 @@
 #include "float_check.h"
 #include "layer_boundary.h"
 
-extern "C" {  // gmshc.h declares a C API without saying so to C++
-#include <gmshc.h>
-}
+#include "gmsh_volume.h"
 
 #include <algorithm>
 #include <cctype>
@@ -13,7 +11,6 @@ extern "C" {  // gmshc.h declares a C API without saying so to C++
 #include <cstdlib>
 #include <cstring>
 #include <cerrno>
-#include <dlfcn.h>
 #include <unistd.h>
 
 namespace compatmesh_plugin {
@@ -146,6 +143,10 @@ SweptVolume swept_volume(SectionMorph &morph, int sections)
     for (int c = 0; c < 3; c++) volume.nodes[3 * i + c] = (1 - t) * p[c] + t * q[c];
   }
   volume.tets.assign(cm_sweep_tets(sweep), cm_sweep_tets(sweep) + 4 * cm_sweep_num_tets(sweep));
+  const std::size_t faces = cm_sweep_num_boundary_faces(sweep, 1);
+  volume.faces.assign(cm_sweep_boundary_faces(sweep, 1), cm_sweep_boundary_faces(sweep, 1) + 4 * faces);
+  volume.face_groups.assign(cm_sweep_boundary_groups(sweep, 1), cm_sweep_boundary_groups(sweep, 1) + faces);
+  volume.groups = cm_sweep_num_boundary_groups(sweep);
   volume.sections = cm_sweep_num_sections(sweep);
   cm_sweep_quality quality;
   cm_sweep_get_quality(sweep, &quality);
@@ -159,63 +160,6 @@ SweptVolume swept_volume(SectionMorph &morph, int sections)
   return volume;
 }
 
-namespace {
-
-// Gmsh loaded on first use with its own symbols first (RTLD_DEEPBIND):
-// Gmsh and MeshLab's libmeshlab-common both define a class PluginManager,
-// and bound to MeshLab's, Gmsh crashes in gmshFinalize.
-#define GMSH_FUNCTIONS(X)                                                                         \
-  X(Initialize) X(Finalize) X(ModelAdd) X(ModelAddDiscreteEntity) X(ModelAddPhysicalGroup)          \
-  X(ModelMeshAddElementsByType) X(ModelMeshAddNodes) X(ModelSetPhysicalName) X(OptionSetNumber) X(Write)
-
-struct GmshApi {
-  void *library = nullptr;
-#define GMSH_POINTER(name) decltype(&gmsh##name) name = nullptr;
-  GMSH_FUNCTIONS(GMSH_POINTER)
-#undef GMSH_POINTER
-};
-
-const GmshApi &gmsh_api()
-{
-  static GmshApi api;
-  if (api.library) return api;
-  void *library = dlopen(CM_GMSH_SONAME, RTLD_NOW | RTLD_LOCAL | RTLD_DEEPBIND);
-  if (!library) throw FilterError(std::string("Gmsh could not be loaded: ") + dlerror());
-  GmshApi loaded;
-#define GMSH_SYMBOL(name)                                                                          \
-  if (!(loaded.name = reinterpret_cast<decltype(loaded.name)>(dlsym(library, "gmsh" #name))))     \
-    throw FilterError(std::string(CM_GMSH_SONAME " has no gmsh") + #name);
-  GMSH_FUNCTIONS(GMSH_SYMBOL)
-#undef GMSH_SYMBOL
-  loaded.library = library;
-  api = loaded;
-  return api;
-}
-
-// Gmsh's state is global: one write initialises and finalises it.
-class GmshSession {
- public:
-  explicit GmshSession(const GmshApi &api) : api_(api)
-  {
-    int ierr = 0;
-    api_.Initialize(0, nullptr, 0, &ierr);
-    if (ierr) throw FilterError("Gmsh could not start");
-    api_.OptionSetNumber("General.Terminal", 0, &ierr);
-  }
-  ~GmshSession()
-  {
-    int ierr = 0;
-    api_.Finalize(&ierr);
-  }
-  GmshSession(const GmshSession &) = delete;
-  GmshSession &operator=(const GmshSession &) = delete;
-
- private:
-  const GmshApi &api_;
-};
-
-}  // namespace
-
 void write_msh(const SweptVolume &volume, const std::string &path)
 {
   const std::size_t dot = path.find_last_of('.');
@@ -227,34 +171,18 @@ void write_msh(const SweptVolume &volume, const std::string &path)
   int fd = mkstemps(&temporary[0], 4);
   if (fd < 0) throw FilterError("cannot write '" + path + "': " + std::strerror(errno));
   close(fd);
-  const std::size_t count = volume.nodes.size() / 3, cells = volume.tets.size() / 4;
-  std::vector<std::size_t> node_tags(count), cell_tags(cells), cell_nodes(volume.tets.size());
-  for (std::size_t i = 0; i < count; i++) node_tags[i] = i + 1;
-  for (std::size_t i = 0; i < cells; i++) cell_tags[i] = i + 1;
-  for (std::size_t i = 0; i < volume.tets.size(); i++) cell_nodes[i] = std::size_t(volume.tets[i]) + 1;
-  int ierr = 0;
-  {
-    const GmshApi &gmsh = gmsh_api();
-    GmshSession session(gmsh);
-    gmsh.OptionSetNumber("Mesh.MshFileVersion", 4.1, &ierr);
-    gmsh.OptionSetNumber("Mesh.Binary", 0, &ierr);
-    // One discrete volume (entity and physical group 1, "sweep"), as the
-    // command line's sweep writes it.
-    gmsh.ModelAdd("compatmesh_sweep", &ierr);
-    if (!ierr) gmsh.ModelAddDiscreteEntity(3, 1, nullptr, 0, &ierr);
-    if (!ierr)
-      gmsh.ModelMeshAddNodes(3, 1, node_tags.data(), count, const_cast<double *>(volume.nodes.data()),  // not written
-                             volume.nodes.size(), nullptr, 0, &ierr);
-    if (!ierr)
-      gmsh.ModelMeshAddElementsByType(1, 4, cell_tags.data(), cells, cell_nodes.data(), cell_nodes.size(), &ierr);
-    int group = 1;
-    if (!ierr) gmsh.ModelAddPhysicalGroup(3, &group, 1, 1, &ierr);
-    if (!ierr) gmsh.ModelSetPhysicalName(3, 1, "sweep", &ierr);
-    if (!ierr) gmsh.Write(temporary.c_str(), &ierr);
-  }
+  // Gmsh with its own symbols first (deep_bind): Gmsh and MeshLab's
+  // libmeshlab-common both define a class PluginManager, and bound to
+  // MeshLab's, Gmsh crashes in gmshFinalize.
+  const volume_mesh mesh = {volume.nodes.data(), volume.nodes.size() / 3, volume.tets.data(), volume.tets.size() / 4,
+                            1, volume.faces.data(), volume.face_groups.data(), volume.face_groups.size(),
+                            volume.groups};
+  const gmsh_write_options options = {4.1, 1, nullptr};
+  char message[512] = "";
+  const int ierr = gmsh_write_volume(temporary.c_str(), &mesh, &options, message, sizeof message);
   if (ierr || std::rename(temporary.c_str(), path.c_str()) != 0) {
     std::remove(temporary.c_str());
-    throw FilterError("cannot write '" + path + "'" + (ierr ? ": Gmsh failed" : ": " + std::string(std::strerror(errno))));
+    throw FilterError("cannot write '" + path + "': " + (ierr ? std::string(message) : std::strerror(errno)));
   }
 }
 

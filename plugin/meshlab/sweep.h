@@ -72,14 +72,19 @@ std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_
 struct SweptVolume {
   std::vector<double> nodes;  // 3 per node
   std::vector<int32_t> tets;  // 4 per tetrahedron, positive volume
+  // The boundary's triangles (4 node indices each, the 4th -1), outward,
+  // and their groups: cm_sweep_boundary_faces of the tetrahedra.
+  std::vector<int32_t> faces, face_groups;
+  std::size_t groups = 0;
   std::size_t sections = 0;   // with those the sweep inserted
   double min_dihedral_deg = 0;
 };
 SweptVolume swept_volume(SectionMorph &morph, int sections);
 
-// Writes the volume as a Gmsh .msh file (format 4.1) through Gmsh's C API,
-// to a temporary file beside path renamed into place when complete. Throws
-// FilterError.
+// Writes the volume as a Gmsh .msh file (format 4.1) through Gmsh
+// (export/gmsh_volume.h: the tetrahedra, and the boundary as named
+// surfaces), to a temporary file beside path renamed into place when
+// complete. Throws FilterError.
 void write_msh(const SweptVolume &volume, const std::string &path);
 
 struct SweepOutcome {

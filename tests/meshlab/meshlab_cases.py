@@ -728,7 +728,8 @@ def case_lever_volume(w):
     # paired by the unchanged pair.mlx and saved, as a user exports the
     # pair; then the saved pair swept by the sweep filter with its volume
     # file set. Gmsh reads the .msh and every tetrahedron's Jacobian is
-    # positive at its corners and centre; the volume's end faces are the
+    # positive at its corners and centre; its boundary is named surfaces
+    # (bottom, top, side, hole_1 .. hole_5) that close around it outward; the volume's end faces are the
     # layers' faces (the first layer's plane z = 2 holds exactly one node per
     # layer vertex), and they fill the solid the layers and the lateral
     # surface bound.
@@ -759,6 +760,24 @@ def case_lever_volume(w):
         node_tags, coords, _ = gmsh.model.mesh.getNodes()
         xyz = np.array(coords).reshape(-1, 3)
         total = float(np.sum(dets[4::5])) / 6  # a linear tetrahedron's volume is det J / 6
+        # The boundary as named surfaces: the two layers, the outline's wall
+        # and one wall per bolt hole, closing outward around the tetrahedra
+        # (the flux of x / 3 through them is their volume).
+        position = dict(zip(node_tags, xyz))
+        groups = {gmsh.model.getPhysicalName(d, t): (d, t) for d, t in gmsh.model.getPhysicalGroups()}
+        assert sorted(groups) == sorted(["sweep", "bottom", "top", "side"] + ["hole_%d" % j for j in range(1, 6)]), groups
+        flux, caps = 0.0, {}
+        for name, (d, t) in groups.items():
+            if d != 2:
+                continue
+            (entity,) = gmsh.model.getEntitiesForPhysicalGroup(d, t)
+            face_types, _, face_nodes = gmsh.model.mesh.getElements(2, entity)
+            assert list(face_types) == [2], (name, face_types)
+            p = np.array([position[n] for n in face_nodes[0]]).reshape(-1, 3, 3)
+            flux += float(np.sum(np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])))) / 6
+            caps[name] = len(p)
+        assert abs(flux - total) < 1e-9 * total, (flux, total)
+        assert caps["bottom"] == len(ta), (caps["bottom"], len(ta))
     finally:
         gmsh.finalize()
     assert len(node_tags) == int(m.group(2)), (len(node_tags), m.group(2))
@@ -775,8 +794,9 @@ def case_lever_volume(w):
         - signed(meshio.read(os.path.join(w, "pa.ply")))
     assert abs(total - bounded) < 2e-3 * bounded, (total, bounded)
     print("lever volume: %s tetrahedra, %s nodes, %s sections; Gmsh: all %d Jacobians positive (corners and "
-          "centres, smallest %.3g), volume %.6g (bounded by the layers and the lateral surface: %.6g)"
-          % (m.group(1), m.group(2), m.group(3), len(dets), float(dets.min()), total, bounded))
+          "centres, smallest %.3g), volume %.6g (bounded by the layers and the lateral surface: %.6g); boundary "
+          "groups %s" % (m.group(1), m.group(2), m.group(3), len(dets), float(dets.min()), total, bounded,
+                         ", ".join("%s %d" % kv for kv in sorted(caps.items()))))
 
 
 def bad_case(w, inputs, message, replacements=()):

@@ -1,0 +1,25 @@
+/* A swept volume as the writers take it: nodes, cells and the boundary's
+ * faces in groups (the core's cm_sweep arrays, borrowed). */
+#ifndef CM_EXPORT_VOLUME_MESH_H
+#define CM_EXPORT_VOLUME_MESH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+typedef struct volume_mesh {
+    const double *nodes;      /* 3 * num_nodes: x y z */
+    size_t num_nodes;
+    /* Either 6-node prisms (Gmsh wedge order: bottom a b c counter-clockwise
+     * seen from +z, then the top a' b' c') or 4-node tetrahedra of positive
+     * volume; node indices from 0. */
+    const int32_t *cells;
+    size_t num_cells;
+    int tetrahedra;           /* 1: cells are tetrahedra, 0: prisms */
+    /* The boundary faces in groups (cm_sweep_boundary_faces and _groups:
+     * 4 node indices per face, the 4th -1 for a triangle); num_faces 0:
+     * none. */
+    const int32_t *faces, *face_groups;
+    size_t num_faces, num_groups;
+} volume_mesh;
+
+#endif
