@@ -6,6 +6,13 @@
 #include <compatmesh/compatmesh.h>
 #include <compatmesh/handles.hh>
 #include <compatmesh/plane.hh>
+#ifdef CM_PYTHON_HAVE_GMSH
+#include <gmsh_volume.h>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -500,6 +507,11 @@ struct Morph : Output {
 
 struct Sweep : Output {
   py::dict fields;
+  // The boundary's faces (cm_sweep_boundary_faces: 4 node indices each,
+  // the 4th -1 for a triangle) and their groups, over the prisms [0] and
+  // the tetrahedra [1].
+  std::vector<int32_t> faces[2], face_groups[2];
+  std::size_t groups = 0;
 };
 
 Result make_result(const cm_result *r, const std::vector<Polygon> &polygons)
@@ -844,6 +856,12 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
   if (status != CM_OK) raise_step_failure(status, raw ? cm_sweep_message(raw) : nullptr);
 
   Sweep swept;
+  for (int t = 0; t < 2; t++) {
+    const std::size_t nf = cm_sweep_num_boundary_faces(w.get(), t);
+    const int32_t *f = cm_sweep_boundary_faces(w.get(), t), *g = cm_sweep_boundary_groups(w.get(), t);
+    if (nf) swept.faces[t].assign(f, f + 4 * nf), swept.face_groups[t].assign(g, g + nf);
+  }
+  swept.groups = cm_sweep_num_boundary_groups(w.get());
   py::dict &out = swept.fields;
   out["nodes"] = copy_array(cm_sweep_nodes(w.get()), cm_sweep_num_nodes(w.get()), 3);
   out["prisms"] = copy_array(cm_sweep_prisms(w.get()), cm_sweep_num_prisms(w.get()), 6);
@@ -944,32 +962,71 @@ py::object morph_to_meshio(const Morph &m, py::object frame)
   return meshes;
 }
 
+// Which cells a call on the sweep means (cells: 'wedge', 'tetra', or None
+// for the tetrahedra where the sweep has them): true for the tetrahedra.
+bool sweep_tets(const Sweep &s, py::object cells, const char *function)
+{
+  bool has_tets = s.cells.contains("tetra");
+  if (!cells.is_none() && !py::isinstance<py::str>(cells))
+    throw py::type_error(std::string(function) + ": cells must be 'wedge', 'tetra' or None");
+  std::string kind = cells.is_none() ? (has_tets ? "tetra" : "wedge") : py::str(cells).cast<std::string>();
+  if (kind == "tetra" && !has_tets)
+    throw py::value_error(std::string(function) + ": this sweep has no tetrahedra (sweep(..., tets=True) makes them)");
+  if (kind != "tetra" && kind != "wedge")
+    throw py::value_error(std::string(function) + ": unknown cells '" + kind + "' (known: 'wedge', 'tetra')");
+  return kind == "tetra";
+}
+
 // The sweep as a meshio.Mesh: the prisms (meshio's wedge is VTK's: the
 // bottom clockwise seen from the top, so a, c, b then d, f, e; with
 // gmsh_order Gmsh's, the prisms as they are, for the writers that want it)
 // or the tetrahedra.
-py::object sweep_mesh(const Sweep &s, py::object cells, bool gmsh_order)
+py::object sweep_mesh(const Sweep &s, py::object cells, bool gmsh_order, const char *function)
 {
-  bool has_tets = s.cells.contains("tetra");
-  std::string kind = cells.is_none() ? (has_tets ? "tetra" : "wedge") : py::str(cells).cast<std::string>();
-  if (!cells.is_none() && !py::isinstance<py::str>(cells))
-    throw py::type_error("to_meshio: cells must be 'wedge', 'tetra' or None");
-  if (kind == "tetra") {
-    if (!has_tets) throw py::value_error("to_meshio: this sweep has no tetrahedra (sweep(..., tets=True) makes them)");
-    return meshio_mesh(s.fields["nodes"], "tetra", s.fields["tets"], "to_meshio");
-  }
-  if (kind != "wedge") throw py::value_error("to_meshio: unknown cells '" + kind + "' (known: 'wedge', 'tetra')");
-  if (gmsh_order) return meshio_mesh(s.fields["nodes"], "wedge", s.fields["prisms"], "write");
+  if (sweep_tets(s, cells, function)) return meshio_mesh(s.fields["nodes"], "tetra", s.fields["tets"], function);
+  if (gmsh_order) return meshio_mesh(s.fields["nodes"], "wedge", s.fields["prisms"], function);
   auto gmsh = py::array_t<int32_t>::ensure(s.fields["prisms"]);
   py::ssize_t p = gmsh.shape(0);
   py::array_t<int32_t> vtk({p, py::ssize_t(6)});
   static const int order[6] = {0, 2, 1, 3, 5, 4};
   for (py::ssize_t i = 0; i < p; i++)
     for (int c = 0; c < 6; c++) vtk.mutable_at(i, c) = gmsh.at(i, order[c]);
-  return meshio_mesh(s.fields["nodes"], "wedge", vtk, "to_meshio");
+  return meshio_mesh(s.fields["nodes"], "wedge", vtk, function);
 }
 
-py::object sweep_to_meshio(const Sweep &s, py::object cells) { return sweep_mesh(s, cells, false); }
+// boundary(cells): group name -> its faces, k x 3 (triangles) or k x 4
+// (the prisms' side quads), in the core's group order.
+py::dict sweep_boundary(const Sweep &s, py::object cells)
+{
+  int t = sweep_tets(s, cells, "boundary");
+  const std::vector<int32_t> &f = s.faces[t], &g = s.face_groups[t];
+  py::dict out;
+  for (std::size_t k = 0, i = 0; k < s.groups; k++) {
+    std::size_t start = i;
+    while (i < g.size() && std::size_t(g[i]) == k) i++;
+    py::ssize_t width = i > start && f[4 * start + 3] >= 0 ? 4 : 3;
+    py::array_t<int32_t> faces({py::ssize_t(i - start), width});
+    for (std::size_t r = start; r < i; r++)
+      for (py::ssize_t c = 0; c < width; c++) faces.mutable_at(py::ssize_t(r - start), c) = f[4 * r + std::size_t(c)];
+    char name[32];
+    cm_sweep_boundary_group_name(k, name);
+    out[name] = faces;
+  }
+  return out;
+}
+
+// The boundary groups as node sets (name -> sorted node indices), as
+// Abaqus decks take boundary conditions.
+py::dict sweep_node_sets(const Sweep &s, bool tets)
+{
+  py::dict sets;
+  py::module_ np = py::module_::import("numpy");
+  for (auto item : sweep_boundary(s, py::str(tets ? "tetra" : "wedge")))
+    sets[item.first] = np.attr("unique")(item.second);
+  return sets;
+}
+
+py::object sweep_to_meshio(const Sweep &s, py::object cells) { return sweep_mesh(s, cells, false, "to_meshio"); }
 
 // The path's extension, lower case ("" without one).
 std::string lower_suffix(py::object path)
@@ -1002,33 +1059,27 @@ bool gmsh_wedge_order(py::object format)
   return f == "gmsh" || f == "gmsh22" || f == "abaqus" || f == "nastran";
 }
 
-// write(path, which, file_format): one mesh through meshio.write, in the
-// format meshio_format chose; Gmsh's files as text, as Gmsh itself writes
-// them. The file is written beside the path under a temporary name and
-// renamed onto it, so that a write that fails leaves no partial file and
-// an existing one as it was (XDMF, whose heavy data file is named after
-// it, is written in place).
-void write_mesh(py::object mesh, py::object path, py::object format)
+// Runs write(written) on a temporary name beside path (ending in suffix
+// after the path's own name), then renames it onto path, so that a write
+// that fails leaves no partial file and an existing one as it was (with
+// in_place, written is path itself: XDMF's heavy data file is named after
+// it). The file gets the mode a new file would get.
+template <class Write>
+void write_atomically(py::object path, bool in_place, const std::string &suffix, Write write)
 {
-  py::object write = import_meshio("write").attr("write");
   py::module_ os = py::module_::import("os");
-  std::string f = format.is_none() ? "" : std::string(py::str(format));
   py::object target = py::module_::import("pathlib").attr("Path")(path);
-  std::string suffix = lower_suffix(path);
-  bool in_place = f == "xdmf" || suffix == ".xdmf" || suffix == ".xmf";
   py::object written = target;
   if (!in_place) {
     py::tuple made = py::module_::import("tempfile")
                          .attr("mkstemp")(py::arg("dir") = target.attr("parent"), py::arg("prefix") = ".",
-                                          py::arg("suffix") = ".compatmesh-" + std::string(py::str(target.attr("name"))));
+                                          py::arg("suffix") = ".compatmesh-" + std::string(py::str(target.attr("name"))) +
+                                                              suffix);
     os.attr("close")(made[0]);
     written = made[1];
   }
   try {
-    if (f == "gmsh" || f == "gmsh22")
-      write(written, mesh, py::arg("file_format") = format, py::arg("binary") = false);
-    else
-      write(written, mesh, py::arg("file_format") = format);
+    write(written);
     if (!in_place) {
       py::object mask = os.attr("umask")(0);  // read, then put back: the mode a new file would get
       os.attr("umask")(mask);
@@ -1037,18 +1088,87 @@ void write_mesh(py::object mesh, py::object path, py::object format)
     }
   } catch (...) {
     if (!in_place && py::bool_(os.attr("path").attr("exists")(written))) os.attr("remove")(written);
-    try {
-      throw;
-    } catch (py::error_already_set &e) {
-      // meshio 5.0's Nastran writer asserts where a double needs more
-      // than its 16-character field
-      if (f != "nastran" || !e.matches(PyExc_AssertionError)) throw;
-      throw std::runtime_error("write: meshio's Nastran writer cannot fit these coordinates in its 16-character "
-                               "fields; `compatmesh sweep ... --out FILE.bdf` writes Nastran through Gmsh");
-    }
+    throw;
   }
 }
 
+// write(path, which, file_format): one mesh through meshio.write, in the
+// format meshio_format chose; Gmsh's files as text, as Gmsh itself writes
+// them; written by write_atomically.
+void write_mesh(py::object mesh, py::object path, py::object format)
+{
+  py::object write = import_meshio("write").attr("write");
+  std::string f = format.is_none() ? "" : std::string(py::str(format));
+  std::string suffix = lower_suffix(path);
+  bool in_place = f == "xdmf" || suffix == ".xdmf" || suffix == ".xmf";
+  try {
+    write_atomically(path, in_place, "", [&](py::object written) {
+      if (f == "gmsh" || f == "gmsh22")
+        write(written, mesh, py::arg("file_format") = format, py::arg("binary") = false);
+      else
+        write(written, mesh, py::arg("file_format") = format);
+    });
+  } catch (py::error_already_set &e) {
+    // meshio 5.0's Nastran writer asserts where a double needs more than
+    // its 16-character field
+    if (f != "nastran" || !e.matches(PyExc_AssertionError)) throw;
+    throw std::runtime_error("write: meshio's Nastran writer cannot fit these coordinates in its 16-character "
+                             "fields; `compatmesh sweep ... --out FILE.bdf` writes Nastran through Gmsh");
+  }
+}
+
+#ifdef CM_PYTHON_HAVE_GMSH
+// The sweep written by Gmsh itself (export/gmsh_volume.h, as the command
+// line writes it): the cells and the boundary's named surfaces, in Gmsh's
+// format version 4.1 or 2.2. Gmsh's state is global to the process, and a
+// user may have a session of their own open (Gmsh 4.8 cannot say whether
+// it is initialised), so the write runs in a child process that starts
+// and ends its own; its output goes to /dev/null, its error comes back
+// through a pipe.
+void write_sweep_gmsh(const Sweep &s, bool tets, const std::string &file, double version)
+{
+  auto nodes = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(s.fields["nodes"]);
+  auto cells = py::array_t<int32_t, py::array::c_style | py::array::forcecast>::ensure(
+      s.fields[tets ? "tets" : "prisms"]);
+  const volume_mesh mesh = {nodes.data(), std::size_t(nodes.shape(0)), cells.data(), std::size_t(cells.shape(0)),
+                            tets ? 1 : 0, s.faces[tets].data(), s.face_groups[tets].data(),
+                            s.face_groups[tets].size(), s.groups};
+  int pipe_fds[2];
+  if (pipe(pipe_fds) != 0) throw std::runtime_error(std::string("write: ") + std::strerror(errno));
+  pid_t child = fork();
+  if (child < 0) {
+    close(pipe_fds[0]), close(pipe_fds[1]);
+    throw std::runtime_error(std::string("write: ") + std::strerror(errno));
+  }
+  if (child == 0) {
+    close(pipe_fds[0]);
+    int quiet = open("/dev/null", O_WRONLY);
+    if (quiet >= 0) dup2(quiet, 1), dup2(quiet, 2);
+    char message[512] = "";
+    const gmsh_write_options options = {version, 0, nullptr};
+    int failed = gmsh_write_volume(file.c_str(), &mesh, &options, message, sizeof message);
+    if (failed && write(pipe_fds[1], message, std::strlen(message)) < 0) failed = 2;
+    _exit(failed ? 1 : 0);
+  }
+  close(pipe_fds[1]);
+  std::string message;
+  int status = 0;
+  {
+    py::gil_scoped_release no_gil;
+    char buffer[256];
+    ssize_t got;
+    while ((got = read(pipe_fds[0], buffer, sizeof buffer)) != 0)
+      if (got > 0) message.append(buffer, std::size_t(got));
+      else if (errno != EINTR) break;
+    close(pipe_fds[0]);
+    while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("write: cannot write " + file + ": " +
+                             (message.empty() ? std::string("the Gmsh writer's process failed") : message));
+}
+#endif
 
 // write()'s choice among `count` meshes: `which`, or the only one.
 py::object the_one(py::object which, size_t count, const char *what)
@@ -1354,15 +1474,45 @@ of Gmsh's a, b, c, d, e, f. Needs meshio.)doc")
           "write",
           [](const Sweep &sw, py::object path, py::object cells, py::object file_format) {
             py::object format = meshio_format(path, file_format);
-            write_mesh(sweep_mesh(sw, cells, gmsh_wedge_order(format)), path, format);
+            std::string f = format.is_none() ? "" : std::string(py::str(format));
+            bool tets = sweep_tets(sw, cells, "write");
+#ifdef CM_PYTHON_HAVE_GMSH
+            if (f == "gmsh" || f == "gmsh22") {
+              // the temporary name ends in .msh, the extension Gmsh goes by
+              write_atomically(path, false, ".msh", [&](py::object written) {
+                write_sweep_gmsh(sw, tets, py::str(written), f == "gmsh" ? 4.1 : 2.2);
+              });
+              return;
+            }
+#endif
+            py::object mesh = sweep_mesh(sw, cells, gmsh_wedge_order(format), "write");
+            if (f == "abaqus") mesh.attr("point_sets") = sweep_node_sets(sw, tets);
+            write_mesh(mesh, path, format);
           },
           py::arg("path"), py::arg("cells") = py::none(), py::arg("file_format") = py::none(),
           R"doc(write(path, cells=None, file_format=None)
 
-Writes to_meshio(cells) with meshio.write: the format from the path's
-extension unless file_format names one of meshio's; .msh is Gmsh's (text,
-format 4.1). Gmsh's, Abaqus's (.inp) and Nastran's formats get the prisms
-in their own corner order (Gmsh's), the others VTK's.)doc")
+Writes the sweep's cells (to_meshio(cells)), the format from the path's
+extension unless file_format names one of meshio's. .msh (file_format
+"gmsh", or "gmsh22" for version 2.2) is written by Gmsh itself, as the
+command line writes it: text format 4.1, the cells in the physical group
+"sweep" and the boundary as surfaces with a physical group each (see
+boundary()). Abaqus's .inp gets the boundary's groups as node sets
+(*NSET). The other formats go through meshio.write with the cells only;
+Abaqus's and Nastran's get the prisms in their own corner order (Gmsh's),
+the others VTK's.)doc")
+      .def("boundary", &sweep_boundary, py::arg("cells") = py::none(),
+           R"doc(boundary(cells=None) -> dict
+
+The volume's boundary, for boundary conditions: group name -> int32 faces
+(node indices), in this order: "bottom" (the first polygon's section),
+"top" (the last), "side" (the wall over the outer loop), "hole_1",
+"hole_2", ... (the wall over each hole). Caps are k x 3 triangles; the
+walls are the prisms' side quads (k x 4: a, b, b', a', where a -> b is a
+boundary edge and primes are one section up) or, for cells="tetra" (the
+default when the sweep has tetrahedra), the k x 3 triangles of the
+tetrahedra's faces there. Every face is ordered so that its normal
+(right-hand rule) points out of the volume.)doc")
       .def("__repr__", [](const Sweep &sw) {
         return "<compatmesh.Sweep: " + std::to_string(py::len(sw.fields["nodes"])) + " nodes, " +
                std::to_string(py::len(sw.fields["prisms"])) + " prisms, " +

@@ -261,3 +261,91 @@ def test_nastran_failure_is_explained(outputs, tmp_path):
         assert (tmp_path / "v.bdf").read_text() == "mine" and os.listdir(tmp_path) == ["v.bdf"]
     else:  # a meshio that writes them: the prisms then in Gmsh's order
         assert np.array_equal(meshio.read(tmp_path / "v.bdf").cells_dict["wedge"], outputs["sweep"].prisms)
+
+
+@pytest.fixture(scope="module")
+def pipe():
+    """Two sections of a pipe: an annulus, and a wider one whose hole moved."""
+    m = 16
+    def circle(r, cx, direction):
+        a = direction * 2 * np.pi * np.arange(m) / m
+        return np.c_[cx + r * np.cos(a), r * np.sin(a)]
+    return compatmesh.sweep([[circle(1.0, 0, 1), circle(0.4, 0, -1)], [circle(1.2, 0, 1), circle(0.3, 0.2, -1)]],
+                            sections=3, height=2.0, tets=True)
+
+
+@pytest.mark.parametrize("cells", ["wedge", "tetra"])
+def test_boundary_faces_close_the_volume(pipe, cells):
+    """boundary(): bottom, top, side and hole_1, each face an unshared face
+    of one cell, ordered as that cell's own face seen from outside (Gmsh's
+    positive wedge and tetrahedron); every unshared cell face is on it."""
+    groups = pipe.boundary(cells)
+    assert list(groups) == ["bottom", "top", "side", "hole_1"]
+    nodes, nv = pipe.nodes, len(pipe.nodes) // len(pipe.section_z)
+    if cells == "tetra":
+        cell_nodes, outward = pipe.tets, [(0, 2, 1), (0, 1, 3), (1, 2, 3), (0, 3, 2)]
+    else:
+        cell_nodes, outward = pipe.prisms, [(0, 2, 1), (3, 4, 5), (0, 1, 4, 3), (1, 2, 5, 4), (2, 0, 3, 5)]
+    owner = {}
+    for cell in cell_nodes:
+        for f in outward:
+            owner.setdefault(tuple(sorted(cell[list(f)])), []).append(tuple(cell[list(f)]))
+    seen = set()
+    for name, faces in groups.items():
+        assert faces.dtype == np.int32
+        assert faces.shape[1] == (4 if cells == "wedge" and name in ("side", "hole_1") else 3), name
+        for face in faces:
+            key = tuple(sorted(face))
+            (mine,) = owner[key]
+            assert any(tuple(face) == mine[i:] + mine[:i] for i in range(len(mine))), (name, face)
+            seen.add(key)
+        z = nodes[faces, 2]
+        if name == "bottom":
+            assert np.all(z == pipe.section_z[0])
+        elif name == "top":
+            assert np.all(z == pipe.section_z[-1])
+        else:  # vertices 0..15 are the outer loop, 16..31 the hole
+            loop = (faces % nv) // 16
+            assert np.all(faces % nv < 32) and np.all(loop == ("side", "hole_1").index(name))
+    assert seen == {key for key, holders in owner.items() if len(holders) == 1}
+
+
+def test_msh_holds_the_boundary_groups(pipe, tmp_path):
+    """.msh written by Gmsh: the cells in "sweep" and one surface per
+    boundary group, as boundary() gives them; a Gmsh session the user has
+    open is left as it was (the write runs in a process of its own)."""
+    import gmsh
+    gmsh.initialize(["-noenv"])
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.model.add("mine")
+        gmsh.model.occ.addBox(0, 0, 0, 1, 1, 1)
+        gmsh.model.occ.synchronize()
+        pipe.write(tmp_path / "tets.msh")
+        pipe.write(tmp_path / "prisms.msh", cells="wedge", file_format="gmsh22")
+        assert gmsh.model.getCurrent() == "mine" and gmsh.model.getEntities(3) == [(3, 1)]
+        for name, cells, version in (("tets.msh", "tetra", "4.1"), ("prisms.msh", "wedge", "2.2")):
+            assert (tmp_path / name).read_text().startswith(f"$MeshFormat\n{version} 0 8\n")
+            gmsh.open(str(tmp_path / name))
+            groups = {gmsh.model.getPhysicalName(d, t): (d, t) for d, t in gmsh.model.getPhysicalGroups()}
+            assert sorted(groups) == ["bottom", "hole_1", "side", "sweep", "top"]
+            expected = pipe.boundary(cells)
+            for group, faces in expected.items():
+                dim, tag = groups[group]
+                (entity,) = gmsh.model.getEntitiesForPhysicalGroup(dim, tag)
+                _, _, face_nodes = gmsh.model.mesh.getElements(2, entity)
+                read = np.asarray(face_nodes[0], dtype=np.int64).reshape(-1, faces.shape[1]) - 1
+                assert np.array_equal(read, faces), group
+    finally:
+        gmsh.finalize()
+    assert sorted(os.listdir(tmp_path)) == ["prisms.msh", "tets.msh"]
+
+
+def test_inp_holds_node_sets(pipe, tmp_path):
+    """Abaqus decks get the boundary groups as node sets, not elements."""
+    pipe.write(tmp_path / "v.inp")
+    back = meshio.read(tmp_path / "v.inp")
+    assert [c.type for c in back.cells] == ["tetra"]
+    assert sorted(back.point_sets) == ["bottom", "hole_1", "side", "top"]
+    for name, faces in pipe.boundary().items():
+        assert np.array_equal(np.sort(back.point_sets[name]), np.unique(faces)), name
