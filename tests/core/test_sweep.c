@@ -30,20 +30,6 @@ static double blended_area(const double *nodes, size_t lo, size_t hi, size_t n, 
     return 0.5 * fabs(a);
 }
 
-static int key_less(const void *pa, const void *pb)
-{
-    const int32_t *a = pa, *b = pb;
-    for (int i = 0; i < 3; i++)
-        if (a[i] != b[i]) return (a[i] > b[i]) - (a[i] < b[i]);
-    return 0;
-}
-
-static int int_less(const void *pa, const void *pb)
-{
-    int32_t a = *(const int32_t *)pa, b = *(const int32_t *)pb;
-    return (a > b) - (a < b);
-}
-
 /* Tet faces: each shared by at most two tets, and the unshared ones are
  * exactly the sweep's boundary (bottom, top, two per side quad). */
 static void check_conforming(const cm_sweep *w, size_t nt, size_t n)
@@ -56,13 +42,13 @@ static void check_conforming(const cm_sweep *w, size_t nt, size_t n)
             int32_t *face = faces + 3 * (4 * t + (size_t)f);
             for (int c = 0, j = 0; c < 4; c++)
                 if (c != f) face[j++] = tet[4 * t + (size_t)c];
-            qsort(face, 3, sizeof *face, int_less);
+            qsort(face, 3, sizeof *face, sb_int_less);
         }
-    qsort(faces, nf, 3 * sizeof *faces, key_less);
+    qsort(faces, nf, 3 * sizeof *faces, sb_key_less);
     size_t open = 0, over = 0;
     for (size_t i = 0; i < nf;) {
         size_t j = i + 1;
-        while (j < nf && key_less(faces + 3 * i, faces + 3 * j) == 0) j++;
+        while (j < nf && sb_key_less(faces + 3 * i, faces + 3 * j) == 0) j++;
         open += j - i == 1, over += j - i > 2;
         i = j;
     }
