@@ -1,8 +1,10 @@
 #include "edge_loop.h"
 
+#include <ctype.h>
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 
 /* Where an edge was read, as the message's prefix. */
@@ -170,4 +172,19 @@ int edge_loops(const char *path, const loop_edge *edges, size_t count, const dou
     }
     *loops = order, *sizes = size, *loop_count = loops_found;
     return CLI_EXIT_OK;
+}
+
+const char *quote_token(const char *token, char *out, size_t size)
+{
+    size_t used = 0;
+    for (const unsigned char *p = (const unsigned char *)token; *p; p++) {
+        if (used + 8 >= size || p - (const unsigned char *)token >= 40) {
+            strcpy(out + used, "...");
+            return out;
+        }
+        if (isprint(*p)) out[used++] = (char)*p;
+        else used += (size_t)snprintf(out + used, size - used, "\\x%02X", *p);
+    }
+    out[used] = '\0';
+    return out;
 }

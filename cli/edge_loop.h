@@ -63,4 +63,9 @@ int edge_loops(const char *path, const loop_edge *edges, size_t count, const dou
                size_t vertex_count,
                int base, int by_index, long **loops, size_t **sizes, size_t *loop_count, cli_error *error);
 
+/* Copies token (text from an input file) into out for an error message:
+ * at most ~40 characters, bytes that are not printable ASCII shown as \xNN
+ * so the message stays one line; returns out. */
+const char *quote_token(const char *token, char *out, size_t size);
+
 #endif

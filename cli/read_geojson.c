@@ -36,7 +36,8 @@ static json_t *the_polygon(json_t *root, const char *path, cli_error *error)
         return NULL;
     }
     if (strcmp(type, "Polygon") != 0) {
-        cli_error_set(error, "%s: a GeoJSON %s; expected a Polygon%s", path, type,
+        char shown[64];
+        cli_error_set(error, "%s: a GeoJSON %s; expected a Polygon%s", path, quote_token(type, shown, sizeof shown),
                       strcmp(type, "MultiPolygon") == 0 ? " (write each of its polygons to a file of its own)" : "");
         return NULL;
     }

@@ -99,23 +99,6 @@ static int read_whole_file(const char *path, size_t max_bytes, char **text, size
     return CLI_EXIT_OK;
 }
 
-/* Copies token into out for an error message: at most ~40 characters, bytes
- * that are not printable ASCII shown as \xNN so the message stays one line. */
-static const char *quote_token(const char *token, char *out, size_t size)
-{
-    size_t used = 0;
-    for (const unsigned char *p = (const unsigned char *)token; *p; p++) {
-        if (used + 8 >= size || p - (const unsigned char *)token >= 40) {
-            strcpy(out + used, "...");
-            return out;
-        }
-        if (isprint(*p)) out[used++] = (char)*p;
-        else used += (size_t)snprintf(out + used, size - used, "\\x%02X", *p);
-    }
-    out[used] = '\0';
-    return out;
-}
-
 static int is_blank(char c)
 {
     return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';

@@ -50,8 +50,8 @@ static const option_spec sweep_options[] = {
     {"report", OPTION_REPORT, "FILE",
      "also write a JSON report: counts, the height used and\n"
      "why, the cells' smallest and largest dihedral angle,\n"
-     "smallest scaled Jacobian, largest aspect ratio and\n"
-     "the prisms' flatness"},
+     "smallest scaled Jacobian, largest aspect ratio, the\n"
+     "prisms' flatness and the boundary groups' face counts"},
     TRIANGULATION_OPTION_SPECS,
     {"help", 'h', NULL, "show this help and exit"},
 };

@@ -286,6 +286,18 @@ int write_sweep_report(const char *path, const sweep_report_info *info, cli_erro
     set_real(&t, quality, "flat_ratio", CM_SWEEP_FLAT_RATIO);
     set_count(&t, quality, "flat_prisms", q.flat_prisms);
     set(&t, root, "quality", quality);
+    /* The boundary's groups, as the .msh file's surfaces and the .inp
+     * file's node sets name them, with their face counts. */
+    json_t *boundary = keep(&t, json_object());
+    const int32_t *groups = cm_sweep_boundary_groups(sweep, info->tets);
+    for (size_t g = 0, i = 0; g < cm_sweep_num_boundary_groups(sweep); g++) {
+        size_t start = i;
+        while (i < cm_sweep_num_boundary_faces(sweep, info->tets) && (size_t)groups[i] == g) i++;
+        char name[32];
+        cm_sweep_boundary_group_name(g, name);
+        set_count(&t, boundary, name, i - start);
+    }
+    set(&t, root, "boundary_faces", boundary);
     set(&t, root, "warnings", info->warning ? text_list(&t, &info->warning, 1) : keep(&t, json_array()));
     return dump(&t, root, path, error);
 }

@@ -64,6 +64,8 @@ ERRORS = {
     "z not constant": (json.dumps({"type": "Polygon", "coordinates": [[[0, 0, 2], [1, 0, 2], [1, 1, 5], [0, 1, 2]]]}),
                        r"a\.geojson: vertex 2: z = 5 differs from z = 2 of vertex 0"),
     "duplicate key": ('{"type": "Polygon", "type": "Point", "coordinates": []}', r"a\.geojson:1: duplicate object key"),
+    "type with a newline": (json.dumps({"type": "Poly\ngon", "coordinates": []}),
+                            r"a\.geojson: a GeoJSON Poly\\x0Agon; expected a Polygon$"),
     "self-intersecting": (json.dumps({"type": "Polygon", "coordinates": [[[0, 0], [1, 1], [1, 0], [0, 1], [0, 0]]]}),
                           r"a\.geojson: vertex \d: .*cross or touch"),
 }

@@ -3,6 +3,7 @@ element's Jacobian positive across its volume) and by meshio (counts and
 connectivity), the volume equal to the integral of the section areas, the
 boundary's named surfaces in .msh files (faces of the cells, outward, each
 on its own section or loop), bad input refused without leaving a file."""
+import json
 import math
 import os
 import re
@@ -148,7 +149,7 @@ def test_msh_boundary_groups(cm, tmp_path, gmsh_session, name, kind, version):
     loop_of = write_boundary_pair(tmp_path, name)
     extra = ["--tets"] if kind == "tet" else []
     result = cm("sweep", "a.xy", "b.xy", "--sections", 4, "--height", 2.5, "--msh-version", version,
-                "-o", "out.msh", *extra, cwd=tmp_path)
+                "-o", "out.msh", "--report", "report.json", *extra, cwd=tmp_path)
     assert result.returncode == 0, result.stderr
     sections, nodes, cells, _ = reported(result.stdout)
     nv = nodes // sections
@@ -174,13 +175,14 @@ def test_msh_boundary_groups(cm, tmp_path, gmsh_session, name, kind, version):
     def rotations(face):
         return {tuple(face[i:]) + tuple(face[:i]) for i in range(len(face))}
 
-    seen = set()
+    seen, counts = set(), {}
     for group in expected[:-1]:
         dim, tag = names[group]
         assert dim == 2
         for entity in gmsh.model.getEntitiesForPhysicalGroup(dim, tag):
             for element_type, _, flat in zip(*gmsh.model.mesh.getElements(2, entity)):
                 size = {2: 3, 3: 4}[element_type]
+                counts[group] = counts.get(group, 0) + len(flat) // size
                 assert size == (4 if kind == "prism" and group not in ("bottom", "top") else 3), group
                 for face in np.reshape(flat, (-1, size)):
                     key = tuple(sorted(face))
@@ -202,6 +204,9 @@ def test_msh_boundary_groups(cm, tmp_path, gmsh_session, name, kind, version):
     # Every face of a cell that no other cell shares is on the boundary.
     unshared = {key for key, holders in owner.items() if len(holders) == 1}
     assert unshared == seen
+    # The report names the same groups with the same counts.
+    report = json.loads((tmp_path / "report.json").read_text())
+    assert report["boundary_faces"] == counts and list(report["boundary_faces"]) == expected[:-1]
 
 
 def section_area_integral(points, n, nv):
