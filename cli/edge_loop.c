@@ -174,11 +174,11 @@ int edge_loops(const char *path, const loop_edge *edges, size_t count, const dou
     return CLI_EXIT_OK;
 }
 
-const char *quote_token(const char *token, char *out, size_t size)
+const char *quote_token(const char *token, size_t max_chars, char *out, size_t size)
 {
     size_t used = 0;
     for (const unsigned char *p = (const unsigned char *)token; *p; p++) {
-        if (used + 8 >= size || p - (const unsigned char *)token >= 40) {
+        if (used + 8 >= size || (size_t)(p - (const unsigned char *)token) >= max_chars) {
             strcpy(out + used, "...");
             return out;
         }

@@ -64,8 +64,8 @@ int edge_loops(const char *path, const loop_edge *edges, size_t count, const dou
                int base, int by_index, long **loops, size_t **sizes, size_t *loop_count, cli_error *error);
 
 /* Copies token (text from an input file) into out for an error message:
- * at most ~40 characters, bytes that are not printable ASCII shown as \xNN
- * so the message stays one line; returns out. */
-const char *quote_token(const char *token, char *out, size_t size);
+ * its first max_chars bytes (then "..."), those that are not printable
+ * ASCII shown as \xNN so the message stays one line; returns out. */
+const char *quote_token(const char *token, size_t max_chars, char *out, size_t size);
 
 #endif

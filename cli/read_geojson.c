@@ -37,7 +37,7 @@ static json_t *the_polygon(json_t *root, const char *path, cli_error *error)
     }
     if (strcmp(type, "Polygon") != 0) {
         char shown[64];
-        cli_error_set(error, "%s: a GeoJSON %s; expected a Polygon%s", path, quote_token(type, shown, sizeof shown),
+        cli_error_set(error, "%s: a GeoJSON %s; expected a Polygon%s", path, quote_token(type, 40, shown, sizeof shown),
                       strcmp(type, "MultiPolygon") == 0 ? " (write each of its polygons to a file of its own)" : "");
         return NULL;
     }
@@ -121,7 +121,9 @@ int parse_geojson(const char *path, const char *text, size_t length, polygon_inp
             cli_error_set(error, "%s: out of memory", path);
             return CLI_EXIT_INTERNAL;
         }
-        cli_error_set(error, "%s:%d: %s", path, parse.line, parse.text);
+        char shown[4 * JSON_ERROR_TEXT_LENGTH]; /* jansson quotes the text near the error as it is */
+        cli_error_set(error, "%s:%d: %s", path, parse.line,
+                      quote_token(parse.text, JSON_ERROR_TEXT_LENGTH, shown, sizeof shown));
         return CLI_EXIT_USAGE;
     }
     json_t *geometry = the_polygon(root, path, error);

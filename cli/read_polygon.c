@@ -152,12 +152,12 @@ static int parse_coordinate(const char *field, double *value, const char *path,
     double parsed = strtod(field, &end);
     if (end == field || *end != '\0') {
         cli_error_set(error, "%s:%ld: '%s' is not a number", path, line,
-                      quote_token(field, shown, sizeof shown));
+                      quote_token(field, 40, shown, sizeof shown));
         return -1;
     }
     if (!isfinite(parsed)) {
         cli_error_set(error, "%s:%ld: '%s' is %s", path, line,
-                      quote_token(field, shown, sizeof shown),
+                      quote_token(field, 40, shown, sizeof shown),
                       errno == ERANGE ? "too large for a double"
                                       : "not a finite number");
         return -1;
@@ -365,14 +365,14 @@ static int obj_loop_index(obj_state *state, const char *field, long number, long
     long value = strtol(field, &end, 10);
     if (end == field || (*end != '\0' && *end != '/') || errno == ERANGE) {
         cli_error_set(state->error, "%s:%ld: '%s' is not a vertex index", state->path,
-                      number, quote_token(field, shown, sizeof shown));
+                      number, quote_token(field, 40, shown, sizeof shown));
         return -1;
     }
     if (value < 0) value += (long)state->vertices.count + 1;
     if (value <= 0) {
         cli_error_set(state->error, "%s:%ld: vertex index %s does not name a vertex "
                       "(indices start at 1)", state->path, number,
-                      quote_token(field, shown, sizeof shown));
+                      quote_token(field, 40, shown, sizeof shown));
         return -1;
     }
     *index = value - 1;

@@ -66,6 +66,7 @@ ERRORS = {
     "duplicate key": ('{"type": "Polygon", "type": "Point", "coordinates": []}', r"a\.geojson:1: duplicate object key"),
     "type with a newline": (json.dumps({"type": "Poly\ngon", "coordinates": []}),
                             r"a\.geojson: a GeoJSON Poly\\x0Agon; expected a Polygon$"),
+    "raw newline after a backslash": ('{"type": "Poly\\\n', r"a\.geojson:\d+: .*\\x0A"),
     "self-intersecting": (json.dumps({"type": "Polygon", "coordinates": [[[0, 0], [1, 1], [1, 0], [0, 1], [0, 0]]]}),
                           r"a\.geojson: vertex \d: .*cross or touch"),
 }
