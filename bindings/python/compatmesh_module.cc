@@ -1105,6 +1105,8 @@ void write_mesh(py::object mesh, py::object path, py::object format)
     write_atomically(path, in_place, "", [&](py::object written) {
       if (f == "gmsh" || f == "gmsh22")
         write(written, mesh, py::arg("file_format") = format, py::arg("binary") = false);
+      else if (f == "abaqus")  // CalculiX reads at most 21 characters a number: 14 digits, as Gmsh writes them
+        write(written, mesh, py::arg("file_format") = format, py::arg("float_fmt") = ".14g");
       else
         write(written, mesh, py::arg("file_format") = format);
     });
@@ -1486,7 +1488,13 @@ of Gmsh's a, b, c, d, e, f. Needs meshio.)doc")
             }
 #endif
             py::object mesh = sweep_mesh(sw, cells, gmsh_wedge_order(format), "write");
-            if (f == "abaqus") mesh.attr("point_sets") = sweep_node_sets(sw, tets);
+            if (f == "abaqus") {  // as the command line's deck: the cells in ELSET sweep, the groups' NSETs
+              py::dict cell_sets;
+              cell_sets["sweep"] = py::make_tuple(py::module_::import("numpy").attr("arange")(
+                  py::len(sw.fields[tets ? "tets" : "prisms"])));
+              mesh.attr("cell_sets") = cell_sets;
+              mesh.attr("point_sets") = sweep_node_sets(sw, tets);
+            }
             write_mesh(mesh, path, format);
           },
           py::arg("path"), py::arg("cells") = py::none(), py::arg("file_format") = py::none(),

@@ -17,17 +17,25 @@ def test_readme_example_runs():
 def test_cad_sections_example_runs(tmp_path):
     """docs/examples/cad_sections.py: two CAD sections with a bolt hole,
     their boundaries meshed by Gmsh, paired, swept and read back by Gmsh
-    with every prism positive."""
+    with every prism positive and the boundary's four named surfaces, then
+    solved by CalculiX."""
     script = EXAMPLE.parent / "cad_sections.py"
     run = subprocess.run([sys.executable, str(script), str(tmp_path)], capture_output=True, text=True, timeout=300)
     assert run.returncode == 0, run.stderr
     lines = run.stdout.splitlines()
-    assert len(lines) == 3, run.stdout
+    assert len(lines) == 5, run.stdout
     assert lines[0].startswith("loops: [") and lines[0].count("[") == 2  # outer loop and hole, per section
     angle = float(lines[1].split("smallest angle ")[1].split()[0])
     assert angle >= 20  # well-shaped: both sections' corners are right angles or rounded
     prisms, determinant = int(lines[2].split()[0]), float(lines[2].rsplit(" ", 1)[1])
     assert prisms > 0 and determinant > 0 and (tmp_path / "bracket.msh").exists()
+    groups = dict(part.rsplit(" ", 2)[:2] for part in lines[3].removeprefix("boundary: ").split(", "))
+    assert sorted(groups) == ["bottom", "hole_1", "side", "top"] and groups["bottom"] == groups["top"]
+    # Steel (E = 210 GPa) about 720 mm2 in section, 60 mm tall, pushed by
+    # 0.05 mm: E A delta / L is about 126 kN; the taper and Poisson's ratio
+    # move it, not its order.
+    held = float(lines[4].removeprefix("CalculiX: the bottom holds ").removesuffix(" kN"))
+    assert 60 < abs(held) < 250
 
 
 def readme_code_block(language):

@@ -342,9 +342,16 @@ def test_msh_holds_the_boundary_groups(pipe, tmp_path):
 
 
 def test_inp_holds_node_sets(pipe, tmp_path):
-    """Abaqus decks get the boundary groups as node sets, not elements."""
+    """Abaqus decks get the cells in the element set "sweep" and the
+    boundary groups as node sets, not elements; every number fits the 21
+    characters CalculiX reads."""
     pipe.write(tmp_path / "v.inp")
+    text = (tmp_path / "v.inp").read_text()
+    nodes = text.split("*NODE\n")[1].split("*")[0].splitlines()
+    assert len(nodes) == len(pipe.nodes) and max(len(f.strip()) for line in nodes for f in line.split(",")) <= 21
     back = meshio.read(tmp_path / "v.inp")
+    assert np.allclose(back.points, pipe.nodes, rtol=1e-13, atol=1e-13)
+    assert list(back.cell_sets) == ["sweep"] and np.array_equal(back.cell_sets["sweep"][0], np.arange(len(pipe.tets)))
     assert [c.type for c in back.cells] == ["tetra"]
     assert sorted(back.point_sets) == ["bottom", "hole_1", "side", "top"]
     for name, faces in pipe.boundary().items():
