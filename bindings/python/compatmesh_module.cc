@@ -10,6 +10,7 @@
 #include <gmsh_volume.h>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #endif
@@ -1153,19 +1154,34 @@ void write_sweep_gmsh(const Sweep &s, bool tets, const std::string &file, double
     _exit(failed ? 1 : 0);
   }
   close(pipe_fds[1]);
+  // The child's reply, without the GIL; an interrupt (KeyboardInterrupt)
+  // stops the child and is raised, and the caller removes the temporary.
   std::string message;
+  bool interrupted = false;
+  for (;;) {
+    char buffer[256];
+    ssize_t got;
+    {
+      py::gil_scoped_release no_gil;
+      got = read(pipe_fds[0], buffer, sizeof buffer);
+    }
+    if (got > 0) {
+      message.append(buffer, std::size_t(got));
+      continue;
+    }
+    if (got < 0 && errno == EINTR && PyErr_CheckSignals() == 0) continue;
+    interrupted = got < 0 && errno == EINTR;
+    break;
+  }
+  close(pipe_fds[0]);
+  if (interrupted) kill(child, SIGKILL);
   int status = 0;
   {
     py::gil_scoped_release no_gil;
-    char buffer[256];
-    ssize_t got;
-    while ((got = read(pipe_fds[0], buffer, sizeof buffer)) != 0)
-      if (got > 0) message.append(buffer, std::size_t(got));
-      else if (errno != EINTR) break;
-    close(pipe_fds[0]);
     while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
     }
   }
+  if (interrupted) throw py::error_already_set();
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw std::runtime_error("write: cannot write " + file + ": " +
                              (message.empty() ? std::string("the Gmsh writer's process failed") : message));

@@ -356,3 +356,31 @@ def test_inp_holds_node_sets(pipe, tmp_path):
     assert sorted(back.point_sets) == ["bottom", "hole_1", "side", "top"]
     for name, faces in pipe.boundary().items():
         assert np.array_equal(np.sort(back.point_sets[name]), np.unique(faces)), name
+
+
+INTERRUPTED_WRITE = """
+import os, signal, sys, threading
+import numpy as np
+import compatmesh
+angles = np.linspace(0, 2 * np.pi, 300, endpoint=False)
+disc = np.c_[np.cos(angles), np.sin(angles)]
+volume = compatmesh.sweep([disc, 1.5 * disc], sections=40, tets=True)
+main = threading.get_ident()
+threading.Timer(0.02, lambda: signal.pthread_kill(main, signal.SIGINT)).start()
+try:
+    volume.write(os.path.join(sys.argv[1], "v.msh"))
+except KeyboardInterrupt:
+    print("interrupted")
+"""
+
+
+def test_interrupted_msh_write_leaves_nothing(tmp_path):
+    """Ctrl-C while Gmsh writes a .msh (in its child process, which loads
+    Gmsh for longer than the 0.02 s the interrupt waits): KeyboardInterrupt,
+    the child stopped, no file and no temporary left."""
+    import subprocess
+    import sys
+    run = subprocess.run([sys.executable, "-c", INTERRUPTED_WRITE, str(tmp_path)], capture_output=True, text=True,
+                         timeout=120)
+    assert run.returncode == 0 and run.stdout.strip() == "interrupted", run.stdout + run.stderr
+    assert os.listdir(tmp_path) == []
