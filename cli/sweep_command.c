@@ -24,7 +24,7 @@
 #include "write_volume.h"
 
 enum { OPTION_HEIGHT = OPTION_TRIANGULATION_END, OPTION_HEIGHTS, OPTION_TETS, OPTION_MSH_VERSION, OPTION_REPORT,
-       MAX_SECTIONS = 10000 };
+       OPTION_WALL_CORNERS, MAX_SECTIONS = 10000 };
 
 static const option_spec sweep_options[] = {
     {"output", 'o', "FILE",
@@ -47,6 +47,11 @@ static const option_spec sweep_options[] = {
                                 "conforming, diagonals chosen against slivers)\n"
                                 "instead of prisms"},
     {"msh-version", OPTION_MSH_VERSION, "V", ".msh format version: 4.1 (default) or 2.2"},
+    {"wall-corners", OPTION_WALL_CORNERS, "DEG",
+     "split the boundary's walls at the corners where an\n"
+     "input's boundary turns by more than DEG degrees (0 to\n"
+     "180), one group per face of a swept profile: side_1,\n"
+     "side_2, ..., hole_1_1, ...; default: one wall per loop"},
     {"report", OPTION_REPORT, "FILE",
      "also write a JSON report: counts, the height used and\n"
      "why, the cells' smallest and largest dihedral angle,\n"
@@ -66,6 +71,7 @@ typedef struct sweep_args {
     size_t heights_count;
     int tets;
     double msh_version;
+    double wall_corner_deg; /* 0: one wall per loop */
     const char *report;
     int help;
 } sweep_args;
@@ -144,6 +150,13 @@ static int handle_sweep_option(void *context, int key, const char *value, cli_er
         return CLI_EXIT_OK;
     case OPTION_REPORT:
         args->report = value;
+        return CLI_EXIT_OK;
+    case OPTION_WALL_CORNERS:
+        args->wall_corner_deg = parse_number(value, &end);
+        if (!(args->wall_corner_deg > 0 && args->wall_corner_deg < 180) || *end != '\0') {
+            cli_error_set(error, "sweep: --wall-corners '%s' is not an angle between 0 and 180 degrees", value);
+            return CLI_EXIT_USAGE;
+        }
         return CLI_EXIT_OK;
     case OPTION_MSH_VERSION:
         if (strcmp(value, "4.1") == 0) args->msh_version = 4.1;
@@ -300,6 +313,7 @@ static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morp
     cm_sweep_options_init(&options);
     options.sections = args->sections;
     options.tets = args->tets;
+    options.wall_corner_deg = args->wall_corner_deg;
     options.progress = cli_progress;
     /* options.height stays 0 unless given: the core's default, the largest
      * bounding-box diagonal of the sections. */
@@ -354,8 +368,13 @@ static int sweep(const sweep_args *args, cli_error *error)
                             cm_sweep_boundary_faces(sweep, args->tets),
                             cm_sweep_boundary_groups(sweep, args->tets),
                             cm_sweep_num_boundary_faces(sweep, args->tets),
-                            cm_sweep_num_boundary_groups(sweep)};
-        code = write_volume(args->output, &mesh, args->msh_version, error);
+                            cm_sweep_num_boundary_groups(sweep), NULL};
+        const char **names = malloc((mesh.num_groups + 1) * sizeof *names);
+        for (size_t g = 0; names && g < mesh.num_groups; g++) names[g] = cm_sweep_boundary_group_name(sweep, g);
+        mesh.group_names = names;
+        if (names) code = write_volume(args->output, &mesh, args->msh_version, error);
+        else cli_error_set(error, "out of memory"), code = CLI_EXIT_INTERNAL;
+        free(names);
         double volume = cm_sweep_volume(sweep);
         char volume_text[64] = "volume beyond the double range";
         if (isfinite(volume)) format_double(volume_text + sprintf(volume_text, "volume "), volume);

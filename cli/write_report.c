@@ -293,9 +293,7 @@ int write_sweep_report(const char *path, const sweep_report_info *info, cli_erro
     for (size_t g = 0, i = 0; g < cm_sweep_num_boundary_groups(sweep); g++) {
         size_t start = i;
         while (i < cm_sweep_num_boundary_faces(sweep, info->tets) && (size_t)groups[i] == g) i++;
-        char name[32];
-        cm_sweep_boundary_group_name(g, name);
-        set_count(&t, boundary, name, i - start);
+        set_count(&t, boundary, cm_sweep_boundary_group_name(sweep, g), i - start);
     }
     set(&t, root, "boundary_faces", boundary);
     set(&t, root, "warnings", info->warning ? text_list(&t, &info->warning, 1) : keep(&t, json_array()));

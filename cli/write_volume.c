@@ -11,7 +11,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "compatmesh/compatmesh.h"
 #include "interrupt.h"
 #include "write_vtu.h"
 #ifdef CM_HAVE_GMSH
@@ -150,9 +149,7 @@ static int add_node_sets(const char *temporary, const char *path, const volume_m
         for (size_t i = 0; i < mesh->num_faces; i++)
             if ((size_t)mesh->face_groups[i] == g)
                 for (int c = 0; c < 4 && mesh->faces[4 * i + c] >= 0; c++) member[mesh->faces[4 * i + c]] = 1;
-        char name[32];
-        cm_sweep_boundary_group_name(g, name);
-        ok = fprintf(file, "*NSET, NSET=%s\n", name) > 0;
+        ok = fprintf(file, "*NSET, NSET=%s\n", mesh->group_names[g]) > 0;
         size_t on_line = 0;
         for (size_t v = 0; ok && v < mesh->num_nodes; v++) {
             if (!member[v]) continue;

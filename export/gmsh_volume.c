@@ -8,8 +8,6 @@
 #include <string.h>
 #include <strings.h>
 
-#include "compatmesh/compatmesh.h"
-
 #define GMSH_FUNCTIONS(X)                                                                        \
     X(Initialize) X(Finalize) X(Free) X(LoggerGetLastError) X(ModelAdd) X(ModelAddDiscreteEntity)  \
     X(ModelAddPhysicalGroup) X(ModelMeshAddElementsByType) X(ModelMeshAddNodes)                   \
@@ -84,10 +82,8 @@ static int add_boundary_group(const volume_mesh *mesh, size_t g, size_t *next_ta
             gmsh.ModelMeshAddElementsByType(surface, corners == 3 ? 2 : 3, tags, count, nodes,
                                            (size_t)corners * count, &ierr);
     }
-    char name[32];
-    cm_sweep_boundary_group_name(g, name);
     if (!ierr) gmsh.ModelAddPhysicalGroup(2, &surface, 1, surface, &ierr);
-    if (!ierr) gmsh.ModelSetPhysicalName(2, surface, name, &ierr);
+    if (!ierr) gmsh.ModelSetPhysicalName(2, surface, mesh->group_names[g], &ierr);
     return ierr;
 }
 

@@ -27,7 +27,7 @@ typedef struct gmsh_write_options {
  * (.msh, .vtk, .inp, .bdf, .unv): the cells as one discrete volume with
  * the physical group "sweep", numbered from 1 as given. A .msh file also
  * gets the boundary: one discrete surface per group bounding the volume,
- * each with a physical group named by cm_sweep_boundary_group_name (Gmsh
+ * each with a physical group of the group's name (Gmsh
  * 4.8 writes surface groups to the other formats as shell elements, which
  * would join the analysis). Returns 0, or -1 with a one-line reason in
  * message (size bytes). */

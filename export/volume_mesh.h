@@ -20,6 +20,7 @@ typedef struct volume_mesh {
      * none. */
     const int32_t *faces, *face_groups;
     size_t num_faces, num_groups;
+    const char *const *group_names; /* num_groups (cm_sweep_boundary_group_name) */
 } volume_mesh;
 
 #endif

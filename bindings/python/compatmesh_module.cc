@@ -512,7 +512,7 @@ struct Sweep : Output {
   // the 4th -1 for a triangle) and their groups, over the prisms [0] and
   // the tetrahedra [1].
   std::vector<int32_t> faces[2], face_groups[2];
-  std::size_t groups = 0;
+  std::vector<std::string> group_names;  // cm_sweep_boundary_group_name
 };
 
 Result make_result(const cm_result *r, const std::vector<Polygon> &polygons)
@@ -809,7 +809,7 @@ py::list sections_own_z(py::object polygons_in, std::vector<double> *z)
 }
 
 Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::object heights,
-               bool tets, py::kwargs kwargs)
+               bool tets, py::object wall_corner_deg, py::kwargs kwargs)
 {
   cm_sweep_options options;
   cm_sweep_options_init(&options);
@@ -818,6 +818,7 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
     throw py::value_error("sweep: sections must be at most " + std::to_string(kMaxSections) + ", got " +
                           std::to_string(options.sections));
   options.tets = tets ? 1 : 0;
+  options.wall_corner_deg = number_from<double>(wall_corner_deg, "wall_corner_deg");
   if (!height.is_none()) {
     options.height = number_from<double>(height, "height");
     // 0 would ask the core for its default height: a given height must be positive.
@@ -862,7 +863,8 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
     const int32_t *f = cm_sweep_boundary_faces(w.get(), t), *g = cm_sweep_boundary_groups(w.get(), t);
     if (nf) swept.faces[t].assign(f, f + 4 * nf), swept.face_groups[t].assign(g, g + nf);
   }
-  swept.groups = cm_sweep_num_boundary_groups(w.get());
+  for (std::size_t g = 0; g < cm_sweep_num_boundary_groups(w.get()); g++)
+    swept.group_names.push_back(cm_sweep_boundary_group_name(w.get(), g));
   py::dict &out = swept.fields;
   out["nodes"] = copy_array(cm_sweep_nodes(w.get()), cm_sweep_num_nodes(w.get()), 3);
   out["prisms"] = copy_array(cm_sweep_prisms(w.get()), cm_sweep_num_prisms(w.get()), 6);
@@ -1002,16 +1004,14 @@ py::dict sweep_boundary(const Sweep &s, py::object cells)
   int t = sweep_tets(s, cells, "boundary");
   const std::vector<int32_t> &f = s.faces[t], &g = s.face_groups[t];
   py::dict out;
-  for (std::size_t k = 0, i = 0; k < s.groups; k++) {
+  for (std::size_t k = 0, i = 0; k < s.group_names.size(); k++) {
     std::size_t start = i;
     while (i < g.size() && std::size_t(g[i]) == k) i++;
     py::ssize_t width = i > start && f[4 * start + 3] >= 0 ? 4 : 3;
     py::array_t<int32_t> faces({py::ssize_t(i - start), width});
     for (std::size_t r = start; r < i; r++)
       for (py::ssize_t c = 0; c < width; c++) faces.mutable_at(py::ssize_t(r - start), c) = f[4 * r + std::size_t(c)];
-    char name[32];
-    cm_sweep_boundary_group_name(k, name);
-    out[name] = faces;
+    out[py::str(s.group_names[k])] = faces;
   }
   return out;
 }
@@ -1133,9 +1133,11 @@ void write_sweep_gmsh(const Sweep &s, bool tets, const std::string &file, double
   auto nodes = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(s.fields["nodes"]);
   auto cells = py::array_t<int32_t, py::array::c_style | py::array::forcecast>::ensure(
       s.fields[tets ? "tets" : "prisms"]);
+  std::vector<const char *> names;
+  for (const std::string &name : s.group_names) names.push_back(name.c_str());
   const volume_mesh mesh = {nodes.data(), std::size_t(nodes.shape(0)), cells.data(), std::size_t(cells.shape(0)),
                             tets ? 1 : 0, s.faces[tets].data(), s.face_groups[tets].data(),
-                            s.face_groups[tets].size(), s.groups};
+                            s.face_groups[tets].size(), names.size(), names.data()};
   int pipe_fds[2];
   if (pipe(pipe_fds) != 0) throw std::runtime_error(std::string("write: ") + std::strerror(errno));
   pid_t child = fork();
@@ -1650,8 +1652,8 @@ the core's message for a bad t, RuntimeError if a convex section failed its
 exact check.)doc");
 
   m.def("sweep", &sweep, py::arg("polygons"), py::arg("sections") = 11, py::arg("height") = py::none(),
-        py::arg("heights") = py::none(), py::arg("tets") = false,
-        R"doc(sweep(polygons, sections=11, height=None, heights=None, tets=False, **options) -> Sweep
+        py::arg("heights") = py::none(), py::arg("tets") = false, py::arg("wall_corner_deg") = 0.0,
+        R"doc(sweep(polygons, sections=11, height=None, heights=None, tets=False, wall_corner_deg=0, **options) -> Sweep
 
 The volume between the n x 2 polygons: sections of their convex morph
 stacked at increasing z and joined into 6-node prisms, each checked exactly
@@ -1661,7 +1663,10 @@ evenly spaced over height (default: the largest diagonal of the polygons'
 bounding boxes). Polygons given n x 3 in planes z = constant (slices of a
 model) lie at their own z unless height or heights is given. sections: per pair of consecutive
 polygons, both ends included, >= 2. tets: also split every prism into 3
-tetrahedra with conforming faces. Keyword options as for triangulate().
+tetrahedra with conforming faces. wall_corner_deg: split the boundary's
+walls (boundary()) at the corners where a polygon's boundary turns by more
+than this many degrees (0, the default: one wall per loop). Keyword
+options as for triangulate().
 Returns a Sweep (its fields also by key, as in a dict): nodes (N x 3 float64;
 node s * nv + v is vertex v of section s), prisms (P x 6 int32, Gmsh wedge
 order: bottom counter-clockwise seen from +z, then top), tets (T x 4 int32,

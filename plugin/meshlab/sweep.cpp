@@ -146,7 +146,8 @@ SweptVolume swept_volume(SectionMorph &morph, int sections)
   const std::size_t faces = cm_sweep_num_boundary_faces(sweep, 1);
   volume.faces.assign(cm_sweep_boundary_faces(sweep, 1), cm_sweep_boundary_faces(sweep, 1) + 4 * faces);
   volume.face_groups.assign(cm_sweep_boundary_groups(sweep, 1), cm_sweep_boundary_groups(sweep, 1) + faces);
-  volume.groups = cm_sweep_num_boundary_groups(sweep);
+  for (std::size_t g = 0; g < cm_sweep_num_boundary_groups(sweep); g++)
+    volume.group_names.push_back(cm_sweep_boundary_group_name(sweep, g));
   volume.sections = cm_sweep_num_sections(sweep);
   cm_sweep_quality quality;
   cm_sweep_get_quality(sweep, &quality);
@@ -174,9 +175,11 @@ void write_msh(const SweptVolume &volume, const std::string &path)
   // Gmsh with its own symbols first (deep_bind): Gmsh and MeshLab's
   // libmeshlab-common both define a class PluginManager, and bound to
   // MeshLab's, Gmsh crashes in gmshFinalize.
+  std::vector<const char *> names;
+  for (const std::string &name : volume.group_names) names.push_back(name.c_str());
   const volume_mesh mesh = {volume.nodes.data(), volume.nodes.size() / 3, volume.tets.data(), volume.tets.size() / 4,
                             1, volume.faces.data(), volume.face_groups.data(), volume.face_groups.size(),
-                            volume.groups};
+                            names.size(), names.data()};
   const gmsh_write_options options = {4.1, 1, nullptr};
   char message[512] = "";
   const int ierr = gmsh_write_volume(temporary.c_str(), &mesh, &options, message, sizeof message);

@@ -75,7 +75,7 @@ struct SweptVolume {
   // The boundary's triangles (4 node indices each, the 4th -1), outward,
   // and their groups: cm_sweep_boundary_faces of the tetrahedra.
   std::vector<int32_t> faces, face_groups;
-  std::size_t groups = 0;
+  std::vector<std::string> group_names;  // cm_sweep_boundary_group_name
   std::size_t sections = 0;   // with those the sweep inserted
   double min_dihedral_deg = 0;
 };

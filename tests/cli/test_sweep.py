@@ -114,6 +114,57 @@ def write_boundary_pair(tmp_path, name):
     return [0] * 24 + [1] * 24
 
 
+def square(cx, cy, h, sx=1.0, clockwise=False, m=16):
+    """A square loop of m vertices (m / 4 a side) from its lower left corner."""
+    corners = [(-1, -1), (1, -1), (1, 1), (-1, 1)]
+    if clockwise:
+        corners = corners[:1] + corners[:0:-1]
+    side = m // 4
+    return [(cx + sx * h * ((1 - i % side / side) * corners[i // side][0] + i % side / side * corners[(i // side + 1) % 4][0]),
+             cy + h * ((1 - i % side / side) * corners[i // side][1] + i % side / side * corners[(i // side + 1) % 4][1]))
+            for i in range(m)]
+
+
+@pytest.mark.parametrize("kind", ["prism", "tet"])
+def test_wall_corners_give_a_group_per_face(cm, tmp_path, gmsh_session, kind):
+    """--wall-corners 45 on a square plate with a square hole swept to a
+    wider one: side_1 .. side_4 and hole_1_1 .. hole_1_4, each one face of
+    the profile (5 nodes on one side of the square at each end; the morph
+    bows the sections between), in the .msh file, the .inp file's node
+    sets and the report; an angle out of range is a usage error."""
+    for path, (outer, hole) in zip(("a.xy", "b.xy"), [(square(0, 0, 1), square(0, 0, 0.4, clockwise=True)),
+                                                       (square(0, 0, 1, 1.5), square(0.3, 0.1, 0.3, clockwise=True))]):
+        (tmp_path / path).write_text("".join(f"{x!r} {y!r}\n" for x, y in outer) + ">\n" +
+                                     "".join(f"{x!r} {y!r}\n" for x, y in hole))
+    extra = ["--tets"] if kind == "tet" else []
+    walls = [f"side_{i}" for i in range(1, 5)] + [f"hole_1_{i}" for i in range(1, 5)]
+    for out in ("out.msh", "out.inp"):
+        result = cm("sweep", "a.xy", "b.xy", "--sections", 3, "--height", 2, "--wall-corners", 45, "-o", out,
+                    "--report", "r.json", *extra, cwd=tmp_path)
+        assert result.returncode == 0, result.stderr
+        assert list(json.loads((tmp_path / "r.json").read_text())["boundary_faces"]) == ["bottom", "top"] + walls
+    gmsh.open(str(tmp_path / "out.msh"))
+    names = {gmsh.model.getPhysicalName(d, t): (d, t) for d, t in gmsh.model.getPhysicalGroups()}
+    assert sorted(names) == sorted(["sweep", "bottom", "top"] + walls)
+    node_tags, coords, _ = gmsh.model.mesh.getNodes()
+    position = dict(zip(node_tags, np.reshape(coords, (-1, 3))))
+    planes = {}
+    for wall in walls:
+        (entity,) = gmsh.model.getEntitiesForPhysicalGroup(*names[wall])
+        nodes = np.unique(np.concatenate(gmsh.model.mesh.getElements(2, entity)[2]))
+        p = np.array([position[t] for t in nodes])
+        for z in (0, 2):
+            end = p[p[:, 2] == z]
+            assert len(end) == 5 and (np.ptp(end[:, 0]) == 0 or np.ptp(end[:, 1]) == 0), (wall, z)
+        planes[wall] = set(nodes)
+    mesh = meshio.read(tmp_path / "out.inp")
+    for wall in walls:
+        assert set(mesh.point_sets[wall] + 1) == planes[wall], wall
+    result = cm("sweep", "a.xy", "b.xy", "--wall-corners", 180, "-o", "bad.msh", cwd=tmp_path)
+    assert result.returncode == 2 and "--wall-corners '180' is not an angle between 0 and 180" in result.stderr
+    assert not (tmp_path / "bad.msh").exists()
+
+
 @pytest.mark.parametrize("kind", ["prism", "tet"])
 def test_inp_node_sets(cm, tmp_path, kind):
     """Abaqus decks get the boundary as node sets (*NSET), not as shell

@@ -7,6 +7,7 @@
 #ifndef CM_TEST_SWEEP_BOUNDARY_CHECK_H
 #define CM_TEST_SWEEP_BOUNDARY_CHECK_H
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -112,37 +113,64 @@ static void check_sweep_boundary(const char *name, const cm_sweep *w, const cm_r
         while (to[h ^ 1] != (int32_t)v);
         loops++;
     }
-    CHECK_MSG((size_t)loops == holes + 1 && cm_sweep_num_boundary_groups(w) == 3 + holes,
-              "%s: %ld loops, %zu holes, %zu groups", name, loops, holes, cm_sweep_num_boundary_groups(w));
+    size_t groups = cm_sweep_num_boundary_groups(w);
+    CHECK_MSG((size_t)loops == holes + 1 && groups >= 3 + holes, "%s: %ld loops, %zu holes, %zu groups", name, loops,
+              holes, groups);
     size_t nf = cm_sweep_num_boundary_faces(w, tets), per_edge = tets ? 2 : 1;
     const int32_t *f = cm_sweep_boundary_faces(w, tets), *g = cm_sweep_boundary_groups(w, tets);
     CHECK_MSG(nf == 2 * nt + (ns - 1) * n * per_edge, "%s: %zu boundary faces", name, nf);
     const double *nodes = cm_sweep_nodes(w);
-    size_t misplaced = 0, unsorted = 0, *count = calloc(3 + holes, sizeof *count), *loop_size = calloc(3 + holes, sizeof *count);
-    for (size_t v = 0; v < n; v++) loop_size[2 + loop[v]]++;
+    /* Each wall group over one loop (the first face's), the loops in
+     * order, and each loop's faces all there. */
+    size_t misplaced = 0, unsorted = 0, *count = calloc(groups, sizeof *count), *loop_size = calloc(holes + 1, sizeof *count);
+    long *group_loop = malloc(groups * sizeof *group_loop);
+    for (size_t k = 0; k < groups; k++) group_loop[k] = -1;
+    for (size_t v = 0; v < n; v++) loop_size[loop[v]]++;
     double flux = 0, height = cm_sweep_height(w);
     const double o[3] = {nodes[0] - 0.37 * height, nodes[1] - 0.61 * height, nodes[2] - 0.83 * height};
     for (size_t i = 0; i < nf; i++) {
         const int32_t *q = f + 4 * i;
         int corners = q[3] < 0 ? 3 : 4;
-        unsorted += g[i] < 0 || (size_t)g[i] >= 3 + holes || (i && g[i] < g[i - 1]);
-        if (g[i] < 0 || (size_t)g[i] >= 3 + holes) continue;
+        unsorted += g[i] < 0 || (size_t)g[i] >= groups || (i && g[i] < g[i - 1]);
+        if (g[i] < 0 || (size_t)g[i] >= groups) continue;
         count[g[i]]++;
         size_t lo = (size_t)q[0] / nv, hi = lo;
         for (int c = 0; c < corners; c++) {
             size_t s = (size_t)q[c] / nv, v = (size_t)q[c] % nv;
             lo = s < lo ? s : lo, hi = s > hi ? s : hi;
-            if (g[i] >= 2) misplaced += v >= n || loop[v] != g[i] - 2;
+            if (g[i] < 2) continue;
+            if (v >= n) {
+                misplaced++;
+                continue;
+            }
+            if (group_loop[g[i]] < 0) group_loop[g[i]] = loop[v];
+            misplaced += loop[v] != group_loop[g[i]];
         }
         if (g[i] == 0) misplaced += corners != 3 || hi != 0;
         else if (g[i] == 1) misplaced += corners != 3 || lo != ns - 1;
         else misplaced += corners != (tets ? 3 : 4) || hi != lo + 1;
         flux += sb_flux(nodes, q, o);
     }
-    int sizes_ok = count[0] == nt && count[1] == nt;
-    for (size_t l = 2; l < 3 + holes; l++) sizes_ok &= count[l] == (ns - 1) * loop_size[l] * per_edge;
-    CHECK_MSG(misplaced == 0 && unsorted == 0 && sizes_ok, "%s: %zu faces misplaced, %zu out of group order%s", name,
-              misplaced, unsorted, sizes_ok ? "" : ", group sizes wrong");
+    int sizes_ok = count[0] == nt && count[1] == nt, names_ok = 1;
+    size_t *per_loop = calloc(holes + 1, sizeof *per_loop);
+    for (size_t k = 2; k < groups; k++) {
+        sizes_ok &= group_loop[k] >= 0 && count[k] > 0 && (k == 2 || group_loop[k] >= group_loop[k - 1]);
+        if (group_loop[k] < 0) continue;
+        per_loop[group_loop[k]] += count[k];
+        /* "side..." over the outer loop, "hole_<j>..." over hole j */
+        const char *label = cm_sweep_boundary_group_name(w, k);
+        char prefix[32];
+        snprintf(prefix, sizeof prefix, group_loop[k] ? "hole_%ld" : "side", group_loop[k]);
+        size_t length = strlen(prefix);
+        names_ok &= label && strncmp(label, prefix, length) == 0 && (label[length] == '\0' || label[length] == '_');
+    }
+    for (size_t l = 0; l <= holes; l++) sizes_ok &= per_loop[l] == (ns - 1) * loop_size[l] * per_edge;
+    names_ok &= strcmp(cm_sweep_boundary_group_name(w, 0), "bottom") == 0 &&
+                strcmp(cm_sweep_boundary_group_name(w, 1), "top") == 0 && !cm_sweep_boundary_group_name(w, groups);
+    CHECK_MSG(misplaced == 0 && unsorted == 0 && sizes_ok && names_ok,
+              "%s: %zu faces misplaced, %zu out of group order%s%s", name, misplaced, unsorted,
+              sizes_ok ? "" : ", group sizes wrong", names_ok ? "" : ", names wrong");
+    free(per_loop), free(group_loop);
     double volume = cm_sweep_volume(w);
     if (tets) {
         const int32_t *t = cm_sweep_tets(w);

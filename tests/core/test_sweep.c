@@ -209,6 +209,92 @@ static int cancel_now(void *user, double fraction, const char *stage)
     return 1;
 }
 
+/* A square plate with a square hole against a wider plate whose hole
+ * moved, swept with walls split at corners: four sides and four hole
+ * sides, each over one side of its square (5 vertices, collinear in the
+ * bottom section), numbered from the first corner in the loop's order
+ * (the outer loops start mid-side, so their last wall wraps past vertex
+ * 0); without the corner angle, one wall per loop; an angle of 180
+ * refused. The 16 vertices of a square loop, 4 a side, from `shift`
+ * vertices before a corner. */
+static void square_loop(double *xy, double cx, double cy, double h, double sx, int clockwise, int shift)
+{
+    static const double corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (int j = 0; j < 16; j++) {
+        int i = (j + 16 - shift) % 16;
+        int c = clockwise ? (4 - i / 4) % 4 : i / 4, d = clockwise ? (c + 3) % 4 : (c + 1) % 4;
+        double t = (i % 4) / 4.0;
+        xy[2 * j] = cx + sx * h * ((1 - t) * corner[c][0] + t * corner[d][0]);
+        xy[2 * j + 1] = cy + h * ((1 - t) * corner[c][1] + t * corner[d][1]);
+    }
+}
+
+static void test_walls_at_corners(void)
+{
+    double a[64], b[64];
+    square_loop(a, 0, 0, 1, 1, 0, 2), square_loop(a + 32, 0, 0, 0.4, 1, 1, 0);
+    square_loop(b, 0, 0, 1, 1.5, 0, 2), square_loop(b + 32, 0.3, 0.1, 0.3, 1, 1, 0);
+    const size_t sizes[2] = {16, 16};
+    const cm_loops in[2] = {{a, sizes, 2}, {b, sizes, 2}};
+    cm_options o;
+    cm_options_init(&o);
+    cm_result *r = NULL;
+    cm_morph *m = NULL;
+    CHECK(cm_triangulate_loops(in, 2, &o, &r) == CM_OK && cm_morph_create(r, NULL, &m) == CM_OK);
+    for (int tets = 0; tets < 2 && m; tets++) {
+        cm_sweep_options so;
+        cm_sweep_options_init(&so);
+        so.tets = tets, so.sections = 4, so.wall_corner_deg = 45;
+        cm_sweep *w = NULL;
+        CHECK_MSG(cm_sweep_create(m, &so, &w) == CM_OK, "walls at corners: %s", cm_sweep_message(w));
+        static const char *const names[10] = {"bottom", "top", "side_1", "side_2", "side_3", "side_4",
+                                              "hole_1_1", "hole_1_2", "hole_1_3", "hole_1_4"};
+        CHECK(cm_sweep_num_boundary_groups(w) == 10);
+        for (size_t k = 0; k < 10 && cm_sweep_num_boundary_groups(w) == 10; k++)
+            CHECK_MSG(strcmp(cm_sweep_boundary_group_name(w, k), names[k]) == 0, "group %zu is %s", k,
+                      cm_sweep_boundary_group_name(w, k));
+        check_sweep_boundary(tets ? "walls at corners, tets" : "walls at corners", w, r, tets);
+        /* Each wall over one side: 5 boundary vertices, at the bottom on
+         * one line; side_1 from vertex 2 (the first corner) to 6, side_4
+         * from 14 past vertex 0 to 2, hole_1_1 from vertex 16. */
+        size_t nv = cm_result_num_vertices(r), nf = cm_sweep_num_boundary_faces(w, tets);
+        const int32_t *f = cm_sweep_boundary_faces(w, tets), *g = cm_sweep_boundary_groups(w, tets);
+        const double *nodes = cm_sweep_nodes(w);
+        for (int32_t k = 2; k < 10; k++) {
+            int seen[32] = {0}, count = 0, first = 32, on_x = 1, on_y = 1;
+            double x = NAN, y = NAN;
+            for (size_t i = 0; i < nf; i++)
+                for (int c = 0; c < 4 && g[i] == k && f[4 * i + c] >= 0; c++) {
+                    size_t v = (size_t)f[4 * i + c] % nv;
+                    if (v >= 32) continue;
+                    count += !seen[v], seen[v] = 1, first = (int)v < first ? (int)v : first;
+                    if ((size_t)f[4 * i + c] >= nv) continue; /* the bottom section's nodes only */
+                    const double *p = nodes + 3 * (size_t)f[4 * i + c];
+                    if (isnan(x)) x = p[0], y = p[1];
+                    on_x &= p[0] == x, on_y &= p[1] == y;
+                }
+            CHECK_MSG(count == 5 && (on_x || on_y), "wall %s: %d vertices, on one line %d", names[k], count,
+                      on_x || on_y);
+            if (k == 2 || k == 6) CHECK_MSG(first == (k == 2 ? 2 : 16), "wall %s starts at %d", names[k], first);
+            if (k == 5) CHECK_MSG(seen[14] && seen[15] && seen[0] && seen[2], "wall side_4 does not wrap");
+        }
+        cm_sweep_free(w);
+    }
+    cm_sweep_options so;
+    cm_sweep_options_init(&so);
+    cm_sweep *w = NULL;
+    CHECK(m && cm_sweep_create(m, &so, &w) == CM_OK && cm_sweep_num_boundary_groups(w) == 4 &&
+          strcmp(cm_sweep_boundary_group_name(w, 2), "side") == 0 &&
+          strcmp(cm_sweep_boundary_group_name(w, 3), "hole_1") == 0);
+    cm_sweep_free(w);
+    so.wall_corner_deg = 180;
+    CHECK(m && cm_sweep_create(m, &so, &w) == CM_ERR_ARGUMENT && strstr(cm_sweep_message(w), "wall_corner_deg") &&
+          cm_sweep_num_boundary_groups(w) == 0 && !cm_sweep_boundary_group_name(w, 0));
+    cm_sweep_free(w);
+    cm_morph_free(m);
+    cm_result_free(r);
+}
+
 static void test_failures(void)
 {
     cm_result *r = fixture_result(FIX_TWISTED, N);
@@ -292,6 +378,7 @@ int main(void)
     test_default_height_and_quality();
     test_sweep(FIX_SPIRAL, NULL, 1, CM_MORPH_INTRINSIC);
     test_sweep(FIX_THREE, three_heights, 1, CM_MORPH_INTRINSIC);
+    test_walls_at_corners();
     test_failures();
     return check_summary("test_sweep");
 }

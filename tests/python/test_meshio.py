@@ -384,3 +384,23 @@ def test_interrupted_msh_write_leaves_nothing(tmp_path):
                          timeout=120)
     assert run.returncode == 0 and run.stdout.strip() == "interrupted", run.stdout + run.stderr
     assert os.listdir(tmp_path) == []
+
+
+def test_wall_corner_deg_splits_the_walls():
+    """wall_corner_deg: a square against a wider rectangle gives four
+    walls, one per side (5 vertices each, on one line at the bottom),
+    numbered from the first corner; 0 keeps one wall; 180 is refused."""
+    side = np.linspace(-1, 1, 5)[:-1]
+    square = np.r_[np.c_[side, -np.ones(4)], np.c_[np.ones(4), side], np.c_[-side, np.ones(4)], np.c_[-np.ones(4), -side]]
+    split = compatmesh.sweep([square, square * [1.5, 1]], sections=3, wall_corner_deg=45)
+    walls = split.boundary()
+    assert list(walls) == ["bottom", "top", "side_1", "side_2", "side_3", "side_4"]
+    nv = len(split.nodes) // len(split.section_z)
+    bottom = split.nodes[:nv]
+    for k, name in enumerate(["side_1", "side_2", "side_3", "side_4"]):
+        vertices = np.unique(walls[name] % nv)
+        assert np.array_equal(vertices, np.sort(np.arange(4 * k, 4 * k + 5) % 16)), (name, vertices)
+        assert np.ptp(bottom[vertices, 0]) == 0 or np.ptp(bottom[vertices, 1]) == 0, name
+    assert list(compatmesh.sweep([square, square * [1.5, 1]], sections=3).boundary())[2:] == ["side"]
+    with pytest.raises(ValueError, match="wall_corner_deg must be in"):
+        compatmesh.sweep([square, square * [1.5, 1]], wall_corner_deg=180)

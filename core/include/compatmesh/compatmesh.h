@@ -653,6 +653,12 @@ typedef struct cm_sweep_options {
     int tets;               /* 1: also split every prism into 3 tetrahedra */
     /* Most sections the validity refinement may insert; default 1000. */
     size_t max_refine;
+    /* The walls of the boundary groups (cm_sweep_boundary_faces): 0 (the
+     * default) gives one wall per loop; a positive angle in degrees splits
+     * each loop's wall at its corners, the boundary vertices where some
+     * polygon's boundary turns by more than it, as the faces of a swept
+     * profile (a rectangle's four sides); < 180. */
+    double wall_corner_deg;
     cm_progress_fn progress; /* may be NULL */
     void *progress_user;
 } cm_sweep_options;
@@ -710,22 +716,26 @@ CM_API double cm_sweep_height(const cm_sweep *sweep);
 CM_API int cm_sweep_height_is_default(const cm_sweep *sweep);
 /* The volume's boundary as faces in groups, for boundary conditions:
  * group 0 is the first section (the bottom), group 1 the last (the top),
- * group 2 the wall over the outer loop, group 2 + j the wall over hole j
- * (j = 1 .. holes); 3 + holes groups in all. Faces come sorted by group,
- * 4 node indices each, ordered so that the normal (right-hand rule)
- * points out of the volume: the caps' triangles (the 4th index -1) and
- * the walls' quads a b b' a' (a -> b a boundary edge with the material on
- * its left, primes one section up: the prisms' side faces), or with tets
- * = 1 the two triangles of each quad that the tetrahedra have (a sweep
- * built without tets has no such faces: 0 / NULL). */
+ * then the walls over the loops, the outer loop's first, then hole 1's,
+ * ...: one wall per loop, named "side" and "hole_1", "hole_2", ..., or
+ * with options.wall_corner_deg one per stretch of a loop between its
+ * corners, "side_1", "side_2", ..., "hole_1_1", ..., numbered from the
+ * first corner in the loop's order (a loop without such a corner keeps
+ * one wall, "side" or "hole_j"). Faces come sorted by group, 4 node
+ * indices each, ordered so that the normal (right-hand rule) points out
+ * of the volume: the caps' triangles (the 4th index -1) and the walls'
+ * quads a b b' a' (a -> b a boundary edge with the material on its left,
+ * primes one section up: the prisms' side faces), or with tets = 1 the
+ * two triangles of each quad that the tetrahedra have (a sweep built
+ * without tets has no such faces: 0 / NULL). */
 CM_API size_t cm_sweep_num_boundary_groups(const cm_sweep *sweep);
 CM_API size_t cm_sweep_num_boundary_faces(const cm_sweep *sweep, int tets);
 CM_API const int32_t *cm_sweep_boundary_faces(const cm_sweep *sweep, int tets);
 CM_API const int32_t *cm_sweep_boundary_groups(const cm_sweep *sweep, int tets);
-/* The name every writer gives group g: "bottom", "top", "side" (the wall
- * over the outer loop), "hole_1", "hole_2", ... (words a solver's input
- * deck takes as set names); at most 31 characters and the terminator. */
-CM_API void cm_sweep_boundary_group_name(size_t group, char name[32]);
+/* Group g's name, as every writer gives it (at most 31 characters, words a
+ * solver's input deck takes as set names); NULL out of range. Owned by
+ * the sweep. */
+CM_API const char *cm_sweep_boundary_group_name(const cm_sweep *sweep, size_t group);
 /* The method of the morph whose sections the sweep holds. */
 CM_API cm_morph_method cm_sweep_morph_method(const cm_sweep *sweep);
 

@@ -39,9 +39,10 @@ struct cm_sweep {
     int default_height;
     cm_morph_method morph_method; /* of the morph whose sections were used */
     cm_sweep_quality quality;
-    /* The boundary faces over the prisms, and over the tetrahedra. */
+    /* The boundary's groups, its faces over the prisms and over the
+     * tetrahedra. */
+    cm_sweep_walls walls;
     cm_sweep_boundary boundary, boundary_tets;
-    size_t boundary_groups;
 };
 
 void cm_sweep_options_init(cm_sweep_options *options)
@@ -67,6 +68,9 @@ static cm_status check_options(cm_sweep *w, const cm_morph *m, const cm_sweep_op
         return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: height must be positive and finite (or 0 for the default), got %g",
                        o->height);
     }
+    if (!(o->wall_corner_deg >= 0 && o->wall_corner_deg < 180))
+        return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: wall_corner_deg must be in [0, 180), got %g",
+                       o->wall_corner_deg);
     return CM_OK;
 }
 
@@ -400,12 +404,11 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
                 if (w->tets) cm_prism_split_tets(q, secs[i].split[t], w->tets + 12 * p);
             }
     }
-    if (s == CM_OK) s = cm_sweep_boundary_build(&w->boundary, m->result, count, NULL, &w->error);
-    if (s == CM_OK && w->tets) s = cm_sweep_boundary_build(&w->boundary_tets, m->result, count, w->tets, &w->error);
-    if (s == CM_OK) {
-        w->boundary_groups = 2 + (m->result->loop_start ? m->result->num_loops : 1);
-        measure(w, m);
-    }
+    if (s == CM_OK) s = cm_sweep_walls_build(&w->walls, m->result, o->wall_corner_deg, &w->error);
+    if (s == CM_OK) s = cm_sweep_boundary_build(&w->boundary, m->result, &w->walls, count, NULL, &w->error);
+    if (s == CM_OK && w->tets)
+        s = cm_sweep_boundary_build(&w->boundary_tets, m->result, &w->walls, count, w->tets, &w->error);
+    if (s == CM_OK) measure(w, m);
     free_sections(secs, count);
     if (split) cm_prism_split_free(&splitter.split);
     free(splitter.bottom), free(splitter.top);
@@ -445,6 +448,7 @@ static void free_mesh(cm_sweep *w)
 {
     free(w->z), free(w->nodes), free(w->prisms), free(w->tets);
     w->z = w->nodes = NULL, w->prisms = w->tets = NULL;
+    cm_sweep_walls_free(&w->walls);
     cm_sweep_boundary_free(&w->boundary);
     cm_sweep_boundary_free(&w->boundary_tets);
 }
@@ -464,7 +468,7 @@ cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_s
     if (s == CM_ERR_INTERNAL && morph->method == CM_MORPH_CONVEX) s = retry_intrinsic(w, morph, options);
     if (s != CM_OK) {
         free_mesh(w);
-        w->ns = w->np = w->ntet = w->nv = w->boundary_groups = 0, w->volume = 0;
+        w->ns = w->np = w->ntet = w->nv = 0, w->volume = 0;
     }
     return cm_error_close(&w->error, s);
 }
@@ -488,13 +492,11 @@ const int32_t *cm_sweep_tets(const cm_sweep *w) { return w ? w->tets : NULL; }
 double cm_sweep_volume(const cm_sweep *w) { return w ? w->volume : 0.0; }
 double cm_sweep_height(const cm_sweep *w) { return w && w->ns ? w->z[w->ns - 1] - w->z[0] : 0.0; }
 int cm_sweep_height_is_default(const cm_sweep *w) { return w && w->ns ? w->default_height : 0; }
-size_t cm_sweep_num_boundary_groups(const cm_sweep *w) { return w ? w->boundary_groups : 0; }
+size_t cm_sweep_num_boundary_groups(const cm_sweep *w) { return w && w->ns ? w->walls.groups : 0; }
 
-void cm_sweep_boundary_group_name(size_t group, char name[32])
+const char *cm_sweep_boundary_group_name(const cm_sweep *w, size_t group)
 {
-    static const char *const fixed[3] = {"bottom", "top", "side"};
-    if (group < 3) snprintf(name, 32, "%s", fixed[group]);
-    else snprintf(name, 32, "hole_%zu", group - 2);
+    return w && w->ns && group < w->walls.groups ? w->walls.names[group] : NULL;
 }
 
 static const cm_sweep_boundary *boundary_of(const cm_sweep *w, int tets)

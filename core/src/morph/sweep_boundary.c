@@ -1,14 +1,72 @@
 /* The swept volume's boundary faces in groups: 0 the first section, 1 the
- * last, 2 + l the wall over loop l (the outer loop, then the holes).
+ * last, then the walls (sweep_boundary.h).
  *
  * A boundary edge u -> w of the triangulation, with the material on its
  * left, sweeps to the quad u w w' u' (primes one section up), whose normal
  * points to the right of u -> w: out of the volume. The caps are the
  * triangles, counter-clockwise seen from +z: the top's as they are, the
  * bottom's reversed. */
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
+#include "geom/angle.h"
 #include "morph/sweep_boundary.h"
+
+/* Does some geometry's boundary turn by more than corner_deg at boundary
+ * vertex v, between its neighbours along the loop? */
+static int is_corner(const cm_result *r, size_t v, double corner_deg)
+{
+    size_t prev = cm_loops_prev(r->loop_start, r->n, v), next = cm_loops_next(r->loop_start, r->n, v);
+    for (size_t g = 0; g < r->mesh.k; g++) {
+        const double *xy = r->mesh.xy[g], *p = xy + 2 * prev, *q = xy + 2 * v, *s = xy + 2 * next;
+        double ax = q[0] - p[0], ay = q[1] - p[1], bx = s[0] - q[0], by = s[1] - q[1];
+        if (fabs(atan2(ax * by - ay * bx, ax * bx + ay * by)) * 180.0 / CM_PI > corner_deg) return 1;
+    }
+    return 0;
+}
+
+cm_status cm_sweep_walls_build(cm_sweep_walls *walls, const cm_result *r, double corner_deg, cm_error *error)
+{
+    size_t n = r->n, loops = r->loop_start ? r->num_loops : 1;
+    walls->groups = 2;
+    walls->edge_group = malloc((n + 1) * sizeof *walls->edge_group);
+    walls->names = malloc((n + 2) * sizeof *walls->names); /* at most a group per edge */
+    if (!walls->edge_group || !walls->names) {
+        cm_sweep_walls_free(walls);
+        return cm_fail_status(error, CM_ERR_NO_MEMORY);
+    }
+    snprintf(walls->names[0], sizeof walls->names[0], "bottom");
+    snprintf(walls->names[1], sizeof walls->names[1], "top");
+    for (size_t l = 0; l < loops; l++) {
+        size_t start = r->loop_start ? r->loop_start[l] : 0, end = r->loop_start ? r->loop_start[l + 1] : n;
+        size_t first = walls->groups, corners = 0;
+        int32_t group = (int32_t)first - 1; /* edges before the first corner close the last stretch */
+        for (size_t i = start; i < end; i++) {
+            if (corner_deg > 0 && is_corner(r, i, corner_deg)) group = (int32_t)(first + corners++);
+            walls->edge_group[i] = group;
+        }
+        size_t stretches = corners ? corners : 1;
+        for (size_t i = start; i < end && walls->edge_group[i] == (int32_t)first - 1; i++)
+            walls->edge_group[i] = (int32_t)(first + stretches - 1);
+        for (size_t j = 0; j < stretches; j++) { /* counts below 2^31, as the int32 vertex indices */
+            char *name = walls->names[first + j];
+            unsigned loop = (unsigned)l, stretch = (unsigned)(j + 1);
+            if (l == 0) snprintf(name, 32, corners ? "side_%u" : "side", stretch);
+            else if (corners) snprintf(name, 32, "hole_%u_%u", loop, stretch);
+            else snprintf(name, 32, "hole_%u", loop);
+        }
+        walls->groups += stretches;
+    }
+    return CM_OK;
+}
+
+void cm_sweep_walls_free(cm_sweep_walls *walls)
+{
+    free(walls->edge_group), free(walls->names);
+    walls->edge_group = NULL, walls->names = NULL;
+    walls->groups = 0;
+}
 
 /* Does tetrahedron t (4 nodes) hold nodes a and b? */
 static int tet_has_edge(const int32_t *t, int32_t a, int32_t b)
@@ -18,54 +76,62 @@ static int tet_has_edge(const int32_t *t, int32_t a, int32_t b)
     return has_a && has_b;
 }
 
-static void put(cm_sweep_boundary *b, int32_t group, int32_t p, int32_t q, int32_t r, int32_t s)
+static void put(cm_sweep_boundary *b, size_t at, int32_t group, int32_t p, int32_t q, int32_t r, int32_t s)
 {
-    int32_t *f = b->faces + 4 * b->nf;
+    int32_t *f = b->faces + 4 * at;
     f[0] = p, f[1] = q, f[2] = r, f[3] = s;
-    b->groups[b->nf++] = group;
+    b->groups[at] = group;
 }
 
-cm_status cm_sweep_boundary_build(cm_sweep_boundary *b, const cm_result *r, size_t ns, const int32_t *tets,
-                                  cm_error *error)
+cm_status cm_sweep_boundary_build(cm_sweep_boundary *b, const cm_result *r, const cm_sweep_walls *walls, size_t ns,
+                                  const int32_t *tets, cm_error *error)
 {
-    size_t nv = r->mesh.nv, nt = r->mesh.nt, n = r->n;
-    size_t walls = (ns - 1) * n * (tets ? 2 : 1);
-    b->nf = 0;
-    b->faces = malloc(4 * (2 * nt + walls) * sizeof *b->faces);
-    b->groups = malloc((2 * nt + walls) * sizeof *b->groups);
-    if (!b->faces || !b->groups) {
+    size_t nv = r->mesh.nv, nt = r->mesh.nt, n = r->n, per_edge = (ns - 1) * (tets ? 2 : 1);
+    b->nf = 2 * nt + n * per_edge;
+    b->faces = malloc(4 * b->nf * sizeof *b->faces);
+    b->groups = malloc(b->nf * sizeof *b->groups);
+    size_t *at = calloc(walls->groups + 1, sizeof *at); /* where each group's next face goes */
+    if (!b->faces || !b->groups || !at) {
+        free(at);
         cm_sweep_boundary_free(b);
         return cm_fail_status(error, CM_ERR_NO_MEMORY);
     }
     const int32_t *tri = r->mesh.tri;
     int32_t top = (int32_t)((ns - 1) * nv);
-    for (size_t t = 0; t < nt; t++) put(b, 0, tri[3 * t], tri[3 * t + 2], tri[3 * t + 1], -1);
-    for (size_t t = 0; t < nt; t++) put(b, 1, top + tri[3 * t], top + tri[3 * t + 1], top + tri[3 * t + 2], -1);
+    for (size_t t = 0; t < nt; t++) put(b, t, 0, tri[3 * t], tri[3 * t + 2], tri[3 * t + 1], -1);
+    for (size_t t = 0; t < nt; t++) put(b, nt + t, 1, top + tri[3 * t], top + tri[3 * t + 1], top + tri[3 * t + 2], -1);
+    /* The walls sorted by group: each group's faces from its offset on. */
+    for (size_t i = 0; i < n; i++) at[walls->edge_group[i] + 1] += per_edge;
+    at[2] = 2 * nt;
+    for (size_t g = 2; g < walls->groups; g++) at[g + 1] += at[g];
     /* Boundary vertex w ends the boundary edge u -> w whose left side is a
      * triangle: the opposite of w's outgoing boundary half-edge, which
-     * runs clockwise. Vertices in order, so the loops come in order. */
+     * runs clockwise. The edge is u's in the loop's order if w follows u
+     * there, else w's. */
     for (size_t w = 0; w < n; w++) {
         int32_t h = r->vertex_he[w], u = r->he_to[h], t = r->he_face[h ^ 1];
-        int32_t group = 2 + (int32_t)(r->loop_start ? cm_loop_of(r->loop_start, r->num_loops, w) : 0);
+        size_t edge = cm_loops_next(r->loop_start, n, (size_t)u) == w ? (size_t)u : w;
+        int32_t group = walls->edge_group[edge];
         for (size_t s = 0; s + 1 < ns; s++) {
             int32_t lo = (int32_t)(s * nv), hi = (int32_t)((s + 1) * nv);
             int32_t a = lo + u, c = lo + (int32_t)w, c1 = hi + (int32_t)w, a1 = hi + u;
             if (!tets) {
-                put(b, group, a, c, c1, a1);
+                put(b, at[group]++, group, a, c, c1, a1);
                 continue;
             }
             const int32_t *prism_tets = tets + 12 * (s * nt + (size_t)t);
             int diagonal_a_c1 = 0;
             for (int i = 0; i < 3; i++) diagonal_a_c1 |= tet_has_edge(prism_tets + 4 * i, a, c1);
             if (diagonal_a_c1) {
-                put(b, group, a, c, c1, -1);
-                put(b, group, a, c1, a1, -1);
+                put(b, at[group]++, group, a, c, c1, -1);
+                put(b, at[group]++, group, a, c1, a1, -1);
             } else {
-                put(b, group, a, c, a1, -1);
-                put(b, group, c, c1, a1, -1);
+                put(b, at[group]++, group, a, c, a1, -1);
+                put(b, at[group]++, group, c, c1, a1, -1);
             }
         }
     }
+    free(at);
     return CM_OK;
 }
 

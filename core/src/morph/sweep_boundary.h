@@ -1,7 +1,9 @@
 /* The swept volume's boundary as faces in named groups, for boundary
- * conditions: the first section (bottom), the last (top), and the wall
- * over each loop of the polygons (the side over the outer loop, one per
- * hole). */
+ * conditions: the first section (bottom), the last (top), and the walls
+ * over the polygons' loops: one per loop ("side" over the outer loop,
+ * "hole_j" over hole j), or with a corner angle one per stretch of a loop
+ * between its corners ("side_1", ..., "hole_j_1", ...), as the faces of a
+ * swept profile. */
 #ifndef CM_SWEEP_BOUNDARY_H
 #define CM_SWEEP_BOUNDARY_H
 
@@ -10,6 +12,22 @@
 
 #include "api/result.h"
 #include "base/error.h"
+
+/* The groups, and the wall group of each boundary edge. */
+typedef struct cm_sweep_walls {
+    size_t groups;         /* 2 (bottom, top) + the walls */
+    char (*names)[32];     /* groups names */
+    /* result->n: the group of the boundary edge from vertex i to the next
+     * vertex of its loop (in the result's order). */
+    int32_t *edge_group;
+} cm_sweep_walls;
+
+/* The walls of r's loops: a loop is split at the boundary vertices where
+ * some geometry's boundary turns by more than corner_deg degrees (0: not
+ * split); its stretches numbered from the first such corner in the loop's
+ * order. */
+cm_status cm_sweep_walls_build(cm_sweep_walls *walls, const cm_result *r, double corner_deg, cm_error *error);
+void cm_sweep_walls_free(cm_sweep_walls *walls);
 
 typedef struct cm_sweep_boundary {
     size_t nf;
@@ -23,8 +41,8 @@ typedef struct cm_sweep_boundary {
  * cm_prism_split_tets makes them) the two triangles of each quad that the
  * tetrahedra have. Every face is ordered so that its normal (right-hand
  * rule) points out of the volume. */
-cm_status cm_sweep_boundary_build(cm_sweep_boundary *b, const cm_result *r, size_t ns, const int32_t *tets,
-                                  cm_error *error);
+cm_status cm_sweep_boundary_build(cm_sweep_boundary *b, const cm_result *r, const cm_sweep_walls *walls, size_t ns,
+                                  const int32_t *tets, cm_error *error);
 void cm_sweep_boundary_free(cm_sweep_boundary *b);
 
 #endif
