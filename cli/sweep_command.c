@@ -24,7 +24,7 @@
 #include "write_volume.h"
 
 enum { OPTION_HEIGHT = OPTION_TRIANGULATION_END, OPTION_HEIGHTS, OPTION_TETS, OPTION_MSH_VERSION, OPTION_REPORT,
-       OPTION_WALL_CORNERS, MAX_SECTIONS = 10000 };
+       OPTION_WALL_CORNERS, OPTION_RULED, MAX_SECTIONS = 10000 };
 
 static const option_spec sweep_options[] = {
     {"output", 'o', "FILE",
@@ -46,6 +46,12 @@ static const option_spec sweep_options[] = {
     {"tets", OPTION_TETS, NULL, "write tetrahedra (each prism split in 3, faces\n"
                                 "conforming, diagonals chosen against slivers)\n"
                                 "instead of prisms"},
+    {"ruled", OPTION_RULED, NULL,
+     "a ruled sweep, as a CAD loft: every vertex on a\n"
+     "straight line between consecutive inputs, the walls\n"
+     "ruled surfaces, where every prism stays valid along\n"
+     "them (checked exactly); else the convex morph's\n"
+     "sections (the report's \"morph\" says which)"},
     {"msh-version", OPTION_MSH_VERSION, "V", ".msh format version: 4.1 (default) or 2.2"},
     {"wall-corners", OPTION_WALL_CORNERS, "DEG",
      "split the boundary's walls at the corners where an\n"
@@ -72,6 +78,7 @@ typedef struct sweep_args {
     int tets;
     double msh_version;
     double wall_corner_deg; /* 0: one wall per loop */
+    int ruled;
     const char *report;
     int help;
 } sweep_args;
@@ -150,6 +157,9 @@ static int handle_sweep_option(void *context, int key, const char *value, cli_er
         return CLI_EXIT_OK;
     case OPTION_REPORT:
         args->report = value;
+        return CLI_EXIT_OK;
+    case OPTION_RULED:
+        args->ruled = 1;
         return CLI_EXIT_OK;
     case OPTION_WALL_CORNERS:
         args->wall_corner_deg = parse_number(value, &end);
@@ -314,6 +324,7 @@ static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morp
     options.sections = args->sections;
     options.tets = args->tets;
     options.wall_corner_deg = args->wall_corner_deg;
+    options.ruled = args->ruled;
     options.progress = cli_progress;
     /* options.height stays 0 unless given: the core's default, the largest
      * bounding-box diagonal of the sections. */

@@ -267,7 +267,7 @@ int write_sweep_report(const char *path, const sweep_report_info *info, cli_erro
     set_count(&t, root, "cells", info->tets ? cm_sweep_num_tets(sweep) : cm_sweep_num_prisms(sweep));
     set_text(&t, root, "cell_type", info->tets ? "tetrahedron" : "prism");
     set_real(&t, root, "volume", cm_sweep_volume(sweep));
-    set_text(&t, root, "morph", cm_sweep_morph_method(sweep) == CM_MORPH_INTRINSIC ? "intrinsic" : "convex");
+    set_text(&t, root, "morph", cm_morph_method_name(cm_sweep_morph_method(sweep)));
     json_t *height = keep(&t, json_object());
     set_real(&t, height, "value", cm_sweep_height(sweep));
     set_text(&t, height, "rule", info->height_rule);

@@ -809,7 +809,7 @@ py::list sections_own_z(py::object polygons_in, std::vector<double> *z)
 }
 
 Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::object heights,
-               bool tets, py::object wall_corner_deg, py::kwargs kwargs)
+               bool tets, py::object wall_corner_deg, bool ruled, py::kwargs kwargs)
 {
   cm_sweep_options options;
   cm_sweep_options_init(&options);
@@ -819,6 +819,7 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
                           std::to_string(options.sections));
   options.tets = tets ? 1 : 0;
   options.wall_corner_deg = number_from<double>(wall_corner_deg, "wall_corner_deg");
+  options.ruled = ruled ? 1 : 0;
   if (!height.is_none()) {
     options.height = number_from<double>(height, "height");
     // 0 would ask the core for its default height: a given height must be positive.
@@ -873,7 +874,7 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
   out["volume"] = cm_sweep_volume(w.get());
   out["height"] = cm_sweep_height(w.get());
   out["height_is_default"] = cm_sweep_height_is_default(w.get()) != 0;
-  out["morph"] = cm_sweep_morph_method(w.get()) == CM_MORPH_INTRINSIC ? "intrinsic" : "convex";
+  out["morph"] = cm_morph_method_name(cm_sweep_morph_method(w.get()));
   cm_sweep_quality q;
   cm_sweep_get_quality(w.get(), &q);
   py::dict quality;
@@ -1470,8 +1471,9 @@ Fields, as attributes and by key (s["nodes"]):
   tets         T x 4 int32, positive volume (0 x 4 without tets)
   section_z    S float64, the sections' heights
   volume, height (floats), height_is_default (bool)
-  morph        "convex", or "intrinsic" where the convex morph needed
-               more inserted sections than max_refine
+  morph        "convex", "intrinsic" where the convex morph needed
+               more inserted sections than max_refine, or "linear" for
+               a ruled sweep
   quality      dict of 3D figures (see sweep()))doc");
   add_mapping(sweep_class, {{"nodes", "N x 3 float64 array; node s * nv + v is vertex v of section s"},
                             {"prisms", "P x 6 int32 array, Gmsh's wedge order"},
@@ -1480,7 +1482,7 @@ Fields, as attributes and by key (s["nodes"]):
                             {"volume", "float: the prisms' total volume"},
                             {"height", "float: first to last section"},
                             {"height_is_default", "bool: the height came from the polygons' size"},
-                            {"morph", "str: the morph whose sections were stacked, convex or intrinsic"}});
+                            {"morph", "str: the morph whose sections were stacked: convex, intrinsic, or linear (ruled)"}});
   sweep_class
       .def("to_meshio", &sweep_to_meshio, py::arg("cells") = py::none(),
            R"doc(to_meshio(cells=None) -> meshio.Mesh
@@ -1653,7 +1655,8 @@ exact check.)doc");
 
   m.def("sweep", &sweep, py::arg("polygons"), py::arg("sections") = 11, py::arg("height") = py::none(),
         py::arg("heights") = py::none(), py::arg("tets") = false, py::arg("wall_corner_deg") = 0.0,
-        R"doc(sweep(polygons, sections=11, height=None, heights=None, tets=False, wall_corner_deg=0, **options) -> Sweep
+        py::arg("ruled") = false,
+        R"doc(sweep(polygons, sections=11, height=None, heights=None, tets=False, wall_corner_deg=0, ruled=False, **options) -> Sweep
 
 The volume between the n x 2 polygons: sections of their convex morph
 stacked at increasing z and joined into 6-node prisms, each checked exactly
@@ -1665,14 +1668,18 @@ model) lie at their own z unless height or heights is given. sections: per pair 
 polygons, both ends included, >= 2. tets: also split every prism into 3
 tetrahedra with conforming faces. wall_corner_deg: split the boundary's
 walls (boundary()) at the corners where a polygon's boundary turns by more
-than this many degrees (0, the default: one wall per loop). Keyword
-options as for triangulate().
+than this many degrees (0, the default: one wall per loop). ruled: a
+ruled sweep, as a CAD loft (every vertex on a straight line between
+consecutive polygons, the walls ruled surfaces) where every prism stays
+valid along it, checked exactly; else the convex morph's sections (morph
+says which: "linear" for the ruled sweep). Keyword options as for
+triangulate().
 Returns a Sweep (its fields also by key, as in a dict): nodes (N x 3 float64;
 node s * nv + v is vertex v of section s), prisms (P x 6 int32, Gmsh wedge
 order: bottom counter-clockwise seen from +z, then top), tets (T x 4 int32,
 positive volume; 0 x 4 unless tets), section_z (S float64), volume (the prisms' total), height (first to last section) and
-height_is_default, morph ("convex", or "intrinsic" where the convex morph
-needed more sections than max_refine), quality (a dict for the tetrahedra if tets, else the
+height_is_default, morph ("convex", "intrinsic" where the convex morph
+needed more sections than max_refine, "linear" for a ruled sweep), quality (a dict for the tetrahedra if tets, else the
 prisms: min_dihedral_deg, max_dihedral_deg, min_scaled_jacobian,
 max_aspect_ratio, max_prism_flatness = longest triangle edge / prism height,
 flat_prisms = prisms flatter than 1:10); and points (= nodes), cells,

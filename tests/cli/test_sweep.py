@@ -129,9 +129,10 @@ def square(cx, cy, h, sx=1.0, clockwise=False, m=16):
 def test_wall_corners_give_a_group_per_face(cm, tmp_path, gmsh_session, kind):
     """--wall-corners 45 on a square plate with a square hole swept to a
     wider one: side_1 .. side_4 and hole_1_1 .. hole_1_4, each one face of
-    the profile (5 nodes on one side of the square at each end; the morph
-    bows the sections between), in the .msh file, the .inp file's node
-    sets and the report; an angle out of range is a usage error."""
+    the profile (5 nodes on one side of the square at each end; the convex
+    morph bows the sections between, --ruled keeps every wall flat), in the
+    .msh file, the .inp file's node sets and the report; an angle out of
+    range is a usage error."""
     for path, (outer, hole) in zip(("a.xy", "b.xy"), [(square(0, 0, 1), square(0, 0, 0.4, clockwise=True)),
                                                        (square(0, 0, 1, 1.5), square(0.3, 0.1, 0.3, clockwise=True))]):
         (tmp_path / path).write_text("".join(f"{x!r} {y!r}\n" for x, y in outer) + ">\n" +
@@ -160,9 +161,32 @@ def test_wall_corners_give_a_group_per_face(cm, tmp_path, gmsh_session, kind):
     mesh = meshio.read(tmp_path / "out.inp")
     for wall in walls:
         assert set(mesh.point_sets[wall] + 1) == planes[wall], wall
+    # Ruled, as a CAD loft: every wall flat (each side of the square moves
+    # parallel to itself), the report's morph "linear".
+    result = cm("sweep", "a.xy", "b.xy", "--sections", 3, "--height", 2, "--wall-corners", 45, "--ruled",
+                "-o", "ruled.msh", "--report", "r.json", *extra, cwd=tmp_path)
+    assert result.returncode == 0 and json.loads((tmp_path / "r.json").read_text())["morph"] == "linear"
+    gmsh.open(str(tmp_path / "ruled.msh"))
+    node_tags, coords, _ = gmsh.model.mesh.getNodes()
+    position = dict(zip(node_tags, np.reshape(coords, (-1, 3))))
+    for wall in walls:
+        (entity,) = gmsh.model.getEntitiesForPhysicalGroup(*names[wall])
+        p = np.array([position[t] for t in np.unique(np.concatenate(gmsh.model.mesh.getElements(2, entity)[2]))])
+        assert np.linalg.eigvalsh(np.cov((p - p.mean(axis=0)).T))[0] < 1e-14, wall  # in one plane (rounding aside)
     result = cm("sweep", "a.xy", "b.xy", "--wall-corners", 180, "-o", "bad.msh", cwd=tmp_path)
     assert result.returncode == 2 and "--wall-corners '180' is not an angle between 0 and 180" in result.stderr
     assert not (tmp_path / "bad.msh").exists()
+
+
+def test_ruled_falls_back_where_straight_lines_invert(cm, tmp_path):
+    """--ruled on the twisted pair: straight vertex paths would invert
+    triangles, so the convex morph's sections are swept, and said."""
+    a, b = twisted_pair()
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    result = cm("sweep", "a.xy", "b.xy", "--ruled", "-o", "v.msh", "--report", "r.json", cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    assert json.loads((tmp_path / "r.json").read_text())["morph"] == "convex"
 
 
 @pytest.mark.parametrize("kind", ["prism", "tet"])

@@ -295,6 +295,49 @@ static void test_walls_at_corners(void)
     cm_result_free(r);
 }
 
+/* The ruled sweep: where the straight blends stay valid (a square plate
+ * against a wider one) every node lies on the straight line between its
+ * inputs and the plates' bottom side stays in the plane y = -1; where they
+ * invert (the twisted pair) the convex morph's sections are swept. */
+static void test_ruled(void)
+{
+    double a[64], b[64];
+    square_loop(a, 0, 0, 1, 1, 0, 0), square_loop(a + 32, 0, 0, 0.4, 1, 1, 0);
+    square_loop(b, 0, 0, 1, 1.5, 0, 0), square_loop(b + 32, 0.3, 0.1, 0.3, 1, 1, 0);
+    const size_t sizes[2] = {16, 16};
+    const cm_loops in[2] = {{a, sizes, 2}, {b, sizes, 2}};
+    cm_result *r = NULL, *twisted = fixture_result(FIX_TWISTED, N);
+    cm_morph *m = NULL, *mt = NULL;
+    CHECK(cm_triangulate_loops(in, 2, NULL, &r) == CM_OK && cm_morph_create(r, NULL, &m) == CM_OK);
+    CHECK(twisted && cm_morph_create(twisted, NULL, &mt) == CM_OK);
+    cm_sweep_options so;
+    cm_sweep_options_init(&so);
+    so.ruled = 1, so.tets = 1, so.height = 2.0;
+    cm_sweep *w = NULL;
+    CHECK_MSG(m && cm_sweep_create(m, &so, &w) == CM_OK, "ruled: %s", cm_sweep_message(w));
+    if (w && cm_sweep_num_sections(w)) {
+        CHECK(cm_sweep_morph_method(w) == CM_MORPH_LINEAR);
+        size_t nv = cm_result_num_vertices(r), ns = cm_sweep_num_sections(w), off = 0;
+        const double *nodes = cm_sweep_nodes(w), *p0 = cm_result_vertices(r, 0), *p1 = cm_result_vertices(r, 1);
+        for (size_t i = 0; i < ns; i++)
+            for (size_t v = 0; v < nv; v++) {
+                double t = nodes[3 * (i * nv + v) + 2] / 2.0;
+                for (int c = 0; c < 2; c++)
+                    off += fabs(nodes[3 * (i * nv + v) + c] - ((1 - t) * p0[2 * v + c] + t * p1[2 * v + c])) > 1e-12;
+                if (v <= 4) off += fabs(nodes[3 * (i * nv + v) + 1] + 1) > 1e-12; /* the bottom side, y = -1 */
+            }
+        CHECK_MSG(off == 0, "ruled: %zu coordinates off the straight blends", off);
+        check_sweep_boundary("ruled", w, r, 1);
+    }
+    cm_sweep_free(w);
+    w = NULL;
+    CHECK_MSG(mt && cm_sweep_create(mt, &so, &w) == CM_OK, "ruled, twisted: %s", cm_sweep_message(w));
+    CHECK(w && cm_sweep_morph_method(w) == CM_MORPH_CONVEX && cm_sweep_volume(w) > 0);
+    cm_sweep_free(w);
+    cm_morph_free(m), cm_morph_free(mt);
+    cm_result_free(r), cm_result_free(twisted);
+}
+
 static void test_failures(void)
 {
     cm_result *r = fixture_result(FIX_TWISTED, N);
@@ -379,6 +422,7 @@ int main(void)
     test_sweep(FIX_SPIRAL, NULL, 1, CM_MORPH_INTRINSIC);
     test_sweep(FIX_THREE, three_heights, 1, CM_MORPH_INTRINSIC);
     test_walls_at_corners();
+    test_ruled();
     test_failures();
     return check_summary("test_sweep");
 }

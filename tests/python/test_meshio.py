@@ -404,3 +404,19 @@ def test_wall_corner_deg_splits_the_walls():
     assert list(compatmesh.sweep([square, square * [1.5, 1]], sections=3).boundary())[2:] == ["side"]
     with pytest.raises(ValueError, match="wall_corner_deg must be in"):
         compatmesh.sweep([square, square * [1.5, 1]], wall_corner_deg=180)
+
+
+def test_ruled_sweep_moves_every_vertex_straight():
+    """ruled=True: a square against a wider rectangle is swept as a loft,
+    every node on the straight line between its two polygons (morph
+    "linear"); by default the convex morph's sections."""
+    side = np.linspace(-1, 1, 5)[:-1]
+    square = np.r_[np.c_[side, -np.ones(4)], np.c_[np.ones(4), side], np.c_[-side, np.ones(4)], np.c_[-np.ones(4), -side]]
+    ruled = compatmesh.sweep([square, square * [1.5, 1]], sections=5, height=1.0, ruled=True)
+    assert ruled.morph == "linear"
+    nv = len(ruled.nodes) // len(ruled.section_z)
+    start, end = ruled.nodes[:nv, :2], ruled.nodes[-nv:, :2]
+    t = ruled.nodes[:, 2:3]
+    assert np.allclose(ruled.nodes[:, :2], (1 - t) * np.tile(start, (len(ruled.section_z), 1)) +
+                       t * np.tile(end, (len(ruled.section_z), 1)), rtol=0, atol=1e-12)
+    assert compatmesh.sweep([square, square * [1.5, 1]], sections=5, height=1.0).morph == "convex"

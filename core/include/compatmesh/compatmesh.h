@@ -594,6 +594,9 @@ typedef enum cm_morph_method {
     CM_MORPH_INTRINSIC = 2
 } cm_morph_method;
 
+/* "convex", "linear" or "intrinsic" (reports' names); "unknown" else. */
+CM_API const char *cm_morph_method_name(cm_morph_method method);
+
 typedef struct cm_morph_options {
     cm_morph_method method;  /* default CM_MORPH_CONVEX */
     cm_progress_fn progress; /* may be NULL */
@@ -659,6 +662,13 @@ typedef struct cm_sweep_options {
      * polygon's boundary turns by more than it, as the faces of a swept
      * profile (a rectangle's four sides); < 180. */
     double wall_corner_deg;
+    /* 1: a ruled sweep, as a CAD loft: the sections on straight lines
+     * between consecutive inputs (every vertex moving straight, the walls
+     * ruled surfaces), used when every prism stays valid along them
+     * (checked exactly), else the morph's sections (cm_sweep_morph_method
+     * says which: CM_MORPH_LINEAR for the ruled sweep). 0 (the default):
+     * the morph's sections. */
+    int ruled;
     cm_progress_fn progress; /* may be NULL */
     void *progress_user;
 } cm_sweep_options;

@@ -497,3 +497,13 @@ cm_status cm_morph_section_at(cm_morph *m, size_t g, double s, double *xy, size_
     cm_error_init(&m->error);
     return CM_OK;
 }
+
+const char *cm_morph_method_name(cm_morph_method method)
+{
+    switch (method) {
+    case CM_MORPH_CONVEX: return "convex";
+    case CM_MORPH_LINEAR: return "linear";
+    case CM_MORPH_INTRINSIC: return "intrinsic";
+    }
+    return "unknown";
+}

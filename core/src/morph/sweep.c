@@ -444,6 +444,34 @@ static cm_status retry_intrinsic(cm_sweep *w, cm_morph *morph, const cm_sweep_op
     return first.status;
 }
 
+static void free_mesh(cm_sweep *w);
+
+/* The ruled sweep: the sections on straight lines between consecutive
+ * inputs (the linear morph of the morph's result), as a CAD loft makes
+ * them. CM_OK when every prism stays valid along it; CM_ERR_INTERNAL, with
+ * nothing kept and the error cleared, where a section inverts a triangle,
+ * for the caller to sweep the morph's sections instead. */
+static cm_status build_ruled(cm_sweep *w, const cm_morph *morph, const cm_sweep_options *o)
+{
+    cm_morph_options mo;
+    cm_morph_options_init(&mo);
+    mo.method = CM_MORPH_LINEAR;
+    mo.progress = o->progress, mo.progress_user = o->progress_user;
+    cm_morph *linear = NULL;
+    cm_status s = cm_morph_create(morph->result, &mo, &linear);
+    if (s == CM_OK) s = build_prisms(w, linear, o);
+    else cm_fail(&w->error, s, "sweep: %s", cm_morph_message(linear));
+    cm_morph_free(linear);
+    if (s == CM_OK) {
+        w->morph_method = CM_MORPH_LINEAR;
+    } else if (s != CM_ERR_CANCELLED && s != CM_ERR_NO_MEMORY) {
+        free_mesh(w);
+        cm_error_init(&w->error);
+        s = CM_ERR_INTERNAL;
+    }
+    return s;
+}
+
 static void free_mesh(cm_sweep *w)
 {
     free(w->z), free(w->nodes), free(w->prisms), free(w->tets);
@@ -464,8 +492,16 @@ cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_s
     if (!morph->result) return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: the morph failed to build (%s)", cm_morph_message(morph));
     cm_status s = check_options(w, morph, options);
     w->morph_method = morph->method;
-    if (s == CM_OK) s = build_prisms(w, morph, options);
-    if (s == CM_ERR_INTERNAL && morph->method == CM_MORPH_CONVEX) s = retry_intrinsic(w, morph, options);
+    int built = 0;
+    if (s == CM_OK && options->ruled && morph->method != CM_MORPH_LINEAR) {
+        s = build_ruled(w, morph, options);
+        built = s == CM_OK;
+        if (s == CM_ERR_INTERNAL) s = CM_OK; /* a straight blend inverts: the morph's sections */
+    }
+    if (s == CM_OK && !built) {
+        s = build_prisms(w, morph, options);
+        if (s == CM_ERR_INTERNAL && morph->method == CM_MORPH_CONVEX) s = retry_intrinsic(w, morph, options);
+    }
     if (s != CM_OK) {
         free_mesh(w);
         w->ns = w->np = w->ntet = w->nv = 0, w->volume = 0;
