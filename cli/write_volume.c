@@ -13,10 +13,10 @@
 
 #include "interrupt.h"
 #include "write_vtu.h"
+
 #ifdef CM_HAVE_GMSH
 #include "gmsh_volume.h"
 #endif
-
 
 static const char *const extensions[] = {"msh", "vtk", "vtu", "inp", "bdf", "unv"};
 

@@ -229,18 +229,26 @@ static void square_loop(double *xy, double cx, double cy, double h, double sx, i
     }
 }
 
-static void test_walls_at_corners(void)
+/* The square plate with a square hole and the wider plate whose hole
+ * moved, the outer loops listed from `shift` vertices before a corner,
+ * triangulated and morphed; NULL on failure (checked). */
+static cm_morph *square_plates(int shift, cm_result **r)
 {
     double a[64], b[64];
-    square_loop(a, 0, 0, 1, 1, 0, 2), square_loop(a + 32, 0, 0, 0.4, 1, 1, 0);
-    square_loop(b, 0, 0, 1, 1.5, 0, 2), square_loop(b + 32, 0.3, 0.1, 0.3, 1, 1, 0);
+    square_loop(a, 0, 0, 1, 1, 0, shift), square_loop(a + 32, 0, 0, 0.4, 1, 1, 0);
+    square_loop(b, 0, 0, 1, 1.5, 0, shift), square_loop(b + 32, 0.3, 0.1, 0.3, 1, 1, 0);
     const size_t sizes[2] = {16, 16};
     const cm_loops in[2] = {{a, sizes, 2}, {b, sizes, 2}};
-    cm_options o;
-    cm_options_init(&o);
-    cm_result *r = NULL;
     cm_morph *m = NULL;
-    CHECK(cm_triangulate_loops(in, 2, &o, &r) == CM_OK && cm_morph_create(r, NULL, &m) == CM_OK);
+    *r = NULL;
+    CHECK(cm_triangulate_loops(in, 2, NULL, r) == CM_OK && cm_morph_create(*r, NULL, &m) == CM_OK);
+    return m;
+}
+
+static void test_walls_at_corners(void)
+{
+    cm_result *r = NULL;
+    cm_morph *m = square_plates(2, &r);
     for (int tets = 0; tets < 2 && m; tets++) {
         cm_sweep_options so;
         cm_sweep_options_init(&so);
@@ -301,14 +309,8 @@ static void test_walls_at_corners(void)
  * invert (the twisted pair) the convex morph's sections are swept. */
 static void test_ruled(void)
 {
-    double a[64], b[64];
-    square_loop(a, 0, 0, 1, 1, 0, 0), square_loop(a + 32, 0, 0, 0.4, 1, 1, 0);
-    square_loop(b, 0, 0, 1, 1.5, 0, 0), square_loop(b + 32, 0.3, 0.1, 0.3, 1, 1, 0);
-    const size_t sizes[2] = {16, 16};
-    const cm_loops in[2] = {{a, sizes, 2}, {b, sizes, 2}};
     cm_result *r = NULL, *twisted = fixture_result(FIX_TWISTED, N);
-    cm_morph *m = NULL, *mt = NULL;
-    CHECK(cm_triangulate_loops(in, 2, NULL, &r) == CM_OK && cm_morph_create(r, NULL, &m) == CM_OK);
+    cm_morph *m = square_plates(0, &r), *mt = NULL;
     CHECK(twisted && cm_morph_create(twisted, NULL, &mt) == CM_OK);
     cm_sweep_options so;
     cm_sweep_options_init(&so);
