@@ -130,12 +130,7 @@ void FilterCompatMesh::initParameterSet(QAction *action, MeshDocument &md, RichP
       par.addParam(RichSaveFile("VolumeFile", "", "*.msh", "Volume mesh (.msh)",
                                 "Empty: none. Otherwise the volume between the layers in tetrahedra, every "
                                 "one of positive volume (checked exactly), written as a Gmsh .msh file "
-                                "(format 4.1) for finite-element solvers, its boundary as named surfaces "
-                                "for boundary conditions: bottom, top, side, hole_1, ..."));
-      par.addParam(RichFloat("WallCornerDeg", 0.f, "Wall corner angle",
-                             "0: one boundary surface per loop in the VolumeFile. Otherwise each loop's "
-                             "wall is split where a layer's boundary turns by more than this many degrees, "
-                             "one surface per face of the swept profile: side_1, side_2, ..., hole_1_1, ..."));
+                                "(format 4.1) for finite-element solvers."));
       break;
   }
 }
@@ -179,8 +174,7 @@ bool FilterCompatMesh::applyFilter(QAction *action, MeshDocument &md, const Rich
     } else {
       auto outcome = compatmesh_plugin::compatible_sweep(first->cm, second->cm, first_name, second_name,
                                                          par.getInt("Sections"),
-                                                         par.getSaveFileName("VolumeFile").toStdString(),
-                                                         par.getFloat("WallCornerDeg"), progress);
+                                                         par.getSaveFileName("VolumeFile").toStdString(), progress);
       layers = std::move(outcome.layers);
       log = std::move(outcome.log);
     }

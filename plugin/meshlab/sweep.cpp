@@ -121,7 +121,7 @@ std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_
   return xyz;
 }
 
-SweptVolume swept_volume(SectionMorph &morph, int sections, double wall_corner_deg)
+SweptVolume swept_volume(SectionMorph &morph, int sections)
 {
   cm_sweep_options options;
   cm_sweep_options_init(&options);
@@ -129,7 +129,6 @@ SweptVolume swept_volume(SectionMorph &morph, int sections, double wall_corner_d
   options.sections = std::size_t(sections);
   options.heights = times;
   options.tets = 1;
-  options.wall_corner_deg = wall_corner_deg;
   cm_sweep *sweep = nullptr;
   cm_status s = cm_sweep_create(morph.morph_.get(), &options, &sweep);
   compatmesh::SweepPtr owned(sweep);
@@ -192,12 +191,9 @@ void write_msh(const SweptVolume &volume, const std::string &path)
 
 SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
                               const std::string &first_name, const std::string &second_name,
-                              int sections, const std::string &volume_file, double wall_corner_deg,
-                              ThrottledProgress &progress)
+                              int sections, const std::string &volume_file, ThrottledProgress &progress)
 {
   if (sections < 1) throw FilterError("Sections must be at least 1");
-  if (!(wall_corner_deg >= 0 && wall_corner_deg < 180))
-    throw FilterError("WallCornerDeg: expected 0 (one wall per loop) or an angle below 180 degrees");
   std::vector<int> index0, index1;
   compatmesh::PolyMesh mesh0, mesh1;
   try {
@@ -315,16 +311,14 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
     progress.report(0.95, "volume");
     // Its sections at the same times as the layers' (more where a cell
     // needs them): the layers' sections are faces of the volume.
-    const SweptVolume volume = swept_volume(morph, sections + 2, wall_corner_deg);
+    const SweptVolume volume = swept_volume(morph, sections + 2);
     write_msh(volume, volume_file);
     char dihedral[32];
     std::snprintf(dihedral, sizeof dihedral, "%.2f", volume.min_dihedral_deg);
-    std::string groups;
-    for (const std::string &name : volume.group_names) groups += (groups.empty() ? "" : ", ") + name;
     outcome.log.push_back("volume: " + std::to_string(volume.tets.size() / 4) + " tetrahedra, " +
                           std::to_string(volume.nodes.size() / 3) + " nodes in " + std::to_string(volume.sections) +
                           " sections, each positive (exact), smallest dihedral angle " + dihedral +
-                          " degrees, boundary surfaces " + groups + ", written to " + volume_file);
+                          " degrees, written to " + volume_file);
   }
   progress.report(1.0, "done");
   char angle_text[32];

@@ -44,7 +44,7 @@ class SectionMorph {
                const std::string &second_name);
 
   friend std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_deg);
-  friend struct SweptVolume swept_volume(SectionMorph &morph, int sections, double wall_corner_deg);
+  friend struct SweptVolume swept_volume(SectionMorph &morph, int sections);
 
  private:
   compatmesh::ResultPtr result_;
@@ -79,7 +79,7 @@ struct SweptVolume {
   std::size_t sections = 0;   // with those the sweep inserted
   double min_dihedral_deg = 0;
 };
-SweptVolume swept_volume(SectionMorph &morph, int sections, double wall_corner_deg);
+SweptVolume swept_volume(SectionMorph &morph, int sections);
 
 // Writes the volume as a Gmsh .msh file (format 4.1) through Gmsh
 // (export/gmsh_volume.h: the tetrahedra, and the boundary as named
@@ -93,14 +93,11 @@ struct SweepOutcome {
 };
 
 // sections: intermediate sections, >= 1. volume_file: "" or a .msh file
-// that receives the swept volume in tetrahedra (swept_volume, write_msh),
-// its boundary's walls split at corners turning by more than
-// wall_corner_deg (0: one wall per loop; cm_sweep_options). Throws
-// FilterError.
+// that receives the swept volume in tetrahedra (swept_volume, write_msh).
+// Throws FilterError.
 SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
                               const std::string &first_name, const std::string &second_name,
-                              int sections, const std::string &volume_file, double wall_corner_deg,
-                              ThrottledProgress &progress);
+                              int sections, const std::string &volume_file, ThrottledProgress &progress);
 
 }  // namespace compatmesh_plugin
 

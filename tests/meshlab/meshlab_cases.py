@@ -371,54 +371,6 @@ def case_sweep(w):
           % (worst, len(lateral.cells_dict["triangle"])))
 
 
-def case_sweep_wall_corners(w):
-    # The stars of case_sweep swept with a volume file and WallCornerDeg 45:
-    # the wall splits at the stars' corners, one surface per face (side_1,
-    # side_2, ...: at least as many as either layer's corners, at most as
-    # many as both have), and the surfaces close outward around the
-    # tetrahedra.
-    import gmsh
-    a = star(12, 1.0, 0.7)
-    b = [(x, y, 2.0) for x, y, _ in star(12, 0.8, 0.5, phase=0.5, scale=(1.4, 0.7))]
-    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
-    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
-    volume = os.path.join(w, "stars.msh")
-    script = script_with(w, "pair_and_sweep.mlx", [
-        ('value="" name="VolumeFile"', 'value="%s" name="VolumeFile"' % volume),
-        ('value="0" name="WallCornerDeg"', 'value="45" name="WallCornerDeg"')])
-    code, log = run(w, ["a.ply", "b.ply"], script, {7: "lateral.ply"})
-    expect_ok(code, log)
-    gmsh.initialize()
-    try:
-        gmsh.option.setNumber("General.Terminal", 0)
-        gmsh.open(volume)
-        _, dets, _ = gmsh.model.mesh.getJacobians(4, [0.25, 0.25, 0.25])
-        node_tags, coords, _ = gmsh.model.mesh.getNodes()
-        position = dict(zip(node_tags, np.array(coords).reshape(-1, 3)))
-        names, flux = [], 0.0
-        for d, t in gmsh.model.getPhysicalGroups(2):
-            names.append(gmsh.model.getPhysicalName(d, t))
-            (entity,) = gmsh.model.getEntitiesForPhysicalGroup(d, t)
-            p = np.array([position[n] for n in gmsh.model.mesh.getElements(2, entity)[2][0]]).reshape(-1, 3, 3)
-            flux += float(np.sum(np.einsum("ij,ij->i", p[:, 0], np.cross(p[:, 1], p[:, 2])))) / 6
-    finally:
-        gmsh.finalize()
-    def corners(points):  # vertices where the boundary turns by more than 45 degrees
-        p = np.array(points)[:, :2]
-        d1, d2 = p - np.roll(p, 1, axis=0), np.roll(p, -1, axis=0) - p
-        turn = np.degrees(np.arctan2(d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0], np.sum(d1 * d2, axis=1)))
-        return int(np.sum(np.abs(turn) > 45))
-    walls = len(names) - 2
-    assert names == ["bottom", "top"] + ["side_%d" % i for i in range(1, walls + 1)], names
-    # each layer's corners split the wall; paired corner to corner, some coincide
-    assert max(corners(a), corners(b)) <= walls <= corners(a) + corners(b), (walls, corners(a), corners(b))
-    total = float(np.sum(dets)) / 6
-    assert abs(flux - total) < 1e-9 * total, (flux, total)
-    assert "boundary surfaces bottom, top, side_1, " in log, log[-2000:]
-    print("sweep with wall corners at 45 degrees: %d walls, the surfaces enclose %.6g, the tetrahedra %.6g"
-          % (walls, flux, total))
-
-
 def lateral_flux(path):
     """Flux of the horizontal field (x, y) through the lateral surface:
     twice the swept volume when its triangles face outward (the caps, flat
