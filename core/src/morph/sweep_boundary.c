@@ -6,7 +6,6 @@
  * points to the right of u -> w: out of the volume. The caps are the
  * triangles, counter-clockwise seen from +z: the top's as they are, the
  * bottom's reversed. */
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -14,14 +13,15 @@
 #include "morph/sweep_boundary.h"
 
 /* Does some geometry's boundary turn by more than corner_deg at boundary
- * vertex v, between its neighbours along the loop? */
+ * vertex v, between its neighbours along the loop? The turn is how far
+ * the corner angle deviates from 180, as --pin-corners measures it
+ * (correspond/corners.c). */
 static int is_corner(const cm_result *r, size_t v, double corner_deg)
 {
     size_t prev = cm_loops_prev(r->loop_start, r->n, v), next = cm_loops_next(r->loop_start, r->n, v);
     for (size_t g = 0; g < r->mesh.k; g++) {
-        const double *xy = r->mesh.xy[g], *p = xy + 2 * prev, *q = xy + 2 * v, *s = xy + 2 * next;
-        double ax = q[0] - p[0], ay = q[1] - p[1], bx = s[0] - q[0], by = s[1] - q[1];
-        if (fabs(atan2(ax * by - ay * bx, ax * bx + ay * by)) * 180.0 / CM_PI > corner_deg) return 1;
+        const double *xy = r->mesh.xy[g];
+        if (180.0 - cm_angle_at(xy + 2 * v, xy + 2 * prev, xy + 2 * next) * (180.0 / CM_PI) > corner_deg) return 1;
     }
     return 0;
 }
