@@ -379,7 +379,8 @@ static int sweep(const sweep_args *args, cli_error *error)
                             cm_sweep_boundary_faces(sweep, args->tets),
                             cm_sweep_boundary_groups(sweep, args->tets),
                             cm_sweep_num_boundary_faces(sweep, args->tets),
-                            cm_sweep_num_boundary_groups(sweep), NULL};
+                            cm_sweep_num_boundary_groups(sweep), NULL,
+                            cm_sweep_boundary_group_offsets(sweep, args->tets)};
         const char **names = malloc((mesh.num_groups + 1) * sizeof *names);
         for (size_t g = 0; names && g < mesh.num_groups; g++) names[g] = cm_sweep_boundary_group_name(sweep, g);
         mesh.group_names = names;

@@ -289,12 +289,9 @@ int write_sweep_report(const char *path, const sweep_report_info *info, cli_erro
     /* The boundary's groups, as the .msh file's surfaces and the .inp
      * file's node sets name them, with their face counts. */
     json_t *boundary = keep(&t, json_object());
-    const int32_t *groups = cm_sweep_boundary_groups(sweep, info->tets);
-    for (size_t g = 0, i = 0; g < cm_sweep_num_boundary_groups(sweep); g++) {
-        size_t start = i;
-        while (i < cm_sweep_num_boundary_faces(sweep, info->tets) && (size_t)groups[i] == g) i++;
-        set_count(&t, boundary, cm_sweep_boundary_group_name(sweep, g), i - start);
-    }
+    const size_t *offsets = cm_sweep_boundary_group_offsets(sweep, info->tets);
+    for (size_t g = 0; g < cm_sweep_num_boundary_groups(sweep); g++)
+        set_count(&t, boundary, cm_sweep_boundary_group_name(sweep, g), offsets ? offsets[g + 1] - offsets[g] : 0);
     set(&t, root, "boundary_faces", boundary);
     set(&t, root, "warnings", info->warning ? text_list(&t, &info->warning, 1) : keep(&t, json_array()));
     return dump(&t, root, path, error);

@@ -146,9 +146,8 @@ static int add_node_sets(const char *temporary, const char *path, const volume_m
     int ok = file != NULL;
     for (size_t g = 0; ok && g < mesh->num_groups; g++) {
         memset(member, 0, mesh->num_nodes);
-        for (size_t i = 0; i < mesh->num_faces; i++)
-            if ((size_t)mesh->face_groups[i] == g)
-                for (int c = 0; c < 4 && mesh->faces[4 * i + c] >= 0; c++) member[mesh->faces[4 * i + c]] = 1;
+        for (size_t i = mesh->group_offsets[g]; i < mesh->group_offsets[g + 1]; i++)
+            for (int c = 0; c < 4 && mesh->faces[4 * i + c] >= 0; c++) member[mesh->faces[4 * i + c]] = 1;
         ok = fprintf(file, "*NSET, NSET=%s\n", mesh->group_names[g]) > 0;
         size_t on_line = 0;
         for (size_t v = 0; ok && v < mesh->num_nodes; v++) {

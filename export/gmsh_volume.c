@@ -72,9 +72,9 @@ static int add_boundary_group(const volume_mesh *mesh, size_t g, size_t *next_ta
     int ierr = 0, surface = (int)g + 1;
     for (int corners = 3; corners <= 4 && !ierr; corners++) {
         size_t count = 0;
-        for (size_t i = 0; i < mesh->num_faces; i++) {
+        for (size_t i = mesh->group_offsets[g]; i < mesh->group_offsets[g + 1]; i++) {
             const int32_t *f = mesh->faces + 4 * i;
-            if ((size_t)mesh->face_groups[i] != g || (f[3] >= 0) != (corners == 4)) continue;
+            if ((f[3] >= 0) != (corners == 4)) continue;
             for (int c = 0; c < corners; c++) nodes[(size_t)corners * count + (size_t)c] = (size_t)f[c] + 1;
             tags[count++] = (*next_tag)++;
         }

@@ -21,6 +21,9 @@ typedef struct volume_mesh {
     const int32_t *faces, *face_groups;
     size_t num_faces, num_groups;
     const char *const *group_names; /* num_groups (cm_sweep_boundary_group_name) */
+    /* num_groups + 1 (cm_sweep_boundary_group_offsets): group g's faces are
+     * [group_offsets[g], group_offsets[g + 1]) */
+    const size_t *group_offsets;
 } volume_mesh;
 
 #endif

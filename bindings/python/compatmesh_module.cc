@@ -510,8 +510,10 @@ struct Sweep : Output {
   py::dict fields;
   // The boundary's faces (cm_sweep_boundary_faces: 4 node indices each,
   // the 4th -1 for a triangle) and their groups, over the prisms [0] and
-  // the tetrahedra [1].
+  // the tetrahedra [1], with each group's run of faces
+  // (cm_sweep_boundary_group_offsets; empty where there are no faces).
   std::vector<int32_t> faces[2], face_groups[2];
+  std::vector<std::size_t> group_offsets[2];
   std::vector<std::string> group_names;  // cm_sweep_boundary_group_name
 };
 
@@ -862,7 +864,11 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
   for (int t = 0; t < 2; t++) {
     const std::size_t nf = cm_sweep_num_boundary_faces(w.get(), t);
     const int32_t *f = cm_sweep_boundary_faces(w.get(), t), *g = cm_sweep_boundary_groups(w.get(), t);
-    if (nf) swept.faces[t].assign(f, f + 4 * nf), swept.face_groups[t].assign(g, g + nf);
+    const std::size_t *offsets = cm_sweep_boundary_group_offsets(w.get(), t);
+    if (nf) {
+      swept.faces[t].assign(f, f + 4 * nf), swept.face_groups[t].assign(g, g + nf);
+      swept.group_offsets[t].assign(offsets, offsets + cm_sweep_num_boundary_groups(w.get()) + 1);
+    }
   }
   for (std::size_t g = 0; g < cm_sweep_num_boundary_groups(w.get()); g++)
     swept.group_names.push_back(cm_sweep_boundary_group_name(w.get(), g));
@@ -1003,14 +1009,14 @@ py::object sweep_mesh(const Sweep &s, py::object cells, bool gmsh_order, const c
 py::dict sweep_boundary(const Sweep &s, py::object cells)
 {
   int t = sweep_tets(s, cells, "boundary");
-  const std::vector<int32_t> &f = s.faces[t], &g = s.face_groups[t];
+  const std::vector<int32_t> &f = s.faces[t];
+  const std::vector<std::size_t> &offsets = s.group_offsets[t];
   py::dict out;
-  for (std::size_t k = 0, i = 0; k < s.group_names.size(); k++) {
-    std::size_t start = i;
-    while (i < g.size() && std::size_t(g[i]) == k) i++;
-    py::ssize_t width = i > start && f[4 * start + 3] >= 0 ? 4 : 3;
-    py::array_t<int32_t> faces({py::ssize_t(i - start), width});
-    for (std::size_t r = start; r < i; r++)
+  for (std::size_t k = 0; k < s.group_names.size(); k++) {
+    std::size_t start = offsets.empty() ? 0 : offsets[k], end = offsets.empty() ? 0 : offsets[k + 1];
+    py::ssize_t width = end > start && f[4 * start + 3] >= 0 ? 4 : 3;
+    py::array_t<int32_t> faces({py::ssize_t(end - start), width});
+    for (std::size_t r = start; r < end; r++)
       for (py::ssize_t c = 0; c < width; c++) faces.mutable_at(py::ssize_t(r - start), c) = f[4 * r + std::size_t(c)];
     out[py::str(s.group_names[k])] = faces;
   }
@@ -1138,7 +1144,7 @@ void write_sweep_gmsh(const Sweep &s, bool tets, const std::string &file, double
   for (const std::string &name : s.group_names) names.push_back(name.c_str());
   const volume_mesh mesh = {nodes.data(), std::size_t(nodes.shape(0)), cells.data(), std::size_t(cells.shape(0)),
                             tets ? 1 : 0, s.faces[tets].data(), s.face_groups[tets].data(),
-                            s.face_groups[tets].size(), names.size(), names.data()};
+                            s.face_groups[tets].size(), names.size(), names.data(), s.group_offsets[tets].data()};
   int pipe_fds[2];
   if (pipe(pipe_fds) != 0) throw std::runtime_error(std::string("write: ") + std::strerror(errno));
   pid_t child = fork();

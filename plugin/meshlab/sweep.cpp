@@ -148,6 +148,8 @@ SweptVolume swept_volume(SectionMorph &morph, int sections)
   volume.face_groups.assign(cm_sweep_boundary_groups(sweep, 1), cm_sweep_boundary_groups(sweep, 1) + faces);
   for (std::size_t g = 0; g < cm_sweep_num_boundary_groups(sweep); g++)
     volume.group_names.push_back(cm_sweep_boundary_group_name(sweep, g));
+  volume.group_offsets.assign(cm_sweep_boundary_group_offsets(sweep, 1),
+                              cm_sweep_boundary_group_offsets(sweep, 1) + volume.group_names.size() + 1);
   volume.sections = cm_sweep_num_sections(sweep);
   cm_sweep_quality quality;
   cm_sweep_get_quality(sweep, &quality);
@@ -179,7 +181,7 @@ void write_msh(const SweptVolume &volume, const std::string &path)
   for (const std::string &name : volume.group_names) names.push_back(name.c_str());
   const volume_mesh mesh = {volume.nodes.data(), volume.nodes.size() / 3, volume.tets.data(), volume.tets.size() / 4,
                             1, volume.faces.data(), volume.face_groups.data(), volume.face_groups.size(),
-                            names.size(), names.data()};
+                            names.size(), names.data(), volume.group_offsets.data()};
   const gmsh_write_options options = {4.1, 1, nullptr};
   char message[512] = "";
   const int ierr = gmsh_write_volume(temporary.c_str(), &mesh, &options, message, sizeof message);

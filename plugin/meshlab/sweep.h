@@ -76,6 +76,7 @@ struct SweptVolume {
   // and their groups: cm_sweep_boundary_faces of the tetrahedra.
   std::vector<int32_t> faces, face_groups;
   std::vector<std::string> group_names;  // cm_sweep_boundary_group_name
+  std::vector<std::size_t> group_offsets;  // cm_sweep_boundary_group_offsets
   std::size_t sections = 0;   // with those the sweep inserted
   double min_dihedral_deg = 0;
 };

@@ -1,5 +1,5 @@
-/* The sweep's boundary faces checked against the cells: the group count
- * and sizes, each cap on its section and each wall face on two
+/* The sweep's boundary faces checked against the cells: the group count,
+ * sizes and offsets, each cap on its section and each wall face on two
  * consecutive sections over its own loop, the faces closing around the
  * volume outward (the flux of x / 3 through them is the cells' volume:
  * the bilinear quads integrated exactly by 2 x 2 Gauss points), and with
@@ -119,6 +119,16 @@ static void check_sweep_boundary(const char *name, const cm_sweep *w, const cm_r
     size_t nf = cm_sweep_num_boundary_faces(w, tets), per_edge = tets ? 2 : 1;
     const int32_t *f = cm_sweep_boundary_faces(w, tets), *g = cm_sweep_boundary_groups(w, tets);
     CHECK_MSG(nf == 2 * nt + (ns - 1) * n * per_edge, "%s: %zu boundary faces", name, nf);
+    /* The group offsets: from 0 to the face count, each group's run of
+     * faces exactly its own. */
+    const size_t *offsets = cm_sweep_boundary_group_offsets(w, tets);
+    size_t off_wrong = 0;
+    for (size_t k = 0; offsets && k < groups; k++) {
+        off_wrong += offsets[k] > offsets[k + 1] || offsets[k + 1] > nf;
+        for (size_t i = offsets[k]; i < offsets[k + 1] && i < nf; i++) off_wrong += g[i] != (int32_t)k;
+    }
+    CHECK_MSG(offsets && offsets[0] == 0 && offsets[groups] == nf && off_wrong == 0,
+              "%s: group offsets %s, %zu out of place", name, offsets ? "given" : "missing", off_wrong);
     const double *nodes = cm_sweep_nodes(w);
     /* Each wall group over one loop (the first face's), the loops in
      * order, and each loop's faces all there. */
@@ -188,6 +198,7 @@ static void check_sweep_boundary(const char *name, const cm_sweep *w, const cm_r
     CHECK_MSG(fabs(flux - volume) <= 1e-9 * fabs(volume), "%s: the boundary encloses %.15g, the cells %.15g", name,
               flux, volume);
     CHECK(cm_sweep_num_boundary_faces(w, !tets) == (tets ? 2 * nt + (ns - 1) * n : 0) || !tets);
+    CHECK(!cm_sweep_boundary_group_offsets(w, !tets) == !cm_sweep_num_boundary_faces(w, !tets));
     free(loop), free(count), free(loop_size);
 }
 #endif

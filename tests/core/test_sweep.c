@@ -297,7 +297,8 @@ static void test_walls_at_corners(void)
     cm_sweep_free(w);
     so.wall_corner_deg = 180;
     CHECK(m && cm_sweep_create(m, &so, &w) == CM_ERR_ARGUMENT && strstr(cm_sweep_message(w), "wall_corner_deg") &&
-          cm_sweep_num_boundary_groups(w) == 0 && !cm_sweep_boundary_group_name(w, 0));
+          cm_sweep_num_boundary_groups(w) == 0 && !cm_sweep_boundary_group_name(w, 0) &&
+          !cm_sweep_boundary_group_offsets(w, 0));
     cm_sweep_free(w);
     cm_morph_free(m);
     cm_result_free(r);

@@ -742,6 +742,11 @@ CM_API size_t cm_sweep_num_boundary_groups(const cm_sweep *sweep);
 CM_API size_t cm_sweep_num_boundary_faces(const cm_sweep *sweep, int tets);
 CM_API const int32_t *cm_sweep_boundary_faces(const cm_sweep *sweep, int tets);
 CM_API const int32_t *cm_sweep_boundary_groups(const cm_sweep *sweep, int tets);
+/* Where each group's faces lie, so that a group is taken without a scan:
+ * num_boundary_groups + 1 offsets, group g's faces [offsets[g],
+ * offsets[g + 1]), the first offset 0, the last the face count; NULL where
+ * the faces are NULL. */
+CM_API const size_t *cm_sweep_boundary_group_offsets(const cm_sweep *sweep, int tets);
 /* Group g's name, as every writer gives it (at most 31 characters, words a
  * solver's input deck takes as set names); NULL out of range. Owned by
  * the sweep. */

@@ -542,6 +542,10 @@ static const cm_sweep_boundary *boundary_of(const cm_sweep *w, int tets)
 size_t cm_sweep_num_boundary_faces(const cm_sweep *w, int tets) { return w ? boundary_of(w, tets)->nf : 0; }
 const int32_t *cm_sweep_boundary_faces(const cm_sweep *w, int tets) { return w ? boundary_of(w, tets)->faces : NULL; }
 const int32_t *cm_sweep_boundary_groups(const cm_sweep *w, int tets) { return w ? boundary_of(w, tets)->groups : NULL; }
+const size_t *cm_sweep_boundary_group_offsets(const cm_sweep *w, int tets)
+{
+    return w ? boundary_of(w, tets)->offsets : NULL;
+}
 
 cm_morph_method cm_sweep_morph_method(const cm_sweep *w) { return w ? w->morph_method : CM_MORPH_CONVEX; }
 

@@ -8,6 +8,7 @@
  * bottom's reversed. */
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "geom/angle.h"
 #include "morph/sweep_boundary.h"
@@ -90,8 +91,9 @@ cm_status cm_sweep_boundary_build(cm_sweep_boundary *b, const cm_result *r, cons
     b->nf = 2 * nt + n * per_edge;
     b->faces = malloc(4 * b->nf * sizeof *b->faces);
     b->groups = malloc(b->nf * sizeof *b->groups);
-    size_t *at = calloc(walls->groups + 1, sizeof *at); /* where each group's next face goes */
-    if (!b->faces || !b->groups || !at) {
+    b->offsets = calloc(walls->groups + 1, sizeof *b->offsets);
+    size_t *at = malloc((walls->groups + 1) * sizeof *at); /* where each group's next face goes */
+    if (!b->faces || !b->groups || !b->offsets || !at) {
         free(at);
         cm_sweep_boundary_free(b);
         return cm_fail_status(error, CM_ERR_NO_MEMORY);
@@ -100,10 +102,14 @@ cm_status cm_sweep_boundary_build(cm_sweep_boundary *b, const cm_result *r, cons
     int32_t top = (int32_t)((ns - 1) * nv);
     for (size_t t = 0; t < nt; t++) put(b, t, 0, tri[3 * t], tri[3 * t + 2], tri[3 * t + 1], -1);
     for (size_t t = 0; t < nt; t++) put(b, nt + t, 1, top + tri[3 * t], top + tri[3 * t + 1], top + tri[3 * t + 2], -1);
-    /* The walls sorted by group: each group's faces from its offset on. */
-    for (size_t i = 0; i < n; i++) at[walls->edge_group[i] + 1] += per_edge;
-    at[2] = 2 * nt;
-    for (size_t g = 2; g < walls->groups; g++) at[g + 1] += at[g];
+    /* The faces sorted by group, the caps first, then a counting sort of
+     * the walls; its offsets are kept, so that callers take a group's faces
+     * without a scan. */
+    size_t *offsets = b->offsets;
+    for (size_t i = 0; i < n; i++) offsets[walls->edge_group[i] + 1] += per_edge;
+    offsets[1] = nt, offsets[2] = 2 * nt;
+    for (size_t g = 2; g < walls->groups; g++) offsets[g + 1] += offsets[g];
+    memcpy(at, offsets, (walls->groups + 1) * sizeof *at);
     /* Boundary vertex w ends the boundary edge u -> w whose left side is a
      * triangle: the opposite of w's outgoing boundary half-edge, which
      * runs clockwise. The edge is u's in the loop's order if w follows u
@@ -137,7 +143,8 @@ cm_status cm_sweep_boundary_build(cm_sweep_boundary *b, const cm_result *r, cons
 
 void cm_sweep_boundary_free(cm_sweep_boundary *b)
 {
-    free(b->faces), free(b->groups);
+    free(b->faces), free(b->groups), free(b->offsets);
     b->faces = b->groups = NULL;
+    b->offsets = NULL;
     b->nf = 0;
 }

@@ -33,6 +33,8 @@ typedef struct cm_sweep_boundary {
     size_t nf;
     int32_t *faces;  /* 4 node indices per face, the 4th -1 for a triangle */
     int32_t *groups; /* nf: the face's group, faces sorted by group */
+    /* walls->groups + 1: group g's faces are [offsets[g], offsets[g + 1]) */
+    size_t *offsets;
 } cm_sweep_boundary;
 
 /* The boundary of the sweep of r's triangles over ns sections (node
