@@ -377,7 +377,6 @@ static int sweep(const sweep_args *args, cli_error *error)
                             args->tets ? cm_sweep_num_tets(sweep) : cm_sweep_num_prisms(sweep),
                             args->tets,
                             cm_sweep_boundary_faces(sweep, args->tets),
-                            cm_sweep_boundary_groups(sweep, args->tets),
                             cm_sweep_num_boundary_faces(sweep, args->tets),
                             cm_sweep_num_boundary_groups(sweep), NULL,
                             cm_sweep_boundary_group_offsets(sweep, args->tets)};

@@ -102,36 +102,82 @@ static char *make_temporary(const char *path, cli_error *error)
     return temporary;
 }
 
-/* Gmsh writes Nastran bulk data without the BEGIN BULK line that readers
- * (meshio among them) look for: inserted after the leading comments. */
-static int add_begin_bulk(const char *temporary, const char *path, cli_error *error)
+/* The temporary file's text (malloc'd, NUL-terminated; *size its length),
+ * or NULL. */
+static char *read_text(const char *temporary, size_t *size)
 {
     FILE *file = fopen(temporary, "rb");
     char *text = NULL;
-    long size = -1;
-    if (file && fseek(file, 0, SEEK_END) == 0) size = ftell(file);
-    if (size >= 0 && fseek(file, 0, SEEK_SET) == 0 && (text = malloc((size_t)size + 1)) &&
-        fread(text, 1, (size_t)size, file) == (size_t)size) {
-        text[size] = '\0';
+    long length = -1;
+    if (file && fseek(file, 0, SEEK_END) == 0) length = ftell(file);
+    if (length >= 0 && fseek(file, 0, SEEK_SET) == 0 && (text = malloc((size_t)length + 1)) &&
+        fread(text, 1, (size_t)length, file) == (size_t)length) {
+        text[length] = '\0';
+        *size = (size_t)length;
     } else {
-        size = -1;
+        free(text);
+        text = NULL;
     }
     if (file) fclose(file);
+    return text;
+}
+
+/* Rewrites the temporary file with text[at, at + drop) replaced by insert. */
+static int splice(const char *temporary, const char *path, size_t at, size_t drop, const char *insert,
+                  cli_error *error)
+{
+    size_t size = 0;
+    char *text = read_text(temporary, &size);
     int code = CLI_EXIT_INTERNAL;
-    if (size >= 0) {
-        size_t head = 0; /* the "$" comment lines */
-        while (text[head] == '$') {
-            const char *end = strchr(text + head, '\n');
-            head = end ? (size_t)(end - text) + 1 : (size_t)size;
-        }
-        file = fopen(temporary, "wb");
-        if (file && fwrite(text, 1, head, file) == head && fputs("BEGIN BULK\n", file) >= 0 &&
-            fwrite(text + head, 1, (size_t)size - head, file) == (size_t)size - head)
+    if (text && at + drop <= size) {
+        FILE *file = fopen(temporary, "wb");
+        if (file && fwrite(text, 1, at, file) == at && fputs(insert, file) >= 0 &&
+            fwrite(text + at + drop, 1, size - at - drop, file) == size - at - drop)
             code = CLI_EXIT_OK;
         if (file && fclose(file) != 0) code = CLI_EXIT_INTERNAL;
     }
     if (code != CLI_EXIT_OK) cli_error_set(error, "cannot write %s: %s", path, strerror(errno ? errno : EIO));
     free(text);
+    return code;
+}
+
+/* Gmsh writes Nastran bulk data without the BEGIN BULK line that readers
+ * (meshio among them) look for: inserted after the leading comments. */
+static int add_begin_bulk(const char *temporary, const char *path, cli_error *error)
+{
+    size_t size = 0, head = 0; /* the "$" comment lines */
+    char *text = read_text(temporary, &size);
+    while (text && text[head] == '$') {
+        const char *end = strchr(text + head, '\n');
+        head = end ? (size_t)(end - text) + 1 : size;
+    }
+    free(text);
+    return splice(temporary, path, head, 0, "BEGIN BULK\n", error);
+}
+
+/* Gmsh titles an Abaqus deck with the name of the file it wrote, here
+ * the temporary one: the title becomes the output's own name, so that
+ * the same sweep gives the same deck. */
+static int name_heading(const char *temporary, const char *path, cli_error *error)
+{
+    static const char heading[] = "*Heading\n";
+    size_t size = 0, length = 0;
+    char *text = read_text(temporary, &size);
+    const char *end = text && strncmp(text, heading, sizeof heading - 1) == 0 ? strchr(text + sizeof heading - 1, '\n')
+                                                                               : NULL;
+    if (end) length = (size_t)(end - text) + 1 - (sizeof heading - 1);
+    free(text);
+    if (!end) return CLI_EXIT_OK; /* no title to fix */
+    const char *slash = strrchr(path, '/');
+    const char *name = slash ? slash + 1 : path;
+    char *title = malloc(strlen(name) + 3);
+    if (!title) {
+        cli_error_set(error, "cannot write %s: out of memory", path);
+        return CLI_EXIT_INTERNAL;
+    }
+    sprintf(title, " %s\n", name);
+    int code = splice(temporary, path, sizeof heading - 1, length, title, error);
+    free(title);
     return code;
 }
 
@@ -176,6 +222,7 @@ int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
     int code = strcasecmp(extension, "vtu") == 0 ? write_vtu(temporary, path, mesh, error)
                                                  : write_with_gmsh(temporary, path, mesh, msh_version, error);
     if (code == CLI_EXIT_OK && strcasecmp(extension, "bdf") == 0) code = add_begin_bulk(temporary, path, error);
+    if (code == CLI_EXIT_OK && strcasecmp(extension, "inp") == 0) code = name_heading(temporary, path, error);
     if (code == CLI_EXIT_OK && strcasecmp(extension, "inp") == 0 && mesh->num_faces)
         code = add_node_sets(temporary, path, mesh, error);
     if (code == CLI_EXIT_OK && interrupted) {

@@ -15,10 +15,10 @@ typedef struct volume_mesh {
     const int32_t *cells;
     size_t num_cells;
     int tetrahedra;           /* 1: cells are tetrahedra, 0: prisms */
-    /* The boundary faces in groups (cm_sweep_boundary_faces and _groups:
-     * 4 node indices per face, the 4th -1 for a triangle); num_faces 0:
+    /* The boundary faces, sorted by group (cm_sweep_boundary_faces: 4
+     * node indices per face, the 4th -1 for a triangle); num_faces 0:
      * none. */
-    const int32_t *faces, *face_groups;
+    const int32_t *faces;
     size_t num_faces, num_groups;
     const char *const *group_names; /* num_groups (cm_sweep_boundary_group_name) */
     /* num_groups + 1 (cm_sweep_boundary_group_offsets): group g's faces are

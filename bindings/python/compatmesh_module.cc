@@ -509,10 +509,10 @@ struct Morph : Output {
 struct Sweep : Output {
   py::dict fields;
   // The boundary's faces (cm_sweep_boundary_faces: 4 node indices each,
-  // the 4th -1 for a triangle) and their groups, over the prisms [0] and
+  // the 4th -1 for a triangle), sorted by group, over the prisms [0] and
   // the tetrahedra [1], with each group's run of faces
   // (cm_sweep_boundary_group_offsets; empty where there are no faces).
-  std::vector<int32_t> faces[2], face_groups[2];
+  std::vector<int32_t> faces[2];
   std::vector<std::size_t> group_offsets[2];
   std::vector<std::string> group_names;  // cm_sweep_boundary_group_name
 };
@@ -863,10 +863,10 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
   Sweep swept;
   for (int t = 0; t < 2; t++) {
     const std::size_t nf = cm_sweep_num_boundary_faces(w.get(), t);
-    const int32_t *f = cm_sweep_boundary_faces(w.get(), t), *g = cm_sweep_boundary_groups(w.get(), t);
+    const int32_t *f = cm_sweep_boundary_faces(w.get(), t);
     const std::size_t *offsets = cm_sweep_boundary_group_offsets(w.get(), t);
     if (nf) {
-      swept.faces[t].assign(f, f + 4 * nf), swept.face_groups[t].assign(g, g + nf);
+      swept.faces[t].assign(f, f + 4 * nf);
       swept.group_offsets[t].assign(offsets, offsets + cm_sweep_num_boundary_groups(w.get()) + 1);
     }
   }
@@ -1143,8 +1143,8 @@ void write_sweep_gmsh(const Sweep &s, bool tets, const std::string &file, double
   std::vector<const char *> names;
   for (const std::string &name : s.group_names) names.push_back(name.c_str());
   const volume_mesh mesh = {nodes.data(), std::size_t(nodes.shape(0)), cells.data(), std::size_t(cells.shape(0)),
-                            tets ? 1 : 0, s.faces[tets].data(), s.face_groups[tets].data(),
-                            s.face_groups[tets].size(), names.size(), names.data(), s.group_offsets[tets].data()};
+                            tets ? 1 : 0, s.faces[tets].data(),
+                            s.faces[tets].size() / 4, names.size(), names.data(), s.group_offsets[tets].data()};
   int pipe_fds[2];
   if (pipe(pipe_fds) != 0) throw std::runtime_error(std::string("write: ") + std::strerror(errno));
   pid_t child = fork();

@@ -145,7 +145,6 @@ SweptVolume swept_volume(SectionMorph &morph, int sections)
   volume.tets.assign(cm_sweep_tets(sweep), cm_sweep_tets(sweep) + 4 * cm_sweep_num_tets(sweep));
   const std::size_t faces = cm_sweep_num_boundary_faces(sweep, 1);
   volume.faces.assign(cm_sweep_boundary_faces(sweep, 1), cm_sweep_boundary_faces(sweep, 1) + 4 * faces);
-  volume.face_groups.assign(cm_sweep_boundary_groups(sweep, 1), cm_sweep_boundary_groups(sweep, 1) + faces);
   for (std::size_t g = 0; g < cm_sweep_num_boundary_groups(sweep); g++)
     volume.group_names.push_back(cm_sweep_boundary_group_name(sweep, g));
   volume.group_offsets.assign(cm_sweep_boundary_group_offsets(sweep, 1),
@@ -180,7 +179,7 @@ void write_msh(const SweptVolume &volume, const std::string &path)
   std::vector<const char *> names;
   for (const std::string &name : volume.group_names) names.push_back(name.c_str());
   const volume_mesh mesh = {volume.nodes.data(), volume.nodes.size() / 3, volume.tets.data(), volume.tets.size() / 4,
-                            1, volume.faces.data(), volume.face_groups.data(), volume.face_groups.size(),
+                            1, volume.faces.data(), volume.faces.size() / 4,
                             names.size(), names.data(), volume.group_offsets.data()};
   const gmsh_write_options options = {4.1, 1, nullptr};
   char message[512] = "";

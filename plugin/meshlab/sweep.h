@@ -73,8 +73,8 @@ struct SweptVolume {
   std::vector<double> nodes;  // 3 per node
   std::vector<int32_t> tets;  // 4 per tetrahedron, positive volume
   // The boundary's triangles (4 node indices each, the 4th -1), outward,
-  // and their groups: cm_sweep_boundary_faces of the tetrahedra.
-  std::vector<int32_t> faces, face_groups;
+  // sorted by group: cm_sweep_boundary_faces of the tetrahedra.
+  std::vector<int32_t> faces;
   std::vector<std::string> group_names;  // cm_sweep_boundary_group_name
   std::vector<std::size_t> group_offsets;  // cm_sweep_boundary_group_offsets
   std::size_t sections = 0;   // with those the sweep inserted

@@ -213,6 +213,19 @@ def test_inp_node_sets(cm, tmp_path, kind):
         assert np.array_equal(np.sort(mesh.point_sets[name]), members), name
 
 
+def test_inp_is_titled_with_its_own_name(cm, tmp_path):
+    """The deck's *Heading names the file written (not the temporary file
+    it was written to), so the same sweep gives the same deck twice."""
+    write_boundary_pair(tmp_path, "pipe")
+    for out in ("one.inp", "two.inp"):
+        result = cm("sweep", "a.xy", "b.xy", "--sections", 3, "-o", out, cwd=tmp_path)
+        assert result.returncode == 0, result.stderr
+    one, two = ((tmp_path / out).read_text().split("\n", 2) for out in ("one.inp", "two.inp"))
+    assert one[:2] == ["*Heading", " one.inp"] and two[:2] == ["*Heading", " two.inp"]
+    assert one[2] == two[2]
+    assert not list(tmp_path.glob(".*compatmesh-*"))
+
+
 @pytest.mark.parametrize("version", ["4.1", "2.2"])
 @pytest.mark.parametrize("kind", ["prism", "tet"])
 @pytest.mark.parametrize("name", ["glyph", "pipe"])
