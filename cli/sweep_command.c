@@ -209,7 +209,8 @@ static void print_sweep_help(FILE *out)
           "'hole_1', 'hole_2', ... (the wall over each hole): the caps' triangles and\n"
           "the prisms' side quads (with --tets the tetrahedra's triangles), each\n"
           "face's normal pointing out of the volume. A .inp file (Abaqus, CalculiX)\n"
-          "gets those groups as node sets (*NSET).\n"
+          "gets those groups as node sets (*NSET) and as element-face surfaces\n"
+          "(*SURFACE, TYPE=ELEMENT) for pressures (*DSLOAD).\n"
           "\n"
           "Exit status (on failure no file is written):\n"
           "  0    success\n"
@@ -379,7 +380,8 @@ static int sweep(const sweep_args *args, cli_error *error)
                             cm_sweep_boundary_faces(sweep, args->tets),
                             cm_sweep_num_boundary_faces(sweep, args->tets),
                             cm_sweep_num_boundary_groups(sweep), NULL,
-                            cm_sweep_boundary_group_offsets(sweep, args->tets)};
+                            cm_sweep_boundary_group_offsets(sweep, args->tets),
+                            cm_sweep_boundary_cells(sweep, args->tets)};
         const char **names = malloc((mesh.num_groups + 1) * sizeof *names);
         for (size_t g = 0; names && g < mesh.num_groups; g++) names[g] = cm_sweep_boundary_group_name(sweep, g);
         mesh.group_names = names;

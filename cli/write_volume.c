@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "abaqus_sets.h"
 #include "interrupt.h"
 #include "write_vtu.h"
 
@@ -181,31 +182,13 @@ static int name_heading(const char *temporary, const char *path, cli_error *erro
     return code;
 }
 
-/* Abaqus (and CalculiX) decks take boundary conditions on node sets; Gmsh
- * 4.8 writes a surface group only with its faces as shell elements, so the
- * boundary groups are appended as *NSET blocks (the nodes numbered from 1
- * as Gmsh numbers them), 16 to a line as Abaqus allows. */
-static int add_node_sets(const char *temporary, const char *path, const volume_mesh *mesh, cli_error *error)
+/* The boundary groups appended to an Abaqus deck (abaqus_sets.h). */
+static int add_boundary_sets(const char *temporary, const char *path, const volume_mesh *mesh, cli_error *error)
 {
-    unsigned char *member = malloc(mesh->num_nodes + 1);
-    FILE *file = member ? fopen(temporary, "ab") : NULL;
-    int ok = file != NULL;
-    for (size_t g = 0; ok && g < mesh->num_groups; g++) {
-        memset(member, 0, mesh->num_nodes);
-        for (size_t i = mesh->group_offsets[g]; i < mesh->group_offsets[g + 1]; i++)
-            for (int c = 0; c < 4 && mesh->faces[4 * i + c] >= 0; c++) member[mesh->faces[4 * i + c]] = 1;
-        ok = fprintf(file, "*NSET, NSET=%s\n", mesh->group_names[g]) > 0;
-        size_t on_line = 0;
-        for (size_t v = 0; ok && v < mesh->num_nodes; v++) {
-            if (!member[v]) continue;
-            ok = fprintf(file, on_line ? ", %zu" : "%zu", v + 1) > 0;
-            if (ok && ++on_line == 16) ok = fputc('\n', file) != EOF, on_line = 0;
-        }
-        if (ok && on_line) ok = fputc('\n', file) != EOF;
-    }
+    FILE *file = fopen(temporary, "ab");
+    int ok = file && abaqus_write_sets(file, mesh) == 0;
     if (file && fclose(file) != 0) ok = 0;
-    free(member);
-    if (!ok) cli_error_set(error, "cannot write %s: %s", path, member ? strerror(errno ? errno : EIO) : "out of memory");
+    if (!ok) cli_error_set(error, "cannot write %s: %s", path, strerror(errno ? errno : EIO));
     return ok ? CLI_EXIT_OK : CLI_EXIT_INTERNAL;
 }
 
@@ -224,7 +207,7 @@ int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
     if (code == CLI_EXIT_OK && strcasecmp(extension, "bdf") == 0) code = add_begin_bulk(temporary, path, error);
     if (code == CLI_EXIT_OK && strcasecmp(extension, "inp") == 0) code = name_heading(temporary, path, error);
     if (code == CLI_EXIT_OK && strcasecmp(extension, "inp") == 0 && mesh->num_faces)
-        code = add_node_sets(temporary, path, mesh, error);
+        code = add_boundary_sets(temporary, path, mesh, error);
     if (code == CLI_EXIT_OK && interrupted) {
         cli_error_set(error, "interrupted; nothing written");
         code = CLI_EXIT_INTERRUPTED;

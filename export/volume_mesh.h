@@ -24,6 +24,9 @@ typedef struct volume_mesh {
     /* num_groups + 1 (cm_sweep_boundary_group_offsets): group g's faces are
      * [group_offsets[g], group_offsets[g + 1]) */
     const size_t *group_offsets;
+    /* 2 per face (cm_sweep_boundary_cells): its cell, from 0, and the
+     * cell's face as Abaqus numbers them, from 0; NULL: not known. */
+    const int64_t *face_cells;
 } volume_mesh;
 
 #endif

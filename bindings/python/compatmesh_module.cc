@@ -6,6 +6,7 @@
 #include <compatmesh/compatmesh.h>
 #include <compatmesh/handles.hh>
 #include <compatmesh/plane.hh>
+#include <abaqus_sets.h>
 #ifdef CM_PYTHON_HAVE_GMSH
 #include <gmsh_volume.h>
 
@@ -17,11 +18,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cfloat>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <cstring>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -514,6 +518,7 @@ struct Sweep : Output {
   // (cm_sweep_boundary_group_offsets; empty where there are no faces).
   std::vector<int32_t> faces[2];
   std::vector<std::size_t> group_offsets[2];
+  std::vector<int64_t> face_cells[2];  // cm_sweep_boundary_cells
   std::vector<std::string> group_names;  // cm_sweep_boundary_group_name
 };
 
@@ -868,6 +873,8 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
     if (nf) {
       swept.faces[t].assign(f, f + 4 * nf);
       swept.group_offsets[t].assign(offsets, offsets + cm_sweep_num_boundary_groups(w.get()) + 1);
+      const int64_t *cells = cm_sweep_boundary_cells(w.get(), t);
+      swept.face_cells[t].assign(cells, cells + 2 * nf);
     }
   }
   for (std::size_t g = 0; g < cm_sweep_num_boundary_groups(w.get()); g++)
@@ -1023,17 +1030,6 @@ py::dict sweep_boundary(const Sweep &s, py::object cells)
   return out;
 }
 
-// The boundary groups as node sets (name -> sorted node indices), as
-// Abaqus decks take boundary conditions.
-py::dict sweep_node_sets(const Sweep &s, bool tets)
-{
-  py::dict sets;
-  py::module_ np = py::module_::import("numpy");
-  for (auto item : sweep_boundary(s, py::str(tets ? "tetra" : "wedge")))
-    sets[item.first] = np.attr("unique")(item.second);
-  return sets;
-}
-
 py::object sweep_to_meshio(const Sweep &s, py::object cells) { return sweep_mesh(s, cells, false, "to_meshio"); }
 
 // The path's extension, lower case ("" without one).
@@ -1100,10 +1096,40 @@ void write_atomically(py::object path, bool in_place, const std::string &suffix,
   }
 }
 
+// The sweep as the shared writers take it (export/volume_mesh.h): the
+// cells in Gmsh's corner order, the boundary's faces in groups.
+struct SweepVolume {
+  py::array_t<double, py::array::c_style | py::array::forcecast> nodes;
+  py::array_t<int32_t, py::array::c_style | py::array::forcecast> cells;
+  std::vector<const char *> names;
+  volume_mesh mesh;
+  SweepVolume(const Sweep &s, bool tets)
+      : nodes(decltype(nodes)::ensure(s.fields["nodes"])), cells(decltype(cells)::ensure(s.fields[tets ? "tets" : "prisms"]))
+  {
+    for (const std::string &name : s.group_names) names.push_back(name.c_str());
+    mesh = {nodes.data(), std::size_t(nodes.shape(0)), cells.data(), std::size_t(cells.shape(0)), tets ? 1 : 0,
+            s.faces[tets].data(), s.faces[tets].size() / 4, names.size(), names.data(), s.group_offsets[tets].data(),
+            s.face_cells[tets].data()};
+  }
+};
+
+// The Abaqus deck's boundary sets (export/abaqus_sets.h, as the command
+// line appends them) appended to the file meshio wrote.
+void append_abaqus_sets(const Sweep &s, bool tets, const std::string &file)
+{
+  const SweepVolume volume(s, tets);
+  FILE *out = std::fopen(file.c_str(), "ab");
+  bool ok = out && abaqus_write_sets(out, &volume.mesh) == 0;
+  int error = errno;
+  if (out && std::fclose(out) != 0) ok = false, error = errno;
+  if (!ok) throw std::runtime_error("write: " + file + ": " + std::strerror(error ? error : EIO));
+}
+
 // write(path, which, file_format): one mesh through meshio.write, in the
 // format meshio_format chose; Gmsh's files as text, as Gmsh itself writes
 // them; written by write_atomically.
-void write_mesh(py::object mesh, py::object path, py::object format)
+void write_mesh(py::object mesh, py::object path, py::object format,
+                const std::function<void(const std::string &)> &after = nullptr)
 {
   py::object write = import_meshio("write").attr("write");
   std::string f = format.is_none() ? "" : std::string(py::str(format));
@@ -1117,6 +1143,7 @@ void write_mesh(py::object mesh, py::object path, py::object format)
         write(written, mesh, py::arg("file_format") = format, py::arg("float_fmt") = ".14g");
       else
         write(written, mesh, py::arg("file_format") = format);
+      if (after) after(py::str(written));
     });
   } catch (py::error_already_set &e) {
     // meshio 5.0's Nastran writer asserts where a double needs more than
@@ -1137,14 +1164,8 @@ void write_mesh(py::object mesh, py::object path, py::object format)
 // through a pipe.
 void write_sweep_gmsh(const Sweep &s, bool tets, const std::string &file, double version)
 {
-  auto nodes = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(s.fields["nodes"]);
-  auto cells = py::array_t<int32_t, py::array::c_style | py::array::forcecast>::ensure(
-      s.fields[tets ? "tets" : "prisms"]);
-  std::vector<const char *> names;
-  for (const std::string &name : s.group_names) names.push_back(name.c_str());
-  const volume_mesh mesh = {nodes.data(), std::size_t(nodes.shape(0)), cells.data(), std::size_t(cells.shape(0)),
-                            tets ? 1 : 0, s.faces[tets].data(),
-                            s.faces[tets].size() / 4, names.size(), names.data(), s.group_offsets[tets].data()};
+  const SweepVolume volume(s, tets);
+  const volume_mesh &mesh = volume.mesh;
   int pipe_fds[2];
   if (pipe(pipe_fds) != 0) throw std::runtime_error(std::string("write: ") + std::strerror(errno));
   pid_t child = fork();
@@ -1514,14 +1535,14 @@ of Gmsh's a, b, c, d, e, f. Needs meshio.)doc")
             }
 #endif
             py::object mesh = sweep_mesh(sw, cells, gmsh_wedge_order(format), "write");
-            if (f == "abaqus") {  // as the command line's deck: the cells in ELSET sweep, the groups' NSETs
-              py::dict cell_sets;
-              cell_sets["sweep"] = py::make_tuple(py::module_::import("numpy").attr("arange")(
-                  py::len(sw.fields[tets ? "tets" : "prisms"])));
-              mesh.attr("cell_sets") = cell_sets;
-              mesh.attr("point_sets") = sweep_node_sets(sw, tets);
-            }
-            write_mesh(mesh, path, format);
+            if (f != "abaqus") return write_mesh(mesh, path, format);
+            // as the command line's deck: the cells in ELSET sweep, the
+            // boundary's groups as node sets and element-face surfaces
+            py::dict cell_sets;
+            cell_sets["sweep"] = py::make_tuple(py::module_::import("numpy").attr("arange")(
+                py::len(sw.fields[tets ? "tets" : "prisms"])));
+            mesh.attr("cell_sets") = cell_sets;
+            write_mesh(mesh, path, format, [&](const std::string &file) { append_abaqus_sets(sw, tets, file); });
           },
           py::arg("path"), py::arg("cells") = py::none(), py::arg("file_format") = py::none(),
           R"doc(write(path, cells=None, file_format=None)
@@ -1532,7 +1553,8 @@ extension unless file_format names one of meshio's. .msh (file_format
 command line writes it: text format 4.1, the cells in the physical group
 "sweep" and the boundary as surfaces with a physical group each (see
 boundary()). Abaqus's .inp gets the boundary's groups as node sets
-(*NSET). The other formats go through meshio.write with the cells only;
+(*NSET) and element-face surfaces (*SURFACE, TYPE=ELEMENT, for *DSLOAD).
+The other formats go through meshio.write with the cells only;
 Abaqus's and Nastran's get the prisms in their own corner order (Gmsh's),
 the others VTK's.)doc")
       .def("boundary", &sweep_boundary, py::arg("cells") = py::none(),

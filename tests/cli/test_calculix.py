@@ -10,6 +10,8 @@ import re
 import shutil
 import subprocess
 
+import meshio
+import numpy as np
 import pytest
 
 from test_sweep import reported, ring, write_boundary_pair
@@ -61,3 +63,63 @@ def test_tapered_pipe_pulled(cm, tmp_path, kind):
     areas = [polygon_area(outer) - polygon_area(hole) for outer, hole in (ring(1.0, 0.4, 0.0), ring(1.2, 0.3, 0.2))]
     _, _, fz = solve(tmp_path, "pipe.inp")
     assert E * min(areas) * DELTA / HEIGHT < -fz < E * max(areas) * DELTA / HEIGHT
+
+
+def rectangle(x0, y0, x1, y1, per_side):
+    """A rectangle's outline, counter-clockwise, per_side points a side."""
+    corners = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+    return [(a[0] + (b[0] - a[0]) * i / per_side, a[1] + (b[1] - a[1]) * i / per_side)
+            for a, b in zip(corners, corners[1:] + corners[:1]) for i in range(per_side)]
+
+
+def solve_loaded(tmp_path, deck, restraints, loads, reacting):
+    """ccx on deck with the node sets' restraints (set, first dof, last
+    dof) and pressures on the element-face surfaces (surface, pressure);
+    returns the reaction (fx, fy, fz) over the node set `reacting`."""
+    (tmp_path / "job.inp").write_text(
+        f"*INCLUDE, INPUT={deck}\n*MATERIAL, NAME=SOLID\n*ELASTIC\n{E}, 0.0\n"
+        "*SOLID SECTION, ELSET=sweep, MATERIAL=SOLID\n*STEP\n*STATIC\n*BOUNDARY\n"
+        + "".join(f"{name}, {first}, {last}\n" for name, first, last in restraints)
+        + "*DSLOAD\n" + "".join(f"{name}, P, {p}\n" for name, p in loads)
+        + f"*NODE PRINT, NSET={reacting}, TOTALS=ONLY\nRF\n*END STEP\n")
+    run = subprocess.run([shutil.which("ccx"), "-i", "job"], cwd=tmp_path, capture_output=True, text=True,
+                         timeout=300)
+    assert run.returncode == 0 and "ERROR" not in run.stdout.upper(), run.stdout[-2000:]
+    text = (tmp_path / "job.dat").read_text()
+    m = re.search(rf"total force \(fx,fy,fz\) for set {reacting.upper()}.*\n\s*\n\s*(\S+)\s+(\S+)\s+(\S+)", text)
+    assert m, text
+    return [float(v) for v in m.groups()]
+
+
+@pytest.mark.parametrize("kind", ["prism", "tet"])
+def test_pressure_on_the_surfaces(cm, tmp_path, kind):
+    """The deck's element-face surfaces carry pressures (*DSLOAD) where they
+    belong: a rectangular tube, its walls split at the corners, pressed on
+    the top with the bottom held, then on the wall at x = 2 with the wall
+    at x = 0 held in x. Neither loaded surface touches the held nodes, so
+    by equilibrium alone the reaction is the pressure times the face's
+    area, along the face's inward normal; a face named wrongly would push
+    elsewhere, or on an inner face of its cell."""
+    outer, hole = rectangle(0, 0, 2, 1, 3), rectangle(0.7, 0.3, 1.3, 0.7, 2)
+    text = "".join(f"{x:.17g} {y:.17g}\n" for x, y in outer) + ">\n" + \
+        "".join(f"{x:.17g} {y:.17g}\n" for x, y in hole)
+    (tmp_path / "a.xy").write_text(text)
+    (tmp_path / "b.xy").write_text(text)
+    extra = ["--tets"] if kind == "tet" else []
+    result = cm("sweep", "a.xy", "b.xy", "--sections", 3, "--height", HEIGHT, "--wall-corners", 45,
+                "-o", "tube.inp", *extra, cwd=tmp_path)
+    assert result.returncode == 0, result.stderr
+    mesh = meshio.read(tmp_path / "tube.inp")
+    walls = {name: mesh.points[nodes] for name, nodes in mesh.point_sets.items() if name.startswith("side_")}
+    assert len(walls) == 4
+    at = {round(float(p[:, 0].mean())): name for name, p in walls.items() if np.ptp(p[:, 0]) < 1e-9}
+    assert sorted(at) == [0, 2]
+    deck = (tmp_path / "tube.inp").read_text()
+    for name in ["bottom", "top", *walls, *(f"hole_1_{j}" for j in range(1, 5))]:
+        assert f"*SURFACE, NAME={name}, TYPE=ELEMENT\n" in deck, name
+    area = 2 * 1 - 0.6 * 0.4
+    fx, fy, fz = solve_loaded(tmp_path, "tube.inp", [("bottom", 1, 3)], [("top", 5.0)], "bottom")
+    assert fz == pytest.approx(5.0 * area, rel=1e-9) and abs(fx) < 1e-9 and abs(fy) < 1e-9
+    fx, _, _ = solve_loaded(tmp_path, "tube.inp", [(at[0], 1, 1), ("bottom", 3, 3), ("side_1", 2, 2)],
+                            [(at[2], 3.0)], at[0])
+    assert fx == pytest.approx(3.0 * 1 * HEIGHT, rel=1e-9)

@@ -238,7 +238,7 @@ static void check_writers(const char *dir)
     }
     snprintf(path, sizeof path, "%s/m.vtu", dir);
     int32_t tet[4] = {0, 1, 2, 3};
-    volume_mesh mesh = {xyz, MESH_VERTICES, tet, 1, 1, NULL, 0, 0, NULL, NULL};
+    volume_mesh mesh = {xyz, MESH_VERTICES, tet, 1, 1, NULL, 0, 0, NULL, NULL, NULL};
     cli_error error;
     CHECK(write_vtu(path, path, &mesh, &error) == CLI_EXIT_OK, "%s: %s", path, error.message);
     char *text = read_file(path);

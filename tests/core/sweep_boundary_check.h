@@ -94,6 +94,35 @@ static void sb_check_tet_faces(const char *name, const cm_sweep *w)
     free(faces), free(mine);
 }
 
+/* Each face is the face of its cell that cm_sweep_boundary_cells names
+ * (Abaqus' numbering from 0: the same corners, in any order). */
+static void sb_check_cells(const char *name, const cm_sweep *w, int tets)
+{
+    static const int prism_face[5][4] = {{0, 1, 2, -1}, {3, 4, 5, -1}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}};
+    static const int tet_face[4][4] = {{0, 1, 2, -1}, {0, 3, 1, -1}, {1, 3, 2, -1}, {2, 3, 0, -1}};
+    size_t nf = cm_sweep_num_boundary_faces(w, tets), wrong = 0;
+    size_t cells = tets ? cm_sweep_num_tets(w) : cm_sweep_num_prisms(w), per_cell = tets ? 4 : 6;
+    const int32_t *f = cm_sweep_boundary_faces(w, tets), *corners = tets ? cm_sweep_tets(w) : cm_sweep_prisms(w);
+    const int64_t *c = cm_sweep_boundary_cells(w, tets);
+    for (size_t i = 0; c && i < nf; i++) {
+        int64_t cell = c[2 * i], side = c[2 * i + 1];
+        if (cell < 0 || (size_t)cell >= cells || side < 0 || side >= (tets ? 4 : 5)) {
+            wrong++;
+            continue;
+        }
+        const int *local = tets ? tet_face[side] : prism_face[side];
+        int32_t mine[4] = {-1, -1, -1, -1}, theirs[4] = {-1, -1, -1, -1};
+        for (int k = 0; k < 4; k++) {
+            mine[k] = f[4 * i + (size_t)k];
+            if (local[k] >= 0) theirs[k] = corners[per_cell * (size_t)cell + (size_t)local[k]];
+        }
+        qsort(mine, 4, sizeof *mine, sb_int_less), qsort(theirs, 4, sizeof *theirs, sb_int_less);
+        wrong += memcmp(mine, theirs, sizeof mine) != 0;
+    }
+    CHECK_MSG(c && wrong == 0, "%s: %zu of %zu boundary faces not the cell face named (%s)", name, wrong, nf,
+              tets ? "tets" : "prisms");
+}
+
 static void check_sweep_boundary(const char *name, const cm_sweep *w, const cm_result *r, int tets)
 {
     size_t nv = cm_result_num_vertices(r), nt = cm_result_num_triangles(r), ns = cm_sweep_num_sections(w);
@@ -129,6 +158,7 @@ static void check_sweep_boundary(const char *name, const cm_sweep *w, const cm_r
     }
     CHECK_MSG(offsets && offsets[0] == 0 && offsets[groups] == nf && off_wrong == 0,
               "%s: group offsets %s, %zu out of place", name, offsets ? "given" : "missing", off_wrong);
+    sb_check_cells(name, w, tets);
     const double *nodes = cm_sweep_nodes(w);
     /* Each wall group over one loop (the first face's), the loops in
      * order, and each loop's faces all there. */

@@ -358,6 +358,32 @@ def test_inp_holds_node_sets(pipe, tmp_path):
         assert np.array_equal(np.sort(back.point_sets[name]), np.unique(faces)), name
 
 
+# Abaqus' face numbering of a C3D4 (S1 ... S4) and a C3D6 (S1 ... S5).
+TET_FACES = [(0, 1, 2), (0, 3, 1), (1, 3, 2), (2, 3, 0)]
+PRISM_FACES = [(0, 1, 2), (3, 4, 5), (0, 1, 4, 3), (1, 2, 5, 4), (2, 0, 3, 5)]
+
+
+@pytest.mark.parametrize("cells", ["tetra", "wedge"])
+def test_inp_holds_element_face_surfaces(pipe, tmp_path, cells):
+    """Each boundary group is also an element-face surface (*SURFACE,
+    TYPE=ELEMENT: element and face S1 ...), for pressures: the faces it
+    names are the group's faces, each once."""
+    pipe.write(tmp_path / "v.inp", cells=cells)
+    text = (tmp_path / "v.inp").read_text()
+    corners, table = (pipe.tets, TET_FACES) if cells == "tetra" else (pipe.prisms, PRISM_FACES)
+    blocks = text.split("*SURFACE, NAME=")[1:]
+    surfaces = {}
+    for block in blocks:
+        head, *lines = block.split("*")[0].strip().splitlines()
+        assert head.endswith(", TYPE=ELEMENT")
+        pairs = [line.split(",") for line in lines]
+        surfaces[head.split(",")[0]] = sorted(tuple(sorted(corners[int(e) - 1][list(table[int(f.strip()[1:]) - 1])]))
+                                              for e, f in pairs)
+    assert sorted(surfaces) == ["bottom", "hole_1", "side", "top"]
+    for name, faces in pipe.boundary(cells).items():
+        assert surfaces[name] == sorted(tuple(sorted(f[f >= 0])) for f in faces), name
+
+
 INTERRUPTED_WRITE = """
 import os, signal, sys, threading
 import numpy as np

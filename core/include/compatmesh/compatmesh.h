@@ -747,6 +747,15 @@ CM_API const int32_t *cm_sweep_boundary_groups(const cm_sweep *sweep, int tets);
  * offsets[g + 1]), the first offset 0, the last the face count; NULL where
  * the faces are NULL. */
 CM_API const size_t *cm_sweep_boundary_group_offsets(const cm_sweep *sweep, int tets);
+/* Which cell face each boundary face is, for solvers that load element
+ * faces (an Abaqus or CalculiX *SURFACE, TYPE=ELEMENT): 2 per face, the
+ * cell's index (into cm_sweep_prisms, or cm_sweep_tets with tets = 1) and
+ * its face, numbered as Abaqus numbers them from S1, here from 0. Prisms
+ * (C3D6, corners a b c over a' b' c'): 0 the bottom a b c, 1 the top,
+ * 2 + j the quad over the triangle's edge j (a b, b c, c a); tetrahedra
+ * (C3D4, corners 1 to 4): 0 1-2-3, 1 1-4-2, 2 2-4-3, 3 3-4-1. NULL where
+ * the faces are NULL. */
+CM_API const int64_t *cm_sweep_boundary_cells(const cm_sweep *sweep, int tets);
 /* Group g's name, as every writer gives it (at most 31 characters, words a
  * solver's input deck takes as set names); NULL out of range. Owned by
  * the sweep. */

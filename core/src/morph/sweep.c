@@ -546,6 +546,10 @@ const size_t *cm_sweep_boundary_group_offsets(const cm_sweep *w, int tets)
 {
     return w ? boundary_of(w, tets)->offsets : NULL;
 }
+const int64_t *cm_sweep_boundary_cells(const cm_sweep *w, int tets)
+{
+    return w ? boundary_of(w, tets)->cells : NULL;
+}
 
 cm_morph_method cm_sweep_morph_method(const cm_sweep *w) { return w ? w->morph_method : CM_MORPH_CONVEX; }
 

@@ -33,6 +33,11 @@ typedef struct cm_sweep_boundary {
     size_t nf;
     int32_t *faces;  /* 4 node indices per face, the 4th -1 for a triangle */
     int32_t *groups; /* nf: the face's group, faces sorted by group */
+    /* 2 per face: the cell it is a face of (the prism, or the tetrahedron)
+     * and which face of it, numbered as Abaqus numbers them from S1, here
+     * from 0 (prisms: bottom, top, then the quad over edge 0, 1, 2 of the
+     * triangle; tetrahedra: 1-2-3, 1-4-2, 2-4-3, 3-4-1) */
+    int64_t *cells;
     /* walls->groups + 1: group g's faces are [offsets[g], offsets[g + 1]) */
     size_t *offsets;
 } cm_sweep_boundary;
