@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -24,7 +25,7 @@
 #include "write_volume.h"
 
 enum { OPTION_HEIGHT = OPTION_TRIANGULATION_END, OPTION_HEIGHTS, OPTION_TETS, OPTION_MSH_VERSION, OPTION_REPORT,
-       OPTION_WALL_CORNERS, OPTION_RULED, MAX_SECTIONS = 10000 };
+       OPTION_WALL_CORNERS, OPTION_RULED, OPTION_ORDER, MAX_SECTIONS = 10000 };
 
 static const option_spec sweep_options[] = {
     {"output", 'o', "FILE",
@@ -53,6 +54,11 @@ static const option_spec sweep_options[] = {
      "them (checked exactly); else the convex morph's\n"
      "sections (the report's \"morph\" says which)"},
     {"msh-version", OPTION_MSH_VERSION, "V", ".msh format version: 4.1 (default) or 2.2"},
+    {"order", OPTION_ORDER, "N",
+     "1 (default): linear cells; 2: second-order cells, a\n"
+     "node at the middle of every edge (straight-sided\n"
+     "10-node tetrahedra, 15-node prisms: Abaqus C3D10,\n"
+     "C3D15), in every format but .vtu"},
     {"wall-corners", OPTION_WALL_CORNERS, "DEG",
      "split the boundary's walls at the corners where an\n"
      "input's boundary turns by more than DEG degrees (0 to\n"
@@ -76,7 +82,7 @@ typedef struct sweep_args {
     double *heights;        /* NULL: not given */
     size_t heights_count;
     int tets;
-    double msh_version;
+    volume_format format;   /* .msh version, cell order */
     double wall_corner_deg; /* 0: one wall per loop */
     int ruled;
     const char *report;
@@ -168,9 +174,16 @@ static int handle_sweep_option(void *context, int key, const char *value, cli_er
             return CLI_EXIT_USAGE;
         }
         return CLI_EXIT_OK;
+    case OPTION_ORDER:
+        if (strcmp(value, "1") != 0 && strcmp(value, "2") != 0) {
+            cli_error_set(error, "sweep: unknown --order '%s' (known: 1, 2)", value);
+            return CLI_EXIT_USAGE;
+        }
+        args->format.order = value[0] - '0';
+        return CLI_EXIT_OK;
     case OPTION_MSH_VERSION:
-        if (strcmp(value, "4.1") == 0) args->msh_version = 4.1;
-        else if (strcmp(value, "2.2") == 0) args->msh_version = 2.2;
+        if (strcmp(value, "4.1") == 0) args->format.msh_version = 4.1;
+        else if (strcmp(value, "2.2") == 0) args->format.msh_version = 2.2;
         else {
             cli_error_set(error, "sweep: unknown --msh-version '%s' (known: 4.1, 2.2)", value);
             return CLI_EXIT_USAGE;
@@ -224,7 +237,7 @@ static int parse_sweep_args(int argc, char **argv, sweep_args *args, cli_error *
 {
     memset(args, 0, sizeof *args);
     args->sections = 11;
-    args->msh_version = 4.1;
+    args->format = (volume_format){4.1, 1};
     int code = triangulation_args_init(&args->tri, argc, error);
     if (code != CLI_EXIT_OK) return code;
     code = parse_options(argc, argv, "sweep", sweep_options, sweep_option_count,
@@ -239,6 +252,12 @@ static int parse_sweep_args(int argc, char **argv, sweep_args *args, cli_error *
     if (volume_extension_known(args->output) != 0) {
         cli_error_set(error, "sweep: %s: unknown extension; the format follows it, one of "
                       VOLUME_EXTENSIONS, args->output);
+        return CLI_EXIT_USAGE;
+    }
+    const char *dot = strrchr(args->output, '.');
+    if (args->format.order == 2 && strcasecmp(dot, ".vtu") == 0) {
+        cli_error_set(error, "sweep: %s: second-order cells go to the formats Gmsh writes (msh, vtk, inp, bdf, "
+                      "unv), not .vtu", args->output);
         return CLI_EXIT_USAGE;
     }
     if (args->height > 0 && args->heights) {
@@ -385,16 +404,18 @@ static int sweep(const sweep_args *args, cli_error *error)
         const char **names = malloc((mesh.num_groups + 1) * sizeof *names);
         for (size_t g = 0; names && g < mesh.num_groups; g++) names[g] = cm_sweep_boundary_group_name(sweep, g);
         mesh.group_names = names;
-        if (names) code = write_volume(args->output, &mesh, args->msh_version, error);
+        if (names) code = write_volume(args->output, &mesh, &args->format, error);
         else cli_error_set(error, "out of memory"), code = CLI_EXIT_INTERNAL;
         free(names);
         double volume = cm_sweep_volume(sweep);
         char volume_text[64] = "volume beyond the double range";
         if (isfinite(volume)) format_double(volume_text + sprintf(volume_text, "volume "), volume);
         if (code == CLI_EXIT_OK && !cli_quiet())
-            printf("wrote %s (%zu sections, %zu nodes, %zu %s, %s)\n", args->output,
-                   cm_sweep_num_sections(sweep), mesh.num_nodes, mesh.num_cells,
-                   args->tets ? "tetrahedra" : "prisms", volume_text);
+            printf("wrote %s (%zu sections, %zu %s, %zu %s, %s)\n", args->output, cm_sweep_num_sections(sweep),
+                   mesh.num_nodes, args->format.order == 2 ? "corner nodes" : "nodes", mesh.num_cells,
+                   args->format.order == 2 ? (args->tets ? "10-node tetrahedra" : "15-node prisms")
+                                           : (args->tets ? "tetrahedra" : "prisms"),
+                   volume_text);
         if (code == CLI_EXIT_OK && !cli_quiet() && cm_sweep_morph_method(sweep) == CM_MORPH_INTRINSIC)
             printf("the convex morph needed more inserted sections than max_refine; the sections are the "
                    "intrinsic morph's (angles and edge lengths interpolated)\n");
@@ -410,7 +431,8 @@ static int sweep(const sweep_args *args, cli_error *error)
         }
         if (code == CLI_EXIT_OK && args->report) {
             sweep_report_info info = {tri.result, sweep, args->tri.method_name, (const char *const *)args->tri.inputs,
-                                      args->output, args->tets, height_rule, warning[0] ? warning : NULL};
+                                      args->output, args->tets, args->format.order, height_rule,
+                                      warning[0] ? warning : NULL};
             code = write_sweep_report(args->report, &info, error);
             if (code == CLI_EXIT_OK && !cli_quiet()) printf("wrote %s\n", args->report);
         }

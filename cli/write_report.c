@@ -266,6 +266,7 @@ int write_sweep_report(const char *path, const sweep_report_info *info, cli_erro
     set_count(&t, root, "nodes", cm_sweep_num_nodes(sweep));
     set_count(&t, root, "cells", info->tets ? cm_sweep_num_tets(sweep) : cm_sweep_num_prisms(sweep));
     set_text(&t, root, "cell_type", info->tets ? "tetrahedron" : "prism");
+    set_count(&t, root, "cell_order", (size_t)info->order);
     set_real(&t, root, "volume", cm_sweep_volume(sweep));
     set_text(&t, root, "morph", cm_morph_method_name(cm_sweep_morph_method(sweep)));
     json_t *height = keep(&t, json_object());

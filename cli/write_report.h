@@ -50,6 +50,7 @@ typedef struct sweep_report_info {
     const char *const *inputs;  /* k input paths */
     const char *output;         /* the volume mesh file */
     int tets;
+    int order;                  /* the cells' order in the file, 1 or 2 */
     const char *height_rule;    /* why this height, in words */
     const char *warning;        /* NULL, or the warning printed */
 } sweep_report_info;

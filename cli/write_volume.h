@@ -1,7 +1,6 @@
 /* Writing the sweep's volume mesh as a finite-element file, the format
  * chosen by the file name's extension: through Gmsh (export/gmsh_volume.h),
- * .vtu by write_vtu.c; the Abaqus deck's node sets and Nastran's BEGIN
- * BULK line added here. */
+ * .vtu by write_vtu.c. */
 #ifndef CM_CLI_WRITE_VOLUME_H
 #define CM_CLI_WRITE_VOLUME_H
 
@@ -21,11 +20,15 @@ int volume_extension_known(const char *path);
 int volume_writer_available(void);
 
 
+typedef struct volume_format {
+    double msh_version; /* 4.1 or 2.2, for .msh only */
+    int order;          /* 1, or 2: second-order cells (the caller refuses .vtu) */
+} volume_format;
+
 /* Writes mesh to path, first to a temporary file beside it, renamed into
- * place once complete. msh_version (4.1 or 2.2) applies to .msh only.
- * Returns CLI_EXIT_OK, or with error set CLI_EXIT_INTERNAL, or
+ * place once complete. Returns CLI_EXIT_OK, or with error set
+ * CLI_EXIT_INTERNAL, or
  * CLI_EXIT_INTERRUPTED when interrupted meanwhile (then nothing is left). */
-int write_volume(const char *path, const volume_mesh *mesh, double msh_version,
-                 cli_error *error);
+int write_volume(const char *path, const volume_mesh *mesh, const volume_format *format, cli_error *error);
 
 #endif

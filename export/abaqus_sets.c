@@ -11,20 +11,24 @@
 /* Abaqus reads at most 16 entries a data line. */
 #define PER_LINE 16
 
-static int write_node_set(FILE *file, const volume_mesh *mesh, size_t g, unsigned char *member)
+/* Numbers from 1, PER_LINE a line. */
+static int write_numbers(FILE *file, const size_t *numbers, size_t count)
+{
+    for (size_t i = 0; i < count; i++)
+        if (fprintf(file, (i + 1) % PER_LINE == 0 || i + 1 == count ? "%zu\n" : "%zu, ", numbers[i]) < 0) return -1;
+    return 0;
+}
+
+/* Group g's nodes from its faces (numbers from 1, ascending) into list. */
+static size_t face_nodes(const volume_mesh *mesh, size_t g, unsigned char *member, size_t *list)
 {
     memset(member, 0, mesh->num_nodes);
     for (size_t i = mesh->group_offsets[g]; i < mesh->group_offsets[g + 1]; i++)
         for (int c = 0; c < 4 && mesh->faces[4 * i + c] >= 0; c++) member[mesh->faces[4 * i + c]] = 1;
-    if (fprintf(file, "*NSET, NSET=%s\n", mesh->group_names[g]) < 0) return -1;
-    size_t on_line = 0;
-    for (size_t v = 0; v < mesh->num_nodes; v++) {
-        if (!member[v]) continue;
-        if (fprintf(file, on_line ? ", %zu" : "%zu", v + 1) < 0) return -1;
-        if (++on_line == PER_LINE && fputc('\n', file) == EOF) return -1;
-        on_line %= PER_LINE;
-    }
-    return on_line && fputc('\n', file) == EOF ? -1 : 0;
+    size_t count = 0;
+    for (size_t v = 0; v < mesh->num_nodes; v++)
+        if (member[v]) list[count++] = v + 1;
+    return count;
 }
 
 /* One line per face: its element and the element's face (S1 ...). */
@@ -37,17 +41,22 @@ static int write_surface(FILE *file, const volume_mesh *mesh, size_t g)
     return 0;
 }
 
-int abaqus_write_sets(FILE *file, const volume_mesh *mesh)
+int abaqus_write_sets(FILE *file, const volume_mesh *mesh, const size_t *const *nodes, const size_t *counts)
 {
-    unsigned char *member = malloc(mesh->num_nodes + 1);
-    if (!member) {
+    unsigned char *member = nodes ? NULL : malloc(mesh->num_nodes + 1);
+    size_t *list = nodes ? NULL : malloc((mesh->num_nodes + 1) * sizeof *list);
+    if (!nodes && (!member || !list)) {
+        free(member), free(list);
         errno = ENOMEM;
         return -1;
     }
     int failed = 0;
-    for (size_t g = 0; !failed && mesh->num_faces && g < mesh->num_groups; g++)
-        failed = write_node_set(file, mesh, g, member) || (mesh->face_cells && write_surface(file, mesh, g));
-    free(member);
+    for (size_t g = 0; !failed && mesh->num_faces && g < mesh->num_groups; g++) {
+        size_t count = nodes ? counts[g] : face_nodes(mesh, g, member, list);
+        failed = fprintf(file, "*NSET, NSET=%s\n", mesh->group_names[g]) < 0 ||
+                 write_numbers(file, nodes ? nodes[g] : list, count) || (mesh->face_cells && write_surface(file, mesh, g));
+    }
+    free(member), free(list);
     if (failed && !errno) errno = EIO;
     return failed ? -1 : 0;
 }

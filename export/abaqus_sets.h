@@ -15,8 +15,11 @@
 extern "C" {
 #endif
 
-/* 0, or -1 with errno set (a write failed, or out of memory: ENOMEM). */
-int abaqus_write_sets(FILE *file, const volume_mesh *mesh);
+/* The node sets from the groups' faces, or where nodes is not NULL from
+ * nodes[g] (counts[g] node numbers from 1, sorted, unique: a
+ * second-order deck's, whose mid-edge nodes the faces do not list).
+ * 0, or -1 with errno set (a write failed, or out of memory: ENOMEM). */
+int abaqus_write_sets(FILE *file, const volume_mesh *mesh, const size_t *const *nodes, const size_t *counts);
 
 #ifdef __cplusplus
 }

@@ -1119,7 +1119,7 @@ void append_abaqus_sets(const Sweep &s, bool tets, const std::string &file)
 {
   const SweepVolume volume(s, tets);
   FILE *out = std::fopen(file.c_str(), "ab");
-  bool ok = out && abaqus_write_sets(out, &volume.mesh) == 0;
+  bool ok = out && abaqus_write_sets(out, &volume.mesh, nullptr, nullptr) == 0;
   int error = errno;
   if (out && std::fclose(out) != 0) ok = false, error = errno;
   if (!ok) throw std::runtime_error("write: " + file + ": " + std::strerror(error ? error : EIO));
@@ -1156,13 +1156,15 @@ void write_mesh(py::object mesh, py::object path, py::object format,
 
 #ifdef CM_PYTHON_HAVE_GMSH
 // The sweep written by Gmsh itself (export/gmsh_volume.h, as the command
-// line writes it): the cells and the boundary's named surfaces, in Gmsh's
-// format version 4.1 or 2.2. Gmsh's state is global to the process, and a
+// line writes it), the format by file's extension: the cells, of order 1
+// or 2, and the boundary's groups (a .msh file's named surfaces in format
+// version 4.1 or 2.2, an Abaqus deck's sets, its title `title`). Gmsh's state is global to the process, and a
 // user may have a session of their own open (Gmsh 4.8 cannot say whether
 // it is initialised), so the write runs in a child process that starts
 // and ends its own; its output goes to /dev/null, its error comes back
 // through a pipe.
-void write_sweep_gmsh(const Sweep &s, bool tets, const std::string &file, double version)
+void write_sweep_gmsh(const Sweep &s, bool tets, const std::string &file, double version, int order,
+                      const std::string &title)
 {
   const SweepVolume volume(s, tets);
   const volume_mesh &mesh = volume.mesh;
@@ -1178,7 +1180,7 @@ void write_sweep_gmsh(const Sweep &s, bool tets, const std::string &file, double
     int quiet = open("/dev/null", O_WRONLY);
     if (quiet >= 0) dup2(quiet, 1), dup2(quiet, 2);
     char message[512] = "";
-    const gmsh_write_options options = {version, 0, nullptr};
+    const gmsh_write_options options = {version, 0, nullptr, order, title.c_str()};
     int failed = gmsh_write_volume(file.c_str(), &mesh, &options, message, sizeof message);
     if (failed && write(pipe_fds[1], message, std::strlen(message)) < 0) failed = 2;
     _exit(failed ? 1 : 0);
@@ -1521,18 +1523,33 @@ otherwise), the prisms in meshio's (VTK's) corner order: a, c, b, d, f, e
 of Gmsh's a, b, c, d, e, f. Needs meshio.)doc")
       .def(
           "write",
-          [](const Sweep &sw, py::object path, py::object cells, py::object file_format) {
+          [](const Sweep &sw, py::object path, py::object cells, py::object file_format, int order) {
             py::object format = meshio_format(path, file_format);
             std::string f = format.is_none() ? "" : std::string(py::str(format));
             bool tets = sweep_tets(sw, cells, "write");
+            if (order != 1 && order != 2) throw py::value_error("write: order must be 1 or 2");
+            // the formats Gmsh writes, by the extension it goes by
+            static const std::pair<const char *, const char *> gmsh_formats[] = {
+                {"gmsh", ".msh"}, {"gmsh22", ".msh"}, {"abaqus", ".inp"}, {"nastran", ".bdf"}, {"vtk", ".vtk"}};
+            const char *extension = nullptr;
+            for (const auto &known : gmsh_formats)
+              if (f == known.first) extension = known.second;
+            if (order == 2 && !extension)
+              throw py::value_error("write: second-order cells (order=2) go to the formats Gmsh writes: .msh, "
+                                    ".inp, .bdf, .vtk");
 #ifdef CM_PYTHON_HAVE_GMSH
-            if (f == "gmsh" || f == "gmsh22") {
-              // the temporary name ends in .msh, the extension Gmsh goes by
-              write_atomically(path, false, ".msh", [&](py::object written) {
-                write_sweep_gmsh(sw, tets, py::str(written), f == "gmsh" ? 4.1 : 2.2);
+            if (f == "gmsh" || f == "gmsh22" || order == 2) {
+              // the temporary name ends in the extension Gmsh goes by
+              std::string title = py::str(py::module_::import("pathlib").attr("Path")(path).attr("name"));
+              write_atomically(path, false, extension, [&](py::object written) {
+                write_sweep_gmsh(sw, tets, py::str(written), f == "gmsh22" ? 2.2 : 4.1, order, title);
               });
               return;
             }
+#else
+            if (order == 2)
+              throw std::runtime_error("write: second-order cells (order=2) need Gmsh, and this compatmesh was "
+                                       "built without it");
 #endif
             py::object mesh = sweep_mesh(sw, cells, gmsh_wedge_order(format), "write");
             if (f != "abaqus") return write_mesh(mesh, path, format);
@@ -1544,8 +1561,8 @@ of Gmsh's a, b, c, d, e, f. Needs meshio.)doc")
             mesh.attr("cell_sets") = cell_sets;
             write_mesh(mesh, path, format, [&](const std::string &file) { append_abaqus_sets(sw, tets, file); });
           },
-          py::arg("path"), py::arg("cells") = py::none(), py::arg("file_format") = py::none(),
-          R"doc(write(path, cells=None, file_format=None)
+          py::arg("path"), py::arg("cells") = py::none(), py::arg("file_format") = py::none(), py::arg("order") = 1,
+          R"doc(write(path, cells=None, file_format=None, order=1)
 
 Writes the sweep's cells (to_meshio(cells)), the format from the path's
 extension unless file_format names one of meshio's. .msh (file_format
@@ -1554,7 +1571,10 @@ command line writes it: text format 4.1, the cells in the physical group
 "sweep" and the boundary as surfaces with a physical group each (see
 boundary()). Abaqus's .inp gets the boundary's groups as node sets
 (*NSET) and element-face surfaces (*SURFACE, TYPE=ELEMENT, for *DSLOAD).
-The other formats go through meshio.write with the cells only;
+order=2 writes second-order cells (a node at the middle of every edge,
+straight-sided: 10-node tetrahedra, 15-node prisms, Abaqus C3D10 and
+C3D15) through Gmsh, as `compatmesh sweep --order 2` does, to .msh,
+.inp, .bdf or .vtk. The other formats go through meshio.write with the cells only;
 Abaqus's and Nastran's get the prisms in their own corner order (Gmsh's),
 the others VTK's.)doc")
       .def("boundary", &sweep_boundary, py::arg("cells") = py::none(),

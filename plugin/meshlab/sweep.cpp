@@ -181,7 +181,7 @@ void write_msh(const SweptVolume &volume, const std::string &path)
   const volume_mesh mesh = {volume.nodes.data(), volume.nodes.size() / 3, volume.tets.data(), volume.tets.size() / 4,
                             1, volume.faces.data(), volume.faces.size() / 4,
                             names.size(), names.data(), volume.group_offsets.data(), nullptr};
-  const gmsh_write_options options = {4.1, 1, nullptr};
+  const gmsh_write_options options = {4.1, 1, nullptr, 1, nullptr};
   char message[512] = "";
   const int ierr = gmsh_write_volume(temporary.c_str(), &mesh, &options, message, sizeof message);
   if (ierr || std::rename(temporary.c_str(), path.c_str()) != 0) {

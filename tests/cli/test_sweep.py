@@ -213,6 +213,48 @@ def test_inp_node_sets(cm, tmp_path, kind):
         assert np.array_equal(np.sort(mesh.point_sets[name]), members), name
 
 
+SECOND_ORDER = {"prism": (18, 15, "15-node prisms"), "tet": (11, 10, "10-node tetrahedra")}
+
+
+@pytest.mark.parametrize("kind", ["prism", "tet"])
+def test_second_order_cells(cm, tmp_path, gmsh_session, kind):
+    """--order 2: the same cells with a node at the middle of every edge
+    (Gmsh's 15-node prisms, 10-node tetrahedra), every Jacobian positive;
+    the boundary's surfaces second-order too, and an Abaqus deck's node
+    sets hold every node of their faces (the bottom: every node at z = 0)."""
+    write_boundary_pair(tmp_path, "pipe")
+    extra = ["--tets"] if kind == "tet" else []
+    gmsh_type, per_cell, words = SECOND_ORDER[kind]
+    for out in ("out.msh", "out.inp"):
+        result = cm("sweep", "a.xy", "b.xy", "--sections", 4, "--height", 2.5, "--order", 2, "-o", out, *extra,
+                    cwd=tmp_path)
+        assert result.returncode == 0, result.stderr
+        m = re.search(rf"\(\d+ sections, (\d+) corner nodes, (\d+) {words}, volume", result.stdout)
+        assert m, result.stdout
+    corners, cells = int(m[1]), int(m[2])
+    gmsh.open(str(tmp_path / "out.msh"))
+    types, tags, element_nodes = gmsh.model.mesh.getElements(3)
+    assert list(types) == [gmsh_type] and len(tags[0]) == cells and len(element_nodes[0]) == per_cell * cells
+    node_tags, coords, _ = gmsh.model.mesh.getNodes()
+    assert len(node_tags) > corners
+    points, _ = gmsh.model.mesh.getIntegrationPoints(gmsh_type, "Gauss4")
+    _, determinants, _ = gmsh.model.mesh.getJacobians(gmsh_type, points)
+    assert len(determinants) == cells * (len(points) // 3) and min(determinants) > 0
+    groups = {gmsh.model.getPhysicalName(d, t): (d, t) for d, t in gmsh.model.getPhysicalGroups()}
+    assert sorted(groups) == ["bottom", "hole_1", "side", "sweep", "top"]
+    (entity,) = gmsh.model.getEntitiesForPhysicalGroup(*groups["bottom"])
+    assert list(gmsh.model.mesh.getElements(2, entity)[0]) == [9]  # 6-node triangles
+    deck = (tmp_path / "out.inp").read_text()
+    assert f"type=C3D{per_cell}," in deck
+    z = {}
+    for line in deck.split("*NODE\n")[1].split("*")[0].splitlines():
+        number, _, _, height = line.split(",")
+        z[int(number)] = float(height)
+    bottom = deck.split("*NSET, NSET=bottom\n")[1].split("*")[0].replace("\n", ",").split(",")
+    assert sorted(int(v) for v in bottom if v.strip()) == sorted(n for n, h in z.items() if h == 0)
+    assert len(z) == len(node_tags)
+
+
 def test_inp_is_titled_with_its_own_name(cm, tmp_path):
     """The deck's *Heading names the file written (not the temporary file
     it was written to), so the same sweep gives the same deck twice."""
@@ -451,6 +493,10 @@ def test_heights_of_three_inputs(cm, tmp_path):
      "compatmesh: sweep: unknown --msh-version '3' (known: 4.1, 2.2)\n"),
     (("-o", "out.msh", "--sections", "1"), 2,
      "compatmesh: sweep: --sections '1' is not a whole number from 2 to 10000\n"),
+    (("-o", "out.msh", "--order", "3"), 2, "compatmesh: sweep: unknown --order '3' (known: 1, 2)\n"),
+    (("-o", "out.vtu", "--order", "2"), 2,
+     "compatmesh: sweep: out.vtu: second-order cells go to the formats Gmsh writes (msh, vtk, inp, bdf, unv), "
+     "not .vtu\n"),
 ])
 def test_bad_arguments(cm, tmp_path, args, code, message):
     a, b = twisted_pair()

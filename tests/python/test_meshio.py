@@ -384,6 +384,32 @@ def test_inp_holds_element_face_surfaces(pipe, tmp_path, cells):
         assert surfaces[name] == sorted(tuple(sorted(f[f >= 0])) for f in faces), name
 
 
+@pytest.mark.parametrize("cells", ["tetra", "wedge"])
+def test_second_order_write(pipe, tmp_path, cells):
+    """order=2 writes the cells with a node at the middle of every edge
+    through Gmsh, as the command line's --order 2 (C3D10, C3D15), the node
+    sets holding every node of their faces; formats Gmsh does not write,
+    and orders other than 1 and 2, are refused with no file left."""
+    pipe.write(tmp_path / "v.inp", cells=cells, order=2)
+    text = (tmp_path / "v.inp").read_text()
+    count = len(pipe.tets if cells == "tetra" else pipe.prisms)
+    kind = "C3D10" if cells == "tetra" else "C3D15"
+    body = text.split(f"*ELEMENT, type={kind}, ELSET=Volume1\n")[1].split("*")[0].splitlines()
+    assert len(body) == count and all(len(line.split(",")) == (11 if cells == "tetra" else 16) for line in body)
+    z = {int(line.split(",")[0]): float(line.split(",")[3])
+         for line in text.split("*NODE\n")[1].split("*")[0].splitlines()}
+    assert len(z) > len(pipe.nodes)
+    for name, height in (("bottom", 0.0), ("top", 2.0)):
+        members = text.split(f"*NSET, NSET={name}\n")[1].split("*")[0].replace("\n", ",").split(",")
+        assert sorted(int(v) for v in members if v.strip()) == sorted(n for n, h in z.items() if h == height)
+    assert text.splitlines()[1] == " v.inp" and "*SURFACE, NAME=hole_1, TYPE=ELEMENT" in text
+    with pytest.raises(ValueError, match="order=2"):
+        pipe.write(tmp_path / "v.vtu", order=2)
+    with pytest.raises(ValueError, match="order must be 1 or 2"):
+        pipe.write(tmp_path / "w.inp", order=3)
+    assert sorted(os.listdir(tmp_path)) == ["v.inp"]
+
+
 INTERRUPTED_WRITE = """
 import os, signal, sys, threading
 import numpy as np
