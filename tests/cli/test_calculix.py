@@ -22,19 +22,24 @@ def polygon_area(points):
     return 0.5 * abs(sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(points, points[1:] + points[:1])))
 
 
-def solve(tmp_path, deck):
-    """Runs ccx on deck (a file in tmp_path); returns the bottom set's
-    reaction (fx, fy, fz)."""
+def solve(tmp_path, deck, restraints=(("bottom", 1, 3), ("top", 3, 3, DELTA)), loads=(), reacting="bottom"):
+    """Runs ccx on deck (a file in tmp_path) with the node sets' restraints
+    (set, first dof, last dof[, displacement]) and pressures on the
+    element-face surfaces (surface, pressure); by default the bottom held
+    and the top pulled by DELTA. Returns the reaction (fx, fy, fz) over the
+    node set `reacting`."""
     ccx = shutil.which("ccx")
     assert ccx, "CalculiX's ccx is missing (Debian package calculix-ccx, which `make deps` installs)"
     (tmp_path / "job.inp").write_text(
         f"*INCLUDE, INPUT={deck}\n*MATERIAL, NAME=SOLID\n*ELASTIC\n{E}, 0.0\n"
         "*SOLID SECTION, ELSET=sweep, MATERIAL=SOLID\n*STEP\n*STATIC\n*BOUNDARY\n"
-        f"bottom, 1, 3\ntop, 3, 3, {DELTA}\n*NODE PRINT, NSET=bottom, TOTALS=ONLY\nRF\n*END STEP\n")
+        + "".join(", ".join(str(v) for v in r) + "\n" for r in restraints)
+        + ("*DSLOAD\n" + "".join(f"{name}, P, {p}\n" for name, p in loads) if loads else "")
+        + f"*NODE PRINT, NSET={reacting}, TOTALS=ONLY\nRF\n*END STEP\n")
     run = subprocess.run([ccx, "-i", "job"], cwd=tmp_path, capture_output=True, text=True, timeout=300)
     assert run.returncode == 0 and "ERROR" not in run.stdout.upper(), run.stdout[-2000:]
     text = (tmp_path / "job.dat").read_text()
-    m = re.search(r"total force \(fx,fy,fz\) for set BOTTOM.*\n\s*\n\s*(\S+)\s+(\S+)\s+(\S+)", text)
+    m = re.search(rf"total force \(fx,fy,fz\) for set {reacting.upper()}.*\n\s*\n\s*(\S+)\s+(\S+)\s+(\S+)", text)
     assert m, text
     return [float(v) for v in m.groups()]
 
@@ -94,25 +99,6 @@ def read_nodes_and_sets(path):
     return np.array([points[i + 1] for i in range(len(points))]), sets
 
 
-def solve_loaded(tmp_path, deck, restraints, loads, reacting):
-    """ccx on deck with the node sets' restraints (set, first dof, last
-    dof) and pressures on the element-face surfaces (surface, pressure);
-    returns the reaction (fx, fy, fz) over the node set `reacting`."""
-    (tmp_path / "job.inp").write_text(
-        f"*INCLUDE, INPUT={deck}\n*MATERIAL, NAME=SOLID\n*ELASTIC\n{E}, 0.0\n"
-        "*SOLID SECTION, ELSET=sweep, MATERIAL=SOLID\n*STEP\n*STATIC\n*BOUNDARY\n"
-        + "".join(f"{name}, {first}, {last}\n" for name, first, last in restraints)
-        + "*DSLOAD\n" + "".join(f"{name}, P, {p}\n" for name, p in loads)
-        + f"*NODE PRINT, NSET={reacting}, TOTALS=ONLY\nRF\n*END STEP\n")
-    run = subprocess.run([shutil.which("ccx"), "-i", "job"], cwd=tmp_path, capture_output=True, text=True,
-                         timeout=300)
-    assert run.returncode == 0 and "ERROR" not in run.stdout.upper(), run.stdout[-2000:]
-    text = (tmp_path / "job.dat").read_text()
-    m = re.search(rf"total force \(fx,fy,fz\) for set {reacting.upper()}.*\n\s*\n\s*(\S+)\s+(\S+)\s+(\S+)", text)
-    assert m, text
-    return [float(v) for v in m.groups()]
-
-
 @pytest.mark.parametrize("order", [1, 2])
 @pytest.mark.parametrize("kind", ["prism", "tet"])
 def test_pressure_on_the_surfaces(cm, tmp_path, kind, order):
@@ -141,8 +127,8 @@ def test_pressure_on_the_surfaces(cm, tmp_path, kind, order):
     for name in ["bottom", "top", *walls, *(f"hole_1_{j}" for j in range(1, 5))]:
         assert f"*SURFACE, NAME={name}, TYPE=ELEMENT\n" in deck, name
     area = 2 * 1 - 0.6 * 0.4
-    fx, fy, fz = solve_loaded(tmp_path, "tube.inp", [("bottom", 1, 3)], [("top", 5.0)], "bottom")
+    fx, fy, fz = solve(tmp_path, "tube.inp", [("bottom", 1, 3)], [("top", 5.0)])
     assert fz == pytest.approx(5.0 * area, rel=1e-9) and abs(fx) < 1e-9 and abs(fy) < 1e-9
-    fx, _, _ = solve_loaded(tmp_path, "tube.inp", [(at[0], 1, 1), ("bottom", 3, 3), ("side_1", 2, 2)],
-                            [(at[2], 3.0)], at[0])
+    fx, _, _ = solve(tmp_path, "tube.inp", [(at[0], 1, 1), ("bottom", 3, 3), ("side_1", 2, 2)], [(at[2], 3.0)],
+                     at[0])
     assert fx == pytest.approx(3.0 * 1 * HEIGHT, rel=1e-9)
