@@ -1,7 +1,8 @@
 """Two cross-sections drawn in CAD (Gmsh's OpenCASCADE kernel), their
 boundaries meshed by Gmsh, paired by compatmesh and swept into a prism mesh
 that Gmsh reads back with its boundary's named surfaces, then solved by
-CalculiX: the path from CAD sections to a finite-element analysis.
+CalculiX with second-order prisms and a pressure on the top: the path
+from CAD sections to a finite-element analysis.
 
     PYTHONPATH=build/python /usr/bin/python3 docs/examples/cad_sections.py [DIR]
 
@@ -16,6 +17,8 @@ import tempfile
 from pathlib import Path
 
 import gmsh
+import numpy as np
+
 import compatmesh
 
 
@@ -32,6 +35,11 @@ def section(name, width, height, radius, hole, hole_radius, size, folder):
     path = Path(folder) / f"{name}.msh"
     gmsh.write(str(path))
     return compatmesh.read_polygon(path)  # outer loop first, then the hole
+
+
+def loop_area(loop):
+    x, y = loop[:, 0], loop[:, 1]
+    return 0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
 
 
 gmsh.initialize(["-noenv"])
@@ -64,16 +72,18 @@ with tempfile.TemporaryDirectory() as folder:
     print(len(determinants) // 6, "prisms in", out.name, "smallest Jacobian determinant %.3g" % min(determinants))
     print("boundary:", ", ".join(f"{name} {count} faces" for name, count in faces.items()))
 
-    # A static analysis by CalculiX (Abaqus input; the Abaqus deck carries
-    # the same groups as node sets): steel in mm and N, the bottom fixed,
-    # the top pushed down by 0.05 mm; the reaction at the bottom.
+    # A static analysis by CalculiX (Abaqus input): second-order prisms
+    # (C3D15), steel in mm and N, the bottom fixed (the node set "bottom"),
+    # the top pressed by 100 MPa (the element-face surface "top"); the
+    # bottom's reaction against the pressure times the top's area.
     deck = out.with_suffix(".inp")
-    volume.write(deck)
+    volume.write(deck, order=2)
     job = out.with_name("bracket_job.inp")
     job.write_text(f"*INCLUDE, INPUT={deck.name}\n*MATERIAL, NAME=STEEL\n*ELASTIC\n210000, 0.3\n"
-                   "*SOLID SECTION, ELSET=sweep, MATERIAL=STEEL\n*STEP\n*STATIC\n*BOUNDARY\n"
-                   "bottom, 1, 3\ntop, 3, 3, -0.05\n*NODE PRINT, NSET=bottom, TOTALS=ONLY\nRF\n*END STEP\n")
+                   "*SOLID SECTION, ELSET=sweep, MATERIAL=STEEL\n*STEP\n*STATIC\n*BOUNDARY\nbottom, 1, 3\n"
+                   "*DSLOAD\ntop, P, 100\n*NODE PRINT, NSET=bottom, TOTALS=ONLY\nRF\n*END STEP\n")
     subprocess.run(["ccx", "-i", job.stem], cwd=job.parent, check=True, capture_output=True)
     totals = re.search(r"total force \(fx,fy,fz\) for set BOTTOM.*\n\s*\n\s*(\S+)\s+(\S+)\s+(\S+)",
                        job.with_suffix(".dat").read_text())
-    print("CalculiX: the bottom holds %.4g kN" % (float(totals[3]) / 1000))
+    area = loop_area(top[0]) - sum(loop_area(hole) for hole in top[1:])
+    print("CalculiX: the bottom holds %.6g kN against 100 MPa on %.6g mm2" % (float(totals[3]) / 1000, area))
