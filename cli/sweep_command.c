@@ -25,7 +25,7 @@
 #include "write_volume.h"
 
 enum { OPTION_HEIGHT = OPTION_TRIANGULATION_END, OPTION_HEIGHTS, OPTION_TETS, OPTION_MSH_VERSION, OPTION_REPORT,
-       OPTION_WALL_CORNERS, OPTION_RULED, OPTION_ORDER, MAX_SECTIONS = 10000 };
+       OPTION_WALL_CORNERS, OPTION_RULED, OPTION_ORDER };
 
 static const option_spec sweep_options[] = {
     {"output", 'o', "FILE",
@@ -33,10 +33,12 @@ static const option_spec sweep_options[] = {
      "extension: .msh (Gmsh), .vtk, .vtu (VTK XML, for\n"
      "ParaView), .inp (Abaqus), .bdf (Nastran) or .unv\n"
      "(I-deas universal)"},
-    {"sections", 'n', "N",
+    {"sections", 'n', "N|auto",
      "sections per pair of consecutive inputs, both ends\n"
-     "included, 2 to 10000 (default 11); more may be\n"
-     "inserted where a prism would not stay valid"},
+     "included, 2 to 10000 (default 11), or auto: layers\n"
+     "about as tall as the triangulation's median edge (in\n"
+     "the tallest pair), prisms about as tall as wide; more\n"
+     "may be inserted where a prism would not stay valid"},
     {"height", OPTION_HEIGHT, "H", "total height, inputs evenly spaced (default: the\n"
                                    "inputs' z, else the largest diagonal of their\n"
                                    "bounding boxes)"},
@@ -141,13 +143,13 @@ static int handle_sweep_option(void *context, int key, const char *value, cli_er
         args->output = value;
         return CLI_EXIT_OK;
     case 'n':
-        count = parse_whole_number(value, 2, MAX_SECTIONS);
+        count = strcmp(value, "auto") == 0 ? 0 : parse_whole_number(value, 2, CM_SWEEP_MAX_SECTIONS);
         if (count < 0) {
-            cli_error_set(error, "sweep: --sections '%s' is not a whole number from 2 to %d",
-                          value, MAX_SECTIONS);
+            cli_error_set(error, "sweep: --sections '%s' is not 'auto' or a whole number from 2 to %d",
+                          value, CM_SWEEP_MAX_SECTIONS);
             return CLI_EXIT_USAGE;
         }
-        args->sections = (size_t)count;
+        args->sections = (size_t)count; /* 0: auto (cm_sweep_options.sections) */
         return CLI_EXIT_OK;
     case OPTION_HEIGHT:
         args->height = parse_number(value, &end);

@@ -57,7 +57,6 @@ using FloatArray = py::array_t<double, py::array::c_style | py::array::forcecast
 
 // Limits that keep one call's output within reason (the command line's).
 constexpr long kMaxFrames = 1000;
-constexpr std::size_t kMaxSections = 10000;
 
 std::string shape_of(const py::array &a)
 {
@@ -820,10 +819,11 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
 {
   cm_sweep_options options;
   cm_sweep_options_init(&options);
-  options.sections = number_from<std::size_t>(sections, "sections");
-  if (options.sections > kMaxSections)
-    throw py::value_error("sweep: sections must be at most " + std::to_string(kMaxSections) + ", got " +
-                          std::to_string(options.sections));
+  bool automatic = py::isinstance<py::str>(sections) && sections.cast<std::string>() == "auto";
+  options.sections = automatic ? 0 : number_from<std::size_t>(sections, "sections");
+  if (!automatic && (options.sections < 2 || options.sections > CM_SWEEP_MAX_SECTIONS))
+    throw py::value_error("sweep: sections must be 'auto' or 2 to " + std::to_string(CM_SWEEP_MAX_SECTIONS) +
+                          ", got " + std::to_string(options.sections));
   options.tets = tets ? 1 : 0;
   options.wall_corner_deg = number_from<double>(wall_corner_deg, "wall_corner_deg");
   options.ruled = ruled ? 1 : 0;
@@ -1713,7 +1713,9 @@ Polygon g lies at heights[g] (strictly increasing), or the polygons are
 evenly spaced over height (default: the largest diagonal of the polygons'
 bounding boxes). Polygons given n x 3 in planes z = constant (slices of a
 model) lie at their own z unless height or heights is given. sections: per pair of consecutive
-polygons, both ends included, >= 2. tets: also split every prism into 3
+polygons, both ends included, 2 to 10000, or "auto": layers about as tall
+as the triangulation's median edge in the tallest pair, prisms about as
+tall as wide (`--sections auto`). tets: also split every prism into 3
 tetrahedra with conforming faces. wall_corner_deg: split the boundary's
 walls (boundary()) at the corners where a polygon's boundary turns by more
 than this many degrees (0, the default: one wall per loop). ruled: a

@@ -255,6 +255,19 @@ def test_second_order_cells(cm, tmp_path, gmsh_session, kind):
     assert len(z) == len(node_tags)
 
 
+def test_sections_auto_follow_the_edges(cm, tmp_path):
+    """--sections auto: layers about as tall as the triangulation's median
+    edge, so a sweep four times as tall has about four times the layers."""
+    write_boundary_pair(tmp_path, "pipe")
+    layers = []
+    for height in (1.0, 4.0):
+        result = cm("sweep", "a.xy", "b.xy", "--sections", "auto", "--height", height, "-o", "out.msh",
+                    "--report", "r.json", cwd=tmp_path)
+        assert result.returncode == 0, result.stderr
+        layers.append(json.loads((tmp_path / "r.json").read_text())["sections"] - 1)
+    assert layers[0] >= 2 and 3 * layers[0] <= layers[1] <= 5 * layers[0], layers
+
+
 def test_inp_is_titled_with_its_own_name(cm, tmp_path):
     """The deck's *Heading names the file written (not the temporary file
     it was written to), so the same sweep gives the same deck twice."""
@@ -492,7 +505,7 @@ def test_heights_of_three_inputs(cm, tmp_path):
     (("-o", "out.msh", "--msh-version", "3"), 2,
      "compatmesh: sweep: unknown --msh-version '3' (known: 4.1, 2.2)\n"),
     (("-o", "out.msh", "--sections", "1"), 2,
-     "compatmesh: sweep: --sections '1' is not a whole number from 2 to 10000\n"),
+     "compatmesh: sweep: --sections '1' is not 'auto' or a whole number from 2 to 10000\n"),
     (("-o", "out.msh", "--order", "3"), 2, "compatmesh: sweep: unknown --order '3' (known: 1, 2)\n"),
     (("-o", "out.vtu", "--order", "2"), 2,
      "compatmesh: sweep: out.vtu: second-order cells go to the formats Gmsh writes (msh, vtk, inp, bdf, unv), "

@@ -341,6 +341,60 @@ static void test_ruled(void)
     cm_result_free(r), cm_result_free(twisted);
 }
 
+/* sections = 0: layers about as tall as the triangulation's median edge
+ * h in the tallest segment, so the sections per segment are ceil(tallest
+ * / h) + 1 (more where the validity refinement inserts some); the same
+ * triangulation swept 3 and 9 times as tall gets about 3 and 9 times the
+ * layers, at most CM_SWEEP_MAX_SECTIONS. */
+static void test_sections_for_edges(void)
+{
+    cm_result *r = NULL;
+    cm_morph *m = square_plates(0, &r);
+    size_t nt = m ? cm_result_num_triangles(r) : 0, n = 6 * nt, layers[3] = {0, 0, 0};
+    double *length = malloc((n + 1) * sizeof *length);
+    const int32_t *tri = r ? cm_result_triangles(r) : NULL;
+    for (size_t g = 0, i = 0; m && length && g < 2; g++) {
+        const double *xy = cm_result_vertices(r, g);
+        for (size_t t = 0; t < nt; t++)
+            for (int c = 0; c < 3; c++) {
+                const double *p = xy + 2 * tri[3 * t + c], *q = xy + 2 * tri[3 * t + (c + 1) % 3];
+                length[i++] = hypot(q[0] - p[0], q[1] - p[1]);
+            }
+    }
+    for (size_t i = 1; m && length && i < n; i++) /* insertion sort: a few hundred edges */
+        for (size_t j = i; j > 0 && length[j - 1] > length[j]; j--) {
+            double swap = length[j];
+            length[j] = length[j - 1], length[j - 1] = swap;
+        }
+    double median = m && length ? length[n / 2] : 1;
+    const double heights[3] = {1.0, 3.0, 9.0};
+    for (int i = 0; m && i < 3; i++) {
+        cm_sweep_options so;
+        cm_sweep_options_init(&so);
+        so.sections = 0, so.height = heights[i];
+        cm_sweep *w = NULL;
+        CHECK_MSG(cm_sweep_create(m, &so, &w) == CM_OK, "sections for edges: %s", cm_sweep_message(w));
+        layers[i] = cm_sweep_num_sections(w) - 1;
+        CHECK_MSG(layers[i] >= (size_t)ceil(heights[i] / median) && layers[i] <= 2 * (size_t)ceil(heights[i] / median),
+                  "height %g, median edge %g: %zu layers", heights[i], median, layers[i]);
+        check_sweep_boundary("sections for edges", w, r, 0);
+        cm_sweep_free(w);
+    }
+    CHECK_MSG(layers[2] > layers[1] && layers[1] > layers[0], "layers %zu, %zu, %zu", layers[0], layers[1], layers[2]);
+    cm_sweep_options so;
+    cm_sweep_options_init(&so);
+    so.sections = 0, so.height = 1e9 * median;
+    cm_sweep *w = NULL;
+    CHECK(m && cm_sweep_create(m, &so, &w) == CM_OK && cm_sweep_num_sections(w) == CM_SWEEP_MAX_SECTIONS);
+    cm_sweep_free(w);
+    so.sections = 1;
+    CHECK(m && cm_sweep_create(m, &so, &w) == CM_ERR_ARGUMENT && strstr(cm_sweep_message(w), "2 to 10000, got 1"));
+    cm_sweep_free(w);
+    free(length);
+    cm_morph_free(m);
+    cm_result_free(r);
+}
+
 static void test_failures(void)
 {
     cm_result *r = fixture_result(FIX_TWISTED, N);
@@ -426,6 +480,7 @@ int main(void)
     test_sweep(FIX_THREE, three_heights, 1, CM_MORPH_INTRINSIC);
     test_walls_at_corners();
     test_ruled();
+    test_sections_for_edges();
     test_failures();
     return check_summary("test_sweep");
 }

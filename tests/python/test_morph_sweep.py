@@ -114,6 +114,14 @@ def test_sweep_heights_from_the_sections_own_z(twisted):
     assert compatmesh.sweep(flat, sections=2).height_is_default
 
 
+def test_sections_auto(twisted):
+    """sections="auto" (`--sections auto`): layers about as tall as the
+    triangulation's median edge; ten times as tall, about ten times as
+    many."""
+    low, high = (compatmesh.sweep(twisted, sections="auto", height=h) for h in (10.0, 100.0))
+    assert 8 * (len(low.section_z) - 1) <= len(high.section_z) - 1 <= 12 * (len(low.section_z) - 1)
+
+
 @pytest.mark.parametrize("call, error, message", [
     (lambda p: compatmesh.morph(p, t=1.5), ValueError, "morph: t = 1.5 is outside \\[0, 1\\]"),
     (lambda p: compatmesh.morph(p, frames=1), ValueError, "frames must be 2 to 1000"),
@@ -124,7 +132,7 @@ def test_sweep_heights_from_the_sections_own_z(twisted):
      "sweep: heights must increase strictly"),
     (lambda p: compatmesh.sweep(p, heights=[0.0, 1.0, 2.0]), ValueError,
      "heights has 3 values for 2 polygons"),
-    (lambda p: compatmesh.sweep(p, sections=1), ValueError, "sweep: sections must be >= 2"),
+    (lambda p: compatmesh.sweep(p, sections=1), ValueError, "sweep: sections must be .auto. or 2 to 10000, got 1"),
     (lambda p: compatmesh.sweep(p, height=-1.0), ValueError, "height must be positive"),
     (lambda p: compatmesh.sweep([p[0], p[1][:-1]], correspondence="index"), compatmesh.InputError,
      "polygon 1 has 11 vertices but polygon 0 has 12"),

@@ -642,9 +642,15 @@ CM_API const char *cm_morph_message(const cm_morph *morph);
 CM_API cm_status cm_morph_section(cm_morph *morph, double t, double *xy, size_t *inverted,
                            double *min_angle_deg);
 
+/* The most sections per segment cm_sweep_options.sections gives. */
+#define CM_SWEEP_MAX_SECTIONS 10000
+
 typedef struct cm_sweep_options {
     /* Sections per segment between consecutive geometries, both ends
-     * included, >= 2; default 11. */
+     * included: 2 to CM_SWEEP_MAX_SECTIONS, default 11; or 0: layers about
+     * as tall as the median edge of the triangulation (over every input
+     * geometry) in the tallest segment, so that the prisms are about as
+     * tall as they are wide. */
     size_t sections;
     /* Total height, inputs evenly spaced; > 0, or 0 (the default): the
      * largest diagonal of the geometries' bounding boxes, so that prisms

@@ -55,7 +55,9 @@ void cm_sweep_options_init(cm_sweep_options *options)
 
 static cm_status check_options(cm_sweep *w, const cm_morph *m, const cm_sweep_options *o)
 {
-    if (o->sections < 2) return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: sections must be >= 2, got %zu", o->sections);
+    if (o->sections == 1 || o->sections > CM_SWEEP_MAX_SECTIONS)
+        return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: sections must be 0 (as many as the edges ask) or 2 to %d, got %zu",
+                       CM_SWEEP_MAX_SECTIONS, o->sections);
     if (o->heights) {
         for (size_t g = 0; g < m->k; g++)
             if (!isfinite(o->heights[g]))
@@ -94,6 +96,37 @@ static double largest_diagonal(const cm_morph *m)
 static double level(const cm_morph *m, const cm_sweep_options *o, double height, size_t g)
 {
     return o->heights ? o->heights[g] : height * (double)g / (double)(m->k - 1);
+}
+
+static int double_less(const void *pa, const void *pb)
+{
+    double a = *(const double *)pa, b = *(const double *)pb;
+    return (a > b) - (a < b);
+}
+
+/* Sections per segment for sections = 0: layers about as tall as the
+ * inputs' triangulations' median edge, in the tallest segment (near
+ * cubic prisms, so that their tetrahedra are well shaped), at least one
+ * layer, at most CM_SWEEP_MAX_SECTIONS sections. 0 out of memory. */
+static size_t sections_for_edges(const cm_morph *m, const cm_sweep_options *o, double height)
+{
+    const cm_mesh *mesh = &m->result->mesh;
+    size_t n = 3 * mesh->nt * mesh->k;
+    double *length = malloc((n + 1) * sizeof *length), tallest = 0;
+    if (!length) return 0;
+    for (size_t g = 0, i = 0; g < mesh->k; g++)
+        for (size_t t = 0; t < mesh->nt; t++)
+            for (int c = 0; c < 3; c++) {
+                const double *p = mesh->xy[g] + 2 * mesh->tri[3 * t + c], *q = mesh->xy[g] + 2 * mesh->tri[3 * t + (c + 1) % 3];
+                length[i++] = hypot(q[0] - p[0], q[1] - p[1]);
+            }
+    qsort(length, n, sizeof *length, double_less);
+    double median = n ? length[n / 2] : 0;
+    free(length);
+    for (size_t g = 0; g + 1 < m->k; g++) tallest = fmax(tallest, level(m, o, height, g + 1) - level(m, o, height, g));
+    double layers = ceil(tallest / median); /* NaN where median is 0 */
+    if (!(layers >= 1)) layers = 1;
+    return (size_t)fmin(layers, CM_SWEEP_MAX_SECTIONS - 1) + 1;
 }
 
 /* z0 + (z1 - z0) s, also where z1 - z0 overflows. */
@@ -283,9 +316,11 @@ static cm_status build_prisms(cm_sweep *w, cm_morph *m, const cm_sweep_options *
 {
     cm_progress progress;
     cm_progress_init(&progress, o->progress, o->progress_user);
-    size_t per = o->sections - 1, count = (m->k - 1) * per + 1, cap = count + 16;
     w->default_height = !o->heights && o->height == 0;
     double height = w->default_height ? largest_diagonal(m) : o->height;
+    size_t sections = o->sections ? o->sections : sections_for_edges(m, o, height);
+    if (!sections) return cm_fail_status(&w->error, CM_ERR_NO_MEMORY);
+    size_t per = sections - 1, count = (m->k - 1) * per + 1, cap = count + 16;
     section *secs = calloc(cap, sizeof *secs);
     layer_splitter splitter = {0}, *split = o->tets ? &splitter : NULL;
     cm_status s = CM_OK;
