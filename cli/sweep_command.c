@@ -427,7 +427,7 @@ static int sweep(const sweep_args *args, cli_error *error)
         if (code == CLI_EXIT_OK && quality.flat_prisms > 0) {
             snprintf(warning, sizeof warning,
                      "%zu of %zu prisms are flatter than 1:%g (a triangle edge %.3g times the prism's height); "
-                     "their tetrahedra have small dihedral angles: give a larger --height or fewer --sections",
+                     "their tetrahedra have small dihedral angles: give a larger --height, fewer --sections or --sections auto",
                      quality.flat_prisms, cm_sweep_num_prisms(sweep), CM_SWEEP_FLAT_RATIO, quality.max_flatness);
             fprintf(stderr, "compatmesh: sweep: warning: %s\n", warning);
         }
