@@ -1030,6 +1030,23 @@ py::dict sweep_boundary(const Sweep &s, py::object cells)
   return out;
 }
 
+// boundary_cells(cells): group name -> k x 2 int64 (cell, face), the
+// faces of boundary(cells) in the same order.
+py::dict sweep_boundary_cells(const Sweep &s, py::object cells)
+{
+  int t = sweep_tets(s, cells, "boundary_cells");
+  const std::vector<int64_t> &c = s.face_cells[t];
+  const std::vector<std::size_t> &offsets = s.group_offsets[t];
+  py::dict out;
+  for (std::size_t k = 0; k < s.group_names.size(); k++) {
+    std::size_t start = offsets.empty() ? 0 : offsets[k], end = offsets.empty() ? 0 : offsets[k + 1];
+    py::array_t<int64_t> pairs({py::ssize_t(end - start), py::ssize_t(2)});
+    if (end > start) std::memcpy(pairs.mutable_data(), c.data() + 2 * start, 2 * (end - start) * sizeof(int64_t));
+    out[py::str(s.group_names[k])] = pairs;
+  }
+  return out;
+}
+
 py::object sweep_to_meshio(const Sweep &s, py::object cells) { return sweep_mesh(s, cells, false, "to_meshio"); }
 
 // The path's extension, lower case ("" without one).
@@ -1589,6 +1606,17 @@ boundary edge and primes are one section up) or, for cells="tetra" (the
 default when the sweep has tetrahedra), the k x 3 triangles of the
 tetrahedra's faces there. Every face is ordered so that its normal
 (right-hand rule) points out of the volume.)doc")
+      .def("boundary_cells", &sweep_boundary_cells, py::arg("cells") = py::none(),
+           R"doc(boundary_cells(cells=None) -> dict
+
+Which cell face each face of boundary(cells) is, for solvers that load
+element faces (an Abaqus or CalculiX *SURFACE, TYPE=ELEMENT): group name
+-> k x 2 int64, the cell's row in prisms (cells="wedge") or tets
+(cells="tetra") and its face, numbered as Abaqus numbers them from S1,
+here from 0. Prisms (corners a b c over a' b' c', the order of prisms):
+0 the bottom, 1 the top, 2 + j the quad over the triangle's edge j
+(a b, b c, c a); tetrahedra (corners 1 to 4): 0 1-2-3, 1 1-4-2, 2 2-4-3,
+3 3-4-1. cm_sweep_boundary_cells in the C API.)doc")
       .def("__repr__", [](const Sweep &sw) {
         return "<compatmesh.Sweep: " + std::to_string(py::len(sw.fields["nodes"])) + " nodes, " +
                std::to_string(py::len(sw.fields["prisms"])) + " prisms, " +

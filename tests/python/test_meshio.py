@@ -364,6 +364,20 @@ PRISM_FACES = [(0, 1, 2), (3, 4, 5), (0, 1, 4, 3), (1, 2, 5, 4), (2, 0, 3, 5)]
 
 
 @pytest.mark.parametrize("cells", ["tetra", "wedge"])
+def test_boundary_cells_name_the_faces(pipe, cells):
+    """boundary_cells(cells): each face of boundary(cells), in its order,
+    is the face of the cell it names (Abaqus' numbering from 0)."""
+    corners, table = (pipe.tets, TET_FACES) if cells == "tetra" else (pipe.prisms, PRISM_FACES)
+    named = pipe.boundary_cells(cells)
+    faces = pipe.boundary(cells)
+    assert list(named) == list(faces)
+    for name, pairs in named.items():
+        assert pairs.dtype == np.int64 and pairs.shape == (len(faces[name]), 2)
+        for (cell, face), nodes in zip(pairs, faces[name]):
+            assert sorted(corners[cell][list(table[face])]) == sorted(nodes[nodes >= 0]), name
+
+
+@pytest.mark.parametrize("cells", ["tetra", "wedge"])
 def test_inp_holds_element_face_surfaces(pipe, tmp_path, cells):
     """Each boundary group is also an element-face surface (*SURFACE,
     TYPE=ELEMENT: element and face S1 ...), for pressures: the faces it
