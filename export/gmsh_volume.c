@@ -164,16 +164,18 @@ static char *read_text(const char *file, size_t *size)
     return text;
 }
 
-/* Rewrites the file with text[at, at + drop) replaced by insert, where
- * at(text, size, &drop) says; 0 or -1 (errno set). */
-static int splice(const char *file, size_t (*at)(const char *text, size_t size, size_t *drop, const void *arg),
-                  const void *arg, const char *insert)
+/* Where at(text, size, &drop) finds a place (NOT_FOUND: none, the file
+ * stays as it is), rewrites the file with text[from, from + drop) replaced
+ * by insert; 0 or -1 (errno set). */
+#define NOT_FOUND ((size_t)-1)
+static int splice(const char *file, size_t (*at)(const char *text, size_t size, size_t *drop), const char *insert)
 {
     size_t size = 0, drop = 0;
     char *text = read_text(file, &size);
     int ok = 0;
-    if (text) {
-        size_t from = at(text, size, &drop, arg);
+    size_t from = text ? at(text, size, &drop) : NOT_FOUND;
+    if (text && from == NOT_FOUND) ok = 1;
+    else if (text) {
         FILE *out = fopen(file, "wb");
         ok = out && fwrite(text, 1, from, out) == from && fputs(insert, out) >= 0 &&
              fwrite(text + from + drop, 1, size - from - drop, out) == size - from - drop;
@@ -184,9 +186,8 @@ static int splice(const char *file, size_t (*at)(const char *text, size_t size, 
 }
 
 /* Nastran: after the leading "$" comment lines. */
-static size_t after_comments(const char *text, size_t size, size_t *drop, const void *arg)
+static size_t after_comments(const char *text, size_t size, size_t *drop)
 {
-    (void)arg;
     size_t head = 0;
     while (head < size && text[head] == '$') {
         const char *end = strchr(text + head, '\n');
@@ -196,15 +197,14 @@ static size_t after_comments(const char *text, size_t size, size_t *drop, const 
     return head;
 }
 
-/* Abaqus: the title line after *Heading (nothing if there is none). */
-static size_t title_line(const char *text, size_t size, size_t *drop, const void *arg)
+/* Abaqus: the title line after *Heading (NOT_FOUND without one). */
+static size_t title_line(const char *text, size_t size, size_t *drop)
 {
-    (void)arg;
     static const char heading[] = "*Heading\n";
     size_t from = sizeof heading - 1;
     const char *end = size >= from && strncmp(text, heading, from) == 0 ? strchr(text + from, '\n') : NULL;
     *drop = end ? (size_t)(end - text) + 1 - from : 0;
-    return end ? from : 0;
+    return end ? from : NOT_FOUND;
 }
 
 static int compare_tags(const void *pa, const void *pb)
@@ -252,13 +252,13 @@ static int complete_file(const char *file, const char *extension, const volume_m
                          const gmsh_write_options *options, char *message, size_t size)
 {
     int failed = 0;
-    if (strcasecmp(extension, ".bdf") == 0) failed = splice(file, after_comments, NULL, "BEGIN BULK\n");
+    if (strcasecmp(extension, ".bdf") == 0) failed = splice(file, after_comments, "BEGIN BULK\n");
     if (strcasecmp(extension, ".inp") != 0) return failed ? fail(message, size, "%s", strerror(errno)) : 0;
     if (options->title) {
         size_t length = strlen(options->title);
         char *title = malloc(length + 3);
         if (title) snprintf(title, length + 3, " %s\n", options->title);
-        failed = !title || splice(file, title_line, NULL, title);
+        failed = !title || splice(file, title_line, title);
         free(title);
     }
     size_t **lists = NULL, *counts = NULL;

@@ -1011,23 +1011,31 @@ py::object sweep_mesh(const Sweep &s, py::object cells, bool gmsh_order, const c
   return meshio_mesh(s.fields["nodes"], "wedge", vtk, function);
 }
 
+// Group name -> make(first, end): each boundary group's run of faces
+// over the prisms (t = 0) or the tetrahedra (t = 1), in the core's order.
+template <typename Make>
+py::dict per_group(const Sweep &s, int t, Make make)
+{
+  const std::vector<std::size_t> &offsets = s.group_offsets[t];
+  py::dict out;
+  for (std::size_t k = 0; k < s.group_names.size(); k++)
+    out[py::str(s.group_names[k])] = offsets.empty() ? make(0, 0) : make(offsets[k], offsets[k + 1]);
+  return out;
+}
+
 // boundary(cells): group name -> its faces, k x 3 (triangles) or k x 4
-// (the prisms' side quads), in the core's group order.
+// (the prisms' side quads).
 py::dict sweep_boundary(const Sweep &s, py::object cells)
 {
   int t = sweep_tets(s, cells, "boundary");
   const std::vector<int32_t> &f = s.faces[t];
-  const std::vector<std::size_t> &offsets = s.group_offsets[t];
-  py::dict out;
-  for (std::size_t k = 0; k < s.group_names.size(); k++) {
-    std::size_t start = offsets.empty() ? 0 : offsets[k], end = offsets.empty() ? 0 : offsets[k + 1];
+  return per_group(s, t, [&](std::size_t start, std::size_t end) {
     py::ssize_t width = end > start && f[4 * start + 3] >= 0 ? 4 : 3;
     py::array_t<int32_t> faces({py::ssize_t(end - start), width});
     for (std::size_t r = start; r < end; r++)
       for (py::ssize_t c = 0; c < width; c++) faces.mutable_at(py::ssize_t(r - start), c) = f[4 * r + std::size_t(c)];
-    out[py::str(s.group_names[k])] = faces;
-  }
-  return out;
+    return faces;
+  });
 }
 
 // boundary_cells(cells): group name -> k x 2 int64 (cell, face), the
@@ -1036,15 +1044,11 @@ py::dict sweep_boundary_cells(const Sweep &s, py::object cells)
 {
   int t = sweep_tets(s, cells, "boundary_cells");
   const std::vector<int64_t> &c = s.face_cells[t];
-  const std::vector<std::size_t> &offsets = s.group_offsets[t];
-  py::dict out;
-  for (std::size_t k = 0; k < s.group_names.size(); k++) {
-    std::size_t start = offsets.empty() ? 0 : offsets[k], end = offsets.empty() ? 0 : offsets[k + 1];
+  return per_group(s, t, [&](std::size_t start, std::size_t end) {
     py::array_t<int64_t> pairs({py::ssize_t(end - start), py::ssize_t(2)});
     if (end > start) std::memcpy(pairs.mutable_data(), c.data() + 2 * start, 2 * (end - start) * sizeof(int64_t));
-    out[py::str(s.group_names[k])] = pairs;
-  }
-  return out;
+    return pairs;
+  });
 }
 
 py::object sweep_to_meshio(const Sweep &s, py::object cells) { return sweep_mesh(s, cells, false, "to_meshio"); }
