@@ -150,8 +150,10 @@ SweptVolume swept_volume(SectionMorph &morph, int sections)
   volume.group_offsets.assign(cm_sweep_boundary_group_offsets(sweep, 1),
                               cm_sweep_boundary_group_offsets(sweep, 1) + volume.group_names.size() + 1);
   volume.sections = cm_sweep_num_sections(sweep);
+  // The shape of the cells where they are, between the layers' planes (the
+  // sweep's own quality is in the plane and morph time).
   cm_sweep_quality quality;
-  cm_sweep_get_quality(sweep, &quality);
+  cm_cells_quality(volume.nodes.data(), volume.tets.data(), volume.tets.size() / 4, 1, &quality);
   volume.min_dihedral_deg = quality.min_dihedral_deg;
   long where = -1;
   s = cm_check_tetrahedra(volume.nodes.data(), count, volume.tets.data(), volume.tets.size() / 4, &where);

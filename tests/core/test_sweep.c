@@ -395,6 +395,39 @@ static void test_sections_for_edges(void)
     cm_result_free(r);
 }
 
+/* cm_cells_quality: the sweep's own cell quality from its own nodes, and
+ * another where the same cells are placed elsewhere (the z stretched ten
+ * times: the regular-ish tetrahedra flatten the other way). */
+static void test_cells_quality(void)
+{
+    cm_result *r = NULL;
+    cm_morph *m = square_plates(0, &r);
+    cm_sweep_options so;
+    cm_sweep_options_init(&so);
+    so.tets = 1, so.sections = 4;
+    cm_sweep *w = NULL;
+    CHECK(m && cm_sweep_create(m, &so, &w) == CM_OK);
+    if (w) {
+        cm_sweep_quality own, again, stretched;
+        cm_sweep_get_quality(w, &own);
+        size_t nn = cm_sweep_num_nodes(w), nt = cm_sweep_num_tets(w);
+        cm_cells_quality(cm_sweep_nodes(w), cm_sweep_tets(w), nt, 1, &again);
+        CHECK(again.min_dihedral_deg == own.min_dihedral_deg && again.max_dihedral_deg == own.max_dihedral_deg &&
+              again.min_scaled_jacobian == own.min_scaled_jacobian && again.max_aspect_ratio == own.max_aspect_ratio &&
+              again.max_flatness == 0 && again.flat_prisms == 0);
+        double *moved = malloc(3 * nn * sizeof *moved);
+        for (size_t i = 0; moved && i < 3 * nn; i++) moved[i] = cm_sweep_nodes(w)[i] * (i % 3 == 2 ? 10.0 : 1.0);
+        if (moved) cm_cells_quality(moved, cm_sweep_tets(w), nt, 1, &stretched);
+        CHECK_MSG(moved && stretched.min_dihedral_deg < own.min_dihedral_deg && stretched.max_aspect_ratio > own.max_aspect_ratio,
+                  "stretched: %g degrees, aspect %g (own %g, %g)", moved ? stretched.min_dihedral_deg : 0,
+                  moved ? stretched.max_aspect_ratio : 0, own.min_dihedral_deg, own.max_aspect_ratio);
+        free(moved);
+    }
+    cm_sweep_free(w);
+    cm_morph_free(m);
+    cm_result_free(r);
+}
+
 static void test_failures(void)
 {
     cm_result *r = fixture_result(FIX_TWISTED, N);
@@ -481,6 +514,7 @@ int main(void)
     test_walls_at_corners();
     test_ruled();
     test_sections_for_edges();
+    test_cells_quality();
     test_failures();
     return check_summary("test_sweep");
 }

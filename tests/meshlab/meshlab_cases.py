@@ -744,7 +744,8 @@ def case_lever_volume(w):
     script = sweep_only_script(w, [('value="" name="VolumeFile"', 'value="%s" name="VolumeFile"' % volume)])
     code, log = run(w, ["pa.ply", "pb.ply"], script, {5: "lateral.ply"})
     expect_ok(code, log)
-    m = re.search(r"volume: (\d+) tetrahedra, (\d+) nodes in (\d+) sections", log)
+    m = re.search(r"volume: (\d+) tetrahedra, (\d+) nodes in (\d+) sections, each positive \(exact\), smallest "
+                  r"dihedral angle ([0-9.]+) degrees", log)
     assert m and os.path.exists(volume), log[-2000:]
     gmsh.initialize()
     try:
@@ -760,6 +761,21 @@ def case_lever_volume(w):
         node_tags, coords, _ = gmsh.model.mesh.getNodes()
         xyz = np.array(coords).reshape(-1, 3)
         total = float(np.sum(dets[4::5])) / 6  # a linear tetrahedron's volume is det J / 6
+        # The logged smallest dihedral angle is the tetrahedra's where they
+        # are, between the two sections' planes (not in the plane and the
+        # morph's time).
+        _, _, tet_nodes = gmsh.model.mesh.getElements(3)
+        where = dict(zip(node_tags, xyz))
+        t = np.array([where[n] for n in tet_nodes[0]]).reshape(-1, 4, 3)
+        smallest = 180.0
+        for i, j, k, l in ((0, 1, 2, 3), (0, 2, 1, 3), (0, 3, 1, 2), (1, 2, 0, 3), (1, 3, 0, 2), (2, 3, 0, 1)):
+            e = t[:, j] - t[:, i]
+            u, v = t[:, k] - t[:, i], t[:, l] - t[:, i]
+            u = u - e * (np.einsum("ij,ij->i", u, e) / np.einsum("ij,ij->i", e, e))[:, None]
+            v = v - e * (np.einsum("ij,ij->i", v, e) / np.einsum("ij,ij->i", e, e))[:, None]
+            c = np.einsum("ij,ij->i", u, v) / np.linalg.norm(u, axis=1) / np.linalg.norm(v, axis=1)
+            smallest = min(smallest, float(np.degrees(np.arccos(np.clip(c, -1, 1))).min()))
+        assert abs(float(m.group(4)) - smallest) <= 0.006, (m.group(4), smallest)
         # The boundary as named surfaces: the two layers, the outline's wall
         # and one wall per bolt hole, closing outward around the tetrahedra
         # (the flux of x / 3 through them is their volume).

@@ -793,6 +793,14 @@ typedef struct cm_sweep_quality {
 /* Fills quality (all zero for a failed sweep). */
 CM_API void cm_sweep_get_quality(const cm_sweep *sweep, cm_sweep_quality *quality);
 
+/* The cells' part of cm_sweep_quality (the flatness fields 0) for any
+ * nodes (3 per node) and cells (4 corners per tetrahedron with tets = 1,
+ * else 6 per prism, as cm_sweep_tets and cm_sweep_prisms give them): for
+ * a sweep's cells placed elsewhere in space, as between two sections in
+ * planes that are not parallel. */
+CM_API void cm_cells_quality(const double *nodes, const int32_t *cells, size_t num_cells, int tets,
+                             cm_sweep_quality *quality);
+
 #ifdef __cplusplus
 }
 #endif

@@ -278,24 +278,28 @@ static long double slab_volume(const cm_morph *m, const section *lo)
 }
 
 /* The quality of the exported cells and the flatness of the prisms. */
-static void measure(cm_sweep *w, const cm_morph *m)
+void cm_cells_quality(const double *nodes, const int32_t *cells, size_t num_cells, int tets, cm_sweep_quality *q)
 {
-    cm_sweep_quality *q = &w->quality;
-    q->min_dihedral_deg = 180, q->max_dihedral_deg = 0, q->min_scaled_jacobian = INFINITY;
-    q->max_aspect_ratio = 0, q->max_flatness = 0, q->flat_prisms = 0;
-    size_t cells = w->tets ? w->ntet : w->np, per = w->tets ? 4 : 6;
-    const int32_t *corners = w->tets ? w->tets : w->prisms;
-    for (size_t i = 0; i < cells; i++) {
+    memset(q, 0, sizeof *q);
+    q->min_dihedral_deg = 180, q->min_scaled_jacobian = INFINITY;
+    size_t per = tets ? 4 : 6;
+    for (size_t i = 0; i < num_cells; i++) {
         double p[6][3];
-        for (size_t c = 0; c < per; c++) memcpy(p[c], w->nodes + 3 * (size_t)corners[per * i + c], sizeof p[c]);
+        for (size_t c = 0; c < per; c++) memcpy(p[c], nodes + 3 * (size_t)cells[per * i + c], sizeof p[c]);
         cm_cell_shape shape;
-        if (w->tets) cm_tet_shape((const double(*)[3])p, &shape);
+        if (tets) cm_tet_shape((const double(*)[3])p, &shape);
         else cm_prism_shape((const double(*)[3])p, &shape);
         q->min_dihedral_deg = fmin(q->min_dihedral_deg, shape.min_dihedral_deg);
         q->max_dihedral_deg = fmax(q->max_dihedral_deg, shape.max_dihedral_deg);
         q->min_scaled_jacobian = fmin(q->min_scaled_jacobian, shape.scaled_jacobian);
         q->max_aspect_ratio = fmax(q->max_aspect_ratio, shape.aspect_ratio);
     }
+}
+
+static void measure(cm_sweep *w, const cm_morph *m)
+{
+    cm_sweep_quality *q = &w->quality;
+    cm_cells_quality(w->nodes, w->tets ? w->tets : w->prisms, w->tets ? w->ntet : w->np, w->tets != NULL, q);
     const int32_t *tri = m->result->mesh.tri;
     for (size_t i = 0; i + 1 < w->ns; i++)
         for (size_t t = 0; t < m->nt; t++) {
