@@ -256,8 +256,7 @@ static int parse_sweep_args(int argc, char **argv, sweep_args *args, cli_error *
                       VOLUME_EXTENSIONS, args->output);
         return CLI_EXIT_USAGE;
     }
-    const char *dot = strrchr(args->output, '.');
-    if (args->format.order == 2 && strcasecmp(dot, ".vtu") == 0) {
+    if (args->format.order == 2 && strcasecmp(volume_extension(args->output), "vtu") == 0) {
         cli_error_set(error, "sweep: %s: second-order cells go to the formats Gmsh writes (msh, vtk, inp, bdf, "
                       "unv), not .vtu", args->output);
         return CLI_EXIT_USAGE;

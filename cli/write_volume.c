@@ -20,7 +20,7 @@
 
 static const char *const extensions[] = {"msh", "vtk", "vtu", "inp", "bdf", "unv"};
 
-static const char *extension_of(const char *path)
+const char *volume_extension(const char *path)
 {
     const char *slash = strrchr(path, '/');
     const char *dot = strrchr(path, '.');
@@ -29,7 +29,7 @@ static const char *extension_of(const char *path)
 
 int volume_extension_known(const char *path)
 {
-    const char *extension = extension_of(path);
+    const char *extension = volume_extension(path);
     for (size_t i = 0; extension && i < sizeof extensions / sizeof extensions[0]; i++)
         if (strcasecmp(extension, extensions[i]) == 0) return 0;
     return -1;
@@ -77,7 +77,7 @@ static char *make_temporary(const char *path, cli_error *error)
     const char *slash = strrchr(path, '/');
     size_t dir_length = slash ? (size_t)(slash - path) + 1 : 0;
     const char *name = path + dir_length;
-    const char *extension = extension_of(path);
+    const char *extension = volume_extension(path);
     size_t stem_length = (size_t)(extension - 1 - name);
     size_t size = strlen(path) + 32;
     char *temporary = malloc(size);
@@ -106,7 +106,7 @@ static char *make_temporary(const char *path, cli_error *error)
 
 int write_volume(const char *path, const volume_mesh *mesh, const volume_format *format, cli_error *error)
 {
-    const char *extension = extension_of(path);
+    const char *extension = volume_extension(path);
     writing_output = 1; /* the temporary file exists until the rename */
     char *temporary = make_temporary(path, error);
     if (!temporary) {

@@ -13,6 +13,9 @@
 /* The extensions Gmsh writes for us, lower case, without the dot. */
 #define VOLUME_EXTENSIONS "msh, vtk, vtu, inp (Abaqus), bdf (Nastran), unv"
 
+/* The extension of path's file name, without the dot; NULL without one. */
+const char *volume_extension(const char *path);
+
 /* Returns 0 if path ends in one of VOLUME_EXTENSIONS (any case), else -1. */
 int volume_extension_known(const char *path);
 

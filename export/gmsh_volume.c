@@ -290,10 +290,10 @@ int gmsh_write_volume(const char *file, const volume_mesh *mesh, const gmsh_writ
     gmsh.OptionSetNumber("Mesh.BdfFieldFormat", 2, &ierr);
     const char *dot = strrchr(file, '.'), *extension = dot ? dot : "";
     int msh = strcasecmp(extension, ".msh") == 0, second = options->order == 2;
-    /* Second order: the surfaces are there for their nodes' new numbers
-     * (physical only in .msh files); Gmsh places the new nodes on the
-     * straight edges. */
-    int result = add_mesh(mesh, msh || second, msh, message, size);
+    /* A second-order deck's surfaces are there for their nodes' new numbers
+     * (physical only in .msh files), which its node sets need; Gmsh places
+     * the new nodes on the straight edges. */
+    int result = add_mesh(mesh, msh || (second && strcasecmp(extension, ".inp") == 0), msh, message, size);
     if (result == 0 && second) {
         gmsh.OptionSetNumber("Mesh.SecondOrderIncomplete", 1, &ierr);
         gmsh.OptionSetNumber("Mesh.SecondOrderLinear", 1, &ierr);
