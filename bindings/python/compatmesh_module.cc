@@ -169,10 +169,11 @@ py::object geo_loops(py::object geometry, std::size_t index)
   return loops.size() == 1 ? py::object(loops[0]) : py::object(loops);
 }
 
-Polygon read_polygon(py::handle object, std::size_t index, double tolerance)
+Polygon read_polygon(py::handle object, std::size_t index, double tolerance,
+                     compatmesh::NormalSign sign = compatmesh::NormalSign::Canonical)
 {
   py::object geometry = geo_geometry(object);
-  if (!geometry.is_none()) return read_polygon(geo_loops(geometry, index), index, tolerance);
+  if (!geometry.is_none()) return read_polygon(geo_loops(geometry, index), index, tolerance, sign);
   if (is_loop_list(object)) return read_loops(object, index);
   std::string name = "polygon " + std::to_string(index);
   FloatArray a = real_array(object, name);
@@ -188,8 +189,9 @@ Polygon read_polygon(py::handle object, std::size_t index, double tolerance)
   polygon.spatial = true;
   polygon.xyz.assign(data, data + 3 * n);
   try {
-    // Canonical sign: the winding reaches the core as given, as for n x 2.
-    polygon.frame = compatmesh::fit_plane(data, n, tolerance, compatmesh::NormalSign::Canonical);
+    // Canonical sign: the winding reaches the core as given, as for n x 2;
+    // a loft's sections follow their winding (sweep()).
+    polygon.frame = compatmesh::fit_plane(data, n, tolerance, sign);
   } catch (const compatmesh::PlaneError &e) {
     // The same InputError the core's own checks give, located.
     raise_input_error(name + ": " + e.what(),
@@ -554,7 +556,7 @@ Result make_result(const cm_result *r, const std::vector<Polygon> &polygons)
 // triangulate(); `function` names the caller in messages. On success the
 // result is returned and the polygons are left in *polygons.
 ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, const char *function,
-                            std::vector<Polygon> *polygons, Callbacks *callbacks)
+                            std::vector<Polygon> *polygons, Callbacks *callbacks, bool loft = false)
 {
   double tolerance = compatmesh::kDefaultPlanarityTolerance;
   cm_options options;
@@ -574,7 +576,20 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
     setter->set(options, item.second, *callbacks);
   }
 
-  for (py::handle item : polygons_in) polygons->push_back(read_polygon(item, polygons->size(), tolerance));
+  // A loft's sections follow their winding, their frames aligned along it
+  // (sweep()).
+  const compatmesh::NormalSign sign = loft ? compatmesh::NormalSign::FollowWinding : compatmesh::NormalSign::Canonical;
+  for (py::handle item : polygons_in) polygons->push_back(read_polygon(item, polygons->size(), tolerance, sign));
+  if (loft) {
+    std::vector<compatmesh::PlaneFrame> frames;
+    for (const Polygon &p : *polygons) frames.push_back(p.frame);
+    compatmesh::align_frames(frames);
+    for (std::size_t g = 0; g < polygons->size(); g++) {
+      Polygon &p = (*polygons)[g];
+      p.frame = frames[g];
+      p.xy = compatmesh::to_plane(p.frame, p.xyz.data(), p.size());
+    }
+  }
   std::vector<const double *> data;
   std::vector<std::size_t> counts;
   std::vector<cm_loops> loops;
@@ -652,8 +667,8 @@ void require_planar(const std::vector<Polygon> &polygons, const char *function)
   for (std::size_t g = 0; g < polygons.size(); g++)
     if (polygons[g].spatial)
       throw py::value_error(std::string(function) + ": polygon " + std::to_string(g) +
-                            ": expected an n x 2 array, or for sweep n x 3 in a plane z = constant (sections are "
-                            "planar; give heights to sweep)");
+                            ": expected an n x 2 array, or for sweep n x 3 arrays for every polygon (in planes z = constant, "
+                            "or in any planes for a loft)");
 }
 
 // The morph of the triangulated polygons, progress reported like the
@@ -814,6 +829,34 @@ py::list sections_own_z(py::object polygons_in, std::vector<double> *z)
   return flat;
 }
 
+// Sections for a loft: every polygon an n x 3 array and not all of them in
+// planes z = constant (those sweep between their own z).
+bool loft_sections(py::handle polygons_in)
+{
+  bool tilted = false;
+  std::size_t index = 0;
+  for (py::handle polygon : polygons_in) {
+    if (!geo_geometry(polygon).is_none() || is_loop_list(polygon)) return false;
+    FloatArray a = real_array(polygon, "polygon " + std::to_string(index));
+    if (a.ndim() != 2 || a.shape(1) != 3) return false;
+    double z = 0;
+    bool has_z = false;
+    section_in_plane_z(polygon, index++, &z, &has_z);
+    tilted |= !has_z;
+  }
+  return tilted;
+}
+
+// The loft's frames (cm_sweep_options.frames): each polygon's plane.
+std::vector<double> loft_frames(const std::vector<Polygon> &polygons)
+{
+  std::vector<double> frames;
+  for (const Polygon &p : polygons)
+    for (const std::array<double, 3> *a : {&p.frame.origin, &p.frame.u, &p.frame.v})
+      frames.insert(frames.end(), a->begin(), a->end());
+  return frames;
+}
+
 Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::object heights,
                bool tets, py::object wall_corner_deg, bool ruled, py::kwargs kwargs)
 {
@@ -839,13 +882,22 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
     if (a.ndim() != 1) throw py::type_error("sweep: heights must be a 1-D sequence of numbers");
     z.assign(a.data(), a.data() + a.shape(0));
   }
+  // Sections in planes that are not all z = constant: a loft between their
+  // planes, each section read in its own plane following its winding (so
+  // that sections listed the same way round along the loft agree), its
+  // plane's axes carried from the one before (compatmesh::align_frames).
+  const bool loft = loft_sections(polygons_in);
+  if (loft && !(height.is_none() && heights.is_none()))
+    throw py::value_error("sweep: the polygons lie in planes of space, which place them: give no height or heights");
   std::vector<double> own;  // the sections' own z, when they give them
-  py::object planar = sections_own_z(polygons_in, &own);
+  py::object planar = loft ? polygons_in : sections_own_z(polygons_in, &own);
   if (heights.is_none() && height.is_none() && !own.empty()) z = own;
   std::vector<Polygon> polygons;
   Callbacks callbacks;
-  ResultPtr result = run_triangulation(planar, kwargs, "sweep", &polygons, &callbacks);
-  require_planar(polygons, "sweep");
+  ResultPtr result = run_triangulation(planar, kwargs, "sweep", &polygons, &callbacks, loft);
+  std::vector<double> frames;
+  if (loft) frames = loft_frames(polygons), options.frames = frames.data();
+  else require_planar(polygons, "sweep");
   if (!z.empty() || !heights.is_none()) {
     if (z.size() != polygons.size())
       throw py::value_error("sweep: heights has " + std::to_string(z.size()) + " values for " +
@@ -1744,7 +1796,16 @@ to stay valid through its height (sections are inserted where needed).
 Polygon g lies at heights[g] (strictly increasing), or the polygons are
 evenly spaced over height (default: the largest diagonal of the polygons'
 bounding boxes). Polygons given n x 3 in planes z = constant (slices of a
-model) lie at their own z unless height or heights is given. sections: per pair of consecutive
+model) lie at their own z unless height or heights is given. Polygons given
+n x 3 in other planes (sections of a bent part, listed the same way round
+along it) are lofted between their planes: the sweep is built with heights
+the distances between the sections' centres (the mean of their vertices;
+section_z, height), and every
+node is then placed between the planes of the polygons around it, each cell
+checked positive in space, exactly (ValueError where the straight blend
+between two planes folds: planes too close for their turn or crossing
+inside the polygons, or a polygon listed the other way round); height and
+heights are then refused. sections: per pair of consecutive
 polygons, both ends included, 2 to 10000, or "auto": layers about as tall
 as the triangulation's median edge in the tallest pair, prisms about as
 tall as wide (`--sections auto`). tets: also split every prism into 3

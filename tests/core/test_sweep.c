@@ -10,6 +10,7 @@
 
 #include "check.h"
 #include "morph_fixtures.h"
+#include "geom/angle.h"
 #include "geom/predicates.h"
 #include "sweep_boundary_check.h"
 
@@ -428,6 +429,97 @@ static void test_cells_quality(void)
     cm_result_free(r);
 }
 
+/* The loft (options.frames): frames of two parallel planes give the
+ * ordinary sweep's nodes and volume (the loft at least as long as the
+ * planes are apart); a square swept from z = 0 to a plane
+ * turned by 30 degrees about x through (0, 0, 2) has its ends in the two
+ * planes, every cell positive (the core's check, and cm_check_tetrahedra
+ * again), and the volume of the blend, 4 (1 + cos 30 degrees), to within
+ * rounding (the square does not change along the loft, so the wedges
+ * are the blend itself); planes crossing inside the square fold (a clear
+ * failure, prisms and tetrahedra); bad frames are refused. */
+static void set_frame(double *f, double oz, double turn_deg)
+{
+    double c = cos(turn_deg * CM_PI / 180), s = sin(turn_deg * CM_PI / 180);
+    const double frame[9] = {0, 0, oz, 1, 0, 0, 0, c, s};
+    memcpy(f, frame, sizeof frame);
+}
+
+static void test_loft(void)
+{
+    cm_result *r = NULL;
+    cm_morph *plates = square_plates(0, &r);
+    cm_sweep_options so;
+    double frames[18], heights[2] = {0, 3};
+    cm_sweep *plain = NULL, *w = NULL;
+    for (int tets = 0; tets < 2 && plates; tets++) {
+        cm_sweep_options_init(&so);
+        so.tets = tets, so.sections = 5, so.heights = heights;
+        CHECK(cm_sweep_create(plates, &so, &plain) == CM_OK);
+        set_frame(frames, 0, 0), set_frame(frames + 9, 3, 0);
+        so.heights = NULL, so.frames = frames;
+        CHECK_MSG(cm_sweep_create(plates, &so, &w) == CM_OK, "parallel loft: %s", cm_sweep_message(w));
+        size_t nn = cm_sweep_num_nodes(w);
+        double worst = nn == cm_sweep_num_nodes(plain) ? 0 : 1;
+        for (size_t i = 0; i < 3 * nn && !worst; i++) worst = fmax(worst, fabs(cm_sweep_nodes(w)[i] - cm_sweep_nodes(plain)[i]));
+        CHECK_MSG(worst < 1e-12 && fabs(cm_sweep_volume(w) - cm_sweep_volume(plain)) < 1e-9 * cm_sweep_volume(plain) &&
+                      cm_sweep_height(w) >= 3 && cm_sweep_height(w) < 3.1,
+                  "parallel loft: nodes %g apart, volume %.15g against %.15g", worst, cm_sweep_volume(w), cm_sweep_volume(plain));
+        cm_sweep_free(plain), cm_sweep_free(w);
+        plain = w = NULL;
+    }
+    cm_morph_free(plates);
+    cm_result_free(r);
+
+    double sq[32];
+    square_loop(sq, 0, 0, 1, 1, 0, 0);
+    const double *both[2] = {sq, sq};
+    const size_t counts[2] = {16, 16};
+    cm_morph *m = NULL;
+    r = NULL;
+    CHECK(cm_triangulate_polygons(both, counts, 2, NULL, &r) == CM_OK && cm_morph_create(r, NULL, &m) == CM_OK);
+    for (int tets = 0; tets < 2 && m; tets++) {
+        cm_sweep_options_init(&so);
+        so.tets = tets, so.sections = 0, so.frames = frames;
+        set_frame(frames, 0, 0), set_frame(frames + 9, 2, 30);
+        CHECK_MSG(cm_sweep_create(m, &so, &w) == CM_OK, "turned loft: %s", cm_sweep_message(w));
+        size_t nv = cm_result_num_vertices(r), nn = cm_sweep_num_nodes(w);
+        const double *nodes = cm_sweep_nodes(w), *top = nodes + 3 * (nn - nv);
+        double off = 0, normal[3] = {0, -sin(CM_PI / 6), cos(CM_PI / 6)};
+        for (size_t v = 0; v < nv; v++) {
+            off = fmax(off, fabs(nodes[3 * v + 2]));
+            off = fmax(off, fabs(top[3 * v] * normal[0] + top[3 * v + 1] * normal[1] + (top[3 * v + 2] - 2) * normal[2]));
+        }
+        long where = -1;
+        if (tets) CHECK(cm_check_tetrahedra(nodes, nn, cm_sweep_tets(w), cm_sweep_num_tets(w), &where) == CM_OK);
+        cm_sweep_quality q;
+        cm_sweep_get_quality(w, &q);
+        double exact = 4 * (1 + cos(CM_PI / 6));
+        CHECK_MSG(off < 1e-12 && fabs(cm_sweep_volume(w) - exact) < 1e-9 * exact && q.min_dihedral_deg > 0 &&
+                      cm_sweep_num_sections(w) > 2,
+                  "turned loft: ends %g off their planes, volume %g against %g, dihedral %g, %zu sections", off,
+                  cm_sweep_volume(w), exact, q.min_dihedral_deg, cm_sweep_num_sections(w));
+        cm_sweep_free(w), w = NULL;
+
+        set_frame(frames + 9, 0.3, 80); /* its plane dips under z = 0 at y < -0.3 */
+        CHECK_MSG(cm_sweep_create(m, &so, &w) == CM_ERR_ARGUMENT && strstr(cm_sweep_message(w), "not positive in space") &&
+                      cm_sweep_num_nodes(w) == 0,
+                  "crossing planes: %s", cm_sweep_message(w));
+        cm_sweep_free(w), w = NULL;
+    }
+    set_frame(frames, 0, 0), set_frame(frames + 9, 0, 30);
+    CHECK(m && cm_sweep_create(m, &so, &w) == CM_ERR_ARGUMENT && strstr(cm_sweep_message(w), "centred at the same point"));
+    cm_sweep_free(w), w = NULL;
+    set_frame(frames + 9, 1, 0), frames[12] = 2;
+    CHECK(m && cm_sweep_create(m, &so, &w) == CM_ERR_ARGUMENT && strstr(cm_sweep_message(w), "unit vectors"));
+    cm_sweep_free(w), w = NULL;
+    set_frame(frames + 9, 1, 0), so.height = 2;
+    CHECK(m && cm_sweep_create(m, &so, &w) == CM_ERR_ARGUMENT && strstr(cm_sweep_message(w), "no heights"));
+    cm_sweep_free(w);
+    cm_morph_free(m);
+    cm_result_free(r);
+}
+
 static void test_failures(void)
 {
     cm_result *r = fixture_result(FIX_TWISTED, N);
@@ -515,6 +607,7 @@ int main(void)
     test_ruled();
     test_sections_for_edges();
     test_cells_quality();
+    test_loft();
     test_failures();
     return check_summary("test_sweep");
 }

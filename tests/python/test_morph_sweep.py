@@ -122,6 +122,59 @@ def test_sections_auto(twisted):
     assert 8 * (len(low.section_z) - 1) <= len(high.section_z) - 1 <= 12 * (len(low.section_z) - 1)
 
 
+def in_plane(points, origin, turn_deg):
+    """Plane points (n x 2) placed in the plane through origin turned by
+    turn_deg about the x axis."""
+    c, s = np.cos(np.radians(turn_deg)), np.sin(np.radians(turn_deg))
+    return np.asarray(origin, float) + points[:, :1] * [1.0, 0, 0] + points[:, 1:] * [0, c, s]
+
+
+def normal_of(turn_deg):
+    return np.array([0, -np.sin(np.radians(turn_deg)), np.cos(np.radians(turn_deg))])
+
+
+def test_loft_between_turned_planes(tmp_path):
+    """Sections of a bent part (n x 3 in planes that are not z = constant)
+    are lofted between their planes: the first section's nodes are its
+    input, the last lie in its plane, the height is the path between the
+    planes' origins, every tetrahedron is positive (its determinant here,
+    and Gmsh's Jacobians of the written .msh)."""
+    from test_meshio import TET_CORNERS, gmsh_jacobians
+    a, b = ring(12, inner=0.5), 1.3 * ring(12, inner=0.7, jitter=False)
+    # along a bend of radius 4 about the line y = 4, z = 0, whose planes
+    # meet there, outside the sections
+    bend = [(0, 4 - 4 * np.cos(np.radians(t)), 4 * np.sin(np.radians(t))) for t in (0, 30, 60)]
+    sections = [in_plane(a, bend[0], 0), in_plane(b, bend[1], -30), in_plane(a, bend[2], -60)]
+    s = compatmesh.sweep(sections, sections="auto", tets=True)
+    nv = len(s.nodes) // len(s.section_z)
+    assert np.array_equal(s.nodes[:12], sections[0])
+    last = s.nodes[-nv:]
+    assert np.abs((last - sections[2][0]) @ normal_of(-60)).max() < 1e-12
+    assert np.abs(last[:12] - sections[2]).max() < 1e-12
+    centres = [np.mean(p, axis=0) for p in sections]
+    path = sum(np.linalg.norm(centres[g + 1] - centres[g]) for g in range(2))
+    assert s.height == pytest.approx(path, rel=1e-12) and s.section_z[0] == 0
+    corners = s.nodes[s.tets]
+    det = np.linalg.det(corners[:, 1:] - corners[:, :1])
+    assert len(s.tets) > 0 and det.min() > 0
+    s.write(tmp_path / "loft.msh", cells="tetra")
+    types, jac = gmsh_jacobians(tmp_path / "loft.msh", 4, TET_CORNERS)
+    assert 4 in types and jac.size == 4 * len(s.tets) and jac.min() > 0
+    assert 0 < s.volume and s.quality["min_dihedral_deg"] > 0
+
+
+def test_loft_that_folds_is_refused(twisted):
+    """Planes crossing inside the polygons, or a section listed the other
+    way round, fold the straight blend: a ValueError saying so."""
+    a = ring(12, inner=0.5)
+    crossing = [in_plane(a, (0, 0, 0), 0), in_plane(a, (0, 0, 0.3), 80)]
+    with pytest.raises(ValueError, match="is not positive in space"):
+        compatmesh.sweep(crossing, tets=True)
+    reversed_one = [in_plane(a, (0, 0, 0), 10), in_plane(a[::-1], (0, 0, 2), 20)]
+    with pytest.raises(ValueError, match="a polygon given the other way round"):
+        compatmesh.sweep(reversed_one)
+
+
 @pytest.mark.parametrize("call, error, message", [
     (lambda p: compatmesh.morph(p, t=1.5), ValueError, "morph: t = 1.5 is outside \\[0, 1\\]"),
     (lambda p: compatmesh.morph(p, frames=1), ValueError, "frames must be 2 to 1000"),
@@ -136,8 +189,10 @@ def test_sections_auto(twisted):
     (lambda p: compatmesh.sweep(p, height=-1.0), ValueError, "height must be positive"),
     (lambda p: compatmesh.sweep([p[0], p[1][:-1]], correspondence="index"), compatmesh.InputError,
      "polygon 1 has 11 vertices but polygon 0 has 12"),
-    (lambda p: compatmesh.sweep([np.c_[p[0], 0.1 * p[0][:, 0]], np.c_[p[1], 1 + 0.1 * p[1][:, 0]]]),
-     ValueError, "polygon 0: expected an n x 2 array, or for sweep n x 3 in a plane z = constant"),
+    (lambda p: compatmesh.sweep([p[0], np.c_[p[1], 1 + 0.1 * p[1][:, 0]]]),
+     ValueError, "polygon 1: expected an n x 2 array, or for sweep n x 3 arrays for every polygon"),
+    (lambda p: compatmesh.sweep([np.c_[p[0], 0.1 * p[0][:, 0]], np.c_[p[1], 1 + 0.1 * p[1][:, 0]]], height=2.0),
+     ValueError, "the polygons lie in planes of space, which place them: give no height or heights"),
     (lambda p: compatmesh.sweep([np.c_[p[0], np.zeros(12)], p[1]]), ValueError,
      "some polygons lie in a plane z = constant and some do not"),
     (lambda p: compatmesh.sweep([np.c_[p[0], np.ones(12)], np.c_[p[1], np.zeros(12)]]), ValueError,

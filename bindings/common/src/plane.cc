@@ -149,6 +149,27 @@ PlaneFrame fit_plane(const double *xyz, std::size_t n, double relative_tolerance
   return frame;
 }
 
+void align_frames(std::vector<PlaneFrame> &frames)
+{
+  for (std::size_t g = 1; g < frames.size(); g++) {
+    const PlaneFrame &before = frames[g - 1];
+    PlaneFrame &frame = frames[g];
+    Vec3 n0(before.normal.data()), n1(frame.normal.data()), axis = n0.cross(n1);
+    double c = n0.dot(n1), s = axis.norm();
+    if (!(c > 0)) continue;
+    Vec3 u(before.u.data());
+    if (s > 0) {  // Rodrigues: u turned about the axis by the angle between the normals
+      Vec3 k = axis / s;
+      u = u * c + k.cross(u) * s + k * (k.dot(u)) * (1 - c);
+    }
+    u = (u - n1 * n1.dot(u)).normalized();
+    Vec3 v = n1.cross(u);
+    std::array<double, 3> nu = array_of(u), nv = array_of(v);
+    if (nu == frame.u && nv == frame.v) continue;
+    frame.u = nu, frame.v = nv, frame.fixed_axis = -1;
+  }
+}
+
 std::vector<double> to_plane(const PlaneFrame &frame, const double *xyz, std::size_t n)
 {
   std::vector<double> xy(2 * n);

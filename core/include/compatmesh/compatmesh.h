@@ -675,6 +675,24 @@ typedef struct cm_sweep_options {
      * says which: CM_MORPH_LINEAR for the ruled sweep). 0 (the default):
      * the morph's sections. */
     int ruled;
+    /* Optional, a loft between sections in any planes: 9 doubles per input
+     * geometry, the origin of its plane and two unit vectors u, v at right
+     * angles in it (its point (x, y) is origin + x u + y v). The sweep is
+     * built as above with heights the distances between consecutive
+     * sections' centres (the mean of each geometry's boundary vertices,
+     * placed in its plane), cumulated (cm_sweep_section_z then gives that
+     * parameter;
+     * heights and height must not be given), and every node is then placed
+     * between the planes of the geometries around it: at fraction s of its
+     * segment, (1 - s) times its point in the lower plane plus s times its
+     * point in the upper one. Every cell is checked positive in space,
+     * exactly (a tetrahedron, or a prism at each of its six corners); where
+     * one is not (planes too close for their turn, planes crossing inside
+     * the polygons, or a geometry given the other way round), the sweep
+     * fails and says which. Nodes, volume and quality are those in space;
+     * the flatness fields stay those of the parameter. Only read during
+     * cm_sweep_create. */
+    const double *frames;
     cm_progress_fn progress; /* may be NULL */
     void *progress_user;
 } cm_sweep_options;
@@ -722,8 +740,9 @@ CM_API const int32_t *cm_sweep_prisms(const cm_sweep *sweep);
  * prism of the halved layer is flatter than 1:5, within max_refine. */
 CM_API size_t cm_sweep_num_tets(const cm_sweep *sweep);
 CM_API const int32_t *cm_sweep_tets(const cm_sweep *sweep);
-/* Sum of the prism volumes (equal to the integral of section areas);
- * HUGE_VAL when it is beyond the double range. */
+/* Sum of the prism volumes (equal to the integral of section areas; for a
+ * loft, options.frames, the wedges' volume in space, the integral of their
+ * Jacobian); HUGE_VAL when it is beyond the double range. */
 CM_API double cm_sweep_volume(const cm_sweep *sweep);
 /* The height from the first to the last section, and 1 if it was the
  * default (options.height 0 without heights: the largest bounding-box

@@ -18,6 +18,7 @@
 #include "geom/angle.h"
 #include "geom/predicates.h"
 #include "morph/cell_shape.h"
+#include "morph/loft.h"
 #include "morph/sweep_boundary.h"
 
 typedef struct section {
@@ -511,6 +512,49 @@ static cm_status build_ruled(cm_sweep *w, const cm_morph *morph, const cm_sweep_
     return s;
 }
 
+/* The centre of each geometry, the mean of its boundary vertices, in its
+ * plane coordinates (2 per geometry, at out). */
+static const double *section_centres(const cm_morph *m, double *out)
+{
+    const cm_mesh *mesh = &m->result->mesh;
+    size_t n = m->result->n;
+    for (size_t g = 0; g < mesh->k; g++) {
+        long double x = 0, y = 0;
+        for (size_t v = 0; v < n; v++) x += mesh->xy[g][2 * v], y += mesh->xy[g][2 * v + 1];
+        out[2 * g] = (double)(x / (long double)n), out[2 * g + 1] = (double)(y / (long double)n);
+    }
+    return out;
+}
+
+/* The loft's step (cm_sweep_options.frames): the nodes placed in space
+ * between the planes, each cell checked there, the volume and the cells'
+ * quality measured there. */
+static cm_status place_in_space(cm_sweep *w, const double *frames, const double *levels, size_t k)
+{
+    size_t count = w->ns * w->nv, nt = w->ns > 1 ? w->np / (w->ns - 1) : 1;
+    cm_loft_place(frames, levels, k, w->nodes, count);
+    for (size_t i = 0; i < 3 * count; i++)
+        if (!isfinite(w->nodes[i]))
+            return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: node %zu of the loft is beyond the double range", i / 3);
+    int tets = w->tets != NULL;
+    const int32_t *cells = tets ? w->tets : w->prisms;
+    size_t cell_count = tets ? w->ntet : w->np;
+    long bad = cm_loft_first_inverted(w->nodes, cells, cell_count, tets);
+    if (bad >= 0) {
+        size_t layer = (tets ? (size_t)bad / 3 : (size_t)bad) / nt;
+        return cm_fail(&w->error, CM_ERR_ARGUMENT,
+                       "sweep: the loft's %s %ld, between sections %zu and %zu, is not positive in space: the "
+                       "straight blend between the planes folds there (planes too close for their turn, planes "
+                       "crossing inside the polygons, or a polygon given the other way round)",
+                       tets ? "tetrahedron" : "prism", bad, layer, layer + 1);
+    }
+    w->volume = cm_loft_volume(w->nodes, w->prisms, w->np);
+    cm_sweep_quality flat = w->quality;
+    cm_cells_quality(w->nodes, cells, cell_count, tets, &w->quality);
+    w->quality.max_flatness = flat.max_flatness, w->quality.flat_prisms = flat.flat_prisms;
+    return CM_OK;
+}
+
 static void free_mesh(cm_sweep *w)
 {
     free(w->z), free(w->nodes), free(w->prisms), free(w->tets);
@@ -530,6 +574,18 @@ cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_s
     if (!morph) return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: morph is NULL");
     if (!morph->result) return cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: the morph failed to build (%s)", cm_morph_message(morph));
     cm_status s = check_options(w, morph, options);
+    const double *frames = options->frames;
+    double *levels = NULL;
+    cm_sweep_options lofted;
+    if (s == CM_OK && frames) { /* the loft: built with its levels as heights, then placed */
+        if (options->heights || options->height != 0)
+            s = cm_fail(&w->error, CM_ERR_ARGUMENT, "sweep: frames place the geometries; give no heights or height with them");
+        else if (!(levels = malloc(3 * morph->k * sizeof *levels)))
+            s = cm_fail_status(&w->error, CM_ERR_NO_MEMORY);
+        else
+            s = cm_loft_levels(frames, section_centres(morph, levels + morph->k), morph->k, levels, &w->error);
+        lofted = *options, lofted.heights = levels, options = &lofted;
+    }
     w->morph_method = morph->method;
     int built = 0;
     if (s == CM_OK && options->ruled && morph->method != CM_MORPH_LINEAR) {
@@ -541,6 +597,8 @@ cm_status cm_sweep_create(cm_morph *morph, const cm_sweep_options *options, cm_s
         s = build_prisms(w, morph, options);
         if (s == CM_ERR_INTERNAL && morph->method == CM_MORPH_CONVEX) s = retry_intrinsic(w, morph, options);
     }
+    if (s == CM_OK && frames) s = place_in_space(w, frames, levels, morph->k);
+    free(levels);
     if (s != CM_OK) {
         free_mesh(w);
         w->ns = w->np = w->ntet = w->nv = 0, w->volume = 0;
