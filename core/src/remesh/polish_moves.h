@@ -22,6 +22,15 @@ typedef struct cm_pmove_limits {
  * (km->between; polish_moves.c says why). */
 cm_pmove_limits cm_pmove_limits_of(const cm_kmesh *km);
 
+/* Where boundary points slide (the caller's choice) and the worst
+ * triangle is still far below its aim after the stage
+ * (cm_pmove_longer_wanted; km->between), the stage runs again at
+ * cm_pmove_longer_limits, up to cm_pmove_longer_rounds times while a run
+ * keeps a move. */
+cm_pmove_limits cm_pmove_longer_limits(void);
+int cm_pmove_longer_rounds(void);
+int cm_pmove_longer_wanted(const cm_kmesh *km);
+
 /* Tries moves (a polish alone, a flip, a split, a Steiner vertex's
  * removal, an insertion) around the triangles furthest below their aim,
  * each with the local polish, keeping one only when the smallest slack of

@@ -986,6 +986,17 @@ static cm_status polish_moves(remesher *x, cm_mesh *mesh, size_t n, cm_remesh_bo
         if (more < 0) return stop_status(x);
         kept += more, splits->slid += slide.slid;
     }
+    /* Still far below the aim where the correspondence is the tool's to
+     * choose: longer runs with the boundary points' turn while they keep
+     * moves (polish_moves.c says why). */
+    cm_pmove_limits longer = cm_pmove_longer_limits();
+    for (int r = 0; splits && splits->place && r < cm_pmove_longer_rounds() && cm_pmove_longer_wanted(km); r++) {
+        cm_maxmin_slide slide = {NULL, NULL, splits->place, splits->ctx, splits->max_piece, 0, NULL, NULL};
+        long more = cm_polish_moves(km, &longer, budget_of(x->o, n) - (km->live_v - km->n), &slide, x->progress);
+        if (more < 0) return stop_status(x);
+        kept += more, splits->slid += slide.slid;
+        if (more == 0) break;
+    }
     if (kept == 0) return CM_OK;
     cm_status s = splits ? cm_kmesh_write_labels(km, splits->edge, splits->t) : CM_OK;
     return s == CM_OK ? cm_kmesh_write(km, mesh) : s;
