@@ -222,7 +222,7 @@ int main(int argc, char **argv)
             bool ok;
             if (w.ours) {
                 cli_error error;
-                ok = write_triangle_mesh(path.c_str(), mesh.xy.data(), mesh.vertices(), mesh.triangles.data(),
+                ok = write_triangle_mesh(path.c_str(), mesh.xy.data(), nullptr, mesh.vertices(), mesh.triangles.data(),
                                          mesh.triangles.size() / 3, w.format, &error) == CLI_EXIT_OK;
             } else {
                 ok = OpenMesh::IO::write_mesh(om, path, w.options, 17);

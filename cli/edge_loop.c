@@ -43,15 +43,24 @@ int plane_z_take(plane_z *plane, double x, double y, double z, int given, const 
     return CLI_EXIT_USAGE;
 }
 
-/* Twice the signed area of the loop of m vertices. */
-static double loop_area2(const double *xy, size_t stride, const long *loop, size_t m)
+void plane_z_note(plane_z *plane, double x, double y, double z, int given, long where)
 {
-    double sum = 0;
+    plane->given |= given;
+    if (!plane->started) plane->z = z, plane->where = where, plane->started = 1;
+    else if (!in_plane_z(x, y, z, plane->z)) plane->off = 1;
+}
+
+/* Twice the area of the loop of m vertices: in the plane z = 0, signed,
+ * with stride 2; in space (the length of Newell's vector) with stride 3. */
+static double loop_area2(const double *p, size_t stride, const long *loop, size_t m)
+{
+    double n[3] = {0, 0, 0};
     for (size_t i = 0; i < m; i++) {
-        const double *a = xy + stride * (size_t)loop[i], *b = xy + stride * (size_t)loop[(i + 1) % m];
-        sum += a[0] * b[1] - a[1] * b[0];
+        const double *a = p + stride * (size_t)loop[i], *b = p + stride * (size_t)loop[(i + 1) % m];
+        n[2] += a[0] * b[1] - a[1] * b[0];
+        if (stride == 3) n[0] += a[1] * b[2] - a[2] * b[1], n[1] += a[2] * b[0] - a[0] * b[2];
     }
-    return sum;
+    return stride == 3 ? hypot(hypot(n[0], n[1]), n[2]) : n[2];
 }
 
 /* Moves the loop of largest area to the front of order (loops of sizes). */

@@ -22,6 +22,7 @@ typedef struct plane_z {
     int started; /* a vertex was taken */
     int given;   /* some vertex gave z */
     int by_index;
+    int off;     /* plane_z_note: some vertex left the plane (a section in another plane) */
 } plane_z;
 
 /* Takes vertex (x, y, z), read at `where` (given: the file wrote its z),
@@ -31,13 +32,21 @@ typedef struct plane_z {
 int plane_z_take(plane_z *plane, double x, double y, double z, int given, const char *path, long where,
                  cli_error *error);
 
+/* The same without an error: notes whether the vertex leaves the plane
+ * (plane->off), for readers that take sections in any plane. */
+void plane_z_note(plane_z *plane, double x, double y, double z, int given, long where);
+
 /* A ring's vertex count without its closing repeat: size - 1 where the
- * last of its size vertices (x y pairs) repeats the first exactly, as GMT,
- * WKT, shapefiles and GeoJSON close rings; a ring of three or fewer keeps
- * them all, for the messages on too few vertices. */
-static inline size_t ring_size_without_repeat(const double *xy, size_t size)
+ * last of its size vertices (stride doubles each, all compared) repeats
+ * the first exactly, as GMT, WKT, shapefiles and GeoJSON close rings; a
+ * ring of three or fewer keeps them all, for the messages on too few
+ * vertices. */
+static inline size_t ring_size_without_repeat(const double *p, size_t stride, size_t size)
 {
-    return size >= 4 && xy[0] == xy[2 * size - 2] && xy[1] == xy[2 * size - 1] ? size - 1 : size;
+    if (size < 4) return size;
+    for (size_t c = 0; c < stride; c++)
+        if (p[c] != p[stride * (size - 1) + c]) return size;
+    return size - 1;
 }
 
 /* An edge between vertices a and b (0-based), read at `where`: a line
@@ -48,10 +57,13 @@ typedef struct loop_edge {
 } loop_edge;
 
 /* Chains edges[0..count) over vertex_count vertices (vertex v at
- * xy[stride * v], xy[stride * v + 1]; messages number vertices from base: 1 for OBJ, 0 for PLY) into
+ * xy[stride * v], xy[stride * v + 1], and with stride 3 its z next;
+ * messages number vertices from base: 1 for OBJ, 0 for PLY) into
  * closed loops. Each loop starts at the first edge (in file order) not on
  * an earlier one and leaves along it, so a file listing a loop in order
- * keeps that order; the loop of largest area comes first (the outer one),
+ * keeps that order; the loop of largest area (with stride 3 its area in
+ * space, Newell's, so that a section in any plane is measured in it) comes
+ * first (the outer one),
  * the others follow in file order. Vertices no edge touches are ignored.
  * On success *loops (malloc'ed) holds the vertices, loop after loop, and
  * *sizes (malloc'ed) the *loop_count loop lengths. Errors ("PATH:WHERE:

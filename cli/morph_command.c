@@ -182,6 +182,11 @@ static void morph_run_free(morph_run *run)
 
 static int compute_frames(morph_run *run, cli_error *error)
 {
+    if (run->tri.polygons[0].spatial) { /* every input then is */
+        cli_error_set(error, "morph: the inputs lie in planes other than z = constant; the frames are drawn in "
+                      "one plane: give sections in planes z = constant, or sweep them (a loft between their planes)");
+        return CLI_EXIT_USAGE;
+    }
     size_t frames = run->args->frames;
     size_t vertices = cm_result_num_vertices(run->tri.result);
     cm_morph_options options;
@@ -229,7 +234,7 @@ static int write_frames(morph_run *run, cli_error *error)
             return CLI_EXIT_INTERNAL;
         }
         strcpy(run->names[f], name);
-        int code = write_triangle_mesh(path, run->xy + 2 * f * vertices, vertices,
+        int code = write_triangle_mesh(path, run->xy + 2 * f * vertices, NULL, vertices,
                                        cm_result_triangles(result),
                                        cm_result_num_triangles(result), args->format, error);
         if (code != CLI_EXIT_OK) return code;

@@ -103,7 +103,7 @@ static int read_rings(json_t *rings, const char *path, polygon_input *polygon, c
             polygon->xy[2 * count] = x, polygon->xy[2 * count + 1] = y;
             polygon->source_line[count] = (long)count;
         }
-        size_t kept = ring_size_without_repeat(polygon->xy + 2 * first, size);
+        size_t kept = ring_size_without_repeat(polygon->xy + 2 * first, 2, size);
         count = first + kept;
         polygon->loop_sizes[r] = kept;
     }

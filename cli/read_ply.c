@@ -287,8 +287,7 @@ int parse_ply(const char *path, const char *data, size_t length, polygon_input *
                 }
                 xyz[3 * i] = value[ix], xyz[3 * i + 1] = value[iy], xyz[3 * i + 2] = iz >= 0 ? value[iz] : 0;
                 line[i] = binary ? i : where;
-                code = plane_z_take(&plane, xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], iz >= 0, path, line[i],
-                                    error);
+                plane_z_note(&plane, xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2], iz >= 0, line[i]);
             } else if (e == edge) {
                 for (int end = 0; end < 2 && code == CLI_EXIT_OK; end++) {
                     double v = value[end ? ib : ia];
@@ -312,15 +311,16 @@ int parse_ply(const char *path, const char *data, size_t length, polygon_input *
         code = edge_loops(path, edges, (size_t)edge->count, xyz, 3, (size_t)vertex->count, 0, binary, &loop, &sizes,
                           &loops, error);
     for (size_t l = 0; l < loops; l++) count += sizes[l];
+    double *ordered = NULL;
     if (code == CLI_EXIT_OK) {
-        polygon->xy = malloc(2 * count * sizeof *polygon->xy);
-        polygon->source_line = malloc(count * sizeof *polygon->source_line);
-        if (!polygon->xy || !polygon->source_line) {
+        ordered = malloc((3 * count + 1) * sizeof *ordered);
+        polygon->source_line = malloc((count + 1) * sizeof *polygon->source_line);
+        if (!ordered || !polygon->source_line) {
             cli_error_set(error, "%s: out of memory", path);
             code = CLI_EXIT_INTERNAL;
         } else {
             for (size_t i = 0; i < count; i++) {
-                polygon->xy[2 * i] = xyz[3 * loop[i]], polygon->xy[2 * i + 1] = xyz[3 * loop[i] + 1];
+                memcpy(ordered + 3 * i, xyz + 3 * loop[i], 3 * sizeof *ordered);
                 polygon->source_line[i] = line[loop[i]];
             }
             polygon->count = count;
@@ -328,10 +328,10 @@ int parse_ply(const char *path, const char *data, size_t length, polygon_input *
             polygon->loop_sizes = sizes;
             sizes = NULL;
             polygon->by_index = binary;
-            polygon->has_z = plane.given;
-            polygon->z = plane.z;
+            code = place_section(path, polygon, ordered, &plane, error);
+            ordered = NULL; /* taken */
         }
     }
-    free(xyz), free(line), free(edges), free(loop), free(sizes);
+    free(ordered), free(xyz), free(line), free(edges), free(loop), free(sizes);
     return code;
 }

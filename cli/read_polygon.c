@@ -15,27 +15,27 @@
 
 enum { MAX_FIELDS = 8 };
 
-/* Growable list of vertices with the line each came from. */
+/* Growable list of vertices (x y z) with the line each came from. */
 typedef struct vertex_list {
-    double *xy;
+    double *xyz;
     long *line;
     size_t count, capacity;
 } vertex_list;
 
-static int vertex_list_push(vertex_list *list, double x, double y, long line)
+static int vertex_list_push(vertex_list *list, double x, double y, double z, long line)
 {
     if (list->count == list->capacity) {
         size_t capacity = list->capacity ? 2 * list->capacity : 64;
-        double *xy = realloc(list->xy, 2 * capacity * sizeof *xy);
-        if (!xy) return -1;
-        list->xy = xy;
+        double *xyz = realloc(list->xyz, 3 * capacity * sizeof *xyz);
+        if (!xyz) return -1;
+        list->xyz = xyz;
         long *lines = realloc(list->line, capacity * sizeof *lines);
         if (!lines) return -1;
         list->line = lines;
         list->capacity = capacity;
     }
-    list->xy[2 * list->count] = x;
-    list->xy[2 * list->count + 1] = y;
+    double *p = list->xyz + 3 * list->count;
+    p[0] = x, p[1] = y, p[2] = z;
     list->line[list->count] = line;
     list->count++;
     return 0;
@@ -43,9 +43,43 @@ static int vertex_list_push(vertex_list *list, double x, double y, long line)
 
 static void vertex_list_free(vertex_list *list)
 {
-    free(list->xy);
+    free(list->xyz);
     free(list->line);
     memset(list, 0, sizeof *list);
+}
+
+int place_section(const char *path, polygon_input *polygon, double *xyz, const plane_z *plane, cli_error *error)
+{
+    size_t n = polygon->count;
+    polygon->xy = malloc((2 * n + 1) * sizeof *polygon->xy);
+    if (!polygon->xy) {
+        free(xyz);
+        cli_error_set(error, "%s: out of memory", path);
+        return CLI_EXIT_INTERNAL;
+    }
+    if (!plane->off) {
+        for (size_t i = 0; i < n; i++) polygon->xy[2 * i] = xyz[3 * i], polygon->xy[2 * i + 1] = xyz[3 * i + 1];
+        polygon->has_z = plane->given, polygon->z = plane->z;
+        free(xyz);
+        return CLI_EXIT_OK;
+    }
+    size_t worst = 0;
+    char message[256];
+    int fit = section_fit(xyz, n, polygon->loops ? polygon->loop_sizes[0] : n, &polygon->frame, &worst, message,
+                          sizeof message);
+    if (fit) {
+        free(xyz);
+        if (fit == -2) {
+            cli_error_set(error, "%s: out of memory", path);
+            return CLI_EXIT_INTERNAL;
+        }
+        if (polygon->by_index) cli_error_set(error, "%s: vertex %ld: %s", path, polygon->source_line[worst], message);
+        else cli_error_set(error, "%s:%ld: %s", path, polygon->source_line[worst], message);
+        return CLI_EXIT_USAGE;
+    }
+    section_to_plane(&polygon->frame, xyz, n, polygon->xy);
+    polygon->spatial = 1, polygon->xyz = xyz, polygon->has_z = 1;
+    return CLI_EXIT_OK;
 }
 
 /* Reads the whole file into a NUL-terminated buffer. Files of any kind
@@ -223,7 +257,7 @@ static size_t xy_drop_ring_repeat(xy_state *state)
 {
     size_t size = state->vertices.count - state->loop_first;
     if (size == 0) return 0; /* no vertices yet: xy may be NULL */
-    size_t kept = ring_size_without_repeat(state->vertices.xy + 2 * state->loop_first, size);
+    size_t kept = ring_size_without_repeat(state->vertices.xyz + 3 * state->loop_first, 3, size);
     state->vertices.count -= size - kept;
     return kept;
 }
@@ -283,10 +317,9 @@ static int visit_xy_line(char *line, long number, void *opaque)
         parse_coordinate(fields[1], &y, state->path, number, state->error) ||
         (count == 3 && parse_coordinate(fields[2], &z, state->path, number, state->error)))
         return CLI_EXIT_USAGE;
-    int code = plane_z_take(&state->plane, x, y, z, count == 3, state->path, number, state->error);
-    if (code != CLI_EXIT_OK) return code;
+    plane_z_note(&state->plane, x, y, z, count == 3, number);
     if (state->vertices.count == state->loop_first) state->loop_line = number;
-    if (vertex_list_push(&state->vertices, x, y, number)) {
+    if (vertex_list_push(&state->vertices, x, y, z, number)) {
         cli_error_set(state->error, "%s: out of memory", state->path);
         return CLI_EXIT_INTERNAL;
     }
@@ -313,13 +346,10 @@ static int parse_xy(const char *path, char *text, polygon_input *polygon,
         return code;
     }
     polygon->count = state.vertices.count;
-    polygon->xy = state.vertices.xy;
     polygon->source_line = state.vertices.line;
     polygon->loops = state.loops.count;
     polygon->loop_sizes = state.loops.size;
-    polygon->has_z = state.plane.given;
-    polygon->z = state.plane.z;
-    return CLI_EXIT_OK;
+    return place_section(path, polygon, state.vertices.xyz, &state.plane, error);
 }
 
 /* ---- OBJ polyline ------------------------------------------------------ */
@@ -345,9 +375,8 @@ static int obj_vertex(obj_state *state, char **fields, int count, long number)
         parse_coordinate(fields[2], &y, state->path, number, state->error) ||
         (count == 4 && parse_coordinate(fields[3], &z, state->path, number, state->error)))
         return CLI_EXIT_USAGE;
-    int code = plane_z_take(&state->plane, x, y, z, count == 4, state->path, number, state->error);
-    if (code != CLI_EXIT_OK) return code;
-    if (vertex_list_push(&state->vertices, x, y, number)) {
+    plane_z_note(&state->plane, x, y, z, count == 4, number);
+    if (vertex_list_push(&state->vertices, x, y, z, number)) {
         cli_error_set(state->error, "%s: out of memory", state->path);
         return CLI_EXIT_INTERNAL;
     }
@@ -447,30 +476,27 @@ static int obj_make_polygon(obj_state *state, polygon_input *polygon)
     }
     long *loop;
     size_t count = 0, *sizes, loops;
-    int code = edge_loops(path, state->edges, state->edge_count, state->vertices.xy, 2, state->vertices.count, 1, 0,
+    int code = edge_loops(path, state->edges, state->edge_count, state->vertices.xyz, 3, state->vertices.count, 1, 0,
                           &loop, &sizes, &loops, state->error);
     if (code != CLI_EXIT_OK) return code;
     for (size_t l = 0; l < loops; l++) count += sizes[l];
-    polygon->xy = malloc(2 * count * sizeof *polygon->xy);
-    polygon->source_line = malloc(count * sizeof *polygon->source_line);
-    if (!polygon->xy || !polygon->source_line) {
-        free(loop), free(sizes);
+    double *xyz = malloc((3 * count + 1) * sizeof *xyz);
+    polygon->source_line = malloc((count + 1) * sizeof *polygon->source_line);
+    if (!xyz || !polygon->source_line) {
+        free(loop), free(sizes), free(xyz);
         cli_error_set(state->error, "%s: out of memory", path);
         return CLI_EXIT_INTERNAL;
     }
     for (size_t i = 0; i < count; i++) {
         size_t v = (size_t)loop[i];
-        polygon->xy[2 * i] = state->vertices.xy[2 * v];
-        polygon->xy[2 * i + 1] = state->vertices.xy[2 * v + 1];
+        memcpy(xyz + 3 * i, state->vertices.xyz + 3 * v, 3 * sizeof *xyz);
         polygon->source_line[i] = state->vertices.line[v];
     }
     free(loop);
     polygon->count = count;
     polygon->loops = loops;
     polygon->loop_sizes = sizes;
-    polygon->has_z = state->plane.given;
-    polygon->z = state->plane.z;
-    return CLI_EXIT_OK;
+    return place_section(path, polygon, xyz, &state->plane, state->error);
 }
 
 static int parse_obj(const char *path, char *text, polygon_input *polygon,
@@ -538,6 +564,7 @@ int read_polygon(const char *path, size_t max_bytes, polygon_input *polygon, cli
 void polygon_input_free(polygon_input *polygon)
 {
     free(polygon->xy);
+    free(polygon->xyz);
     free(polygon->source_line);
     free(polygon->loop_sizes);
     memset(polygon, 0, sizeof *polygon);

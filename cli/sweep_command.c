@@ -335,7 +335,7 @@ static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morp
                        cm_sweep **sweep, const char **height_rule, cli_error *error)
 {
     size_t k = args->tri.input_count;
-    double *own = malloc(k * sizeof *own);
+    double *own = malloc(9 * k * sizeof *own); /* the inputs' z, or a loft's frames */
     if (!own) {
         cli_error_set(error, "out of memory");
         return CLI_EXIT_INTERNAL;
@@ -351,9 +351,26 @@ static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morp
      * bounding-box diagonal of the sections. */
     *height_rule = "the largest bounding-box diagonal of the sections (default), so prisms are about as tall "
                    "as the sections are wide";
-    if (args->height > 0) options.height = args->height, *height_rule = "given by --height";
-    if (args->heights) options.heights = args->heights, *height_rule = "given by --heights";
-    else if (args->height <= 0) {
+    if (tri->polygons[0].spatial) { /* sections in other planes (every input then is): a loft between them */
+        if (args->height > 0 || args->heights) {
+            free(own);
+            cli_error_set(error, "sweep: the inputs lie in planes other than z = constant, which place them; "
+                          "give no --height or --heights");
+            return CLI_EXIT_USAGE;
+        }
+        for (size_t g = 0; g < k; g++) {
+            const section_frame *f = &tri->polygons[g].frame;
+            memcpy(own + 9 * g, f->origin, sizeof f->origin);
+            memcpy(own + 9 * g + 3, f->u, sizeof f->u);
+            memcpy(own + 9 * g + 6, f->v, sizeof f->v);
+        }
+        options.frames = own;
+        *height_rule = "a loft between the inputs' planes: the distances between their centres";
+    } else if (args->heights) {
+        options.heights = args->heights, *height_rule = "given by --heights";
+    } else if (args->height > 0) {
+        options.height = args->height, *height_rule = "given by --height";
+    } else {
         int found = heights_from_inputs(tri, own, error);
         if (found < 0) {
             free(own);

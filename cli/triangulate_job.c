@@ -132,7 +132,7 @@ static int write_meshes(triangulate_run *run, cli_error *error)
         const char *path;
         int code = stage_file(run, run->mesh_names[g], &path, error);
         if (code == CLI_EXIT_OK)
-            code = write_mesh(path, run->tri.result, g, run->args->format, error);
+            code = write_mesh(path, run->tri.result, g, &run->tri.polygons[g], run->args->format, error);
         if (code != CLI_EXIT_OK) return code;
         run->final_paths[g] = path_join(run->output.target, run->mesh_names[g]);
         if (!run->final_paths[g]) {

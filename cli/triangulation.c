@@ -292,6 +292,44 @@ static double seconds_now(void)
     return (double)now.tv_sec + 1e-9 * (double)now.tv_nsec;
 }
 
+/* Once any input is a section in a plane other than z = constant, every
+ * input is placed in space (an input in a plane z = constant too, in its
+ * plane), each plane's axes carried from the one before (section_align),
+ * so that a loft's sections turn only as much as their planes. */
+static int place_in_space(triangulation *t, cli_error *error)
+{
+    size_t k = t->args->input_count;
+    section_frame *frames = malloc((k + 1) * sizeof *frames);
+    if (!frames) goto out_of_memory;
+    for (size_t g = 0; g < k; g++) {
+        polygon_input *p = &t->polygons[g];
+        if (!p->spatial) {
+            if (!(p->xyz = malloc((3 * p->count + 1) * sizeof *p->xyz))) goto out_of_memory;
+            for (size_t i = 0; i < p->count; i++)
+                p->xyz[3 * i] = p->xy[2 * i], p->xyz[3 * i + 1] = p->xy[2 * i + 1], p->xyz[3 * i + 2] = p->z;
+            size_t vertex;
+            char message[256];
+            /* a plane z = constant is fitted exactly: only memory can fail */
+            if (section_fit(p->xyz, p->count, p->loop_sizes[0], &p->frame, &vertex, message, sizeof message))
+                goto out_of_memory;
+            p->spatial = 1, p->has_z = 1;
+        }
+        frames[g] = p->frame;
+    }
+    if (section_align(frames, k)) goto out_of_memory;
+    for (size_t g = 0; g < k; g++) {
+        polygon_input *p = &t->polygons[g];
+        p->frame = frames[g];
+        section_to_plane(&p->frame, p->xyz, p->count, p->xy);
+    }
+    free(frames);
+    return CLI_EXIT_OK;
+out_of_memory:
+    free(frames);
+    cli_error_set(error, "out of memory");
+    return CLI_EXIT_INTERNAL;
+}
+
 static int read_inputs(triangulation *t, cli_error *error)
 {
     const triangulation_args *args = t->args;
@@ -307,6 +345,8 @@ static int read_inputs(triangulation *t, cli_error *error)
             return CLI_EXIT_USAGE;
         }
     }
+    for (size_t i = 0; i < args->input_count; i++)
+        if (t->polygons[i].spatial) return place_in_space(t, error);
     return CLI_EXIT_OK;
 }
 

@@ -13,6 +13,7 @@
 #include "outdir.h"
 
 #include <inttypes.h>
+#include <stdlib.h>
 #include <string.h>
 
 static const char *const format_names[] = {"off", "obj", "ply"};
@@ -55,19 +56,27 @@ static void write_header(FILE *file, mesh_format format, size_t vertices,
     }
 }
 
-static void write_vertices(FILE *file, mesh_format format, const double *xy,
+/* The vertices: x y 0 from xy, or x y z from xyz. */
+static void write_vertices(FILE *file, mesh_format format, const double *xy, const double *xyz,
                            size_t count)
 {
     const char *prefix = format == MESH_FORMAT_OBJ ? "v " : "";
     size_t prefix_length = strlen(prefix);
-    char line[8 + 2 * FORMAT_DOUBLE_SIZE];
+    char line[8 + 3 * FORMAT_DOUBLE_SIZE];
     memcpy(line, prefix, prefix_length);
     for (size_t i = 0; i < count; i++) {
-        char *end = format_double(line + prefix_length, xy[2 * i]);
+        const double *p = xyz ? xyz + 3 * i : xy + 2 * i;
+        char *end = format_double(line + prefix_length, p[0]);
         *end++ = ' ';
-        end = format_double(end, xy[2 * i + 1]);
-        memcpy(end, " 0\n", 3);
-        fwrite(line, 1, (size_t)(end + 3 - line), file);
+        end = format_double(end, p[1]);
+        if (xyz) {
+            *end++ = ' ';
+            end = format_double(end, p[2]);
+            *end++ = '\n';
+        } else {
+            memcpy(end, " 0\n", 3), end += 3;
+        }
+        fwrite(line, 1, (size_t)(end - line), file);
     }
 }
 
@@ -84,22 +93,60 @@ static void write_triangles(FILE *file, mesh_format format,
     }
 }
 
-int write_triangle_mesh(const char *path, const double *xy, size_t vertices,
+int write_triangle_mesh(const char *path, const double *xy, const double *xyz, size_t vertices,
                         const int32_t *triangles, size_t count, mesh_format format,
                         cli_error *error)
 {
     FILE *file = output_open(path, error);
     if (!file) return CLI_EXIT_INTERNAL;
     write_header(file, format, vertices, count);
-    write_vertices(file, format, xy, vertices);
+    write_vertices(file, format, xy, xyz, vertices);
     write_triangles(file, format, triangles, count);
     return output_close(file, path, error);
 }
 
-int write_mesh(const char *path, const cm_result *result, size_t g,
+/* The next vertex of input vertex e along its loop. */
+static size_t next_in_loop(const polygon_input *input, size_t e)
+{
+    size_t first = 0;
+    for (size_t l = 0; l < input->loops; first += input->loop_sizes[l++])
+        if (e < first + input->loop_sizes[l]) return e + 1 < first + input->loop_sizes[l] ? e + 1 : first;
+    return e + 1 < input->count ? e + 1 : 0;
+}
+
+/* Geometry g's vertices where its input lies (write_mesh). */
+static void place_vertices(const cm_result *result, size_t g, const polygon_input *input, double *xyz)
+{
+    const double *xy = cm_result_vertices(result, g);
+    size_t nv = cm_result_num_vertices(result), n = cm_result_stats(result)->n;
+    for (size_t v = 0; v < nv; v++) {
+        double *p = xyz + 3 * v, t = 0;
+        long e = v < n && input->spatial ? cm_result_boundary_source(result, g, v, &t) : -1;
+        if (e >= 0) {
+            const double *a = input->xyz + 3 * e, *b = input->xyz + 3 * next_in_loop(input, (size_t)e);
+            for (int c = 0; c < 3; c++) p[c] = t == 0 ? a[c] : a[c] + t * (b[c] - a[c]);
+        } else if (input->spatial) {
+            section_to_space(&input->frame, xy[2 * v], xy[2 * v + 1], p);
+        } else {
+            p[0] = xy[2 * v], p[1] = xy[2 * v + 1], p[2] = input->z;
+        }
+    }
+}
+
+int write_mesh(const char *path, const cm_result *result, size_t g, const polygon_input *input,
                mesh_format format, cli_error *error)
 {
-    return write_triangle_mesh(path, cm_result_vertices(result, g),
-                               cm_result_num_vertices(result), cm_result_triangles(result),
-                               cm_result_num_triangles(result), format, error);
+    size_t nv = cm_result_num_vertices(result);
+    double *xyz = NULL;
+    if (input && input->has_z) {
+        if (!(xyz = malloc((3 * nv + 1) * sizeof *xyz))) {
+            cli_error_set(error, "cannot write %s: out of memory", path);
+            return CLI_EXIT_INTERNAL;
+        }
+        place_vertices(result, g, input, xyz);
+    }
+    int code = write_triangle_mesh(path, cm_result_vertices(result, g), xyz, nv, cm_result_triangles(result),
+                                   cm_result_num_triangles(result), format, error);
+    free(xyz);
+    return code;
 }

@@ -8,6 +8,7 @@
 #include <compatmesh/compatmesh.h>
 
 #include "cli_common.h"
+#include "read_polygon.h"
 
 typedef enum mesh_format {
     MESH_FORMAT_OFF,
@@ -20,16 +21,20 @@ int mesh_format_from_name(const char *name, mesh_format *format);
 /* The file extension without the dot, which is also the format's name. */
 const char *mesh_format_name(mesh_format format);
 
-/* Writes geometry g of result to path: all vertices with z = 0, coordinates
- * printed shortest (format_double.h) so they read back bit-identical, then the shared
- * triangles (counter-clockwise). Returns CLI_EXIT_OK or CLI_EXIT_INTERNAL
- * with error set. */
-int write_mesh(const char *path, const cm_result *result, size_t g,
+/* Writes geometry g of result to path where its input lies (NULL: z = 0):
+ * in its plane z = constant, or for a section in another plane (spatial)
+ * in space, its input vertices as read and the points on its edges on the
+ * edges in space (cm_result_boundary_source), the others mapped from the
+ * plane; coordinates printed shortest (format_double.h) so they read back
+ * bit-identical, then the shared triangles (counter-clockwise in the
+ * plane). Returns CLI_EXIT_OK or CLI_EXIT_INTERNAL with error set. */
+int write_mesh(const char *path, const cm_result *result, size_t g, const polygon_input *input,
                mesh_format format, cli_error *error);
 
 /* The same for any geometry of the triangles: xy holds 2 * vertices
- * doubles, triangles 3 * count indices. */
-int write_triangle_mesh(const char *path, const double *xy, size_t vertices,
+ * doubles (z = 0), or xyz 3 * vertices (xy then NULL), triangles 3 * count
+ * indices. */
+int write_triangle_mesh(const char *path, const double *xy, const double *xyz, size_t vertices,
                         const int32_t *triangles, size_t count, mesh_format format,
                         cli_error *error);
 

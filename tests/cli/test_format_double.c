@@ -227,7 +227,7 @@ static void check_writers(const char *dir)
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         snprintf(path, sizeof path, "%s/%s", dir, cases[c].name);
         cli_error error;
-        CHECK(write_triangle_mesh(path, xy, MESH_VERTICES, triangles, 1, cases[c].format, &error) == CLI_EXIT_OK,
+        CHECK(write_triangle_mesh(path, xy, NULL, MESH_VERTICES, triangles, 1, cases[c].format, &error) == CLI_EXIT_OK,
               "%s: %s", path, error.message);
         char *text = read_file(path);
         CHECK(text != NULL, "%s: not written", path);

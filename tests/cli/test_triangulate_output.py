@@ -50,9 +50,10 @@ def check_mesh_geometry(points, triangles, polygon):
     assert math.isclose(area, abs(signed_area(polygon)), rel_tol=1e-9)
 
 
-def check_success(tmp_path, result, inputs, fmt="off", out="out", preview=True):
+def check_success(tmp_path, result, inputs, fmt="off", out="out", preview=True, z=None):
     """Checks everything a successful run promises (the pictures when
-    preview); returns the report."""
+    preview); returns the report. z: each input's plane z = constant by
+    name, where its file gave one (the meshes are written there), else 0."""
     assert result.returncode == 0, result.stderr
     assert result.stderr == ""
     out_dir = tmp_path / out
@@ -101,7 +102,7 @@ def check_success(tmp_path, result, inputs, fmt="off", out="out", preview=True):
         assert np.array_equal(triangles, faces), "meshes must share one triangle list"
         assert len(triangles) == report["triangles"]
         assert len(mesh.points) == report["vertices"]
-        assert np.all(mesh.points[:, 2] == 0)
+        assert np.all(mesh.points[:, 2] == (z or {}).get(name, 0))
 
         text = read_vertex_text(path, fmt)
         assert [(x.hex(), y.hex()) for x, y, _ in text[:n]] == \
@@ -251,7 +252,7 @@ def test_obj_polyline_follows_l_order(cm, tmp_path):
     (tmp_path / "kite.obj").write_text(text)
     write_xy(tmp_path / "square.xy", SQUARE)
     result = cm("triangulate", "kite.obj", "square.xy", "--out-dir", "out")
-    check_success(tmp_path, result, {"kite.obj": KITE, "square.xy": SQUARE})
+    check_success(tmp_path, result, {"kite.obj": KITE, "square.xy": SQUARE}, z={"kite.obj": 5})
 
 
 def test_obj_negative_indices(cm, tmp_path):
@@ -279,15 +280,16 @@ def test_commas_comments_blank_lines(cm, tmp_path):
 
 def test_xy_with_z(cm, tmp_path):
     """A third column is the section's z, the same on every line; the
-    meshes are those of the x y columns alone."""
+    meshes are those of the x y columns alone, written in the plane."""
     (tmp_path / "a.xy").write_text("".join(f"{x!r} {y!r} -2.5\n" for x, y in KITE))
     (tmp_path / "b.xy").write_text("".join(f"{x!r},{y!r},-2.5\n" for x, y in SQUARE))
     result = cm("triangulate", "a.xy", "b.xy", "--out-dir", "out")
-    check_success(tmp_path, result, {"a.xy": KITE, "b.xy": SQUARE})
+    check_success(tmp_path, result, {"a.xy": KITE, "b.xy": SQUARE}, z={"a.xy": -2.5, "b.xy": -2.5})
     write_xy(tmp_path / "c.xy", KITE)
     write_xy(tmp_path / "d.xy", SQUARE)
     assert cm("triangulate", "c.xy", "d.xy", "--out-dir", "flat").returncode == 0
-    assert (tmp_path / "out" / "a.off").read_bytes() == (tmp_path / "flat" / "c.off").read_bytes()
+    in_plane = (tmp_path / "out" / "a.off").read_text().replace(" -2.5\n", " 0\n")
+    assert in_plane == (tmp_path / "flat" / "c.off").read_text()
 
 
 def test_closed_rings_read_without_the_repeat(cm, tmp_path):

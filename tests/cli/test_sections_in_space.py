@@ -1,0 +1,117 @@
+"""Sections in planes other than z = constant (MeshLab cuts a model along
+x, y or any plane): each is meshed in its plane and written back in space,
+its own vertices as read; sweep lofts between the planes, every cell
+positive in space; a section that is not planar, and morph (whose frames
+are drawn in one plane), are refused with a message and no output."""
+import math
+
+import gmsh
+import numpy as np
+import pytest
+
+from polygons import leftovers, read_vertex_text, star
+
+TET_CORNERS = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]
+PRISM_CORNERS = [0, 0, -1, 1, 0, -1, 0, 1, -1, 0, 0, 1, 1, 0, 1, 0, 1, 1]
+
+
+def write_obj_loops(path, loops):
+    """MeshLab's section format: every vertex, then one 'l a b' per edge."""
+    lines, first = [], 1
+    for loop in loops:
+        lines += ["v %r %r %r" % tuple(map(float, p)) for p in loop]
+        lines += ["l %d %d" % (first + i, first + (i + 1) % len(loop)) for i in range(len(loop))]
+        first += len(loop)
+    path.write_text("\n".join(lines) + "\n")
+
+
+def in_plane(points, origin, turn_deg):
+    """Plane points (x, y) placed in the plane through origin turned by
+    turn_deg about the x axis."""
+    c, s = math.cos(math.radians(turn_deg)), math.sin(math.radians(turn_deg))
+    return [(origin[0] + x, origin[1] + y * c, origin[2] + y * s) for x, y in points]
+
+
+def bend(degrees, radius=4.0):
+    """The centre of the section turned by degrees along a bend about the
+    line y = radius, z = 0."""
+    t = math.radians(degrees)
+    return (0.0, radius - radius * math.cos(t), radius * math.sin(t))
+
+
+def test_sections_across_x_are_meshed_in_their_planes(cm, tmp_path):
+    """Two sections of a duct cut at x = 1 and x = 2.5, each a square with a
+    square hole, the hole listed first (the outer loop is the larger in
+    space: in x and y both would have no area): the meshes lie in x = 1
+    and x = 2.5 exactly, their own vertices as read."""
+    def square(h, cx=0.0):
+        return [(cx - h, -h), (cx + h, -h), (cx + h, h), (cx - h, h)]
+    sections = {}
+    for name, x, hole_at in (("a", 1.0, 0.0), ("b", 2.5, 0.2)):
+        outer = [(x, y, z) for y, z in star(16, 3)]
+        hole = [(x, y, z) for y, z in square(0.3, hole_at)[::-1]]
+        write_obj_loops(tmp_path / f"{name}.obj", [hole, outer])
+        sections[name] = (x, outer, hole)
+    result = cm("triangulate", "a.obj", "b.obj", "-o", "out")
+    assert result.returncode == 0, result.stderr
+    for name, (x, outer, hole) in sections.items():
+        text = read_vertex_text(tmp_path / "out" / f"{name}.off", "off")
+        assert [tuple(p) for p in text[:20]] == [tuple(map(float, p)) for p in outer + hole]
+        assert all(p[0] == x for p in text)
+
+
+def test_turned_sections_sweep_as_a_loft(cm, tmp_path, gmsh_session):
+    """Three sections along a bend (planes turned by 0, 30 and 60 degrees
+    about x): triangulated, each mesh lies in its plane, its own vertices
+    as read; swept, Gmsh reads every tetrahedron and prism positive, the
+    first and last sections' nodes in their planes."""
+    shapes = [star(14, 1), star(14, 2, scale=1.2), star(14, 1)]
+    names = []
+    for g, (turn, shape) in enumerate(zip((0, -30, -60), shapes)):
+        names.append(f"s{g}.obj")
+        write_obj_loops(tmp_path / names[-1], [in_plane(shape, bend(-turn), turn)])
+    result = cm("triangulate", *names, "-o", "out")
+    assert result.returncode == 0, result.stderr
+    for g, (turn, shape) in enumerate(zip((0, -30, -60), shapes)):
+        points = np.array(read_vertex_text(tmp_path / "out" / f"s{g}.off", "off"))
+        assert [tuple(p) for p in points[:14]] == in_plane(shape, bend(-turn), turn)
+        normal = np.array([0, -math.sin(math.radians(turn)), math.cos(math.radians(turn))])
+        assert np.abs((points - bend(-turn)) @ normal).max() < 1e-12
+    for kind, flag, element, corners in (("tet", ["--tets"], 4, TET_CORNERS), ("prism", [], 6, PRISM_CORNERS)):
+        result = cm("sweep", *names, "-o", f"{kind}.msh", "--sections", "auto", *flag)
+        assert result.returncode == 0, result.stderr
+        gmsh.open(str(tmp_path / f"{kind}.msh"))
+        _, determinants, _ = gmsh.model.mesh.getJacobians(element, corners)
+        assert len(determinants) > 0 and min(determinants) > 0
+        _, coords, _ = gmsh.model.mesh.getNodes()
+        nodes = np.reshape(coords, (-1, 3))
+        for turn in (0, -60):
+            normal = np.array([0, -math.sin(math.radians(turn)), math.cos(math.radians(turn))])
+            on_plane = np.abs((nodes - bend(-turn)) @ normal) < 1e-9
+            assert on_plane.sum() >= 14, (kind, turn)
+
+
+def test_loft_refusals_leave_nothing(cm, tmp_path):
+    """A loft whose planes cross inside the sections, a loft given heights,
+    a section that is not planar, and morph of sections in space: a message
+    each, exit 2, no output."""
+    shape = star(12, 4)
+    write_obj_loops(tmp_path / "a.obj", [in_plane(shape, (0, 0, 0), 0)])
+    write_obj_loops(tmp_path / "b.obj", [in_plane(shape, (0, 0, 0.3), 80)])
+    write_obj_loops(tmp_path / "c.obj", [in_plane(shape, (0, 0, 3), 20)])
+    bent = in_plane(shape, (0, 0, 3), 20)
+    bent[5] = (bent[5][0], bent[5][1], bent[5][2] + 0.05)
+    write_obj_loops(tmp_path / "d.obj", [bent])
+    cases = [
+        (("sweep", "a.obj", "b.obj", "-o", "x.msh", "--tets"), "is not positive in space"),
+        (("sweep", "a.obj", "c.obj", "-o", "x.msh", "--height", "2"), "give no --height or --heights"),
+        (("triangulate", "a.obj", "d.obj", "-o", "out"), r"d.obj:6: the polygon is not planar"),
+        (("morph", "a.obj", "c.obj", "-o", "frames"), "the inputs lie in planes other than z = constant"),
+    ]
+    for args, message in cases:
+        result = cm(*args)
+        assert result.returncode == 2, (args, result.stderr)
+        assert message in result.stderr, (args, result.stderr)
+        assert not (tmp_path / "x.msh").exists() and not (tmp_path / "out").exists()
+        assert not (tmp_path / "frames").exists()
+    assert leftovers(tmp_path) == []
