@@ -576,19 +576,22 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
     setter->set(options, item.second, *callbacks);
   }
 
-  // A loft's sections follow their winding, their frames aligned along it
-  // (sweep()).
+  // A loft's sections follow their winding (sweep()). Polygons in space
+  // have their frames aligned, each plane's axes carried from the one
+  // before: fitted axes follow each polygon's own spread (two sections of
+  // a pipe may get axes a quarter turn apart), and a correspondence chosen
+  // in the plane would twist them.
   const compatmesh::NormalSign sign = loft ? compatmesh::NormalSign::FollowWinding : compatmesh::NormalSign::Canonical;
   for (py::handle item : polygons_in) polygons->push_back(read_polygon(item, polygons->size(), tolerance, sign));
-  if (loft) {
-    std::vector<compatmesh::PlaneFrame> frames;
-    for (const Polygon &p : *polygons) frames.push_back(p.frame);
-    compatmesh::align_frames(frames);
-    for (std::size_t g = 0; g < polygons->size(); g++) {
-      Polygon &p = (*polygons)[g];
-      p.frame = frames[g];
-      p.xy = compatmesh::to_plane(p.frame, p.xyz.data(), p.size());
-    }
+  std::vector<compatmesh::PlaneFrame> frames;
+  std::vector<Polygon *> spatial;
+  for (Polygon &p : *polygons)
+    if (p.spatial) frames.push_back(p.frame), spatial.push_back(&p);
+  compatmesh::align_frames(frames);
+  for (std::size_t g = 0; g < spatial.size(); g++) {
+    Polygon &p = *spatial[g];
+    p.frame = frames[g];
+    p.xy = compatmesh::to_plane(p.frame, p.xyz.data(), p.size());
   }
   std::vector<const double *> data;
   std::vector<std::size_t> counts;

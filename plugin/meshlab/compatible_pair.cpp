@@ -74,6 +74,7 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   std::vector<compatmesh::Boundary> polygons;
   polygons.push_back(read_layer(first, first_name, disk[0]));
   polygons.push_back(read_layer(second, second_name, disk[1]));
+  compatmesh::align_boundaries(polygons);  // the second plane's axes carried from the first's
   const std::string names[2] = {first_name, second_name};
   // Loop l of one layer is paired with loop l of the other.
   auto loops = [](std::size_t count) { return std::to_string(count) + (count == 1 ? " boundary loop" : " boundary loops"); };

@@ -278,11 +278,46 @@ static void test_tool()
   CHECK_ERROR(tool.run(), CM_ERR_ARGUMENT, "min_angle_deg");
 }
 
+// Two sections of a pipe cut askew in different directions: their fitted
+// frames take axes from each polygon's spread, a quarter turn apart; the
+// tool carries the second plane's axes from the first's, so auto pairs
+// vertex 0 with vertex 0 (a quarter-turn twist before).
+static Points pipe_section(double z, double radius, double tilt_x, double tilt_y)
+{
+  Points points;
+  for (int i = 0; i < 40; i++) {
+    double t = 2 * M_PI * i / 40, x = radius * std::cos(t), y = radius * std::sin(t);
+    points.push_back({x, y, z + tilt_x * x + tilt_y * y});
+  }
+  return points;
+}
+
+static void test_pipe_sections()
+{
+  const Points a = pipe_section(0, 1.0, 0.03, 0), b = pipe_section(3, 1.05, 0, 0.03);
+  std::vector<PolyMesh> inputs{polyline_mesh(a), polyline_mesh(b)};
+  compatmesh::CompatibleTriangulationT<PolyMesh> tool;
+  for (const PolyMesh &m : inputs) tool.add_mesh(m);
+  cm_options options;
+  cm_options_init(&options);
+  options.correspondence = CM_CORRESPOND_AUTO;
+  tool.set_options(options);
+  tool.run();
+  const TriMesh &first = tool.meshes()[0], &second = tool.meshes()[1];
+  int at = -1;
+  for (auto vh : first.vertices())
+    if (first.point(vh) == TriMesh::Point(a[0][0], a[0][1], a[0][2])) at = vh.idx();
+  CHECK_MSG(at >= 0 && second.point(OpenMesh::VertexHandle(at)) == TriMesh::Point(b[0][0], b[0][1], b[0][2]),
+            "vertex 0 of the first section met (%g, %g) of the second", at >= 0 ? second.point(OpenMesh::VertexHandle(at))[0] : 0.0,
+            at >= 0 ? second.point(OpenMesh::VertexHandle(at))[1] : 0.0);
+}
+
 int main()
 {
   test_forms();
   test_tilted_plane();
   test_errors();
   test_tool();
+  test_pipe_sections();
   return check_summary("test_boundary");
 }

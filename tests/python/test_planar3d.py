@@ -79,3 +79,25 @@ def test_not_finite_3d(octagon, star):
     bad[2, 2] = np.inf
     with pytest.raises(ValueError, match="vertex 2 has a coordinate that is not finite"):
         compatmesh.triangulate([bad, lift(star)])
+
+
+def pipe_section(z, radius, tilt_x, tilt_y, n=40):
+    """A circle of radius about the z axis in the plane z + tilt_x x +
+    tilt_y y: a pipe cut slightly askew."""
+    t = 2 * np.pi * np.arange(n) / n
+    x, y = radius * np.cos(t), radius * np.sin(t)
+    return np.c_[x, y, z + tilt_x * x + tilt_y * y]
+
+
+@pytest.mark.parametrize("correspondence", ["auto", "arclength"])
+def test_sections_of_a_pipe_pair_without_a_twist(correspondence):
+    """Two sections of a pipe cut askew in different directions: fitted
+    frames take their axes from each polygon's spread (a quarter turn apart
+    here); with the second plane's axes carried from the first's, the
+    pairing chosen in the plane is the one in space: vertex 0 of one
+    meets vertex 0 of the other (a quarter-turn twist before)."""
+    a, b = pipe_section(0, 1.0, 0.03, 0), pipe_section(3, 1.05, 0, 0.03)
+    result = compatmesh.triangulate([a, b], correspondence=correspondence)
+    va, vb = result.vertices
+    at = np.flatnonzero((va == a[0]).all(axis=1))[0]
+    assert np.array_equal(vb[at], b[0])

@@ -128,6 +128,14 @@ Boundary make_boundary(std::vector<double> xyz, std::vector<int> source_vertex,
                        std::vector<std::size_t> loop_sizes, double relative_tolerance,
                        NormalSign sign);
 
+// Sections of one part in planes that are not the same: each frame after
+// the first turned within its plane so that its axes are the previous
+// frame's carried onto it (align_frames), and the plane coordinates mapped
+// again. Fitted frames take their axes from each polygon's own spread, so
+// two sections of a pipe may get axes a quarter turn apart, and a
+// correspondence chosen in the plane (auto's least turn) would twist them.
+void align_boundaries(std::vector<Boundary> &polygons);
+
 // Reads the polygon of a mesh (the three forms listed at the top). Throws
 // Error with a message saying what is wrong: a closed mesh, several parts,
 // a non-manifold vertex, handles, a polyline that branches or is not

@@ -354,6 +354,7 @@ void CompatibleTriangulationT<InMesh, OutMesh>::run()
                   e.other_vertex());
     }
   }
+  align_boundaries(boundaries);
   ResultPtr result = triangulate(boundaries, options_, progress_);
   std::vector<OutMesh> meshes;
   meshes.reserve(boundaries.size());
