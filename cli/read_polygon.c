@@ -48,6 +48,9 @@ static void vertex_list_free(vertex_list *list)
     memset(list, 0, sizeof *list);
 }
 
+/* A section's plane fitted in doubles must leave its coordinates finite. */
+#define FIT_BEYOND "the polygon's plane does not fit in doubles (coordinates too large for it)"
+
 int place_section(const char *path, polygon_input *polygon, double *xyz, const plane_z *plane, cli_error *error)
 {
     size_t n = polygon->count;
@@ -79,6 +82,12 @@ int place_section(const char *path, polygon_input *polygon, double *xyz, const p
     }
     section_to_plane(&polygon->frame, xyz, n, polygon->xy);
     polygon->spatial = 1, polygon->xyz = xyz, polygon->has_z = 1;
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(polygon->xy[2 * i]) || !isfinite(polygon->xy[2 * i + 1])) {
+            if (polygon->by_index) cli_error_set(error, "%s: vertex %ld: %s", path, polygon->source_line[i], FIT_BEYOND);
+            else cli_error_set(error, "%s:%ld: %s", path, polygon->source_line[i], FIT_BEYOND);
+            return CLI_EXIT_USAGE;
+        }
     return CLI_EXIT_OK;
 }
 

@@ -58,7 +58,7 @@ extern "C" int section_align(section_frame *frames, size_t k)
     try {
         std::vector<compatmesh::PlaneFrame> planes;
         for (size_t g = 0; g < k; g++) planes.push_back(frame_of(frames[g]));
-        compatmesh::align_frames(planes);
+        compatmesh::align_frames(planes, true);
         for (size_t g = 0; g < k; g++) frames[g] = section_of(planes[g]);
         return 0;
     } catch (const std::bad_alloc &) {

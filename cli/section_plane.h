@@ -26,10 +26,12 @@ typedef struct section_frame {
 int section_fit(const double *xyz, size_t n, size_t winding_points, section_frame *frame, size_t *vertex,
                 char *message, size_t size);
 
-/* Each frame after the first turned in its plane so that its axes are the
- * one before's carried by the least rotation (compatmesh::align_frames):
- * a loft's sections then turn only as much as their planes. 0, or -1 out
- * of memory. */
+/* The frames of a loft's sections (compatmesh::align_frames): the first
+ * normal towards the second plane, each next one on the side of the one
+ * before, each frame after the first turned and moved in its plane so
+ * that its axes and origin are the one before's carried into it: the
+ * sections then turn only as much as their planes, and the loft's cells
+ * are positive. 0, or -1 out of memory. */
 int section_align(section_frame *frames, size_t k);
 
 /* The plane coordinates of n points (xy: 2 n doubles). */

@@ -294,8 +294,9 @@ static double seconds_now(void)
 
 /* Once any input is a section in a plane other than z = constant, every
  * input is placed in space (an input in a plane z = constant too, in its
- * plane), each plane's axes carried from the one before (section_align),
- * so that a loft's sections turn only as much as their planes. */
+ * plane), the planes' normals and axes carried along the inputs
+ * (section_align), so that a loft's sections turn only as much as their
+ * planes and its cells are positive. */
 static int place_in_space(triangulation *t, cli_error *error)
 {
     size_t k = t->args->input_count;
@@ -321,6 +322,13 @@ static int place_in_space(triangulation *t, cli_error *error)
         polygon_input *p = &t->polygons[g];
         p->frame = frames[g];
         section_to_plane(&p->frame, p->xyz, p->count, p->xy);
+        for (size_t i = 0; i < 2 * p->count; i++)
+            if (!isfinite(p->xy[i])) {
+                free(frames);
+                cli_error_set(error, "%s: its plane, carried from the inputs before, does not fit in doubles "
+                              "(coordinates too large for it)", p->path);
+                return CLI_EXIT_USAGE;
+            }
     }
     free(frames);
     return CLI_EXIT_OK;

@@ -587,7 +587,7 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
   std::vector<Polygon *> spatial;
   for (Polygon &p : *polygons)
     if (p.spatial) frames.push_back(p.frame), spatial.push_back(&p);
-  compatmesh::align_frames(frames);
+  compatmesh::align_frames(frames, loft);
   for (std::size_t g = 0; g < spatial.size(); g++) {
     Polygon &p = *spatial[g];
     p.frame = frames[g];

@@ -77,7 +77,7 @@ SectionMorph::SectionMorph(const std::vector<double> &xyz0, const std::vector<do
       throw FilterError("layer '" + *names[g] + "': " + e.what());
     }
   }
-  compatmesh::align_frames(frames);
+  compatmesh::align_frames(frames, true);
   frame0_ = frames[0], frame1_ = frames[1];
   for (int g = 0; g < 2; g++) xy[g] = compatmesh::to_plane(frames[g], ordered[g].data(), nv);
   const double *geometries[2] = {xy[0].data(), xy[1].data()};

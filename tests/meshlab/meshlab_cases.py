@@ -723,6 +723,48 @@ def case_lever_sections(w):
           "the outline's facing out and the 5 holes' facing into the holes" % len(lt))
 
 
+def case_lever_cli(w):
+    # The lever's two sections as MeshLab saves them (cut_lever: one across
+    # the plate at z = 2, one in the tilted plane through z = 4) given to
+    # the command line as they are: triangulate writes each mesh in its
+    # section's plane, its own vertices as MeshLab wrote them; sweep lofts
+    # between the planes, and Gmsh reads every tetrahedron positive, the
+    # nodes of the first plane exactly on z = 2.
+    import gmsh
+    sections = cut_lever(w)
+    tool = os.path.join(os.path.dirname(WRAPPER), "compatmesh")
+    out = subprocess.run([tool, "triangulate", "a.obj", "b.obj", "-o", "pair", "--no-preview"], cwd=w,
+                         capture_output=True, text=True, timeout=600)
+    assert out.returncode == 0, out.stderr
+    normal = np.array([0.02, 0, 1]) / np.linalg.norm([0.02, 0, 1])
+    for name, loops in zip(("a", "b"), sections):
+        points = meshio.read(os.path.join(w, "pair", name + ".off")).points
+        given = {tuple(p) for loop in loops for p in loop}
+        assert given <= {tuple(p) for p in points}, "%s: the section's own vertices are not all in its mesh" % name
+        plane = normal if name == "b" else np.array([0, 0, 1.0])
+        off = np.abs((points - points[0]) @ plane).max()
+        assert off < 1e-4, "%s: a vertex %g off the section's plane" % (name, off)
+    out = subprocess.run([tool, "sweep", "a.obj", "b.obj", "-o", "lever.msh", "--tets", "--sections", "auto"],
+                         cwd=w, capture_output=True, text=True, timeout=600)
+    assert out.returncode == 0, out.stderr
+    gmsh.initialize()
+    try:
+        gmsh.option.setNumber("General.Terminal", 0)
+        gmsh.open(os.path.join(w, "lever.msh"))
+        types, tags, _ = gmsh.model.mesh.getElements(3)
+        _, dets, _ = gmsh.model.mesh.getJacobians(4, [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0.25, 0.25, 0.25])
+        _, coords, _ = gmsh.model.mesh.getNodes()
+    finally:
+        gmsh.finalize()
+    dets, xyz = np.array(dets), np.array(coords).reshape(-1, 3)
+    assert list(types) == [4] and len(dets) == 5 * len(tags[0]) and np.all(dets > 0), \
+        "%d of %d Jacobians not positive" % (int(np.sum(dets <= 0)), len(dets))
+    at_bottom = int(np.sum(xyz[:, 2] == 2.0))
+    assert at_bottom >= sum(len(loop) for loop in sections[0]), at_bottom
+    print("lever through the command line: meshes in their planes; loft of %d tetrahedra, all %d Jacobians "
+          "positive (smallest %.3g), %d nodes on z = 2" % (len(tags[0]), len(dets), float(dets.min()), at_bottom))
+
+
 def case_lever_volume(w):
     # The lever's two sections (cut_lever: one horizontal, one tilted)
     # paired by the unchanged pair.mlx and saved, as a user exports the

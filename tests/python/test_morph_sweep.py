@@ -164,15 +164,21 @@ def test_loft_between_turned_planes(tmp_path):
 
 
 def test_loft_that_folds_is_refused(twisted):
-    """Planes crossing inside the polygons, or a section listed the other
-    way round, fold the straight blend: a ValueError saying so."""
+    """Planes crossing inside the polygons fold the straight blend: a
+    ValueError saying so. A section listed the other way round runs
+    clockwise in its plane (its normal on the side of the one before): the
+    index correspondence refuses it as a mirror image, auto reverses it and
+    the loft is valid."""
     a = ring(12, inner=0.5)
     crossing = [in_plane(a, (0, 0, 0), 0), in_plane(a, (0, 0, 0.3), 80)]
     with pytest.raises(ValueError, match="is not positive in space"):
         compatmesh.sweep(crossing, tets=True)
     reversed_one = [in_plane(a, (0, 0, 0), 10), in_plane(a[::-1], (0, 0, 2), 20)]
-    with pytest.raises(ValueError, match="a polygon given the other way round"):
+    with pytest.raises(compatmesh.InputError, match="would mirror the shape"):
         compatmesh.sweep(reversed_one)
+    s = compatmesh.sweep(reversed_one, correspondence="auto", tets=True)
+    corners = s.nodes[s.tets]
+    assert np.linalg.det(corners[:, 1:] - corners[:, :1]).min() > 0
 
 
 @pytest.mark.parametrize("call, error, message", [

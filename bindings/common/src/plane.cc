@@ -149,14 +149,21 @@ PlaneFrame fit_plane(const double *xyz, std::size_t n, double relative_tolerance
   return frame;
 }
 
-void align_frames(std::vector<PlaneFrame> &frames)
+void align_frames(std::vector<PlaneFrame> &frames, bool loft)
 {
+  if (loft && frames.size() >= 2) {  // the first normal towards the second plane
+    PlaneFrame &first = frames[0];
+    Vec3 n(first.normal.data()), v(first.v.data()), d = Vec3(frames[1].origin.data()) - Vec3(first.origin.data());
+    if (d.dot(n) < -1e-9 * d.norm())
+      first.normal = array_of(-n), first.v = array_of(-v), first.fixed_axis = -1;
+  }
   for (std::size_t g = 1; g < frames.size(); g++) {
     const PlaneFrame &before = frames[g - 1];
     PlaneFrame &frame = frames[g];
-    Vec3 n0(before.normal.data()), n1(frame.normal.data()), axis = n0.cross(n1);
+    Vec3 n0(before.normal.data()), n1(frame.normal.data());
+    if (n0.dot(n1) < 0) n1 = -n1;  // to the side of the one before
+    Vec3 axis = n0.cross(n1);
     double c = n0.dot(n1), s = axis.norm();
-    if (!(c > 0)) continue;
     Vec3 u(before.u.data());
     if (s > 0) {  // Rodrigues: u turned about the axis by the angle between the normals
       Vec3 k = axis / s;
@@ -164,9 +171,14 @@ void align_frames(std::vector<PlaneFrame> &frames)
     }
     u = (u - n1 * n1.dot(u)).normalized();
     Vec3 v = n1.cross(u);
-    std::array<double, 3> nu = array_of(u), nv = array_of(v);
-    if (nu == frame.u && nv == frame.v) continue;
-    frame.u = nu, frame.v = nv, frame.fixed_axis = -1;
+    // The origin: the one before carried along its normal into this plane,
+    // so that a point on the previous plane's normal keeps its coordinates
+    // (an extrusion's sections need no translation in the plane).
+    Vec3 o0(before.origin.data()), o1(frame.origin.data());
+    Vec3 o = c > 1e-3 ? Vec3(o0 + n0 * ((o1 - o0).dot(n1) / c)) : o1;
+    std::array<double, 3> nu = array_of(u), nv = array_of(v), no = array_of(o);
+    if (nu == frame.u && nv == frame.v && no == frame.origin) continue;
+    frame.u = nu, frame.v = nv, frame.origin = no, frame.normal = array_of(n1), frame.fixed_axis = -1;
   }
 }
 

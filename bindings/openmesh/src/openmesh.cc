@@ -61,7 +61,7 @@ void align_boundaries(std::vector<Boundary> &polygons)
 {
   std::vector<PlaneFrame> frames;
   for (const Boundary &b : polygons) frames.push_back(b.frame);
-  align_frames(frames);
+  align_frames(frames, false);
   for (std::size_t g = 0; g < polygons.size(); g++) {
     Boundary &b = polygons[g];
     b.frame = frames[g];

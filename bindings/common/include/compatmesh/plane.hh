@@ -73,15 +73,20 @@ class PlaneError : public std::invalid_argument {
 PlaneFrame fit_plane(const double *xyz, std::size_t n, double relative_tolerance,
                      NormalSign sign, std::size_t winding_points = 0);
 
-// Frames for a loft through planes in this order: each frame after the
-// first turned within its plane so that its u and v are the previous
-// frame's carried by the least rotation taking the previous normal onto
-// its own (about their cross product), so that a section's plane
-// coordinates turn only as much as the planes do. A frame whose axes do
-// not change keeps its fixed_axis; the others get -1. Normals that point
-// apart by more than a right angle are left as they are (a loft between
-// them folds, which its exact check reports).
-void align_frames(std::vector<PlaneFrame> &frames);
+// Frames of sections of one part, in this order: with loft, the first
+// frame's normal turned towards the second plane (the direction of a loft
+// through them, whose cells are then positive; without, it keeps the side
+// it has, as a face's winding gave it); each frame after the first gets its
+// normal on the side of the one before (turned over where
+// it points away: a polygon listed the other way round then runs
+// clockwise in its plane, for the correspondence to settle), and its u
+// and v are the previous frame's carried by the least rotation taking the
+// previous normal onto its own (about their cross product), and its
+// origin the previous one carried along the previous normal into its
+// plane, so that a section's plane coordinates turn and move only as much
+// as the planes do. A frame that does not change keeps its fixed_axis; the
+// others get -1.
+void align_frames(std::vector<PlaneFrame> &frames, bool loft);
 
 // The plane coordinates of n points: 2n doubles.
 std::vector<double> to_plane(const PlaneFrame &frame, const double *xyz, std::size_t n);
