@@ -122,4 +122,15 @@ inline Points tilted(const Points &points)
   return out;
 }
 
+// The adapter's tool run on the meshes with the auto correspondence.
+inline void run_auto(compatmesh::CompatibleTriangulationT<PolyMesh> &tool, const std::vector<PolyMesh> &meshes)
+{
+  for (const PolyMesh &m : meshes) tool.add_mesh(m);
+  cm_options options;
+  cm_options_init(&options);
+  options.correspondence = CM_CORRESPOND_AUTO;
+  tool.set_options(options);
+  tool.run();
+}
+
 #endif

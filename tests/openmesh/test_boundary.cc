@@ -297,12 +297,7 @@ static void test_pipe_sections()
   const Points a = pipe_section(0, 1.0, 0.03, 0), b = pipe_section(3, 1.05, 0, 0.03);
   std::vector<PolyMesh> inputs{polyline_mesh(a), polyline_mesh(b)};
   compatmesh::CompatibleTriangulationT<PolyMesh> tool;
-  for (const PolyMesh &m : inputs) tool.add_mesh(m);
-  cm_options options;
-  cm_options_init(&options);
-  options.correspondence = CM_CORRESPOND_AUTO;
-  tool.set_options(options);
-  tool.run();
+  run_auto(tool, inputs);
   const TriMesh &first = tool.meshes()[0], &second = tool.meshes()[1];
   int at = -1;
   for (auto vh : first.vertices())

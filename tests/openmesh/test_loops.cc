@@ -127,12 +127,7 @@ static void test_pairs()
   std::vector<PolyMesh> edges{loops_mesh(square(8, 2.0), square(4, 0.6, 0.4, 0.2), false),
                               loops_mesh(circle(24, 2.0), circle(12, 0.7, -0.3, 0.1), true)};
   compatmesh::CompatibleTriangulationT<PolyMesh> tool;
-  for (const PolyMesh &m : edges) tool.add_mesh(m);
-  cm_options options;
-  cm_options_init(&options);
-  options.correspondence = CM_CORRESPOND_AUTO;
-  tool.set_options(options);
-  tool.run();
+  run_auto(tool, edges);
   CHECK(tool.stats().holes == 1 && tool.stats().n >= 36);
   CHECK(tool.meshes()[0].n_faces() == tool.meshes()[1].n_faces());
   check_annulus_result(tool.meshes()[0], "edges, square");
