@@ -113,7 +113,9 @@ static void print_morph_help(FILE *out)
           "Outputs, written to a temporary directory beside DIR and moved into DIR\n"
           "only when everything succeeded:\n"
           "  DIR/frame_000.FMT ...  one section per frame, all with the same faces\n"
-          "                         (those of the triangulation), z = 0\n"
+          "                         (those of the triangulation), z = 0; for\n"
+          "                         sections in planes other than z = constant,\n"
+          "                         in space between their planes\n"
           "  DIR/frames.svg         the frames side by side (--picture-frames of\n"
           "                         them)\n"
           "  DIR/frames.png         the same picture as PNG (cairo draws both)\n"
@@ -182,11 +184,6 @@ static void morph_run_free(morph_run *run)
 
 static int compute_frames(morph_run *run, cli_error *error)
 {
-    if (run->tri.polygons[0].spatial) { /* every input then is */
-        cli_error_set(error, "morph: the inputs lie in planes other than z = constant; the frames are drawn in "
-                      "one plane: give sections in planes z = constant, or sweep them (a loft between their planes)");
-        return CLI_EXIT_USAGE;
-    }
     size_t frames = run->args->frames;
     size_t vertices = cm_result_num_vertices(run->tri.result);
     cm_morph_options options;
@@ -224,26 +221,39 @@ static int write_frames(morph_run *run, cli_error *error)
         cli_error_set(error, "out of memory");
         return CLI_EXIT_INTERNAL;
     }
+    /* Inputs in space (sections in other planes): each frame between their planes. */
+    double *xyz = run->tri.polygons[0].spatial ? malloc((3 * vertices + 1) * sizeof *xyz) : NULL;
+    if (run->tri.polygons[0].spatial && !xyz) {
+        cli_error_set(error, "out of memory");
+        return CLI_EXIT_INTERNAL;
+    }
     for (size_t f = 0; f < args->frames; f++) {
         char name[64];
         snprintf(name, sizeof name, "frame_%03zu.%s", f, mesh_format_name(args->format));
         run->names[f] = malloc(strlen(name) + 1);
         const char *path = staged_output_path(&run->output, name);
         if (!run->names[f] || !path) {
+            free(xyz);
             cli_error_set(error, "out of memory");
             return CLI_EXIT_INTERNAL;
         }
         strcpy(run->names[f], name);
-        int code = write_triangle_mesh(path, run->xy + 2 * f * vertices, NULL, vertices,
-                                       cm_result_triangles(result),
+        const double *xy = run->xy + 2 * f * vertices;
+        if (xyz) section_in_space(result, run->tri.polygons, args->tri.input_count, run->t[f], xy, xyz);
+        int code = write_triangle_mesh(path, xyz ? NULL : xy, xyz, vertices, cm_result_triangles(result),
                                        cm_result_num_triangles(result), args->format, error);
-        if (code != CLI_EXIT_OK) return code;
+        if (code != CLI_EXIT_OK) {
+            free(xyz);
+            return code;
+        }
         run->final_paths[f] = path_join(run->output.target, name);
         if (!run->final_paths[f]) {
+            free(xyz);
             cli_error_set(error, "out of memory");
             return CLI_EXIT_INTERNAL;
         }
     }
+    free(xyz);
     return CLI_EXIT_OK;
 }
 

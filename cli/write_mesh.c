@@ -114,8 +114,7 @@ static size_t next_in_loop(const polygon_input *input, size_t e)
     return e + 1 < input->count ? e + 1 : 0;
 }
 
-/* Geometry g's vertices where its input lies (write_mesh). */
-static void place_vertices(const cm_result *result, size_t g, const polygon_input *input, double *xyz)
+void mesh_in_space(const cm_result *result, size_t g, const polygon_input *input, double *xyz)
 {
     const double *xy = cm_result_vertices(result, g);
     size_t nv = cm_result_num_vertices(result), n = cm_result_stats(result)->n;
@@ -133,6 +132,27 @@ static void place_vertices(const cm_result *result, size_t g, const polygon_inpu
     }
 }
 
+void section_in_space(const cm_result *result, const polygon_input *inputs, size_t k, double t, const double *xy,
+                      double *xyz)
+{
+    size_t nv = cm_result_num_vertices(result);
+    double at = t * (double)(k - 1);
+    size_t g = at >= (double)(k - 1) ? k - 2 : (size_t)at;
+    double s = at - (double)g;
+    /* at an input's own time the section is that input's geometry, bit for bit (cm_morph_section) */
+    for (size_t h = 0; h < k; h++)
+        if (memcmp(xy, cm_result_vertices(result, h), 2 * nv * sizeof *xy) == 0) {
+            mesh_in_space(result, h, &inputs[h], xyz);
+            return;
+        }
+    for (size_t v = 0; v < nv; v++) {
+        double p[3], q[3];
+        section_to_space(&inputs[g].frame, xy[2 * v], xy[2 * v + 1], p);
+        section_to_space(&inputs[g + 1].frame, xy[2 * v], xy[2 * v + 1], q);
+        for (int c = 0; c < 3; c++) xyz[3 * v + c] = (1 - s) * p[c] + s * q[c];
+    }
+}
+
 int write_mesh(const char *path, const cm_result *result, size_t g, const polygon_input *input,
                mesh_format format, cli_error *error)
 {
@@ -143,7 +163,7 @@ int write_mesh(const char *path, const cm_result *result, size_t g, const polygo
             cli_error_set(error, "cannot write %s: out of memory", path);
             return CLI_EXIT_INTERNAL;
         }
-        place_vertices(result, g, input, xyz);
+        mesh_in_space(result, g, input, xyz);
     }
     int code = write_triangle_mesh(path, cm_result_vertices(result, g), xyz, nv, cm_result_triangles(result),
                                    cm_result_num_triangles(result), format, error);

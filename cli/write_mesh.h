@@ -31,6 +31,19 @@ const char *mesh_format_name(mesh_format format);
 int write_mesh(const char *path, const cm_result *result, size_t g, const polygon_input *input,
                mesh_format format, cli_error *error);
 
+/* Geometry g's vertices where input (with has_z) lies, as write_mesh
+ * writes them: xyz receives 3 per vertex of result. */
+void mesh_in_space(const cm_result *result, size_t g, const polygon_input *input, double *xyz);
+
+/* A morph section xy (2 per vertex of result) at time t between inputs in
+ * space (triangulation.c places every input so once one is a section in
+ * another plane): at an input's own time that input's mesh_in_space; in
+ * between, each vertex blended between its points in the planes of the
+ * two inputs around t, as the sweep's loft places its nodes. xyz receives
+ * 3 per vertex. */
+void section_in_space(const cm_result *result, const polygon_input *inputs, size_t k, double t, const double *xy,
+                      double *xyz);
+
 /* The same for any geometry of the triangles: xy holds 2 * vertices
  * doubles (z = 0), or xyz 3 * vertices (xy then NULL), triangles 3 * count
  * indices. */
