@@ -22,7 +22,12 @@ pair, holes included), Steiner vertices, CPU seconds (user + system).
 
 usage: /usr/bin/python3 bench/section_soak.py COMPATMESH [--heights K]
            [--max-vertices N] [--jobs J] [--timeout S] [--only REGEX]
-           [--json FILE] [--markdown FILE] [--work DIR]
+           [--json FILE] [--markdown FILE] [--work DIR] [--in-space]
+
+--in-space writes each section as x y z points in its cut plane (x = h,
+y = h or z = h), as MeshLab saves a section, instead of the plane's two
+coordinates: the command line then fits each section's plane, places the
+pair with aligned frames and writes the meshes in space.
 
 Exit status 0 when no run failed (refusals with a clear message are not
 failures), 1 otherwise.
@@ -95,18 +100,23 @@ def smallest_corner(loops):
     return min(outer + [360.0 - a for hole in loops[1:] for a in corner_angles(hole)])
 
 
-def write_region(path, loops):
-    """The .xy form: loops separated by '>' lines, outer first."""
+def write_region(path, loops, axis=None, height=None):
+    """The .xy form: loops separated by '>' lines, outer first; with axis,
+    each point in space, in the cut plane x[axis] = height (`--in-space`:
+    the command line then reads a section in its own plane)."""
     with open(path, "w") as f:
         for i, l in enumerate(loops):
             if i:
                 f.write(">\n")
-            for x, y in l:
-                f.write("%.17g %.17g\n" % (x, y))
+            for p in l:
+                if axis is not None:
+                    p = list(p)
+                    p.insert(axis, height)
+                f.write(" ".join("%.17g" % c for c in p) + "\n")
 
 
 def sections(path, heights, workdir):
-    """(axis, j, loops or None, why) for every cut of one model."""
+    """(axis, j, loops or None, why, height) for every cut of one model."""
     points, triangles = stl_sections.read_stl(path, workdir)
     lo, hi = points.min(axis=0), points.max(axis=0)
     out = []
@@ -119,10 +129,10 @@ def sections(path, heights, workdir):
                 h += 1e-7 * span
             loops = stl_sections.section_loops(points, triangles, axis, h, closed_only=True)
             if loops is None:
-                out.append((axis, j, None, "open"))
+                out.append((axis, j, None, "open", h))
                 continue
             r = region(loops)
-            out.append((axis, j, r, None if r else "not simple or nested"))
+            out.append((axis, j, r, None if r else "not simple or nested", h))
     return out
 
 
@@ -167,6 +177,7 @@ def main():
     ap.add_argument("--json")
     ap.add_argument("--markdown")
     ap.add_argument("--work")
+    ap.add_argument("--in-space", action="store_true")
     args = ap.parse_args()
     workdir = args.work or tempfile.mkdtemp(prefix="section_soak_")
     os.makedirs(workdir, exist_ok=True)
@@ -182,7 +193,7 @@ def main():
             set_aside[why] += 1
         for axis in range(3):
             row = [c for c in cuts if c[0] == axis]
-            for (_, j, la, _), (_, _, lb, _) in zip(row, row[1:]):
+            for (_, j, la, _, ha), (_, _, lb, _, hb) in zip(row, row[1:]):
                 if la is None or lb is None:
                     continue
                 base = "%s_%s%d-%d" % (model, "xyz"[axis], j, j + 1)
@@ -196,8 +207,8 @@ def main():
                         continue
                     name = "%s_%s" % (base, kind)
                     fa, fb = (os.path.join(workdir, "%s_%s.xy" % (name, s)) for s in "ab")
-                    write_region(fa, ra)
-                    write_region(fb, rb)
+                    write_region(fa, ra, axis if args.in_space else None, ha)
+                    write_region(fb, rb, axis if args.in_space else None, hb)
                     c = min(smallest_corner(ra), smallest_corner(rb))
                     meta[name] = {"kind": kind, "model": model, "holes": len(ra) - 1,
                                   "n": [sum(len(l) for l in ra), sum(len(l) for l in rb)], "c": c,

@@ -35,10 +35,15 @@ def test_smallest_corner_sees_the_material_side():
     assert ss.smallest_corner([octagon, square(-1, -1, 2)[::-1]]) == pytest.approx(135)
 
 
-def test_lever_sections(tmp_path):
+@pytest.mark.parametrize("space", [[], ["--in-space"]])
+def test_lever_sections(tmp_path, space):
+    """The lever's sections through the command line, in the cut plane's two
+    coordinates and (--in-space) as points in space in their cut planes, as
+    MeshLab saves them: every run valid."""
     out = tmp_path / "soak.json"
     r = subprocess.run([sys.executable, os.path.join(BENCH, "section_soak.py"), CLI, "--heights", "3",
-                        "--only", "^lever$", "--json", str(out)], capture_output=True, text=True, timeout=600)
+                        "--only", "^lever$", "--json", str(out)] + space, capture_output=True, text=True,
+                       timeout=600)
     assert r.returncode == 0, r.stderr
     runs = json.loads(out.read_text())["runs"]
     assert len(runs) >= 4 and {x["kind"] for x in runs} <= {"outer", "holes"}
