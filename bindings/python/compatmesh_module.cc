@@ -720,6 +720,41 @@ std::vector<double> morph_times(py::object t, py::object frames)
   return times;
 }
 
+bool loft_sections(py::handle polygons_in);
+
+// The sections of polygons in space, F x nv x 3: at a polygon's own time
+// (cm_morph_section gives its geometry bit for bit) its vertices as
+// vertices_of gives them; in between each vertex blended between its
+// points in the planes of the two polygons around t, as the sweep's loft
+// places its nodes.
+py::array sections_in_space(const cm_result *result, const std::vector<Polygon> &polygons,
+                            const std::vector<double> &times, const py::array_t<double> &plane)
+{
+  const std::size_t nv = cm_result_num_vertices(result), k = polygons.size();
+  py::array_t<double> out({py::ssize_t(times.size()), py::ssize_t(nv), py::ssize_t(3)});
+  for (std::size_t f = 0; f < times.size(); f++) {
+    const double *xy = plane.data() + 2 * nv * f;
+    double *p = out.mutable_data() + 3 * nv * f;
+    std::size_t own = k;
+    for (std::size_t g = 0; g < k && own == k; g++)
+      if (std::memcmp(xy, cm_result_vertices(result, g), 2 * nv * sizeof *xy) == 0) own = g;
+    if (own < k) {
+      py::array_t<double> v = vertices_of(result, own, polygons[own]);
+      std::memcpy(p, v.data(), 3 * nv * sizeof *p);
+      continue;
+    }
+    const double at = times[f] * double(k - 1);
+    const std::size_t g = at >= double(k - 1) ? k - 2 : std::size_t(at);
+    const double s = at - double(g);
+    for (std::size_t v = 0; v < nv; v++) {
+      std::array<double, 3> a = polygons[g].frame.to_space(xy[2 * v], xy[2 * v + 1]);
+      std::array<double, 3> b = polygons[g + 1].frame.to_space(xy[2 * v], xy[2 * v + 1]);
+      for (int c = 0; c < 3; c++) p[3 * v + c] = (1 - s) * a[c] + s * b[c];
+    }
+  }
+  return out;
+}
+
 Morph morph(py::object polygons_in, py::object t, py::object frames, py::object morph_method,
                py::kwargs kwargs)
 {
@@ -727,8 +762,9 @@ Morph morph(py::object polygons_in, py::object t, py::object frames, py::object 
   cm_morph_method method = enum_from(morph_method, "morph_method", morph_method_names);
   std::vector<Polygon> polygons;
   Callbacks callbacks;
-  ResultPtr result = run_triangulation(polygons_in, kwargs, "morph", &polygons, &callbacks);
-  require_planar(polygons, "morph");
+  const bool loft = loft_sections(polygons_in);  // sections in space: frames between their planes
+  ResultPtr result = run_triangulation(polygons_in, kwargs, "morph", &polygons, &callbacks, loft);
+  if (!loft) require_planar(polygons, "morph");
   ProgressRelay relay(python_progress(callbacks.progress));
   MorphPtr m = make_morph(result.get(), method, relay);
 
@@ -752,11 +788,11 @@ Morph morph(py::object polygons_in, py::object t, py::object frames, py::object 
   py::dict &fields = out.fields;
   fields["faces"] = copy_array(cm_result_triangles(result.get()), cm_result_num_triangles(result.get()), 3);
   fields["t"] = copy_array(times.data(), frame_count, 1);
-  fields["sections"] = sections;
+  fields["sections"] = loft ? sections_in_space(result.get(), polygons, times, sections) : py::array(sections);
   fields["inverted"] = inverted;
   fields["min_angle_deg"] = min_angle;
   fields["n"] = polygons.empty() ? 0 : polygons[0].size();
-  out.points = sections;
+  out.points = fields["sections"];
   out.cells["triangle"] = fields["faces"];
   out.stats = stats_of(result.get());
   py::list quality;
@@ -1776,6 +1812,11 @@ combination of its neighbours (Floater-Gotsman), so every section of the
 "convex" morph is a valid triangulation; "linear" moves the vertices on
 straight lines, for comparison (its inverted triangles are counted). With
 k > 2 polygons the morph passes through polygon g at t = g / (k - 1).
+Polygons given n x 3 in planes that are not all z = constant (sections in
+space) are placed as sweep() places a loft's, and each section is in
+space: at a polygon's time its vertices as triangulate() gives them, in
+between each vertex blended between its points in the planes of the two
+polygons around t (sections F x nv x 3).
 
 t: a time in [0, 1] or a sequence of them; or frames: a count >= 2 of evenly
     spaced times from 0 to 1 (give exactly one).

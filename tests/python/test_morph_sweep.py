@@ -163,6 +163,20 @@ def test_loft_between_turned_planes(tmp_path):
     assert 0 < s.volume and s.quality["min_dihedral_deg"] > 0
 
 
+def test_morph_of_sections_in_space():
+    """Sections in turned planes morph in space: the first and last sections
+    are the polygons' meshes as triangulate() gives them (the inputs' own
+    vertices), the middle one lies between the planes."""
+    a, b = ring(12, inner=0.5), 1.3 * ring(12, inner=0.7, jitter=False)
+    bend = [(0, 4 - 4 * np.cos(np.radians(t)), 4 * np.sin(np.radians(t))) for t in (0, 30)]
+    sections = [in_plane(a, bend[0], 0), in_plane(b, bend[1], -30)]
+    m = compatmesh.morph(sections, frames=3)
+    assert m.sections.shape[0] == 3 and m.sections.shape[2] == 3
+    assert np.array_equal(m.sections[0][:12], sections[0]) and np.array_equal(m.sections[2][:12], sections[1])
+    middle = m.sections[1]
+    assert np.all(middle[:, 2] > 0) and np.all((middle - bend[1]) @ normal_of(-30) < 0)
+
+
 def test_loft_that_folds_is_refused(twisted):
     """Planes crossing inside the polygons fold the straight blend: a
     ValueError saying so. A section listed the other way round runs
