@@ -221,12 +221,15 @@ static int write_frames(morph_run *run, cli_error *error)
         cli_error_set(error, "out of memory");
         return CLI_EXIT_INTERNAL;
     }
-    /* Inputs in space (sections in other planes): each frame between their planes. */
-    double *xyz = run->tri.polygons[0].spatial ? malloc((3 * vertices + 1) * sizeof *xyz) : NULL;
+    /* Inputs in space (sections in other planes): each frame between their
+     * planes; xyz holds a frame, then the planes (polygon_frames). */
+    size_t k = args->tri.input_count;
+    double *xyz = run->tri.polygons[0].spatial ? malloc((3 * vertices + 9 * k) * sizeof *xyz) : NULL;
     if (run->tri.polygons[0].spatial && !xyz) {
         cli_error_set(error, "out of memory");
         return CLI_EXIT_INTERNAL;
     }
+    if (xyz) polygon_frames(run->tri.polygons, k, xyz + 3 * vertices);
     for (size_t f = 0; f < args->frames; f++) {
         char name[64];
         snprintf(name, sizeof name, "frame_%03zu.%s", f, mesh_format_name(args->format));
@@ -239,7 +242,7 @@ static int write_frames(morph_run *run, cli_error *error)
         }
         strcpy(run->names[f], name);
         const double *xy = run->xy + 2 * f * vertices;
-        if (xyz) section_in_space(result, run->tri.polygons, args->tri.input_count, run->t[f], xy, xyz);
+        if (xyz) section_in_space(result, run->tri.polygons, xyz + 3 * vertices, k, run->t[f], xy, xyz);
         int code = write_triangle_mesh(path, xyz ? NULL : xy, xyz, vertices, cm_result_triangles(result),
                                        cm_result_num_triangles(result), args->format, error);
         if (code != CLI_EXIT_OK) {

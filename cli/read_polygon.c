@@ -570,6 +570,16 @@ int read_polygon(const char *path, size_t max_bytes, polygon_input *polygon, cli
     return code;
 }
 
+void polygon_frames(const polygon_input *polygons, size_t k, double *frames)
+{
+    for (size_t g = 0; g < k; g++) {
+        const section_frame *f = &polygons[g].frame;
+        memcpy(frames + 9 * g, f->origin, sizeof f->origin);
+        memcpy(frames + 9 * g + 3, f->u, sizeof f->u);
+        memcpy(frames + 9 * g + 6, f->v, sizeof f->v);
+    }
+}
+
 void polygon_input_free(polygon_input *polygon)
 {
     free(polygon->xy);

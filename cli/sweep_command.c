@@ -358,12 +358,7 @@ static int build_sweep(const sweep_args *args, const triangulation *tri, cm_morp
                           "give no --height or --heights");
             return CLI_EXIT_USAGE;
         }
-        for (size_t g = 0; g < k; g++) {
-            const section_frame *f = &tri->polygons[g].frame;
-            memcpy(own + 9 * g, f->origin, sizeof f->origin);
-            memcpy(own + 9 * g + 3, f->u, sizeof f->u);
-            memcpy(own + 9 * g + 6, f->v, sizeof f->v);
-        }
+        polygon_frames(tri->polygons, k, own);
         options.frames = own;
         *height_rule = "a loft between the inputs' planes: the distances between their centres";
     } else if (args->heights) {

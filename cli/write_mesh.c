@@ -132,25 +132,17 @@ void mesh_in_space(const cm_result *result, size_t g, const polygon_input *input
     }
 }
 
-void section_in_space(const cm_result *result, const polygon_input *inputs, size_t k, double t, const double *xy,
-                      double *xyz)
+void section_in_space(const cm_result *result, const polygon_input *inputs, const double *frames, size_t k,
+                      double t, const double *xy, double *xyz)
 {
     size_t nv = cm_result_num_vertices(result);
-    double at = t * (double)(k - 1);
-    size_t g = at >= (double)(k - 1) ? k - 2 : (size_t)at;
-    double s = at - (double)g;
     /* at an input's own time the section is that input's geometry, bit for bit (cm_morph_section) */
     for (size_t h = 0; h < k; h++)
         if (memcmp(xy, cm_result_vertices(result, h), 2 * nv * sizeof *xy) == 0) {
             mesh_in_space(result, h, &inputs[h], xyz);
             return;
         }
-    for (size_t v = 0; v < nv; v++) {
-        double p[3], q[3];
-        section_to_space(&inputs[g].frame, xy[2 * v], xy[2 * v + 1], p);
-        section_to_space(&inputs[g + 1].frame, xy[2 * v], xy[2 * v + 1], q);
-        for (int c = 0; c < 3; c++) xyz[3 * v + c] = (1 - s) * p[c] + s * q[c];
-    }
+    cm_loft_section(frames, k, t, xy, nv, xyz);
 }
 
 int write_mesh(const char *path, const cm_result *result, size_t g, const polygon_input *input,

@@ -37,12 +37,11 @@ void mesh_in_space(const cm_result *result, size_t g, const polygon_input *input
 
 /* A morph section xy (2 per vertex of result) at time t between inputs in
  * space (triangulation.c places every input so once one is a section in
- * another plane): at an input's own time that input's mesh_in_space; in
- * between, each vertex blended between its points in the planes of the
- * two inputs around t, as the sweep's loft places its nodes. xyz receives
- * 3 per vertex. */
-void section_in_space(const cm_result *result, const polygon_input *inputs, size_t k, double t, const double *xy,
-                      double *xyz);
+ * another plane; frames: their planes, polygon_frames): at an input's own
+ * time that input's mesh_in_space; in between, cm_loft_section. xyz
+ * receives 3 per vertex. */
+void section_in_space(const cm_result *result, const polygon_input *inputs, const double *frames, size_t k,
+                      double t, const double *xy, double *xyz);
 
 /* The same for any geometry of the triangles: xy holds 2 * vertices
  * doubles (z = 0), or xyz 3 * vertices (xy then NULL), triangles 3 * count

@@ -721,16 +721,17 @@ std::vector<double> morph_times(py::object t, py::object frames)
 }
 
 bool loft_sections(py::handle polygons_in);
+std::vector<double> loft_frames(const std::vector<Polygon> &polygons);
 
 // The sections of polygons in space, F x nv x 3: at a polygon's own time
 // (cm_morph_section gives its geometry bit for bit) its vertices as
-// vertices_of gives them; in between each vertex blended between its
-// points in the planes of the two polygons around t, as the sweep's loft
+// vertices_of gives them; in between cm_loft_section, as the sweep's loft
 // places its nodes.
 py::array sections_in_space(const cm_result *result, const std::vector<Polygon> &polygons,
                             const std::vector<double> &times, const py::array_t<double> &plane)
 {
   const std::size_t nv = cm_result_num_vertices(result), k = polygons.size();
+  const std::vector<double> frames = loft_frames(polygons);
   py::array_t<double> out({py::ssize_t(times.size()), py::ssize_t(nv), py::ssize_t(3)});
   for (std::size_t f = 0; f < times.size(); f++) {
     const double *xy = plane.data() + 2 * nv * f;
@@ -743,14 +744,7 @@ py::array sections_in_space(const cm_result *result, const std::vector<Polygon> 
       std::memcpy(p, v.data(), 3 * nv * sizeof *p);
       continue;
     }
-    const double at = times[f] * double(k - 1);
-    const std::size_t g = at >= double(k - 1) ? k - 2 : std::size_t(at);
-    const double s = at - double(g);
-    for (std::size_t v = 0; v < nv; v++) {
-      std::array<double, 3> a = polygons[g].frame.to_space(xy[2 * v], xy[2 * v + 1]);
-      std::array<double, 3> b = polygons[g + 1].frame.to_space(xy[2 * v], xy[2 * v + 1]);
-      for (int c = 0; c < 3; c++) p[3 * v + c] = (1 - s) * a[c] + s * b[c];
-    }
+    cm_loft_section(frames.data(), k, times[f], xy, nv, p);
   }
   return out;
 }
@@ -890,9 +884,7 @@ bool loft_sections(py::handle polygons_in)
 std::vector<double> loft_frames(const std::vector<Polygon> &polygons)
 {
   std::vector<double> frames;
-  for (const Polygon &p : polygons)
-    for (const std::array<double, 3> *a : {&p.frame.origin, &p.frame.u, &p.frame.v})
-      frames.insert(frames.end(), a->begin(), a->end());
+  for (const Polygon &p : polygons) compatmesh::append_loft_frame(p.frame, frames);
   return frames;
 }
 

@@ -78,7 +78,7 @@ SectionMorph::SectionMorph(const std::vector<double> &xyz0, const std::vector<do
     }
   }
   compatmesh::align_frames(frames, true);
-  frame0_ = frames[0], frame1_ = frames[1];
+  for (const compatmesh::PlaneFrame &frame : frames) compatmesh::append_loft_frame(frame, frames_);
   for (int g = 0; g < 2; g++) xy[g] = compatmesh::to_plane(frames[g], ordered[g].data(), nv);
   const double *geometries[2] = {xy[0].data(), xy[1].data()};
   cm_result *result = nullptr;
@@ -115,12 +115,10 @@ std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_
   if (cm_morph_section(morph.morph_.get(), t, xy.data(), nullptr, min_angle_deg) != CM_OK)
     throw FilterError("the morph's section at t = " + std::to_string(t) +
                       " is invalid: " + cm_morph_message(morph.morph_.get()));
-  std::vector<double> xyz(3 * nv);
-  for (std::size_t j = 0; j < nv; j++) {
-    const std::array<double, 3> p = morph.frame0_.to_space(xy[2 * j], xy[2 * j + 1]);
-    const std::array<double, 3> q = morph.frame1_.to_space(xy[2 * j], xy[2 * j + 1]);
-    for (int c = 0; c < 3; c++) xyz[3 * morph.order_[j] + c] = (1 - t) * p[c] + t * q[c];
-  }
+  std::vector<double> placed(3 * nv), xyz(3 * nv);
+  cm_loft_section(morph.frames_.data(), 2, t, xy.data(), nv, placed.data());
+  for (std::size_t j = 0; j < nv; j++)
+    for (int c = 0; c < 3; c++) xyz[3 * morph.order_[j] + c] = placed[3 * j + c];
   return xyz;
 }
 
@@ -130,11 +128,8 @@ SweptVolume swept_volume(SectionMorph &morph, int sections)
   cm_sweep_options_init(&options);
   // A loft between the layers' planes: the core places the nodes there and
   // checks every tetrahedron in space, exactly.
-  std::vector<double> frames;
-  for (const compatmesh::PlaneFrame *f : {&morph.frame0_, &morph.frame1_})
-    for (const std::array<double, 3> *a : {&f->origin, &f->u, &f->v}) frames.insert(frames.end(), a->begin(), a->end());
   options.sections = std::size_t(sections);
-  options.frames = frames.data();
+  options.frames = morph.frames_.data();
   options.tets = 1;
   cm_sweep *sweep = nullptr;
   cm_status s = cm_sweep_create(morph.morph_.get(), &options, &sweep);

@@ -49,14 +49,14 @@ class SectionMorph {
  private:
   compatmesh::ResultPtr result_;
   compatmesh::MorphPtr morph_;
-  compatmesh::PlaneFrame frame0_, frame1_;
+  std::vector<double> frames_;  // the layers' planes, as the core's loft takes them (append_loft_frame)
   std::vector<int> order_;  // morph vertex j is layer vertex order_[j]
 };
 
 // The section at time t in [0, 1] (3 * vertices doubles, layer vertex
-// order): the one place that decides how sections are made. The morph's 2D
-// section is lifted into both planes' frames and the two 3D points blended,
-// (1 - t) * frame0(p) + t * frame1(p): an affine image of the 2D section,
+// order): the morph's 2D section lifted into both planes' frames and the
+// two 3D points blended, (1 - t) * frame0(p) + t * frame1(p), as the core's
+// loft places a sweep's nodes (cm_loft_section): an affine image of the 2D section,
 // so the section is planar, in the first layer's plane at t = 0 and the
 // second's at t = 1 (for parallel planes: the plane at the blended height).
 // min_angle_deg (may be null) receives the 2D section's smallest angle.
@@ -65,9 +65,10 @@ std::vector<double> section_at(SectionMorph &morph, double t, double *min_angle_
 
 // The volume between the layers in tetrahedra: the core's sweep of the
 // morph (sections at morph times t, prisms split into 3 tetrahedra, more
-// sections where a cell would not be positive), every node at time t
-// placed as section_at places it, then every tetrahedron checked exactly
-// (cm_check_tetrahedra) where it now is. sections: sections of the sweep,
+// sections where a cell would not be positive), lofted between the layers'
+// planes by the core (cm_sweep_options.frames: every node at time t placed
+// as section_at places it, every tetrahedron checked exactly where it then
+// is). sections: sections of the sweep,
 // both layers included, >= 2. Throws FilterError.
 struct SweptVolume {
   std::vector<double> nodes;  // 3 per node

@@ -437,7 +437,8 @@ static void test_cells_quality(void)
  * again), and the volume of the blend, 4 (1 + cos 30 degrees), to within
  * rounding (the square does not change along the loft, so the wedges
  * are the blend itself); planes crossing inside the square fold (a clear
- * failure, prisms and tetrahedra); bad frames are refused. */
+ * failure, prisms and tetrahedra); bad frames are refused; a morph
+ * section placed by cm_loft_section lies as the loft's nodes do. */
 static void set_frame(double *f, double oz, double turn_deg)
 {
     double c = cos(turn_deg * CM_PI / 180), s = sin(turn_deg * CM_PI / 180);
@@ -518,6 +519,20 @@ static void test_loft(void)
     cm_sweep_free(w);
     cm_morph_free(m);
     cm_result_free(r);
+
+    /* cm_loft_section: a morph section placed as the loft places nodes:
+     * in the first plane at t = 0, the last at t = 1, and with three
+     * frames halfway along the second segment at t = 0.75. */
+    double three[27], xy[4] = {0.5, -1, 2, 3}, out[6];
+    set_frame(three, 0, 0), set_frame(three + 9, 2, 30), set_frame(three + 18, 4, 60);
+    cm_loft_section(three, 3, 0.0, xy, 2, out);
+    CHECK(out[0] == 0.5 && out[1] == -1 && out[2] == 0 && out[3] == 2 && out[4] == 3 && out[5] == 0);
+    cm_loft_section(three, 3, 1.0, xy, 2, out);
+    CHECK(fabs(out[4] - 3 * cos(CM_PI / 3)) < 1e-15 && fabs(out[5] - (4 + 3 * sin(CM_PI / 3))) < 1e-15);
+    cm_loft_section(three, 3, 0.75, xy, 2, out);
+    double mid_y = 0.5 * 3 * (cos(CM_PI / 6) + cos(CM_PI / 3)), mid_z = 0.5 * (2 + 3 * sin(CM_PI / 6) + 4 + 3 * sin(CM_PI / 3));
+    CHECK_MSG(out[3] == 2 && fabs(out[4] - mid_y) < 1e-14 && fabs(out[5] - mid_z) < 1e-14, "halfway: %g %g %g",
+              out[3], out[4], out[5]);
 }
 
 static void test_failures(void)

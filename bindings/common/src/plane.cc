@@ -182,6 +182,11 @@ void align_frames(std::vector<PlaneFrame> &frames, bool loft)
   }
 }
 
+void append_loft_frame(const PlaneFrame &frame, std::vector<double> &frames)
+{
+  for (const std::array<double, 3> *a : {&frame.origin, &frame.u, &frame.v}) frames.insert(frames.end(), a->begin(), a->end());
+}
+
 std::vector<double> to_plane(const PlaneFrame &frame, const double *xyz, std::size_t n)
 {
   std::vector<double> xy(2 * n);

@@ -820,6 +820,16 @@ CM_API void cm_sweep_get_quality(const cm_sweep *sweep, cm_sweep_quality *qualit
 CM_API void cm_cells_quality(const double *nodes, const int32_t *cells, size_t num_cells, int tets,
                              cm_sweep_quality *quality);
 
+/* A morph section xy (num_vertices points, cm_morph_section) at time t
+ * placed in space between the planes of k geometries (frames as in
+ * cm_sweep_options.frames, the morph passing through geometry g at
+ * t = g / (k - 1)): each point (1 - s) times its point in the plane of the
+ * geometry before t plus s times its point in the plane of the one after,
+ * s the fraction of that segment, as a loft places its nodes. xyz receives
+ * 3 doubles per point. */
+CM_API void cm_loft_section(const double *frames, size_t k, double t, const double *xy, size_t num_vertices,
+                            double *xyz);
+
 #ifdef __cplusplus
 }
 #endif

@@ -37,6 +37,16 @@ cm_status cm_loft_levels(const double *frames, const double *centres, size_t k, 
     return CM_OK;
 }
 
+/* The plane point (x, y) at fraction s between frames f (segment g) and
+ * the next: (1 - s) F_g + s F_g+1, either end exactly at s = 0 or 1. */
+static void blend(const double *f, double s, double x, double y, double out[3])
+{
+    double p[3], q[3];
+    in_plane(f, x, y, p);
+    in_plane(f + CM_LOFT_FRAME, x, y, q);
+    for (int c = 0; c < 3; c++) out[c] = s == 0 ? p[c] : s == 1 ? q[c] : (1 - s) * p[c] + s * q[c];
+}
+
 void cm_loft_place(const double *frames, const double *levels, size_t k, double *nodes, size_t count)
 {
     size_t g = 0;
@@ -44,11 +54,16 @@ void cm_loft_place(const double *frames, const double *levels, size_t k, double 
         double *n = nodes + 3 * i, z = n[2];
         while (g > 0 && z < levels[g]) g--; /* nodes come section by section: g rarely moves */
         while (g + 2 < k && z > levels[g + 1]) g++;
-        double s = (z - levels[g]) / (levels[g + 1] - levels[g]), p[3], q[3];
-        in_plane(frames + CM_LOFT_FRAME * g, n[0], n[1], p);
-        in_plane(frames + CM_LOFT_FRAME * (g + 1), n[0], n[1], q);
-        for (int c = 0; c < 3; c++) n[c] = s == 0 ? p[c] : s == 1 ? q[c] : (1 - s) * p[c] + s * q[c];
+        blend(frames + CM_LOFT_FRAME * g, (z - levels[g]) / (levels[g + 1] - levels[g]), n[0], n[1], n);
     }
+}
+
+void cm_loft_section(const double *frames, size_t k, double t, const double *xy, size_t num_vertices, double *xyz)
+{
+    double at = t * (double)(k - 1);
+    size_t g = at >= (double)(k - 1) ? k - 2 : (size_t)at;
+    for (size_t v = 0; v < num_vertices; v++)
+        blend(frames + CM_LOFT_FRAME * g, at - (double)g, xy[2 * v], xy[2 * v + 1], xyz + 3 * v);
 }
 
 static const double *node(const double *nodes, const int32_t *cell, int c) { return nodes + 3 * (size_t)cell[c]; }

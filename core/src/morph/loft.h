@@ -25,7 +25,8 @@ cm_status cm_loft_levels(const double *frames, const double *centres, size_t k, 
 
 /* Places count nodes (x, y, z) with z in [levels[0], levels[k - 1]]: z in
  * segment g at fraction s is placed at (1 - s) F_g(x, y) + s F_g+1(x, y),
- * F_g(x, y) = origin_g + x u_g + y v_g. */
+ * F_g(x, y) = origin_g + x u_g + y v_g (as cm_loft_section places a morph
+ * section, compatmesh.h). */
 void cm_loft_place(const double *frames, const double *levels, size_t k, double *nodes, size_t count);
 
 /* The first cell (tetrahedra with tets, else 6-node prisms) not positive

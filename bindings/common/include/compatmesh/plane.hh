@@ -88,6 +88,10 @@ PlaneFrame fit_plane(const double *xyz, std::size_t n, double relative_tolerance
 // others get -1.
 void align_frames(std::vector<PlaneFrame> &frames, bool loft);
 
+// Appends the frame as the core's loft takes a geometry's plane
+// (cm_sweep_options.frames, cm_loft_section): origin, u, v, 9 doubles.
+void append_loft_frame(const PlaneFrame &frame, std::vector<double> &frames);
+
 // The plane coordinates of n points: 2n doubles.
 std::vector<double> to_plane(const PlaneFrame &frame, const double *xyz, std::size_t n);
 
