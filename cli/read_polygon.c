@@ -81,7 +81,7 @@ int place_section(const char *path, polygon_input *polygon, double *xyz, const p
         return CLI_EXIT_USAGE;
     }
     section_to_plane(&polygon->frame, xyz, n, polygon->xy);
-    polygon->spatial = 1, polygon->xyz = xyz, polygon->has_z = 1;
+    polygon->spatial = 1, polygon->xyz = xyz;
     for (size_t i = 0; i < n; i++)
         if (!isfinite(polygon->xy[2 * i]) || !isfinite(polygon->xy[2 * i + 1])) {
             if (polygon->by_index) cli_error_set(error, "%s: vertex %ld: %s", path, polygon->source_line[i], FIT_BEYOND);

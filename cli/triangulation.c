@@ -313,7 +313,7 @@ static int place_in_space(triangulation *t, cli_error *error)
             /* a plane z = constant is fitted exactly: only memory can fail */
             if (section_fit(p->xyz, p->count, p->loop_sizes[0], &p->frame, &vertex, message, sizeof message))
                 goto out_of_memory;
-            p->spatial = 1, p->has_z = 1;
+            p->spatial = 1;
         }
         frames[g] = p->frame;
     }

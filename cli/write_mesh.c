@@ -150,7 +150,7 @@ int write_mesh(const char *path, const cm_result *result, size_t g, const polygo
 {
     size_t nv = cm_result_num_vertices(result);
     double *xyz = NULL;
-    if (input && input->has_z) {
+    if (input && (input->has_z || input->spatial)) { /* else the plane z = 0 */
         if (!(xyz = malloc((3 * nv + 1) * sizeof *xyz))) {
             cli_error_set(error, "cannot write %s: out of memory", path);
             return CLI_EXIT_INTERNAL;

@@ -31,7 +31,7 @@ const char *mesh_format_name(mesh_format format);
 int write_mesh(const char *path, const cm_result *result, size_t g, const polygon_input *input,
                mesh_format format, cli_error *error);
 
-/* Geometry g's vertices where input (with has_z) lies, as write_mesh
+/* Geometry g's vertices where input (with has_z, or spatial) lies, as write_mesh
  * writes them: xyz receives 3 per vertex of result. */
 void mesh_in_space(const cm_result *result, size_t g, const polygon_input *input, double *xyz);
 
