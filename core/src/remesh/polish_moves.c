@@ -95,11 +95,9 @@ cm_pmove_limits cm_pmove_limits_of(const cm_kmesh *km) { return km->between ? cm
  * (no slide): its results end far below the share (0.2 on those pairs)
  * and gained 0.1 degrees for 3 to 4 times the CPU. */
 #define CM_PMOVE_LONGER_SHARE 0.6
-#define CM_PMOVE_LONGER_ROUNDS 3
 static const cm_pmove_limits cm_pmove_longer = {.share = 0.25, .tries = 1500, .idle = 300, .iterations = 200};
 
 cm_pmove_limits cm_pmove_longer_limits(void) { return cm_pmove_longer; }
-int cm_pmove_longer_rounds(void) { return CM_PMOVE_LONGER_ROUNDS; }
 int cm_pmove_longer_wanted(const cm_kmesh *km) { return km->between && cm_kmesh_min_share(km) < CM_PMOVE_LONGER_SHARE; }
 
 enum pmove { PM_POLISH, PM_FLIP, PM_SPLIT, PM_COLLAPSE, PM_INSERT, PM_KINDS };

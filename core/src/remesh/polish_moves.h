@@ -25,10 +25,10 @@ cm_pmove_limits cm_pmove_limits_of(const cm_kmesh *km);
 /* Where boundary points slide (the caller's choice) and the worst
  * triangle is still far below its aim after the stage
  * (cm_pmove_longer_wanted; km->between), the stage runs again at
- * cm_pmove_longer_limits, up to cm_pmove_longer_rounds times while a run
- * keeps a move. */
+ * cm_pmove_longer_limits, up to CM_PMOVE_LONGER_ROUNDS times while a run
+ * keeps a move (polish_moves.c says why). */
+#define CM_PMOVE_LONGER_ROUNDS 3
 cm_pmove_limits cm_pmove_longer_limits(void);
-int cm_pmove_longer_rounds(void);
 int cm_pmove_longer_wanted(const cm_kmesh *km);
 
 /* Tries moves (a polish alone, a flip, a split, a Steiner vertex's

@@ -966,6 +966,18 @@ static cm_status polish_jointly(cm_mesh *mesh, size_t nb, cm_remesh_boundary *sp
     return s;
 }
 
+/* The polish-scored moves at limits whose polish also slides the boundary
+ * points along their input edges (splits->place): the moves kept (their
+ * slides counted in splits->slid), or -1. */
+static long sliding_moves(remesher *x, const cm_pmove_limits *limits, size_t n, cm_remesh_boundary *splits)
+{
+    cm_kmesh *km = &x->km;
+    cm_maxmin_slide slide = {NULL, NULL, splits->place, splits->ctx, splits->max_piece, 0, NULL, NULL};
+    long kept = cm_polish_moves(km, limits, budget_of(x->o, n) - (km->live_v - km->n), &slide, x->progress);
+    if (kept >= 0) splits->slid += slide.slid;
+    return kept;
+}
+
 /* Moves scored by the polish on the polished result (polish_moves.c):
  * the kmesh takes the polished positions back, and the mesh is written
  * again when a move was kept. */
@@ -980,21 +992,18 @@ static cm_status polish_moves(remesher *x, cm_mesh *mesh, size_t n, cm_remesh_bo
     long kept = cm_polish_moves(km, &limits, budget_of(x->o, n) - (km->live_v - km->n), NULL, x->progress);
     if (kept < 0) return stop_status(x);
     if (splits && splits->place) { /* the boundary points' turn */
-        cm_maxmin_slide slide = {NULL, NULL, splits->place, splits->ctx, splits->max_piece, 0, NULL, NULL};
-        long more = cm_polish_moves(km, &limits, budget_of(x->o, n) - (km->live_v - km->n), &slide,
-                                    x->progress);
+        long more = sliding_moves(x, &limits, n, splits);
         if (more < 0) return stop_status(x);
-        kept += more, splits->slid += slide.slid;
+        kept += more;
     }
     /* Still far below the aim where the correspondence is the tool's to
      * choose: longer runs with the boundary points' turn while they keep
      * moves (polish_moves.c says why). */
     cm_pmove_limits longer = cm_pmove_longer_limits();
-    for (int r = 0; splits && splits->place && r < cm_pmove_longer_rounds() && cm_pmove_longer_wanted(km); r++) {
-        cm_maxmin_slide slide = {NULL, NULL, splits->place, splits->ctx, splits->max_piece, 0, NULL, NULL};
-        long more = cm_polish_moves(km, &longer, budget_of(x->o, n) - (km->live_v - km->n), &slide, x->progress);
+    for (int r = 0; splits && splits->place && r < CM_PMOVE_LONGER_ROUNDS && cm_pmove_longer_wanted(km); r++) {
+        long more = sliding_moves(x, &longer, n, splits);
         if (more < 0) return stop_status(x);
-        kept += more, splits->slid += slide.slid;
+        kept += more;
         if (more == 0) break;
     }
     if (kept == 0) return CM_OK;
