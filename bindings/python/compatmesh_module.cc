@@ -576,11 +576,12 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
     setter->set(options, item.second, *callbacks);
   }
 
-  // A loft's sections follow their winding (sweep()). Polygons in space
-  // have their frames aligned, each plane's axes carried from the one
-  // before: fitted axes follow each polygon's own spread (two sections of
-  // a pipe may get axes a quarter turn apart), and a correspondence chosen
-  // in the plane would twist them.
+  // Polygons in space have their frames aligned, each plane's axes carried
+  // from the one before: fitted axes follow each polygon's own spread (two
+  // sections of a pipe may get axes a quarter turn apart), and a
+  // correspondence chosen in the plane would twist them. A loft's (morph(),
+  // sweep()) are fitted following their winding, then their normals turned
+  // along the loft (align_frames).
   const compatmesh::NormalSign sign = loft ? compatmesh::NormalSign::FollowWinding : compatmesh::NormalSign::Canonical;
   for (py::handle item : polygons_in) polygons->push_back(read_polygon(item, polygons->size(), tolerance, sign));
   std::vector<compatmesh::PlaneFrame> frames;
@@ -914,9 +915,10 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
     z.assign(a.data(), a.data() + a.shape(0));
   }
   // Sections in planes that are not all z = constant: a loft between their
-  // planes, each section read in its own plane following its winding (so
-  // that sections listed the same way round along the loft agree), its
-  // plane's axes carried from the one before (compatmesh::align_frames).
+  // planes, each section read in its own plane, the first normal towards
+  // the second section, each next on the side of the one before and each
+  // plane's axes carried from the one before (compatmesh::align_frames: a
+  // section listed the other way round then runs clockwise in its plane).
   const bool loft = loft_sections(polygons_in);
   if (loft && !(height.is_none() && heights.is_none()))
     throw py::value_error("sweep: the polygons lie in planes of space, which place them: give no height or heights");
