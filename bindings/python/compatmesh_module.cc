@@ -584,16 +584,10 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
   // along the loft (align_frames).
   const compatmesh::NormalSign sign = loft ? compatmesh::NormalSign::FollowWinding : compatmesh::NormalSign::Canonical;
   for (py::handle item : polygons_in) polygons->push_back(read_polygon(item, polygons->size(), tolerance, sign));
-  std::vector<compatmesh::PlaneFrame> frames;
   std::vector<Polygon *> spatial;
   for (Polygon &p : *polygons)
-    if (p.spatial) frames.push_back(p.frame), spatial.push_back(&p);
-  compatmesh::align_frames(frames, loft);
-  for (std::size_t g = 0; g < spatial.size(); g++) {
-    Polygon &p = *spatial[g];
-    p.frame = frames[g];
-    p.xy = compatmesh::to_plane(p.frame, p.xyz.data(), p.size());
-  }
+    if (p.spatial) spatial.push_back(&p);
+  compatmesh::align_sections(spatial, loft);
   std::vector<const double *> data;
   std::vector<std::size_t> counts;
   std::vector<cm_loops> loops;

@@ -59,14 +59,9 @@ Boundary make_boundary(std::vector<double> xyz, std::vector<int> source_vertex,
 
 void align_boundaries(std::vector<Boundary> &polygons)
 {
-  std::vector<PlaneFrame> frames;
-  for (const Boundary &b : polygons) frames.push_back(b.frame);
-  align_frames(frames, false);
-  for (std::size_t g = 0; g < polygons.size(); g++) {
-    Boundary &b = polygons[g];
-    b.frame = frames[g];
-    b.xy = to_plane(b.frame, b.xyz.data(), b.size());
-  }
+  std::vector<Boundary *> sections;
+  for (Boundary &b : polygons) sections.push_back(&b);
+  align_sections(sections, false);
 }
 
 ResultPtr triangulate(const std::vector<Boundary> &polygons, const cm_options &options,

@@ -95,6 +95,22 @@ void append_loft_frame(const PlaneFrame &frame, std::vector<double> &frames);
 // The plane coordinates of n points: 2n doubles.
 std::vector<double> to_plane(const PlaneFrame &frame, const double *xyz, std::size_t n);
 
+// The sections' frames aligned (align_frames) and each section's plane
+// coordinates computed again in its frame. Section has members frame,
+// xyz (3n doubles), xy (2n) and size() (n): the front ends' polygons.
+template <class Section>
+void align_sections(const std::vector<Section *> &sections, bool loft)
+{
+  std::vector<PlaneFrame> frames;
+  for (const Section *s : sections) frames.push_back(s->frame);
+  align_frames(frames, loft);
+  for (std::size_t g = 0; g < sections.size(); g++) {
+    Section &s = *sections[g];
+    s.frame = frames[g];
+    s.xy = to_plane(s.frame, s.xyz.data(), s.size());
+  }
+}
+
 }  // namespace compatmesh
 
 #endif
