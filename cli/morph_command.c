@@ -113,9 +113,11 @@ static void print_morph_help(FILE *out)
           "Outputs, written to a temporary directory beside DIR and moved into DIR\n"
           "only when everything succeeded:\n"
           "  DIR/frame_000.FMT ...  one section per frame, all with the same faces\n"
-          "                         (those of the triangulation), z = 0; for\n"
-          "                         sections in planes other than z = constant,\n"
-          "                         in space between their planes\n"
+          "                         (those of the triangulation), between the\n"
+          "                         inputs' planes where every input gives z or\n"
+          "                         lies in another plane (a frame between two\n"
+          "                         inputs at z 2 and 5 halfway lies at z 3.5),\n"
+          "                         else z = 0\n"
           "  DIR/frames.svg         the frames side by side (--picture-frames of\n"
           "                         them)\n"
           "  DIR/frames.png         the same picture as PNG (cairo draws both)\n"
@@ -221,11 +223,14 @@ static int write_frames(morph_run *run, cli_error *error)
         cli_error_set(error, "out of memory");
         return CLI_EXIT_INTERNAL;
     }
-    /* Inputs in space (sections in other planes): each frame between their
-     * planes; xyz holds a frame, then the planes (polygon_frames). */
+    /* Inputs in space (sections in other planes, or every input giving its
+     * z): each frame between their planes, as the sweep's layers; xyz holds
+     * a frame, then the planes (polygon_frames). */
     size_t k = args->tri.input_count;
-    double *xyz = run->tri.polygons[0].spatial ? malloc((3 * vertices + 9 * k) * sizeof *xyz) : NULL;
-    if (run->tri.polygons[0].spatial && !xyz) {
+    int in_space = 1;
+    for (size_t g = 0; g < k; g++) in_space &= run->tri.polygons[g].spatial || run->tri.polygons[g].has_z;
+    double *xyz = in_space ? malloc((3 * vertices + 9 * k) * sizeof *xyz) : NULL;
+    if (in_space && !xyz) {
         cli_error_set(error, "out of memory");
         return CLI_EXIT_INTERNAL;
     }

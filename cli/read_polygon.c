@@ -573,6 +573,12 @@ int read_polygon(const char *path, size_t max_bytes, polygon_input *polygon, cli
 void polygon_frames(const polygon_input *polygons, size_t k, double *frames)
 {
     for (size_t g = 0; g < k; g++) {
+        if (!polygons[g].spatial) { /* the plane z = its z (0 where none was given) */
+            static const double plane[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+            memcpy(frames + 9 * g, plane, sizeof plane);
+            frames[9 * g + 2] = polygons[g].z;
+            continue;
+        }
         const section_frame *f = &polygons[g].frame;
         memcpy(frames + 9 * g, f->origin, sizeof f->origin);
         memcpy(frames + 9 * g + 3, f->u, sizeof f->u);

@@ -70,9 +70,9 @@ int parse_polygon_text(const char *path, char *text, size_t length,
  * CLI_EXIT_USAGE; out of memory CLI_EXIT_INTERNAL. */
 int place_section(const char *path, polygon_input *polygon, double *xyz, const plane_z *plane, cli_error *error);
 
-/* The planes of k spatial inputs as the core's loft takes them
+/* The planes of k inputs as the core's loft takes them
  * (cm_sweep_options.frames, cm_loft_section): 9 doubles each, the origin,
- * u and v. */
+ * u and v; an input that is not spatial lies in the plane z = its z. */
 void polygon_frames(const polygon_input *polygons, size_t k, double *frames);
 
 void polygon_input_free(polygon_input *polygon);

@@ -143,6 +143,8 @@ void section_in_space(const cm_result *result, const polygon_input *inputs, cons
             return;
         }
     cm_loft_section(frames, k, t, xy, nv, xyz);
+    if (!inputs[0].spatial) /* planes z = constant: x and y the section's own, exactly */
+        for (size_t v = 0; v < nv; v++) xyz[3 * v] = xy[2 * v], xyz[3 * v + 1] = xy[2 * v + 1];
 }
 
 int write_mesh(const char *path, const cm_result *result, size_t g, const polygon_input *input,

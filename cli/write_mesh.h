@@ -37,9 +37,10 @@ void mesh_in_space(const cm_result *result, size_t g, const polygon_input *input
 
 /* A morph section xy (2 per vertex of result) at time t between inputs in
  * space (triangulation.c places every input so once one is a section in
- * another plane; frames: their planes, polygon_frames): at an input's own
- * time that input's mesh_in_space; in between, cm_loft_section. xyz
- * receives 3 per vertex. */
+ * another plane) or in planes z = constant (frames: their planes,
+ * polygon_frames): at an input's own time that input's mesh_in_space; in
+ * between, cm_loft_section (between planes z = constant, x and y as in
+ * xy). xyz receives 3 per vertex. */
 void section_in_space(const cm_result *result, const polygon_input *inputs, const double *frames, size_t k,
                       double t, const double *xy, double *xyz);
 

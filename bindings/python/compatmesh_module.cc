@@ -659,13 +659,14 @@ Result triangulate(py::object polygons_in, py::kwargs kwargs)
   throw py::value_error(text);
 }
 
-// Morph and sweep work in the plane: their sections are n x 2.
+// Morph and sweep work in the plane: their sections are n x 2, or n x 3
+// for every polygon (in planes z = constant, or a loft's).
 void require_planar(const std::vector<Polygon> &polygons, const char *function)
 {
   for (std::size_t g = 0; g < polygons.size(); g++)
     if (polygons[g].spatial)
       throw py::value_error(std::string(function) + ": polygon " + std::to_string(g) +
-                            ": expected an n x 2 array, or for sweep n x 3 arrays for every polygon (in planes z = constant, "
+                            ": expected an n x 2 array, or n x 3 arrays for every polygon (in planes z = constant, "
                             "or in any planes for a loft)");
 }
 
@@ -716,17 +717,22 @@ std::vector<double> morph_times(py::object t, py::object frames)
 }
 
 bool loft_sections(py::handle polygons_in);
+py::list flat_sections(py::object polygons_in, std::vector<double> *z, const std::string &function);
 std::vector<double> loft_frames(const std::vector<Polygon> &polygons);
 
-// The sections of polygons in space, F x nv x 3: at a polygon's own time
+// The sections in space, F x nv x 3, between the polygons' planes (frames
+// as cm_sweep_options.frames takes them): at a polygon's own time
 // (cm_morph_section gives its geometry bit for bit) its vertices as
 // vertices_of gives them; in between cm_loft_section, as the sweep's loft
-// places its nodes.
+// places its nodes. Between planes z = constant (polygons not spatial),
+// x and y are the section's own and z the planes' blend (a polygon's own
+// z at its time).
 py::array sections_in_space(const cm_result *result, const std::vector<Polygon> &polygons,
-                            const std::vector<double> &times, const py::array_t<double> &plane)
+                            const std::vector<double> &frames, const std::vector<double> &times,
+                            const py::array_t<double> &plane)
 {
   const std::size_t nv = cm_result_num_vertices(result), k = polygons.size();
-  const std::vector<double> frames = loft_frames(polygons);
+  const bool flat = k > 0 && !polygons[0].spatial;
   py::array_t<double> out({py::ssize_t(times.size()), py::ssize_t(nv), py::ssize_t(3)});
   for (std::size_t f = 0; f < times.size(); f++) {
     const double *xy = plane.data() + 2 * nv * f;
@@ -734,14 +740,25 @@ py::array sections_in_space(const cm_result *result, const std::vector<Polygon> 
     std::size_t own = k;
     for (std::size_t g = 0; g < k && own == k; g++)
       if (std::memcmp(xy, cm_result_vertices(result, g), 2 * nv * sizeof *xy) == 0) own = g;
-    if (own < k) {
+    if (own < k && !flat) {
       py::array_t<double> v = vertices_of(result, own, polygons[own]);
       std::memcpy(p, v.data(), 3 * nv * sizeof *p);
       continue;
     }
     cm_loft_section(frames.data(), k, times[f], xy, nv, p);
+    if (flat)
+      for (std::size_t i = 0; i < nv; i++)
+        p[3 * i] = xy[2 * i], p[3 * i + 1] = xy[2 * i + 1], p[3 * i + 2] = own < k ? frames[9 * own + 2] : p[3 * i + 2];
   }
   return out;
+}
+
+// The planes z = z[g] as cm_sweep_options.frames takes them.
+std::vector<double> plane_z_frames(const std::vector<double> &z)
+{
+  std::vector<double> frames;
+  for (double zg : z) frames.insert(frames.end(), {0, 0, zg, 1, 0, 0, 0, 1, 0});
+  return frames;
 }
 
 Morph morph(py::object polygons_in, py::object t, py::object frames, py::object morph_method,
@@ -751,8 +768,11 @@ Morph morph(py::object polygons_in, py::object t, py::object frames, py::object 
   cm_morph_method method = enum_from(morph_method, "morph_method", morph_method_names);
   std::vector<Polygon> polygons;
   Callbacks callbacks;
-  const bool loft = loft_sections(polygons_in);  // sections in space: frames between their planes
-  ResultPtr result = run_triangulation(polygons_in, kwargs, "morph", &polygons, &callbacks, loft);
+  // Sections in space, or n x 3 in planes z = constant: frames between their planes.
+  const bool loft = loft_sections(polygons_in);
+  std::vector<double> own_z;
+  py::object planar = loft ? polygons_in : py::object(flat_sections(polygons_in, &own_z, "morph"));
+  ResultPtr result = run_triangulation(planar, kwargs, "morph", &polygons, &callbacks, loft);
   if (!loft) require_planar(polygons, "morph");
   ProgressRelay relay(python_progress(callbacks.progress));
   MorphPtr m = make_morph(result.get(), method, relay);
@@ -777,7 +797,11 @@ Morph morph(py::object polygons_in, py::object t, py::object frames, py::object 
   py::dict &fields = out.fields;
   fields["faces"] = copy_array(cm_result_triangles(result.get()), cm_result_num_triangles(result.get()), 3);
   fields["t"] = copy_array(times.data(), frame_count, 1);
-  fields["sections"] = loft ? sections_in_space(result.get(), polygons, times, sections) : py::array(sections);
+  if (loft || !own_z.empty())
+    fields["sections"] = sections_in_space(result.get(), polygons, loft ? loft_frames(polygons) : plane_z_frames(own_z),
+                                           times, sections);
+  else
+    fields["sections"] = py::array(sections);
   fields["inverted"] = inverted;
   fields["min_angle_deg"] = min_angle;
   fields["n"] = polygons.empty() ? 0 : polygons[0].size();
@@ -828,10 +852,10 @@ py::object section_in_plane_z(py::handle polygon, std::size_t index, double *z, 
   return several ? py::object(flat) : py::object(flat[0]);
 }
 
-// The sections' own z as heights, when every polygon gives one (n x 3 in a
-// plane z = constant) and they differ, as the command line takes its
-// inputs' z; the polygons passed on in the plane (x, y).
-py::list sections_own_z(py::object polygons_in, std::vector<double> *z)
+// The polygons passed on in the plane (x, y), and *z each one's z where
+// every polygon is n x 3 in a plane z = constant (else *z empty); only
+// some of them so is an error of `function`'s.
+py::list flat_sections(py::object polygons_in, std::vector<double> *z, const std::string &function)
 {
   py::list flat;
   std::vector<double> own;
@@ -842,11 +866,21 @@ py::list sections_own_z(py::object polygons_in, std::vector<double> *z)
     flat.append(section_in_plane_z(polygon, flat.size(), &zg, &has_z));
     own.push_back(zg), with_z += has_z;
   }
-  bool distinct = with_z > 0 && std::any_of(own.begin(), own.end(), [&](double v) { return v != own[0]; });
-  if (with_z == 0 || (!distinct && with_z == own.size())) return flat;
-  if (with_z < own.size())
-    throw py::value_error("sweep: some polygons lie in a plane z = constant and some do not; give all of them z "
-                          "or pass height / heights");
+  if (with_z > 0 && with_z < own.size())
+    throw py::value_error(function + ": some polygons lie in a plane z = constant and some do not; give all of them z" +
+                          (function == "sweep" ? " or pass height / heights" : ""));
+  if (with_z > 0) *z = own;
+  return flat;
+}
+
+// The sections' own z as heights, when every polygon gives one (n x 3 in a
+// plane z = constant) and they differ, as the command line takes its
+// inputs' z; the polygons passed on in the plane (x, y).
+py::list sections_own_z(py::object polygons_in, std::vector<double> *z)
+{
+  std::vector<double> own;
+  py::list flat = flat_sections(polygons_in, &own, "sweep");
+  if (own.empty() || std::all_of(own.begin(), own.end(), [&](double v) { return v == own[0]; })) return flat;
   for (std::size_t g = 1; g < own.size(); g++)
     if (!(own[g] > own[g - 1]))
       throw py::value_error("sweep: polygon " + std::to_string(g) + " lies at z = " + py::str(py::float_(own[g])).cast<std::string>() +
@@ -1804,13 +1838,15 @@ Polygons given n x 3 in planes that are not all z = constant (sections in
 space) are placed as sweep() places a loft's, and each section is in
 space: at a polygon's time its vertices as triangulate() gives them, in
 between each vertex blended between its points in the planes of the two
-polygons around t (sections F x nv x 3).
+polygons around t (sections F x nv x 3). Polygons given n x 3 in planes
+z = constant morph as their (x, y) do, each section at the z blended
+between the planes around t, as sweep()'s layers (sections F x nv x 3).
 
 t: a time in [0, 1] or a sequence of them; or frames: a count >= 2 of evenly
     spaced times from 0 to 1 (give exactly one).
 Returns a Morph (its fields also by key, as in a dict): faces (m x 3 int32,
-the same in every section), t (F float64), sections (F x nv x 2 float64, the
-n polygon vertices first), inverted (F int64: triangles not strictly
+the same in every section), t (F float64), sections (F x nv x 2 float64, or
+F x nv x 3 for polygons given n x 3, the n polygon vertices first), inverted (F int64: triangles not strictly
 counter-clockwise, by exact predicates), min_angle_deg (F float64), n; and
 points (= sections), cells, stats (the triangulation's), quality (per
 frame), to_meshio(frame), write(path, frame). Raises InputError (a ValueError) for bad polygons, ValueError with

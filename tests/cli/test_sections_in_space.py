@@ -1,7 +1,8 @@
 """Sections in planes other than z = constant (MeshLab cuts a model along
 x, y or any plane): each is meshed in its plane and written back in space,
 its own vertices as read; sweep lofts between the planes, every cell
-positive in space; morph writes its frames between the planes; a section
+positive in space; morph writes its frames between the planes (also
+planes z = constant given by the inputs' z); a section
 that is not planar is refused with a message and no output."""
 import math
 
@@ -9,7 +10,7 @@ import gmsh
 import numpy as np
 import pytest
 
-from polygons import leftovers, read_vertex_text, star
+from polygons import leftovers, orientation, read_vertex_text, star
 
 TET_CORNERS = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]
 PRISM_CORNERS = [0, 0, -1, 1, 0, -1, 0, 1, -1, 0, 0, 1, 1, 0, 1, 0, 1, 1]
@@ -115,6 +116,37 @@ def test_morph_frames_between_the_planes(cm, tmp_path):
     second = np.array([0, math.sin(math.radians(30)), math.cos(math.radians(30))])
     assert np.all(middle @ first > 0)
     assert np.all((middle - bend(30)) @ second < 0)
+
+
+def test_morph_frames_between_z_planes(cm, tmp_path):
+    """Sections given in planes z = 2, 3 and 7 (.xy with z): every morph
+    frame lies in the plane its time puts between them, as the sweep's
+    layers do (t = 0.25 halfway between z = 2 and 3), the inputs' frames
+    are the triangulate meshes bit for bit; the same polygons without z
+    give frames at z = 0."""
+    shapes = [star(12, 1), star(12, 2, scale=1.3), star(12, 3, scale=0.8)]
+    for g, (z, shape) in enumerate(zip((2, 3, 7), shapes)):
+        (tmp_path / f"z{g}.xy").write_text("".join("%r %r %r\n" % (x, y, z) for x, y in shape))
+        (tmp_path / f"f{g}.xy").write_text("".join("%r %r\n" % (x, y) for x, y in shape))
+    names = ["z0.xy", "z1.xy", "z2.xy"]
+    assert cm("triangulate", *names, "-o", "pair").returncode == 0
+    result = cm("morph", *names, "-o", "frames", "--frames", "9")
+    assert result.returncode == 0, result.stderr
+    for f, name in ((0, "z0"), (4, "z1"), (8, "z2")):
+        assert (tmp_path / "frames" / f"frame_{f:03d}.off").read_text() == \
+               (tmp_path / "pair" / f"{name}.off").read_text()
+    for f, z in ((1, 2.25), (2, 2.5), (6, 5.0)):
+        path = tmp_path / "frames" / f"frame_{f:03d}.off"
+        points = read_vertex_text(path, "off")
+        assert all(abs(p[2] - z) < 1e-12 for p in points), (f, z)
+        lines = path.read_text().splitlines()
+        for face in lines[2 + len(points):]:  # x and y the morph's own: exactly counter-clockwise
+            a, b, c = (points[int(i)][:2] for i in face.split()[1:4])
+            assert orientation(a, b, c) > 0, (f, face)
+    flat = cm("morph", "f0.xy", "f1.xy", "f2.xy", "-o", "flat", "--frames", "9")
+    assert flat.returncode == 0, flat.stderr
+    points = np.array(read_vertex_text(tmp_path / "flat" / "frame_002.off", "off"))
+    assert np.all(points[:, 2] == 0)
 
 
 def test_loft_refusals_leave_nothing(cm, tmp_path):

@@ -114,6 +114,22 @@ def test_sweep_heights_from_the_sections_own_z(twisted):
     assert compatmesh.sweep(flat, sections=2).height_is_default
 
 
+def test_morph_between_the_sections_own_z(twisted):
+    """Sections n x 3 in planes z = constant morph as their (x, y): the
+    sections are the n x 2 morph's with z blended between the planes (a
+    polygon's own z at its time, as sweep()'s layers), the end sections
+    the polygons themselves."""
+    sections = [np.c_[twisted[0], np.full(12, -0.5)], np.c_[twisted[1], np.full(12, 2.1)]]
+    m = compatmesh.morph(sections, frames=5)
+    plain = compatmesh.morph(twisted, frames=5)
+    assert m.sections.shape == plain.sections.shape[:2] + (3,)
+    assert np.array_equal(m.sections[:, :, :2], plain.sections)
+    assert np.allclose(m.sections[:, :, 2], np.linspace(-0.5, 2.1, 5)[:, None], rtol=0, atol=1e-15)
+    assert np.array_equal(m.sections[0][:12], sections[0]) and np.array_equal(m.sections[-1][:12], sections[1])
+    with pytest.raises(ValueError, match="morph: some polygons lie in a plane z = constant and some do not"):
+        compatmesh.morph([sections[0], twisted[1]], frames=3)
+
+
 def test_sections_auto(twisted):
     """sections="auto" (`--sections auto`): layers about as tall as the
     triangulation's median edge; ten times as tall, about ten times as
@@ -210,7 +226,7 @@ def test_loft_that_folds_is_refused(twisted):
     (lambda p: compatmesh.sweep([p[0], p[1][:-1]], correspondence="index"), compatmesh.InputError,
      "polygon 1 has 11 vertices but polygon 0 has 12"),
     (lambda p: compatmesh.sweep([p[0], np.c_[p[1], 1 + 0.1 * p[1][:, 0]]]),
-     ValueError, "polygon 1: expected an n x 2 array, or for sweep n x 3 arrays for every polygon"),
+     ValueError, "polygon 1: expected an n x 2 array, or n x 3 arrays for every polygon"),
     (lambda p: compatmesh.sweep([np.c_[p[0], 0.1 * p[0][:, 0]], np.c_[p[1], 1 + 0.1 * p[1][:, 0]]], height=2.0),
      ValueError, "the polygons lie in planes of space, which place them: give no height or heights"),
     (lambda p: compatmesh.sweep([np.c_[p[0], np.zeros(12)], p[1]]), ValueError,
