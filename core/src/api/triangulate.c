@@ -830,6 +830,14 @@ static int rescue_wanted(const cm_result *r, const cm_options *o, double share)
            r->greedy_angle_deg < share * r->stats.remesh_aim_deg;
 }
 
+/* Is r, made by auto and remeshed by o, below `share` of its aim after the
+ * polish (before any restart)? */
+static int short_of(const cm_result *r, const cm_options *o, double share)
+{
+    return o->correspondence == CM_CORRESPOND_AUTO && o->remesh &&
+           r->polished_angle_deg < share * r->stats.remesh_aim_deg;
+}
+
 /* A result for a rescue's run, sharing r's memos (the caps and the
  * conformal map of the same polygons); NULL without memory for it (r then
  * stands). */
@@ -894,16 +902,20 @@ static cm_options without_restarts(const cm_options *o)
 typedef cm_status (*rescue_run)(cm_result *again, const void *input, const cm_options *o, const void *pairing);
 
 /* The pairing run without restarts, kept in place of *result where it is
- * better (*took); *result stands where no memory is left for the run. */
+ * better (*took); *result stands where no memory is left for the run.
+ * angle: NULL, or receives the run's smallest angle before any restart
+ * (-1 where it did not run or failed). */
 static cm_status rescue_try(cm_result **result, const cm_options *o, rescue_run run, const void *input,
-                            const void *pairing, int *took)
+                            const void *pairing, int *took, double *angle)
 {
     cm_options once = without_restarts(o);
     cm_result *again = rescue_result(*result, o);
     *took = 0;
+    if (angle) *angle = -1;
     if (!again) return CM_OK;
     cm_status s = run(again, input, &once, pairing);
     *took = better(again, s, *result);
+    if (angle && s == CM_OK) *angle = again->polished_angle_deg;
     return keep_if(result, again, s, *took);
 }
 
@@ -929,6 +941,27 @@ static cm_status rescue_restart(cm_result **result, const cm_options *o, rescue_
 /* The last resort's corner pins (pin_corners_deg): corners turning by more
  * than a right angle, the tips and ends of strokes. */
 #define CM_RESCUE_CORNERS_DEG 90.0
+/* A near miss after every pairing above (its smallest angle after the
+ * polish between CM_POWER_SEARCH_FROM and CM_PAIRING_RESCUE_SHARE of its
+ * aim): the tempering power searched further, the parameter read along
+ * every edge (power_search). The remesher's result is not monotone in the
+ * power (tune_FreeSerifItalic_w_L_n160: 0.25 13.50 degrees, 0.35 14.44,
+ * 0.4 14.74, 0.425 16.18, 0.45 14.06; 0.425 plus one ulp 14.23), so more
+ * draws near the floor often cross it (spiral_disc_n50 14.69 -> 17.02);
+ * far below it the pairing is not what holds the result (comb_disc_n250,
+ * spiral_disc_n100: the same angle at 1.7 and 2.5 times the CPU), and the
+ * search is not run (bench/CORRESPONDENCE.md, "The tempering power
+ * searched on near misses"). First the powers above the list's, nearer
+ * the conformal map, CM_POWER_SEARCH_STEP apart up to CM_POWER_SEARCH_TOP
+ * (beyond, the map crowds past what doubles hold on thin glyphs and the
+ * run fails alone); then half a step either side of the power whose run
+ * ended highest; each while the result is still short, kept only where
+ * better. */
+#define CM_POWER_SEARCH_FROM 0.5
+#define CM_POWER_SEARCH_STEP 0.05
+#define CM_POWER_SEARCH_TOP 0.45
+/* At most this many powers run per call (the list's and the search's). */
+#define CM_POWER_RUNS 16
 
 /* Auto without holes takes the conformal parameter read along every edge
  * (a faithful pairing) or the similarity choice, whichever allows the
@@ -963,6 +996,59 @@ static cm_status run_pairing(cm_result *again, const void *input, const cm_optio
     return run_arclength(again, in->polygons, in->counts, in->k, o, NULL, *(const auto_pairing *)pairing);
 }
 
+/* The powers read along every edge run so far, and where each ended (the
+ * smallest angle after the polish; -1 where the run failed). */
+typedef struct power_runs {
+    double power[CM_POWER_RUNS], angle[CM_POWER_RUNS];
+    auto_pairing searched[CM_POWER_RUNS]; /* the search's pairings (*kept may point at one) */
+    size_t n;
+} power_runs;
+
+static void power_ran(power_runs *runs, double power, double angle)
+{
+    if (runs->n < CM_POWER_RUNS) runs->power[runs->n] = power, runs->angle[runs->n++] = angle;
+}
+
+/* The tempering power searched further on a near miss (CM_POWER_SEARCH_FROM
+ * says why); *kept and *kept_options become the pairing kept, if the
+ * search keeps one. */
+static cm_status power_search(cm_result **result, const cm_options *o, const polygon_input *input, power_runs *runs,
+                              const auto_pairing **kept, const cm_options **kept_options)
+{
+    static const double beyond[] = {CM_RESCUE_POWER_MORE + CM_POWER_SEARCH_STEP,
+                                    CM_RESCUE_POWER_MORE + 2 * CM_POWER_SEARCH_STEP, CM_POWER_SEARCH_TOP};
+    const size_t nb = sizeof beyond / sizeof *beyond;
+    if (!short_of(*result, o, CM_PAIRING_RESCUE_SHARE) || short_of(*result, o, CM_POWER_SEARCH_FROM)) return CM_OK;
+    cm_status s = CM_OK;
+    for (size_t i = 0, tried = 0; s == CM_OK && runs->n < CM_POWER_RUNS && i < nb + 2; i++) {
+        if (!short_of(*result, o, CM_PAIRING_RESCUE_SHARE)) break;
+        double p;
+        if (i < nb) {
+            p = beyond[i];
+        } else { /* half a step either side of the best so far */
+            size_t best = 0;
+            for (size_t j = 1; j < runs->n; j++)
+                if (runs->angle[j] > runs->angle[best]) best = j;
+            if (runs->n == 0 || runs->angle[best] < 0) break;
+            p = runs->power[best] + (i == nb ? -0.5 : 0.5) * CM_POWER_SEARCH_STEP;
+        }
+        /* on a grid of a thousandth: the same power is the same double
+         * however it was reached (one ulp of the power moves the result) */
+        p = round(p * 1000) / 1000;
+        int done = 0;
+        for (size_t j = 0; j < runs->n; j++) done |= fabs(runs->power[j] - p) < 1e-9;
+        if (done || p <= 0) continue;
+        auto_pairing *pairing = &runs->searched[tried++];
+        *pairing = (auto_pairing){PAIRING_CONFORMAL, 0, p};
+        double ended;
+        int took;
+        s = rescue_try(result, o, run_pairing, input, pairing, &took, &ended);
+        if (took) *kept = pairing, *kept_options = o;
+        power_ran(runs, p, ended);
+    }
+    return s;
+}
+
 static cm_status pairing_rescue(cm_result **result, const double *const *polygons, const size_t *counts, size_t k,
                                 const cm_options *o)
 {
@@ -980,6 +1066,8 @@ static cm_status pairing_rescue(cm_result **result, const double *const *polygon
     const auto_pairing *kept = NULL; /* the rescue's pairing *result is, if any */
     cm_status s = CM_OK;
     int took;
+    power_runs runs = {0};
+    if (first == CM_CHOICE_CONFORMAL) power_ran(&runs, CM_CONFORMAL_POWER, (*result)->polished_angle_deg);
     for (size_t i = 0; s == CM_OK && i < sizeof others / sizeof *others; i++) {
         const auto_pairing *p = &others[i].pairing;
         if (!rescue_wanted(*result, o, others[i].share) ||
@@ -987,17 +1075,20 @@ static cm_status pairing_rescue(cm_result **result, const double *const *polygon
              first == CM_CHOICE_CONFORMAL) ||
             (p->kind == PAIRING_SIMILARITY && first == CM_CHOICE_SIMILARITY))
             continue; /* not wanted, or the first run's */
-        s = rescue_try(result, o, run_pairing, &input, p, &took);
+        double ended;
+        s = rescue_try(result, o, run_pairing, &input, p, &took, &ended);
         if (took) kept = p;
+        if (p->kind == PAIRING_CONFORMAL && !p->linear) power_ran(&runs, p->power, ended);
     }
     cm_options cornered = *o;
     cornered.pin_corners_deg = CM_RESCUE_CORNERS_DEG;
     const cm_options *kept_options = o;
     if (s == CM_OK && rescue_wanted(*result, o, CM_PAIRING_RESCUE_SHARE)) {
         /* a polygon without such a corner fails this run alone */
-        s = rescue_try(result, &cornered, run_pairing, &input, &by_ceiling, &took);
+        s = rescue_try(result, &cornered, run_pairing, &input, &by_ceiling, &took, NULL);
         if (took) kept = &by_ceiling, kept_options = &cornered;
     }
+    if (s == CM_OK) s = power_search(result, o, &input, &runs, &kept, &kept_options);
     return s == CM_OK ? rescue_restart(result, kept_options, run_pairing, &input, kept) : s;
 }
 
@@ -1493,7 +1584,7 @@ static cm_status outer_rescue(cm_result **result, const cm_loops *polygons, size
         return CM_OK;
     const loop_input input = {polygons, k};
     int took;
-    cm_status s = rescue_try(result, o, run_loop_pairing, &input, &by_start, &took);
+    cm_status s = rescue_try(result, o, run_loop_pairing, &input, &by_start, &took, NULL);
     return s == CM_OK ? rescue_restart(result, o, run_loop_pairing, &input, took ? &by_start : NULL) : s;
 }
 
