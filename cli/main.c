@@ -15,8 +15,9 @@ const char *const cli_exit_status_help =
     "  1    internal failure: the library failed or ran out of memory, or an\n"
     "       output could not be written (DIR or its parent not writable, ...)\n"
     "  2    bad input or usage: unknown option, fewer than two inputs,\n"
-    "       unreadable or malformed input file, vertex counts that differ, a\n"
-    "       polygon that is not simple, or DIR exists and is not a directory\n"
+    "       unreadable or malformed input file, vertex counts that differ\n"
+    "       with --correspondence index, a polygon that is not simple, or DIR\n"
+    "       exists and is not a directory\n"
     "  130  interrupted\n";
 
 /* ---- subcommands --------------------------------------------------------- */

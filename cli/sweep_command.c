@@ -209,9 +209,13 @@ static void print_sweep_help(FILE *out)
           "morph --help'), stacks the sections at increasing z and joins consecutive\n"
           "sections into 6-node prisms, each checked exactly to keep a positive\n"
           "volume, and writes the volume mesh with Gmsh. Input g lies at height\n"
-          "z_g; the sections between two inputs are evenly spaced. Prisms flatter\n"
-          "than 1:10 (a triangle edge over 10 times their height) are warned about\n"
-          "on stderr: their tetrahedra cannot avoid small dihedral angles.\n"
+          "z_g; the sections between two inputs are evenly spaced. Inputs in planes\n"
+          "other than z = constant are lofted between their planes instead: every\n"
+          "node blended between its points in the planes of the inputs around it,\n"
+          "every cell checked positive in space (no --height or --heights then).\n"
+          "Prisms flatter than 1:10 (a triangle edge over 10 times their height)\n"
+          "are warned about on stderr: their tetrahedra cannot avoid small\n"
+          "dihedral angles.\n"
           "\n"
           "Options:\n", out);
     print_options(out, sweep_options, sweep_option_count);
