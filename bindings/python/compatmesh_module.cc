@@ -1759,8 +1759,11 @@ first.)doc");
   m.def("triangulate", &triangulate, py::arg("polygons"),
         R"doc(triangulate(polygons, **options) -> Result
 
-Compatibly triangulates k >= 2 simple polygons whose vertices correspond by
-index: one triangle list that is a valid triangulation of every polygon.
+Compatibly triangulates k >= 2 simple polygons, with or without holes: one
+triangle list that is a valid triangulation of every polygon. Vertices
+correspond by index (the default for equal counts), or by arc length or
+the automatic choice, which add the other polygons' points on each
+polygon's edges (correspondence below).
 
 polygons: a sequence of k arrays, each n x 2, or n x 3 for a polygon in any
     plane of 3D (fitted by least squares and mapped to 2D and back; the
