@@ -716,9 +716,97 @@ std::vector<double> morph_times(py::object t, py::object frames)
   return times;
 }
 
-bool loft_sections(py::handle polygons_in);
-py::list flat_sections(py::object polygons_in, std::vector<double> *z, const std::string &function);
-std::vector<double> loft_frames(const std::vector<Polygon> &polygons);
+// A section given in space in a plane z = constant (n x 3 arrays, every
+// loop's z one value up to the rounding of single precision, as the
+// command line's readers allow: 16 float epsilons of the coordinates'
+// size): its loops' x and y, and *z; else the object as it is and no z.
+py::object section_in_plane_z(py::handle polygon, std::size_t index, double *z, bool *has_z)
+{
+  *has_z = false;
+  py::object geometry = geo_geometry(polygon);
+  py::object object = geometry.is_none() ? py::reinterpret_borrow<py::object>(polygon) : geo_loops(geometry, index);
+  bool several = is_loop_list(object);
+  py::list flat;
+  double z0 = 0;
+  std::size_t l = 0;
+  for (py::handle loop : several ? py::iter(object) : py::iter(py::make_tuple(object))) {
+    py::array any = py::array::ensure(loop);
+    if (!any) {
+      PyErr_Clear();
+      return object;
+    }
+    FloatArray a = real_array(loop, "polygon " + std::to_string(index));
+    if (a.ndim() != 2 || a.shape(1) != 3 || a.shape(0) == 0) return object;
+    if (l++ == 0) z0 = *a.data(0, 2);
+    for (py::ssize_t i = 0; i < a.shape(0); i++) {
+      double x = *a.data(i, 0), y = *a.data(i, 1), zi = *a.data(i, 2);
+      double size = std::max(std::max(std::fabs(x), std::fabs(y)), std::max(std::fabs(zi), std::fabs(z0)));
+      if (!(std::fabs(zi - z0) <= 16 * FLT_EPSILON * size)) return object;
+    }
+    flat.append(a[py::make_tuple(py::slice(0, a.shape(0), 1), py::slice(0, 2, 1))]);
+  }
+  *z = z0, *has_z = true;
+  return several ? py::object(flat) : py::object(flat[0]);
+}
+
+// The polygons as the triangulation takes them (`function` names the call
+// in errors). Sections for a loft (every polygon an n x 3 array and not
+// all of them in planes z = constant): *loft, the polygons as given. Else
+// the polygons passed on in the plane (x, y), and *z each one's z where
+// every polygon is n x 3 in a plane z = constant (else *z empty); only
+// some of them so is an error.
+py::object placed_sections(py::object polygons_in, const std::string &function, bool *loft, std::vector<double> *z)
+{
+  py::list flat;
+  std::vector<double> own;
+  std::size_t with_z = 0;
+  bool arrays = true;  // every polygon so far an n x 3 array
+  for (py::handle polygon : polygons_in) {
+    const std::size_t index = flat.size();
+    if (arrays && (!geo_geometry(polygon).is_none() || is_loop_list(polygon))) arrays = false;
+    if (arrays) {
+      FloatArray a = real_array(polygon, "polygon " + std::to_string(index));
+      arrays = a.ndim() == 2 && a.shape(1) == 3;
+    }
+    double zg = 0;
+    bool has_z = false;
+    flat.append(section_in_plane_z(polygon, index, &zg, &has_z));
+    own.push_back(zg), with_z += has_z;
+  }
+  *loft = arrays && with_z < own.size();
+  if (*loft) return polygons_in;
+  if (with_z > 0 && with_z < own.size())
+    throw py::value_error(function + ": some polygons lie in a plane z = constant and some do not; give all of them z" +
+                          (function == "sweep" ? " or pass height / heights" : ""));
+  if (with_z > 0) *z = own;
+  return flat;
+}
+
+// The sections' own z (placed_sections) as the sweep's heights, as the
+// command line takes its inputs' z: none where they are all equal (a
+// drawing), else they must increase.
+void sweep_heights(std::vector<double> *z)
+{
+  const std::vector<double> &own = *z;
+  if (std::all_of(own.begin(), own.end(), [&](double v) { return v == own[0]; })) {
+    z->clear();
+    return;
+  }
+  for (std::size_t g = 1; g < own.size(); g++)
+    if (!(own[g] > own[g - 1]))
+      throw py::value_error("sweep: polygon " + std::to_string(g) + " lies at z = " + py::str(py::float_(own[g])).cast<std::string>() +
+                            ", not above polygon " + std::to_string(g - 1) + " at z = " +
+                            py::str(py::float_(own[g - 1])).cast<std::string>() +
+                            "; the polygons' z must increase (or pass height / heights)");
+}
+
+// The loft's frames (cm_sweep_options.frames): each polygon's plane.
+std::vector<double> loft_frames(const std::vector<Polygon> &polygons)
+{
+  std::vector<double> frames;
+  for (const Polygon &p : polygons) compatmesh::append_loft_frame(p.frame, frames);
+  return frames;
+}
 
 // The sections in space, F x nv x 3, between the polygons' planes (frames
 // as cm_sweep_options.frames takes them): at a polygon's own time
@@ -769,9 +857,9 @@ Morph morph(py::object polygons_in, py::object t, py::object frames, py::object 
   std::vector<Polygon> polygons;
   Callbacks callbacks;
   // Sections in space, or n x 3 in planes z = constant: frames between their planes.
-  const bool loft = loft_sections(polygons_in);
+  bool loft;
   std::vector<double> own_z;
-  py::object planar = loft ? polygons_in : py::object(flat_sections(polygons_in, &own_z, "morph"));
+  py::object planar = placed_sections(polygons_in, "morph", &loft, &own_z);
   ResultPtr result = run_triangulation(planar, kwargs, "morph", &polygons, &callbacks, loft);
   if (!loft) require_planar(polygons, "morph");
   ProgressRelay relay(python_progress(callbacks.progress));
@@ -819,103 +907,6 @@ Morph morph(py::object polygons_in, py::object t, py::object frames, py::object 
   return out;
 }
 
-// A section given in space in a plane z = constant (n x 3 arrays, every
-// loop's z one value up to the rounding of single precision, as the
-// command line's readers allow: 16 float epsilons of the coordinates'
-// size): its loops' x and y, and *z; else the object as it is and no z.
-py::object section_in_plane_z(py::handle polygon, std::size_t index, double *z, bool *has_z)
-{
-  *has_z = false;
-  py::object geometry = geo_geometry(polygon);
-  py::object object = geometry.is_none() ? py::reinterpret_borrow<py::object>(polygon) : geo_loops(geometry, index);
-  bool several = is_loop_list(object);
-  py::list flat;
-  double z0 = 0;
-  std::size_t l = 0;
-  for (py::handle loop : several ? py::iter(object) : py::iter(py::make_tuple(object))) {
-    py::array any = py::array::ensure(loop);
-    if (!any) {
-      PyErr_Clear();
-      return object;
-    }
-    FloatArray a = real_array(loop, "polygon " + std::to_string(index));
-    if (a.ndim() != 2 || a.shape(1) != 3 || a.shape(0) == 0) return object;
-    if (l++ == 0) z0 = *a.data(0, 2);
-    for (py::ssize_t i = 0; i < a.shape(0); i++) {
-      double x = *a.data(i, 0), y = *a.data(i, 1), zi = *a.data(i, 2);
-      double size = std::max(std::max(std::fabs(x), std::fabs(y)), std::max(std::fabs(zi), std::fabs(z0)));
-      if (!(std::fabs(zi - z0) <= 16 * FLT_EPSILON * size)) return object;
-    }
-    flat.append(a[py::make_tuple(py::slice(0, a.shape(0), 1), py::slice(0, 2, 1))]);
-  }
-  *z = z0, *has_z = true;
-  return several ? py::object(flat) : py::object(flat[0]);
-}
-
-// The polygons passed on in the plane (x, y), and *z each one's z where
-// every polygon is n x 3 in a plane z = constant (else *z empty); only
-// some of them so is an error of `function`'s.
-py::list flat_sections(py::object polygons_in, std::vector<double> *z, const std::string &function)
-{
-  py::list flat;
-  std::vector<double> own;
-  std::size_t with_z = 0;
-  for (py::handle polygon : polygons_in) {
-    double zg = 0;
-    bool has_z = false;
-    flat.append(section_in_plane_z(polygon, flat.size(), &zg, &has_z));
-    own.push_back(zg), with_z += has_z;
-  }
-  if (with_z > 0 && with_z < own.size())
-    throw py::value_error(function + ": some polygons lie in a plane z = constant and some do not; give all of them z" +
-                          (function == "sweep" ? " or pass height / heights" : ""));
-  if (with_z > 0) *z = own;
-  return flat;
-}
-
-// The sections' own z as heights, when every polygon gives one (n x 3 in a
-// plane z = constant) and they differ, as the command line takes its
-// inputs' z; the polygons passed on in the plane (x, y).
-py::list sections_own_z(py::object polygons_in, std::vector<double> *z)
-{
-  std::vector<double> own;
-  py::list flat = flat_sections(polygons_in, &own, "sweep");
-  if (own.empty() || std::all_of(own.begin(), own.end(), [&](double v) { return v == own[0]; })) return flat;
-  for (std::size_t g = 1; g < own.size(); g++)
-    if (!(own[g] > own[g - 1]))
-      throw py::value_error("sweep: polygon " + std::to_string(g) + " lies at z = " + py::str(py::float_(own[g])).cast<std::string>() +
-                            ", not above polygon " + std::to_string(g - 1) + " at z = " +
-                            py::str(py::float_(own[g - 1])).cast<std::string>() +
-                            "; the polygons' z must increase (or pass height / heights)");
-  *z = own;
-  return flat;
-}
-
-// Sections for a loft: every polygon an n x 3 array and not all of them in
-// planes z = constant (those sweep between their own z).
-bool loft_sections(py::handle polygons_in)
-{
-  bool tilted = false;
-  std::size_t index = 0;
-  for (py::handle polygon : polygons_in) {
-    if (!geo_geometry(polygon).is_none() || is_loop_list(polygon)) return false;
-    FloatArray a = real_array(polygon, "polygon " + std::to_string(index));
-    if (a.ndim() != 2 || a.shape(1) != 3) return false;
-    double z = 0;
-    bool has_z = false;
-    section_in_plane_z(polygon, index++, &z, &has_z);
-    tilted |= !has_z;
-  }
-  return tilted;
-}
-
-// The loft's frames (cm_sweep_options.frames): each polygon's plane.
-std::vector<double> loft_frames(const std::vector<Polygon> &polygons)
-{
-  std::vector<double> frames;
-  for (const Polygon &p : polygons) compatmesh::append_loft_frame(p.frame, frames);
-  return frames;
-}
 
 Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::object heights,
                bool tets, py::object wall_corner_deg, bool ruled, py::kwargs kwargs)
@@ -947,11 +938,12 @@ Sweep sweep(py::object polygons_in, py::object sections, py::object height, py::
   // the second section, each next on the side of the one before and each
   // plane's axes carried from the one before (compatmesh::align_frames: a
   // section listed the other way round then runs clockwise in its plane).
-  const bool loft = loft_sections(polygons_in);
+  bool loft;
+  std::vector<double> own;  // the sections' own z, when they give them
+  py::object planar = placed_sections(polygons_in, "sweep", &loft, &own);
   if (loft && !(height.is_none() && heights.is_none()))
     throw py::value_error("sweep: the polygons lie in planes of space, which place them: give no height or heights");
-  std::vector<double> own;  // the sections' own z, when they give them
-  py::object planar = loft ? polygons_in : sections_own_z(polygons_in, &own);
+  sweep_heights(&own);
   if (heights.is_none() && height.is_none() && !own.empty()) z = own;
   std::vector<Polygon> polygons;
   Callbacks callbacks;
