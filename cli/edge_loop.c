@@ -25,15 +25,18 @@ static int in_plane_z(double x, double y, double z, double z0)
     return fabs(z - z0) <= 16 * FLT_EPSILON * scale;
 }
 
+void plane_z_note(plane_z *plane, double x, double y, double z, int given, long where)
+{
+    plane->given |= given;
+    if (!plane->started) plane->z = z, plane->where = where, plane->started = 1;
+    else if (!in_plane_z(x, y, z, plane->z)) plane->off = 1;
+}
+
 int plane_z_take(plane_z *plane, double x, double y, double z, int given, const char *path, long where,
                  cli_error *error)
 {
-    plane->given |= given;
-    if (!plane->started) {
-        plane->z = z, plane->where = where, plane->started = 1;
-        return CLI_EXIT_OK;
-    }
-    if (in_plane_z(x, y, z, plane->z)) return CLI_EXIT_OK;
+    plane_z_note(plane, x, y, z, given, where);
+    if (!plane->off) return CLI_EXIT_OK;
     if (plane->by_index)
         cli_error_set(error, "%s: vertex %ld: z = %.17g differs from z = %.17g of vertex %ld; "
                       "the polygon must lie in a plane z = constant", path, where, z, plane->z, plane->where);
@@ -41,13 +44,6 @@ int plane_z_take(plane_z *plane, double x, double y, double z, int given, const 
         cli_error_set(error, "%s:%ld: z = %.17g differs from z = %.17g on line %ld; "
                       "the polygon must lie in a plane z = constant", path, where, z, plane->z, plane->where);
     return CLI_EXIT_USAGE;
-}
-
-void plane_z_note(plane_z *plane, double x, double y, double z, int given, long where)
-{
-    plane->given |= given;
-    if (!plane->started) plane->z = z, plane->where = where, plane->started = 1;
-    else if (!in_plane_z(x, y, z, plane->z)) plane->off = 1;
 }
 
 /* Twice the area of the loop of m vertices: in the plane z = 0, signed,
