@@ -512,8 +512,9 @@ static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *de
 /* The pairings auto has for polygons without holes (and outer loops):
  * the conformal parameter or the similarity choice, whichever allows the
  * higher ceiling (the first run); or one of them taken as it is (the
- * rescues, pairing_rescue). */
-enum pairing_kind { PAIRING_BY_CEILING, PAIRING_CONFORMAL, PAIRING_SIMILARITY };
+ * rescues, pairing_rescue). Outer loops also have arc length from the
+ * similarity's start, fitted to the outer loops alone (LOOP_BY_START). */
+enum pairing_kind { PAIRING_BY_CEILING, PAIRING_CONFORMAL, PAIRING_SIMILARITY, PAIRING_BY_START };
 typedef struct auto_pairing {
     enum pairing_kind kind;
     int linear;   /* the conformal parameter read linearly between each polygon's vertices, not along every edge */
@@ -588,7 +589,8 @@ static cm_status auto_whole(cm_result *r, const double *const *polygons, const s
  * polygons with holes (auto chooses as for whole polygons, the outer loop
  * filled standing for each: the conformal correspondence sees where the
  * parts of the outline are, arc length from a start does not), or loops
- * paired from a start alone (holes, and outer loops in outer_rescue). */
+ * paired from a start alone (holes, and outer loops in a rescue:
+ * PAIRING_BY_START). */
 enum loop_kind { LOOP_WHOLE, LOOP_OUTER, LOOP_BY_START };
 
 /* The boundaries in correspondence for CM_CORRESPOND_ARCLENGTH and _AUTO,
@@ -983,7 +985,10 @@ static cm_status rescue_restart(cm_result **result, const cm_options *o, rescue_
  * polygon's stroke ends between the other's (URW Bookman V against W at
  * 160 vertices: 10.7 degrees, 17.7 with the tips pinned) only pins put
  * them together; it ends far lower wherever the corners differ, so it
- * comes last and is kept only where better (bench/CORRESPONDENCE.md). */
+ * comes last and is kept only where better (bench/CORRESPONDENCE.md).
+ * Polygons with holes take the same rescues for their outer loops, after
+ * arc length from the similarity's start (PAIRING_BY_START;
+ * run_loop_pairing says why). */
 typedef struct polygon_input {
     const double *const *polygons;
     const size_t *counts;
@@ -995,6 +1000,14 @@ static cm_status run_pairing(cm_result *again, const void *input, const cm_optio
     const polygon_input *in = input;
     return run_arclength(again, in->polygons, in->counts, in->k, o, NULL, *(const auto_pairing *)pairing);
 }
+
+/* What the rescues remesh: run (taking an auto_pairing) on input; holes:
+ * the input has holes (then PAIRING_BY_START is one of its pairings). */
+typedef struct rescue_input {
+    rescue_run run;
+    const void *input;
+    int holes;
+} rescue_input;
 
 /* The powers read along every edge run so far, and where each ended (the
  * smallest angle after the polish; -1 where the run failed). */
@@ -1012,7 +1025,7 @@ static void power_ran(power_runs *runs, double power, double angle)
 /* The tempering power searched further on a near miss (CM_POWER_SEARCH_FROM
  * says why); *kept and *kept_options become the pairing kept, if the
  * search keeps one. */
-static cm_status power_search(cm_result **result, const cm_options *o, const polygon_input *input, power_runs *runs,
+static cm_status power_search(cm_result **result, const cm_options *o, const rescue_input *in, power_runs *runs,
                               const auto_pairing **kept, const cm_options **kept_options)
 {
     static const double beyond[] = {CM_RESCUE_POWER_MORE + CM_POWER_SEARCH_STEP,
@@ -1042,27 +1055,26 @@ static cm_status power_search(cm_result **result, const cm_options *o, const pol
         *pairing = (auto_pairing){PAIRING_CONFORMAL, 0, p};
         double ended;
         int took;
-        s = rescue_try(result, o, run_pairing, input, pairing, &took, &ended);
+        s = rescue_try(result, o, in->run, in->input, pairing, &took, &ended);
         if (took) *kept = pairing, *kept_options = o;
         power_ran(runs, p, ended);
     }
     return s;
 }
 
-static cm_status pairing_rescue(cm_result **result, const double *const *polygons, const size_t *counts, size_t k,
-                                const cm_options *o)
+static cm_status pairing_rescue(cm_result **result, const cm_options *o, const rescue_input *in)
 {
     cm_correspondence_choice first = (*result)->stats.correspondence_choice;
     if (first != CM_CHOICE_CONFORMAL && first != CM_CHOICE_SIMILARITY) return CM_OK;
     static const struct {
         auto_pairing pairing;
         double share;
-    } others[] = {{{PAIRING_CONFORMAL, 1, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
+    } others[] = {{{PAIRING_BY_START, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
+                  {{PAIRING_CONFORMAL, 1, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 0, CM_RESCUE_POWER_MORE}, CM_POWER_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_SIMILARITY, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 0, CM_RESCUE_POWER_LESS}, CM_PAIRING_RESCUE_SHARE}};
-    const polygon_input input = {polygons, counts, k};
     const auto_pairing *kept = NULL; /* the rescue's pairing *result is, if any */
     cm_status s = CM_OK;
     int took;
@@ -1073,10 +1085,11 @@ static cm_status pairing_rescue(cm_result **result, const double *const *polygon
         if (!rescue_wanted(*result, o, others[i].share) ||
             (p->kind == PAIRING_CONFORMAL && !p->linear && p->power == CM_CONFORMAL_POWER &&
              first == CM_CHOICE_CONFORMAL) ||
-            (p->kind == PAIRING_SIMILARITY && first == CM_CHOICE_SIMILARITY))
-            continue; /* not wanted, or the first run's */
+            (p->kind == PAIRING_SIMILARITY && first == CM_CHOICE_SIMILARITY) ||
+            (p->kind == PAIRING_BY_START && (!in->holes || first != CM_CHOICE_CONFORMAL)))
+            continue; /* not wanted, not the input's, or the first run's */
         double ended;
-        s = rescue_try(result, o, run_pairing, &input, p, &took, &ended);
+        s = rescue_try(result, o, in->run, in->input, p, &took, &ended);
         if (took) kept = p;
         if (p->kind == PAIRING_CONFORMAL && !p->linear) power_ran(&runs, p->power, ended);
     }
@@ -1085,11 +1098,11 @@ static cm_status pairing_rescue(cm_result **result, const double *const *polygon
     const cm_options *kept_options = o;
     if (s == CM_OK && rescue_wanted(*result, o, CM_PAIRING_RESCUE_SHARE)) {
         /* a polygon without such a corner fails this run alone */
-        s = rescue_try(result, &cornered, run_pairing, &input, &by_ceiling, &took, NULL);
+        s = rescue_try(result, &cornered, in->run, in->input, &by_ceiling, &took, NULL);
         if (took) kept = &by_ceiling, kept_options = &cornered;
     }
-    if (s == CM_OK) s = power_search(result, o, &input, &runs, &kept, &kept_options);
-    return s == CM_OK ? rescue_restart(result, kept_options, run_pairing, &input, kept) : s;
+    if (s == CM_OK) s = power_search(result, o, in, &runs, &kept, &kept_options);
+    return s == CM_OK ? rescue_restart(result, kept_options, in->run, in->input, kept) : s;
 }
 
 /* The memos of one call, for what an auto run asks more than once. */
@@ -1119,8 +1132,10 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
     if (s == CM_OK) s = check_correspondence_options(r, options);
     memos_start(r, options);
     if (s == CM_OK && options->correspondence != CM_CORRESPOND_INDEX) {
+        const polygon_input input = {polygons, counts, k};
+        const rescue_input rescue = {run_pairing, &input, 0};
         s = run_arclength(r, polygons, counts, k, options, NULL, by_ceiling);
-        if (s == CM_OK) s = pairing_rescue(result, polygons, counts, k, options);
+        if (s == CM_OK) s = pairing_rescue(result, options, &rescue);
     } else if (s == CM_OK && options->max_edge > 0)
         s = run_index_split(r, polygons, counts, k, options);
     else if (s == CM_OK)
@@ -1423,7 +1438,7 @@ done:
  * (the edge from a vertex to the next of its loop); with remeshing the
  * remesher may split the loops' edges there too (loop_edge_between). */
 static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, size_t k, const cm_options *o,
-                                     enum loop_kind outer)
+                                     enum loop_kind outer, auto_pairing pairing)
 {
     if (o->num_pins)
         return cm_fail(&r->error, CM_ERR_ARGUMENT,
@@ -1489,7 +1504,7 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
             s = cm_correspond_choose_hole_starts(lxy, lcount, k, lorientation, &maps[0], similarity, hole_starts,
                                                  &r->error);
         if (s == CM_OK)
-            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_BY_START : outer, by_ceiling,
+            s = correspond_boundary(r, lxy, lcount, k, lorientation, o, every, l ? LOOP_BY_START : outer, pairing,
                                     joint && l ? hole_starts : NULL, l ? NULL : polygons, &maps[l], &unused_ceiling,
                                     &loop_choice);
         if (l == 0) r->stats.correspondence_choice = loop_choice; /* the outer loop's (cm_stats) */
@@ -1559,12 +1574,13 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
     return s;
 }
 
-/* Auto with holes pairs the outer loops as polygons without holes; where
- * the result ends below CM_PAIRING_RESCUE_SHARE of the remesher's aim, the
- * outer loops are also paired by the similarity's start (the hole starts,
- * chosen under the outer loops' similarity, may fit one pairing of the
- * outer loops and not the other: a conformal pairing of the filled
- * outlines knows nothing of the holes) and the better result is kept. */
+/* Auto with holes pairs the outer loops as polygons without holes, and
+ * where the result ends short of its aim takes the same rescues
+ * (pairing_rescue), first arc length from the similarity's start
+ * (PAIRING_BY_START): the hole starts, chosen under the outer loops'
+ * similarity, may fit one pairing of the outer loops and not the other,
+ * since a conformal pairing of the filled outlines knows nothing of the
+ * holes. */
 typedef struct loop_input {
     const cm_loops *polygons;
     size_t k;
@@ -1573,19 +1589,9 @@ typedef struct loop_input {
 static cm_status run_loop_pairing(cm_result *again, const void *input, const cm_options *o, const void *pairing)
 {
     const loop_input *in = input;
-    return run_loops_arclength(again, in->polygons, in->k, o, *(const enum loop_kind *)pairing);
-}
-
-static cm_status outer_rescue(cm_result **result, const cm_loops *polygons, size_t k, const cm_options *o)
-{
-    static const enum loop_kind by_start = LOOP_BY_START;
-    if ((*result)->stats.correspondence_choice != CM_CHOICE_CONFORMAL ||
-        !rescue_wanted(*result, o, CM_PAIRING_RESCUE_SHARE))
-        return CM_OK;
-    const loop_input input = {polygons, k};
-    int took;
-    cm_status s = rescue_try(result, o, run_loop_pairing, &input, &by_start, &took, NULL);
-    return s == CM_OK ? rescue_restart(result, o, run_loop_pairing, &input, took ? &by_start : NULL) : s;
+    const auto_pairing *p = pairing;
+    return p->kind == PAIRING_BY_START ? run_loops_arclength(again, in->polygons, in->k, o, LOOP_BY_START, by_ceiling)
+                                       : run_loops_arclength(again, in->polygons, in->k, o, LOOP_OUTER, *p);
 }
 
 cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_options *options,
@@ -1616,10 +1622,12 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
     if (s == CM_OK) s = check_remesh_options(r, options);
     if (s == CM_OK) s = check_correspondence_options(r, options);
     memos_start(r, options);
+    const loop_input input = {polygons, k};
+    const rescue_input rescue = {run_loop_pairing, &input, 1};
     if (s == CM_OK && (options->correspondence != CM_CORRESPOND_INDEX || options->max_edge > 0))
-        s = run_loops_arclength(r, polygons, k, options, LOOP_OUTER);
+        s = run_loops_arclength(r, polygons, k, options, LOOP_OUTER, by_ceiling);
     else if (s == CM_OK) s = run_loops(r, polygons, k, NULL, options);
-    if (s == CM_OK) s = outer_rescue(result, polygons, k, options);
+    if (s == CM_OK) s = pairing_rescue(result, options, &rescue);
     r = *result;
     memos_end(r);
     if (s != CM_OK) cm_result_clear_geometry(r);
