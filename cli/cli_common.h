@@ -37,6 +37,15 @@ static inline void cli_error_set(cli_error *error, const char *format, ...)
     va_end(args);
 }
 
+/* Does strtod read text as a hexadecimal number ("0x10", "-0X1p3")? Input
+ * files write decimals: there a hexadecimal is a typo, not a number. */
+static inline int cli_is_hexadecimal(const char *text)
+{
+    while (*text == ' ' || *text == '\t') text++;
+    if (*text == '+' || *text == '-') text++;
+    return text[0] == '0' && (text[1] == 'x' || text[1] == 'X');
+}
+
 /* Length of the well-formed UTF-8 sequence starting at text (at most
  * `available` bytes), or 0 if the bytes there are not valid UTF-8. File names
  * can hold any bytes; JSON and XML readers reject malformed UTF-8. */

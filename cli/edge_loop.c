@@ -28,13 +28,27 @@ static int in_plane_z(double x, double y, double z, double z0)
 void plane_z_note(plane_z *plane, double x, double y, double z, int given, long where)
 {
     plane->given |= given;
-    if (!plane->started) plane->z = z, plane->where = where, plane->started = 1;
+    if (!plane->started) plane->z = z, plane->where = where, plane->started = 1, plane->first_given = given;
     else if (!in_plane_z(x, y, z, plane->z)) plane->off = 1;
+}
+
+int plane_z_same_columns(const plane_z *plane, int given, const char *path, long where, cli_error *error)
+{
+    if (!plane->started || !given == !plane->first_given) return CLI_EXIT_OK;
+    const char *here = given ? "a z here" : "no z here", *first = given ? "gives none" : "gives one";
+    if (plane->by_index)
+        cli_error_set(error, "%s: vertex %ld: %s, while vertex %ld %s; give z on every vertex or on none", path,
+                      where, here, plane->where, first);
+    else
+        cli_error_set(error, "%s:%ld: %s, while line %ld %s; give z on every line or on none", path, where, here,
+                      plane->where, first);
+    return CLI_EXIT_USAGE;
 }
 
 int plane_z_take(plane_z *plane, double x, double y, double z, int given, const char *path, long where,
                  cli_error *error)
 {
+    if (plane_z_same_columns(plane, given, path, where, error)) return CLI_EXIT_USAGE;
     plane_z_note(plane, x, y, z, given, where);
     if (!plane->off) return CLI_EXIT_OK;
     if (plane->by_index)

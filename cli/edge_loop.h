@@ -21,6 +21,7 @@ typedef struct plane_z {
     long where;  /* the first vertex's line or index */
     int started; /* a vertex was taken */
     int given;   /* some vertex gave z */
+    int first_given; /* the first vertex gave z */
     int by_index;
     int off;     /* plane_z_note: some vertex left the plane (a section in another plane) */
 } plane_z;
@@ -35,6 +36,12 @@ int plane_z_take(plane_z *plane, double x, double y, double z, int given, const 
 /* The same without an error: notes whether the vertex leaves the plane
  * (plane->off), for readers that take sections in any plane. */
 void plane_z_note(plane_z *plane, double x, double y, double z, int given, long where);
+
+/* Does a vertex read at `where` give z (given) as the first vertex did?
+ * A line without z among lines with one is a typo, which read as z = 0
+ * would be blamed on the plane. CLI_EXIT_OK, or CLI_EXIT_USAGE with
+ * "PATH:LINE: no z here, while line L gives one; ...". */
+int plane_z_same_columns(const plane_z *plane, int given, const char *path, long where, cli_error *error);
 
 /* A ring's vertex count without its closing repeat: size - 1 where the
  * last of its size vertices (stride doubles each, all compared) repeats

@@ -11,12 +11,15 @@
 
 volatile sig_atomic_t interrupted;
 volatile sig_atomic_t writing_output;
+const char *volatile output_temporary;
 
 /* The core polls its progress callback in every long loop, so a run
  * normally ends within a fraction of a second of the signal; should one
  * step not poll in time, the watchdog ends the process WATCHDOG_NS after
  * the signal, unless output is being written (the writers check
- * `interrupted` between files and remove what they staged). */
+ * `interrupted` between files and remove what they staged), or then
+ * where the output is one temporary file a library is writing, which it
+ * removes first. */
 #define WATCHDOG_NS 600000000L
 
 static timer_t watchdog;
@@ -25,7 +28,11 @@ static int have_watchdog;
 static void on_watchdog(int signal_number)
 {
     (void)signal_number;
-    if (writing_output) return;
+    if (writing_output) {
+        const char *temporary = output_temporary;
+        if (!temporary) return;
+        unlink(temporary);
+    }
     static const char erase[] = "\r\033[K", message[] = "compatmesh: interrupted; nothing written\n";
     ssize_t written = progress_line_shown ? write(STDERR_FILENO, erase, sizeof erase - 1) : 0;
     written = write(STDERR_FILENO, message, sizeof message - 1);

@@ -9,6 +9,10 @@
 extern volatile sig_atomic_t interrupted;
 /* Set while a staged output is open (outdir.c): the watchdog waits. */
 extern volatile sig_atomic_t writing_output;
+/* While a library writes one temporary file and polls no flag (Gmsh's
+ * writers, write_volume.c): its path, which the watchdog removes before
+ * it ends the process, so a long write stops within a second too. */
+extern const char *volatile output_temporary;
 
 void catch_interrupts(void);
 

@@ -163,7 +163,8 @@ static int read_value(ply_reader *r, ply_type t, double *value)
         char *end;
         errno = 0;
         double v = strtod(token, &end);
-        if (end == token || *end || !isfinite(v) || (t != T_F32 && t != T_F64 && v != floor(v))) {
+        if (end == token || *end || cli_is_hexadecimal(token) || !isfinite(v) ||
+            (t != T_F32 && t != T_F64 && v != floor(v))) {
             cli_error_set(r->error, "%s:%ld: '%s' is not %s", r->path, r->line, token,
                           t == T_F32 || t == T_F64 ? "a finite number" : "an integer");
             return -2;

@@ -193,7 +193,7 @@ static int parse_coordinate(const char *field, double *value, const char *path,
     char *end;
     errno = 0;
     double parsed = strtod(field, &end);
-    if (end == field || *end != '\0') {
+    if (end == field || *end != '\0' || cli_is_hexadecimal(field)) {
         cli_error_set(error, "%s:%ld: '%s' is not a number", path, line,
                       quote_token(field, 40, shown, sizeof shown));
         return -1;
@@ -326,6 +326,7 @@ static int visit_xy_line(char *line, long number, void *opaque)
         parse_coordinate(fields[1], &y, state->path, number, state->error) ||
         (count == 3 && parse_coordinate(fields[2], &z, state->path, number, state->error)))
         return CLI_EXIT_USAGE;
+    if (plane_z_same_columns(&state->plane, count == 3, state->path, number, state->error)) return CLI_EXIT_USAGE;
     plane_z_note(&state->plane, x, y, z, count == 3, number);
     if (state->vertices.count == state->loop_first) state->loop_line = number;
     if (vertex_list_push(&state->vertices, x, y, z, number)) {
@@ -384,6 +385,7 @@ static int obj_vertex(obj_state *state, char **fields, int count, long number)
         parse_coordinate(fields[2], &y, state->path, number, state->error) ||
         (count == 4 && parse_coordinate(fields[3], &z, state->path, number, state->error)))
         return CLI_EXIT_USAGE;
+    if (plane_z_same_columns(&state->plane, count == 4, state->path, number, state->error)) return CLI_EXIT_USAGE;
     plane_z_note(&state->plane, x, y, z, count == 4, number);
     if (vertex_list_push(&state->vertices, x, y, z, number)) {
         cli_error_set(state->error, "%s: out of memory", state->path);
@@ -534,6 +536,10 @@ int parse_polygon_text(const char *path, char *text, size_t length,
 {
     memset(polygon, 0, sizeof *polygon);
     int code;
+    /* A UTF-8 byte order mark, as Notepad and spreadsheets' "CSV UTF-8"
+     * write text, is not part of the first line (read as such, it hid an
+     * OBJ file's first vertex and shifted every index after it). */
+    if (!has_extension(path, ".ply") && length >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0) text += 3, length -= 3;
     const char *nul = memchr(text, '\0', length);
     if (has_extension(path, ".ply")) {
         code = parse_ply(path, text, length, polygon, error);

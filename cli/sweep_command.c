@@ -289,7 +289,10 @@ static int check_output(const char *path, cli_error *error)
     }
     struct stat info;
     int code = CLI_EXIT_OK;
-    if (stat(dir, &info) != 0 || !S_ISDIR(info.st_mode)) {
+    if (stat(dir, &info) != 0) {
+        cli_error_set(error, "cannot write %s: %s: %s", path, dir, strerror(errno));
+        code = CLI_EXIT_INTERNAL;
+    } else if (!S_ISDIR(info.st_mode)) {
         cli_error_set(error, "cannot write %s: %s is not a directory", path, dir);
         code = CLI_EXIT_INTERNAL;
     } else if (access(dir, W_OK | X_OK) != 0) {

@@ -113,8 +113,10 @@ int write_volume(const char *path, const volume_mesh *mesh, const volume_format 
         writing_output = 0;
         return CLI_EXIT_INTERNAL;
     }
+    output_temporary = temporary;
     int code = strcasecmp(extension, "vtu") == 0 ? write_vtu(temporary, path, mesh, error)
                                                  : write_with_gmsh(temporary, path, mesh, format, error);
+    output_temporary = NULL;
     if (code == CLI_EXIT_OK && interrupted) {
         cli_error_set(error, "interrupted; nothing written");
         code = CLI_EXIT_INTERRUPTED;

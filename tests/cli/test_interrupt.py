@@ -33,6 +33,19 @@ def big_pair(tmp_path_factory):
     return a, b
 
 
+def signal_and_wait(process, signum):
+    """Sends the signal; the process must end within a second. Its stderr."""
+    sent = time.monotonic()
+    process.send_signal(signum)
+    try:
+        _, stderr = process.communicate(timeout=20)
+    finally:
+        process.kill()
+    took = time.monotonic() - sent
+    assert took < 1.0, f"ended {took:.2f} s after the signal"
+    return stderr
+
+
 MOMENTS = random.Random(20261124).sample([0.05 * i for i in range(1, 60)], 6)
 
 
@@ -44,14 +57,7 @@ def test_signal_ends_run_within_a_second(compatmesh_path, big_pair, tmp_path, mo
                                 "--out-dir", str(out)],
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, encoding="utf-8")
     time.sleep(moment)
-    sent = time.monotonic()
-    process.send_signal(signum)
-    try:
-        _, stderr = process.communicate(timeout=10)
-    finally:
-        process.kill()
-    took = time.monotonic() - sent
-    assert took < 1.0, f"ended {took:.2f} s after the signal"
+    stderr = signal_and_wait(process, signum)
     if process.returncode == -signum:  # before the handlers were installed
         assert stderr == ""
     else:
@@ -59,3 +65,24 @@ def test_signal_ends_run_within_a_second(compatmesh_path, big_pair, tmp_path, mo
         assert stderr.strip().splitlines() == ["compatmesh: interrupted; nothing written"]
     assert not out.exists()
     assert [p for p in os.listdir(tmp_path) if p != "out"] == []
+
+
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGTERM], ids=["SIGINT", "SIGTERM"])
+def test_signal_while_gmsh_writes(compatmesh_path, tmp_path, signum):
+    """A sweep's .msh is written by Gmsh, which polls no flag (about 2 s for
+    the 120 MB here): a signal once its temporary file exists still ends
+    the run within a second (3.7 s before), and removes that file."""
+    star(tmp_path / "a.xy", 2000, 0.6, 0)
+    star(tmp_path / "b.xy", 2000, 0.3, 3)
+    process = subprocess.Popen([compatmesh_path, "sweep", "a.xy", "b.xy", "-o", "out.msh", "--sections", "400"],
+                               cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE, encoding="utf-8")
+    writing = lambda: any(name.startswith(".out.compatmesh-") for name in os.listdir(tmp_path))  # noqa: E731
+    started = time.monotonic()
+    while process.poll() is None and not writing() and time.monotonic() - started < 60:
+        time.sleep(0.005)
+    assert process.poll() is None, "the sweep ended before it wrote"
+    time.sleep(0.1)
+    stderr = signal_and_wait(process, signum)
+    assert process.returncode == 130, stderr
+    assert stderr.strip().splitlines()[-1] == "compatmesh: interrupted; nothing written"
+    assert sorted(os.listdir(tmp_path)) == ["a.xy", "b.xy"]

@@ -493,6 +493,8 @@ def test_heights_of_three_inputs(cm, tmp_path):
                        "one of msh, vtk, vtu, inp (Abaqus), bdf (Nastran), unv\n"),
     (("-o", "blocker/out.msh"), 1, "compatmesh: cannot write blocker/out.msh: blocker is not "
                                    "a directory\n"),
+    (("-o", "missing/out.msh"), 1, "compatmesh: cannot write missing/out.msh: missing: No such file or "
+                                   "directory\n"),
     (("-o", "out.msh", "--heights", "0,1,2"), 2,
      "compatmesh: sweep: --heights gives 3 heights for 2 inputs\n"),
     (("-o", "out.msh", "--heights", "1,1"), 2,

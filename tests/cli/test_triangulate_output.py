@@ -327,6 +327,28 @@ def test_header_line_skipped(cm, tmp_path):
         assert (tmp_path / "out" / name).read_bytes() == (tmp_path / "plain_out" / name).read_bytes()
 
 
+@pytest.mark.parametrize("name, text", [
+    ("a.xy", "".join(f"{x!r} {y!r}\n" for x, y in KITE)),
+    ("a.csv", "x,y\n" + "".join(f"{x!r},{y!r}\n" for x, y in KITE)),
+    ("a.obj", "".join(f"v {x!r} {y!r} 0\n" for x, y in KITE) + "l 1 2 3 4 1\n"),
+    ("a.geojson", json.dumps({"type": "Polygon", "coordinates": [[list(p) for p in KITE + KITE[:1]]]})),
+])
+def test_byte_order_mark_skipped(cm, tmp_path, name, text):
+    """A UTF-8 byte order mark before a text file (Notepad, spreadsheets'
+    "CSV UTF-8") is not part of its first line: the run is byte-identical
+    to the one without it (before, an OBJ file lost its first vertex and
+    every 'l' index named the next one)."""
+    write_xy(tmp_path / "b.xy", SQUARE)
+    for folder, mark in (("plain", b""), ("marked", b"\xef\xbb\xbf")):
+        (tmp_path / folder).mkdir()
+        (tmp_path / folder / name).write_bytes(mark + text.encode())
+        result = cm("triangulate", f"{folder}/{name}", "b.xy", "--out-dir", f"{folder}_out")
+        assert result.returncode == 0, result.stderr
+    check_success(tmp_path, result, {f"marked/{name}": KITE, "b.xy": SQUARE}, out="marked_out")
+    for mesh in ("a.off", "b.off"):
+        assert (tmp_path / "marked_out" / mesh).read_bytes() == (tmp_path / "plain_out" / mesh).read_bytes()
+
+
 def test_clockwise_inputs_are_reversed(cm, tmp_path):
     a, b = star(10, seed=3, clockwise=True), star(10, seed=4, clockwise=True)
     write_xy(tmp_path / "a.xy", a)
