@@ -152,9 +152,6 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   }
   progress.report(1.0, "done");
 
-  cm_quality q[2];
-  cm_result_quality(r, 0, &q[0]);
-  cm_result_quality(r, 1, &q[1]);
   outcome.log.push_back(std::string("correspondence: ") + correspondence_name(settings.correspondence) +
                         ", made: " + cm_correspondence_choice_name(stats->correspondence_choice) + " (" +
                         std::to_string(polygons[0].size()) + " and " +
@@ -168,8 +165,11 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
                         std::to_string(stats->steiner) + " Steiner vertices (vertex quality 1), " +
                         std::to_string(nt) + " triangles" +
                         (stats->holes ? ", " + std::to_string(stats->holes) + (stats->holes == 1 ? " hole" : " holes") : std::string()));
-  outcome.log.push_back("smallest angle: " + degrees(q[0].min_angle_deg) + " deg in '" + first_name +
-                        "', " + degrees(q[1].min_angle_deg) + " deg in '" + second_name + "'");
+  // The layers' own (their float points), which the user measures.
+  outcome.log.push_back("smallest angle: " + degrees(float_min_angle_deg(outcome.layers[0].xyz, triangles)) +
+                        " deg in '" + first_name + "', " +
+                        degrees(float_min_angle_deg(outcome.layers[1].xyz, triangles)) + " deg in '" + second_name +
+                        "'");
   if (stats->holes_moved > 0)
     outcome.log.push_back("holes paired by position: " + std::to_string(stats->holes_moved) + " of '" + second_name +
                           "' pair with a hole listed at another place in '" + first_name + "'");

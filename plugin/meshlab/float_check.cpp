@@ -2,6 +2,9 @@
 
 #include <compatmesh/compatmesh.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace compatmesh_plugin {
 
 std::vector<float> round_to_float(const std::vector<double> &xyz)
@@ -28,6 +31,23 @@ std::string check_float_geometry(const std::vector<float> &xyz, const std::vecto
     case CM_ERR_NOT_FINITE: return "vertex " + w + " is not finite";
     default: return std::string("check failed: ") + cm_status_string(status);
   }
+}
+
+double float_min_angle_deg(const std::vector<float> &xyz, const std::vector<int32_t> &triangles)
+{
+  double least = 180;
+  for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
+    for (int c = 0; c < 3; c++) {
+      const float *a = &xyz[3 * std::size_t(triangles[t + c])], *b = &xyz[3 * std::size_t(triangles[t + (c + 1) % 3])],
+                  *d = &xyz[3 * std::size_t(triangles[t + (c + 2) % 3])];
+      double u[3], v[3];
+      for (int k = 0; k < 3; k++) u[k] = double(b[k]) - a[k], v[k] = double(d[k]) - a[k];
+      const double cross[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      const double dot = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+      least = std::min(least, std::atan2(std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]),
+                                         dot) * 180.0 / M_PI);
+    }
+  return least;
 }
 
 }  // namespace compatmesh_plugin

@@ -28,6 +28,12 @@ std::string check_float_geometry(const std::vector<float> &xyz, const std::vecto
                                  const compatmesh::PlaneFrame &frame,
                                  const std::vector<int32_t> &triangles);
 
+// The smallest angle (degrees) of the triangles as MeshLab stores them:
+// the float points, in space, each angle atan2(|u x v|, u . v) in double.
+// Where edges are a few float units long the rounding moves it by degrees
+// from the double result's.
+double float_min_angle_deg(const std::vector<float> &xyz, const std::vector<int32_t> &triangles);
+
 }  // namespace compatmesh_plugin
 
 #endif

@@ -134,7 +134,9 @@ SweptVolume swept_volume(SectionMorph &morph, int sections)
   cm_sweep *sweep = nullptr;
   cm_status s = cm_sweep_create(morph.morph_.get(), &options, &sweep);
   compatmesh::SweepPtr owned(sweep);
-  if (s != CM_OK) throw FilterError(std::string("the volume: ") + cm_sweep_message(sweep) + "; nothing was written");
+  if (s != CM_OK)
+    throw FilterError(std::string("the swept volume between the layers: ") + cm_sweep_message(sweep) +
+                      "; nothing was added or written");
   SweptVolume volume;
   const std::size_t count = cm_sweep_num_nodes(sweep);
   volume.nodes.assign(cm_sweep_nodes(sweep), cm_sweep_nodes(sweep) + 3 * count);
@@ -213,7 +215,14 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
   for (std::size_t i = 0; i < reindexed.size(); i++) reindexed[i] = position[g0.triangles[i]];
   SectionMorph morph(g0.xyz, g1.xyz, g0.triangles, loop.source_vertex, loop.loop_sizes, first_name, second_name);
   const std::size_t outer = loop.loop_sizes[0];
-  progress.report(0.1, "morph");
+  progress.report(0.05, "morph");
+  // The volume's exact check (every tetrahedron positive in space) runs
+  // whether or not the volume is written: where the layers' planes cross
+  // inside the polygons the lateral surface alone folded inside out, and
+  // only the volume saw it. Its sections at the same times as the layers'
+  // (more where a cell needs them): the layers' sections are its faces.
+  const SweptVolume volume = swept_volume(morph, sections + 2);
+  progress.report(0.1, "volume");
 
   // Sections keep the first layer's vertex quality (the Steiner flags).
   std::vector<float> quality;
@@ -299,10 +308,7 @@ SweepOutcome compatible_sweep(const CMeshO &first, const CMeshO &second,
     }
   outcome.layers.push_back(std::move(lateral));
   if (!volume_file.empty()) {
-    progress.report(0.95, "volume");
-    // Its sections at the same times as the layers' (more where a cell
-    // needs them): the layers' sections are faces of the volume.
-    const SweptVolume volume = swept_volume(morph, sections + 2);
+    progress.report(0.95, "writing the volume");
     write_msh(volume, volume_file);
     char dihedral[32];
     std::snprintf(dihedral, sizeof dihedral, "%.2f", volume.min_dihedral_deg);

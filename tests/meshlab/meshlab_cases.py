@@ -990,6 +990,46 @@ def case_bad_sweep_folded(w):
     print("rejected with: " + [l for l in log.splitlines() if "Error: " in l][0])
 
 
+def case_bad_sweep_crossing_planes(w):
+    # The second star on the plane z = 0.2 + 0.5 x, which crosses the first
+    # layer's plane z = 0 inside the polygons: the straight blend between
+    # the planes folds there. The sweep filter refuses it whether or not
+    # it writes the volume (before, without VolumeFile, it added a lateral
+    # surface with 40 of its 96 triangles inside out).
+    a = star(12, 1.0, 0.8)
+    b = [(x, y, 0.2 + 0.5 * x) for x, y, _ in star(12, 1.0, 0.8, phase=0.1)]
+    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(12))
+    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(12))
+    outs = {2: "pair_a.ply", 3: "pair_b.ply", 4: "s1.ply", 7: "lateral.ply"}
+    code, log = run(w, ["a.ply", "b.ply"], os.path.join(DOCS, "pair_and_sweep.mlx"), outs)
+    assert "compatible triangulation: 12 boundary vertices" in log, "the pairing step did not succeed"
+    assert code != 0 and "the swept volume between the layers: " in log and "folds there" in log, log[-3000:]
+    assert "nothing was added or written" in log, log[-3000:]
+    for name in ("s1.ply", "lateral.ply"):
+        assert not os.path.exists(os.path.join(w, name)), name
+    print("rejected with: " + [l for l in log.splitlines() if "Error: " in l][0])
+
+
+def case_log_angle_of_float_layers(w):
+    # A star around (-100, -20) at z = 40 whose first edge is 4e-5 long, a
+    # few float units there: rounded to MeshLab's floats, the triangles at
+    # that edge lose about a sixth of a degree, and the log gives the
+    # angles of the layers as saved (before, the double result's: 7.96
+    # against 7.82 degrees saved).
+    a = [(x - 100, y - 20, 40.0) for x, y, _ in star(16, 8, 5.6)]
+    a.insert(1, (-92.0000381, -19.9999847, 40.0))
+    b = [(x - 100, y - 20, 0.0) for x, y, _ in star(20, 9, 6.75, phase=0.1)]
+    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
+    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
+    code, log = run(w, ["a.ply", "b.ply"], os.path.join(DOCS, "pair.mlx"), {2: "out_a.ply", 3: "out_b.ply"})
+    expect_ok(code, log)
+    pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, None)
+    m = re.search(r"smallest angle: ([\d.]+) deg in '[^']*', ([\d.]+) deg in '[^']*'", log)
+    saved = [min(min_angle(p[t]) for t in ta) for p in (pa, pb)]
+    assert m and all(abs(float(x) - y) < 0.006 for x, y in zip(m.groups(), saved)), (m and m.groups(), saved)
+    print("log angles %s, saved layers %.3f / %.3f" % (m.groups(), *saved))
+
+
 def sweep_only_script(w, replacements=()):
     """pair_and_sweep.mlx without the pairing step, sweeping layers 0 and 1."""
     text = open(os.path.join(DOCS, "pair_and_sweep.mlx")).read()
