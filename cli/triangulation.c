@@ -442,6 +442,9 @@ static int compute(triangulation *t, cli_error *error)
         loops[g] = (cm_loops){p->xy, p->loop_sizes, p->loops};
         holes |= p->loops > 1;
     }
+    if (!t->args->correspondence_given) /* pins or counts decide */
+        t->options.correspondence =
+            cm_correspondence_by_counts(loops, k, t->args->pin_count || t->args->options.pin_corners_deg > 0);
     t->options.progress = cli_progress;
     t->options.pins = t->args->pins, t->options.num_pins = t->args->pin_count;
     double start = seconds_now();
@@ -467,18 +470,6 @@ int triangulation_run(triangulation *t, const triangulation_args *args, cli_erro
     }
     t->options = args->options;
     int code = read_inputs(t, error);
-    if (code == CLI_EXIT_OK && !args->correspondence_given) { /* pins or counts decide */
-        /* Any loop whose sizes differ (the core names a hole count that differs). */
-        int differ = 0;
-        const polygon_input *p0 = &t->polygons[0];
-        for (size_t g = 1; g < args->input_count; g++) {
-            const polygon_input *p = &t->polygons[g];
-            differ |= p->count != p0->count;
-            for (size_t l = 0; l < p->loops && l < p0->loops; l++) differ |= p->loop_sizes[l] != p0->loop_sizes[l];
-        }
-        if (args->pin_count || args->options.pin_corners_deg > 0) t->options.correspondence = CM_CORRESPOND_ARCLENGTH;
-        else if (differ) t->options.correspondence = CM_CORRESPOND_AUTO;
-    }
     if (code == CLI_EXIT_OK) code = compute(t, error);
     return code;
 }

@@ -601,16 +601,10 @@ ResultPtr run_triangulation(py::handle polygons_in, const py::dict &kwargs, cons
     loops.push_back(cm_loops{p.xy.data(), p.loop_sizes.empty() ? &counts[loops.size()] : p.loop_sizes.data(),
                              p.loop_sizes.empty() ? 1 : p.loop_sizes.size()});
   // Without a word from the caller, pins or different counts (of any loop)
-  // mean arc length (index needs equal counts).
-  bool differ = false;
-  for (std::size_t c : counts) differ |= c != counts.front();
-  for (const cm_loops &l : loops)
-    for (std::size_t j = 0; j < l.num_loops && j < loops.front().num_loops; j++)
-      differ |= l.loop_sizes[j] != loops.front().loop_sizes[j];
-  if (!callbacks->correspondence_given && (!callbacks->pins.empty() || options.pin_corners_deg > 0))
-    options.correspondence = CM_CORRESPOND_ARCLENGTH;
-  else if (!callbacks->correspondence_given && differ)
-    options.correspondence = CM_CORRESPOND_AUTO;
+  // decide, as on the command line.
+  if (!callbacks->correspondence_given)
+    options.correspondence = cm_correspondence_by_counts(loops.data(), loops.size(),
+                                                         !callbacks->pins.empty() || options.pin_corners_deg > 0);
   for (std::size_t j = 0; j < callbacks->pins.size(); j++) {
     if (callbacks->pins[j].size() != polygons->size())
       throw py::value_error("pins: pin " + std::to_string(j) + " has " + std::to_string(callbacks->pins[j].size()) +

@@ -64,22 +64,42 @@ void align_boundaries(std::vector<Boundary> &polygons)
   align_sections(sections, false);
 }
 
+namespace {
+// The polygons as the core takes them with holes; counts (one per polygon,
+// kept alive by the caller) stand for the loop sizes of a Boundary filled
+// by hand that leaves loop_sizes empty: one loop.
+std::vector<cm_loops> loops_of(const std::vector<Boundary> &polygons, std::vector<std::size_t> &counts)
+{
+  std::vector<cm_loops> loops;
+  counts.clear();
+  counts.reserve(polygons.size());  // pointed into below
+  for (const Boundary &polygon : polygons) {
+    counts.push_back(polygon.size());
+    const bool one = polygon.loop_sizes.empty();
+    loops.push_back(cm_loops{polygon.xy.data(), one ? &counts.back() : polygon.loop_sizes.data(),
+                             one ? 1 : polygon.loop_sizes.size()});
+  }
+  return loops;
+}
+}  // namespace
+
+cm_correspondence correspondence_by_counts(const std::vector<Boundary> &polygons, bool pinned)
+{
+  std::vector<std::size_t> counts;
+  const std::vector<cm_loops> loops = loops_of(polygons, counts);
+  return cm_correspondence_by_counts(loops.data(), loops.size(), pinned ? 1 : 0);
+}
+
 ResultPtr triangulate(const std::vector<Boundary> &polygons, const cm_options &options,
                       const ProgressFn &progress)
 {
   std::vector<const double *> coordinates;
   std::vector<std::size_t> counts;
-  std::vector<cm_loops> loops;
+  const std::vector<cm_loops> loops = loops_of(polygons, counts);
   bool holes = false;
-  counts.reserve(polygons.size());  // pointed into below
   for (const Boundary &polygon : polygons) {
     coordinates.push_back(polygon.xy.data());
-    counts.push_back(polygon.size());
     holes |= polygon.num_loops() > 1;
-    // A Boundary filled by hand may leave loop_sizes empty: one loop.
-    const bool one = polygon.loop_sizes.empty();
-    loops.push_back(cm_loops{polygon.xy.data(), one ? &counts.back() : polygon.loop_sizes.data(),
-                             one ? 1 : polygon.loop_sizes.size()});
   }
   cm_options core_options = options;
   ProgressRelay relay(progress);

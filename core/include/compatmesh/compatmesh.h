@@ -443,6 +443,15 @@ typedef struct cm_loops {
 CM_API cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k,
                                       const cm_options *options, cm_result **result);
 
+/* The correspondence for a caller that was given none (the command line,
+ * the Python module and the OpenMesh adapter take it):
+ * CM_CORRESPOND_ARCLENGTH where `pinned` (pins or pin_corners_deg given),
+ * else CM_CORRESPOND_AUTO where some loop's vertex count differs between
+ * the polygons (index needs equal counts), else CM_CORRESPOND_INDEX.
+ * Loops beyond the fewest any polygon has are not compared (the run names
+ * a hole count that differs). */
+CM_API cm_correspondence cm_correspondence_by_counts(const cm_loops *polygons, size_t k, int pinned);
+
 CM_API void cm_result_free(cm_result *result);
 
 CM_API cm_status cm_result_status(const cm_result *result);

@@ -1594,6 +1594,15 @@ static cm_status run_loop_pairing(cm_result *again, const void *input, const cm_
                                        : run_loops_arclength(again, in->polygons, in->k, o, LOOP_OUTER, *p);
 }
 
+cm_correspondence cm_correspondence_by_counts(const cm_loops *polygons, size_t k, int pinned)
+{
+    if (pinned) return CM_CORRESPOND_ARCLENGTH;
+    for (size_t g = 1; polygons && g < k; g++)
+        for (size_t l = 0; l < polygons[g].num_loops && l < polygons[0].num_loops; l++)
+            if (polygons[g].loop_sizes[l] != polygons[0].loop_sizes[l]) return CM_CORRESPOND_AUTO;
+    return CM_CORRESPOND_INDEX;
+}
+
 cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_options *options,
                                cm_result **result)
 {

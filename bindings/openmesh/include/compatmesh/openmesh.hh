@@ -150,6 +150,11 @@ Boundary read_boundary(const Mesh &mesh, double relative_tolerance = kDefaultPla
 ResultPtr triangulate(const std::vector<Boundary> &polygons, const cm_options &options,
                       const ProgressFn &progress = ProgressFn());
 
+// The correspondence for polygons that were given none, as on the command
+// line and in Python (cm_correspondence_by_counts): arc length where
+// pinned, auto where some loop's vertex count differs, else index.
+cm_correspondence correspondence_by_counts(const std::vector<Boundary> &polygons, bool pinned);
+
 // Geometry g of a result as an OpenMesh mesh with the core's numbering.
 //   boundary: where the polygon came from (3D coordinates, plane, source
 //             vertices); NULL for a polygon given in the xy plane.
@@ -175,8 +180,15 @@ class CompatibleTriangulationT : private OpenMesh::Utils::Noncopyable {
   void clear_meshes() { inputs_.clear(); }
 
   // The core's options, as filled by cm_options_init and then changed. Its
-  // progress fields are replaced by set_progress when that is given.
-  void set_options(const cm_options &options) { options_ = options; }
+  // progress fields are replaced by set_progress when that is given. Its
+  // correspondence is taken as given; without set_options or
+  // set_correspondence the counts decide (correspondence_by_counts: auto
+  // where they differ, index where they agree, arc length with pins).
+  void set_options(const cm_options &options) { options_ = options, correspondence_given_ = true; }
+  void set_correspondence(cm_correspondence correspondence)
+  {
+    options_.correspondence = correspondence, correspondence_given_ = true;
+  }
   const cm_options &options() const { return options_; }
   void set_method(cm_method method) { options_.method = method; }
   void set_remesh(bool remesh) { options_.remesh = remesh ? 1 : 0; }
@@ -204,6 +216,7 @@ class CompatibleTriangulationT : private OpenMesh::Utils::Noncopyable {
  private:
   std::vector<const InMesh *> inputs_;
   cm_options options_;
+  bool correspondence_given_ = false;
   double planarity_tolerance_ = kDefaultPlanarityTolerance;
   ProgressFn progress_;
   std::vector<Boundary> boundaries_;

@@ -355,7 +355,11 @@ void CompatibleTriangulationT<InMesh, OutMesh>::run()
     }
   }
   align_boundaries(boundaries);
-  ResultPtr result = triangulate(boundaries, options_, progress_);
+  cm_options options = options_;
+  if (!correspondence_given_)
+    options.correspondence =
+        correspondence_by_counts(boundaries, options.num_pins > 0 || options.pin_corners_deg > 0);
+  ResultPtr result = triangulate(boundaries, options, progress_);
   std::vector<OutMesh> meshes;
   meshes.reserve(boundaries.size());
   for (std::size_t g = 0; g < boundaries.size(); g++)
