@@ -16,8 +16,10 @@ static void run_case(const bic_case &c)
     for (size_t i = 0; i < c.counts[g]; i++) points.push_back({{c.xy[g][2 * i], c.xy[g][2 * i + 1], 0.0}});
     inputs.push_back(vertex_mesh(points));
   }
+  cm_options index;  // the matrix states the index correspondence's contract (equal counts)
+  cm_options_init(&index);
   try {
-    std::vector<TriMesh> outputs = compatmesh::compatible_triangulation(inputs);
+    std::vector<TriMesh> outputs = compatmesh::compatible_triangulation(inputs, &index);
     CHECK_MSG(c.status == CM_OK, "%s: succeeded, want %s", c.name, cm_status_string(c.status));
     CHECK_MSG(outputs.size() == c.k, "%s: %zu outputs", c.name, outputs.size());
     for (size_t g = 0; g < outputs.size(); g++) {
