@@ -227,7 +227,7 @@ def bound_cell(cli, files, mode, twist, work):
 
 
 def main(argv):
-    if len(argv) < 2:
+    if len(argv) < 2 or argv[1].startswith("-") or not os.path.isdir(argv[1]):
         print(__doc__, file=sys.stderr)
         return 2
     build = os.path.abspath(argv[1])
