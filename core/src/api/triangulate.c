@@ -1589,9 +1589,9 @@ typedef struct loop_input {
 static cm_status run_loop_pairing(cm_result *again, const void *input, const cm_options *o, const void *pairing)
 {
     const loop_input *in = input;
-    const auto_pairing *p = pairing;
-    return p->kind == PAIRING_BY_START ? run_loops_arclength(again, in->polygons, in->k, o, LOOP_BY_START, by_ceiling)
-                                       : run_loops_arclength(again, in->polygons, in->k, o, LOOP_OUTER, *p);
+    const auto_pairing *p = pairing; /* a loop paired from its start takes no pairing */
+    return run_loops_arclength(again, in->polygons, in->k, o, p->kind == PAIRING_BY_START ? LOOP_BY_START : LOOP_OUTER,
+                               *p);
 }
 
 cm_correspondence cm_correspondence_by_counts(const cm_loops *polygons, size_t k, int pinned)
