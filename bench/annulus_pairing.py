@@ -43,23 +43,21 @@ import sys
 import tempfile
 
 import numpy as np
-import scipy.sparse.linalg
 
-from twist_bound import cut_jump, mesh_domain, read_loops, signed_area, stiffness, triangle_areas
+from twist_bound import mesh_domain, read_loops, signed_area, stiffness, stream_function, triangle_areas
 
 def conjugate(outer, hole, size=0.004):
-    """The mesh nodes, psi at each (up to a constant), and the nodes on the
-    outer loop and on the hole; psi increases counter-clockwise."""
+    """psi along the outer loop and along the hole (LoopPsi each), psi
+    increasing counter-clockwise (twist_bound.stream_function's phi: psi
+    but for the cut's jump, which psi mod 1 does not see)."""
     nodes, triangles, on_outer, on_hole = mesh_domain(outer, hole, size)
     local, matrix = stiffness(nodes, triangles, triangle_areas(nodes, triangles))
-    jump = cut_jump(nodes, triangles, on_outer, on_hole)
-    load = np.zeros(len(nodes))
-    np.add.at(load, triangles.ravel(), np.einsum("tij,tj->ti", local, jump).ravel())
-    psi = np.zeros(len(nodes))
-    psi[1:] = scipy.sparse.linalg.spsolve(matrix[1:, 1:].tocsc(), -load[1:])
-    if loop_psi(outer, nodes, psi, on_outer).direction * signed_area(outer) < 0:
+    psi, _ = stream_function(nodes, triangles, local, matrix, on_outer, on_hole)
+    along_outer = loop_psi(outer, nodes, psi, on_outer)
+    if along_outer.direction * signed_area(outer) < 0:
         psi = -psi
-    return nodes, psi, on_outer, on_hole
+        along_outer = loop_psi(outer, nodes, psi, on_outer)
+    return along_outer, loop_psi(hole, nodes, psi, on_hole)
 
 
 class LoopPsi:
@@ -154,8 +152,7 @@ def main(argv):
         sys.exit("annulus_pairing: each polygon needs one outer loop and one hole")
     params = []
     for outer, hole in polygons:
-        nodes, psi, on_outer, on_hole = conjugate(outer, hole)
-        params.append((loop_psi(outer, nodes, psi, on_outer), loop_psi(hole, nodes, psi, on_hole)))
+        params.append(conjugate(outer, hole))
     for j in range(turns):
         alpha = j / turns
         loops = [merged(params[0][l], params[1][l], alpha) for l in range(2)]

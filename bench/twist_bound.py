@@ -306,6 +306,20 @@ def cut_jump(nodes, triangles, outer_nodes, hole_nodes):
     return jump
 
 
+def stream_function(nodes, triangles, local, matrix, outer_nodes, hole_nodes):
+    """psi = phi + jump, the least-energy piecewise-linear function with a
+    unit jump across a cut from the hole to the outer loop: phi single
+    valued at the nodes (its first node 0: the energy does not see
+    constants), jump (per triangle corner) 1 at the cut's nodes on one
+    side, 0 elsewhere. (phi, jump)."""
+    jump = cut_jump(nodes, triangles, outer_nodes, hole_nodes)
+    load = np.zeros(len(nodes))
+    np.add.at(load, triangles.ravel(), np.einsum("tij,tj->ti", local, jump).ravel())
+    phi = np.zeros(len(nodes))
+    phi[1:] = scipy.sparse.linalg.spsolve(matrix[1:, 1:].tocsc(), -load[1:])
+    return phi, jump
+
+
 def modulus_bracket(outer, hole, size=MESH_SIZE):
     """(lower, upper) bounds on S = 2 pi / cap of D: 2 pi over the energy of
     the piecewise-linear u, 0 on the hole and 1 on the outer loop, and
@@ -321,13 +335,7 @@ def modulus_bracket(outer, hole, size=MESH_SIZE):
     free = ~fixed
     u[free] = scipy.sparse.linalg.spsolve(matrix[free][:, free].tocsc(), -(matrix[free][:, fixed] @ u[fixed]))
     primal = energy(nodes, triangles, areas, u[triangles])
-    # psi = phi + the jump on one side of the cut, phi single valued, its
-    # first node 0 (the energy does not see constants)
-    jump = cut_jump(nodes, triangles, outer_nodes, hole_nodes)
-    load = np.zeros(len(nodes))
-    np.add.at(load, triangles.ravel(), np.einsum("tij,tj->ti", local, jump).ravel())
-    phi = np.zeros(len(nodes))
-    phi[1:] = scipy.sparse.linalg.spsolve(matrix[1:, 1:].tocsc(), -load[1:])
+    phi, jump = stream_function(nodes, triangles, local, matrix, outer_nodes, hole_nodes)
     flow = energy(nodes, triangles, areas, phi[triangles] + jump)
     return 2 * math.pi / primal * (1 - SLACK), 2 * math.pi * flow * (1 + SLACK)
 
