@@ -1543,7 +1543,7 @@ Common attributes (arrays are numpy arrays):
                     "ceiling_deg, corner_fan_cap_deg, correspondence_bound_deg, modulus_distortion, "
                     "distortion_quad, correspondence_bound_before_deg (None unless auto chose the starts), "
                     "correspondence_choice (the correspondence made: 'index', 'arclength', 'conformal', "
-                    "'similarity', 'affine' or 'corners'; with holes the outer loop's), "
+                    "'similarity', 'affine', 'corners' or 'annulus'; with holes the outer loop's), "
                     "seconds_*), quality and quality_before_remesh (one dict per geometry)")
       .def("to_meshio", &result_to_meshio, py::arg("geometry") = py::none(),
            R"doc(to_meshio(geometry=None) -> meshio.Mesh or list of meshio.Mesh

@@ -191,21 +191,36 @@ def test_auto_pairs_holes_by_position(cm, tmp_path):
 GLYPH_PAIRS = os.path.join(os.path.dirname(__file__), "glyph_pairs")
 
 
-def test_auto_rescues_the_outer_loops_of_polygons_with_holes(cm, tmp_path):
-    """DejaVu Sans Oblique 'D' against 'P' (cm_glyph_holes --auto --font
-    DejaVuSans-Oblique.ttf --dump: an outer loop of 64 vertices and a hole
-    of 24 each). The conformal pairing of the filled outlines remeshes to
-    15.9 degrees, below 0.8 of its aim of 25, where the outer loops take the
-    rescues of polygons without holes: the parameter tempered nearer the
-    conformal map remeshes to 22.4. Expected: valid, at least 20 degrees in
-    both meshes (15.93 before polygons with holes took those rescues)."""
-    a, b = (os.path.join(GLYPH_PAIRS, "DejaVuSansOblique_D_P_holes_" + s + ".xy") for s in "ab")
-    result = cm("triangulate", a, b, "--out-dir", "out", "--correspondence", "auto")
-    assert result.returncode == 0, result.stderr
-    report = json.loads((tmp_path / "out" / "report.json").read_text())
-    assert report["valid"] and report["holes"] == 1
-    assert report["correspondence_choice"] == "conformal"
-    assert min(m["min_angle_deg"] for m in report["meshes"]) >= 20
+@pytest.mark.parametrize("pair, least", [("FreeSerif_o_e", 22), ("DejaVuSansOblique_D_P", 24)])
+def test_auto_pairs_one_hole_polygons_through_the_annulus(cm, tmp_path, pair, least):
+    """Glyph pairs with one hole (cm_glyph_holes --auto --font F --dump:
+    outer loops of 64 vertices, holes of 24). FreeSerif 'o' against 'e':
+    every pairing of the filled outlines, the hole started from there,
+    sends the e's mouth into the o's ring where the hole is near, 6.8
+    degrees after every rescue. DejaVu Sans Oblique 'D' against 'P': the
+    conformal pairing of the outlines remeshes below 0.6 of its aim of 25,
+    and the outer loops' rescues of polygons without holes reached 22.4.
+    Paired through the conformal maps onto round annuli (both loops at
+    once, the first of auto's rescues for one hole): 26 degrees each.
+    Expected: valid, the annulus pairing kept, at least `least` degrees in
+    both meshes; with --max-edge 0.02 too (o/e), and no boundary edge
+    longer than that."""
+    a, b = (os.path.join(GLYPH_PAIRS, pair + "_holes_" + s + ".xy") for s in "ab")
+    runs = (("out", []), ("short", ["--max-edge", "0.02"])) if pair == "FreeSerif_o_e" else (("out", []),)
+    for out, extra in runs:
+        result = cm("triangulate", a, b, "--out-dir", out, "--correspondence", "auto", *extra)
+        assert result.returncode == 0, result.stderr
+        report = json.loads((tmp_path / out / "report.json").read_text())
+        assert report["valid"] and report["holes"] == 1
+        assert report["correspondence_choice"] == "annulus"
+        assert min(m["min_angle_deg"] for m in report["meshes"]) >= least
+    meshes = sorted((tmp_path / "short").glob("*.off"))
+    assert len(meshes) == (2 if len(runs) == 2 else 0)
+    for mesh in meshes:
+        vertices, triangles = read_off(mesh)
+        sides = {(t[i], t[(i + 1) % 3]) for t in triangles for i in range(3)}
+        longest = max(math.dist(vertices[p], vertices[q]) for p, q in sides if (q, p) not in sides)
+        assert longest <= 0.02 * (1 + 1e-12), (mesh.name, longest)
 
 
 def bad(cm, tmp_path, a_loops, b_text, pattern, *extra):

@@ -541,28 +541,27 @@ static int auto_run_on_loops(const shape *a, const shape *b, int restarts, const
     return ok;
 }
 
-/* Auto pairs the outer loops as polygons without holes: a square ring
- * against the same ring with a stem (hole_fixtures.h, loops of different
- * sizes), remeshed. Arc length from the similarity's start reached 13.3
- * degrees (smaller of the two meshes); the conformal correspondence of
- * the filled outer loops 19.5. Expected: valid, the outer loops' choice
- * conformal, and the smallest angle of both meshes at least 15 degrees
- * (min(15, c / 3), every corner c of the material 90 degrees or more),
- * with the restart (below 0.85 of the aim of 25 degrees) higher. */
-static void test_auto_outer_loops_conformal(void)
+/* Auto on a square ring against the same ring with a stem (hole_fixtures.h,
+ * loops of different sizes), remeshed. Arc length from the similarity's
+ * start reached 13.3 degrees (smaller of the two meshes); the conformal
+ * correspondence of the filled outer loops, auto's first pairing, 19.5 to
+ * 20.8, below 0.8 of the aim of 25, so the rescues run; the first of them
+ * for one hole, the annulus pairing of both loops at once, 28.9. Expected,
+ * with and without restarts: valid, the annulus pairing kept, the
+ * smallest angle of both meshes at least 25 degrees. */
+static void test_auto_ring_and_stem(void)
 {
     shape a = {0}, b = {0};
     hf_ring_and_stem(&a, &b);
     CHECK(a.n == 32 + 12 && b.n == 64 + 12);
-    double least[2] = {0, 0};
     for (int restarts = 0; restarts < 2; restarts++) {
         size_t n = 0;
+        double least = 0;
         cm_correspondence_choice choice = CM_CHOICE_INDEX;
-        if (!auto_run_on_loops(&a, &b, restarts, "ring and stem", &n, &least[restarts], &choice)) continue;
-        CHECK(choice == CM_CHOICE_CONFORMAL);
-        CHECK_MSG(least[restarts] >= 15.0, "ring and stem: smallest angle %.2f, below 15 degrees", least[restarts]);
+        if (!auto_run_on_loops(&a, &b, restarts, "ring and stem", &n, &least, &choice)) continue;
+        CHECK(choice == CM_CHOICE_ANNULUS);
+        CHECK_MSG(least >= 25.0, "ring and stem: smallest angle %.2f, below 25 degrees", least);
     }
-    CHECK_MSG(least[1] > least[0], "ring and stem: the restart %.2f, without %.2f degrees", least[1], least[0]);
 }
 
 /* The remesher's restart starts from the loops as the first run refined
@@ -1010,7 +1009,7 @@ int main(void)
     test_fallback();
     test_arclength_loops();
     test_auto_hole_starts();
-    test_auto_outer_loops_conformal();
+    test_auto_ring_and_stem();
     test_auto_restart_from_refined_loops();
     test_auto_least_turn();
     test_twisting_sections();

@@ -282,12 +282,17 @@ typedef enum cm_correspondence_choice {
      * resort on polygons without holes where every other pairing stays
      * far below the remesher's aim (the corners turning by more than 90
      * degrees pinned, as pin_corners_deg = 90 would). */
-    CM_CHOICE_CORNERS
+    CM_CHOICE_CORNERS,
+    /* AUTO on polygons with one hole, a rescue where the pairings above end
+     * far below the remesher's aim: both loops paired at once through the
+     * conformal maps onto round annuli (the angle around the annulus,
+     * tempered as the conformal correspondence's). */
+    CM_CHOICE_ANNULUS
 } cm_correspondence_choice;
 
 /* Its name as the CLI's report.json and the Python module give it:
- * "index", "arclength", "conformal", "similarity", "affine" or "corners"
- * ("unknown" for a value outside the enum). */
+ * "index", "arclength", "conformal", "similarity", "affine", "corners" or
+ * "annulus" ("unknown" for a value outside the enum). */
 CM_API const char *cm_correspondence_choice_name(cm_correspondence_choice choice);
 
 typedef struct cm_stats {

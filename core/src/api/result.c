@@ -42,7 +42,7 @@ void cm_result_free(cm_result *r)
 
 const char *cm_correspondence_choice_name(cm_correspondence_choice choice)
 {
-    static const char *const names[] = {"index", "arclength", "conformal", "similarity", "affine", "corners"};
+    static const char *const names[] = {"index", "arclength", "conformal", "similarity", "affine", "corners", "annulus"};
     return (unsigned)choice < sizeof names / sizeof *names ? names[choice] : "unknown";
 }
 

@@ -15,6 +15,7 @@
 #include "construct/holes.h"
 #include "construct/holes_overlay.h"
 #include "construct/overlay.h"
+#include "correspond/annulus.h"
 #include "correspond/bound.h"
 #include "correspond/choose.h"
 #include "correspond/conformal.h"
@@ -487,6 +488,45 @@ static cm_status conformal(cm_result *r, const double *const *polygons, const si
     return s;
 }
 
+/* The annulus correspondence's boundaries of polygons with one hole into
+ * maps[0] (the outer loops) and maps[1] (the holes), its parameter
+ * tempered by power and read along every edge (annulus.h); a rescue's, so
+ * CM_ERR_PRECISION where it cannot be had in doubles or crowds
+ * (CM_CROWDED_PIECE); then max_edge's split (0: none). orientation: k L,
+ * as cm_input_check_loops gives it; loop_xy, loop_counts,
+ * loop_orientation: loop l's k input loops from l k. */
+static cm_status annulus(cm_result *r, const cm_loops *polygons, size_t k, const int *orientation,
+                         const double *const *loop_xy, const size_t *loop_counts, const int *loop_orientation,
+                         double power, double max_edge, cm_boundary_map *maps)
+{
+    size_t total = 0;
+    for (size_t g = 0; g < k; g++) total += polygons[g].loop_sizes[0] + polygons[g].loop_sizes[1];
+    double *all = malloc(total * sizeof *all), *all_fine = malloc(total * CM_PARAM_FINE * sizeof *all_fine);
+    double **params = malloc(2 * k * sizeof *params), **fine = malloc(2 * k * sizeof *fine);
+    const double **loop_params = malloc(2 * k * sizeof *loop_params), **loop_fine = malloc(2 * k * sizeof *loop_fine);
+    cm_status s = CM_OK;
+    if (!all || !all_fine || !params || !fine || !loop_params || !loop_fine)
+        s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
+    for (size_t g = 0, at = 0; s == CM_OK && g < k; g++)
+        for (size_t l = 0; l < 2; at += polygons[g].loop_sizes[l], l++) {
+            params[2 * g + l] = all + at, fine[2 * g + l] = g ? all_fine + at * CM_PARAM_FINE : NULL;
+            loop_params[l * k + g] = params[2 * g + l], loop_fine[l * k + g] = fine[2 * g + l];
+        }
+    int found = 0;
+    if (s == CM_OK) s = cm_correspond_annulus(polygons, k, orientation, power, params, fine, &found, &r->error);
+    for (size_t l = 0; s == CM_OK && found && l < 2; l++) {
+        s = cm_correspond_params(loop_xy + l * k, loop_counts + l * k, k, loop_orientation + l * k,
+                                 loop_params + l * k, loop_fine + l * k, &maps[l], &r->error);
+        if (s == CM_OK && cm_boundary_map_least_piece(&maps[l]) < CM_CROWDED_PIECE) found = 0;
+    }
+    if (s == CM_OK && !found) s = cm_fail(&r->error, CM_ERR_PRECISION, "the annulus pairing cannot be had in doubles");
+    for (size_t l = 0; s == CM_OK && max_edge > 0 && l < 2; l++)
+        s = cm_boundary_map_split(&maps[l], loop_xy + l * k, loop_counts + l * k, loop_orientation + l * k, max_edge,
+                                  &r->error);
+    free(all), free(all_fine), free(params), free(fine), free(loop_params), free(loop_fine);
+    return s;
+}
+
 /* The certified ceiling (the lower of the corner-fan cap and the
  * correspondence bound) of boundaries in correspondence, and the
  * correspondence bound alone (bound_deg, when not NULL). */
@@ -513,8 +553,10 @@ static cm_status ceiling_of(cm_result *r, const cm_boundary_map *map, double *de
  * the conformal parameter or the similarity choice, whichever allows the
  * higher ceiling (the first run); or one of them taken as it is (the
  * rescues, pairing_rescue). Outer loops also have arc length from the
- * similarity's start, fitted to the outer loops alone (LOOP_BY_START). */
-enum pairing_kind { PAIRING_BY_CEILING, PAIRING_CONFORMAL, PAIRING_SIMILARITY, PAIRING_BY_START };
+ * similarity's start, fitted to the outer loops alone (LOOP_BY_START);
+ * polygons with one hole both loops at once through the round annulus
+ * (PAIRING_ANNULUS, annulus.h). */
+enum pairing_kind { PAIRING_BY_CEILING, PAIRING_CONFORMAL, PAIRING_SIMILARITY, PAIRING_BY_START, PAIRING_ANNULUS };
 typedef struct auto_pairing {
     enum pairing_kind kind;
     int linear;   /* the conformal parameter read linearly between each polygon's vertices, not along every edge */
@@ -988,7 +1030,10 @@ static cm_status rescue_restart(cm_result **result, const cm_options *o, rescue_
  * comes last and is kept only where better (bench/CORRESPONDENCE.md).
  * Polygons with holes take the same rescues for their outer loops, after
  * arc length from the similarity's start (PAIRING_BY_START;
- * run_loop_pairing says why). */
+ * run_loop_pairing says why); polygons with one hole first the annulus
+ * pairing (annulus.h), which pairs both loops at once where every other
+ * pairing fills the outline and starts the hole from there (the o and e
+ * of 19 fonts, bench/HOLES.md). */
 typedef struct polygon_input {
     const double *const *polygons;
     const size_t *counts;
@@ -1002,11 +1047,12 @@ static cm_status run_pairing(cm_result *again, const void *input, const cm_optio
 }
 
 /* What the rescues remesh: run (taking an auto_pairing) on input; holes:
- * the input has holes (then PAIRING_BY_START is one of its pairings). */
+ * every polygon's holes (with holes PAIRING_BY_START is one of its
+ * pairings, with one hole PAIRING_ANNULUS too). */
 typedef struct rescue_input {
     rescue_run run;
     const void *input;
-    int holes;
+    size_t holes; /* every polygon's holes */
 } rescue_input;
 
 /* The powers read along every edge run so far, and where each ended (the
@@ -1069,7 +1115,8 @@ static cm_status pairing_rescue(cm_result **result, const cm_options *o, const r
     static const struct {
         auto_pairing pairing;
         double share;
-    } others[] = {{{PAIRING_BY_START, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
+    } others[] = {{{PAIRING_ANNULUS, 0, CM_CONFORMAL_POWER}, CM_POWER_RESCUE_SHARE},
+                  {{PAIRING_BY_START, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 1, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 0, CM_RESCUE_POWER_MORE}, CM_POWER_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
@@ -1086,7 +1133,8 @@ static cm_status pairing_rescue(cm_result **result, const cm_options *o, const r
             (p->kind == PAIRING_CONFORMAL && !p->linear && p->power == CM_CONFORMAL_POWER &&
              first == CM_CHOICE_CONFORMAL) ||
             (p->kind == PAIRING_SIMILARITY && first == CM_CHOICE_SIMILARITY) ||
-            (p->kind == PAIRING_BY_START && (!in->holes || first != CM_CHOICE_CONFORMAL)))
+            (p->kind == PAIRING_BY_START && (!in->holes || first != CM_CHOICE_CONFORMAL)) ||
+            (p->kind == PAIRING_ANNULUS && in->holes != 1))
             continue; /* not wanted, not the input's, or the first run's */
         double ended;
         s = rescue_try(result, o, in->run, in->input, p, &took, &ended);
@@ -1487,7 +1535,16 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
     if (s == CM_OK && joint && (!(similarity = malloc(4 * k * sizeof *similarity)) ||
                                 !(hole_starts = malloc(k * sizeof *hole_starts))))
         s = cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
-    for (size_t l = 0; s == CM_OK && l < L; l++) {
+    if (s == CM_OK && pairing.kind == PAIRING_ANNULUS) { /* both loops at once, each paired with its own */
+        for (size_t l = 0; l < L; l++)
+            for (size_t g = 0; g < k; g++) {
+                xy[l * k + g] = polygons[g].xy + 2 * start[g * (L + 1) + l];
+                count[l * k + g] = polygons[g].loop_sizes[l], loop_orientation[l * k + g] = orientation[g * L + l];
+            }
+        s = annulus(r, polygons, k, orientation, xy, count, loop_orientation, pairing.power, o->max_edge, maps);
+        r->stats.correspondence_choice = CM_CHOICE_ANNULUS;
+    }
+    for (size_t l = 0; s == CM_OK && pairing.kind != PAIRING_ANNULUS && l < L; l++) {
         const double **lxy = xy + l * k;
         size_t *lcount = count + l * k;
         int *lorientation = loop_orientation + l * k;
@@ -1576,11 +1633,11 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
 
 /* Auto with holes pairs the outer loops as polygons without holes, and
  * where the result ends short of its aim takes the same rescues
- * (pairing_rescue), first arc length from the similarity's start
- * (PAIRING_BY_START): the hole starts, chosen under the outer loops'
- * similarity, may fit one pairing of the outer loops and not the other,
- * since a conformal pairing of the filled outlines knows nothing of the
- * holes. */
+ * (pairing_rescue), first (one hole) the annulus pairing of both loops,
+ * then arc length from the similarity's start (PAIRING_BY_START): the
+ * hole starts, chosen under the outer loops' similarity, may fit one
+ * pairing of the outer loops and not the other, since a conformal pairing
+ * of the filled outlines knows nothing of the holes. */
 typedef struct loop_input {
     const cm_loops *polygons;
     size_t k;
@@ -1632,7 +1689,7 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
     if (s == CM_OK) s = check_correspondence_options(r, options);
     memos_start(r, options);
     const loop_input input = {polygons, k};
-    const rescue_input rescue = {run_loop_pairing, &input, 1};
+    const rescue_input rescue = {run_loop_pairing, &input, polygons ? polygons[0].num_loops - 1 : 0};
     if (s == CM_OK && (options->correspondence != CM_CORRESPOND_INDEX || options->max_edge > 0))
         s = run_loops_arclength(r, polygons, k, options, LOOP_OUTER, by_ceiling);
     else if (s == CM_OK) s = run_loops(r, polygons, k, NULL, options);

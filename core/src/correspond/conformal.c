@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "correspond/arclength.h"
+#include "correspond/circle.h"
 #include "correspond/fe.h"
 #include "base/order.h"
 #include "geom/angle.h"
@@ -25,24 +26,9 @@
  * below the tolerance. */
 #define BALANCE_ITERATIONS 200
 #define BALANCE_TOLERANCE 1e-9
-/* Stretches below this are taken as this (doubles resolve no less). */
-#define STRETCH_FLOOR 1e-12
 
-/* A polygon's boundary on the unit circle: per boundary node of its mesh
- * (counter-clockwise from vertex 0), the normalised arc length s and the
- * angle theta, both non-decreasing; s[nb] = 1, theta[nb] = 2 pi; and the
- * node's place in the plane, z[nb] = z[0]. */
-typedef struct disk {
-    size_t nb;
-    double *s, *theta;
-    double complex *z;
-} disk;
-
-static void disk_free(disk *d)
-{
-    free(d->s), free(d->theta), free(d->z);
-    memset(d, 0, sizeof *d);
-}
+/* A polygon's boundary on the unit circle (circle.h). */
+typedef cm_circle disk;
 
 static int balance(disk *d);
 
@@ -96,7 +82,7 @@ static cm_status disk_build(const double *input, size_t n, int reversed, disk *d
     }
     free(xy), free(w);
     cm_fe_free(&m);
-    if (s != CM_OK || !*usable) disk_free(d);
+    if (s != CM_OK || !*usable) cm_circle_free(d);
     return s;
 }
 
@@ -141,46 +127,6 @@ static int balance(disk *d)
     return 0;
 }
 
-/* The largest j < len with a[j] <= x (a non-decreasing, a[0] <= x). */
-static size_t below(const double *a, size_t len, double x)
-{
-    size_t lo = 0, hi = len;
-    while (hi - lo > 1) {
-        size_t mid = (lo + hi) / 2;
-        if (a[mid] <= x) lo = mid;
-        else hi = mid;
-    }
-    return lo;
-}
-
-/* The same, sought from *near on (that j, found again when x moves
- * little: it is unique), which becomes the j found. */
-static size_t below_near(const double *a, size_t len, double x, size_t *near)
-{
-    size_t j = *near;
-    if (j < len && a[j] <= x) {
-        for (int step = 0; step < 8 && j + 1 < len && a[j + 1] <= x; step++) j++;
-        if (j + 1 < len && a[j + 1] <= x) j += below(a + j, len - j, x);
-    } else {
-        j = below(a, len, x);
-    }
-    return *near = j;
-}
-
-/* y at j, x of the piecewise-linear table (xs, ys), j below x. */
-static double lookup_at(const double *xs, const double *ys, size_t j, double x)
-{
-    double dx = xs[j + 1] - xs[j];
-    return dx > 0 ? ys[j] + (x - xs[j]) / dx * (ys[j + 1] - ys[j]) : ys[j];
-}
-
-/* y at x of the piecewise-linear table (xs, ys), len + 1 points, x in
- * [xs[0], xs[len]]. */
-static double lookup(const double *xs, const double *ys, size_t len, double x)
-{
-    return lookup_at(xs, ys, below(xs, len, x), x);
-}
-
 /* The search's view of one pair: m angles evenly spaced on the circle, as
  * points, polygon 0's arc length there and its point in the plane
  * (centred), and the disk of polygon g; the h hole centres of polygon 0
@@ -199,32 +145,14 @@ typedef struct search {
 /* The point at normalised arc length u of a disk's polygon. */
 static double complex point_at(const disk *d, double u)
 {
-    size_t j = below(d->s, d->nb, u);
+    size_t j = cm_circle_below(d->s, d->nb, u);
     double ds = d->s[j + 1] - d->s[j], f = ds > 0 ? (u - d->s[j]) / ds : 0;
     return d->z[j] + f * (d->z[j + 1] - d->z[j]);
 }
 
 /* How far the correspondence is from arc length with polygon g's disk
- * turned by rho onto polygon 0's: the variance, over the circle, of
- * polygon g's arc length less polygon 0's at the same point (lifted).
- * Zero for a similar copy turned right. */
-static double cost(const search *q, double rho)
-{
-    double prev = 0, sum = 0, sum2 = 0;
-    size_t near = 0; /* the points go round: each lands at or after the last */
-    for (size_t i = 0; i < q->m; i++) {
-        double t = carg(q->w[i] * cexp(-I * rho));
-        if (i == 0) t = t < 0 ? t + 2 * CM_PI : t;
-        else t = prev + remainder(t - prev, 2 * CM_PI);
-        prev = t;
-        double turns = floor(t / (2 * CM_PI));
-        double x = t - 2 * CM_PI * turns;
-        double d = turns + lookup_at(q->g->theta, q->g->s, below_near(q->g->theta, q->g->nb, x, &near), x) - q->s0[i];
-        sum += d, sum2 += d * d;
-    }
-    double mean = sum / (double)q->m;
-    return sum2 / (double)q->m - mean * mean;
-}
+ * turned by rho onto polygon 0's (cm_circle_cost). */
+static double cost(const search *q, double rho) { return cm_circle_cost(q->w, q->s0, q->m, q->g, rho); }
 
 /* Polygon g's arc length at the point of polygon 0's circle at sample i,
  * g's disk turned by rho. */
@@ -232,7 +160,7 @@ static double g_arc_at(const search *q, size_t i, double rho, size_t *near)
 {
     double t = carg(q->w[i] * cexp(-I * rho));
     t -= 2 * CM_PI * floor(t / (2 * CM_PI));
-    return lookup_at(q->g->theta, q->g->s, below_near(q->g->theta, q->g->nb, t, near), t);
+    return cm_circle_lookup_at(q->g->theta, q->g->s, cm_circle_below_near(q->g->theta, q->g->nb, t, near), t);
 }
 
 /* The similarity of the plane closest to the correspondence of turn rho:
@@ -361,79 +289,6 @@ static double best_turn(const search *q)
     return least < costs[least_at] ? rho : at;
 }
 
-/* The tempered parameter of a disk's boundary nodes (nb + 1 values from 0
- * to 1): the running integral of (d theta / d s)^power over arc length,
- * normalised. A part the conformal map crowds by e^-x is crowded by
- * e^-(power x); a similar copy gets the same parameter. */
-static void tempered(const disk *d, const double *theta, double power, double *p)
-{
-    p[0] = 0;
-    for (size_t j = 0; j < d->nb; j++) {
-        double ds = d->s[j + 1] - d->s[j], density = ds > 0 ? (theta[j + 1] - theta[j]) / (2 * CM_PI * ds) : 1.0;
-        p[j + 1] = p[j] + pow(fmax(density, STRETCH_FLOOR), power) * ds;
-    }
-    double total = p[d->nb];
-    for (size_t j = 0; j <= d->nb; j++) p[j] /= total;
-    p[d->nb] = 1.0;
-}
-
-/* Where tempered parameter q (modulo 1) lands on polygon 0 (p0: its
- * tempered parameter per node), as a share of its perimeter below 1. */
-static double on_polygon0(const disk *d0, const double *p0, double q)
-{
-    q -= floor(q);
-    double u = lookup(p0, d0->s, d0->nb, q);
-    return u < 1.0 ? u : nextafter(1.0, 0.0);
-}
-
-/* params of polygon g (counter-clockwise positions): where its vertices
- * sit on polygon 0 when both are read by their tempered parameters, g's
- * disk turned onto polygon 0's by the automorphism x; fine (NULL, or
- * CM_PARAM_FINE per edge): the same at the points evenly spaced along
- * each edge. */
-static cm_status place(const disk *d0, const disk *dg, double rho, size_t n, double power, double *params,
-                       double *fine, cm_error *err)
-{
-    size_t nb = dg->nb, levels = nb / n;
-    double *theta = malloc((nb + 1) * sizeof *theta), *p0 = malloc((d0->nb + 1) * sizeof *p0);
-    double *pg = malloc((nb + 1) * sizeof *pg);
-    if (!theta || !p0 || !pg) {
-        free(theta), free(p0), free(pg);
-        return cm_fail_status(err, CM_ERR_NO_MEMORY);
-    }
-    /* g's nodes on polygon 0's circle */
-    for (size_t j = 0; j <= nb; j++) theta[j] = dg->theta[j] + rho;
-    tempered(d0, d0->theta, power, p0);
-    tempered(dg, theta, power, pg);
-    /* g's vertex 0 lands at polygon 0's tempered parameter `from`: the
-     * median over g's nodes of where each lands less its own parameter
-     * (one node alone may sit in a crowded stretch whose angles doubles
-     * cannot tell apart) */
-    double *offset = theta; /* reused: nb values */
-    double base = 0;
-    for (size_t j = 0; j < nb; j++) {
-        double t = theta[j] - 2 * CM_PI * floor(theta[j] / (2 * CM_PI));
-        double o = lookup(d0->s, p0, d0->nb, lookup(d0->theta, d0->s, d0->nb, t)) - pg[j];
-        if (j == 0) base = o;
-        offset[j] = remainder(o - base, 1.0);
-    }
-    qsort(offset, nb, sizeof *offset, cm_compare_doubles);
-    double from = base + offset[nb / 2];
-    for (size_t c = 0; c < n; c++) {
-        params[c] = on_polygon0(d0, p0, from + pg[c * levels]);
-        /* between the vertices: g's nodes are evenly spaced along its
-         * edges (levels of them per edge), read at CM_PARAM_FINE points */
-        for (size_t l = 0; fine && l < CM_PARAM_FINE; l++) {
-            double at = (double)(c * levels) + (double)(l * levels) / CM_PARAM_FINE;
-            size_t j = (size_t)at;
-            double f = at - (double)j, pj = j < nb ? pg[j] + f * (pg[j + 1] - pg[j]) : pg[nb];
-            fine[c * CM_PARAM_FINE + l] = l == 0 ? params[c] : on_polygon0(d0, p0, from + pj);
-        }
-    }
-    free(theta), free(p0), free(pg);
-    return CM_OK;
-}
-
 cm_status cm_correspond_conformal(const double *const *polygons, const size_t *counts, size_t k,
                                   const int *orientation, const double *const *hole_centres, size_t holes,
                                   double power, double *const *params, double *const *fine, int *found,
@@ -459,7 +314,7 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
     for (size_t i = 0; s == CM_OK && usable && i < SEARCH_SAMPLES; i++) {
         double t = 2 * CM_PI * (double)i / SEARCH_SAMPLES;
         w0[i] = cexp(I * t);
-        s0[i] = lookup(disks[0].theta, disks[0].s, disks[0].nb, t);
+        s0[i] = cm_circle_lookup(disks[0].theta, disks[0].s, disks[0].nb, t);
         mean0 += z0[i] = point_at(&disks[0], s0[i]);
     }
     mean0 /= SEARCH_SAMPLES;
@@ -473,11 +328,11 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
         search q = {w0, s0, z0, SEARCH_SAMPLES, &disks[g], centres, holes ? centres + holes : NULL, holes, prior};
         double rho = best_turn(&q);
         prior = plane_angle(&q, rho);
-        s = place(&disks[0], &disks[g], rho, counts[g], power, params[g], fine ? fine[g] : NULL, err);
+        s = cm_circle_place(&disks[0], &disks[g], rho, counts[g], power, params[g], fine ? fine[g] : NULL, err);
     }
     free(s0), free(z0), free(centres);
     if (s == CM_OK) *found = usable;
-    for (size_t g = 0; disks && g < k; g++) disk_free(&disks[g]);
+    for (size_t g = 0; disks && g < k; g++) cm_circle_free(&disks[g]);
     free(disks), free(w0);
     return s;
 }

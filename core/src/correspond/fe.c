@@ -5,12 +5,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "geom/looptri.h"
 #include "geom/polytri.h"
 
 
 void cm_fe_free(cm_fe_mesh *m)
 {
-    free(m->xy), free(m->tri), free(m->bnode);
+    free(m->xy), free(m->tri), free(m->bnode), free(m->loop_first);
     if (m->started) {
         cholmod_free_sparse(&m->a, &m->cc);
         cholmod_free_factor(&m->factor, &m->cc);
@@ -65,7 +66,7 @@ static int split(cm_fe_mesh *m)
         o[9] = ab, o[10] = bc, o[11] = ca;
     }
     for (long j = 0; j < m->nb; j++) {
-        int32_t a = m->bnode[j], b = m->bnode[(j + 1) % m->nb], ab;
+        int32_t a = m->bnode[j], b = m->bnode[cm_fe_next_boundary(m, j)], ab;
         MIDPOINT(ab, a, b);
         bnode[2 * j] = a, bnode[2 * j + 1] = ab;
     }
@@ -74,7 +75,15 @@ static int split(cm_fe_mesh *m)
     free(m->xy), free(m->tri), free(m->bnode);
     m->xy = xy, m->tri = tri, m->bnode = bnode;
     m->nv = nv, m->nt *= 4, m->nb *= 2, m->levels++;
+    for (size_t l = 0; l <= m->num_loops; l++) m->loop_first[l] *= 2;
     return 0;
+}
+
+long cm_fe_next_boundary(const cm_fe_mesh *m, long j)
+{
+    size_t l = 0;
+    while (j >= m->loop_first[l + 1]) l++;
+    return j + 1 < m->loop_first[l + 1] ? j + 1 : m->loop_first[l];
 }
 
 double cm_fe_tri(const cm_fe_mesh *m, long t, double d[3][2])
@@ -180,29 +189,28 @@ static int assemble(cm_fe_mesh *m, int *usable)
     return status;
 }
 
-cm_status cm_fe_build(cm_fe_mesh *m, const double *xy, const int32_t *tri, size_t n, long min_triangles, int *usable,
-                          cm_error *err)
+/* The mesh's arrays for the n vertices xy in num_loops loops (loop_start:
+ * num_loops + 1 first vertices) and nt triangles (left to fill). */
+static cm_status start_mesh(cm_fe_mesh *m, const double *xy, size_t n, long nt, const size_t *loop_start,
+                            size_t num_loops, cm_error *err)
 {
     memset(m, 0, sizeof *m);
-    *usable = 1;
-    m->nv = (long)n, m->nt = (long)n - 2, m->nb = (long)n;
+    m->nv = (long)n, m->nt = nt, m->nb = (long)n, m->num_loops = num_loops;
     m->xy = malloc(2 * n * sizeof *m->xy);
-    m->tri = malloc(3 * (n - 2) * sizeof *m->tri);
+    m->tri = malloc(3 * (size_t)nt * sizeof *m->tri);
     m->bnode = malloc(n * sizeof *m->bnode);
-    if (!m->xy || !m->tri || !m->bnode) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    m->loop_first = malloc((num_loops + 1) * sizeof *m->loop_first);
+    if (!m->xy || !m->tri || !m->bnode || !m->loop_first) return cm_fail_status(err, CM_ERR_NO_MEMORY);
     memcpy(m->xy, xy, 2 * n * sizeof *m->xy);
     for (size_t i = 0; i < n; i++) m->bnode[i] = (int32_t)i;
-    if (tri) {
-        memcpy(m->tri, tri, 3 * (n - 2) * sizeof *m->tri);
-    } else {
-        int32_t *idx = malloc(n * sizeof *idx);
-        if (!idx) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-        for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
-        int t = cm_polygon_triangulate(xy, idx, (long)n, m->tri, NULL);
-        free(idx);
-        if (t == CM_NO_MEMORY) return cm_fail_status(err, CM_ERR_NO_MEMORY);
-        if (t != 0) return cm_fail(err, CM_ERR_INTERNAL, "finite elements: a polygon has no ear");
-    }
+    for (size_t l = 0; l <= num_loops; l++) m->loop_first[l] = (long)loop_start[l];
+    return CM_OK;
+}
+
+/* Split until min_triangles, the stiffness matrix, its analysis with the
+ * boundary fixed. */
+static cm_status finish_mesh(cm_fe_mesh *m, long min_triangles, int *usable, cm_error *err)
+{
     while (m->nt < min_triangles)
         if (split(m)) return cm_fail_status(err, CM_ERR_NO_MEMORY);
 
@@ -222,6 +230,40 @@ cm_status cm_fe_build(cm_fe_mesh *m, const double *xy, const int32_t *tri, size_
     fill(m);
     m->factor = cholmod_analyze(m->a, &m->cc);
     return m->factor ? CM_OK : chol_status(m, err);
+}
+
+cm_status cm_fe_build(cm_fe_mesh *m, const double *xy, const int32_t *tri, size_t n, long min_triangles, int *usable,
+                      cm_error *err)
+{
+    *usable = 1;
+    const size_t one_loop[2] = {0, n};
+    cm_status s = start_mesh(m, xy, n, (long)n - 2, one_loop, 1, err);
+    if (s != CM_OK) return s;
+    if (tri) {
+        memcpy(m->tri, tri, 3 * (n - 2) * sizeof *m->tri);
+    } else {
+        int32_t *idx = malloc(n * sizeof *idx);
+        if (!idx) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+        for (size_t i = 0; i < n; i++) idx[i] = (int32_t)i;
+        int t = cm_polygon_triangulate(xy, idx, (long)n, m->tri, NULL);
+        free(idx);
+        if (t == CM_NO_MEMORY) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+        if (t != 0) return cm_fail(err, CM_ERR_INTERNAL, "finite elements: a polygon has no ear");
+    }
+    return finish_mesh(m, min_triangles, usable, err);
+}
+
+cm_status cm_fe_build_loops(cm_fe_mesh *m, const double *xy, const size_t *loop_start, size_t num_loops,
+                            long min_triangles, int *usable, cm_error *err)
+{
+    *usable = 1;
+    size_t n = loop_start[num_loops];
+    cm_status s = start_mesh(m, xy, n, (long)(n + 2 * (num_loops - 1)) - 2, loop_start, num_loops, err);
+    if (s != CM_OK) return s;
+    int t = cm_loops_triangulate(xy, loop_start, num_loops, m->tri);
+    if (t == CM_NO_MEMORY) return cm_fail_status(err, CM_ERR_NO_MEMORY);
+    if (t != 0) return cm_fail(err, CM_ERR_INTERNAL, "finite elements: the loops do not bound a polygon");
+    return finish_mesh(m, min_triangles, usable, err);
 }
 
 cm_status cm_fe_solve(cm_fe_mesh *m, long source, int refactor, cm_error *err)
@@ -302,6 +344,18 @@ long cm_fe_deepest(const cm_fe_mesh *m, size_t n, const long *sample, long ns)
     return deepest;
 }
 
+void cm_fe_residual(const cm_fe_mesh *m, double *out)
+{
+    const int *ap = m->a->p, *ai = m->a->i;
+    memset(out, 0, (size_t)m->nv * sizeof *out);
+    for (int j = 0; j < (int)m->nv; j++)
+        for (int p = ap[j]; p < ap[j + 1]; p++) { /* upper triangle: both (i, j) and (j, i) */
+            int i = ai[p];
+            out[i] += m->kx[p] * m->u[j];
+            if (i != j) out[j] += m->kx[p] * m->u[i];
+        }
+}
+
 cm_status cm_fe_harmonic_measure(cm_fe_mesh *m, long source, int refactor, double *w, cm_error *err)
 {
     memset(m->fixed, 0, (size_t)m->nv);
@@ -310,14 +364,7 @@ cm_status cm_fe_harmonic_measure(cm_fe_mesh *m, long source, int refactor, doubl
     cm_status s = cm_fe_solve(m, source, refactor, err);
     if (s != CM_OK) return s;
     /* flux out of boundary node b: -(K u)_b */
-    const int *ap = m->a->p, *ai = m->a->i;
-    memset(m->rhs, 0, (size_t)m->nv * sizeof *m->rhs);
-    for (int j = 0; j < (int)m->nv; j++)
-        for (int p = ap[j]; p < ap[j + 1]; p++) {
-            int i = ai[p];
-            m->rhs[i] += m->kx[p] * m->u[j];
-            if (i != j) m->rhs[j] += m->kx[p] * m->u[i];
-        }
+    cm_fe_residual(m, m->rhs);
     double total = 0;
     for (long j = 0; j < m->nb; j++) total += fmax(0.0, -m->rhs[m->bnode[j]]);
     for (long j = 0; j < m->nb; j++) w[j] = total > 0 ? fmax(0.0, -m->rhs[m->bnode[j]]) / total : 1.0 / (double)m->nb;

@@ -1,7 +1,8 @@
-/* Linear finite elements on one polygon: a mesh of the polygon alone,
- * split into four until fine enough, its stiffness matrix, and solves by
- * CHOLMOD (the ceiling's moduli, the conformal correspondence's harmonic
- * measure). */
+/* Linear finite elements on one polygon, with or without holes: a mesh of
+ * the polygon alone, split into four until fine enough, its stiffness
+ * matrix, and solves by CHOLMOD (the ceiling's moduli, the conformal
+ * correspondence's harmonic measure, the annulus correspondence's harmonic
+ * function). */
 #ifndef CM_CORRESPOND_FE_H
 #define CM_CORRESPOND_FE_H
 
@@ -17,6 +18,8 @@ typedef struct cm_fe_mesh {
     long nb;         /* boundary nodes: n << levels */
     int32_t *bnode;  /* boundary nodes in order, bnode[i << levels] = vertex i */
     int levels;
+    size_t num_loops;
+    long *loop_first; /* num_loops + 1: loop l's boundary nodes are bnode[loop_first[l] .. loop_first[l + 1] - 1] */
     /* stiffness matrix, upper triangle by columns (kx), and the matrix
      * being solved (a: the same pattern, fixed rows and columns replaced
      * by the identity), its analysis (CHOLMOD) */
@@ -37,6 +40,16 @@ typedef struct cm_fe_mesh {
  * after a failure. */
 cm_status cm_fe_build(cm_fe_mesh *m, const double *xy, const int32_t *tri, size_t n, long min_triangles,
                       int *usable, cm_error *err);
+
+/* The same for a polygon with holes: its loops are xy's vertices
+ * loop_start[l] .. loop_start[l + 1] - 1 (the outer loop counter-clockwise,
+ * the holes clockwise, validated), triangulated here (cm_loops_triangulate).
+ * The boundary nodes run loop by loop, each loop in its input direction. */
+cm_status cm_fe_build_loops(cm_fe_mesh *m, const double *xy, const size_t *loop_start, size_t num_loops,
+                            long min_triangles, int *usable, cm_error *err);
+
+/* The boundary node after boundary node j along its loop. */
+long cm_fe_next_boundary(const cm_fe_mesh *m, long j);
 void cm_fe_free(cm_fe_mesh *m);
 
 /* Twice the signed area and the opposite-edge vectors of triangle t. */
@@ -47,6 +60,10 @@ double cm_fe_tri(const cm_fe_mesh *m, long t, double d[3][2]);
  * the fixed values' contribution. u holds the result. refactor: 0 when
  * the fixed set is that of the last call (its factorization is reused). */
 cm_status cm_fe_solve(cm_fe_mesh *m, long source, int refactor, cm_error *err);
+
+/* K u, the stiffness times m->u (every row, fixed ones too), into out
+ * (nv values): at a fixed node the flux of u out of the domain there. */
+void cm_fe_residual(const cm_fe_mesh *m, double *out);
 
 /* Up to CM_FE_SAMPLE interior nodes spread over the node numbering, into
  * sample; how many (0: none). Leaves the boundary fixed at 0 (m->fixed,
