@@ -255,8 +255,9 @@ static double loop_turn(const turn_search *q, int l, double alpha)
     return alpha + q->rg->offset[l] - q->r0->offset[l];
 }
 
-static double turn_cost(const turn_search *q, double alpha)
+static double turn_cost(const void *ctx, double alpha)
 {
+    const turn_search *q = ctx;
     double sum = 0;
     for (int l = 0; l < 2; l++)
         sum += q->weight[l] * cm_circle_cost(q->w, q->s0[l], SEARCH_SAMPLES, &q->rg->loop[l], loop_turn(q, l, alpha));
@@ -267,21 +268,14 @@ static double turn_cost(const turn_search *q, double alpha)
  * golden section around it. */
 static double best_turn(const turn_search *q)
 {
-    double best_cost = HUGE_VAL, step = 2 * CM_PI / ROTATIONS;
+    double best_cost = HUGE_VAL, step = 2 * CM_PI / ROTATIONS, least;
     int best = 0;
     for (int r = 0; r < ROTATIONS; r++) {
         double c = turn_cost(q, step * r);
         if (c < best_cost) best_cost = c, best = r;
     }
-    const double golden = 0.5 * (sqrt(5.0) - 1);
-    double lo = step * (best - 1), hi = step * (best + 1);
-    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo), f1 = turn_cost(q, x1), f2 = turn_cost(q, x2);
-    for (int it = 0; it < GOLDEN_STEPS; it++) {
-        if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = turn_cost(q, x1);
-        else lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = turn_cost(q, x2);
-    }
-    double least = f1 < f2 ? x1 : x2;
-    return fmin(f1, f2) < best_cost ? least : step * best;
+    double alpha = cm_circle_golden_least(turn_cost, q, step * (best - 1), step * (best + 1), GOLDEN_STEPS, &least);
+    return least < best_cost ? alpha : step * best;
 }
 
 cm_status cm_correspond_annulus(const cm_loops *polygons, size_t k, const int *orientation, double power,

@@ -34,10 +34,12 @@
  * aim, which a round ring never is.
  *
  * How: linear finite elements on a mesh of each polygon (fe.h); psi along
- * each loop is the running flux of u through its edges, and the offset
- * between the loops the flux through a path of triangles from the hole to
- * the outer loop (the conjugate of a discrete harmonic u is a
- * Crouzeix-Raviart function, continuous at the edges' midpoints). */
+ * each loop is the running sum of the boundary nodes' fluxes (K u), and
+ * the offset between the loops psi's change along a path of triangles
+ * from the hole to the outer loop (the conjugate of a discrete harmonic u
+ * is a Crouzeix-Raviart function, continuous at the edges' midpoints; its
+ * change around a boundary node, midpoint to midpoint, is the node's
+ * flux). */
 cm_status cm_correspond_annulus(const cm_loops *polygons, size_t k, const int *orientation, double power,
                                 double *const *params, double *const *fine, int *found, cm_error *err);
 

@@ -71,6 +71,19 @@ double cm_circle_cost(const double complex *w, const double *s0, size_t m, const
     return sum2 / (double)m - mean * mean;
 }
 
+double cm_circle_golden_least(double (*f)(const void *ctx, double x), const void *ctx, double lo, double hi, int steps,
+                              double *least)
+{
+    const double golden = 0.5 * (sqrt(5.0) - 1);
+    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo), f1 = f(ctx, x1), f2 = f(ctx, x2);
+    for (int it = 0; it < steps; it++) {
+        if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = f(ctx, x1);
+        else lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = f(ctx, x2);
+    }
+    *least = fmin(f1, f2);
+    return f1 < f2 ? x1 : x2;
+}
+
 /* The tempered parameter of a loop's boundary nodes (nb + 1 values from 0
  * to 1), as circle.h says. */
 static void tempered(const cm_circle *d, const double *theta, double power, double *p)

@@ -40,6 +40,11 @@ double cm_circle_lookup(const double *xs, const double *ys, size_t len, double x
  * point (lifted). Zero for a similar copy turned right. */
 double cm_circle_cost(const double complex *w, const double *s0, size_t m, const cm_circle *g, double rho);
 
+/* The golden-section search, steps steps, for the least of f(ctx, x)
+ * within [lo, hi]: the x found, *least its value. */
+double cm_circle_golden_least(double (*f)(const void *ctx, double x), const void *ctx, double lo, double hi, int steps,
+                              double *least);
+
 /* params of loop g (n vertices, counter-clockwise positions): where its
  * vertices sit on loop 0 (a share of its perimeter from its vertex 0) when
  * both are read by their tempered parameters, the running integral of (d

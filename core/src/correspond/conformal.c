@@ -152,7 +152,11 @@ static double complex point_at(const disk *d, double u)
 
 /* How far the correspondence is from arc length with polygon g's disk
  * turned by rho onto polygon 0's (cm_circle_cost). */
-static double cost(const search *q, double rho) { return cm_circle_cost(q->w, q->s0, q->m, q->g, rho); }
+static double cost(const void *ctx, double rho)
+{
+    const search *q = ctx;
+    return cm_circle_cost(q->w, q->s0, q->m, q->g, rho);
+}
 
 /* Polygon g's arc length at the point of polygon 0's circle at sample i,
  * g's disk turned by rho. */
@@ -194,7 +198,11 @@ static double turn_from_prior(const search *q, double angle)
 }
 
 /* That for the correspondence of turn rho. */
-static double plane_turn(const search *q, double rho) { return turn_from_prior(q, plane_angle(q, rho)); }
+static double plane_turn(const void *ctx, double rho)
+{
+    const search *q = ctx;
+    return turn_from_prior(q, plane_angle(q, rho));
+}
 
 /* How far the similarity a z + centre puts polygon 0's hole centres from
  * polygon g's nearest ones: the sum of the squared distances. */
@@ -210,8 +218,9 @@ static double holes_off_under(const search *q, double complex a, double complex 
 }
 
 /* That under the similarity closest to the correspondence of turn rho. */
-static double holes_off(const search *q, double rho)
+static double holes_off(const void *ctx, double rho)
 {
+    const search *q = ctx;
     double complex a, centre;
     plane_fit(q, rho, &a, &centre);
     return holes_off_under(q, a, centre);
@@ -225,20 +234,6 @@ static double holes_off(const search *q, double rho)
  * least turn of the plane (from polygon g - 1's): two sections of a pipe
  * pair without a twist, of a flange turned a little by the little turn. */
 #define TURN_TIE 1e-4
-
-/* The golden-section search for the least of f within [lo, hi]. */
-static double golden_least(const search *q, double (*f)(const search *, double), double lo, double hi,
-                           double *least)
-{
-    const double golden = 0.5 * (sqrt(5.0) - 1);
-    double x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo), f1 = f(q, x1), f2 = f(q, x2);
-    for (int it = 0; it < GOLDEN_STEPS; it++) {
-        if (f1 < f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = f(q, x1);
-        else lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = f(q, x2);
-    }
-    *least = fmin(f1, f2);
-    return f1 < f2 ? x1 : x2;
-}
 
 /* The turn of least cost: the best of ROTATIONS evenly spaced, then
  * golden-section search around it (the cost is V-shaped at a similar
@@ -281,11 +276,13 @@ static double best_turn(const search *q)
         double at = 2 * CM_PI * least_at / ROTATIONS;
         if (costs[(least_at + 1) % ROTATIONS] <= tie2 && costs[(least_at + ROTATIONS - 1) % ROTATIONS] <= tie2) {
             int by_holes = most_off > within; /* else the holes do not tell the turns apart */
-            double rho = golden_least(q, by_holes ? holes_off : plane_turn, at - step, at + step, &least);
+            double rho = cm_circle_golden_least(by_holes ? holes_off : plane_turn, q, at - step, at + step, GOLDEN_STEPS,
+                                                &least);
             return least < (by_holes ? off[least_at] : least_turn) ? rho : at;
         }
     }
-    double at = 2 * CM_PI * least_at / ROTATIONS, rho = golden_least(q, cost, at - step, at + step, &least);
+    double at = 2 * CM_PI * least_at / ROTATIONS;
+    double rho = cm_circle_golden_least(cost, q, at - step, at + step, GOLDEN_STEPS, &least);
     return least < costs[least_at] ? rho : at;
 }
 
