@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/keymap.h"
 #include "base/mesh.h"
 #include "correspond/arclength.h"
 #include "correspond/circle.h"
@@ -47,33 +48,23 @@ static void midpoint(const cm_fe_mesh *m, int32_t a, int32_t b, double out[2])
 }
 
 /* Each triangle side's neighbour across it (3 nt: side i from corner i to
- * corner i + 1; -1 on the boundary), by an open-addressing table of edge
- * keys. 0 or CM_NO_MEMORY. */
+ * corner i + 1; -1 on the boundary). 0 or CM_NO_MEMORY. */
 static int neighbours(const cm_fe_mesh *m, long *across)
 {
-    size_t cap = 16;
-    while (cap < 6 * (size_t)m->nt) cap *= 2;
-    uint64_t *key = malloc(cap * sizeof *key);
-    long *side = malloc(cap * sizeof *side);
-    if (!key || !side) {
-        free(key), free(side);
-        return CM_NO_MEMORY;
-    }
-    memset(key, 0xff, cap * sizeof *key);
+    cm_keymap side = {0};
+    if (cm_keymap_reserve(&side, 3 * (size_t)m->nt)) return CM_NO_MEMORY;
     for (long x = 0; x < 3 * m->nt; x++) {
         across[x] = -1;
-        int32_t a = m->tri[x], b = m->tri[x % 3 == 2 ? x - 2 : x + 1];
-        int32_t lo = a < b ? a : b, hi = a < b ? b : a;
-        uint64_t k = ((uint64_t)(uint32_t)lo << 32) | (uint32_t)hi;
-        size_t h = (size_t)((k * 0x9E3779B97F4A7C15ull) >> 17) & (cap - 1);
-        while (key[h] != UINT64_MAX && key[h] != k) h = (h + 1) & (cap - 1);
-        if (key[h] == UINT64_MAX) {
-            key[h] = k, side[h] = x;
-        } else {
-            across[x] = side[h], across[side[h]] = x;
+        int added;
+        int64_t *first = cm_keymap_put(&side, cm_pair_key(m->tri[x], m->tri[x % 3 == 2 ? x - 2 : x + 1]), &added);
+        if (!first) {
+            cm_keymap_free(&side);
+            return CM_NO_MEMORY;
         }
+        if (added) *first = x;
+        else across[x] = (long)*first, across[*first] = x;
     }
-    free(key), free(side);
+    cm_keymap_free(&side);
     return 0;
 }
 

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/keymap.h"
 #include "geom/looptri.h"
 #include "geom/polytri.h"
 
@@ -21,57 +22,55 @@ void cm_fe_free(cm_fe_mesh *m)
     memset(m, 0, sizeof *m);
 }
 
+/* The node at the middle of edge ab, made (after the nv nodes so far)
+ * the first time the edge is met. -1 out of memory. */
+static int32_t midpoint_node(cm_keymap *mid, const double *from, double *xy, long *nv, int32_t a, int32_t b)
+{
+    int added;
+    int64_t *node = cm_keymap_put(mid, cm_pair_key(a, b), &added);
+    if (!node) return -1;
+    if (added) {
+        *node = *nv;
+        xy[2 * *nv] = 0.5 * (from[2 * a] + from[2 * b]), xy[2 * *nv + 1] = 0.5 * (from[2 * a + 1] + from[2 * b + 1]);
+        ++*nv;
+    }
+    return (int32_t)*node;
+}
+
 /* Every triangle split into four at its edge midpoints (one new node per
- * edge, found through an open-addressing table of edge keys). */
+ * edge). */
 static int split(cm_fe_mesh *m)
 {
-    size_t cap = 16;
-    while (cap < 4 * (size_t)m->nt + 8) cap *= 2;
-    uint64_t *key = malloc(cap * sizeof *key);
-    int32_t *mid = malloc(cap * sizeof *mid);
+    cm_keymap mid = {0};
     long edges_max = 3 * m->nt; /* at most, before sharing */
     double *xy = malloc(2 * (size_t)(m->nv + edges_max) * sizeof *xy);
     int32_t *tri = malloc(12 * (size_t)m->nt * sizeof *tri);
     int32_t *bnode = malloc(2 * (size_t)m->nb * sizeof *bnode);
-    if (!key || !mid || !xy || !tri || !bnode) {
-        free(key), free(mid), free(xy), free(tri), free(bnode);
-        return CM_NO_MEMORY;
-    }
-    memset(key, 0xff, cap * sizeof *key);
-    memcpy(xy, m->xy, 2 * (size_t)m->nv * sizeof *xy);
+    int ok = xy && tri && bnode && cm_keymap_reserve(&mid, (size_t)edges_max) == 0;
     long nv = m->nv;
-#define MIDPOINT(out, a, b)                                                                   \
-    do {                                                                                      \
-        int32_t lo_ = (a) < (b) ? (a) : (b), hi_ = (a) < (b) ? (b) : (a);                     \
-        uint64_t k_ = ((uint64_t)(uint32_t)lo_ << 32) | (uint32_t)hi_;                        \
-        size_t h_ = (size_t)((k_ * 0x9E3779B97F4A7C15ull) >> 17) & (cap - 1);                 \
-        while (key[h_] != UINT64_MAX && key[h_] != k_) h_ = (h_ + 1) & (cap - 1);             \
-        if (key[h_] == UINT64_MAX) {                                                          \
-            key[h_] = k_, mid[h_] = (int32_t)nv;                                              \
-            xy[2 * nv] = 0.5 * (m->xy[2 * lo_] + m->xy[2 * hi_]);                             \
-            xy[2 * nv + 1] = 0.5 * (m->xy[2 * lo_ + 1] + m->xy[2 * hi_ + 1]);                 \
-            nv++;                                                                             \
-        }                                                                                     \
-        (out) = mid[h_];                                                                      \
-    } while (0)
-    for (long t = 0; t < m->nt; t++) {
-        int32_t a = m->tri[3 * t], b = m->tri[3 * t + 1], c = m->tri[3 * t + 2], ab, bc, ca;
-        MIDPOINT(ab, a, b);
-        MIDPOINT(bc, b, c);
-        MIDPOINT(ca, c, a);
+    if (ok) memcpy(xy, m->xy, 2 * (size_t)m->nv * sizeof *xy);
+    for (long t = 0; ok && t < m->nt; t++) {
+        int32_t a = m->tri[3 * t], b = m->tri[3 * t + 1], c = m->tri[3 * t + 2];
+        int32_t ab = midpoint_node(&mid, m->xy, xy, &nv, a, b), bc = midpoint_node(&mid, m->xy, xy, &nv, b, c);
+        int32_t ca = midpoint_node(&mid, m->xy, xy, &nv, c, a);
         int32_t *o = tri + 12 * t;
         o[0] = a, o[1] = ab, o[2] = ca;
         o[3] = ab, o[4] = b, o[5] = bc;
         o[6] = ca, o[7] = bc, o[8] = c;
         o[9] = ab, o[10] = bc, o[11] = ca;
+        ok = ab >= 0 && bc >= 0 && ca >= 0;
     }
-    for (long j = 0; j < m->nb; j++) {
-        int32_t a = m->bnode[j], b = m->bnode[cm_fe_next_boundary(m, j)], ab;
-        MIDPOINT(ab, a, b);
+    for (long j = 0; ok && j < m->nb; j++) {
+        int32_t a = m->bnode[j], b = m->bnode[cm_fe_next_boundary(m, j)];
+        int32_t ab = midpoint_node(&mid, m->xy, xy, &nv, a, b);
         bnode[2 * j] = a, bnode[2 * j + 1] = ab;
+        ok = ab >= 0;
     }
-#undef MIDPOINT
-    free(key), free(mid);
+    cm_keymap_free(&mid);
+    if (!ok) {
+        free(xy), free(tri), free(bnode);
+        return CM_NO_MEMORY;
+    }
     free(m->xy), free(m->tri), free(m->bnode);
     m->xy = xy, m->tri = tri, m->bnode = bnode;
     m->nv = nv, m->nt *= 4, m->nb *= 2, m->levels++;

@@ -81,6 +81,7 @@
 #include "remesh/restart.h"
 #include "remesh/smooth.h"
 #include "base/clock.h"
+#include "base/keymap.h"
 #include "geom/angle.h"
 #ifdef CM_REMESH_TRACE
 #include <stdio.h>
@@ -168,19 +169,13 @@
  * for 14-16 % more CPU. */
 #define CM_MAXMIN_ITERATIONS 800
 
-typedef struct tabu_set { /* keys (vertex pairs, forced moves) -> counts */
-    uint64_t *keys;       /* 0: empty slot */
-    uint32_t *count;
-    size_t cap, used;
-} tabu_set;
-
 /* Forced moves undone in step_out, with where they acted: the vertices
  * of the triangles their transaction changed and of the move's own
  * triangles. Such a move runs again only once a kept move has moved or
  * reconnected a vertex within a ring of those vertices (till then it
  * meets what it met before), and not after CM_FORCED_UNDONE undos. */
 typedef struct failed_moves {
-    tabu_set at;      /* move key -> its entry + 1 */
+    cm_keymap at;     /* move key -> its entry + 1 */
     cm_ibuf entries;  /* 4 per entry: epoch when last undone, offset and length in region, times undone */
     cm_ibuf region;
     uint32_t *changed; /* vertex -> epoch of the last kept move within a ring of it */
@@ -192,7 +187,7 @@ typedef struct remesher {
     cm_kmesh km;
     cm_work verts, edges;
     cm_ibuf star, batch;
-    tabu_set tabu;
+    cm_keymap tabu;   /* vertex pairs -> splits tried there */
     failed_moves failed;
     cm_ibuf around;
     const cm_options *o;
@@ -233,78 +228,34 @@ static void trace(const remesher *x, const char *step)
 
 /* ---- edges not to split again --------------------------------------------- */
 
-static uint64_t pair_key(int32_t a, int32_t b)
+/* key's count in t (0: not there). */
+static uint32_t tabu_count_key(const cm_keymap *t, uint64_t key)
 {
-    uint64_t lo = (uint32_t)(a < b ? a : b), hi = (uint32_t)(a < b ? b : a);
-    return (hi << 32 | lo) + 1;
+    const int64_t *v = cm_keymap_find(t, key);
+    return v ? (uint32_t)*v : 0;
 }
 
-static size_t tabu_slot(const tabu_set *t, uint64_t key)
+static int tabu_count(const cm_keymap *t, int32_t a, int32_t b)
 {
-    size_t i = (size_t)((key * 0x9E3779B97F4A7C15ull) >> 17) & (t->cap - 1);
-    while (t->keys[i] && t->keys[i] != key) i = (i + 1) & (t->cap - 1);
-    return i;
-}
-
-static uint32_t tabu_count_key(const tabu_set *t, uint64_t key)
-{
-    if (!t->cap) return 0;
-    size_t i = tabu_slot(t, key);
-    return t->keys[i] ? t->count[i] : 0;
-}
-
-static int tabu_count(const tabu_set *t, int32_t a, int32_t b)
-{
-    return tabu_count_key(t, pair_key(a, b));
-}
-
-static int tabu_grow(tabu_set *t)
-{
-    size_t cap = t->cap ? 2 * t->cap : 256;
-    uint64_t *keys = calloc(cap, sizeof *keys);
-    uint32_t *count = calloc(cap, sizeof *count);
-    if (!keys || !count) {
-        free(keys), free(count);
-        return -1;
-    }
-    tabu_set bigger = {keys, count, cap, t->used};
-    for (size_t i = 0; i < t->cap; i++)
-        if (t->keys[i]) {
-            size_t j = tabu_slot(&bigger, t->keys[i]);
-            keys[j] = t->keys[i], count[j] = t->count[i];
-        }
-    free(t->keys), free(t->count);
-    *t = bigger;
-    return 0;
+    return tabu_count_key(t, cm_pair_key(a, b));
 }
 
 /* Sets key's count to count(old) (a new key: old = 0). */
-static int tabu_set_key(tabu_set *t, uint64_t key, uint32_t (*count)(uint32_t, uint32_t), uint32_t arg)
+static int tabu_set_key(cm_keymap *t, uint64_t key, uint32_t (*count)(uint32_t, uint32_t), uint32_t arg)
 {
-    if (2 * (t->used + 1) > t->cap && tabu_grow(t)) return -1;
-    size_t i = tabu_slot(t, key);
-    if (!t->keys[i]) t->keys[i] = key, t->count[i] = 0, t->used++;
-    t->count[i] = count(t->count[i], arg);
+    int added;
+    int64_t *v = cm_keymap_put(t, key, &added);
+    if (!v) return -1;
+    *v = count((uint32_t)*v, arg);
     return 0;
 }
 
 static uint32_t count_up(uint32_t old, uint32_t times) { return old + times > 200 ? 200 : old + times; }
 static uint32_t count_is(uint32_t old, uint32_t value) { return (void)old, value; }
 
-static int tabu_add_key(tabu_set *t, uint64_t key, int times)
+static int tabu_add(cm_keymap *t, int32_t a, int32_t b, int times)
 {
-    return tabu_set_key(t, key, count_up, (uint32_t)times);
-}
-
-static int tabu_add(tabu_set *t, int32_t a, int32_t b, int times)
-{
-    return tabu_add_key(t, pair_key(a, b), times);
-}
-
-static void tabu_clear(tabu_set *t)
-{
-    if (t->cap) memset(t->keys, 0, t->cap * sizeof *t->keys);
-    t->used = 0;
+    return tabu_set_key(t, cm_pair_key(a, b), count_up, (uint32_t)times);
 }
 
 /* ---- flips and smoothing -------------------------------------------------- */
@@ -762,7 +713,7 @@ static cm_status step_out(remesher *x, size_t n, int32_t window, long max_tries)
     int32_t worst[CM_STEP_OUT_WIDE], work[2 * CM_STEP_OUT_WIDE], near[12];
     long budget = budget_of(x->o, n);
     failed_moves *f = &x->failed;
-    tabu_clear(&f->at);
+    cm_keymap_clear(&f->at);
     f->entries.n = f->region.n = 0;
     long tries = 0;
     for (long round = 0; round < stall_limit(x) && cm_kmesh_min_slack(km) < 0 && tries < max_tries; round++) {
@@ -895,8 +846,8 @@ static void remesher_free(remesher *x)
     cm_kmesh_free(&x->km);
     cm_work_free(&x->verts), cm_work_free(&x->edges);
     cm_ibuf_free(&x->star), cm_ibuf_free(&x->batch);
-    free(x->tabu.keys), free(x->tabu.count);
-    free(x->failed.at.keys), free(x->failed.at.count), free(x->failed.changed);
+    cm_keymap_free(&x->tabu);
+    cm_keymap_free(&x->failed.at), free(x->failed.changed);
     cm_ibuf_free(&x->failed.entries), cm_ibuf_free(&x->failed.region), cm_ibuf_free(&x->around);
 }
 
