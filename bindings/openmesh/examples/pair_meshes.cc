@@ -10,7 +10,9 @@
 //
 // IN_A and IN_B hold one polygon each, in any format OpenMesh reads (OFF,
 // OBJ, PLY, STL, OM): a disk-shaped mesh (its boundary), a single polygonal
-// face, or face-less vertices in polygon order. Their vertices correspond by
+// face, or face-less vertices in polygon order. OpenMesh's readers drop OBJ
+// `l` lines and PLY edges, so a section saved as edges is read as its
+// vertices in file order; where that is not a polygon the error says so. Their vertices correspond by
 // polygon index. OUT_A and OUT_B receive the two triangle meshes, which share
 // one connectivity; the format follows the file extension. OpenMesh 9
 // writes OFF, OBJ, PLY and STL coordinates as float; OM keeps doubles.
@@ -18,10 +20,32 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 #include <vector>
 
 namespace {
+
+// Does the file hold edges that OpenMesh's readers drop: OBJ `l` lines,
+// a PLY `element edge` with edges in it? Read only where a face-less mesh
+// did not make a polygon, to say why.
+bool has_dropped_edges(const std::string &path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  bool ply = false;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line == "ply") ply = true;
+    if (ply) {
+      if (line.rfind("element edge ", 0) == 0) return std::atol(line.c_str() + 13) > 0;
+      if (line == "end_header") return false;
+    } else if (line.rfind("l ", 0) == 0) {
+      return true;
+    }
+  }
+  return false;
+}
 
 int usage()
 {
@@ -74,7 +98,12 @@ int main(int argc, char **argv)
   try {
     tool.run();
   } catch (const compatmesh::Error &e) {
-    std::fprintf(stderr, "pair_meshes: %s\n", e.what());
+    std::string why = e.what();
+    for (int i = 0; i < 2; i++)
+      if (inputs[i].n_faces() == 0 && has_dropped_edges(files[i]))
+        why += "; " + files[i] + ": OpenMesh's reader drops its edges (OBJ l lines, PLY edges) and takes "
+               "its vertices in file order, which need not be the polygon's (compatmesh triangulate reads the edges)";
+    std::fprintf(stderr, "pair_meshes: %s\n", why.c_str());
     return 1;
   }
 
