@@ -1,5 +1,7 @@
 /* compatmesh morph: sections of the convex-combination morph between the
  * compatibly triangulated inputs, written as frames. */
+#define _POSIX_C_SOURCE 200809L /* strdup */
+#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,7 +29,9 @@ static const option_spec morph_options[] = {
     {"out-dir", 'o', "DIR",
      "where the frames go (required); DIR is created if\n"
      "missing (its parent must exist); files in DIR named\n"
-     "like an output are replaced, other files are kept"},
+     "like an output are replaced, an earlier morph's\n"
+     "frames this one does not write (frame_NNN.off, .obj\n"
+     "or .ply) removed, other files kept"},
     {"frames", 'n', "N", "number of frames, 2 to 1000 (default 11), at\n"
                          "t = 0, 1/(N-1), ..., 1"},
     {"morph", OPTION_MORPH, "NAME",
@@ -164,6 +168,8 @@ typedef struct morph_run {
     size_t *inverted;
     char **names;        /* frame_NNN.FMT */
     char **final_paths;  /* DIR/frame_NNN.FMT */
+    char **stale;        /* an earlier morph's frames in DIR this one does not write */
+    size_t stale_count;
     staged_output output;
 } morph_run;
 
@@ -175,6 +181,8 @@ static void morph_run_free(morph_run *run)
     }
     free(run->names);
     free(run->final_paths);
+    for (size_t i = 0; i < run->stale_count; i++) free(run->stale[i]);
+    free(run->stale);
     free(run->xy);
     free(run->t);
     free(run->min_angle_deg);
@@ -212,6 +220,12 @@ static int compute_frames(morph_run *run, cli_error *error)
                         error);
 }
 
+/* The name of frame f in format fmt, as write_frames gives it. */
+static void frame_name(char *name, size_t size, size_t f, mesh_format fmt)
+{
+    snprintf(name, size, "frame_%03zu.%s", f, mesh_format_name(fmt));
+}
+
 static int write_frames(morph_run *run, cli_error *error)
 {
     const morph_args *args = run->args;
@@ -237,7 +251,7 @@ static int write_frames(morph_run *run, cli_error *error)
     if (xyz) polygon_frames(run->tri.polygons, k, xyz + 3 * vertices);
     for (size_t f = 0; f < args->frames; f++) {
         char name[64];
-        snprintf(name, sizeof name, "frame_%03zu.%s", f, mesh_format_name(args->format));
+        frame_name(name, sizeof name, f, args->format);
         run->names[f] = malloc(strlen(name) + 1);
         const char *path = staged_output_path(&run->output, name);
         if (!run->names[f] || !path) {
@@ -307,6 +321,51 @@ done:
     return code;
 }
 
+/* Is name a frame some morph writes (frame_NNN in any frame format)? Then
+ * *f and *fmt say which. */
+static int frame_of(const char *name, size_t *f, mesh_format *fmt)
+{
+    static const mesh_format formats[] = {MESH_FORMAT_OFF, MESH_FORMAT_OBJ, MESH_FORMAT_PLY};
+    char *end;
+    if (strncmp(name, "frame_", 6) != 0 || name[6] < '0' || name[6] > '9') return 0;
+    unsigned long n = strtoul(name + 6, &end, 10);
+    if (*end != '.' || n >= MAX_FRAMES) return 0;
+    for (size_t i = 0; i < sizeof formats / sizeof *formats; i++) {
+        char own[64];
+        frame_name(own, sizeof own, n, formats[i]);
+        if (strcmp(own, name) == 0) return *f = n, *fmt = formats[i], 1;
+    }
+    return 0;
+}
+
+/* An earlier morph's frames in DIR that this run does not write (frames
+ * past this run's count, or in another format) go on commit: report.json
+ * describes the frames beside it, and a tool reading frame_* reads one
+ * morph. */
+static int remove_stale_frames(morph_run *run, cli_error *error)
+{
+    DIR *dir = opendir(run->output.target);
+    if (!dir) return CLI_EXIT_OK; /* a new directory, or none readable to clear */
+    int code = CLI_EXIT_OK;
+    for (struct dirent *e; code == CLI_EXIT_OK && (e = readdir(dir));) {
+        size_t f;
+        mesh_format fmt;
+        if (!frame_of(e->d_name, &f, &fmt) || (f < run->args->frames && fmt == run->args->format)) continue;
+        char **more = realloc(run->stale, (run->stale_count + 1) * sizeof *more);
+        char *copy = more ? strdup(e->d_name) : NULL;
+        if (more) run->stale = more;
+        if (!copy) {
+            cli_error_set(error, "out of memory");
+            code = CLI_EXIT_INTERNAL;
+        } else {
+            run->stale[run->stale_count++] = copy;
+        }
+    }
+    closedir(dir);
+    staged_output_remove(&run->output, (const char *const *)run->stale, run->stale_count);
+    return code;
+}
+
 static int write_outputs(morph_run *run, cli_error *error)
 {
     int code = staged_output_begin(&run->output, run->args->out_dir, run->args->tri.inputs,
@@ -330,6 +389,7 @@ static int write_outputs(morph_run *run, cli_error *error)
         code = write_morph_report(report, &info, error);
     }
     if (code == CLI_EXIT_OK) code = write_frame_pictures(run, svg, png, error);
+    if (code == CLI_EXIT_OK) code = remove_stale_frames(run, error);
     if (code == CLI_EXIT_OK) code = staged_output_commit(&run->output, error);
     return code;
 }

@@ -153,6 +153,27 @@ def test_failure_while_writing_leaves_the_directory_as_it_was(cm, tmp_path):
     assert leftovers(tmp_path) == []
 
 
+def test_a_second_morph_replaces_the_first_ones_frames(cm, tmp_path):
+    """A morph into a folder holding an earlier morph leaves only its own
+    frames there (the earlier ones past its count, or in another format,
+    removed), so report.json describes every frame beside it; files that
+    are not frames stay."""
+    write_pair(tmp_path, twisted_pair())
+    out = tmp_path / "out"
+    first = cm("morph", "a.xy", "b.xy", "--frames", 6, "-o", "out")
+    assert first.returncode == 0, first.stderr
+    obj = cm("morph", "a.xy", "b.xy", "--frames", 2, "--format", "obj", "-o", "out")
+    assert obj.returncode == 0, obj.stderr
+    (out / "frame_notes.txt").write_text("mine")
+    (out / "frame_0001.off").write_text("not a name morph writes")
+    second = cm("morph", "a.xy", "b.xy", "--frames", 3, "-o", "out")
+    assert second.returncode == 0, second.stderr
+    frames = sorted(p.name for p in out.iterdir() if p.name.startswith("frame_"))
+    assert frames == ["frame_000.off", "frame_0001.off", "frame_001.off", "frame_002.off", "frame_notes.txt"]
+    report = json.loads((out / "report.json").read_text())
+    assert [os.path.basename(f["file"]) for f in report["frames"]] == frames[:1] + frames[2:4]
+
+
 @pytest.mark.parametrize("fmt", ["obj", "ply"])
 def test_frames_in_other_formats(cm, tmp_path, fmt):
     write_pair(tmp_path, glyph_pair())
