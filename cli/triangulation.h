@@ -90,11 +90,14 @@ enum {
      "output: conformal, the inputs' maps onto the disk\n"                    \
      "made to agree (where turns fit alike, as a disc's,\n"                   \
      "the one that puts holes on holes and turns least),\n"                   \
-     "their crowding tempered (with holes\n"                                  \
-     "the outer loops so; the holes paired by position\n"                     \
-     "where that is one-to-one, each from the start whose\n"                  \
-     "points lie nearest, carried radially through the\n"                     \
-     "outer loops' pairing); with --pin-corners, arc\n"                      \
+     "their crowding tempered (one hole: both loops at\n"                     \
+     "once through the maps onto round annuli, the outer\n"                   \
+     "loops' pairing too where that ends short of the\n"                      \
+     "aim; more holes: the outer loops so, the holes\n"                       \
+     "paired by position where that is one-to-one, each\n"                    \
+     "from the start whose points lie nearest, carried\n"                     \
+     "radially through the outer loops' pairing); with\n"                     \
+     "--pin-corners, arc\n"                                                   \
      "length from the starts that align the inputs best\n"                   \
      "up to a similarity; similarity: that for all\n"                        \
      "inputs"},                                                               \

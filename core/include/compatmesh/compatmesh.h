@@ -149,11 +149,15 @@ typedef enum cm_correspondence {
      * and turned to agree, the crowding of thin parts tempered (stretch
      * to the power 1/4), the others' vertices placed along each edge by
      * that parameter, or the similarity choice below where that allows
-     * the higher certified ceiling. With pins: ARCLENGTH between them. With
-     * pin_corners_deg, and for polygons with holes: arc length from the
-     * start of every polygon (against polygon 0's first vertex)
-     * whose arc-length points are closest to a similar image of polygon
-     * 0's (least squares over rotation, scale and translation). */
+     * the higher certified ceiling. Polygons with one hole: both loops at
+     * once through the annulus (CM_CHOICE_ANNULUS), the outer loops'
+     * pairing too where that ends short of the remesher's aim; with more
+     * holes, the outer loops as polygons without holes and each hole from
+     * the start the outer loops' similarity chooses. With pins: ARCLENGTH
+     * between them. With pin_corners_deg: arc length from the start of
+     * every polygon (against polygon 0's first vertex) whose arc-length
+     * points are closest to a similar image of polygon 0's (least squares
+     * over rotation, scale and translation). */
     CM_CORRESPOND_AUTO,
     /* That similarity choice for every input (AUTO's for all polygons
      * before the conformal one): better where the conformal map crowds
@@ -283,10 +287,12 @@ typedef enum cm_correspondence_choice {
      * far below the remesher's aim (the corners turning by more than 90
      * degrees pinned, as pin_corners_deg = 90 would). */
     CM_CHOICE_CORNERS,
-    /* AUTO on polygons with one hole, a rescue where the pairings above end
-     * far below the remesher's aim: both loops paired at once through the
-     * conformal maps onto round annuli (the angle around the annulus,
-     * tempered as the conformal correspondence's). */
+    /* AUTO on polygons with one hole, its first pairing for them: both
+     * loops paired at once through the conformal maps onto round annuli
+     * (the angle around the annulus, tempered as the conformal
+     * correspondence's; of the turns that fit alike, the least turn of the
+     * plane). Where it ends short of the remesher's aim the outer loops'
+     * pairing runs too, the better kept. */
     CM_CHOICE_ANNULUS
 } cm_correspondence_choice;
 

@@ -231,12 +231,16 @@ static cm_status ring_build(const cm_loops *p, const int *orientation, ring *out
 }
 
 /* The turn between two annuli: polygon 0's samples on each loop (m points
- * w, arc lengths s0[l]), polygon g's ring, the loops' weights. */
+ * w, arc lengths s0[l], the outer loop's points z0, centred), polygon g's
+ * ring, the loops' weights, and the turn of the plane chosen for polygon
+ * g - 1 (0 for g = 1). */
 typedef struct turn_search {
     const double complex *w;
     const double *s0[2];
+    const double complex *z0;
     const ring *r0, *rg;
     double weight[2];
+    double prior;
 } turn_search;
 
 /* The turn alpha takes polygon g's annulus onto polygon 0's: loop l of g
@@ -255,18 +259,52 @@ static double turn_cost(const void *ctx, double alpha)
     return sum;
 }
 
+/* The angle by which the pairing of turn alpha turns the plane (the
+ * outer loops' closest similarity). */
+static double plane_angle(const turn_search *q, double alpha)
+{
+    double complex a, centre;
+    cm_circle_plane_fit(q->w, q->z0, SEARCH_SAMPLES, &q->rg->loop[0], loop_turn(q, 0, alpha), &a, &centre);
+    return carg(a);
+}
+
+/* How far that is from polygon g - 1's, in [0, pi]. */
+static double plane_turn(const void *ctx, double alpha)
+{
+    const turn_search *q = ctx;
+    return fabs(remainder(plane_angle(q, alpha) - q->prior, 2 * CM_PI));
+}
+
 /* The least of turn_cost: the best of ROTATIONS evenly spaced, refined by
- * golden section around it. */
+ * golden section around it. Where turns apart fit alike
+ * (CM_CIRCLE_TURN_TIE: a round ring, which every turn takes onto itself),
+ * the least turn of the plane chooses among them, as the disk map's
+ * search does: two sections of a pipe pair without a twist. */
 static double best_turn(const turn_search *q)
 {
-    double best_cost = HUGE_VAL, step = 2 * CM_PI / ROTATIONS, least;
+    double costs[ROTATIONS], best_cost = HUGE_VAL, step = 2 * CM_PI / ROTATIONS, least;
     int best = 0;
     for (int r = 0; r < ROTATIONS; r++) {
-        double c = turn_cost(q, step * r);
-        if (c < best_cost) best_cost = c, best = r;
+        costs[r] = turn_cost(q, step * r);
+        if (costs[r] < best_cost) best_cost = costs[r], best = r;
     }
-    double alpha = cm_circle_golden_least(turn_cost, q, step * (best - 1), step * (best + 1), GOLDEN_STEPS, &least);
-    return least < best_cost ? alpha : step * best;
+    double tie = sqrt(fmax(best_cost, 0)) + CM_CIRCLE_TURN_TIE, tie2 = tie * tie, least_turn = HUGE_VAL;
+    int apart = 0, least_at = best;
+    for (int r = 0; r < ROTATIONS; r++) {
+        int d = abs(r - best);
+        apart |= costs[r] <= tie2 && d > 2 && d < ROTATIONS - 2;
+    }
+    for (int r = 0; apart && r < ROTATIONS; r++) {
+        double turn = costs[r] <= tie2 ? plane_turn(q, step * r) : HUGE_VAL;
+        if (turn < least_turn) least_turn = turn, least_at = r;
+    }
+    double at = step * least_at;
+    if (apart && costs[(least_at + 1) % ROTATIONS] <= tie2 && costs[(least_at + ROTATIONS - 1) % ROTATIONS] <= tie2) {
+        double alpha = cm_circle_golden_least(plane_turn, q, at - step, at + step, GOLDEN_STEPS, &least);
+        return least < least_turn ? alpha : at;
+    }
+    double alpha = cm_circle_golden_least(turn_cost, q, at - step, at + step, GOLDEN_STEPS, &least);
+    return least < costs[least_at] ? alpha : at;
 }
 
 cm_status cm_correspond_annulus(const cm_loops *polygons, size_t k, const int *orientation, double power,
@@ -276,7 +314,8 @@ cm_status cm_correspond_annulus(const cm_loops *polygons, size_t k, const int *o
     ring *rings = calloc(k, sizeof *rings);
     double complex *w = malloc(SEARCH_SAMPLES * sizeof *w);
     double *s0 = malloc(2 * SEARCH_SAMPLES * sizeof *s0);
-    cm_status s = rings && w && s0 ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
+    double complex *z0 = malloc(SEARCH_SAMPLES * sizeof *z0), mean0 = 0;
+    cm_status s = rings && w && s0 && z0 ? CM_OK : cm_fail_status(err, CM_ERR_NO_MEMORY);
     int usable = 1;
     for (size_t g = 0; s == CM_OK && usable && g < k; g++)
         s = ring_build(&polygons[g], orientation + 2 * g, &rings[g], &usable, err);
@@ -294,12 +333,16 @@ cm_status cm_correspond_annulus(const cm_loops *polygons, size_t k, const int *o
             const cm_circle *d = &rings[0].loop[l];
             s0[l * SEARCH_SAMPLES + i] = cm_circle_lookup(d->theta, d->s, d->nb, t);
         }
+        mean0 += z0[i] = cm_circle_point_at(&rings[0].loop[0], s0[i]);
     }
+    for (size_t i = 0; s == CM_OK && usable && i < SEARCH_SAMPLES; i++) z0[i] -= mean0 / SEARCH_SAMPLES;
+    double prior = 0;
     double total = usable && rings ? rings[0].perimeter[0] + rings[0].perimeter[1] : 1;
     for (size_t g = 1; s == CM_OK && usable && g < k; g++) {
-        turn_search q = {w, {s0, s0 + SEARCH_SAMPLES}, &rings[0], &rings[g],
-                         {rings[0].perimeter[0] / total, rings[0].perimeter[1] / total}};
+        turn_search q = {w, {s0, s0 + SEARCH_SAMPLES}, z0, &rings[0], &rings[g],
+                         {rings[0].perimeter[0] / total, rings[0].perimeter[1] / total}, prior};
         double alpha = best_turn(&q);
+        prior = plane_angle(&q, alpha);
         for (int l = 0; s == CM_OK && l < 2; l++)
             s = cm_circle_place(&rings[0].loop[l], &rings[g].loop[l], loop_turn(&q, l, alpha),
                                 polygons[g].loop_sizes[l], power, params[2 * g + l], fine ? fine[2 * g + l] : NULL,
@@ -307,6 +350,6 @@ cm_status cm_correspond_annulus(const cm_loops *polygons, size_t k, const int *o
     }
     if (s == CM_OK) *found = usable;
     for (size_t g = 0; rings && g < k; g++) ring_free(&rings[g]);
-    free(rings), free(w), free(s0);
+    free(rings), free(w), free(s0), free(z0);
     return s;
 }

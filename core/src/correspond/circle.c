@@ -150,3 +150,27 @@ cm_status cm_circle_place(const cm_circle *d0, const cm_circle *dg, double rho, 
     return CM_OK;
 }
 
+double complex cm_circle_point_at(const cm_circle *d, double u)
+{
+    size_t j = cm_circle_below(d->s, d->nb, u);
+    double ds = d->s[j + 1] - d->s[j], f = ds > 0 ? (u - d->s[j]) / ds : 0;
+    return d->z[j] + f * (d->z[j + 1] - d->z[j]);
+}
+
+void cm_circle_plane_fit(const double complex *w, const double complex *z0, size_t m, const cm_circle *g,
+                         double rho, double complex *a, double complex *centre)
+{
+    double complex zg[CM_CIRCLE_FIT_MAX], mean = 0, corr = 0;
+    double zz = 0;
+    size_t near = 0;
+    if (m > CM_CIRCLE_FIT_MAX) m = CM_CIRCLE_FIT_MAX;
+    for (size_t i = 0; i < m; i++) { /* g's arc length at w[i], its circle turned by rho */
+        double t = carg(w[i] * cexp(-I * rho));
+        t -= 2 * CM_PI * floor(t / (2 * CM_PI));
+        double u = cm_circle_lookup_at(g->theta, g->s, cm_circle_below_near(g->theta, g->nb, t, &near), t);
+        mean += zg[i] = cm_circle_point_at(g, u);
+    }
+    mean /= (double)m;
+    for (size_t i = 0; i < m; i++) corr += conj(z0[i]) * (zg[i] - mean), zz += creal(z0[i] * conj(z0[i]));
+    *a = zz > 0 ? corr / zz : 1, *centre = mean;
+}

@@ -40,6 +40,23 @@ double cm_circle_lookup(const double *xs, const double *ys, size_t len, double x
  * point (lifted). Zero for a similar copy turned right. */
 double cm_circle_cost(const double complex *w, const double *s0, size_t m, const cm_circle *g, double rho);
 
+/* Turns whose costs' square roots (the arc lengths' spread, a share of
+ * the perimeter) lie within this of the least one's fit alike: a turn
+ * search chooses among them by the turn of the plane. */
+#define CM_CIRCLE_TURN_TIE 1e-4
+
+#define CM_CIRCLE_FIT_MAX 512
+
+/* The point at normalised arc length u of the loop. */
+double complex cm_circle_point_at(const cm_circle *d, double u);
+
+/* The similarity of the plane closest to a correspondence: loop 0's m
+ * (at most CM_CIRCLE_FIT_MAX) points z0 (centred), at the points w of its circle, times *a plus
+ * *centre nearest, in least squares, loop g's points at the same points
+ * of its circle turned by rho. */
+void cm_circle_plane_fit(const double complex *w, const double complex *z0, size_t m, const cm_circle *g,
+                         double rho, double complex *a, double complex *centre);
+
 /* The golden-section search, steps steps, for the least of f(ctx, x)
  * within [lo, hi]: the x found, *least its value. */
 double cm_circle_golden_least(double (*f)(const void *ctx, double x), const void *ctx, double lo, double hi, int steps,

@@ -142,14 +142,6 @@ typedef struct search {
     double prior; /* the turn of the plane chosen for polygon g - 1 (0 for g = 1) */
 } search;
 
-/* The point at normalised arc length u of a disk's polygon. */
-static double complex point_at(const disk *d, double u)
-{
-    size_t j = cm_circle_below(d->s, d->nb, u);
-    double ds = d->s[j + 1] - d->s[j], f = ds > 0 ? (u - d->s[j]) / ds : 0;
-    return d->z[j] + f * (d->z[j + 1] - d->z[j]);
-}
-
 /* How far the correspondence is from arc length with polygon g's disk
  * turned by rho onto polygon 0's (cm_circle_cost). */
 static double cost(const void *ctx, double rho)
@@ -158,27 +150,11 @@ static double cost(const void *ctx, double rho)
     return cm_circle_cost(q->w, q->s0, q->m, q->g, rho);
 }
 
-/* Polygon g's arc length at the point of polygon 0's circle at sample i,
- * g's disk turned by rho. */
-static double g_arc_at(const search *q, size_t i, double rho, size_t *near)
-{
-    double t = carg(q->w[i] * cexp(-I * rho));
-    t -= 2 * CM_PI * floor(t / (2 * CM_PI));
-    return cm_circle_lookup_at(q->g->theta, q->g->s, cm_circle_below_near(q->g->theta, q->g->nb, t, near), t);
-}
-
-/* The similarity of the plane closest to the correspondence of turn rho:
- * polygon 0's sampled points (centred) times *a, plus *centre, nearest
- * the points of polygon g paired with them, least squares. */
+/* The similarity of the plane closest to the correspondence of turn rho
+ * (cm_circle_plane_fit). */
 static void plane_fit(const search *q, double rho, double complex *a, double complex *centre)
 {
-    double complex zg[SEARCH_SAMPLES], mean = 0, corr = 0;
-    double zz = 0;
-    size_t near = 0;
-    for (size_t i = 0; i < q->m; i++) mean += zg[i] = point_at(q->g, g_arc_at(q, i, rho, &near));
-    mean /= (double)q->m;
-    for (size_t i = 0; i < q->m; i++) corr += conj(q->z0[i]) * (zg[i] - mean), zz += creal(q->z0[i] * conj(q->z0[i]));
-    *a = zz > 0 ? corr / zz : 1, *centre = mean;
+    cm_circle_plane_fit(q->w, q->z0, q->m, q->g, rho, a, centre);
 }
 
 /* The angle by which the correspondence of turn rho turns the plane. */
@@ -226,18 +202,16 @@ static double holes_off(const void *ctx, double rho)
     return holes_off_under(q, a, centre);
 }
 
-/* Turns whose costs' square roots (the arc lengths' spread, a share of
- * the perimeter) lie within this of the least one's fit alike. Where such
- * turns lie apart (a disc, a regular polygon, a shape a turn takes onto
- * itself), the holes choose among them (those that put the hole centres
- * nearest, within what one step of the turns moves them), and then the
- * least turn of the plane (from polygon g - 1's): two sections of a pipe
- * pair without a twist, of a flange turned a little by the little turn. */
-#define TURN_TIE 1e-4
+/* Where turns that fit alike (CM_CIRCLE_CM_CIRCLE_TURN_TIE) lie apart (a disc, a
+ * regular polygon, a shape a turn takes onto itself), the holes choose
+ * among them (those that put the hole centres nearest, within what one
+ * step of the turns moves them), and then the least turn of the plane
+ * (from polygon g - 1's): two sections of a pipe pair without a twist, of
+ * a flange turned a little by the little turn. */
 
 /* The turn of least cost: the best of ROTATIONS evenly spaced, then
  * golden-section search around it (the cost is V-shaped at a similar
- * copy's turn); where turns apart fit alike (TURN_TIE), the one of them
+ * copy's turn); where turns apart fit alike (CM_CIRCLE_TURN_TIE), the one of them
  * the holes and then the least turn of the plane choose, refined by the
  * same measure where its neighbours fit alike too. */
 static double best_turn(const search *q)
@@ -248,7 +222,7 @@ static double best_turn(const search *q)
         costs[r] = cost(q, 2 * CM_PI * r / ROTATIONS);
         if (costs[r] < best_cost) best_cost = costs[r], best = r;
     }
-    double tie = sqrt(fmax(best_cost, 0)) + TURN_TIE, tie2 = tie * tie; /* rounding may leave it below 0 */
+    double tie = sqrt(fmax(best_cost, 0)) + CM_CIRCLE_TURN_TIE, tie2 = tie * tie; /* rounding may leave it below 0 */
     int apart = 0, least_at = best;
     for (int r = 0; r < ROTATIONS; r++) {
         int d = abs(r - best);
@@ -263,7 +237,7 @@ static double best_turn(const search *q)
         plane_fit(q, 2 * CM_PI * best / ROTATIONS, &a, &centre);
         for (size_t i = 0; i < q->m; i++) size += creal(q->z0[i] * conj(q->z0[i]));
         for (size_t i = 0; i < q->h; i++) reach = fmax(reach, cabs(a * q->holes0[i]) * step);
-        reach += TURN_TIE * cabs(a) * sqrt(size / (double)q->m);
+        reach += CM_CIRCLE_TURN_TIE * cabs(a) * sqrt(size / (double)q->m);
         for (int r = 0; r < ROTATIONS; r++) { /* one fit per turn that ties gives both measures */
             if (!(costs[r] <= tie2)) continue;
             plane_fit(q, 2 * CM_PI * r / ROTATIONS, &a, &centre);
@@ -312,7 +286,7 @@ cm_status cm_correspond_conformal(const double *const *polygons, const size_t *c
         double t = 2 * CM_PI * (double)i / SEARCH_SAMPLES;
         w0[i] = cexp(I * t);
         s0[i] = cm_circle_lookup(disks[0].theta, disks[0].s, disks[0].nb, t);
-        mean0 += z0[i] = point_at(&disks[0], s0[i]);
+        mean0 += z0[i] = cm_circle_point_at(&disks[0], s0[i]);
     }
     mean0 /= SEARCH_SAMPLES;
     for (size_t i = 0; s == CM_OK && usable && i < SEARCH_SAMPLES; i++) z0[i] -= mean0;
