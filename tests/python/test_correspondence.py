@@ -133,9 +133,9 @@ def test_stats_name_the_correspondence_made():
     # auto keeps the conformal pairing of a three-lobed outline and an
     # ellipse (ceiling 45.0 degrees against the similarity choice's 40.9),
     # the similarity choice for two 12-pointed stars (41.6 against 23.6);
-    # pins make it arc length between them; with holes the outer loops',
-    # paired as without holes (the lobes and the ellipse with a hole each:
-    # conformal; the stars: similarity).
+    # pins make it arc length between them; with one hole both loops at
+    # once through the annulus; with two holes the outer loops' pairing
+    # (conformal or similarity, the holes' places weighing in).
     t = 2 * np.pi * np.arange(36) / 36
     ellipse = np.c_[2 * np.cos(t), 0.5 * np.sin(t)]
     cases = [
@@ -148,8 +148,10 @@ def test_stats_name_the_correspondence_made():
     for kwargs, polygons, choice in cases:
         r = compatmesh.triangulate(polygons, remesh=False, **kwargs)
         assert r.stats["correspondence_choice"] == choice, (kwargs, choice)
-    for polygons, choice in (([lobes(40), ellipse], "conformal"),
-                             ([twelve_star(1.0, 0.7), twelve_star(0.8, 0.5, 0.5, 1.4, 0.7)], "similarity")):
-        with_holes = [[p, 0.1 * p[::-1] + p.mean(axis=0)] for p in polygons]
-        r = compatmesh.triangulate(with_holes, correspondence="auto", remesh=False)
-        assert r.stats["holes"] == 1 and r.stats["correspondence_choice"] == choice, choice
+    for polygons in ([lobes(40), ellipse], [twelve_star(1.0, 0.7), twelve_star(0.8, 0.5, 0.5, 1.4, 0.7)]):
+        one_hole = [[p, 0.1 * p[::-1] + p.mean(axis=0)] for p in polygons]
+        r = compatmesh.triangulate(one_hole, correspondence="auto", remesh=False)
+        assert r.stats["holes"] == 1 and r.stats["correspondence_choice"] == "annulus"
+        two_holes = [[p] + [0.1 * p[::-1] + p.mean(axis=0) + (dx, 0) for dx in (-0.3, 0.3)] for p in polygons]
+        r = compatmesh.triangulate(two_holes, correspondence="auto", remesh=False)
+        assert r.stats["holes"] == 2 and r.stats["correspondence_choice"] in ("conformal", "similarity")
