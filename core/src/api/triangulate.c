@@ -986,9 +986,10 @@ static cm_status rescue_restart(cm_result **result, const cm_options *o, rescue_
  * once); the outer loops' pairing, as without holes, follows wherever
  * that run ends short of its aim, and the better is kept. On glyph pairs
  * with one hole in 19 fonts (223 rows), against the outer loops first
- * with the annulus as a rescue: 73 higher, 24 lower (all but one still at
- * or above the aim), the same CPU; up to 0.8 of the aim instead: 64 lower,
- * for 0.64 of the CPU (bench/HOLES.md, "The annulus pairing first"). */
+ * with the annulus as a rescue: 75 higher, 23 lower (all but one still at
+ * or above the aim), about the same CPU; up to 0.8 of the aim instead: 64
+ * lower, for 0.64 of the CPU (bench/HOLES.md, "The annulus pairing
+ * first"). */
 #define CM_ANNULUS_RESCUE_SHARE 1.0
 /* The last resort's corner pins (pin_corners_deg): corners turning by more
  * than a right angle, the tips and ends of strokes. */

@@ -277,9 +277,14 @@ static double plane_turn(const void *ctx, double alpha)
 
 /* The least of turn_cost: the best of ROTATIONS evenly spaced, refined by
  * golden section around it. Where turns apart fit alike
- * (CM_CIRCLE_TURN_TIE: a round ring, which every turn takes onto itself),
- * the least turn of the plane chooses among them, as the disk map's
- * search does: two sections of a pipe pair without a twist. */
+ * (CM_CIRCLE_TURN_TIE: a shape a turn takes nearly onto itself), the least
+ * turn of the plane chooses among them, as the disk map's search does; and
+ * where every turn fits alike (a round ring) it refines the turn too: two
+ * sections of a pipe pair without a twist. Elsewhere the cost refines it:
+ * two rectangular tubes of other proportions tie at many turns by a share
+ * of a per cent of a cost that is large anyway, and the least turn of the
+ * plane, refined by the cost, made better meshes there than refined by the
+ * plane's turn (bench/HOLES.md, "The annulus pairing first"). */
 static double best_turn(const turn_search *q)
 {
     double costs[ROTATIONS], best_cost = HUGE_VAL, step = 2 * CM_PI / ROTATIONS, least;
@@ -289,17 +294,18 @@ static double best_turn(const turn_search *q)
         if (costs[r] < best_cost) best_cost = costs[r], best = r;
     }
     double tie = sqrt(fmax(best_cost, 0)) + CM_CIRCLE_TURN_TIE, tie2 = tie * tie, least_turn = HUGE_VAL;
-    int apart = 0, least_at = best;
+    int apart = 0, round = 1, least_at = best;
     for (int r = 0; r < ROTATIONS; r++) {
         int d = abs(r - best);
         apart |= costs[r] <= tie2 && d > 2 && d < ROTATIONS - 2;
+        round &= costs[r] <= tie2;
     }
     for (int r = 0; apart && r < ROTATIONS; r++) {
         double turn = costs[r] <= tie2 ? plane_turn(q, step * r) : HUGE_VAL;
         if (turn < least_turn) least_turn = turn, least_at = r;
     }
     double at = step * least_at;
-    if (apart && costs[(least_at + 1) % ROTATIONS] <= tie2 && costs[(least_at + ROTATIONS - 1) % ROTATIONS] <= tie2) {
+    if (round) {
         double alpha = cm_circle_golden_least(plane_turn, q, at - step, at + step, GOLDEN_STEPS, &least);
         return least < least_turn ? alpha : at;
     }
