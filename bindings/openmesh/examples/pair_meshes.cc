@@ -12,10 +12,11 @@
 // OBJ, PLY, STL, OM): a disk-shaped mesh (its boundary), a single polygonal
 // face, or face-less vertices in polygon order. OpenMesh's readers drop OBJ
 // `l` lines and PLY edges, so a section saved as edges is read as its
-// vertices in file order; where that is not a polygon the error says so. Their vertices correspond by
-// polygon index. OUT_A and OUT_B receive the two triangle meshes, which share
-// one connectivity; the format follows the file extension. OpenMesh 9
-// writes OFF, OBJ, PLY and STL coordinates as float; OM keeps doubles.
+// vertices in file order; where that is not a polygon the error says so.
+// Their vertices correspond by polygon index. OUT_A and OUT_B receive the
+// two triangle meshes, which share one connectivity; the format follows the
+// file extension. OpenMesh 9 writes OFF, OBJ, PLY and STL coordinates as
+// float; OM keeps doubles.
 #include <compatmesh/openmesh.hh>
 
 #include <cstdio>

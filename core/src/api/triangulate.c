@@ -490,7 +490,7 @@ static cm_status conformal(cm_result *r, const double *const *polygons, const si
 
 /* The annulus correspondence's boundaries of polygons with one hole into
  * maps[0] (the outer loops) and maps[1] (the holes), its parameter
- * tempered by power and read along every edge (annulus.h); a rescue's, so
+ * tempered by power and read along every edge (annulus.h);
  * CM_ERR_PRECISION where it cannot be had in doubles or crowds
  * (CM_CROWDED_PIECE); then max_edge's split (0: none). orientation: k L,
  * as cm_input_check_loops gives it; loop_xy, loop_counts,
@@ -1039,10 +1039,11 @@ static cm_status rescue_restart(cm_result **result, const cm_options *o, rescue_
  * comes last and is kept only where better (bench/CORRESPONDENCE.md).
  * Polygons with holes take the same rescues for their outer loops, after
  * arc length from the similarity's start (PAIRING_BY_START;
- * run_loop_pairing says why); polygons with one hole first the annulus
- * pairing (annulus.h), which pairs both loops at once where every other
- * pairing fills the outline and starts the hole from there (the o and e
- * of 19 fonts, bench/HOLES.md). */
+ * run_loop_pairing says why). Polygons with one hole are paired first
+ * through the annulus (run_annulus_first), which pairs both loops at once
+ * where every other pairing fills the outline and starts the hole from
+ * there; below the aim the outer loops' pairing (by the ceiling) is their
+ * first rescue (CM_ANNULUS_RESCUE_SHARE). */
 typedef struct polygon_input {
     const double *const *polygons;
     const size_t *counts;
@@ -1057,7 +1058,7 @@ static cm_status run_pairing(cm_result *again, const void *input, const cm_optio
 
 /* What the rescues remesh: run (taking an auto_pairing) on input; holes:
  * every polygon's holes (with holes PAIRING_BY_START is one of its
- * pairings, with one hole PAIRING_ANNULUS too). */
+ * pairings). */
 typedef struct rescue_input {
     rescue_run run;
     const void *input;
@@ -1124,8 +1125,7 @@ static cm_status pairing_rescue(cm_result **result, const cm_options *o, const r
     static const struct {
         auto_pairing pairing;
         double share;
-    } others[] = {{{PAIRING_ANNULUS, 0, CM_CONFORMAL_POWER}, CM_POWER_RESCUE_SHARE},
-                  {{PAIRING_BY_START, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
+    } others[] = {{{PAIRING_BY_START, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 1, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 0, CM_RESCUE_POWER_MORE}, CM_POWER_RESCUE_SHARE},
                   {{PAIRING_CONFORMAL, 0, CM_CONFORMAL_POWER}, CM_PAIRING_RESCUE_SHARE},
@@ -1146,8 +1146,7 @@ static cm_status pairing_rescue(cm_result **result, const cm_options *o, const r
             (p->kind == PAIRING_CONFORMAL && !p->linear && p->power == CM_CONFORMAL_POWER &&
              first != CM_CHOICE_SIMILARITY) ||
             (p->kind == PAIRING_SIMILARITY && first == CM_CHOICE_SIMILARITY) ||
-            (p->kind == PAIRING_BY_START && (!in->holes || first == CM_CHOICE_SIMILARITY)) ||
-            (p->kind == PAIRING_ANNULUS && (in->holes != 1 || first == CM_CHOICE_ANNULUS)))
+            (p->kind == PAIRING_BY_START && (!in->holes || first == CM_CHOICE_SIMILARITY)))
             continue; /* not wanted, not the input's, or run already */
         double ended;
         s = rescue_try(result, o, in->run, in->input, p, &took, &ended);
@@ -1654,10 +1653,10 @@ static cm_status run_loops_arclength(cm_result *r, const cm_loops *polygons, siz
     return s;
 }
 
-/* Auto with holes pairs the outer loops as polygons without holes, and
- * where the result ends short of its aim takes the same rescues
- * (pairing_rescue), first (one hole) the annulus pairing of both loops,
- * then arc length from the similarity's start (PAIRING_BY_START): the
+/* Auto with holes pairs the outer loops as polygons without holes (one
+ * hole: the annulus first, run_annulus_first), and where the result ends
+ * short of its aim takes the same rescues (pairing_rescue), first arc
+ * length from the similarity's start (PAIRING_BY_START): the
  * hole starts, chosen under the outer loops' similarity, may fit one
  * pairing of the outer loops and not the other, since a conformal pairing
  * of the filled outlines knows nothing of the holes. */
@@ -1692,8 +1691,8 @@ static int one_hole(const cm_loops *polygons, size_t k)
 }
 
 /* Auto's first run for polygons with one hole: the annulus pairing of
- * both loops (CM_ANNULUS_RESCUE_SHARE); where it cannot be had (the map
- * not in doubles), the outer loops' pairing in a fresh result. */
+ * both loops; where it cannot be had (the map not in doubles), the outer
+ * loops' pairing in a fresh result. */
 static cm_status run_annulus_first(cm_result **result, const cm_loops *polygons, size_t k, const cm_options *o)
 {
     static const auto_pairing annulus_pairing = {PAIRING_ANNULUS, 0, CM_CONFORMAL_POWER};

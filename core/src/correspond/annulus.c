@@ -341,7 +341,8 @@ cm_status cm_correspond_annulus(const cm_loops *polygons, size_t k, const int *o
         }
         mean0 += z0[i] = cm_circle_point_at(&rings[0].loop[0], s0[i]);
     }
-    for (size_t i = 0; s == CM_OK && usable && i < SEARCH_SAMPLES; i++) z0[i] -= mean0 / SEARCH_SAMPLES;
+    mean0 /= SEARCH_SAMPLES;
+    for (size_t i = 0; s == CM_OK && usable && i < SEARCH_SAMPLES; i++) z0[i] -= mean0;
     double prior = 0;
     double total = usable && rings ? rings[0].perimeter[0] + rings[0].perimeter[1] : 1;
     for (size_t g = 1; s == CM_OK && usable && g < k; g++) {

@@ -202,18 +202,15 @@ static double holes_off(const void *ctx, double rho)
     return holes_off_under(q, a, centre);
 }
 
-/* Where turns that fit alike (CM_CIRCLE_CM_CIRCLE_TURN_TIE) lie apart (a disc, a
- * regular polygon, a shape a turn takes onto itself), the holes choose
- * among them (those that put the hole centres nearest, within what one
- * step of the turns moves them), and then the least turn of the plane
- * (from polygon g - 1's): two sections of a pipe pair without a twist, of
- * a flange turned a little by the little turn. */
-
 /* The turn of least cost: the best of ROTATIONS evenly spaced, then
  * golden-section search around it (the cost is V-shaped at a similar
- * copy's turn); where turns apart fit alike (CM_CIRCLE_TURN_TIE), the one of them
- * the holes and then the least turn of the plane choose, refined by the
- * same measure where its neighbours fit alike too. */
+ * copy's turn). Where turns that fit alike (CM_CIRCLE_TURN_TIE) lie apart
+ * (a disc, a regular polygon, a shape a turn takes onto itself), the holes
+ * choose among them (those that put the hole centres nearest, within what
+ * one step of the turns moves them), and then the least turn of the plane
+ * (from polygon g - 1's), refined by the same measure where its
+ * neighbours fit alike too: two sections of a pipe pair without a twist,
+ * of a flange turned a little by the little turn. */
 static double best_turn(const search *q)
 {
     double costs[ROTATIONS], step = 2 * CM_PI / ROTATIONS, best_cost = HUGE_VAL, least;
