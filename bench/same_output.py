@@ -3,7 +3,7 @@ the same byte for byte, and what does the new one cost against the old?
 
 usage: same_output.py --old BIN --new BIN [--quick] [--only REGEX]
                       [--modes index,auto] [--repeats N] [--gen-pairs BIN]
-                      [--args 'OPTIONS']
+                      [--args 'OPTIONS'] [--ignore-key KEY ...]
 
 The pairs are remesh_bench.py's (`--quick`: its 32-pair subset; `--only`:
 names matching a regular expression, added to the quick set when both are
@@ -12,7 +12,8 @@ given). `--args` adds options to every run of both builds (e.g.
 runs in each mode with each build, old and new
 interleaved, REPEATS times (the order swapped every other repeat, so load
 from other work hits both alike). Compared by SHA-256: every output mesh,
-report.json with its "seconds" object taken out (wall times), and the
+report.json with its "seconds" object taken out (wall times) and any
+top-level key named by `--ignore-key` (one the new build adds), and the
 pictures preview.svg and preview.png. Measured: CPU seconds (user + system,
 wait4 of /usr/bin/time, which adds its own few hundred microseconds to
 both builds alike) and peak resident memory (time's "%M": the tool's own;
@@ -39,20 +40,22 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from remesh_bench import generate, select  # noqa: E402
 
 
-def digest(out):
-    """SHA-256 of each output file, report.json without its wall times."""
+def digest(out, ignore=()):
+    """SHA-256 of each output file, report.json without its wall times and
+    the keys in `ignore`."""
     sums = {}
     for name in sorted(os.listdir(out)):
         data = open(os.path.join(out, name), "rb").read()
         if name == "report.json":
             report = json.loads(data)
-            report.pop("seconds", None)
+            for key in ("seconds", *ignore):
+                report.pop(key, None)
             data = json.dumps(report, sort_keys=True).encode()
         sums[name] = hashlib.sha256(data).hexdigest()
     return sums
 
 
-def run(cli, pair, mode, out, extra=()):
+def run(cli, pair, mode, out, extra=(), ignore=()):
     """CPU seconds, peak RSS (MB) and the outputs' digests of one run."""
     shutil.rmtree(out, ignore_errors=True)
     cmd = [cli, "triangulate", *pair.files, "--out-dir", out, *extra]
@@ -70,7 +73,7 @@ def run(cli, pair, mode, out, extra=()):
     with open(peak) as f:
         rss = int(f.read().split()[-1]) / 1024.0
     os.remove(peak)
-    return (usage.ru_utime + usage.ru_stime, rss, digest(out)), None
+    return (usage.ru_utime + usage.ru_stime, rss, digest(out, ignore)), None
 
 
 def main(argv):
@@ -83,6 +86,8 @@ def main(argv):
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--gen-pairs")
     ap.add_argument("--args", default="", help="options added to every run of both builds")
+    ap.add_argument("--ignore-key", action="append", default=[],
+                    help="a top-level report.json key left out of the comparison (repeatable)")
     args = ap.parse_args(argv)
     gen = args.gen_pairs or os.path.join(os.path.dirname(os.path.abspath(args.new)), "cm_gen_pairs")
     work = tempfile.mkdtemp(prefix="same_output_")
@@ -105,7 +110,7 @@ def main(argv):
                     order = ("old", "new") if r % 2 == 0 else ("new", "old")
                     for build in order:
                         got, error = run(getattr(args, build), pair, mode, os.path.join(work, "out"),
-                                         shlex.split(args.args))
+                                         shlex.split(args.args), args.ignore_key)
                         if error:
                             print("%s %s %s: %s" % (pair.name, mode, build, error))
                             failed += 1

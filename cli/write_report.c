@@ -129,6 +129,8 @@ static json_t *head(tree *t, const cm_stats *stats)
     set_count(t, root, "holes", stats->holes);
     set_count(t, root, "bridges", stats->bridges);
     set_count(t, root, "holes_moved", stats->holes_moved);
+    set_count(t, root, "pairings_built", stats->pairings_built);
+    set_count(t, root, "pairings_remeshed", stats->pairings_remeshed);
     return root;
 }
 

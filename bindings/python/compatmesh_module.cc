@@ -454,6 +454,8 @@ py::dict stats_of(const cm_result *result)
   stats["holes"] = s->holes;
   stats["bridges"] = s->bridges;
   stats["holes_moved"] = s->holes_moved;
+  stats["pairings_built"] = s->pairings_built;
+  stats["pairings_remeshed"] = s->pairings_remeshed;
   stats["triangles"] = s->triangles;
   stats["reversed_input"] = bool(s->reversed_input);
   stats["fallback_count"] = s->fallback_count;
@@ -1538,7 +1540,8 @@ Common attributes (arrays are numpy arrays):
                     "dict of int32 arrays: next, to_vertex, face (-1 on the boundary), "
                     "vertex_halfedge, face_halfedge; h ^ 1 is the opposite of h")
       .def_readonly("stats", &Result::stats,
-                    "dict: the fields of cm_stats (n, k, vertices, steiner, holes, bridges, holes_moved, triangles, "
+                    "dict: the fields of cm_stats (n, k, vertices, steiner, holes, bridges, holes_moved, pairings_built, "
+                    "pairings_remeshed, triangles, "
                     "reversed_input, fallback_count, steiner_before_remesh, remesh_iterations, remesh_aim_deg, "
                     "ceiling_deg, corner_fan_cap_deg, correspondence_bound_deg, modulus_distortion, "
                     "distortion_quad, correspondence_bound_before_deg (None unless auto chose the starts), "

@@ -248,6 +248,26 @@ def test_auto_remeshes_another_pairing_where_the_first_ends_short(cm, tmp_path):
     assert angle["auto"] >= 13.0 > 0.6 * 15.5 > angle["similarity"]
 
 
+def test_auto_sets_aside_a_pairing_that_cannot_beat_the_best(cm, tmp_path):
+    # Z003 'G' against 'Z', 48 vertices each (cm_gen_pairs --set hard): the
+    # first (conformal) pairing ends below 0.8 of its aim before the polish
+    # (7.7 degrees of 12.2), so auto builds the power-0.3 pairing as a
+    # rescue; but the polish takes the first to its corner-fan cap (12.22
+    # degrees, an input corner split in two), which the rescue's cap does not
+    # exceed, so the rescue is not remeshed.
+    a, b = (os.path.join(GLYPH_PAIRS, "Z003_G_Z_n48_" + s + ".xy") for s in "ab")
+    runs = {}
+    for mode, extra in (("auto", []), ("unremeshed", ["--no-remesh"])):
+        r = cm("triangulate", a, b, "-o", mode, "--no-preview", "--correspondence", "auto", *extra)
+        assert r.returncode == 0, r.stderr
+        runs[mode] = json.loads((tmp_path / mode / "report.json").read_text())
+    auto = runs["auto"]
+    assert auto["valid"] and auto["correspondence_choice"] == "conformal"
+    assert min(m["min_angle_deg"] for m in auto["meshes"]) >= auto["ceiling"]["corner_fan_cap_deg"] * (1 - 1e-6)
+    assert auto["pairings_built"] >= 2 and auto["pairings_remeshed"] == 1
+    assert (runs["unremeshed"]["pairings_built"], runs["unremeshed"]["pairings_remeshed"]) == (1, 0)
+
+
 def test_auto_pins_corners_where_every_other_pairing_ends_short(cm, tmp_path):
     # URW Bookman 'V' against 'W', 160 vertices each (cm_gen_pairs --set
     # hard): the conformal pairing puts the W's inner strokes into the V's

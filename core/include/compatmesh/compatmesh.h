@@ -368,6 +368,13 @@ typedef struct cm_stats {
      * another place in their input's list than their own (matched by
      * position, cm_triangulate_loops); 0 where hole j pairs with hole j. */
     size_t holes_moved;
+    /* The pairings built (the correspondences auto tries in turn, each
+     * counted where it is built again to restart the one kept; 1 in the
+     * other modes) and how many of them were remeshed: auto builds a
+     * rescue's pairing and sets it aside unremeshed where its corner-fan
+     * cap is no higher than the best result so far. */
+    size_t pairings_built;
+    size_t pairings_remeshed;
 } cm_stats;
 
 /* Quality of one geometry of the result. */

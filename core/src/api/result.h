@@ -35,6 +35,11 @@ struct cm_result {
      * second says so. */
     double polished_angle_deg;
     int restart_wanted;
+    /* A rescue's run: the smallest angle after the polish of the result it
+     * competes with (0: none), which it cannot beat where its pairing's
+     * corner-fan cap is no higher (remesh_stage) and which decides whether
+     * its polish-scored moves are worth running (cm_remesh). */
+    double beat_deg;
     /* The caps and the conformal correspondence already computed in this
      * call (shared by a second pairing's result, owned by the call), or
      * NULL. */

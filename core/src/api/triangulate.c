@@ -190,6 +190,12 @@ done:
     return s;
 }
 
+/* A result within this share of a certified cap has reached it: the cap
+ * is rounded up by 1e-9 (cm_corner_fan_cap), and a corner bisected to the
+ * last bit ends 1e-15 to 1e-11 below its half. Results 1e-7 below it are
+ * not there yet: another pairing may still reach it to the last digits. */
+#define CM_CAP_REACHED 3e-9
+
 /* Records the construction's quality, then runs Algorithm 1 on r->mesh
  * (internal counter-clockwise order) when asked; splits: NULL, or the
  * boundary splits it may make (cm_remesh_boundary). */
@@ -201,13 +207,23 @@ static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o, cm_re
     if (!r->quality_before) return cm_fail_status(&r->error, CM_ERR_NO_MEMORY);
     for (size_t g = 0; g < k; g++) cm_mesh_quality(&r->mesh, g, &r->quality_before[g]);
     r->stats.steiner_before_remesh = r->mesh.nv - n;
+    r->stats.pairings_built = 1;
     if (!o->remesh) return CM_OK;
+    /* A rescue that cannot beat the result it competes with is not
+     * remeshed, and stays unkept: the corner-fan cap certifies its
+     * pairing's whole reach (the boundary points the remesher adds or
+     * slides stay inside input edges, where the corner is straight). */
+    if (r->beat_deg > 0 && o->ceiling && r->stats.corner_fan_cap_deg <= r->beat_deg * (1 + CM_CAP_REACHED)) {
+        r->greedy_angle_deg = r->polished_angle_deg = -1;
+        return CM_OK;
+    }
     if (cm_progress_report(progress, CM_STAGE_REMESH, 0.0)) return cm_fail_status(&r->error, CM_ERR_CANCELLED);
     double t = cm_seconds_now();
     cm_remesh_report report = {0};
+    r->stats.pairings_remeshed = 1;
     /* Nothing above the ceiling can be reached: aim no higher. */
-    cm_status s =
-        cm_remesh(&r->mesh, n, o, o->ceiling ? r->stats.ceiling_deg : 60.0, splits, progress, &report, &r->error);
+    cm_status s = cm_remesh(&r->mesh, n, o, o->ceiling ? r->stats.ceiling_deg : 60.0, r->beat_deg, splits, progress,
+                            &report, &r->error);
     r->stats.seconds_remesh = cm_seconds_now() - t;
     r->stats.remesh_iterations = report.iterations;
     r->stats.remesh_aim_deg = report.target_deg;
@@ -895,9 +911,11 @@ static cm_result *rescue_result(const cm_result *r, const cm_options *o)
     return again;
 }
 
-/* The stage times of `other`'s run added to kept's. */
-static void add_times(cm_result *kept, const cm_result *other)
+/* The stage times and pairings of `other`'s run added to kept's. */
+static void add_costs(cm_result *kept, const cm_result *other)
 {
+    kept->stats.pairings_built += other->stats.pairings_built;
+    kept->stats.pairings_remeshed += other->stats.pairings_remeshed;
     kept->stats.seconds_validate += other->stats.seconds_validate;
     kept->stats.seconds_build += other->stats.seconds_build, kept->stats.seconds_check += other->stats.seconds_check;
     kept->stats.seconds_remesh += other->stats.seconds_remesh;
@@ -905,7 +923,7 @@ static void add_times(cm_result *kept, const cm_result *other)
 }
 
 /* *result becomes `again` (a run that ended with status s) when `take`
- * says so and s is CM_OK; the times of both runs summed, the other freed.
+ * says so and s is CM_OK; the costs of both runs summed, the other freed.
  * CM_OK, or CM_ERR_CANCELLED when the second run was cancelled (a second
  * run that failed otherwise, out of memory included, leaves *result as it
  * was). */
@@ -919,7 +937,7 @@ static cm_status keep_if(cm_result **result, cm_result *again, cm_status s, int 
         cm_result *t = *result;
         *result = again, again = t;
     }
-    add_times(*result, again);
+    add_costs(*result, again);
     cm_result_free(again);
     return CM_OK;
 }
@@ -957,6 +975,7 @@ static cm_status rescue_try(cm_result **result, const cm_options *o, rescue_run 
     *took = 0;
     if (angle) *angle = -1;
     if (!again) return CM_OK;
+    again->beat_deg = (*result)->polished_angle_deg;
     cm_status s = run(again, input, &once, pairing);
     *took = better(again, s, *result);
     if (angle && s == CM_OK) *angle = again->polished_angle_deg;
@@ -1700,7 +1719,7 @@ static cm_status run_annulus_first(cm_result **result, const cm_loops *polygons,
     if (s == CM_OK || s == CM_ERR_CANCELLED || s == CM_ERR_NO_MEMORY) return s;
     cm_result *fresh = rescue_result(*result, o);
     if (!fresh) return cm_fail_status(&(*result)->error, CM_ERR_NO_MEMORY);
-    add_times(fresh, *result);
+    add_costs(fresh, *result);
     cm_result_free(*result);
     *result = fresh;
     return run_loops_arclength(fresh, polygons, k, o, LOOP_OUTER, by_ceiling);

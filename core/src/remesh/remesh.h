@@ -50,9 +50,12 @@ typedef struct cm_remesh_boundary {
  * compatible triangulation has a larger smallest angle (60 when unknown);
  * refinement aims at min(o->min_angle_deg, ceiling_deg) and spends no
  * budget above it, while the final removal of Steiner vertices keeps
- * every angle at the full target. Returns CM_OK, CM_ERR_NO_MEMORY,
+ * every angle at the full target. beat_deg: the smallest angle of a
+ * result this run competes with (0: none); a run whose polished result
+ * ends far below it (CM_REMESH_BEHIND) skips its polish-scored moves,
+ * which could not lift it that far. Returns CM_OK, CM_ERR_NO_MEMORY,
  * CM_ERR_CANCELLED or CM_ERR_INTERNAL (message on err). */
-cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, cm_remesh_boundary *splits,
-                    cm_progress *progress, cm_remesh_report *report, cm_error *err);
+cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, double beat_deg,
+                    cm_remesh_boundary *splits, cm_progress *progress, cm_remesh_report *report, cm_error *err);
 
 #endif
