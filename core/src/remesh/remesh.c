@@ -132,9 +132,9 @@
 #define CM_STALL_BEFORE_RESTART 0.6
 /* A run whose polished result is below this share of the result it
  * competes with (beat_deg) skips the polish-scored moves: over the 279
- * runs of auto's 166 glyph pairs (bench/REMESH.md, "Pairings far behind")
- * they raised a result at most 2.01 times, and 1.5 to 1.7 times on the
- * few that gained most. */
+ * runs of auto's 166 glyph pairs they raised a result at most 2.01
+ * times, and 1.5 to 1.7 times on the few others that gained most
+ * (bench/REMESH.md, "Pairings that cannot win"). */
 #define CM_REMESH_BEHIND 0.45
 /* A restart's result is kept when its smallest angle is this much
  * higher, relatively: it often doubles the vertices, which a gain of 1 or
