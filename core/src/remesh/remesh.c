@@ -1059,16 +1059,14 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
     if (s == CM_OK && splits) s = cm_kmesh_write_labels(&x.km, splits->edge, splits->t);
     if (s == CM_OK) s = cm_kmesh_write(&x.km, mesh);
     if (s == CM_OK) s = polish_jointly(mesh, (size_t)x.km.nb, splits, !splits, progress);
-    double least = s == CM_OK ? mesh_min_angle(mesh) : 0;
-    if (s == CM_OK && !(least * 180.0 / CM_PI < CM_REMESH_BEHIND * beat_deg)) {
-        s = polish_moves(&x, mesh, n, splits);
-        least = s == CM_OK ? mesh_min_angle(mesh) : 0;
-    }
+    int behind = s == CM_OK && beat_deg > 0 && mesh_min_angle(mesh) * 180.0 / CM_PI < CM_REMESH_BEHIND * beat_deg;
+    if (s == CM_OK && !behind) s = polish_moves(&x, mesh, n, splits);
     /* Far below the aim, restarts from the result split where its map is
      * most distorted (the boundary, and with it the labels just written,
      * stays as it is). Where points were added to the loops of a polygon
      * with holes, they start from the written loops' offsets; the caller
      * gets the input's back, as without restarts. */
+    double least = s == CM_OK ? mesh_min_angle(mesh) : 0;
     rep->polished_deg = least * 180.0 / CM_PI;
     rep->restart_wanted = s == CM_OK && cm_kmesh_min_share(&x.km) < CM_RESTART_BELOW;
     const size_t *given = mesh->loop_start;
