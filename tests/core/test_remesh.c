@@ -541,7 +541,7 @@ static void test_polish_moves(void)
             cm_pmove_limits limits = cm_pmove_limits_of(&km);
             limits.tries = 25;
             for (int batch = 0; batch < 4 && kept >= 0; batch++) { /* a check between batches */
-                kept = cm_polish_moves(&km, &limits, 10, NULL, NULL);
+                kept = cm_polish_moves(&km, &limits, 10, NULL, NULL, NULL);
                 double after = cm_kmesh_min_angle(&km);
                 CHECK_MSG(kept >= 0, "polish moves failed");
                 CHECK_MSG(cm_kmesh_check(&km), "polish moves: %s seed %d left an invalid mesh", convex ? "disc" : "star",
@@ -592,7 +592,7 @@ static void test_polish_moves_slide(void)
         cm_pmove_limits limits = cm_pmove_limits_of(&km);
         limits.tries = 20;
         for (int batch = 0; batch < 3; batch++) {
-            long kept = cm_polish_moves(&km, &limits, 10, &slide, NULL);
+            long kept = cm_polish_moves(&km, &limits, 10, &slide, NULL, NULL);
             double after = cm_kmesh_min_angle(&km);
             CHECK_MSG(kept >= 0, "polish moves failed");
             CHECK_MSG(cm_kmesh_check(&km), "polish moves with slides: seed %d left an invalid mesh", seed);
@@ -608,6 +608,73 @@ static void test_polish_moves_slide(void)
     printf("polish moves with slides: %d meshes, %zu boundary points slid\n", meshes, slid);
     CHECK_MSG(meshes == 24, "%d of 24 meshes", meshes);
     CHECK_MSG(slid > 0, "no boundary point slid");
+}
+
+/* The kmesh with boundary points that slide, as test_polish_moves_slide
+ * builds it (in: room for the two polygons that inputs points to). 0, or
+ * -1 (nothing to free). */
+static int sliding_kmesh(int seed, const double *in[2], split_inputs *inputs, double **a, double **b, cm_mesh *m,
+                         cm_kmesh *km)
+{
+    if (random_kmesh(seed, a, b, m, km)) return -1;
+    in[0] = *a, in[1] = *b;
+    *inputs = (split_inputs){in, (size_t)km->n};
+    if (!allow_splits(km, inputs)) {
+        cm_kmesh_free(km), cm_mesh_clear(m), free(*a), free(*b);
+        return -1;
+    }
+    for (int32_t c = 0, splits = 0; c < 3 * km->nt && splits < km->n; c++)
+        if (km->tri[c] >= 0 && km->opp[c] < 0) splits += cm_refine_split(km, c) >= 0;
+    cm_kmesh_set_caps(km, 30.0 / DEG, NULL, NULL);
+    return 0;
+}
+
+/* Runs of the polish-scored moves that share a memo (cm_pmove_memo: the
+ * moves undone before, counted without being run again) end exactly as
+ * runs that try every move again: the same moves kept, the same
+ * positions bit for bit, in every geometry. A move the memo skipped that
+ * would have been kept shows as a difference. */
+static void test_polish_moves_memo(void)
+{
+    int meshes = 0, carried = 0;
+    for (int seed = 1; seed <= 16; seed++) {
+        const double *in[2][2];
+        split_inputs inputs[2];
+        double *a[2], *b[2];
+        cm_mesh m[2];
+        cm_kmesh km[2];
+        if (sliding_kmesh(seed, in[0], &inputs[0], &a[0], &b[0], &m[0], &km[0])) continue;
+        if (sliding_kmesh(seed, in[1], &inputs[1], &a[1], &b[1], &m[1], &km[1])) {
+            cm_kmesh_free(&km[0]), cm_mesh_clear(&m[0]), free(a[0]), free(b[0]);
+            continue;
+        }
+        cm_pmove_memo memo = {0};
+        cm_pmove_limits limits = cm_pmove_limits_of(&km[0]);
+        limits.tries = 15;
+        int same = 1;
+        for (int batch = 0; batch < 4 && same; batch++) {
+            long kept[2];
+            for (int i = 0; i < 2; i++) {
+                cm_maxmin_slide slide = {NULL, NULL, test_place, &inputs[i], 0, 0, NULL, NULL};
+                kept[i] = cm_polish_moves(&km[i], &limits, 10, &slide, i ? NULL : &memo, NULL);
+            }
+            carried += batch > 0 && memo.n > 0;
+            same = kept[0] == kept[1] && km[0].nv == km[1].nv && km[0].nt == km[1].nt;
+            for (int32_t v = 0; same && v < km[0].nv; v++)
+                for (size_t g = 0; g < 2; g++)
+                    same &= km[0].vc[v] == km[1].vc[v] &&
+                            (km[0].vc[v] < 0 ||
+                             memcmp(cm_kmesh_pos(&km[0], g, v), cm_kmesh_pos(&km[1], g, v), 2 * sizeof(double)) == 0);
+            CHECK_MSG(same, "seed %d batch %d: with the memo %ld moves kept, without %ld, or other positions", seed,
+                      batch, kept[0], kept[1]);
+        }
+        cm_pmove_memo_free(&memo);
+        for (int i = 0; i < 2; i++) cm_kmesh_free(&km[i]), cm_mesh_clear(&m[i]), free(a[i]), free(b[i]);
+        meshes++;
+    }
+    printf("polish moves with a memo: %d meshes, %d later runs began with moves undone before\n", meshes, carried);
+    CHECK_MSG(meshes == 16, "%d of 16 meshes", meshes);
+    CHECK_MSG(carried > 0, "no run began with a move undone before: the memo was not exercised");
 }
 
 static double area_spread(const cm_kmesh *km, size_t g)
@@ -1542,6 +1609,7 @@ int main(void)
     test_joint_polish_lowest_first();
     test_polish_moves();
     test_polish_moves_slide();
+    test_polish_moves_memo();
     test_area_equalisation();
     test_refine_keeps_boundary();
     test_boundary_caps();

@@ -102,6 +102,35 @@ int cm_pmove_longer_wanted(const cm_kmesh *km) { return km->between && cm_kmesh_
 
 enum pmove { PM_POLISH, PM_FLIP, PM_SPLIT, PM_COLLAPSE, PM_INSERT, PM_KINDS };
 
+/* Rings around the vertices a kept move's try polished (its ring) within
+ * which a try undone before may now end otherwise. A try reads the mesh
+ * within CM_PMOVE_RINGS + 1 rings of its own vertices (the stars of its
+ * ring); a kept move changes positions and edges only among its ring's
+ * vertices (every edge it removes or adds has both ends there), so a
+ * path from a try's vertices to the first vertex it changed is a path
+ * of the mesh after it too. */
+#define CM_PMOVE_REACH (CM_PMOVE_RINGS + 1)
+
+/* A move undone: its key (move_key), its own vertices (-1: none), and
+ * the memo's round (moves kept, and calls begun) when it was last tried
+ * or counted. An undone move is not tried again before the next kept
+ * move (as before), and after it only where the kept move changed the
+ * mesh within its reach: every input of the try is then as it was, and
+ * the mesh's smallest angle, which a kept try may not go below, only
+ * rose, so it would be undone again. Such a move counts as a try all the
+ * same, so that the stage ends where it did. */
+struct cm_pmove_failed {
+    uint64_t key;
+    int32_t own[4];
+    long round;
+};
+
+void cm_pmove_memo_free(cm_pmove_memo *memo)
+{
+    free(memo->failed);
+    *memo = (cm_pmove_memo){0};
+}
+
 typedef struct mover {
     cm_kmesh *km;
     cm_progress *progress;
@@ -119,8 +148,7 @@ typedef struct mover {
     /* what the try under way must reach to be kept: the ring's smallest
      * slack above `need`, no triangle's key below `least` */
     double need, least;
-    uint64_t *failed; /* moves undone since the last kept one */
-    size_t nfailed, failed_cap;
+    cm_pmove_memo *memo; /* the moves undone (cm_pmove_failed) */
     const cm_pmove_limits *limits;
 } mover;
 
@@ -308,19 +336,67 @@ static uint64_t move_key(const cm_kmesh *km, enum pmove kind, int32_t c)
     return (uint64_t)kind << 60 ^ a << 30 ^ b;
 }
 
-static int failed_before(const mover *x, uint64_t key)
+static struct cm_pmove_failed *failed_before(mover *x, uint64_t key)
 {
-    for (size_t i = 0; i < x->nfailed; i++)
-        if (x->failed[i] == key) return 1;
+    cm_pmove_memo *memo = x->memo;
+    for (size_t i = 0; i < memo->n; i++)
+        if (memo->failed[i].key == key) return &memo->failed[i];
+    return NULL;
+}
+
+/* The vertices a move on corner c acts on, as try_move seeds its ring. */
+static void own_vertices(const cm_kmesh *km, int32_t c, int32_t own[4])
+{
+    own[0] = km->tri[c], own[1] = km->tri[cm_next(c)], own[2] = km->tri[cm_prev(c)];
+    own[3] = km->opp[c] >= 0 ? km->tri[km->opp[c]] : -1;
+}
+
+static int remember_failed(mover *x, uint64_t key, int32_t c)
+{
+    cm_pmove_memo *memo = x->memo;
+    void *p = memo->failed;
+    if (cm_grow(&p, &memo->cap, memo->n + 1, sizeof *memo->failed)) return -1;
+    memo->failed = p;
+    struct cm_pmove_failed *f = &memo->failed[memo->n++];
+    f->key = key, f->round = memo->round;
+    own_vertices(x->km, c, f->own);
     return 0;
 }
 
-static int remember_failed(mover *x, uint64_t key)
+/* After a kept move (its ring in x->ring): forgets the undone moves with
+ * a vertex within CM_PMOVE_REACH rings of the ring. 0, or -1 out of
+ * memory. */
+static int forget_near(mover *x)
 {
-    void *p = x->failed;
-    if (cm_grow(&p, &x->failed_cap, x->nfailed + 1, sizeof *x->failed)) return -1;
-    x->failed = p;
-    x->failed[x->nfailed++] = key;
+    cm_kmesh *km = x->km;
+    uint32_t stamp = cm_kmesh_new_stamp(km);
+    for (size_t i = 0; i < x->ring.n; i++) km->mark[x->ring.a[i]] = stamp;
+    size_t from = 0;
+    for (int r = 0; r < CM_PMOVE_REACH; r++) {
+        size_t to = x->ring.n;
+        for (size_t i = from; i < to; i++) {
+            if (km->vc[x->ring.a[i]] < 0) continue;
+            long m = cm_kmesh_star(km, x->ring.a[i], &x->star);
+            if (m < 0) return -1;
+            for (long j = 0; j < m; j++)
+                for (int e = 0; e < 2; e++) {
+                    int32_t w = km->tri[e ? cm_prev(x->star.a[j]) : cm_next(x->star.a[j])];
+                    if (km->mark[w] == stamp) continue;
+                    km->mark[w] = stamp;
+                    if (cm_ibuf_push(&x->ring, w)) return -1;
+                }
+        }
+        from = to;
+    }
+    cm_pmove_memo *memo = x->memo;
+    size_t kept = 0;
+    for (size_t i = 0; i < memo->n; i++) {
+        const struct cm_pmove_failed *f = &memo->failed[i];
+        int near = 0;
+        for (int j = 0; j < 4; j++) near |= f->own[j] >= 0 && km->mark[f->own[j]] == stamp;
+        if (!near) memo->failed[kept++] = *f;
+    }
+    memo->n = kept;
     return 0;
 }
 
@@ -376,9 +452,16 @@ static int tries_left(const mover *x, long tries, long idle)
 }
 
 long cm_polish_moves(cm_kmesh *km, const cm_pmove_limits *limits, long steiner_left, cm_maxmin_slide *slide,
-                     cm_progress *progress)
+                     cm_pmove_memo *memo, cm_progress *progress)
 {
-    mover x = {.km = km, .progress = progress, .slide = slide && km->bt ? slide : NULL, .limits = limits};
+    cm_pmove_memo own = {0};
+    mover x = {.km = km, .progress = progress, .slide = slide && km->bt ? slide : NULL, .limits = limits,
+               .memo = memo ? memo : &own};
+    /* a memo of tries made otherwise says nothing of these */
+    if (x.memo->n && (x.memo->iterations != limits->iterations || x.memo->slides != (x.slide != NULL)))
+        x.memo->n = 0;
+    x.memo->iterations = limits->iterations, x.memo->slides = x.slide != NULL;
+    x.memo->round++; /* the moves undone in earlier calls are counted once here */
     if (x.slide) {
         x.labels = *slide;
         x.edge_rows = calloc(km->k, sizeof *x.edge_rows), x.t_rows = calloc(km->k, sizeof *x.t_rows);
@@ -404,16 +487,21 @@ long cm_polish_moves(cm_kmesh *km, const cm_pmove_limits *limits, long steiner_l
                 for (int j = 0; j < mk && !gained && tries_left(&x, tries, idle); j++) {
                     if (km->tri[near[j]] < 0) continue;
                     uint64_t key = move_key(km, (enum pmove)kind, near[j]);
-                    if (failed_before(&x, key)) continue;
+                    struct cm_pmove_failed *f = failed_before(&x, key);
+                    if (f && f->round == x.memo->round) continue;
+                    if (f) { /* undone again (cm_pmove_failed): counted, not run */
+                        f->round = x.memo->round, tries++, idle++;
+                        continue;
+                    }
                     int s = try_move(&x, (enum pmove)kind, near[j], least);
                     tries++, idle++;
-                    if (s < 0 || (s == 0 && remember_failed(&x, key))) {
+                    if (s < 0 || (s == 0 && remember_failed(&x, key, near[j])) || (s > 0 && forget_near(&x))) {
                         kept = -1;
                         goto done;
                     }
                     if (s > 0) {
                         gained = 1, kept++, steiner_left -= adds, idle = 0;
-                        x.nfailed = 0;
+                        x.memo->round++;
                         least = cm_kmesh_min_angle(km);
                     }
                 }
@@ -423,7 +511,8 @@ long cm_polish_moves(cm_kmesh *km, const cm_pmove_limits *limits, long steiner_l
     }
 done:
     cm_ibuf_free(&x.star), cm_ibuf_free(&x.ring), cm_ibuf_free(&x.var), cm_ibuf_free(&x.tris), cm_ibuf_free(&x.gvar);
-    free(x.pts), free(x.pts_t), free(x.failed), free(x.next), free(x.prev);
+    free(x.pts), free(x.pts_t), free(x.next), free(x.prev);
+    cm_pmove_memo_free(&own);
     for (size_t g = 0; x.slide && g < km->k; g++) free(x.edge_rows[g]), free(x.t_rows[g]);
     free(x.edge_rows), free(x.t_rows);
     return kept;

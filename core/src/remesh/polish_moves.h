@@ -31,6 +31,20 @@ cm_pmove_limits cm_pmove_limits_of(const cm_kmesh *km);
 cm_pmove_limits cm_pmove_longer_limits(void);
 int cm_pmove_longer_wanted(const cm_kmesh *km);
 
+/* The moves a call of cm_polish_moves undid, for the next call on the
+ * same mesh with the same slide and L-BFGS iterations (auto's longer
+ * runs): those the kept moves left out of their reach are counted as
+ * tries without running them again (polish_moves.c says why). Zeroed
+ * before first use; cm_pmove_memo_free after the last. */
+typedef struct cm_pmove_memo {
+    struct cm_pmove_failed *failed;
+    size_t n, cap;
+    long round;
+    int iterations, slides;
+} cm_pmove_memo;
+
+void cm_pmove_memo_free(cm_pmove_memo *memo);
+
 /* Tries moves (a polish alone, a flip, a split, a Steiner vertex's
  * removal, an insertion) around the triangles furthest below their aim,
  * each with the local polish, keeping one only when the smallest slack of
@@ -41,9 +55,10 @@ int cm_pmove_longer_wanted(const cm_kmesh *km);
  * and max_piece; NULL where the correspondence is not the tool's to
  * choose), the polish after each move also slides the boundary points that
  * lie inside an input edge along it, as the joint polish does, and adds to
- * slide->slid the points the kept moves slid. Returns the moves kept, or
- * -1 out of memory or cancelled (progress says which). */
+ * slide->slid the points the kept moves slid. memo: the moves undone by
+ * the caller's earlier calls (cm_pmove_memo), or NULL. Returns the moves
+ * kept, or -1 out of memory or cancelled (progress says which). */
 long cm_polish_moves(cm_kmesh *km, const cm_pmove_limits *limits, long steiner_left, cm_maxmin_slide *slide,
-                     cm_progress *progress);
+                     cm_pmove_memo *memo, cm_progress *progress);
 
 #endif

@@ -924,13 +924,15 @@ static cm_status polish_jointly(cm_mesh *mesh, size_t nb, cm_remesh_boundary *sp
 }
 
 /* The polish-scored moves at limits whose polish also slides the boundary
- * points along their input edges (splits->place): the moves kept (their
- * slides counted in splits->slid), or -1. */
-static long sliding_moves(remesher *x, const cm_pmove_limits *limits, size_t n, cm_remesh_boundary *splits)
+ * points along their input edges (splits->place), memo the moves the
+ * calls before undid: the moves kept (their slides counted in
+ * splits->slid), or -1. */
+static long sliding_moves(remesher *x, const cm_pmove_limits *limits, size_t n, cm_remesh_boundary *splits,
+                          cm_pmove_memo *memo)
 {
     cm_kmesh *km = &x->km;
     cm_maxmin_slide slide = {NULL, NULL, splits->place, splits->ctx, splits->max_piece, 0, NULL, NULL};
-    long kept = cm_polish_moves(km, limits, budget_of(x->o, n) - (km->live_v - km->n), &slide, x->progress);
+    long kept = cm_polish_moves(km, limits, budget_of(x->o, n) - (km->live_v - km->n), &slide, memo, x->progress);
     if (kept >= 0) splits->slid += slide.slid;
     return kept;
 }
@@ -946,23 +948,25 @@ static cm_status polish_moves(remesher *x, cm_mesh *mesh, size_t n, cm_remesh_bo
     if (cm_kmesh_read_back(km, mesh, edge, t)) return CM_ERR_NO_MEMORY;
     cm_pmove_limits limits = cm_pmove_limits_of(km);
     if (cm_kmesh_min_slack(km) < -(1 - limits.share) * x->target) return CM_OK;
-    long kept = cm_polish_moves(km, &limits, budget_of(x->o, n) - (km->live_v - km->n), NULL, x->progress);
+    long kept = cm_polish_moves(km, &limits, budget_of(x->o, n) - (km->live_v - km->n), NULL, NULL, x->progress);
     if (kept < 0) return stop_status(x);
+    cm_pmove_memo memo = {0}; /* the sliding runs' undone moves, from one run to the next */
     if (splits && splits->place) { /* the boundary points' turn */
-        long more = sliding_moves(x, &limits, n, splits);
-        if (more < 0) return stop_status(x);
-        kept += more;
+        long more = sliding_moves(x, &limits, n, splits, &memo);
+        kept = more < 0 ? -1 : kept + more;
     }
     /* Still far below the aim where the correspondence is the tool's to
      * choose: longer runs with the boundary points' turn while they keep
      * moves (polish_moves.c says why). */
     cm_pmove_limits longer = cm_pmove_longer_limits();
-    for (int r = 0; splits && splits->place && r < CM_PMOVE_LONGER_ROUNDS && cm_pmove_longer_wanted(km); r++) {
-        long more = sliding_moves(x, &longer, n, splits);
-        if (more < 0) return stop_status(x);
-        kept += more;
+    for (int r = 0; kept >= 0 && splits && splits->place && r < CM_PMOVE_LONGER_ROUNDS && cm_pmove_longer_wanted(km);
+         r++) {
+        long more = sliding_moves(x, &longer, n, splits, &memo);
+        kept = more < 0 ? -1 : kept + more;
         if (more == 0) break;
     }
+    cm_pmove_memo_free(&memo);
+    if (kept < 0) return stop_status(x);
     if (kept == 0) return CM_OK;
     cm_status s = splits ? cm_kmesh_write_labels(km, splits->edge, splits->t) : CM_OK;
     return s == CM_OK ? cm_kmesh_write(km, mesh) : s;
