@@ -152,22 +152,17 @@ typedef struct mover {
     const cm_pmove_limits *limits;
 } mover;
 
-/* The vertices within CM_PMOVE_RINGS rings of seeds[0 .. ns) (live
- * ones) into x->ring, nearest first. 0 or -1 out of memory. */
-static int rings(mover *x, const int32_t *seeds, int ns)
+/* Adds to x->ring, marked with stamp, the vertices within `rounds` rings
+ * of its live vertices (those already in it are marked). 0 or -1 out of
+ * memory. */
+static int grow_rings(mover *x, int rounds, uint32_t stamp)
 {
     cm_kmesh *km = x->km;
-    uint32_t stamp = cm_kmesh_new_stamp(km);
-    x->ring.n = 0;
-    for (int i = 0; i < ns; i++)
-        if (seeds[i] >= 0 && km->vc[seeds[i]] >= 0 && km->mark[seeds[i]] != stamp) {
-            km->mark[seeds[i]] = stamp;
-            if (cm_ibuf_push(&x->ring, seeds[i])) return -1;
-        }
     size_t from = 0;
-    for (int r = 0; r < CM_PMOVE_RINGS; r++) {
+    for (int r = 0; r < rounds; r++) {
         size_t to = x->ring.n;
         for (size_t i = from; i < to; i++) {
+            if (km->vc[x->ring.a[i]] < 0) continue;
             long m = cm_kmesh_star(km, x->ring.a[i], &x->star);
             if (m < 0) return -1;
             for (long j = 0; j < m; j++) {
@@ -183,6 +178,21 @@ static int rings(mover *x, const int32_t *seeds, int ns)
         from = to;
     }
     return 0;
+}
+
+/* The vertices within CM_PMOVE_RINGS rings of seeds[0 .. ns) (live
+ * ones) into x->ring, nearest first. 0 or -1 out of memory. */
+static int rings(mover *x, const int32_t *seeds, int ns)
+{
+    cm_kmesh *km = x->km;
+    uint32_t stamp = cm_kmesh_new_stamp(km);
+    x->ring.n = 0;
+    for (int i = 0; i < ns; i++)
+        if (seeds[i] >= 0 && km->vc[seeds[i]] >= 0 && km->mark[seeds[i]] != stamp) {
+            km->mark[seeds[i]] = stamp;
+            if (cm_ibuf_push(&x->ring, seeds[i])) return -1;
+        }
+    return grow_rings(x, CM_PMOVE_RINGS, stamp);
 }
 
 /* The smallest slack and smallest key of the triangles around the ring's
@@ -344,7 +354,7 @@ static struct cm_pmove_failed *failed_before(mover *x, uint64_t key)
     return NULL;
 }
 
-/* The vertices a move on corner c acts on, as try_move seeds its ring. */
+/* The vertices a move on corner c acts on (-1: none), its ring's seeds. */
 static void own_vertices(const cm_kmesh *km, int32_t c, int32_t own[4])
 {
     own[0] = km->tri[c], own[1] = km->tri[cm_next(c)], own[2] = km->tri[cm_prev(c)];
@@ -371,23 +381,7 @@ static int forget_near(mover *x)
     cm_kmesh *km = x->km;
     uint32_t stamp = cm_kmesh_new_stamp(km);
     for (size_t i = 0; i < x->ring.n; i++) km->mark[x->ring.a[i]] = stamp;
-    size_t from = 0;
-    for (int r = 0; r < CM_PMOVE_REACH; r++) {
-        size_t to = x->ring.n;
-        for (size_t i = from; i < to; i++) {
-            if (km->vc[x->ring.a[i]] < 0) continue;
-            long m = cm_kmesh_star(km, x->ring.a[i], &x->star);
-            if (m < 0) return -1;
-            for (long j = 0; j < m; j++)
-                for (int e = 0; e < 2; e++) {
-                    int32_t w = km->tri[e ? cm_prev(x->star.a[j]) : cm_next(x->star.a[j])];
-                    if (km->mark[w] == stamp) continue;
-                    km->mark[w] = stamp;
-                    if (cm_ibuf_push(&x->ring, w)) return -1;
-                }
-        }
-        from = to;
-    }
+    if (grow_rings(x, CM_PMOVE_REACH, stamp)) return -1;
     cm_pmove_memo *memo = x->memo;
     size_t kept = 0;
     for (size_t i = 0; i < memo->n; i++) {
@@ -413,7 +407,8 @@ static int try_move(mover *x, enum pmove kind, int32_t c, double least)
      * (the variant measured: bench/REMESH.md) */
     if ((kind == PM_FLIP || (kind == PM_SPLIT && !x->slide)) && o < 0) return 0;
     if (kind == PM_COLLAPSE && cm_kmesh_is_boundary(km, km->tri[c])) return 0;
-    int32_t seeds[4] = {km->tri[c], km->tri[cm_next(c)], km->tri[cm_prev(c)], o >= 0 ? km->tri[o] : -1};
+    int32_t seeds[4];
+    own_vertices(km, c, seeds);
     x->slides = 0;
     double before, after, key;
     if (rings(x, seeds, 4) || ring_quality(x, km->k, &before, &key) || cm_kmesh_tx_begin(km)) return -1;
