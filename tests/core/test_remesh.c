@@ -677,6 +677,87 @@ static void test_polish_moves_memo(void)
     CHECK_MSG(carried > 0, "no run began with a move undone before: the memo was not exercised");
 }
 
+/* Boundary labels for cm_remesh_boundary on the input polygons
+ * (split_inputs): vertex i is (i, 0) in both. 0, or -1 out of memory. */
+static int input_labels(size_t n, int32_t *edge[2], double *t[2])
+{
+    for (int g = 0; g < 2; g++) edge[g] = malloc(n * sizeof **edge), t[g] = calloc(n, sizeof **t);
+    int ok = edge[0] && edge[1] && t[0] && t[1];
+    for (size_t i = 0; ok && i < n; i++) edge[0][i] = edge[1][i] = (int32_t)i;
+    return ok ? 0 : -1;
+}
+
+/* cm_remesh of a copy of start into out, with boundary splits on inputs
+ * when `splits` (the final labels then in edge and t, *nb of them),
+ * restarts as given, resume as given. */
+static cm_status remesh_copy(const cm_mesh *start, size_t n, int restarts, int splits, split_inputs *inputs,
+                             int32_t *edge[2], double *t[2], cm_remesh_resume *resume, cm_mesh *out,
+                             cm_remesh_report *rep, size_t *nb)
+{
+    cm_options o;
+    cm_options_init(&o);
+    o.restarts = restarts;
+    cm_error err = {0};
+    *rep = (cm_remesh_report){0};
+    if (cm_mesh_copy(out, start) || (splits && input_labels(n, edge, t))) return CM_ERR_NO_MEMORY;
+    cm_remesh_boundary b = {test_between, inputs, edge, t, n, test_place, 0, 0};
+    cm_status s = cm_remesh(out, n, &o, 60.0, 0, splits ? &b : NULL, resume, NULL, rep, &err);
+    *nb = b.n;
+    return s;
+}
+
+/* A run without restarts that keeps where they start (cm_remesh_resume),
+ * then the same mesh remeshed with a restart from there, ends exactly as
+ * one whole run with the restart: the same mesh bit for bit, the same
+ * report, the same boundary labels where boundary edges split. */
+static void test_remesh_resume(void)
+{
+    int runs = 0, resumed = 0;
+    for (int seed = 1; seed <= 12; seed++)
+        for (int splits = 0; splits <= 1; splits++) {
+            int n = 12 + seed % 20;
+            double *a = polygon((size_t)n), *b = polygon((size_t)n);
+            random_pair(seed, n, a, b);
+            const double *in[2] = {a, b};
+            split_inputs inputs = {in, (size_t)n};
+            cm_mesh start = {0}, whole = {0}, once = {0}, again = {0};
+            int32_t *edge[3][2] = {{0}};
+            double *t[3][2] = {{0}};
+            size_t nb[3];
+            cm_remesh_resume resume = {0};
+            cm_remesh_report rw, ro, ra;
+            int ok = construct(in, 2, (size_t)n, &start) == 0;
+            ok = ok &&
+                 remesh_copy(&start, (size_t)n, 1, splits, &inputs, edge[0], t[0], NULL, &whole, &rw, &nb[0]) == CM_OK;
+            ok = ok && remesh_copy(&start, (size_t)n, 0, splits, &inputs, edge[1], t[1], &resume, &once, &ro,
+                                   &nb[1]) == CM_OK;
+            CHECK_MSG(ok, "seed %d: a run failed", seed);
+            CHECK_MSG(!ok || (resume.mesh.nv > 0) == ro.restart_wanted,
+                      "seed %d: kept where the restarts start %s a restart was wanted", seed,
+                      ro.restart_wanted ? "though no" : "where no");
+            if (ok && resume.mesh.nv > 0) {
+                ok = remesh_copy(&start, (size_t)n, 1, splits, &inputs, edge[2], t[2], &resume, &again, &ra, &nb[2]) ==
+                     CM_OK;
+                int same = ok && same_mesh(&whole, &again) && memcmp(&rw, &ra, sizeof rw) == 0 && nb[0] == nb[2] &&
+                           resume.mesh.nv == 0;
+                for (int g = 0; same && splits && g < 2; g++)
+                    same = memcmp(edge[0][g], edge[2][g], nb[0] * sizeof **edge[0]) == 0 &&
+                           memcmp(t[0][g], t[2][g], nb[0] * sizeof **t[0]) == 0;
+                CHECK_MSG(same, "seed %d%s: resumed from where the restarts start, not the whole run's result", seed,
+                          splits ? " (boundary splits)" : "");
+                resumed++;
+            }
+            runs += ok;
+            cm_remesh_resume_clear(&resume);
+            cm_mesh_clear(&start), cm_mesh_clear(&whole), cm_mesh_clear(&once), cm_mesh_clear(&again);
+            for (int i = 0; i < 3; i++)
+                for (int g = 0; g < 2; g++) free(edge[i][g]), free(t[i][g]);
+            free(a), free(b);
+        }
+    printf("remesh resumed: %d runs, %d resumed from where the restarts start\n", runs, resumed);
+    CHECK_MSG(resumed > 0, "no run wanted a restart: the resume was not exercised");
+}
+
 static double area_spread(const cm_kmesh *km, size_t g)
 {
     double sum = 0, sum2 = 0;
@@ -1610,6 +1691,7 @@ int main(void)
     test_polish_moves();
     test_polish_moves_slide();
     test_polish_moves_memo();
+    test_remesh_resume();
     test_area_equalisation();
     test_refine_keeps_boundary();
     test_boundary_caps();

@@ -16,6 +16,14 @@ void cm_result_clear_geometry(cm_result *r)
     r->he_next = r->he_to = r->he_face = r->vertex_he = r->face_he = NULL;
     r->quality = r->quality_before = NULL;
     r->nh = 0;
+    cm_result_free_resume(r->resume);
+    r->resume = NULL;
+}
+
+void cm_result_free_resume(cm_remesh_resume *resume)
+{
+    if (resume) cm_remesh_resume_clear(resume);
+    free(resume);
 }
 
 cm_status cm_result_measure(cm_result *r, const cm_quality *known)

@@ -7,6 +7,7 @@
 #include "correspond/arclength.h"
 #include "correspond/bound.h"
 #include "correspond/conformal.h"
+#include "remesh/remesh.h"
 
 struct cm_result {
     cm_error error;   /* status; message and location of a failure */
@@ -40,6 +41,10 @@ struct cm_result {
      * corner-fan cap is no higher (remesh_stage) and which decides whether
      * its polish-scored moves are worth running (cm_remesh). */
     double beat_deg;
+    /* A rescue's run without restarts where restarts are asked for: where
+     * they would start from (cm_remesh_resume), for the rerun of the
+     * pairing kept; NULL otherwise. Owned. */
+    cm_remesh_resume *resume;
     /* The caps and the conformal correspondence already computed in this
      * call (shared by a second pairing's result, owned by the call), or
      * NULL. */
@@ -49,6 +54,8 @@ struct cm_result {
 
 /* Drops all geometry, keeping status and message (a failed result). */
 void cm_result_clear_geometry(cm_result *r);
+/* Frees a result's resume (NULL: nothing). */
+void cm_result_free_resume(cm_remesh_resume *resume);
 /* Fills r->quality and the size stats of a checked result. known: NULL,
  * or each geometry's quality already measured on this very mesh (the
  * same triangles in the same order, the vertices at most renumbered). */

@@ -222,8 +222,8 @@ static cm_status remesh_stage(cm_result *r, size_t n, const cm_options *o, cm_re
     cm_remesh_report report = {0};
     r->stats.pairings_remeshed = 1;
     /* Nothing above the ceiling can be reached: aim no higher. */
-    cm_status s = cm_remesh(&r->mesh, n, o, o->ceiling ? r->stats.ceiling_deg : 60.0, r->beat_deg, splits, progress,
-                            &report, &r->error);
+    cm_status s = cm_remesh(&r->mesh, n, o, o->ceiling ? r->stats.ceiling_deg : 60.0, r->beat_deg, splits, r->resume,
+                            progress, &report, &r->error);
     r->stats.seconds_remesh = cm_seconds_now() - t;
     r->stats.remesh_iterations = report.iterations;
     r->stats.remesh_aim_deg = report.target_deg;
@@ -976,20 +976,30 @@ static cm_status rescue_try(cm_result **result, const cm_options *o, rescue_run 
     if (angle) *angle = -1;
     if (!again) return CM_OK;
     again->beat_deg = (*result)->polished_angle_deg;
+    /* where restarts are asked for, the run keeps where they would start
+     * (rescue_restart; NULL without memory: it then runs again whole) */
+    if (o->restarts > 0) again->resume = calloc(1, sizeof *again->resume);
     cm_status s = run(again, input, &once, pairing);
     *took = better(again, s, *result);
     if (angle && s == CM_OK) *angle = again->polished_angle_deg;
     return keep_if(result, again, s, *took);
 }
 
-/* The pairing a rescue kept (NULL: none) run again with the restarts o
- * asks for, where its result would start one. */
+/* The pairing a rescue kept (NULL: none) with the restarts o asks for,
+ * where its result would start one: built again, and remeshed from where
+ * its run left off (cm_remesh_resume), the same as a whole run with
+ * restarts up to there. */
 static cm_status rescue_restart(cm_result **result, const cm_options *o, rescue_run run, const void *input,
                                 const void *pairing)
 {
+    cm_remesh_resume *resume = (*result)->resume;
+    (*result)->resume = NULL;
     cm_result *again;
-    if (!pairing || !(o->restarts > 0 && (*result)->restart_wanted) || !(again = rescue_result(*result, o)))
+    if (!pairing || !(o->restarts > 0 && (*result)->restart_wanted) || !(again = rescue_result(*result, o))) {
+        cm_result_free_resume(resume);
         return CM_OK;
+    }
+    again->resume = resume;
     return keep_if(result, again, run(again, input, o, pairing), 1);
 }
 

@@ -1,4 +1,5 @@
 #include <stdlib.h>
+#include <string.h>
 
 #include "base/mesh.h"
 
@@ -31,6 +32,21 @@ void cm_mesh_clear(cm_mesh *mesh)
     mesh->xy = NULL;
     mesh->tri = NULL;
     mesh->nv = mesh->nt = 0;
+}
+
+int cm_mesh_copy(cm_mesh *dst, const cm_mesh *src)
+{
+    *dst = (cm_mesh){src->k, src->nv, src->nt, calloc(src->k, sizeof *dst->xy), malloc((3 * src->nt + 1) * sizeof *dst->tri),
+                     src->loop_start, src->num_loops};
+    int ok = dst->xy && dst->tri;
+    for (size_t g = 0; ok && g < src->k; g++) ok = (dst->xy[g] = malloc((2 * src->nv + 1) * sizeof **dst->xy)) != NULL;
+    if (!ok) {
+        cm_mesh_clear(dst);
+        return -1;
+    }
+    for (size_t g = 0; g < src->k; g++) memcpy(dst->xy[g], src->xy[g], 2 * src->nv * sizeof **dst->xy);
+    memcpy(dst->tri, src->tri, 3 * src->nt * sizeof *dst->tri);
+    return 0;
 }
 
 static size_t loop_of(const size_t *loop_start, size_t i)

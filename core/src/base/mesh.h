@@ -58,4 +58,8 @@ cm_edge_key *cm_mesh_edge_keys(const int32_t *tri, size_t nt);
 /* Frees the arrays; the mesh is empty (k kept). */
 void cm_mesh_clear(cm_mesh *mesh);
 
+/* *dst becomes a copy of src's geometries and triangles (its loops, which
+ * it does not own, as src's). 0, or -1 out of memory (dst then empty). */
+int cm_mesh_copy(cm_mesh *dst, const cm_mesh *src);
+
 #endif

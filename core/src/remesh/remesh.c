@@ -1030,64 +1030,153 @@ static int restart(cm_mesh *mesh, double *least, size_t nb, int whole, const cm_
     return s == CM_OK ? kept : -(int)s;
 }
 
-cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, double beat_deg,
-                    cm_remesh_boundary *splits, cm_progress *progress, cm_remesh_report *rep, cm_error *err)
+/* The runs up to where the restarts start (cm_remesh_resume): the greedy
+ * run and where it stalls the map-aware one, written into mesh, the
+ * joint polish and the polish-scored moves; *least the result's smallest
+ * angle (radians). x holds the run kept. */
+static cm_status run_to_restarts(remesher *x, remesher *y, cm_mesh *mesh, size_t n, const cm_options *o,
+                                 double ceiling_deg, double beat_deg, cm_remesh_boundary *splits,
+                                 cm_progress *progress, cm_remesh_report *rep, double *least)
 {
-    remesher x = {0}, y = {0};
     cm_options map = *o; /* the rescue's options: x keeps pointing at them when it wins */
     map.remesher = CM_REMESHER_MAP;
     double *bcap;
     cm_status s = boundary_caps(mesh, n, !splits, progress, &bcap);
-    if (s == CM_OK) s = remesh_run(&x, mesh, n, bcap, o, ceiling_deg, splits, progress, rep);
+    if (s == CM_OK) s = remesh_run(x, mesh, n, bcap, o, ceiling_deg, splits, progress, rep);
     /* The greedy remesher can stall far below its aim, typically on a
      * sliver its local moves cannot reach (a slivered result also makes
      * the sweep's tetrahedra fail); the map-aware remesher starts the
      * same construction differently. The better result is kept. */
     if (s == CM_OK && o->remesher == CM_REMESHER_GREEDY && rep->min_angle_deg < CM_RESCUE_SHARE * rep->target_deg) {
         cm_remesh_report again = {0};
-        s = remesh_run(&y, mesh, n, bcap, &map, ceiling_deg, splits, progress, &again);
+        s = remesh_run(y, mesh, n, bcap, &map, ceiling_deg, splits, progress, &again);
         if (s == CM_OK && again.min_angle_deg > rep->min_angle_deg) {
-            remesher t = x;
-            x = y, y = t;
+            remesher t = *x;
+            *x = *y, *y = t;
             again.iterations += rep->iterations, again.splits += rep->splits;
             again.split_attempts += rep->split_attempts;
             *rep = again;
         }
         /* Both ended short: the better one's forced moves look wider. */
         if (s == CM_OK && rep->min_angle_deg < CM_RESCUE_SHARE * rep->target_deg) {
-            s = step_out(&x, n, CM_STEP_OUT_WIDE, CM_STEP_OUT_WIDE_TRIES);
-            if (s == CM_OK) s = finish(&x, rep);
+            s = step_out(x, n, CM_STEP_OUT_WIDE, CM_STEP_OUT_WIDE_TRIES);
+            if (s == CM_OK) s = finish(x, rep);
         }
     }
     free(bcap);
-    if (s == CM_OK && splits) s = cm_kmesh_write_labels(&x.km, splits->edge, splits->t);
-    if (s == CM_OK) s = cm_kmesh_write(&x.km, mesh);
-    if (s == CM_OK) s = polish_jointly(mesh, (size_t)x.km.nb, splits, !splits, progress);
+    if (s == CM_OK && splits) s = cm_kmesh_write_labels(&x->km, splits->edge, splits->t);
+    if (s == CM_OK) s = cm_kmesh_write(&x->km, mesh);
+    if (s == CM_OK) s = polish_jointly(mesh, (size_t)x->km.nb, splits, !splits, progress);
     int behind = s == CM_OK && beat_deg > 0 && mesh_min_angle(mesh) * 180.0 / CM_PI < CM_REMESH_BEHIND * beat_deg;
-    if (s == CM_OK && !behind) s = polish_moves(&x, mesh, n, splits);
+    if (s == CM_OK && !behind) s = polish_moves(x, mesh, n, splits);
+    *least = s == CM_OK ? mesh_min_angle(mesh) : 0;
+    rep->polished_deg = *least * 180.0 / CM_PI;
+    rep->restart_wanted = s == CM_OK && cm_kmesh_min_share(&x->km) < CM_RESTART_BELOW;
+    return s;
+}
+
+void cm_remesh_resume_clear(cm_remesh_resume *resume)
+{
+    size_t k = resume->mesh.k;
+    cm_mesh_clear(&resume->mesh);
+    free(resume->written);
+    for (size_t g = 0; resume->edge && g < k; g++) free(resume->edge[g]);
+    for (size_t g = 0; resume->t && g < k; g++) free(resume->t[g]);
+    free(resume->edge), free(resume->t);
+    *resume = (cm_remesh_resume){0};
+}
+
+/* Keeps in resume where the restarts start from (cm_remesh_resume): mesh,
+ * its nb boundary vertices, its loops' offsets `written` (or NULL), the
+ * labels and slides in splits (or NULL), the report. Without memory for
+ * it nothing is kept: a later call then runs from the start. */
+static void keep_resume(cm_remesh_resume *resume, const cm_mesh *mesh, size_t nb, const size_t *written,
+                        const cm_remesh_boundary *splits, const cm_remesh_report *rep)
+{
+    size_t k = mesh->k;
+    int ok = cm_mesh_copy(&resume->mesh, mesh) == 0;
+    resume->mesh.loop_start = NULL; /* the caller's, not the copy's */
+    resume->nb = nb, resume->report = *rep, resume->slid = splits ? splits->slid : 0;
+    if (ok && written) {
+        size_t bytes = (mesh->num_loops + 1) * sizeof *written;
+        ok = (resume->written = malloc(bytes)) != NULL;
+        if (ok) memcpy(resume->written, written, bytes);
+    }
+    if (ok && splits) {
+        ok = (resume->edge = calloc(k, sizeof *resume->edge)) && (resume->t = calloc(k, sizeof *resume->t));
+        for (size_t g = 0; ok && g < k; g++) {
+            ok = (resume->edge[g] = malloc((nb + 1) * sizeof **resume->edge)) &&
+                 (resume->t[g] = malloc((nb + 1) * sizeof **resume->t));
+            if (ok) {
+                memcpy(resume->edge[g], splits->edge[g], nb * sizeof **resume->edge);
+                memcpy(resume->t[g], splits->t[g], nb * sizeof **resume->t);
+            }
+        }
+    }
+    if (!ok) cm_remesh_resume_clear(resume);
+}
+
+/* Takes what resume kept into mesh (its loops staying its own), splits and
+ * the report; resume is emptied. Its boundary vertices, and its loops'
+ * offsets (or NULL), are returned. */
+static size_t take_resume(cm_remesh_resume *resume, cm_mesh *mesh, cm_remesh_boundary *splits,
+                          cm_remesh_report *rep, size_t **written)
+{
+    const size_t *loops = mesh->loop_start;
+    size_t num_loops = mesh->num_loops, nb = resume->nb;
+    cm_mesh_clear(mesh);
+    *mesh = resume->mesh;
+    mesh->loop_start = loops, mesh->num_loops = num_loops;
+    *rep = resume->report;
+    *written = resume->written;
+    for (size_t g = 0; splits && g < mesh->k; g++) {
+        free(splits->edge[g]), free(splits->t[g]);
+        splits->edge[g] = resume->edge[g], splits->t[g] = resume->t[g];
+        resume->edge[g] = NULL, resume->t[g] = NULL;
+    }
+    if (splits) splits->slid = resume->slid;
+    resume->mesh = (cm_mesh){0}, resume->written = NULL;
+    cm_remesh_resume_clear(resume);
+    return nb;
+}
+
+cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, double beat_deg,
+                    cm_remesh_boundary *splits, cm_remesh_resume *resume, cm_progress *progress,
+                    cm_remesh_report *rep, cm_error *err)
+{
+    remesher x = {0}, y = {0};
+    const size_t *given = mesh->loop_start;
+    size_t *written = NULL, nb;
+    double least;
+    cm_status s = CM_OK;
+    if (resume && resume->mesh.nv) {
+        nb = take_resume(resume, mesh, splits, rep, &written);
+        least = mesh_min_angle(mesh);
+    } else {
+        s = run_to_restarts(&x, &y, mesh, n, o, ceiling_deg, beat_deg, splits, progress, rep, &least);
+        nb = (size_t)x.km.nb;
+        /* Where points were added to the loops of a polygon with holes,
+         * the restarts start from the written loops' offsets; the caller
+         * gets the input's back, as without restarts. */
+        if (s == CM_OK && rep->restart_wanted && (o->restarts > 0 || resume) && given && nb != n) {
+            written = malloc((mesh->num_loops + 1) * sizeof *written);
+            if (!written) s = CM_ERR_NO_MEMORY;
+            else cm_kmesh_written_loops(&x.km, given, mesh->num_loops, written);
+        }
+        if (s == CM_OK && resume && rep->restart_wanted) keep_resume(resume, mesh, nb, written, splits, rep);
+    }
     /* Far below the aim, restarts from the result split where its map is
      * most distorted (the boundary, and with it the labels just written,
-     * stays as it is). Where points were added to the loops of a polygon
-     * with holes, they start from the written loops' offsets; the caller
-     * gets the input's back, as without restarts. */
-    double least = s == CM_OK ? mesh_min_angle(mesh) : 0;
-    rep->polished_deg = least * 180.0 / CM_PI;
-    rep->restart_wanted = s == CM_OK && cm_kmesh_min_share(&x.km) < CM_RESTART_BELOW;
-    const size_t *given = mesh->loop_start;
-    size_t *written = NULL;
-    if (rep->restart_wanted && o->restarts > 0 && given && (size_t)x.km.nb != n) {
-        written = malloc((mesh->num_loops + 1) * sizeof *written);
-        if (!written) s = CM_ERR_NO_MEMORY;
-        else cm_kmesh_written_loops(&x.km, given, mesh->num_loops, written), mesh->loop_start = written;
-    }
+     * stays as it is). */
+    if (written) mesh->loop_start = written;
     for (int i = 0; s == CM_OK && rep->restart_wanted && i < o->restarts; i++) {
-        int r = restart(mesh, &least, (size_t)x.km.nb, !splits, o, ceiling_deg, progress, rep);
+        int r = restart(mesh, &least, nb, !splits, o, ceiling_deg, progress, rep);
         if (r < 0) s = (cm_status)-r;
         if (r <= 0) break;
     }
     mesh->loop_start = given;
     free(written);
-    if (s == CM_OK && splits) splits->n = (size_t)x.km.nb;
+    if (s == CM_OK && splits) splits->n = nb;
     remesher_free(&x), remesher_free(&y);
     if (s == CM_ERR_INTERNAL) return cm_fail(err, s, "remesh: the construction is not a triangulated disk");
     return s == CM_OK ? CM_OK : cm_fail_status(err, s);

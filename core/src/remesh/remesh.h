@@ -45,6 +45,24 @@ typedef struct cm_remesh_boundary {
     size_t slid;
 } cm_remesh_boundary;
 
+/* Where a run's restarts start from: its result before any restart
+ * (written, polished, its polish-scored moves made), with what the
+ * restarts and the caller read of it. A run is the same up to there
+ * whatever o->restarts says, so auto keeps this for a rescue run without
+ * restarts, and the pairing it keeps runs only its restarts after it.
+ * mesh.nv == 0: nothing kept. */
+typedef struct cm_remesh_resume {
+    cm_mesh mesh;
+    size_t nb;                 /* its boundary vertices */
+    size_t *written;           /* its loops' offsets (num_loops + 1) where points were added to loops, else NULL */
+    int32_t **edge;            /* with boundary splits: the labels (cm_remesh_boundary), k arrays of nb, else NULL */
+    double **t;
+    size_t slid;
+    cm_remesh_report report;
+} cm_remesh_resume;
+
+void cm_remesh_resume_clear(cm_remesh_resume *resume);
+
 /* Algorithm 1 on mesh (polygon vertices 0..n-1 counter-clockwise, each
  * geometry valid), in place. o: the validated options. ceiling_deg: no
  * compatible triangulation has a larger smallest angle (60 when unknown);
@@ -53,9 +71,14 @@ typedef struct cm_remesh_boundary {
  * every angle at the full target. beat_deg: the smallest angle of a
  * result this run competes with (0: none); a run whose polished result
  * ends far below it (CM_REMESH_BEHIND) skips its polish-scored moves,
- * which could not lift it that far. Returns CM_OK, CM_ERR_NO_MEMORY,
+ * which could not lift it that far. resume: NULL; or empty, and it
+ * receives where the restarts start from when the result would start
+ * them (report->restart_wanted); or holding that of a run on this very
+ * mesh with these options but for o->restarts, and only the restarts run
+ * from it (it is emptied). Returns CM_OK, CM_ERR_NO_MEMORY,
  * CM_ERR_CANCELLED or CM_ERR_INTERNAL (message on err). */
 cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling_deg, double beat_deg,
-                    cm_remesh_boundary *splits, cm_progress *progress, cm_remesh_report *report, cm_error *err);
+                    cm_remesh_boundary *splits, cm_remesh_resume *resume, cm_progress *progress,
+                    cm_remesh_report *report, cm_error *err);
 
 #endif
