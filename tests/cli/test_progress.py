@@ -100,6 +100,22 @@ def test_progress_off_a_terminal_is_plain_lines(cm, tmp_path, command):
     assert result.stdout.startswith("wrote ")
 
 
+def test_auto_progress_is_one_bar_over_its_pairings(cm, tmp_path):
+    # Auto builds a second pairing of these glyphs (tests/cli/glyph_pairs):
+    # each pairing runs every stage again, but the bar never goes back,
+    # names the later pairings, and says "done" once, at the end.
+    a, b = (os.path.join(os.path.dirname(__file__), "glyph_pairs", "Z003_G_Z_n48_" + s + ".xy") for s in "ab")
+    result = cm("triangulate", a, b, "-o", "out", "--correspondence", "auto", "--progress")
+    assert result.returncode == 0, result.stderr
+    matches = [PLAIN_LINE.fullmatch(line) for line in result.stderr.splitlines()]
+    assert matches and all(matches), result.stderr
+    percents = [int(m.group(2)) for m in matches]
+    stages = [m.group(1) for m in matches]
+    assert percents == sorted(percents), result.stderr
+    assert stages.count("done") == 1 and stages[-1] == "done" and percents[-1] == 100, result.stderr
+    assert any(s.startswith("pairing 2: ") for s in stages), result.stderr
+
+
 @pytest.mark.parametrize("command", ["triangulate", "morph"])
 def test_quiet_prints_nothing_but_writes_everything(cm, tmp_path, command):
     write_xy(tmp_path / "a.xy", star(200, 1))

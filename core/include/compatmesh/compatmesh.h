@@ -97,7 +97,10 @@ typedef enum cm_method {
     CM_METHOD_PARTITION = 1
 } cm_method;
 
-/* Progress: fraction in [0, 1], stage a short constant name. Return
+/* Progress: fraction in [0, 1], never going back within a call; stage a
+ * short name, valid during the callback ("validate", "triangulate
+ * polygons", "remesh", "check", "done", ...; auto runs its further
+ * pairings under one bar as "pairing N: remesh" and the like). Return
  * non-zero to cancel; the call then returns CM_ERR_CANCELLED. */
 typedef int (*cm_progress_fn)(void *user, double fraction, const char *stage);
 

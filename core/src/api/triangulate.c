@@ -959,6 +959,34 @@ static cm_options without_restarts(const cm_options *o)
     return once;
 }
 
+/* Auto runs several pairings, each a whole pipeline: where the caller
+ * listens, one progress bar spans them all (cm_progress_relay); this
+ * moves it on to the next run, named by label (NULL: its number). */
+static void next_run(const cm_options *o, const char *label)
+{
+    if (o->progress == cm_progress_relay_fn) cm_progress_relay_next(o->progress_user, label);
+}
+
+/* o with the relay in place of the caller's callback where auto may run
+ * several pairings and someone listens; *relayed receives it. */
+static const cm_options *relay_progress(const cm_options *o, cm_options *relayed, cm_progress_relay *relay)
+{
+    if (o->correspondence != CM_CORRESPOND_AUTO || !o->remesh || !o->progress) return o;
+    cm_progress_relay_init(relay, o->progress, o->progress_user);
+    *relayed = *o;
+    relayed->progress = cm_progress_relay_fn, relayed->progress_user = relay;
+    return relayed;
+}
+
+/* The end of a call whose progress the relay carried: CM_ERR_CANCELLED
+ * when the caller cancels at "done" (as a single run's end), else s. */
+static cm_status relay_done(cm_result *r, const cm_options *o, cm_status s)
+{
+    if (s == CM_OK && o->progress == cm_progress_relay_fn && cm_progress_relay_done(o->progress_user))
+        return cm_fail_status(&r->error, CM_ERR_CANCELLED);
+    return s;
+}
+
 /* A rescue's run: `pairing` (of the kind the caller's input takes) of
  * `input` remeshed by o into `again`. */
 typedef cm_status (*rescue_run)(cm_result *again, const void *input, const cm_options *o, const void *pairing);
@@ -979,6 +1007,7 @@ static cm_status rescue_try(cm_result **result, const cm_options *o, rescue_run 
     /* where restarts are asked for, the run keeps where they would start
      * (rescue_restart; NULL without memory: it then runs again whole) */
     if (o->restarts > 0) again->resume = calloc(1, sizeof *again->resume);
+    next_run(o, NULL);
     cm_status s = run(again, input, &once, pairing);
     *took = better(again, s, *result);
     if (angle && s == CM_OK) *angle = again->polished_angle_deg;
@@ -1000,6 +1029,7 @@ static cm_status rescue_restart(cm_result **result, const cm_options *o, rescue_
         return CM_OK;
     }
     again->resume = resume;
+    next_run(o, "restart");
     return keep_if(result, again, run(again, input, o, pairing), 1);
 }
 
@@ -1211,12 +1241,14 @@ static void memos_end(cm_result *r)
 cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *counts,
                                   size_t k, const cm_options *options, cm_result **result)
 {
-    cm_options defaults;
+    cm_options defaults, relayed;
+    cm_progress_relay relay;
     cm_result *r = new_result(result, &options, &defaults);
     if (!r) return result ? CM_ERR_NO_MEMORY : CM_ERR_ARGUMENT;
     if (options->method != CM_METHOD_OVERLAY && options->method != CM_METHOD_PARTITION) {
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
     }
+    options = relay_progress(options, &relayed, &relay);
     cm_status s = check_remesh_options(r, options);
     if (s == CM_OK) s = check_correspondence_options(r, options);
     memos_start(r, options);
@@ -1230,6 +1262,7 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
     else if (s == CM_OK)
         s = run_pipeline(r, polygons, counts, k, NULL, NULL, options);
     r = *result;
+    s = relay_done(r, options, s);
     memos_end(r);
     if (s != CM_OK) cm_result_clear_geometry(r);
     return cm_error_close(&r->error, s);
@@ -1732,6 +1765,7 @@ static cm_status run_annulus_first(cm_result **result, const cm_loops *polygons,
     add_costs(fresh, *result);
     cm_result_free(*result);
     *result = fresh;
+    next_run(o, NULL);
     return run_loops_arclength(fresh, polygons, k, o, LOOP_OUTER, by_ceiling);
 }
 
@@ -1754,9 +1788,11 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
         free(xy), free(counts);
         return s;
     }
-    cm_options defaults;
+    cm_options defaults, relayed;
+    cm_progress_relay relay;
     cm_result *r = new_result(result, &options, &defaults);
     if (!r) return result ? CM_ERR_NO_MEMORY : CM_ERR_ARGUMENT;
+    options = relay_progress(options, &relayed, &relay);
     cm_status s = CM_OK;
     if (options->method != CM_METHOD_OVERLAY && options->method != CM_METHOD_PARTITION)
         s = cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
@@ -1772,6 +1808,7 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
     else if (s == CM_OK) s = run_loops(r, polygons, k, NULL, options);
     if (s == CM_OK) s = pairing_rescue(result, options, &rescue);
     r = *result;
+    s = relay_done(r, options, s);
     memos_end(r);
     if (s != CM_OK) cm_result_clear_geometry(r);
     return cm_error_close(&r->error, s);

@@ -1,5 +1,7 @@
 /* The stage table (progress.h). Stages whose work is not known in advance
  * (the partition) report one fraction throughout. */
+#include <stdio.h>
+
 #include "base/progress.h"
 #include "base/clock.h"
 #include "base/gmp_memory.h"
@@ -43,6 +45,7 @@ int cm_progress_report(cm_progress *p, cm_stage s, double within)
 {
     if (starved(p)) return 1;
     if (!p || !p->fn) return 0;
+    if (s == p->stage && within < p->within) within = p->within; /* a stage's later parts start again at 0 */
     p->stage = s;
     p->within = within;
     double f = stages[s].from + (stages[s].to - stages[s].from) * within;
@@ -66,4 +69,31 @@ int cm_progress_check(cm_progress *p)
     if (!p || !p->fn) return 0;
     if (++p->checks % 32 != 0) return p->cancelled; /* the clock costs more than most loop bodies */
     return cm_progress_poll(p, p->stage, p->within);
+}
+
+void cm_progress_relay_init(cm_progress_relay *relay, cm_progress_fn fn, void *user)
+{
+    *relay = (cm_progress_relay){fn, user, 0, NULL, 0.0, CM_RELAY_FIRST, ""};
+}
+
+void cm_progress_relay_next(cm_progress_relay *relay, const char *label)
+{
+    relay->run++, relay->label = label;
+    relay->from = relay->to, relay->to += 0.5 * (1.0 - relay->to);
+}
+
+int cm_progress_relay_fn(void *user, double fraction, const char *stage)
+{
+    cm_progress_relay *relay = user;
+    if (fraction >= 1.0) return 0; /* a run's "done": the relay's is the end */
+    double at = relay->from + (relay->to - relay->from) * fraction;
+    if (relay->run == 0) return relay->fn(relay->user, at, stage);
+    if (relay->label) snprintf(relay->name, sizeof relay->name, "%s: %s", relay->label, stage);
+    else snprintf(relay->name, sizeof relay->name, "pairing %d: %s", relay->run + 1, stage);
+    return relay->fn(relay->user, at, relay->name);
+}
+
+int cm_progress_relay_done(cm_progress_relay *relay)
+{
+    return relay->fn(relay->user, 1.0, stages[CM_STAGE_DONE].name) != 0;
 }

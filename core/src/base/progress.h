@@ -44,4 +44,28 @@ int cm_progress_poll(cm_progress *p, cm_stage s, double within);
  * that can run longer than about 50 ms calls it; p may be NULL. */
 int cm_progress_check(cm_progress *p);
 
+/* One bar for several runs of the pipeline (auto's pairings, each run
+ * reporting its own stages from the start): the first run takes the bar
+ * up to CM_RELAY_FIRST, each later run half of what is then left, its
+ * stages named "pairing N: stage" (or by the label given), and the end is
+ * reported once, by cm_progress_relay_done. Pass cm_progress_relay_fn and
+ * the relay as the runs' callback and user; the bar never goes back. */
+#define CM_RELAY_FIRST 0.6
+typedef struct cm_progress_relay {
+    cm_progress_fn fn; /* the caller's (not NULL) */
+    void *user;
+    int run;           /* 0: the first */
+    const char *label; /* NULL: "pairing N" */
+    double from, to;   /* the bar's range for this run */
+    char name[64];
+} cm_progress_relay;
+
+void cm_progress_relay_init(cm_progress_relay *relay, cm_progress_fn fn, void *user);
+int cm_progress_relay_fn(void *user, double fraction, const char *stage);
+/* The next run, named by label (NULL: its number, "pairing N"). */
+void cm_progress_relay_next(cm_progress_relay *relay, const char *label);
+/* The end of all runs ("done", the whole bar): 1 when the caller asks to
+ * cancel. */
+int cm_progress_relay_done(cm_progress_relay *relay);
+
 #endif
