@@ -243,14 +243,22 @@ static int test_between(void *ctx, size_t g, int32_t ea, double ta, int32_t eb, 
     return 1;
 }
 
+/* Boundary labels on the input polygons (split_inputs): vertex i is (i, 0) in both. 0, or -1 out of memory. */
+static int input_labels(size_t n, int32_t *edge[2], double *t[2])
+{
+    for (int g = 0; g < 2; g++) edge[g] = malloc(n * sizeof **edge), t[g] = calloc(n, sizeof **t);
+    int ok = edge[0] && edge[1] && t[0] && t[1];
+    for (size_t i = 0; ok && i < n; i++) edge[0][i] = edge[1][i] = (int32_t)i;
+    return ok ? 0 : -1;
+}
+
 static int allow_splits(cm_kmesh *km, const split_inputs *s)
 {
-    int32_t *edge[2] = {malloc(s->n * sizeof(int32_t)), malloc(s->n * sizeof(int32_t))};
-    double *t[2] = {calloc(s->n, sizeof(double)), calloc(s->n, sizeof(double))};
-    int ok = edge[0] && edge[1] && t[0] && t[1];
-    for (size_t i = 0; ok && i < s->n; i++) edge[0][i] = edge[1][i] = (int32_t)i;
-    ok = ok && cm_kmesh_allow_boundary_splits(km, test_between, (void *)s, (const int32_t *const *)edge,
-                                              (const double *const *)t) == 0;
+    int32_t *edge[2];
+    double *t[2];
+    int ok = input_labels(s->n, edge, t) == 0 &&
+             cm_kmesh_allow_boundary_splits(km, test_between, (void *)s, (const int32_t *const *)edge,
+                                            (const double *const *)t) == 0;
     free(edge[0]), free(edge[1]), free(t[0]), free(t[1]);
     return ok;
 }
@@ -567,6 +575,25 @@ static void test_place(void *ctx, size_t g, int32_t e, double t, double xy[2])
     xy[0] = p[0] + t * (q[0] - p[0]), xy[1] = p[1] + t * (q[1] - p[1]);
 }
 
+/* A random pair's kmesh whose boundary edges are split first, on the
+ * input polygons themselves (in: room for the two polygons that inputs
+ * points to), caps at 30 degrees. 0, or -1 (nothing to free). */
+static int sliding_kmesh(int seed, const double *in[2], split_inputs *inputs, double **a, double **b, cm_mesh *m,
+                         cm_kmesh *km)
+{
+    if (random_kmesh(seed, a, b, m, km)) return -1;
+    in[0] = *a, in[1] = *b;
+    *inputs = (split_inputs){in, (size_t)km->n};
+    if (!allow_splits(km, inputs)) {
+        cm_kmesh_free(km), cm_mesh_clear(m), free(*a), free(*b);
+        return -1;
+    }
+    for (int32_t c = 0, splits = 0; c < 3 * km->nt && splits < km->n; c++)
+        if (km->tri[c] >= 0 && km->opp[c] < 0) splits += cm_refine_split(km, c) >= 0;
+    cm_kmesh_set_caps(km, 30.0 / DEG, NULL, NULL);
+    return 0;
+}
+
 /* The polish-scored moves with boundary points that slide (random pairs,
  * boundary edges split first): every kept state is exactly valid, every
  * boundary point lies where its labels say in every geometry (so an undone
@@ -578,15 +605,14 @@ static void test_polish_moves_slide(void)
     int meshes = 0;
     for (int seed = 1; seed <= 24; seed++) {
         double *a, *b;
+        const double *in[2];
+        split_inputs inputs;
         cm_mesh m;
         cm_kmesh km;
-        if (random_kmesh(seed, &a, &b, &m, &km)) continue;
-        const double *in[2] = {a, b};
-        split_inputs inputs = {in, (size_t)km.n};
-        CHECK(allow_splits(&km, &inputs));
-        for (int32_t c = 0, splits = 0; c < 3 * km.nt && splits < km.n; c++)
-            if (km.tri[c] >= 0 && km.opp[c] < 0) splits += cm_refine_split(&km, c) >= 0;
-        cm_kmesh_set_caps(&km, 30.0 / DEG, NULL, NULL);
+        if (sliding_kmesh(seed, in, &inputs, &a, &b, &m, &km)) {
+            CHECK_MSG(0, "seed %d: no kmesh with its boundary edges split", seed);
+            continue;
+        }
         cm_maxmin_slide slide = {NULL, NULL, test_place, &inputs, 0, 0, NULL, NULL};
         double now = cm_kmesh_min_angle(&km);
         cm_pmove_limits limits = cm_pmove_limits_of(&km);
@@ -608,25 +634,6 @@ static void test_polish_moves_slide(void)
     printf("polish moves with slides: %d meshes, %zu boundary points slid\n", meshes, slid);
     CHECK_MSG(meshes == 24, "%d of 24 meshes", meshes);
     CHECK_MSG(slid > 0, "no boundary point slid");
-}
-
-/* The kmesh with boundary points that slide, as test_polish_moves_slide
- * builds it (in: room for the two polygons that inputs points to). 0, or
- * -1 (nothing to free). */
-static int sliding_kmesh(int seed, const double *in[2], split_inputs *inputs, double **a, double **b, cm_mesh *m,
-                         cm_kmesh *km)
-{
-    if (random_kmesh(seed, a, b, m, km)) return -1;
-    in[0] = *a, in[1] = *b;
-    *inputs = (split_inputs){in, (size_t)km->n};
-    if (!allow_splits(km, inputs)) {
-        cm_kmesh_free(km), cm_mesh_clear(m), free(*a), free(*b);
-        return -1;
-    }
-    for (int32_t c = 0, splits = 0; c < 3 * km->nt && splits < km->n; c++)
-        if (km->tri[c] >= 0 && km->opp[c] < 0) splits += cm_refine_split(km, c) >= 0;
-    cm_kmesh_set_caps(km, 30.0 / DEG, NULL, NULL);
-    return 0;
 }
 
 /* Runs of the polish-scored moves that share a memo (cm_pmove_memo: the
@@ -675,16 +682,6 @@ static void test_polish_moves_memo(void)
     printf("polish moves with a memo: %d meshes, %d later runs began with moves undone before\n", meshes, carried);
     CHECK_MSG(meshes == 16, "%d of 16 meshes", meshes);
     CHECK_MSG(carried > 0, "no run began with a move undone before: the memo was not exercised");
-}
-
-/* Boundary labels for cm_remesh_boundary on the input polygons
- * (split_inputs): vertex i is (i, 0) in both. 0, or -1 out of memory. */
-static int input_labels(size_t n, int32_t *edge[2], double *t[2])
-{
-    for (int g = 0; g < 2; g++) edge[g] = malloc(n * sizeof **edge), t[g] = calloc(n, sizeof **t);
-    int ok = edge[0] && edge[1] && t[0] && t[1];
-    for (size_t i = 0; ok && i < n; i++) edge[0][i] = edge[1][i] = (int32_t)i;
-    return ok ? 0 : -1;
 }
 
 /* cm_remesh of a copy of start into out, with boundary splits on inputs
