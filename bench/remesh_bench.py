@@ -63,8 +63,9 @@ CGAL, so machine load hits all alike):
   CGAL     the Steiner vertices CGAL's Delaunay mesher (bench/cgal_single.cc)
            adds to each polygon meshed alone at 25 degrees; St/CGAL is
            compatmesh's count over the larger of them
-  CPU      user + system seconds of the compatmesh process (os.wait4), its
-           peak resident memory (MB), and x CGAL: the CPU time over CGAL's
+  CPU      user + system seconds of the compatmesh process (os.wait4; it
+           runs under /usr/bin/time, which adds about 0.7 ms), its peak
+           resident memory (MB, time's %M), and x CGAL: the CPU time over CGAL's
            for meshing each polygon alone (both processes), a ratio of two
            runs made back to back
   valid    exit code 0 and report.json valid (compatmesh checks every result
@@ -90,8 +91,9 @@ import math
 import os
 import platform
 import re
-import shutil
 import shlex
+import shutil
+import signal
 import statistics
 import subprocess
 import sys
@@ -382,19 +384,25 @@ def compute_bound(cli, files, timeout):
 
 # ---- measured runs -----------------------------------------------------------
 
-def run_measured(cmd, timeout, cwd=None):
+def run_measured(cmd, timeout, cwd=None, peak_rss=False):
     """Runs cmd; returns (exit code or None on timeout, CPU seconds, peak RSS
-    in MB, stdout, stderr). CPU and memory come from os.wait4: this process
-    alone, user + system."""
-    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
-        proc = subprocess.Popen(cmd, stdout=out, stderr=err, stdin=subprocess.DEVNULL, cwd=cwd)
+    in MB or NaN, stdout, stderr). CPU comes from os.wait4, user + system.
+    With peak_rss the command runs under /usr/bin/time, whose %M is the
+    peak (wait4's own would not do: a child holds this Python process's
+    pages until it execs, and the kernel keeps that high-water mark), and
+    the CPU then includes time's own, about 0.7 ms."""
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err, \
+            tempfile.NamedTemporaryFile(mode="r") as peak:
+        wrap = ["/usr/bin/time", "-f", "%M", "-o", peak.name] if peak_rss else []
+        proc = subprocess.Popen(wrap + list(cmd), stdout=out, stderr=err, stdin=subprocess.DEVNULL, cwd=cwd,
+                                start_new_session=True)
         deadline = time.monotonic() + timeout
         while True:
             pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
             if pid:
                 break
             if time.monotonic() > deadline:
-                proc.kill()
+                os.killpg(proc.pid, signal.SIGKILL)
                 pid, status, usage = os.wait4(proc.pid, 0)
                 status = None
                 break
@@ -403,7 +411,9 @@ def run_measured(cmd, timeout, cwd=None):
         out.seek(0)
         err.seek(0)
         code = None if status is None else os.waitstatus_to_exitcode(status)
-        return (code, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024.0,
+        words = peak.read().split()  # "Command exited with non-zero status N" first, if it did
+        rss = int(words[-1]) / 1024.0 if peak_rss and code is not None and words else float("nan")
+        return (code, usage.ru_utime + usage.ru_stime, rss,
                 out.read().decode(errors="replace"), err.read().decode(errors="replace"))
 
 
@@ -414,7 +424,7 @@ def run_compatmesh(cli, pair, mode, workdir, timeout, extra=()):
     cmd = [cli, "triangulate", *pair.files, "--out-dir", out, *extra]
     if mode != "index":  # index is the default for equal counts, also in older builds
         cmd += ["--correspondence", mode]
-    code, cpu, rss, _, err = run_measured(cmd, timeout)
+    code, cpu, rss, _, err = run_measured(cmd, timeout, peak_rss=True)
     result = {"exit": code, "cpu_s": cpu, "rss_mb": rss, "valid": False}
     report_path = os.path.join(out, "report.json")
     if code != 0 or not os.path.exists(report_path):

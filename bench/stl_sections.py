@@ -5,10 +5,12 @@ glyph_outline.h, so the pair corresponds by arc length like the glyph pairs.
 
     pair_names(ns)          the pair names, without reading anything
     write_pairs(dir, ns)    writes them: [(name, [a.xy, b.xy]), ...]
+    write_resampled(dir, name, loops, ns)   any loops so, as name_n<n>
 """
 import gzip
 import os
 import shutil
+from fractions import Fraction
 
 import meshio
 import numpy as np
@@ -102,20 +104,47 @@ def resample_arclength(loop, n):
     return np.column_stack([np.interp(t, s, closed[:, 0]), np.interp(t, s, closed[:, 1])])
 
 
-def crosses(p, q, r, s):
-    """Segments pq and rs meet (touching counts)."""
+def _meet_exactly(p, q, r, s):
+    """Segments pq and rs meet (touching counts), in exact arithmetic."""
+    p, q, r, s = ([Fraction(float(c)) for c in point] for point in (p, q, r, s))
+
     def orient(a, b, c):
-        return np.sign((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
-    return orient(p, q, r) != orient(p, q, s) and orient(r, s, p) != orient(r, s, q)
+        d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+        return (d > 0) - (d < 0)
+
+    def within(a, b, c):  # c, on the line ab, lies on the segment ab
+        return min(a[0], b[0]) <= c[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= c[1] <= max(a[1], b[1])
+    o = orient(p, q, r), orient(p, q, s), orient(r, s, p), orient(r, s, q)
+    if o[0] * o[1] < 0 and o[2] * o[3] < 0:
+        return True
+    return any(x == 0 and within(a, b, c) for x, (a, b, c) in zip(o, ((p, q, r), (p, q, s), (r, s, p), (r, s, q))))
 
 
 def is_simple(xy):
-    """No two non-adjacent edges meet (brute force; n is small here)."""
+    """No two non-adjacent edges meet, touching counting as meeting: every
+    pair of edges whose boxes meet, in doubles with a margin for the
+    rounding; the pairs that margin leaves in doubt (nearly collinear ones,
+    as resampling a straight stretch makes) in exact arithmetic."""
+    xy = np.asarray(xy, dtype=float)
     n = len(xy)
+    p, q = xy, np.roll(xy, -1, axis=0)  # edge i runs from p[i] to q[i]
+
+    def orient(a, b, c):  # the sign, 0 where the rounding could flip it
+        u = (b[..., 0] - a[..., 0]) * (c[..., 1] - a[..., 1])
+        v = (b[..., 1] - a[..., 1]) * (c[..., 0] - a[..., 0])
+        return np.where(np.abs(u - v) > 1e-12 * (np.abs(u) + np.abs(v)), np.sign(u - v), 0)
     for i in range(n):
-        for j in range(i + 2, n - (i == 0)):
-            if crosses(xy[i], xy[(i + 1) % n], xy[j], xy[(j + 1) % n]):
-                return False
+        j = np.arange(i + 2, n - (i == 0))
+        if not len(j):
+            continue
+        o1, o2 = orient(p[i], q[i], p[j]), orient(p[i], q[i], q[j])
+        o3, o4 = orient(p[j], q[j], p[i]), orient(p[j], q[j], q[i])
+        lo, hi = np.minimum(p[j], q[j]), np.maximum(p[j], q[j])
+        near = np.all((np.maximum(lo, np.minimum(p[i], q[i])) <=
+                       np.minimum(hi, np.maximum(p[i], q[i])) + 1e-12 * (1 + np.abs(hi))), axis=1)
+        doubt = near & ~((o1 == o2) & (o1 != 0)) & ~((o3 == o4) & (o3 != 0))
+        if any(_meet_exactly(p[i], q[i], p[k], q[k]) for k in j[doubt]):
+            return False
     return True
 
 
@@ -127,9 +156,34 @@ def pair_names(ns):
     return [pair_name(name, n) for name, *_ in PAIRS for n in ns]
 
 
-def write_pairs(directory, ns):
-    """Writes every section pair at every n; returns (name, files) pairs.
-    A section that resamples to a polygon that is not simple is an error."""
+def write_resampled(directory, name, loops, ns, skip=None):
+    """Writes the loops (one polygon each) resampled to every n as the pair
+    named name_n<n> (files name_n<n>_a.xy, _b.xy, ...); returns (name,
+    files) pairs. A loop that resamples to a polygon that is not simple is
+    an error, or with skip (a function of the pair's name and the message)
+    that pair at that n is left out and skip told."""
+    os.makedirs(directory, exist_ok=True)
+    out = []
+    for n in ns:
+        named, files = "%s_n%d" % (name, n), []
+        for g, loop in enumerate(loops):
+            xy = resample_arclength(loop, n)
+            if not is_simple(xy):
+                message = "%s: polygon %d resampled to %d points is not simple" % (name, g, n)
+                if skip is None:
+                    raise RuntimeError(message)
+                skip(named, message)
+                break
+            files.append(os.path.join(directory, "%s_%s.xy" % (named, "ab"[g])))
+            np.savetxt(files[-1], xy, fmt="%.17g")
+        else:
+            out.append((named, files))
+    return out
+
+
+def write_pairs(directory, ns, skip=None):
+    """Writes every section pair at every n (write_resampled); returns
+    (name, files) pairs."""
     os.makedirs(directory, exist_ok=True)
     models, out = {}, []
     for name, *cuts in PAIRS:
@@ -138,14 +192,5 @@ def write_pairs(directory, ns):
             if model not in models:
                 models[model] = read_stl(model, directory)
             loops.append(outer_loop(section_loops(*models[model], axis, height)))
-        for n in ns:
-            files = []
-            for g, loop in enumerate(loops):
-                xy = resample_arclength(loop, n)
-                path = os.path.join(directory, "%s_%s.xy" % (pair_name(name, n), "ab"[g]))
-                if not is_simple(xy):
-                    raise RuntimeError("%s: section %d resampled to %d points is not simple" % (name, g, n))
-                np.savetxt(path, xy, fmt="%.17g")
-                files.append(path)
-            out.append((pair_name(name, n), files))
+        out += write_resampled(directory, "hold_section_" + name, loops, ns, skip)
     return out

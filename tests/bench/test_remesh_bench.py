@@ -5,6 +5,7 @@ fails."""
 import json
 import math
 import os
+import resource
 import subprocess
 import sys
 
@@ -94,6 +95,18 @@ def bench(tmp_path, *extra):
                           "--out", str(out), "--json", str(raw), *extra],
                          capture_output=True, text=True, timeout=300)
     return run, out, raw
+
+
+def test_peak_memory_is_the_command_s_own():
+    """The peak RSS is the measured program's, not this Python process's,
+    whose pages a child holds until it execs: a program that touches 64 MB
+    peaks above that, /bin/true far below this process's own peak."""
+    _, cpu, small, _, _ = rb.run_measured(["/bin/true"], 10, peak_rss=True)
+    own = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024.0
+    assert own > 20 and small < 8 and cpu >= 0
+    code, _, big, _, _ = rb.run_measured(["/usr/bin/python3", "-c", "b = bytearray(64 << 20)"], 30, peak_rss=True)
+    assert code == 0 and 64 < big < 200
+    assert math.isnan(rb.run_measured(["/bin/true"], 10)[2])
 
 
 def test_tiny_pairs_against_themselves(tmp_path):
