@@ -60,17 +60,23 @@ def family(name):
     return name.split("_n")[0]
 
 
+def slope(points):
+    """Least-squares slope of log y over log x (None without two distinct x)."""
+    pts = [(math.log(x), math.log(y)) for x, y in points if x > 0 and y > 0]
+    if len(pts) < 2:
+        return None
+    mx = sum(x for x, _ in pts) / len(pts)
+    my = sum(y for _, y in pts) / len(pts)
+    sxx = sum((x - mx) ** 2 for x, _ in pts)
+    return sum((x - mx) * (y - my) for x, y in pts) / sxx if sxx > 0 else None
+
+
 def exponents(rows, which):
     out = {}
     for fam in sorted({family(r["name"]) for r in rows}):
-        pts = [(math.log(r["n"]), math.log(max(r[which]["cpu"], 1e-3))) for r in rows if family(r["name"]) == fam]
-        if len(pts) < 2:
-            continue
-        mx = sum(x for x, _ in pts) / len(pts)
-        my = sum(y for _, y in pts) / len(pts)
-        sxx = sum((x - mx) ** 2 for x, _ in pts)
-        if sxx > 0:
-            out[fam] = sum((x - mx) * (y - my) for x, y in pts) / sxx
+        e = slope([(r["n"], max(r[which]["cpu"], 1e-3)) for r in rows if family(r["name"]) == fam])
+        if e is not None:
+            out[fam] = e
     return out
 
 

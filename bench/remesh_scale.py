@@ -26,13 +26,13 @@ Per run: CPU seconds (user + system) and peak resident memory, the output's
 triangles and Steiner vertices, the smallest angle, the CPU per thousand
 output triangles, and the CPU over CGAL's for both polygons. Per mode and
 pair: the exponent of CPU time in the output's triangles and in n (least
-squares on log-log over the sizes, and between neighbouring sizes). A
+squares on log-log over the sizes, partition_scale.slope, and between
+neighbouring sizes). A
 remesher whose time grows near-linearly with its output has an exponent in
 triangles near 1.
 """
 import argparse
 import json
-import math
 import os
 import re
 import sys
@@ -43,18 +43,8 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import stl_sections  # noqa: E402
 from make_results import read_xy  # noqa: E402
+from partition_scale import slope  # noqa: E402
 from remesh_bench import Pair, run_cgal, run_compatmesh  # noqa: E402
-
-
-def slope(points):
-    """Least-squares slope of log y over log x."""
-    pts = [(math.log(x), math.log(y)) for x, y in points if x > 0 and y > 0]
-    if len(pts) < 2:
-        return None
-    mx = sum(x for x, _ in pts) / len(pts)
-    my = sum(y for _, y in pts) / len(pts)
-    sxx = sum((x - mx) ** 2 for x, _ in pts)
-    return sum((x - mx) * (y - my) for x, y in pts) / sxx if sxx > 0 else None
 
 
 def triangles(run):
