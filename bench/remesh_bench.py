@@ -619,6 +619,26 @@ def versus_lines(summaries):
     return lines
 
 
+# The written report: the introduction, the dated sections that earlier
+# runs and their readings left (kept as they are), then this run's.
+FULL_RUN = "\n## Full run ("
+
+
+def kept_sections(path):
+    """The dated sections of the report at path: from its first section
+    to its last run's, which this run replaces ("" for a new report)."""
+    if not os.path.exists(path):
+        return ""
+    with open(path) as f:
+        text = f.read()
+    start, end = text.find("\n## "), text.rfind(FULL_RUN)
+    if end < 0:
+        end = text.find("\n## Summary")
+    if start < 0 or end <= start:
+        return ""
+    return text[start + 1:end + 1]
+
+
 def write_markdown(path, result):
     meta, rows = result["meta"], result["pairs"]
     labels = [b["label"] for b in meta["builds"]]
@@ -632,6 +652,8 @@ def write_markdown(path, result):
              "(`cm_gen_pairs --set bench`). T = min(25, c/2, fan, bound), and edge too in "
              "index mode (boundary edges never split)%s." % (
                  "" if meta["bound"] else " (bound skipped: --no-bound)"), ""]
+    kept = kept_sections(path)
+    lines += ([kept] if kept else []) + ["## Full run (%s)" % meta["date"], ""]
     lines += ["- Date: %s; machine: %s, %d cores; load average %.1f at the start, %.1f at the end "
               "(CPU seconds are measured, not wall time)" % (meta["date"], meta["machine"], meta["cores"],
                                                              meta["load"][0], meta["load"][1]),

@@ -170,3 +170,26 @@ def test_missing_cgal_is_a_usage_error(tmp_path):
                          capture_output=True, text=True, timeout=60)
     assert run.returncode == 2 and "--cgal" in run.stderr and "--no-cgal" in run.stderr
     assert not (tmp_path / "x.md").exists()
+
+
+def test_a_new_run_keeps_the_dated_sections(tmp_path):
+    """The report's dated sections (readings of earlier runs, which the
+    README cites) survive a new run; the last run's own section and
+    tables are replaced, not added to."""
+    meta = {"date": "2026-01-02 03:04 UTC", "machine": "m", "cores": 2, "load": [0.0, 0.0],
+            "command": "remesh_bench.py", "commit": "c", "builds": [{"label": "new", "path": "p", "version": "v"}],
+            "cgal": None, "bound": False, "modes": ["index"]}
+    result = {"meta": meta, "pairs": [], "summary": [], "versus": []}
+    out = tmp_path / "REMESH.md"
+    rb.write_markdown(str(out), result)
+    first = out.read_text()
+    assert first.count("## Full run (2026-01-02 03:04 UTC)") == 1 and "## Affine pairs" not in first
+    dated = "## Affine pairs (2025-12-31)\n\n- read by hand\n\n"
+    at = first.index("## Full run")
+    out.write_text(first[:at] + dated + first[at:])
+    meta["date"] = "2026-02-03 04:05 UTC"
+    rb.write_markdown(str(out), result)
+    second = out.read_text()
+    assert second.count(dated) == 1 and second.index(dated) < second.index("## Full run")
+    assert "2026-01-02" not in second and second.count("## Full run (2026-02-03 04:05 UTC)") == 1
+    assert second.count("## Summary") == 1 and second.startswith("# Remesher benchmark")
