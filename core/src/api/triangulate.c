@@ -1238,20 +1238,55 @@ static void memos_end(cm_result *r)
     r->bounds = NULL, r->conformal = NULL;
 }
 
+/* What every call keeps from its start to its end: the default options
+ * where the caller gave none, and the progress relay. */
+typedef struct call_frame {
+    cm_options defaults, relayed;
+    cm_progress_relay relay;
+} call_frame;
+
+/* The start of a call: a result handle in *result, *options the options
+ * to use (the defaults where NULL, the relay in place of the caller's
+ * progress where auto may run several pairings), checked, and the memos
+ * started. NULL where no handle could be made (*s then says why);
+ * otherwise *s is CM_OK or what the options' check found. */
+static cm_result *call_begin(cm_result **result, const cm_options **options, call_frame *f, cm_status *s)
+{
+    cm_result *r = new_result(result, options, &f->defaults);
+    if (!r) {
+        *s = result ? CM_ERR_NO_MEMORY : CM_ERR_ARGUMENT;
+        return NULL;
+    }
+    *options = relay_progress(*options, &f->relayed, &f->relay);
+    const cm_options *o = *options;
+    *s = CM_OK;
+    if (o->method != CM_METHOD_OVERLAY && o->method != CM_METHOD_PARTITION)
+        *s = cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)o->method);
+    if (*s == CM_OK) *s = check_remesh_options(r, o);
+    if (*s == CM_OK) *s = check_correspondence_options(r, o);
+    memos_start(r, o);
+    return r;
+}
+
+/* The end of a call that ran to status s: *result (whichever run it came
+ * from) told the relay's end, its memos freed, its geometry cleared on
+ * failure and its error closed. */
+static cm_status call_end(cm_result *const *result, const cm_options *o, cm_status s)
+{
+    cm_result *r = *result;
+    s = relay_done(r, o, s);
+    memos_end(r);
+    if (s != CM_OK) cm_result_clear_geometry(r);
+    return cm_error_close(&r->error, s);
+}
+
 cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *counts,
                                   size_t k, const cm_options *options, cm_result **result)
 {
-    cm_options defaults, relayed;
-    cm_progress_relay relay;
-    cm_result *r = new_result(result, &options, &defaults);
-    if (!r) return result ? CM_ERR_NO_MEMORY : CM_ERR_ARGUMENT;
-    if (options->method != CM_METHOD_OVERLAY && options->method != CM_METHOD_PARTITION) {
-        return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
-    }
-    options = relay_progress(options, &relayed, &relay);
-    cm_status s = check_remesh_options(r, options);
-    if (s == CM_OK) s = check_correspondence_options(r, options);
-    memos_start(r, options);
+    call_frame frame;
+    cm_status s;
+    cm_result *r = call_begin(result, &options, &frame, &s);
+    if (!r) return s;
     if (s == CM_OK && options->correspondence != CM_CORRESPOND_INDEX) {
         const polygon_input input = {polygons, counts, k};
         const rescue_input rescue = {run_pairing, &input, 0};
@@ -1261,11 +1296,7 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
         s = run_index_split(r, polygons, counts, k, options);
     else if (s == CM_OK)
         s = run_pipeline(r, polygons, counts, k, NULL, NULL, options);
-    r = *result;
-    s = relay_done(r, options, s);
-    memos_end(r);
-    if (s != CM_OK) cm_result_clear_geometry(r);
-    return cm_error_close(&r->error, s);
+    return call_end(result, options, s);
 }
 
 cm_status cm_triangulate(const double *xy, size_t k, size_t n, const cm_options *options,
@@ -1788,17 +1819,10 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
         free(xy), free(counts);
         return s;
     }
-    cm_options defaults, relayed;
-    cm_progress_relay relay;
-    cm_result *r = new_result(result, &options, &defaults);
-    if (!r) return result ? CM_ERR_NO_MEMORY : CM_ERR_ARGUMENT;
-    options = relay_progress(options, &relayed, &relay);
-    cm_status s = CM_OK;
-    if (options->method != CM_METHOD_OVERLAY && options->method != CM_METHOD_PARTITION)
-        s = cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown method %d", (int)options->method);
-    if (s == CM_OK) s = check_remesh_options(r, options);
-    if (s == CM_OK) s = check_correspondence_options(r, options);
-    memos_start(r, options);
+    call_frame frame;
+    cm_status s;
+    cm_result *r = call_begin(result, &options, &frame, &s);
+    if (!r) return s;
     const loop_input input = {polygons, k};
     const rescue_input rescue = {run_loop_pairing, &input, polygons ? polygons[0].num_loops - 1 : 0};
     if (s == CM_OK && options->correspondence == CM_CORRESPOND_AUTO && one_hole(polygons, k))
@@ -1807,9 +1831,5 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
         s = run_loops_arclength(r, polygons, k, options, LOOP_OUTER, by_ceiling);
     else if (s == CM_OK) s = run_loops(r, polygons, k, NULL, options);
     if (s == CM_OK) s = pairing_rescue(result, options, &rescue);
-    r = *result;
-    s = relay_done(r, options, s);
-    memos_end(r);
-    if (s != CM_OK) cm_result_clear_geometry(r);
-    return cm_error_close(&r->error, s);
+    return call_end(result, options, s);
 }
