@@ -148,8 +148,17 @@ def is_simple(xy):
     return True
 
 
+def sized(name, n):
+    """A pair's name at n points per loop."""
+    return "%s_n%d" % (name, n)
+
+
+# The section pairs' names: held out, as every real section
+PREFIX = "hold_section_"
+
+
 def pair_name(name, n):
-    return "hold_section_%s_n%d" % (name, n)
+    return sized(PREFIX + name, n)
 
 
 def pair_names(ns):
@@ -165,7 +174,7 @@ def write_resampled(directory, name, loops, ns, skip=None):
     os.makedirs(directory, exist_ok=True)
     out = []
     for n in ns:
-        named, files = "%s_n%d" % (name, n), []
+        named, files = sized(name, n), []
         for g, loop in enumerate(loops):
             xy = resample_arclength(loop, n)
             if not is_simple(xy):
@@ -192,5 +201,5 @@ def write_pairs(directory, ns, skip=None):
             if model not in models:
                 models[model] = read_stl(model, directory)
             loops.append(outer_loop(section_loops(*models[model], axis, height)))
-        out += write_resampled(directory, "hold_section_" + name, loops, ns, skip)
+        out += write_resampled(directory, PREFIX + name, loops, ns, skip)
     return out
