@@ -219,12 +219,21 @@ static long trace_forced;
 
 static double trace_cpu(void) { return (double)clock() / CLOCKS_PER_SEC; }
 
-static void trace(const remesher *x, const char *step)
+static void trace_line(const remesher *x, const char *step, double (*angle)(const void *), const void *of,
+                       long steiner)
 {
     double t0 = trace_cpu();
     fprintf(stderr, "cm_trace %d %s %.6f %.9g %ld %ld\n", (int)x->o->remesher, step, t0 - trace_spent,
-            cm_kmesh_min_angle(&x->km) * 180.0 / CM_PI, (long)(x->km.live_v - x->km.n), trace_forced);
+            angle(of) * 180.0 / CM_PI, steiner, trace_forced);
     trace_spent += trace_cpu() - t0;
+}
+
+static double kmesh_angle(const void *km) { return cm_kmesh_min_angle(km); }
+
+/* A step of the remesher's working mesh. */
+static void trace(const remesher *x, const char *step)
+{
+    trace_line(x, step, kmesh_angle, &x->km, (long)(x->km.live_v - x->km.n));
 }
 #define TRACE_FORCED() (trace_forced++)
 #else
@@ -876,7 +885,7 @@ static cm_status remesh_run(remesher *x, const cm_mesh *mesh, size_t n, const do
     if (splits && cm_kmesh_allow_boundary_splits(&x->km, splits->between, splits->ctx,
                                                  (const int32_t *const *)splits->edge, (const double *const *)splits->t))
         return CM_ERR_NO_MEMORY;
-    trace(x, "start");
+    trace(x, x->restarting ? "restart" : "start");
     long removed = x->restarting ? 0 : coarsen(x, 0.0);
     if (removed < 0 || improve_everywhere(x)) return stop_status(x);
     rep->collapses += removed;
@@ -980,6 +989,19 @@ static double mesh_min_angle(const cm_mesh *m)
     return least;
 }
 
+#ifdef CM_REMESH_TRACE
+static double written_angle(const void *m) { return mesh_min_angle(m); }
+
+/* A step of the written result (the joint polish, the polish-scored
+ * moves), whose first nb vertices are its boundary. */
+static void trace_written(const remesher *x, const char *step, const cm_mesh *m, size_t nb)
+{
+    trace_line(x, step, written_angle, m, (long)(m->nv - nb));
+}
+#else
+#define trace_written(x, step, m, nb) ((void)0)
+#endif
+
 /* One restart of the finished (written, polished) mesh, whose first nb
  * vertices are its boundary (whole: no boundary edge is ever split, as
  * for boundary_caps): the CM_RESTART_SHARE most distorted triangles
@@ -1010,7 +1032,9 @@ static int restart(cm_mesh *mesh, double *least, size_t nb, int whole, const cm_
     if (s == CM_OK) s = remesh_run(&z, &start, nb, bcap, o, ceiling_deg, NULL, progress, &again);
     if (s == CM_OK) s = cm_kmesh_write(&z.km, &start);
     if (s == CM_OK) s = polish_jointly(&start, nb, NULL, whole, progress);
+    if (s == CM_OK) trace_written(&z, "joint", &start, nb);
     if (s == CM_OK) s = polish_moves(&z, &start, nb, NULL);
+    if (s == CM_OK) trace_written(&z, "moves", &start, nb);
     double reached = s == CM_OK ? mesh_min_angle(&start) : 0;
     int kept = s == CM_OK && reached > (1 + CM_RESTART_GAIN) * *least;
     if (s == CM_ERR_INTERNAL) s = CM_OK; /* a start the remesher cannot read: the result stands */
@@ -1067,8 +1091,10 @@ static cm_status run_to_restarts(remesher *x, remesher *y, cm_mesh *mesh, size_t
     if (s == CM_OK && splits) s = cm_kmesh_write_labels(&x->km, splits->edge, splits->t);
     if (s == CM_OK) s = cm_kmesh_write(&x->km, mesh);
     if (s == CM_OK) s = polish_jointly(mesh, (size_t)x->km.nb, splits, !splits, progress);
+    if (s == CM_OK) trace_written(x, "joint", mesh, (size_t)x->km.nb);
     int behind = s == CM_OK && beat_deg > 0 && mesh_min_angle(mesh) * 180.0 / CM_PI < CM_REMESH_BEHIND * beat_deg;
     if (s == CM_OK && !behind) s = polish_moves(x, mesh, n, splits);
+    if (s == CM_OK && !behind) trace_written(x, "moves", mesh, (size_t)x->km.nb);
     *least = s == CM_OK ? mesh_min_angle(mesh) : 0;
     rep->polished_deg = *least * 180.0 / CM_PI;
     rep->restart_wanted = s == CM_OK && cm_kmesh_min_share(&x->km) < CM_RESTART_BELOW;
