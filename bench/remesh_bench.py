@@ -67,7 +67,15 @@ CGAL, so machine load hits all alike):
            runs under /usr/bin/time, which adds about 0.7 ms), its peak
            resident memory (MB, time's %M), and x CGAL: the CPU time over CGAL's
            for meshing each polygon alone (both processes), a ratio of two
-           runs made back to back
+           runs made back to back. Both sides pay a process's start-up
+           (about 2 ms each for CGAL's, 4 ms for compatmesh's), which is
+           most of CGAL's time: x in process is the CPU time less
+           compatmesh's start-up (the median CPU of STARTUP_RUNS runs of
+           `compatmesh --version` under /usr/bin/time, per build) over the
+           CPU CGAL's meshing of both polygons takes inside its process
+           (cm_cgal_single's mesh_cpu_s, repeated for CGAL_MIN_CPU seconds);
+           compatmesh's side still holds its input, ceiling, pictures and
+           output, so the ratio errs against it
   valid    exit code 0 and report.json valid (compatmesh checks every result
            exactly before it writes it)
 Summary, per build, mode and group (tuning half, held-out half, bench set,
@@ -111,6 +119,11 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 BOUND_SCRIPT = os.path.join(HERE, "correspondence_bound.py")
 HARD_N = (48, 160)  # as in cm_gen_pairs --set hard
 CGAL_ANGLE = 25.0
+# CGAL's meshing inside its process is timed over repeats that take at
+# least this much CPU (cm_cgal_single's third argument)
+CGAL_MIN_CPU = 0.02
+# compatmesh's start-up: the median of this many runs of --version
+STARTUP_RUNS = 9
 TARGET_CAP = 25.0
 GOOD_SHARE_OF_T = 0.3
 HIGH_SHARE_OF_T = 0.55
@@ -441,17 +454,29 @@ def run_compatmesh(cli, pair, mode, workdir, timeout, extra=()):
 
 
 def run_cgal(cgal, pair, timeout):
-    """Each polygon meshed alone by CGAL at 25 degrees: Steiner counts and
-    the CPU time of both processes together."""
-    counts, cpu = [], 0.0
+    """Each polygon meshed alone by CGAL at 25 degrees: Steiner counts, the
+    CPU time of both processes together, and of both meshings inside their
+    processes (mesh_s, timed over repeats)."""
+    counts, cpu, mesh = [], 0.0, 0.0
     for f in pair.files:
-        code, seconds, _, out, err = run_measured([cgal, f, "%g" % CGAL_ANGLE], timeout)
-        if code != 0:
-            return {"error": "cm_cgal_single %s: %s" % (os.path.basename(f), err.strip() or code)}
-        words = out.split()
-        counts.append(int(words[words.index("steiner") + 1]))
-        cpu += seconds
-    return {"steiner": counts, "cpu_s": cpu}
+        for repeat in (False, True):
+            cmd = [cgal, f, "%g" % CGAL_ANGLE] + (["%g" % CGAL_MIN_CPU] if repeat else [])
+            code, seconds, _, out, err = run_measured(cmd, timeout)
+            if code != 0:
+                return {"error": "cm_cgal_single %s: %s" % (os.path.basename(f), err.strip() or code)}
+            words = out.split()
+            if repeat:
+                mesh += float(words[words.index("mesh_cpu_s") + 1])
+            else:
+                counts.append(int(words[words.index("steiner") + 1]))
+                cpu += seconds
+    return {"steiner": counts, "cpu_s": cpu, "mesh_s": mesh}
+
+
+def startup_cpu(cli):
+    """compatmesh's start-up: the median CPU of `cli --version` runs, timed
+    as its triangulate runs are (under /usr/bin/time)."""
+    return statistics.median(run_measured([cli, "--version"], 60, peak_rss=True)[1] for _ in range(STARTUP_RUNS))
 
 
 def measure_pair(pair, builds, modes, cgal, workdir, timeout, flip):
@@ -475,8 +500,9 @@ def ratio(a, b):
     return a / b if a is not None and b not in (None, 0) else None
 
 
-def derive(run, target, cgal):
-    """Adds the ratios of one run to T and to CGAL."""
+def derive(run, target, cgal, startup):
+    """Adds the ratios of one run to T and to CGAL (startup: its build's
+    start-up CPU)."""
     if not run["valid"]:
         return run
     run["to_T"] = ratio(run["min_angle_deg"], target)
@@ -485,6 +511,7 @@ def derive(run, target, cgal):
     if cgal and "error" not in cgal:
         run["steiner_to_cgal"] = ratio(run["steiner"], max(cgal["steiner"]))
         run["cpu_to_cgal"] = ratio(run["cpu_s"], cgal["cpu_s"])
+        run["in_process_to_cgal"] = ratio(run["cpu_s"] - startup, cgal.get("mesh_s"))
     return run
 
 
@@ -527,6 +554,7 @@ def summarize(rows, label, mode, group):
             "median_steiner_to_cgal": median(x.get("steiner_to_cgal") for x in ok),
             "median_cpu_s": median(x["cpu_s"] for x in ok),
             "median_cpu_to_cgal": median(x.get("cpu_to_cgal") for x in ok),
+            "median_in_process_to_cgal": median(x.get("in_process_to_cgal") for x in ok),
             "median_under20_pct": median(max(x["under20_pct"]) for x in ok)}
 
 
@@ -560,8 +588,8 @@ def pair_table(rows, mode, labels):
     for label in labels:
         p = "" if len(labels) == 1 else label + " "
         head += [p + "angle", p + "/T", p + "map cap", p + "<20 %", p + "Steiner", p + "St/CGAL", p + "CPU s",
-                 p + "x CGAL", p + "MB", p + "valid"]
-    head.insert(len(head) - 10 * len(labels), "CGAL alone")
+                 p + "x CGAL", p + "x in process", p + "MB", p + "valid"]
+    head.insert(len(head) - 11 * len(labels), "CGAL alone")
     if len(labels) == 2:
         head += ["angle new/base", "Steiner new/base", "CPU new/base"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
@@ -576,12 +604,13 @@ def pair_table(rows, mode, labels):
         for label in labels:
             x = r["runs"][mode][label]
             if not x["valid"]:
-                cells += ["-"] * 9 + ["**no**: %s" % x.get("error", "report not valid")]
+                cells += ["-"] * 10 + ["**no**: %s" % x.get("error", "report not valid")]
                 continue
             cells += [angle(x["min_angle_deg"]), num(x.get("to_T")), angle(x.get("map_cap_deg")),
                       " / ".join("%.0f" % s for s in x["under20_pct"]), str(x["steiner"]),
                       num(x.get("steiner_to_cgal"), "%.1f"), num(x["cpu_s"], "%.3g"),
-                      num(x.get("cpu_to_cgal"), "%.0f"), num(x["rss_mb"], "%.0f"), "yes"]
+                      num(x.get("cpu_to_cgal"), "%.0f"), num(x.get("in_process_to_cgal"), "%.0f"),
+                      num(x["rss_mb"], "%.0f"), "yes"]
         if len(labels) == 2:
             v = r["versus"].get(mode) or {}
             cells += [num(v.get("angle")), num(v.get("steiner")), num(v.get("cpu"))]
@@ -594,18 +623,20 @@ def summary_lines(summaries):
     lines = ["| build | mode | pairs | invalid | median angle | median /T | min /T | median map cap /T | "
              "median angle / map cap | >= 0.3 T | >= 0.55 T | " +
              " | ".join(">= " + a.replace(",", ", ") for a in aims) + " | "
-             "median Steiner | median St/CGAL | median CPU s | median x CGAL | median <20 % |",
-             "|" + "---|" * (16 + len(aims))]
+             "median Steiner | median St/CGAL | median CPU s | median x CGAL | median x CGAL in process | "
+             "median <20 % |",
+             "|" + "---|" * (17 + len(aims))]
     for s in summaries:
         valid = s["pairs"] - s["invalid"]
-        lines.append("| %s | %s: %s | %d | %d | %s | %s | %s | %s | %s | %d of %d | %d of %d | %s | %s | %s | %s | %s | %s |" % (
+        lines.append("| %s | %s: %s | %d | %d | %s | %s | %s | %s | %s | %d of %d | %d of %d | %s | %s | %s | %s | %s | %s | %s |" % (
             s["build"], s["mode"], dict(GROUPS)[s["group"]], s["pairs"], s["invalid"],
             angle(s["median_angle"]), num(s["median_to_T"]), num(s["min_to_T"]),
             num(s["median_map_cap_to_T"]), num(s["median_angle_to_map_cap"], "%.3f"),
             s["at_least_0.3T"], valid, s["at_least_0.55T"], valid,
             " | ".join("%d of %d" % (s["at_" + a], valid) for a in aims), num(s["median_steiner"], "%.0f"),
             num(s["median_steiner_to_cgal"], "%.1f"), num(s["median_cpu_s"], "%.3g"),
-            num(s["median_cpu_to_cgal"], "%.0f"), num(s["median_under20_pct"], "%.0f")))
+            num(s["median_cpu_to_cgal"], "%.0f"), num(s["median_in_process_to_cgal"], "%.0f"),
+            num(s["median_under20_pct"], "%.0f")))
     return lines
 
 
@@ -659,7 +690,8 @@ def write_markdown(path, result):
                                                              meta["load"][0], meta["load"][1]),
               "- Command: `%s` (bench at commit %s)" % (meta["command"], meta["commit"])]
     for b in meta["builds"]:
-        lines.append("- %s: `%s` (%s)" % (b["label"], b["path"], b["version"]))
+        lines.append("- %s: `%s` (%s; start-up %s ms of CPU)" % (b["label"], b["path"], b["version"],
+                                                                   num(1e3 * b["startup_s"], "%.1f")))
     lines.append("- CGAL alone: %s" % (meta["cgal"] or "not run (--no-cgal)"))
     lines += ["", "## Summary", ""] + summary_lines(result["summary"])
     if result.get("versus"):
@@ -750,6 +782,7 @@ def main(argv):
         builds["baseline"] = (args.baseline, shlex.split(args.baseline_args))
     cache = BoundCache(args.bound_cache)
     load = os.getloadavg()[0]
+    startups = {label: startup_cpu(cli) for label, (cli, _) in builds.items()}
     work = tempfile.mkdtemp(prefix="remesh_bench_")
     try:
         pairs = generate(args.gen_pairs, work, args.other)
@@ -767,8 +800,8 @@ def main(argv):
             row = static_row(pair, args, cache)
             row.update(measure_pair(pair, builds, args.modes, args.cgal, work, args.timeout, i % 2 == 1))
             for mode, runs in row["runs"].items():
-                for run in runs.values():
-                    derive(run, target_of(row, mode), row["cgal"])
+                for label, run in runs.items():
+                    derive(run, target_of(row, mode), row["cgal"], startups[label])
                 if args.baseline:
                     row.setdefault("versus", {})[mode] = versus(runs["new"], runs["baseline"])
             if not row["runs"]:  # a bench-set pair when only auto is asked for
@@ -790,8 +823,8 @@ def main(argv):
                        "machine": machine(), "cores": os.cpu_count(),
                        "command": " ".join(["remesh_bench.py"] + argv), "commit": source_commit(),
                        "load": [load, os.getloadavg()[0]],
-                       "builds": [{"label": k, "path": " ".join([v[0], *v[1]]), "version": version(v[0])}
-                                  for k, v in builds.items()],
+                       "builds": [{"label": k, "path": " ".join([v[0], *v[1]]), "version": version(v[0]),
+                                   "startup_s": startups[k]} for k, v in builds.items()],
                        "cgal": args.cgal, "bound": not args.no_bound, "modes": args.modes},
               "pairs": rows, "summary": summaries, "versus": vs}
     write_markdown(args.out, result)

@@ -177,7 +177,7 @@ def test_a_new_run_keeps_the_dated_sections(tmp_path):
     README cites) survive a new run; the last run's own section and
     tables are replaced, not added to."""
     meta = {"date": "2026-01-02 03:04 UTC", "machine": "m", "cores": 2, "load": [0.0, 0.0],
-            "command": "remesh_bench.py", "commit": "c", "builds": [{"label": "new", "path": "p", "version": "v"}],
+            "command": "remesh_bench.py", "commit": "c", "builds": [{"label": "new", "path": "p", "version": "v", "startup_s": 0.004}],
             "cgal": None, "bound": False, "modes": ["index"]}
     result = {"meta": meta, "pairs": [], "summary": [], "versus": []}
     out = tmp_path / "REMESH.md"
@@ -193,3 +193,23 @@ def test_a_new_run_keeps_the_dated_sections(tmp_path):
     assert second.count(dated) == 1 and second.index(dated) < second.index("## Full run")
     assert "2026-01-02" not in second and second.count("## Full run (2026-02-03 04:05 UTC)") == 1
     assert second.count("## Summary") == 1 and second.startswith("# Remesher benchmark")
+
+
+def test_cgal_inside_its_process_and_compatmesh_less_its_start_up(tmp_path):
+    """The in-process ratio: CGAL's meshing timed inside its process (the
+    repeated run's mesh_cpu_s, both polygons), compatmesh's CPU less its
+    start-up; a fake cm_cgal_single says which run is which."""
+    fake = tmp_path / "cgal"
+    fake.write_text("#!/bin/sh\n[ $# -eq 3 ] && t=0.0005 || t=0.002\n"
+                    "echo steiner 3 boundary_steiner 1 triangles 9 min_angle_deg 25.1 mesh_cpu_s $t repeats 1\n")
+    fake.chmod(0o755)
+    files = [tmp_path / "a.xy", tmp_path / "b.xy"]
+    for f in files:
+        f.write_text("0 0\n1 0\n0 1\n")
+    pair = rb.Pair("hold_p", "hard", [str(f) for f in files])
+    cgal = rb.run_cgal(str(fake), pair, 10)
+    assert cgal["steiner"] == [3, 3] and cgal["mesh_s"] == pytest.approx(0.001) and cgal["cpu_s"] >= 0
+    run = rb.derive({"valid": True, "min_angle_deg": 10.0, "steiner": 6, "cpu_s": 0.104}, 20.0, cgal, 0.004)
+    assert run["in_process_to_cgal"] == pytest.approx(100) and run["to_T"] == 0.5
+    startup = rb.startup_cpu(CLI)
+    assert 0 < startup < 0.5
