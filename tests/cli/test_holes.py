@@ -269,6 +269,42 @@ def test_loops_of_different_sizes_pair_by_default(cm, tmp_path):
     assert min(m["min_angle_deg"] for m in report["meshes"]) >= 10
 
 
+# A comb (five teeth, notched between them) with two bolt holes in its
+# back, and a disc with two holes: the correspondence must squeeze the
+# teeth into the disc's rim.
+COMB_WITH_TWO_HOLES = [[(0, 0), (10, 0), (10, 8), (9, 8), (9, 2), (8, 8), (7, 8), (7, 2), (6, 8), (5, 8), (5, 2),
+                        (4, 8), (3, 8), (3, 2), (2, 8), (0, 8)],
+                       circle(3, 1, 0.4, 8, -1), circle(7, 1, 0.4, 8, -1)]
+DISC_WITH_TWO_HOLES = [circle(5, 4, 5, 60), circle(3, 4, 0.8, 10, -1), circle(7, 4, 0.8, 10, -1)]
+
+
+def test_auto_rescues_the_outer_loops_with_two_holes(cm, tmp_path):
+    """Polygons with two holes or more take auto's rescues of the outer
+    loops (the annulus pairing is for one hole): the comb against the disc
+    ends its first pairing below 0.6 of the aim of 25 degrees, so a second
+    pairing is built and remeshed (22.5 degrees kept). Expected: valid, two
+    holes, at least two pairings built and remeshed, every input vertex of
+    each file among its mesh's boundary vertices, one triangle list,
+    V - E + F = 1 - 2, and both meshes at the floor min(15, c/3) = 15."""
+    (tmp_path / "comb.xy").write_text(xy_text(COMB_WITH_TWO_HOLES))
+    (tmp_path / "disc.xy").write_text(xy_text(DISC_WITH_TWO_HOLES))
+    result = cm("triangulate", "comb.xy", "disc.xy", "--out-dir", "out")
+    assert result.returncode == 0, result.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert report["valid"] and report["holes"] == 2 and report["correspondence"] == "auto"
+    assert report["pairings_built"] >= 2 and report["pairings_remeshed"] >= 2
+    faces = None
+    for name, loops in (("comb", COMB_WITH_TWO_HOLES), ("disc", DISC_WITH_TWO_HOLES)):
+        vertices, triangles = read_off(tmp_path / "out" / f"{name}.off")
+        boundary = set(vertices[:report["n"]])
+        assert all(p in boundary for loop in loops for p in loop)
+        assert faces is None or faces == triangles
+        faces = triangles
+    edges = {tuple(sorted(e)) for a, b, c in faces for e in ((a, b), (b, c), (c, a))}
+    assert len(vertices) - len(edges) + len(faces) == -1
+    assert min(m["min_angle_deg"] for m in report["meshes"]) >= 15
+
+
 def test_bad_hole_outside(cm, tmp_path):
     # line 1 is the '>' header, the outer loop lines 2-17, '>' on 18, the hole from line 19
     bad(cm, tmp_path, SQUARE_WITH_HOLE, xy_text([circle(0, 0, 1, 16), circle(3, 0, 0.3, 8, -1)]),
