@@ -93,6 +93,21 @@ def check_output(out, names, inputs, holes):
     return report
 
 
+def check_loops_kept(out, report, inputs, holes):
+    """Where the loops got the other inputs' points (auto): every input
+    vertex of each file among its mesh's boundary vertices, one triangle
+    list, V - E + F = 1 - holes."""
+    faces = None
+    for name, loops in inputs:
+        vertices, triangles = read_off(out / f"{name}.off")
+        boundary = set(vertices[:report["n"]])
+        assert all(p in boundary for loop in loops for p in loop)
+        assert faces is None or faces == triangles
+        faces = triangles
+    edges = {tuple(sorted(e)) for a, b, c in faces for e in ((a, b), (b, c), (c, a))}
+    assert len(vertices) - len(edges) + len(faces) == 1 - holes
+
+
 @pytest.mark.parametrize("fmt", ["xy", "obj", "obj-edges"])
 def test_square_and_disc(cm, tmp_path, fmt):
     ext = "xy" if fmt == "xy" else "obj"
@@ -257,15 +272,7 @@ def test_loops_of_different_sizes_pair_by_default(cm, tmp_path):
     assert result.returncode == 0, result.stderr
     report = json.loads((tmp_path / "out" / "report.json").read_text())
     assert report["holes"] == 1 and report["n"] >= 23 + 11
-    faces = None
-    for name, loops in (("a", SQUARE_WITH_HOLE), ("b", other)):
-        vertices, triangles = read_off(tmp_path / "out" / f"{name}.off")
-        boundary = set(vertices[:report["n"]])
-        assert all(p in boundary for loop in loops for p in loop)
-        assert faces is None or faces == triangles
-        faces = triangles
-    edges = {tuple(sorted(e)) for a, b, c in faces for e in ((a, b), (b, c), (c, a))}
-    assert len(vertices) - len(edges) + len(faces) == 0
+    check_loops_kept(tmp_path / "out", report, (("a", SQUARE_WITH_HOLE), ("b", other)), 1)
     assert min(m["min_angle_deg"] for m in report["meshes"]) >= 10
 
 
@@ -293,15 +300,7 @@ def test_auto_rescues_the_outer_loops_with_two_holes(cm, tmp_path):
     report = json.loads((tmp_path / "out" / "report.json").read_text())
     assert report["valid"] and report["holes"] == 2 and report["correspondence"] == "auto"
     assert report["pairings_built"] >= 2 and report["pairings_remeshed"] >= 2
-    faces = None
-    for name, loops in (("comb", COMB_WITH_TWO_HOLES), ("disc", DISC_WITH_TWO_HOLES)):
-        vertices, triangles = read_off(tmp_path / "out" / f"{name}.off")
-        boundary = set(vertices[:report["n"]])
-        assert all(p in boundary for loop in loops for p in loop)
-        assert faces is None or faces == triangles
-        faces = triangles
-    edges = {tuple(sorted(e)) for a, b, c in faces for e in ((a, b), (b, c), (c, a))}
-    assert len(vertices) - len(edges) + len(faces) == -1
+    check_loops_kept(tmp_path / "out", report, (("comb", COMB_WITH_TWO_HOLES), ("disc", DISC_WITH_TWO_HOLES)), 2)
     assert min(m["min_angle_deg"] for m in report["meshes"]) >= 15
 
 
