@@ -61,6 +61,8 @@ STAGE_OF = {"start": "pre", "cleanup": "clean", "map": "clean", "refine": "refin
             "step": "forced", "step_none": "forced", "end": "late", "joint": "joint", "moves": "moves"}
 STAGES = ("pre", "clean", "refine", "polish", "forced", "late", "joint", "moves", "rescue", "restart", "pairings",
           "post")
+# The stage of every line of a run after the first, by the run's kind
+RUN_STAGE = {"rescue": "rescue", "restart": "restart", "pairing": "pairings"}
 # A restart's result is kept when its smallest angle is this share higher
 # (CM_RESTART_GAIN, core/src/remesh/remesh.c)
 RESTART_GAIN = 0.02
@@ -123,7 +125,7 @@ def analyse(trace, cpu, cgal_cpu=None):
     kinds = runs_of(trace)
     prev_t = 0.0
     for (_, step, t, *_), kind in zip(trace, kinds):
-        stages[STAGE_OF[step] if kind == "first" else kind + ("s" if kind == "pairing" else "")] += t - prev_t
+        stages[STAGE_OF[step] if kind == "first" else RUN_STAGE[kind]] += t - prev_t
         prev_t = t
     stages["post"] += max(0.0, cpu - prev_t)
     curve = curve_of(trace, kinds)

@@ -207,7 +207,8 @@ def test_cgal_inside_its_process_and_compatmesh_less_its_start_up(tmp_path):
     for f in files:
         f.write_text("0 0\n1 0\n0 1\n")
     pair = rb.Pair("hold_p", "hard", [str(f) for f in files])
-    cgal = rb.run_cgal(str(fake), pair, 10)
+    assert "mesh_s" not in rb.run_cgal(str(fake), pair, 10)
+    cgal = rb.run_cgal(str(fake), pair, 10, in_process=True)
     assert cgal["steiner"] == [3, 3] and cgal["mesh_s"] == pytest.approx(0.001) and cgal["cpu_s"] >= 0
     run = rb.derive({"valid": True, "min_angle_deg": 10.0, "steiner": 6, "cpu_s": 0.104}, 20.0, cgal, 0.004)
     assert run["in_process_to_cgal"] == pytest.approx(100) and run["to_T"] == 0.5
