@@ -148,7 +148,7 @@ static int write_extras(triangulate_run *run, cli_error *error)
     const char *path;
     report_info info = {run->tri.result, run->args->tri.method_name, run->args->tri.options.remesh,
                         run->tri.options.correspondence, run->tri.options.max_edge,
-                        run->tri.seconds_total, run->args->tri.inputs,
+                        run->tri.options.time_limit, run->tri.seconds_total, run->args->tri.inputs,
                         (const char *const *)run->final_paths, run->args->tri.options.ceiling};
     int code = stage_file(run, "report.json", &path, error);
     if (code == CLI_EXIT_OK) code = write_report(path, &info, error);

@@ -165,6 +165,20 @@ static int parse_degrees(const char *command, const char *option, const char *te
     return CLI_EXIT_OK;
 }
 
+/* A finite number above 0; the message names the option and what it needs. */
+static int parse_positive(const char *command, const char *option, const char *needs, const char *text,
+                          double *value, cli_error *error)
+{
+    char *end;
+    double parsed = strtod(text, &end);
+    if (end == text || *end != '\0' || !(parsed > 0 && parsed < HUGE_VAL)) {
+        cli_error_set(error, "%s: --%s needs %s, got '%s'", command, option, needs, text);
+        return CLI_EXIT_USAGE;
+    }
+    *value = parsed;
+    return CLI_EXIT_OK;
+}
+
 int triangulation_option(triangulation_args *args, const char *command, int key,
                          const char *value, cli_error *error)
 {
@@ -207,16 +221,10 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
         return set_correspondence(args, command, value, error);
     case OPTION_PIN:
         return add_pin(args, command, value, error);
-    case OPTION_MAX_EDGE: {
-        char *end;
-        double parsed = strtod(value, &end);
-        if (end == value || *end != '\0' || !(parsed > 0 && parsed < HUGE_VAL)) {
-            cli_error_set(error, "%s: --max-edge needs a positive length, got '%s'", command, value);
-            return CLI_EXIT_USAGE;
-        }
-        args->options.max_edge = parsed;
-        return CLI_EXIT_OK;
-    }
+    case OPTION_MAX_EDGE:
+        return parse_positive(command, "max-edge", "a positive length", value, &args->options.max_edge, error);
+    case OPTION_TIME_LIMIT:
+        return parse_positive(command, "time-limit", "positive seconds", value, &args->options.time_limit, error);
     case OPTION_PIN_CORNERS:
         return parse_degrees(command, "pin-corners", value, 180, &args->options.pin_corners_deg, error);
     case OPTION_MAX_INPUT_BYTES:

@@ -28,6 +28,7 @@ enum {
     OPTION_PIN_CORNERS,
     OPTION_MAX_EDGE,
     OPTION_NO_CEILING,
+    OPTION_TIME_LIMIT,
     OPTION_PROGRESS,
     OPTION_QUIET,
     OPTION_TRIANGULATION_END /* a command's own long options start here */
@@ -123,7 +124,14 @@ enum {
     {"no-ceiling", OPTION_NO_CEILING, NULL,                                   \
      "skip the ceiling (the certified largest smallest\n"                    \
      "angle any compatible triangulation can have; a few\n"                  \
-     "ms) and let the remesher aim at the target alone"}
+     "ms) and let the remesher aim at the target alone"},                     \
+    {"time-limit", OPTION_TIME_LIMIT, "SECONDS",                              \
+     "stop remeshing once the run has used this much CPU\n"                  \
+     "time and keep the best result reached (valid and\n"                    \
+     "checked as always; report.json's time_limit_reached\n"                 \
+     "says so); the stages before it always run whole, and\n"                \
+     "the result depends on the machine's speed; default:\n"                 \
+     "no limit"}
 
 #define TRIANGULATION_PROGRESS_SPEC                                           \
     {"progress", OPTION_PROGRESS, NULL,                                       \

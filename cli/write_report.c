@@ -131,6 +131,7 @@ static json_t *head(tree *t, const cm_stats *stats)
     set_count(t, root, "holes_moved", stats->holes_moved);
     set_count(t, root, "pairings_built", stats->pairings_built);
     set_count(t, root, "pairings_remeshed", stats->pairings_remeshed);
+    set_bool(t, root, "time_limit_reached", stats->time_limit_reached);
     return root;
 }
 
@@ -218,6 +219,7 @@ int write_report(const char *path, const report_info *info, cli_error *error)
     set_text(&t, root, "correspondence", correspondence[info->correspondence]);
     set_text(&t, root, "correspondence_choice", cm_correspondence_choice_name(stats->correspondence_choice));
     if (info->max_edge > 0) set_real(&t, root, "max_edge", info->max_edge);
+    if (info->time_limit > 0) set_real(&t, root, "time_limit", info->time_limit);
     set_bool(&t, root, "reversed_input", stats->reversed_input);
     set_count(&t, root, "fallback_count", stats->fallback_count);
     set_count(&t, root, "steiner_before_remesh", stats->steiner_before_remesh);

@@ -14,6 +14,7 @@ typedef struct report_info {
     int remesh;                /* 1 if the result was remeshed */
     cm_correspondence correspondence;
     double max_edge;           /* > 0: boundary edges split to this length */
+    double time_limit;         /* > 0: the remesher's CPU time limit (s) */
     double seconds_total;      /* wall time of the whole computation */
     const char *const *inputs; /* k input paths, as given */
     const char *const *outputs;/* k mesh paths, as they are after commit */

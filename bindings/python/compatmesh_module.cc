@@ -346,6 +346,7 @@ const std::vector<OptionSetter> &option_setters()
        }},
       CM_NUMBER_OPTION(pin_corners_deg),
       CM_NUMBER_OPTION(max_edge),
+      CM_NUMBER_OPTION(time_limit),
   };
   return setters;
 }
@@ -456,6 +457,7 @@ py::dict stats_of(const cm_result *result)
   stats["holes_moved"] = s->holes_moved;
   stats["pairings_built"] = s->pairings_built;
   stats["pairings_remeshed"] = s->pairings_remeshed;
+  stats["time_limit_reached"] = bool(s->time_limit_reached);
   stats["triangles"] = s->triangles;
   stats["reversed_input"] = bool(s->reversed_input);
   stats["fallback_count"] = s->fallback_count;
@@ -1541,7 +1543,7 @@ Common attributes (arrays are numpy arrays):
                     "vertex_halfedge, face_halfedge; h ^ 1 is the opposite of h")
       .def_readonly("stats", &Result::stats,
                     "dict: the fields of cm_stats (n, k, vertices, steiner, holes, bridges, holes_moved, pairings_built, "
-                    "pairings_remeshed, triangles, "
+                    "pairings_remeshed, time_limit_reached, triangles, "
                     "reversed_input, fallback_count, steiner_before_remesh, remesh_iterations, remesh_aim_deg, "
                     "ceiling_deg, corner_fan_cap_deg, correspondence_bound_deg, modulus_distortion, "
                     "distortion_quad, correspondence_bound_before_deg (None unless auto chose the starts), "
@@ -1805,6 +1807,9 @@ options: keyword arguments named like the fields of the C struct cm_options,
     max_edge        split the boundary edges compatibly until none is longer
                     than this in any polygon (each keeps its vertices; also
                     with "index"); 0 (default): off
+    time_limit      CPU seconds after which the remesher stops at its next
+                    safe point and the best result reached is returned
+                    (stats["time_limit_reached"]); 0 (default): no limit
   and planarity_tolerance: how far a 3D point may lie from the plane, as a
     fraction of the polygon's bounding-box diagonal (default 1e-5).
 Returns a Result: faces (m x 3 int32), vertices (= points; a list of k

@@ -56,10 +56,11 @@ const char *correspondence_name(cm_correspondence c)
          : c == CM_CORRESPOND_AUTO ? "auto" : "similarity";
 }
 
-std::string degrees(double value)
+// A number for the log: angles with two decimals.
+std::string text_of(double value, const char *format = "%.2f")
 {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f", value);
+  std::snprintf(buf, sizeof buf, format, value);
   return buf;
 }
 
@@ -99,6 +100,7 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
   options.pins = pins.empty() ? nullptr : pins.data();
   options.num_pins = pins.size() / 2;
   options.max_edge = settings.max_edge;
+  options.time_limit = settings.time_limit;
   compatmesh::ResultPtr result;
   try {
     result = compatmesh::triangulate(polygons, options, progress.as_function(0, 0.95));
@@ -166,20 +168,23 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
                         std::to_string(nt) + " triangles" +
                         (stats->holes ? ", " + std::to_string(stats->holes) + (stats->holes == 1 ? " hole" : " holes") : std::string()));
   // The layers' own (their float points), which the user measures.
-  outcome.log.push_back("smallest angle: " + degrees(float_min_angle_deg(outcome.layers[0].xyz, triangles)) +
+  outcome.log.push_back("smallest angle: " + text_of(float_min_angle_deg(outcome.layers[0].xyz, triangles)) +
                         " deg in '" + first_name + "', " +
-                        degrees(float_min_angle_deg(outcome.layers[1].xyz, triangles)) + " deg in '" + second_name +
+                        text_of(float_min_angle_deg(outcome.layers[1].xyz, triangles)) + " deg in '" + second_name +
                         "'");
   if (stats->holes_moved > 0)
     outcome.log.push_back("holes paired by position: " + std::to_string(stats->holes_moved) + " of '" + second_name +
                           "' pair with a hole listed at another place in '" + first_name + "'");
+  if (stats->time_limit_reached)
+    outcome.log.push_back("time limit of " + text_of(settings.time_limit, "%g") +
+                          " s reached: remeshing stopped early, the best result so far kept");
   if (stats->fallback_count > 0)
     outcome.log.push_back("overlay fallback used " + std::to_string(stats->fallback_count) + " times");
   std::string ceiling = "no compatible triangulation of this pair can have a smallest angle above " +
-                        degrees(stats->ceiling_deg) + " degrees (corner fan " + degrees(stats->corner_fan_cap_deg) +
-                        ", correspondence bound " + degrees(stats->correspondence_bound_deg);
+                        text_of(stats->ceiling_deg) + " degrees (corner fan " + text_of(stats->corner_fan_cap_deg) +
+                        ", correspondence bound " + text_of(stats->correspondence_bound_deg);
   if (stats->correspondence_bound_before_deg > 0)
-    ceiling += "; before choosing the starts " + degrees(stats->correspondence_bound_before_deg);
+    ceiling += "; before choosing the starts " + text_of(stats->correspondence_bound_before_deg);
   outcome.log.push_back(ceiling + ")");
   return outcome;
 }

@@ -26,6 +26,7 @@ struct PairSettings {
   // second (the layers' own vertex numbers); empty: none.
   std::string pins;
   double max_edge = 0;  // > 0: boundary edges split to at most this length
+  double time_limit = 0;  // > 0: CPU seconds after which remeshing stops (cm_options.time_limit)
 };
 
 struct PairOutcome {

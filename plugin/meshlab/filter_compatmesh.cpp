@@ -124,6 +124,10 @@ void FilterCompatMesh::initParameterSet(QAction *action, MeshDocument &md, RichP
                              "0: off. Otherwise the boundary edges are split compatibly (the same number "
                              "of points on corresponding edges, every input vertex kept) until none is "
                              "longer than this in either layer: an element size along the boundary."));
+      par.addParam(RichFloat("TimeLimit", 0.f, "Time limit (s)",
+                             "0: none. Otherwise remeshing stops once the filter has used this many CPU "
+                             "seconds and the best result reached is kept (valid, checked as always; the "
+                             "log says so). The stages before remeshing always run whole."));
       break;
     case FP_COMPATIBLE_SWEEP:
       par.addParam(RichInt("Sections", 5, "Sections", "Number of intermediate sections, at least 1."));
@@ -167,6 +171,8 @@ bool FilterCompatMesh::applyFilter(QAction *action, MeshDocument &md, const Rich
       settings.pins = par.getString("Pins").toStdString();
       settings.max_edge = par.getFloat("MaxEdge");
       if (!(settings.max_edge >= 0)) return fail("MaxEdge: expected 0 (off) or a positive length");
+      settings.time_limit = par.getFloat("TimeLimit");
+      if (!(settings.time_limit >= 0)) return fail("TimeLimit: expected 0 (none) or positive seconds");
       auto outcome = compatmesh_plugin::compatible_pair(first->cm, second->cm, first_name, second_name,
                                                         settings, progress);
       layers = std::move(outcome.layers);

@@ -12,7 +12,7 @@ import pytest
 
 from polygons import (BOUNDARY, EDGES, KITE, POOR, SQUARE, STEINER, WORST, caption_lines, check_pictures,
                       drawn_paths, leftovers, paths_of, orientation, read_vertex_text, signed_area,
-                      snapshot, star, write_xy)
+                      snapshot, spiral_pair, star, write_xy)
 
 def strict_json(path):
     def reject(constant):
@@ -181,6 +181,48 @@ def test_no_preview(cm, tmp_path):
     for name in ("a.off", "b.off"):
         assert (tmp_path / "out" / name).read_bytes() == (tmp_path / "with" / name).read_bytes()
     assert result.stdout.splitlines()[-1] == "wrote out/report.json"
+
+
+def test_time_limit(cm, tmp_path):
+    """--time-limit: a limit already spent when the remesher starts leaves
+    the construction's cleanup only (no refinement round, no vertex added)
+    and says so; the result is as valid as any. A limit that is never
+    reached changes nothing, byte for byte."""
+    a, b = star(40, seed=3), star(40, seed=4, scale=3.0)
+    write_xy(tmp_path / "a.xy", a)
+    write_xy(tmp_path / "b.xy", b)
+    inputs = {"a.xy": a, "b.xy": b}
+    full = check_success(tmp_path, cm("triangulate", "a.xy", "b.xy", "-o", "full"), inputs, out="full")
+    assert full["time_limit_reached"] is False and "time_limit" not in full
+    assert full["remesh_iterations"] > 0, "this pair refines without a limit"
+    spent = check_success(tmp_path, cm("triangulate", "a.xy", "b.xy", "-o", "spent", "--time-limit", "1e-6"),
+                          inputs, out="spent")
+    assert spent["time_limit_reached"] is True and spent["time_limit"] == 1e-6
+    assert spent["remesh_iterations"] == 0
+    assert spent["steiner"] <= spent["steiner_before_remesh"]
+    ample = check_success(tmp_path, cm("triangulate", "a.xy", "b.xy", "-o", "ample", "--time-limit", "1e6"),
+                          inputs, out="ample")
+    assert ample["time_limit_reached"] is False
+    for name in ("a.off", "b.off"):
+        assert (tmp_path / "ample" / name).read_bytes() == (tmp_path / "full" / name).read_bytes()
+
+
+def test_time_limit_ends_auto_s_pairings(cm, tmp_path):
+    """Auto remeshes a second pairing for a spiral against a bar; with its
+    time spent it keeps the first and adds nothing to it."""
+    spiral, bar = spiral_pair()
+    write_xy(tmp_path / "s.xy", spiral)
+    write_xy(tmp_path / "b.xy", bar)
+    args = ("triangulate", "s.xy", "b.xy", "--correspondence", "auto", "--no-preview")
+    result = cm(*args, "-o", "full")
+    assert result.returncode == 0, result.stderr
+    full = json.loads((tmp_path / "full" / "report.json").read_text())
+    assert full["pairings_remeshed"] > 1
+    result = cm(*args, "-o", "spent", "--time-limit", "1e-6")
+    assert result.returncode == 0, result.stderr
+    spent = json.loads((tmp_path / "spent" / "report.json").read_text())
+    assert spent["valid"] is True and spent["time_limit_reached"] is True
+    assert spent["pairings_remeshed"] == 1 and spent["remesh_iterations"] == 0
 
 
 @pytest.mark.parametrize("fmt", ["off", "obj", "ply"])

@@ -305,6 +305,22 @@ def case_max_edge(w):
     print("MaxEdge 0.15: %d boundary vertices, longest boundary edge within the bound" % len(loop))
 
 
+def case_time_limit(w):
+    # TimeLimit spent before remeshing starts: the filter still writes a
+    # valid pair (the construction, cleaned), and the log says the limit
+    # was reached.
+    a = star(16, 1.0, 0.6)
+    b = [(x + 0.3, y, 1.5) for x, y, _ in star(22, 1.2, 0.9, phase=0.2, scale=(1.0, 0.6))]
+    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
+    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
+    script = script_with(w, "pair.mlx", [('value="0" name="TimeLimit"', 'value="1e-06" name="TimeLimit"')])
+    code, log = run(w, ["a.ply", "b.ply"], script, {2: "out_a.ply", 3: "out_b.ply"})
+    expect_ok(code, log)
+    assert "s reached: remeshing stopped early" in log, log
+    pa, pb, ta = check_pair(w, "out_a.ply", "out_b.ply", a, b, 0.0)
+    print("TimeLimit 1e-6: %d vertices, %d triangles, the limit logged" % (len(pa), len(ta)))
+
+
 def case_obj_polylines(w):
     # OBJ polylines with 18 and 15 vertices, the second in a tilted plane
     # and stored clockwise (the core walks it the other way round), paired by

@@ -3,6 +3,7 @@ import numpy as np
 import pytest
 
 import compatmesh
+from conftest import signed_areas
 
 
 def test_unknown_keyword_is_a_type_error(octagon, star):
@@ -60,10 +61,20 @@ def test_numeric_options_reach_the_core(octagon, star):
     compatmesh.triangulate([octagon, star], min_angle_deg=20, k_split=1, area_every=2, max_iterations=5)
     for name, value in [("min_angle_deg", 70), ("k_split", -1), ("max_steiner", -5), ("area_every", -1),
                         ("max_iterations", -1), ("smoothing", 9), ("method", 99),
-                        ("remesher", 7)]:
+                        ("remesher", 7), ("time_limit", -1.0)]:
         with pytest.raises(ValueError, match=name) as info:
             compatmesh.triangulate([octagon, star], **{name: value})
         assert info.value.status == "invalid argument"
+
+
+def test_time_limit_reaches_the_core(octagon, star):
+    """A limit spent before the remesher starts: no refinement round, and
+    the stats say so; without one nothing is said."""
+    free = compatmesh.triangulate([octagon, star])
+    assert free.stats["time_limit_reached"] is False and free.stats["remesh_iterations"] > 0
+    spent = compatmesh.triangulate([octagon, star], time_limit=1e-6)
+    assert spent.stats["time_limit_reached"] is True and spent.stats["remesh_iterations"] == 0
+    assert all(signed_areas(v, spent.faces).min() > 0 for v in spent.vertices)
 
 
 def test_numeric_options_check_types(octagon, star):

@@ -258,6 +258,18 @@ typedef struct cm_options {
     int ceiling;
 
     cm_remesher remesher; /* default CM_REMESHER_GREEDY */
+
+    /* Time limit: > 0 caps the CPU seconds of the call (of its thread,
+     * from the call's start) the remesher may run into. Once they are
+     * spent it stops at its next safe point (between refinement rounds,
+     * forced-move rounds, polish iterations and moves; before a restart,
+     * a map-aware rescue or another of auto's pairings) and the call
+     * returns the best result reached, valid and checked as always, with
+     * cm_stats.time_limit_reached set. Validation, construction, ceiling
+     * and check always run whole, and a stage runs on to its next safe
+     * point, so a call may take a little longer. The result then depends
+     * on the machine's speed. 0 (default): no limit. */
+    double time_limit;
 } cm_options;
 
 /* Fills *options with the defaults. Always call it first, then change the
@@ -378,6 +390,8 @@ typedef struct cm_stats {
      * cap is no higher than the best result so far. */
     size_t pairings_built;
     size_t pairings_remeshed;
+    /* 1 where cm_options.time_limit stopped the remesher early. */
+    int time_limit_reached;
 } cm_stats;
 
 /* Quality of one geometry of the result. */

@@ -10,6 +10,7 @@
 #include "api/quality.h"
 #include "api/result.h"
 #include "base/clock.h"
+#include "base/deadline.h"
 #include "base/progress.h"
 #include "geom/angle.h"
 #include "construct/holes.h"
@@ -56,6 +57,8 @@ static cm_status check_remesh_options(cm_result *r, const cm_options *o)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "max_iterations must be >= 0, got %d", o->max_iterations);
     if (o->restarts < 0)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "restarts must be >= 0, got %d", o->restarts);
+    if (!(o->time_limit >= 0 && o->time_limit < HUGE_VAL))
+        return cm_fail(&r->error, CM_ERR_ARGUMENT, "time_limit must be >= 0 seconds, got %g", o->time_limit);
     if ((unsigned)o->remesher > (unsigned)CM_REMESHER_MAP)
         return cm_fail(&r->error, CM_ERR_ARGUMENT, "unknown remesher %d", (int)o->remesher);
     if ((unsigned)o->smoothing > (unsigned)CM_SMOOTH_COMBINED)
@@ -883,19 +886,20 @@ static cm_result *new_result(cm_result **result, const cm_options **options, cm_
  * default aim of 25. */
 #define CM_PAIRING_RESCUE_SHARE 0.6
 
-/* Is r, made by auto and remeshed by o, below `share` of its aim? */
+/* Is r, made by auto and remeshed by o, below `share` of its aim (and
+ * the call's time not up)? */
 static int rescue_wanted(const cm_result *r, const cm_options *o, double share)
 {
     return o->correspondence == CM_CORRESPOND_AUTO && o->remesh &&
-           r->greedy_angle_deg < share * r->stats.remesh_aim_deg;
+           r->greedy_angle_deg < share * r->stats.remesh_aim_deg && !cm_deadline_passed();
 }
 
 /* Is r, made by auto and remeshed by o, below `share` of its aim after the
- * polish (before any restart)? */
+ * polish (before any restart), and the call's time not up? */
 static int short_of(const cm_result *r, const cm_options *o, double share)
 {
     return o->correspondence == CM_CORRESPOND_AUTO && o->remesh &&
-           r->polished_angle_deg < share * r->stats.remesh_aim_deg;
+           r->polished_angle_deg < share * r->stats.remesh_aim_deg && !cm_deadline_passed();
 }
 
 /* A result for a rescue's run, sharing r's memos (the caps and the
@@ -1024,7 +1028,8 @@ static cm_status rescue_restart(cm_result **result, const cm_options *o, rescue_
     cm_remesh_resume *resume = (*result)->resume;
     (*result)->resume = NULL;
     cm_result *again;
-    if (!pairing || !(o->restarts > 0 && (*result)->restart_wanted) || !(again = rescue_result(*result, o))) {
+    if (!pairing || !(o->restarts > 0 && (*result)->restart_wanted) || cm_deadline_passed() ||
+        !(again = rescue_result(*result, o))) {
         cm_result_free_resume(resume);
         return CM_OK;
     }
@@ -1243,6 +1248,7 @@ static void memos_end(cm_result *r)
 typedef struct call_frame {
     cm_options defaults, relayed;
     cm_progress_relay relay;
+    cm_deadline outer; /* the deadline in force before the call */
 } call_frame;
 
 /* The start of a call: a result handle in *result, *options the options
@@ -1265,15 +1271,17 @@ static cm_result *call_begin(cm_result **result, const cm_options **options, cal
     if (*s == CM_OK) *s = check_remesh_options(r, o);
     if (*s == CM_OK) *s = check_correspondence_options(r, o);
     memos_start(r, o);
+    f->outer = cm_deadline_begin(*s == CM_OK ? o->time_limit : 0);
     return r;
 }
 
 /* The end of a call that ran to status s: *result (whichever run it came
  * from) told the relay's end, its memos freed, its geometry cleared on
  * failure and its error closed. */
-static cm_status call_end(cm_result *const *result, const cm_options *o, cm_status s)
+static cm_status call_end(cm_result *const *result, const cm_options *o, call_frame *f, cm_status s)
 {
     cm_result *r = *result;
+    r->stats.time_limit_reached = cm_deadline_end(f->outer);
     s = relay_done(r, o, s);
     memos_end(r);
     if (s != CM_OK) cm_result_clear_geometry(r);
@@ -1296,7 +1304,7 @@ cm_status cm_triangulate_polygons(const double *const *polygons, const size_t *c
         s = run_index_split(r, polygons, counts, k, options);
     else if (s == CM_OK)
         s = run_pipeline(r, polygons, counts, k, NULL, NULL, options);
-    return call_end(result, options, s);
+    return call_end(result, options, &frame, s);
 }
 
 cm_status cm_triangulate(const double *xy, size_t k, size_t n, const cm_options *options,
@@ -1831,5 +1839,5 @@ cm_status cm_triangulate_loops(const cm_loops *polygons, size_t k, const cm_opti
         s = run_loops_arclength(r, polygons, k, options, LOOP_OUTER, by_ceiling);
     else if (s == CM_OK) s = run_loops(r, polygons, k, NULL, options);
     if (s == CM_OK) s = pairing_rescue(result, options, &rescue);
-    return call_end(result, options, s);
+    return call_end(result, options, &frame, s);
 }

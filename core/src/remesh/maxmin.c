@@ -33,6 +33,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/deadline.h"
 #include "geom/angle.h"
 #include "geom/predicates.h"
 
@@ -206,7 +207,7 @@ static int progress(void *instance, const lbfgsfloatval_t *x, const lbfgsfloatva
 {
     (void)x, (void)g, (void)fx, (void)xnorm, (void)gnorm, (void)step, (void)n, (void)k, (void)ls;
     const soft *s = instance;
-    return s->best >= s->enough || cm_progress_check(s->progress);
+    return s->best >= s->enough || cm_progress_check(s->progress) || cm_deadline_passed();
 }
 
 /* v as a variable of s: two values for a Steiner vertex, one (its arc

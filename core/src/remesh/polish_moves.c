@@ -35,6 +35,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "base/deadline.h"
 #include "remesh/collapse.h"
 #include "remesh/flip.h"
 #include "remesh/maprefine.h"
@@ -443,7 +444,7 @@ static int try_move(mover *x, enum pmove kind, int32_t c, double least)
 
 static int tries_left(const mover *x, long tries, long idle)
 {
-    return tries < x->limits->tries && idle < x->limits->idle;
+    return tries < x->limits->tries && idle < x->limits->idle && !cm_deadline_passed();
 }
 
 long cm_polish_moves(cm_kmesh *km, const cm_pmove_limits *limits, long steiner_left, cm_maxmin_slide *slide,

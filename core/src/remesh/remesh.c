@@ -81,6 +81,7 @@
 #include "remesh/restart.h"
 #include "remesh/smooth.h"
 #include "base/clock.h"
+#include "base/deadline.h"
 #include "base/keymap.h"
 #include "geom/angle.h"
 #ifdef CM_REMESH_TRACE
@@ -545,7 +546,7 @@ static cm_status refine(remesher *x, size_t n, cm_remesh_report *rep)
     int32_t *cand = NULL;
     while (cm_kmesh_min_slack(km) < 0 && added < budget && since_best < stall_limit(x) &&
            idle < CM_IDLE_ROUNDS && attempts < 4 * budget + 100 &&
-           (x->o->max_iterations <= 0 || rep->iterations < (size_t)x->o->max_iterations)) {
+           (x->o->max_iterations <= 0 || rep->iterations < (size_t)x->o->max_iterations) && !cm_deadline_passed()) {
         long ks = round_size(x), want = 4 * ks + 8;
         if (ks > budget - added) ks = budget - added;
         int32_t *more = realloc(cand, (size_t)want * 3 * sizeof *cand);
@@ -731,7 +732,8 @@ static cm_status step_out(remesher *x, size_t n, int32_t window, long max_tries)
     cm_keymap_clear(&f->at);
     f->entries.n = f->region.n = 0;
     long tries = 0;
-    for (long round = 0; round < stall_limit(x) && cm_kmesh_min_slack(km) < 0 && tries < max_tries; round++) {
+    for (long round = 0; round < stall_limit(x) && cm_kmesh_min_slack(km) < 0 && tries < max_tries && !cm_deadline_passed();
+         round++) {
         if (cm_progress_poll(x->progress, CM_STAGE_REMESH, 1.0)) return CM_ERR_CANCELLED;
         int32_t nw = cm_heap_smallest(&km->tq, window, 0.0, worst, work);
         int gained = 0;
@@ -1071,7 +1073,8 @@ static cm_status run_to_restarts(remesher *x, remesher *y, cm_mesh *mesh, size_t
      * sliver its local moves cannot reach (a slivered result also makes
      * the sweep's tetrahedra fail); the map-aware remesher starts the
      * same construction differently. The better result is kept. */
-    if (s == CM_OK && o->remesher == CM_REMESHER_GREEDY && rep->min_angle_deg < CM_RESCUE_SHARE * rep->target_deg) {
+    if (s == CM_OK && o->remesher == CM_REMESHER_GREEDY && rep->min_angle_deg < CM_RESCUE_SHARE * rep->target_deg &&
+        !cm_deadline_passed()) {
         cm_remesh_report again = {0};
         s = remesh_run(y, mesh, n, bcap, &map, ceiling_deg, splits, progress, &again);
         if (s == CM_OK && again.min_angle_deg > rep->min_angle_deg) {
@@ -1195,7 +1198,7 @@ cm_status cm_remesh(cm_mesh *mesh, size_t n, const cm_options *o, double ceiling
      * most distorted (the boundary, and with it the labels just written,
      * stays as it is). */
     if (written) mesh->loop_start = written;
-    for (int i = 0; s == CM_OK && rep->restart_wanted && i < o->restarts; i++) {
+    for (int i = 0; s == CM_OK && rep->restart_wanted && i < o->restarts && !cm_deadline_passed(); i++) {
         int r = restart(mesh, &least, nb, !splits, o, ceiling_deg, progress, rep);
         if (r < 0) s = (cm_status)-r;
         if (r <= 0) break;
