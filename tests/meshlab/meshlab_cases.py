@@ -268,15 +268,21 @@ def expect_error(code, log, message, workdir, outputs):
 
 # ---- cases ------------------------------------------------------------------
 
-def case_ply_polylines(w):
-    # Closed polylines (PLY edge elements) with 16 and 22 vertices, in
-    # parallel planes: the default correspondence (auto) pairs them by arc
-    # length, every input vertex kept; the conformal correspondence allows
-    # the higher ceiling and is the one kept (the log says which).
+def star_polylines(w):
+    """Closed polylines (PLY edge elements) of 16 and 22 vertices in
+    parallel planes, written to a.ply and b.ply; returns their points."""
     a = star(16, 1.0, 0.6)
     b = [(x + 0.3, y, 1.5) for x, y, _ in star(22, 1.2, 0.9, phase=0.2, scale=(1.0, 0.6))]
     write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
     write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
+    return a, b
+
+
+def case_ply_polylines(w):
+    # The star polylines: the default correspondence (auto) pairs them by arc
+    # length, every input vertex kept; the conformal correspondence allows
+    # the higher ceiling and is the one kept (the log says which).
+    a, b = star_polylines(w)
     code, log = run(w, ["a.ply", "b.ply"], os.path.join(DOCS, "pair.mlx"), {2: "out_a.ply", 3: "out_b.ply"})
     expect_ok(code, log)
     assert "correspondence: auto, made: conformal (16 and 22 input vertices" in log, log
@@ -289,10 +295,7 @@ def case_max_edge(w):
     # MaxEdge splits the boundary compatibly: no boundary edge longer than
     # it in either layer, every input vertex kept, the added points on the
     # input polylines.
-    a = star(16, 1.0, 0.6)
-    b = [(x + 0.3, y, 1.5) for x, y, _ in star(22, 1.2, 0.9, phase=0.2, scale=(1.0, 0.6))]
-    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
-    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
+    a, b = star_polylines(w)
     script = script_with(w, "pair.mlx", [('value="0" name="MaxEdge"', 'value="0.15" name="MaxEdge"')])
     code, log = run(w, ["a.ply", "b.ply"], script, {2: "out_a.ply", 3: "out_b.ply"})
     expect_ok(code, log)
@@ -309,10 +312,7 @@ def case_time_limit(w):
     # TimeLimit spent before remeshing starts: the filter still writes a
     # valid pair (the construction, cleaned), and the log says the limit
     # was reached.
-    a = star(16, 1.0, 0.6)
-    b = [(x + 0.3, y, 1.5) for x, y, _ in star(22, 1.2, 0.9, phase=0.2, scale=(1.0, 0.6))]
-    write_ply(os.path.join(w, "a.ply"), a, edges=loop_edges(len(a)))
-    write_ply(os.path.join(w, "b.ply"), b, edges=loop_edges(len(b)))
+    a, b = star_polylines(w)
     script = script_with(w, "pair.mlx", [('value="0" name="TimeLimit"', 'value="1e-06" name="TimeLimit"')])
     code, log = run(w, ["a.ply", "b.ply"], script, {2: "out_a.ply", 3: "out_b.ply"})
     expect_ok(code, log)
