@@ -63,9 +63,21 @@ STAGES = ("pre", "clean", "refine", "polish", "forced", "late", "joint", "moves"
           "post")
 # The stage of every line of a run after the first, by the run's kind
 RUN_STAGE = {"rescue": "rescue", "restart": "restart", "pairing": "pairings"}
+
+
+def library_constant(name, source=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "core", "src",
+                                                "remesh", "remesh.c")):
+    """A `#define NAME value` of the library's source, read where it is set."""
+    with open(source) as f:
+        for line in f:
+            words = line.split()
+            if words[:2] == ["#define", name]:
+                return float(words[2])
+    raise LookupError(f"{name} is not defined in {source}")
+
+
 # A restart's result is kept when its smallest angle is this share higher
-# (CM_RESTART_GAIN, core/src/remesh/remesh.c)
-RESTART_GAIN = 0.02
+RESTART_GAIN = library_constant("CM_RESTART_GAIN")
 # --cgal: the budgets, in multiples of CGAL's CPU meshing each polygon alone
 BUDGETS = (5, 10, 20, 40, 80, 160)
 

@@ -53,7 +53,8 @@ def pairs(tmp_path):
     return listing, expected
 
 
-@pytest.mark.parametrize("options", [["--format", "obj", "--min-angle", "22"], ["--no-preview"]])
+@pytest.mark.parametrize("options", [["--format", "obj", "--min-angle", "22"], ["--no-preview"],
+                                     ["--no-preview", "--time-limit", "1e-6"]])
 def test_batch_writes_what_triangulate_writes(cm, tmp_path, pairs, options):
     listing, expected = pairs
     result = cm("batch", listing, "--out-dir", tmp_path / "out", "--jobs", "2", *options)
@@ -82,8 +83,10 @@ def test_batch_writes_what_triangulate_writes(cm, tmp_path, pairs, options):
                 f"{folder}/{name}"
         batch_report = strict_json(tmp_path / "out" / folder / "report.json")
         single_report = strict_json(alone / "report.json")
-        for key in ("n", "k", "steiner", "triangles", "remesh_aim_deg"):
+        for key in ("n", "k", "steiner", "triangles", "remesh_aim_deg", "time_limit_reached"):
             assert batch_report[key] == single_report[key], key
+        # a limit spent before remeshing starts stops every job there
+        assert batch_report["time_limit_reached"] == ("--time-limit" in options)
 
 
 def test_batch_json_reads_back(cm, tmp_path, pairs):

@@ -886,20 +886,24 @@ static cm_result *new_result(cm_result **result, const cm_options **options, cm_
  * default aim of 25. */
 #define CM_PAIRING_RESCUE_SHARE 0.6
 
-/* Is r, made by auto and remeshed by o, below `share` of its aim (and
- * the call's time not up)? */
-static int rescue_wanted(const cm_result *r, const cm_options *o, double share)
+/* Is r, made by auto and remeshed by o, with its smallest angle `angle_deg`
+ * below `share` of its aim, and the call's time not up? */
+static int below_share(const cm_result *r, const cm_options *o, double angle_deg, double share)
 {
-    return o->correspondence == CM_CORRESPOND_AUTO && o->remesh &&
-           r->greedy_angle_deg < share * r->stats.remesh_aim_deg && !cm_deadline_passed();
+    return o->correspondence == CM_CORRESPOND_AUTO && o->remesh && angle_deg < share * r->stats.remesh_aim_deg &&
+           !cm_deadline_passed();
 }
 
-/* Is r, made by auto and remeshed by o, below `share` of its aim after the
- * polish (before any restart), and the call's time not up? */
+/* ... after the greedy remesher? */
+static int rescue_wanted(const cm_result *r, const cm_options *o, double share)
+{
+    return below_share(r, o, r->greedy_angle_deg, share);
+}
+
+/* ... after the polish (before any restart)? */
 static int short_of(const cm_result *r, const cm_options *o, double share)
 {
-    return o->correspondence == CM_CORRESPOND_AUTO && o->remesh &&
-           r->polished_angle_deg < share * r->stats.remesh_aim_deg && !cm_deadline_passed();
+    return below_share(r, o, r->polished_angle_deg, share);
 }
 
 /* A result for a rescue's run, sharing r's memos (the caps and the
