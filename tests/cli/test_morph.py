@@ -99,6 +99,18 @@ def test_three_inputs_pass_through_the_middle_one(cm, tmp_path):
     assert [(x, y) for x, y, _ in middle[:len(b)]] == [tuple(p) for p in b]
 
 
+def test_time_limit_reaches_the_triangulation(cm, tmp_path):
+    """The morph's triangulation takes --time-limit: spent before remeshing
+    starts, the frames come from the construction, cleaned, and are as
+    valid; the report says the limit was reached."""
+    write_pair(tmp_path, twisted_pair())
+    result = cm("morph", "a.xy", "b.xy", "--frames", 4, "-o", "out", "--time-limit", "1e-6")
+    assert result.returncode == 0, result.stderr
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert report["time_limit_reached"] is True
+    assert [frame["inverted"] for frame in report["frames"]] == [0] * 4
+
+
 @pytest.mark.parametrize("args, code, words", [
     (("--frames", "1"), 2, "--frames '1'"),
     (("--frames", "x"), 2, "--frames 'x'"),
