@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <math.h>
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -151,32 +152,28 @@ static int parse_int(const char *command, const char *option, const char *text, 
     return code;
 }
 
-/* Degrees in (0, high); the message names the option. */
-static int parse_degrees(const char *command, const char *option, const char *text, double high,
-                         double *value, cli_error *error)
+/* A number in (0, high) (high HUGE_VAL: any finite one above 0); the
+ * message names the option and what it needs. */
+static int parse_above_zero(const char *command, const char *option, const char *needs, double high,
+                            const char *text, double *value, cli_error *error)
 {
     char *end;
     double parsed = strtod(text, &end);
     if (end == text || *end != '\0' || !(parsed > 0 && parsed < high)) {
-        cli_error_set(error, "%s: --%s needs degrees in (0, %g), got '%s'", command, option, high, text);
+        cli_error_set(error, "%s: --%s needs %s, got '%s'", command, option, needs, text);
         return CLI_EXIT_USAGE;
     }
     *value = parsed;
     return CLI_EXIT_OK;
 }
 
-/* A finite number above 0; the message names the option and what it needs. */
-static int parse_positive(const char *command, const char *option, const char *needs, const char *text,
-                          double *value, cli_error *error)
+/* Degrees in (0, high). */
+static int parse_degrees(const char *command, const char *option, const char *text, double high,
+                         double *value, cli_error *error)
 {
-    char *end;
-    double parsed = strtod(text, &end);
-    if (end == text || *end != '\0' || !(parsed > 0 && parsed < HUGE_VAL)) {
-        cli_error_set(error, "%s: --%s needs %s, got '%s'", command, option, needs, text);
-        return CLI_EXIT_USAGE;
-    }
-    *value = parsed;
-    return CLI_EXIT_OK;
+    char needs[48];
+    snprintf(needs, sizeof needs, "degrees in (0, %g)", high);
+    return parse_above_zero(command, option, needs, high, text, value, error);
 }
 
 int triangulation_option(triangulation_args *args, const char *command, int key,
@@ -222,9 +219,11 @@ int triangulation_option(triangulation_args *args, const char *command, int key,
     case OPTION_PIN:
         return add_pin(args, command, value, error);
     case OPTION_MAX_EDGE:
-        return parse_positive(command, "max-edge", "a positive length", value, &args->options.max_edge, error);
+        return parse_above_zero(command, "max-edge", "a positive length", HUGE_VAL, value, &args->options.max_edge,
+                                error);
     case OPTION_TIME_LIMIT:
-        return parse_positive(command, "time-limit", "positive seconds", value, &args->options.time_limit, error);
+        return parse_above_zero(command, "time-limit", "positive seconds", HUGE_VAL, value,
+                                &args->options.time_limit, error);
     case OPTION_PIN_CORNERS:
         return parse_degrees(command, "pin-corners", value, 180, &args->options.pin_corners_deg, error);
     case OPTION_MAX_INPUT_BYTES:
