@@ -127,7 +127,7 @@ enum {
      "ms) and let the remesher aim at the target alone"},                     \
     {"time-limit", OPTION_TIME_LIMIT, "SECONDS",                              \
      "stop remeshing once the run has used this much CPU\n"                  \
-     "time and keep the best result reached (valid and\n"                    \
+     "time and keep the result reached (valid and\n"                         \
      "checked as always; report.json's time_limit_reached\n"                 \
      "says so); the stages before it always run whole, and\n"                \
      "the result depends on the machine's speed; default:\n"                 \

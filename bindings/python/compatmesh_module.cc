@@ -1808,7 +1808,7 @@ options: keyword arguments named like the fields of the C struct cm_options,
                     than this in any polygon (each keeps its vertices; also
                     with "index"); 0 (default): off
     time_limit      CPU seconds after which the remesher stops at its next
-                    safe point and the best result reached is returned
+                    safe point and the result reached is returned
                     (stats["time_limit_reached"]); 0 (default): no limit
   and planarity_tolerance: how far a 3D point may lie from the plane, as a
     fraction of the polygon's bounding-box diagonal (default 1e-5).

@@ -177,7 +177,7 @@ PairOutcome compatible_pair(const CMeshO &first, const CMeshO &second,
                           "' pair with a hole listed at another place in '" + first_name + "'");
   if (stats->time_limit_reached)
     outcome.log.push_back("time limit of " + text_of(settings.time_limit, "%g") +
-                          " s reached: remeshing stopped early, the best result so far kept");
+                          " s reached: remeshing stopped early, the result reached kept");
   if (stats->fallback_count > 0)
     outcome.log.push_back("overlay fallback used " + std::to_string(stats->fallback_count) + " times");
   std::string ceiling = "no compatible triangulation of this pair can have a smallest angle above " +

@@ -126,7 +126,7 @@ void FilterCompatMesh::initParameterSet(QAction *action, MeshDocument &md, RichP
                              "longer than this in either layer: an element size along the boundary."));
       par.addParam(RichFloat("TimeLimit", 0.f, "Time limit (s)",
                              "0: none. Otherwise remeshing stops once the filter has used this many CPU "
-                             "seconds and the best result reached is kept (valid, checked as always; the "
+                             "seconds and the result reached is kept (valid, checked as always; the "
                              "log says so). The stages before remeshing always run whole."));
       break;
     case FP_COMPATIBLE_SWEEP:

@@ -264,7 +264,7 @@ typedef struct cm_options {
      * spent it stops at its next safe point (between refinement rounds,
      * forced-move rounds, polish iterations and moves; before a restart,
      * a map-aware rescue or another of auto's pairings) and the call
-     * returns the best result reached, valid and checked as always, with
+     * returns the result reached, valid and checked as always, with
      * cm_stats.time_limit_reached set. Validation, construction, ceiling
      * and check always run whole, and a stage runs on to its next safe
      * point, so a call may take a little longer. The result then depends
