@@ -732,8 +732,8 @@ static cm_status step_out(remesher *x, size_t n, int32_t window, long max_tries)
     cm_keymap_clear(&f->at);
     f->entries.n = f->region.n = 0;
     long tries = 0;
-    for (long round = 0; round < stall_limit(x) && cm_kmesh_min_slack(km) < 0 && tries < max_tries && !cm_deadline_passed();
-         round++) {
+    for (long round = 0;
+         round < stall_limit(x) && cm_kmesh_min_slack(km) < 0 && tries < max_tries && !cm_deadline_passed(); round++) {
         if (cm_progress_poll(x->progress, CM_STAGE_REMESH, 1.0)) return CM_ERR_CANCELLED;
         int32_t nw = cm_heap_smallest(&km->tq, window, 0.0, worst, work);
         int gained = 0;
