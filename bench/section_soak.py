@@ -22,12 +22,21 @@ pair, holes included), Steiner vertices, CPU seconds (user + system).
 
 usage: /usr/bin/python3 bench/section_soak.py COMPATMESH [--heights K]
            [--max-vertices N] [--jobs J] [--timeout S] [--only REGEX]
-           [--json FILE] [--markdown FILE] [--work DIR] [--in-space]
+           [--json FILE] [--markdown FILE] [--work DIR] [--in-space] [--cad]
 
 --in-space writes each section as x y z points in its cut plane (x = h,
 y = h or z = h), as MeshLab saves a section, instead of the plane's two
 coordinates: the command line then fits each section's plane, places the
 pair with aligned frames and writes the meshes in space.
+
+--cad takes, instead of the STL models, the CAD models OpenCASCADE ships
+(occt-misc: occ/*.brep, step/*.step, iges/*.iges), each named by its file
+name: Gmsh's Python API reads one (as it is, else with its faces sewn into
+solids), meshes its surfaces at 1/30 of its bounding box's diagonal (a
+section has a few hundred vertices at most) into an STL file in the work
+directory, which is cut and paired as above. A model Gmsh cannot read,
+without a solid, or meshed the same as one before (a copy) is set aside
+with its reason.
 
 Exit status 0 when no run failed (refusals with a clear message are not
 failures), 1 otherwise.
@@ -51,11 +60,13 @@ import stl_sections  # noqa: E402
 from make_results import corner_angles  # noqa: E402
 
 MODEL_GLOBS = ["/usr/share/doc/gmsh-doc/**/*.stl.gz", "/usr/share/opencascade/data/stl/*.stl"]
+CAD_GLOBS = ["/usr/share/opencascade/data/%s" % g for g in ("occ/*.brep", "step/*.step", "iges/*.iges")]
+CAD_SIZE = 1 / 30  # --cad: the mesh size, of the model's bounding box diagonal
 
 
-def models():
+def models(globs=MODEL_GLOBS):
     found = []
-    for pattern in MODEL_GLOBS:
+    for pattern in globs:
         found += sorted(glob.glob(pattern, recursive=True))
     return found
 
@@ -63,6 +74,41 @@ def models():
 def model_name(path):
     base = os.path.basename(path)
     return re.sub(r"\.stl(\.gz)?$", "", base).replace("_", "-")
+
+
+def tessellate(path, workdir):
+    """(STL file, None) of a CAD model's surfaces meshed by Gmsh at CAD_SIZE
+    of its diagonal, read as it is or else with its faces sewn into solids;
+    (None, why) when neither reading holds a solid."""
+    import gmsh  # here: importing it resets the handling of Ctrl-C
+    stl, why = os.path.join(workdir, os.path.basename(path) + ".stl"), []
+    for sew in (0, 1):
+        gmsh.initialize(readConfigFiles=False)
+        try:
+            gmsh.option.setNumber("General.Terminal", 0)
+            gmsh.option.setNumber("Geometry.OCCSewFaces", sew)
+            gmsh.option.setNumber("Geometry.OCCMakeSolids", sew)
+            sys.stdout.flush()
+            null, saved = os.open(os.devnull, os.O_WRONLY), os.dup(1)
+            os.dup2(null, 1)  # OCC's IGES reader prints its counts on standard output
+            try:
+                gmsh.open(path)
+            finally:
+                os.dup2(saved, 1)
+                os.close(null), os.close(saved)
+            if not gmsh.model.getEntities(3):
+                why.append("no solid")
+                continue
+            box = gmsh.model.getBoundingBox(-1, -1)
+            gmsh.option.setNumber("Mesh.MeshSizeMax", CAD_SIZE * np.linalg.norm(np.subtract(box[3:], box[:3])))
+            gmsh.model.mesh.generate(2)
+            gmsh.write(stl)
+            return stl, None
+        except Exception as e:
+            why.append("Gmsh: %s" % (str(e) or "an error without a message"))
+        finally:
+            gmsh.finalize()
+    return None, "; ".join("%s: %s" % w for w in zip(("as read", "sewn"), why))
 
 
 def inside(point, loop):
@@ -178,16 +224,28 @@ def main():
     ap.add_argument("--markdown")
     ap.add_argument("--work")
     ap.add_argument("--in-space", action="store_true")
+    ap.add_argument("--cad", action="store_true")
     args = ap.parse_args()
     workdir = args.work or tempfile.mkdtemp(prefix="section_soak_")
     os.makedirs(workdir, exist_ok=True)
     only = re.compile(args.only)
 
     jobs, meta, set_aside = [], {}, {"open": 0, "not simple or nested": 0, "too large": 0}
-    for path in models():
+    models_aside, meshed = {}, {}
+    for path in models(CAD_GLOBS if args.cad else MODEL_GLOBS):
         model = model_name(path)
         if not only.search(model):
             continue
+        if args.cad:
+            path, why = tessellate(path, workdir)
+            if path:
+                key = open(path, "rb").read()
+                why, path = ("the same mesh as %s" % meshed[key], None) if key in meshed else (None, path)
+                meshed.setdefault(key, model)
+            if not path:
+                models_aside[model] = why
+                print("section_soak: %s set aside (%s)" % (model, why), file=sys.stderr)
+                continue
         cuts = sections(path, args.heights, workdir)
         for why in (c[3] for c in cuts if c[3]):
             set_aside[why] += 1
@@ -226,12 +284,13 @@ def main():
                                           row["angle"], row["floor3"], row["steiner"], row["cpu"])
                                       if row["status"] == 0 else "%s %s" % (row["status"], row["message"])),
                   file=sys.stderr)
-    text = summary(rows, set_aside, args)
+    text = summary(rows, set_aside, args, models_aside)
     print(text)
     if args.markdown:
         open(args.markdown, "w").write(text)
     if args.json:
-        json.dump({"set_aside": set_aside, "runs": rows}, open(args.json, "w"), indent=1)
+        json.dump({"set_aside": set_aside, "models_set_aside": models_aside, "runs": rows}, open(args.json, "w"),
+                  indent=1)
     if not args.work:
         shutil.rmtree(workdir, ignore_errors=True)
     return 1 if any(failed(r) for r in rows) else 0
@@ -246,7 +305,7 @@ def failed(row):
     return row["status"] not in (0, 2) or (row["status"] == 0 and not row.get("valid"))
 
 
-def summary(rows, set_aside, args):
+def summary(rows, set_aside, args, models_aside):
     lines = ["| runs | pairs | valid | refused | failed | at min(15, c/3) | at min(20, c/2) | "
              "median angle (deg) | least angle (deg) | median / least angle over T | median Steiner | "
              "median CPU (s) | largest CPU (s) |",
@@ -270,6 +329,8 @@ def summary(rows, set_aside, args):
     lines.append("Set aside: %s. %d heights per axis, at most %d vertices a pair." % (
         ", ".join("%d sections %s" % (v, k) if k != "too large" else "%d runs too large" % v
                   for k, v in set_aside.items()), args.heights, args.max_vertices))
+    if models_aside:
+        lines[-1] += " Models set aside: %s." % "; ".join("%s (%s)" % m for m in models_aside.items())
     short = sorted((r for r in rows if r["status"] == 0 and r.get("valid") and r["angle"] < r["floor3"] * (1 - 1e-9)),
                    key=lambda r: r["angle"] / max(r["floor3"], 1e-12))
     bad = [r for r in rows if r["status"] != 0 or not r.get("valid")]
