@@ -9,7 +9,9 @@
  * parameter, not linearly between the vertices; CM_CORRESPOND_SIMILARITY keeps the similarity
  * choice. Where a boundary edge caps the angle below the aim, arclength
  * and auto halve it compatibly (an 8 x 1 rectangle: 4 pieces per long
- * side), index keeps it; the construction joins no two boundary vertices
+ * side), index keeps it; beside a tiny edge they halve the long edges
+ * until the fan at the shared vertex allows the aim (index is capped by
+ * that fan); the construction joins no two boundary vertices
  * on one input edge. cm_stats.correspondence_choice names the
  * correspondence every path made. Auto's pairing does not hang on the
  * restarts (the rescues compare pairings without them). */
@@ -541,19 +543,27 @@ static void test_choice_reported(void)
  * atan(1 / 4) = 14.04 degrees: index keeps the four vertices and stays
  * below that; arclength and auto halve the long sides (cap 25 degrees
  * needs pieces of 2: t = 1/4, 1/2, 3/4) and pass it. */
+/* Two polygons paired by the default pipeline in mode m: 0 index, 1
+ * arclength, 2 auto (checked to succeed). */
+static cm_result *in_mode(const double *const *in, const size_t *counts, int m)
+{
+    static const cm_correspondence modes[3] = {CM_CORRESPOND_INDEX, CM_CORRESPOND_ARCLENGTH, CM_CORRESPOND_AUTO};
+    cm_options o;
+    cm_options_init(&o);
+    o.correspondence = modes[m];
+    cm_result *r = NULL;
+    CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r) == CM_OK, "mode %d: %s", m, cm_result_message(r));
+    return r;
+}
+
 static void test_capped_edges_split(void)
 {
     const double a[8] = {0, 0, 8, 0, 8, 1, 0, 1}, b[8] = {1, 2, 17, 2, 17, 4, 1, 4};
     const double *in[2] = {a, b};
     size_t counts[2] = {4, 4};
     double bound = atan(0.25) * 45.0 / atan(1.0);
-    cm_correspondence modes[3] = {CM_CORRESPOND_INDEX, CM_CORRESPOND_ARCLENGTH, CM_CORRESPOND_AUTO};
     for (int m = 0; m < 3; m++) {
-        cm_options o;
-        cm_options_init(&o);
-        o.correspondence = modes[m];
-        cm_result *r = NULL;
-        CHECK_MSG(cm_triangulate_polygons(in, counts, 2, &o, &r) == CM_OK, "mode %d: %s", m, cm_result_message(r));
+        cm_result *r = in_mode(in, counts, m);
         if (cm_result_status(r) != CM_OK) {
             cm_result_free(r);
             continue;
@@ -585,6 +595,49 @@ static void test_capped_edges_split(void)
             CHECK_MSG(m == 1 || slid > 0, "auto: no point slid");
             CHECK_MSG(least <= cm_result_stats(r)->ceiling_deg, "mode %d: %g degrees above the ceiling %g", m, least,
                       cm_result_stats(r)->ceiling_deg);
+        }
+        cm_result_free(r);
+    }
+}
+
+/* The largest alpha (degrees) a fan of triangles around a boundary vertex
+ * with the corner theta (degrees) allows between its two edges, the one
+ * ratio times the other: each triangle takes at least alpha of the corner
+ * and its sides at the vertex differ by at most 1 / sin(alpha). */
+static double fan_cap_deg(double theta, double ratio)
+{
+    double best = 0;
+    for (double a = 0.001; a < theta && a < 60; a += 0.001) {
+        double k = floor(theta / a);
+        if (k * -log(sin(a * CM_PI / 180)) >= log(ratio)) best = a;
+    }
+    return best;
+}
+
+/* A 20 x 1 strip whose left side has a vertex 1e-5 below its top left
+ * corner (two points a section cut put almost together), against its
+ * image under a stretch: index keeps the tiny edge beside the 20 long
+ * top side, so the corner's fan caps it (10 degrees: nine triangles of 10 degrees at most); arclength
+ * and auto halve the long edges towards the tiny one first and reach 20. */
+static void test_tiny_edge_graded(void)
+{
+    const double a[10] = {0, 0, 20, 0, 20, 1, 0, 1, 0, 1 - 1e-5};
+    double b[10];
+    for (int i = 0; i < 5; i++) b[2 * i] = 3 + 0.8 * a[2 * i], b[2 * i + 1] = -2 + 1.3 * a[2 * i + 1];
+    const double *in[2] = {a, b};
+    size_t counts[2] = {5, 5};
+    double cap = fan_cap_deg(90, 20 / 1e-5);
+    CHECK_MSG(cap > 9.9 && cap < 10.5, "the fan cap %g", cap);
+    for (int m = 0; m < 3; m++) {
+        cm_result *r = in_mode(in, counts, m);
+        if (cm_result_status(r) == CM_OK) {
+            double least = rc_least_angle(r, 2);
+            printf("tiny edge, mode %d: %zu boundary vertices, %.2f degrees (fan cap %.2f)\n", m,
+                   cm_result_stats(r)->n, least, cap);
+            if (m == 0)
+                CHECK_MSG(least <= cap, "index: %g degrees above the fan cap %g", least, cap);
+            else
+                CHECK_MSG(least >= 20 && contract_holds(r, in, counts, 2), "mode %d: %g degrees", m, least);
         }
         cm_result_free(r);
     }
@@ -843,6 +896,7 @@ int main(void)
     test_similarity_mode();
     test_choice_reported();
     test_capped_edges_split();
+    test_tiny_edge_graded();
     test_slide_keeps_max_edge();
     test_no_diagonal_along_an_input_edge();
     test_rescues_before_restarts();

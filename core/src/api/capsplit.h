@@ -1,7 +1,8 @@
 /* The common boundary's edges split where the remesher could not reach
- * its aim with them whole (arclength and auto only: the index
- * correspondence keeps its boundary). Here rather than in correspond/:
- * it reads the remesher's edge caps. */
+ * its aim with them whole, beside a far shorter edge or under their edge
+ * cap (arclength and auto only: the index correspondence keeps its
+ * boundary). Here rather than in correspond/: it reads the remesher's
+ * edge caps. */
 #ifndef CM_API_CAPSPLIT_H
 #define CM_API_CAPSPLIT_H
 
@@ -28,11 +29,14 @@ typedef struct cm_cap_loop {
     const int *orientation;
 } cm_cap_loop;
 
-/* Halves, in every polygon at the same parameter, the edges whose edge cap
+/* Halves, in every polygon at the same parameter, first the edges far
+ * longer than the edge beside them, round after round, until the fan of
+ * triangles at their shared vertex allows the aim (capsplit.c says why),
+ * then the edges whose edge cap
  * (remesh/criteria.h, with its margin, the smallest over the polygons,
  * each polygon taken whole: the outer loop, loops[0], and the holes)
  * lies below the aim (aim, radians, lowered to the ceiling when some edge
- * binds; ceiling may be NULL) and below half the corner at either end,
+ * binds either way; ceiling may be NULL) and below half the corner at either end,
  * for a few rounds or until max_added vertices were added; each loop's map
  * gets its own points. Caps never fall by a split, so an edge is split
  * only where no triangle on it could reach the aim. *tris_out (tris_out
