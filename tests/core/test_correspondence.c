@@ -538,11 +538,6 @@ static void test_choice_reported(void)
     }
 }
 
-/* An 8 x 1 rectangle against a copy scaled by 2: a triangle on a long side
- * has its apex at most 1 from it, so its smallest angle is at most
- * atan(1 / 4) = 14.04 degrees: index keeps the four vertices and stays
- * below that; arclength and auto halve the long sides (cap 25 degrees
- * needs pieces of 2: t = 1/4, 1/2, 3/4) and pass it. */
 /* Two polygons paired by the default pipeline in mode m: 0 index, 1
  * arclength, 2 auto (checked to succeed). */
 static cm_result *in_mode(const double *const *in, const size_t *counts, int m)
@@ -556,6 +551,11 @@ static cm_result *in_mode(const double *const *in, const size_t *counts, int m)
     return r;
 }
 
+/* An 8 x 1 rectangle against a copy scaled by 2: a triangle on a long side
+ * has its apex at most 1 from it, so its smallest angle is at most
+ * atan(1 / 4) = 14.04 degrees: index keeps the four vertices and stays
+ * below that; arclength and auto halve the long sides (cap 25 degrees
+ * needs pieces of 2: t = 1/4, 1/2, 3/4) and pass it. */
 static void test_capped_edges_split(void)
 {
     const double a[8] = {0, 0, 8, 0, 8, 1, 0, 1}, b[8] = {1, 2, 17, 2, 17, 4, 1, 4};
