@@ -150,16 +150,13 @@ static int fan_allows(double alpha, double theta, double ratio)
     return k >= 1 && k * -log(sin(alpha)) >= log(ratio);
 }
 
-/* The corner of polygon g's boundary b at vertex v (the material to the
- * left), in (0, 2 pi). */
+/* The corner of polygon g's boundary b at vertex v. */
 static double corner_at(const merged *b, size_t g, size_t v)
 {
     const size_t *loops = b->num_loops > 1 ? b->loop_start : NULL;
-    const double *p = b->xy[g] + 2 * cm_loops_prev(loops, b->n, v), *c = b->xy[g] + 2 * v,
-                 *q = b->xy[g] + 2 * cm_loops_next(loops, b->n, v);
-    double ux = q[0] - c[0], uy = q[1] - c[1], wx = p[0] - c[0], wy = p[1] - c[1];
-    double a = atan2(ux * wy - uy * wx, ux * wx + uy * wy);
-    return a > 0 ? a : a + 2 * CM_PI;
+    const double *xy = b->xy[g];
+    return cm_corner_angle(xy + 2 * cm_loops_prev(loops, b->n, v), xy + 2 * v,
+                           xy + 2 * cm_loops_next(loops, b->n, v));
 }
 
 static double edge_length(const merged *b, size_t g, size_t j)

@@ -64,6 +64,13 @@ static int min_angle_terms(const double a[2], const double b[2], const double c[
     return 1;
 }
 
+double cm_corner_angle(const double prev[2], const double v[2], const double next[2])
+{
+    double ux = next[0] - v[0], uy = next[1] - v[1], wx = prev[0] - v[0], wy = prev[1] - v[1];
+    double t = atan2(ux * wy - uy * wx, ux * wx + uy * wy);
+    return t < 0 ? t + 2 * CM_PI : t;
+}
+
 double cm_triangle_min_angle(const double a[2], const double b[2], const double c[2])
 {
     double area2, dot;

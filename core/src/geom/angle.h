@@ -16,6 +16,9 @@ double cm_angle_at(const double p[2], const double q[2], const double r[2]);
  * gives atan2 (tan_bound = tan(bound)): the atan2 only where the angle may
  * be below bound. */
 double cm_angle_at_below(const double p[2], const double q[2], const double r[2], double bound, double tan_bound);
+/* The corner of a boundary at v between its neighbours prev and next,
+ * the material to the left of prev -> v -> next: radians in [0, 2 pi). */
+double cm_corner_angle(const double prev[2], const double v[2], const double next[2]);
 /* Smallest angle (radians) of triangle abc, the one opposite the shortest
  * edge; 0 for a degenerate one. */
 double cm_triangle_min_angle(const double a[2], const double b[2], const double c[2]);

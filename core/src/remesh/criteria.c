@@ -16,14 +16,8 @@
 #include "remesh/kmesh.h"
 #include "base/error.h"
 #include "base/buf.h"
+#include "geom/angle.h"
 #include "geom/polytri.h"
-
-static double corner_angle(const double *a, const double *b, const double *c)
-{
-    double ux = c[0] - b[0], uy = c[1] - b[1], vx = a[0] - b[0], vy = a[1] - b[1];
-    double t = atan2(ux * vy - uy * vx, ux * vx + uy * vy);
-    return t < 0 ? t + 2 * CM_PI : t;
-}
 
 typedef struct frame { double mx, my, ux, uy, half; } frame; /* e's midpoint, direction, L/2 */
 
@@ -407,8 +401,8 @@ int cm_boundary_caps(const cm_mesh *mesh, size_t n, cm_progress *progress, doubl
                 return CM_NO_MEMORY;
             }
             bcap[i] = fmin(bcap[i], cap);
-            double c = corner_angle(xy + 2 * cm_loops_prev(mesh->loop_start, n, i), xy + 2 * i,
-                                    xy + 2 * cm_loops_next(mesh->loop_start, n, i));
+            double c = cm_corner_angle(xy + 2 * cm_loops_prev(mesh->loop_start, n, i), xy + 2 * i,
+                                       xy + 2 * cm_loops_next(mesh->loop_start, n, i));
             vcap[i] = fmin(vcap[i], 0.5 * c);
         }
     }
